@@ -1,0 +1,137 @@
+//! The model traits (ARCHITECTURE §4). Generated code implements every method; a hand-written
+//! model needs only the required ones, the rest have defaults built from them.
+
+use nalgebra::{Matrix3, Vector3};
+
+/// A Lagrangian `L(ω, γ) = ½ ωᵀJ(γ)ω + a(γ)·ω − U(γ)` of a rigid body with a symmetry about the
+/// vertical: ω is the body-frame angular velocity, γ the body-frame coordinates of the upward unit
+/// vertical. γ is treated as an unconstrained vector of ℝ³ when differentiating (paper (18)–(19)).
+///
+/// Second-derivative matrices are indexed `(i, j) = ∂²/∂x_i∂y_j`.
+pub trait Lagrangian {
+    /// `L(ω, γ)`.
+    fn lagrangian(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64;
+    /// `∂L/∂ω`.
+    fn dl_domega(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Vector3<f64>;
+    /// `∂L/∂γ`.
+    fn dl_dgamma(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Vector3<f64>;
+    /// `J(γ) = ∂²L/∂ω²` (independent of ω because L is quadratic in ω).
+    fn d2l_domega2(&self, gamma: &Vector3<f64>) -> Matrix3<f64>;
+    /// `∂²L/∂ω_i∂γ_j`.
+    fn d2l_domega_dgamma(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Matrix3<f64>;
+    /// The Painlevé–Jacobi energy (3): `E = (∂L/∂ω, ω) − L`.
+    fn energy(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
+        self.dl_domega(omega, gamma).dot(omega) - self.lagrangian(omega, gamma)
+    }
+    /// The cyclic momentum (9): `p_ψ = (∂L/∂ω, γ)`.
+    fn cyclic_momentum(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
+        self.dl_domega(omega, gamma).dot(gamma)
+    }
+}
+
+/// Every output of the Routh function at one point `(Ω, γ, p_ψ)`, from one evaluation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RouthBundle {
+    /// `R(Ω, γ, p_ψ)` of (14).
+    pub routhian: f64,
+    /// `ψ̇(Ω, γ, p_ψ)` of (12)/(38).
+    pub psi_dot: f64,
+    /// `∂R/∂Ω`.
+    pub dr_domega: Vector3<f64>,
+    /// `∂R/∂γ`.
+    pub dr_dgamma: Vector3<f64>,
+    /// `∂R/∂p_ψ = −ψ̇` (15).
+    pub dr_dp: f64,
+    /// `∂²R/∂Ω²` (singular along γ, ERRATA E4).
+    pub d2r_domega2: Matrix3<f64>,
+    /// `∂²R/∂Ω_i∂γ_j`.
+    pub d2r_domega_dgamma: Matrix3<f64>,
+    /// `∂²R/∂γ²`.
+    pub d2r_dgamma2: Matrix3<f64>,
+}
+
+/// The matrices `A`, `G`, `C` of (64) at `Ω = 0` (section 5, ERRATA E5–E6).
+///
+/// `A = ∂²R/∂Ω²`, `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` with `M = ∂²R/∂Ω∂γ`, and
+/// `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with `μ = (∂R/∂γ, γ)`. All three annihilate γ, so
+/// `det(Aλ² + 2Gλ + C) ≡ 0` (ERRATA E5); the characteristic polynomial is the 2×2 one on γ^⊥.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GyroscopicSystem {
+    /// Kinetic matrix `A = ∂²R/∂Ω²` at Ω = 0.
+    pub a: Matrix3<f64>,
+    /// Skew-symmetric gyroscopic matrix `G`.
+    pub g: Matrix3<f64>,
+    /// Symmetric stiffness matrix `C` (the second variation of the amended potential).
+    pub c: Matrix3<f64>,
+}
+
+impl GyroscopicSystem {
+    /// Forms `A`, `G`, `C` from a bundle evaluated at `Ω = 0` (section 5 in the matrix form of
+    /// ERRATA E6).
+    pub fn from_bundle(bundle: &RouthBundle, gamma: &Vector3<f64>) -> Self {
+        let gx = cross_matrix(gamma);
+        let m = bundle.d2r_domega_dgamma;
+        let g = 0.5 * (m * gx + gx * m.transpose() - cross_matrix(&bundle.dr_domega));
+        let mu = bundle.dr_dgamma.dot(gamma);
+        let c = gx.transpose() * (Matrix3::from_diagonal_element(mu) - bundle.d2r_dgamma2) * gx;
+        GyroscopicSystem { a: bundle.d2r_domega2, g, c }
+    }
+}
+
+/// `[x]×`, the matrix with `[x]× y = x × y`.
+pub fn cross_matrix(x: &Vector3<f64>) -> Matrix3<f64> {
+    Matrix3::new(0.0, -x.z, x.y, x.z, 0.0, -x.x, -x.y, x.x, 0.0)
+}
+
+/// The Routh function of Theorem 1 and its derivatives, with arguments `(Ω, γ, p_ψ)`: Ω is the
+/// angular velocity relative to the frame rotating about the vertical, `ω = Ω + ψ̇γ` (7).
+pub trait Routhian: Lagrangian {
+    /// `ψ̇(Ω, γ, p_ψ)` solving (12); for `L` of the form above this is (38) with `J(γ)`:
+    /// `ψ̇ = (p_ψ − (∂L/∂ω(Ω, γ), γ)) / (γᵀJγ)`.
+    fn psi_dot(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
+        let q = self.dl_domega(big_omega, gamma).dot(gamma);
+        (p_psi - q) / gamma.dot(&(self.d2l_domega2(gamma) * gamma))
+    }
+    /// `R(Ω, γ, p_ψ)` of (14) ((39) generalised).
+    fn routhian(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64;
+    /// `∂R/∂Ω`.
+    fn dr_domega(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Vector3<f64>;
+    /// `∂R/∂γ`.
+    fn dr_dgamma(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Vector3<f64>;
+    /// `∂R/∂p_ψ = −ψ̇` (15).
+    fn dr_dp(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
+        -self.psi_dot(big_omega, gamma, p_psi)
+    }
+    /// `∂²R/∂Ω²`.
+    fn d2r_domega2(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Matrix3<f64>;
+    /// `∂²R/∂Ω_i∂γ_j`.
+    fn d2r_domega_dgamma(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Matrix3<f64>;
+    /// `∂²R/∂γ²`.
+    fn d2r_dgamma2(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Matrix3<f64>;
+    /// All of the above from one evaluation.
+    fn bundle(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> RouthBundle {
+        RouthBundle {
+            routhian: self.routhian(big_omega, gamma, p_psi),
+            psi_dot: self.psi_dot(big_omega, gamma, p_psi),
+            dr_domega: self.dr_domega(big_omega, gamma, p_psi),
+            dr_dgamma: self.dr_dgamma(big_omega, gamma, p_psi),
+            dr_dp: self.dr_dp(big_omega, gamma, p_psi),
+            d2r_domega2: self.d2r_domega2(big_omega, gamma, p_psi),
+            d2r_domega_dgamma: self.d2r_domega_dgamma(big_omega, gamma, p_psi),
+            d2r_dgamma2: self.d2r_dgamma2(big_omega, gamma, p_psi),
+        }
+    }
+    /// The amended potential (34): `U_r(γ, p_ψ) = −R(0, γ, p_ψ)`.
+    fn amended_potential(&self, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
+        -self.routhian(&Vector3::zeros(), gamma, p_psi)
+    }
+    /// `A`, `G`, `C` of (64) at `Ω = 0` (see [`GyroscopicSystem`]).
+    fn gyroscopic_system(&self, gamma: &Vector3<f64>, p_psi: f64) -> GyroscopicSystem {
+        GyroscopicSystem::from_bundle(&self.bundle(&Vector3::zeros(), gamma, p_psi), gamma)
+    }
+}

@@ -1,0 +1,42 @@
+//! # routh
+//!
+//! Routh reduction for rigid-body dynamics (Bourov & Chevallier, ZAMM 78 (1998) 695–702).
+//!
+//! Write a body's Lagrangian `L(ω, γ) = ½ ωᵀJ(γ)ω + a(γ)·ω − U(γ)` declaratively on a struct;
+//! `#[derive(Lagrangian)]` differentiates it symbolically at build time and emits straight-line
+//! code for `L`, its derivatives, the Routh function `R` of (14) with its gradients and Hessians,
+//! and the matrices `A`, `G`, `C` of (64). The runtime ([`routh_core`]) simulates the body in full
+//! (8) or reduced (13) form, finds its steady motions (33) and classifies their stability
+//! (sections 4–5, with the corrections of `ERRATA.md`).
+//!
+//! ```
+//! use routh::{Lagrangian, Matrix3, Vector3};
+//!
+//! /// A heavy symmetric (Lagrange) top.
+//! #[derive(Lagrangian)]
+//! #[lagrangian(
+//!     kinetic = 0.5 * omega.dot(diag(inertia) * omega),
+//!     potential = mgl * gamma.z,
+//! )]
+//! struct Top { inertia: Vector3<f64>, mgl: f64 }
+//!
+//! let top = Top { inertia: Vector3::new(2.0, 2.0, 1.0), mgl: 1.0 };
+//! let gamma = Vector3::new(0.0, 0.0, 1.0);
+//! let omega = Vector3::new(0.0, 0.0, 3.0);
+//! // Energy (3): ½·C·r² + m g l
+//! assert!((routh::Lagrangian::energy(&top, &omega, &gamma) - 5.5).abs() < 1e-12);
+//! let _ = Matrix3::<f64>::identity();
+//! ```
+#![forbid(unsafe_code)]
+
+pub use routh_core::*;
+pub use routh_macros::Lagrangian;
+
+/// Paths used by the code that `#[derive(Lagrangian)]` generates. Not a public API.
+#[doc(hidden)]
+pub mod __private {
+    pub use routh_core::{GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+    pub use routh_core::nalgebra::{Matrix3, Vector3};
+    pub use core::primitive::f64;
+    pub use core::primitive::i32;
+}
