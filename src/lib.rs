@@ -39,4 +39,14 @@ pub mod __private {
     pub use routh_core::nalgebra::{Matrix3, Vector3};
     pub use core::primitive::f64;
     pub use core::primitive::i32;
+
+    /// `sign(x)` with `sign(0) = 0`: the derivative of `abs`.
+    #[inline]
+    pub fn sign(x: f64) -> f64 {
+        if x == 0.0 {
+            0.0
+        } else {
+            x.signum()
+        }
+    }
 }

@@ -1,4 +1,121 @@
-//! placeholder
-pub fn derive(_input: proc_macro2::TokenStream) -> proc_macro2::TokenStream {
-    proc_macro2::TokenStream::new()
+//! The code generator behind `#[derive(Lagrangian)]` (the proc-macro crate `routh-macros` is a
+//! shim over [`derive`]). Kept in a plain crate so that it can be unit-tested, fuzzed and
+//! benchmarked.
+//!
+//! Pipeline: [`attr`] parses the struct and its `#[lagrangian(...)]` items, [`check`] applies the
+//! semantic rules, [`lower`] turns the DSL's expressions into a `routh_symbolic::Graph`,
+//! [`reduce`] derives the Routh reduction, [`emit`] writes the impls. Every stage records its
+//! errors in a [`ctxt::Ctxt`] and carries on, so all mistakes of an attribute are reported at
+//! once; on error the output is `compile_error!`s plus a stub impl, so no follow-on errors appear.
+
+pub mod attr;
+pub mod check;
+pub mod ctxt;
+pub mod emit;
+pub mod lower;
+pub mod reduce;
+
+use proc_macro2::TokenStream;
+use quote::quote;
+
+/// Expands `#[derive(Lagrangian)]`. Never panics: every mistake becomes a `compile_error!`.
+pub fn derive(input: TokenStream) -> TokenStream {
+    let di: syn::DeriveInput = match syn::parse2(input) {
+        Ok(di) => di,
+        Err(e) => return e.to_compile_error(),
+    };
+    match expand(&di) {
+        Ok(ts) => ts,
+        Err(e) => fallback(&di, e),
+    }
+}
+
+/// A model that passed every check, lowered and reduced.
+pub struct Model {
+    pub lowered: lower::Lowered,
+    pub outputs: reduce::Outputs,
+}
+
+/// Parses, checks, lowers and reduces; all errors combined.
+pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
+    let cx = ctxt::Ctxt::new();
+    let input = attr::parse_input(&cx, di);
+    check::check(&cx, di, &input);
+    let lowered = lower::lower(&cx, &input);
+    cx.check()?;
+    let Some(mut lowered) = lowered else {
+        return Err(syn::Error::new_spanned(&di.ident, "the Lagrangian could not be lowered"));
+    };
+    let outputs = reduce::reduce(&mut lowered);
+    Ok(Model { lowered, outputs })
+}
+
+fn crate_path(m: &Model) -> TokenStream {
+    match &m.lowered.krate {
+        Some(p) => quote!(#p),
+        None => quote!(::routh),
+    }
+}
+
+/// The generated code for a valid input, or all its errors.
+pub fn expand(di: &syn::DeriveInput) -> Result<TokenStream, syn::Error> {
+    let model = analyse(di)?;
+    let krate = crate_path(&model);
+    let e = emit::Emitter { sym: &model.lowered.sym, krate: &krate };
+    let lag = e.lagrangian_methods(&model.outputs);
+    let routh = e.routhian_methods(&model.outputs);
+    let ident = &di.ident;
+    let (ig, tg, wc) = di.generics.split_for_impl();
+    Ok(quote! {
+        #[doc(hidden)]
+        #[allow(non_upper_case_globals, unused_qualifications, clippy::all, clippy::pedantic, clippy::nursery)]
+        const _: () = {
+            #[automatically_derived]
+            impl #ig #krate::__private::Lagrangian for #ident #tg #wc {
+                #lag
+            }
+            #[automatically_derived]
+            impl #ig #krate::__private::Routhian for #ident #tg #wc {
+                #routh
+            }
+        };
+    })
+}
+
+/// On error: the errors as `compile_error!`s plus stub impls of both traits, so that code using
+/// the model does not pile follow-on errors on top (after thiserror's `fallback.rs`).
+pub fn fallback(di: &syn::DeriveInput, err: syn::Error) -> TokenStream {
+    let errors = err.to_compile_error();
+    let ident = &di.ident;
+    let (ig, tg, wc) = di.generics.split_for_impl();
+    // The crate path may itself be wrong; the stub uses the default.
+    let k = quote!(::routh);
+    let v3 = quote!(#k::__private::Vector3<#k::__private::f64>);
+    let m3 = quote!(#k::__private::Matrix3<#k::__private::f64>);
+    let f = quote!(#k::__private::f64);
+    let body = quote!({ ::core::unreachable!() });
+    quote! {
+        #errors
+        #[doc(hidden)]
+        #[allow(unused_variables, clippy::all)]
+        const _: () = {
+            #[automatically_derived]
+            impl #ig #k::__private::Lagrangian for #ident #tg #wc {
+                fn lagrangian(&self, _: &#v3, _: &#v3) -> #f #body
+                fn dl_domega(&self, _: &#v3, _: &#v3) -> #v3 #body
+                fn dl_dgamma(&self, _: &#v3, _: &#v3) -> #v3 #body
+                fn d2l_domega2(&self, _: &#v3) -> #m3 #body
+                fn d2l_domega_dgamma(&self, _: &#v3, _: &#v3) -> #m3 #body
+            }
+            #[automatically_derived]
+            impl #ig #k::__private::Routhian for #ident #tg #wc {
+                fn routhian(&self, _: &#v3, _: &#v3, _: #f) -> #f #body
+                fn dr_domega(&self, _: &#v3, _: &#v3, _: #f) -> #v3 #body
+                fn dr_dgamma(&self, _: &#v3, _: &#v3, _: #f) -> #v3 #body
+                fn d2r_domega2(&self, _: &#v3, _: &#v3, _: #f) -> #m3 #body
+                fn d2r_domega_dgamma(&self, _: &#v3, _: &#v3, _: #f) -> #m3 #body
+                fn d2r_dgamma2(&self, _: &#v3, _: &#v3, _: #f) -> #m3 #body
+            }
+        };
+    }
 }

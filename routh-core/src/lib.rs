@@ -11,6 +11,13 @@ pub use nalgebra::{Complex, Matrix3, Vector3};
 
 mod error;
 mod model;
+mod stability;
+mod steady;
 
 pub use error::RouthError;
 pub use model::{cross_matrix, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+pub use stability::{classify, f2_coefficients, Stability, StabilityReport, DOUBLE_ROOT_TOL, UNIT_GAMMA_TOL};
+pub use steady::{
+    steady_motion_near, steady_motions, steady_motions_with, SearchOptions, SteadyMotion,
+    GRADIENT_TOL, ZERO_EIGENVALUE_TOL,
+};

@@ -1,1 +1,24 @@
-//! placeholder
+//! The symbolic engine behind `#[derive(Lagrangian)]`: a hash-consed expression DAG whose
+//! children come before their parents, simplifying constructors, symbolic differentiation,
+//! shapes (scalar / 3-vector / 3×3 matrix) lowered to scalars, scheduling for straight-line code
+//! generation, and an interpreter [`Graph::eval`] used by tests.
+//!
+//! ```
+//! use routh_symbolic::Graph;
+//! let mut g = Graph::new();
+//! let x = g.var("x");
+//! let s = g.func(routh_symbolic::Func::Sin, x);
+//! let f = g.mul(x, s);                 // x sin x
+//! let df = g.diff(f, x).unwrap();      // sin x + x cos x
+//! let v = g.eval(&[df], &[0.5])[0];
+//! assert!((v - (0.5f64.sin() + 0.5 * 0.5f64.cos())).abs() < 1e-15);
+//! ```
+#![forbid(unsafe_code)]
+
+pub mod analysis;
+mod graph;
+pub mod shape;
+
+pub use analysis::{degree, op_counts, schedule, to_infix, Degree, OpCounts};
+pub use graph::{Func, Graph, Id, Node};
+pub use shape::{Shape, ShapeError, Value};

@@ -1,0 +1,210 @@
+//! Parsing of the derive input: the struct, its fields and the `#[lagrangian(...)]` items.
+//!
+//! Parsing never stops at the first mistake: the attribute body is split at its top-level commas
+//! and every item is parsed on its own, so that every malformed item is reported.
+
+use crate::ctxt::Ctxt;
+use proc_macro2::{Span, TokenStream, TokenTree};
+use syn::parse::{Parse, ParseStream};
+use syn::spanned::Spanned;
+
+/// The shape of a field the Lagrangian can use.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub enum FieldKind {
+    /// `f64`
+    Scalar,
+    /// `Vector3<f64>`
+    Vector,
+    /// `Matrix3<f64>`
+    Matrix,
+}
+
+/// A field of the model struct.
+pub struct Field {
+    pub ident: syn::Ident,
+    /// `None` for fields whose type is not supported (an error has been recorded unless skipped).
+    pub kind: Option<FieldKind>,
+    pub ty: syn::Type,
+    pub skip: bool,
+}
+
+/// Which term of `L = kinetic + linear − potential` an item defines.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub enum Term {
+    Kinetic,
+    Linear,
+    Potential,
+}
+
+impl Term {
+    pub fn name(self) -> &'static str {
+        match self {
+            Term::Kinetic => "kinetic",
+            Term::Linear => "linear",
+            Term::Potential => "potential",
+        }
+    }
+}
+
+/// One item of the attribute body.
+pub enum Item {
+    /// `let NAME = EXPR`
+    Let { name: syn::Ident, expr: syn::Expr },
+    /// `kinetic = EXPR`, `linear = EXPR`, `potential = EXPR`
+    Term { term: Term, key: syn::Ident, expr: syn::Expr },
+    /// `crate = "path"`
+    Crate { key: Span, path: syn::Path },
+}
+
+/// The parsed derive input.
+pub struct Input {
+    pub ident: syn::Ident,
+    pub generics: syn::Generics,
+    pub fields: Vec<Field>,
+    pub items: Vec<Item>,
+    /// Whether the struct carries at least one `#[lagrangian(...)]`.
+    pub has_attr: bool,
+}
+
+/// Parses the derive input, recording every error in `cx`.
+pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
+    let mut items = Vec::new();
+    let mut has_attr = false;
+    for attr in input.attrs.iter().filter(|a| a.path().is_ident("lagrangian")) {
+        has_attr = true;
+        match &attr.meta {
+            syn::Meta::List(list) => parse_items(cx, list.tokens.clone(), list.delimiter.span().join(), &mut items),
+            other => cx.error_spanned_by(
+                other,
+                "expected `#[lagrangian(kinetic = ..., linear = ..., potential = ...)]`",
+            ),
+        }
+    }
+    let fields = match &input.data {
+        syn::Data::Struct(s) => match &s.fields {
+            syn::Fields::Named(named) => named.named.iter().filter_map(|f| parse_field(cx, f)).collect(),
+            syn::Fields::Unnamed(_) | syn::Fields::Unit => {
+                // Reported by `check::struct_has_named_fields`.
+                Vec::new()
+            }
+        },
+        _ => Vec::new(),
+    };
+    Input { ident: input.ident.clone(), generics: input.generics.clone(), fields, items, has_attr }
+}
+
+fn parse_field(cx: &Ctxt, f: &syn::Field) -> Option<Field> {
+    let ident = f.ident.clone()?;
+    let mut skip = false;
+    for attr in f.attrs.iter().filter(|a| a.path().is_ident("lagrangian")) {
+        let ok = match &attr.meta {
+            syn::Meta::List(list) => {
+                let t: Vec<TokenTree> = list.tokens.clone().into_iter().collect();
+                matches!(t.as_slice(), [TokenTree::Ident(i)] if i == "skip")
+            }
+            _ => false,
+        };
+        if ok {
+            skip = true;
+        } else {
+            cx.error_spanned_by(attr, "the only field attribute is `#[lagrangian(skip)]`");
+        }
+    }
+    Some(Field { ident, kind: field_kind(&f.ty), ty: f.ty.clone(), skip })
+}
+
+/// `f64`, `Vector3<f64>` or `Matrix3<f64>` under any path spelling.
+fn field_kind(ty: &syn::Type) -> Option<FieldKind> {
+    let syn::Type::Path(tp) = ty else { return None };
+    if tp.qself.is_some() {
+        return None;
+    }
+    let seg = tp.path.segments.last()?;
+    let is_f64 = |t: &syn::Type| matches!(t, syn::Type::Path(p) if p.qself.is_none() && p.path.segments.last().is_some_and(|s| s.ident == "f64" && s.arguments.is_none()));
+    let single_f64 = match &seg.arguments {
+        syn::PathArguments::AngleBracketed(a) if a.args.len() == 1 => {
+            matches!(a.args.first(), Some(syn::GenericArgument::Type(t)) if is_f64(t))
+        }
+        _ => false,
+    };
+    match seg.ident.to_string().as_str() {
+        "f64" if seg.arguments.is_none() => Some(FieldKind::Scalar),
+        "Vector3" if single_f64 => Some(FieldKind::Vector),
+        "Matrix3" if single_f64 => Some(FieldKind::Matrix),
+        _ => None,
+    }
+}
+
+/// Splits `tokens` at top-level commas.
+fn split_commas(tokens: TokenStream) -> Vec<TokenStream> {
+    let mut out = vec![];
+    let mut cur = vec![];
+    for tt in tokens {
+        match &tt {
+            TokenTree::Punct(p) if p.as_char() == ',' => out.push(std::mem::take(&mut cur)),
+            _ => cur.push(tt),
+        }
+    }
+    out.push(cur);
+    out.into_iter().filter(|c| !c.is_empty()).map(|c| c.into_iter().collect()).collect()
+}
+
+fn parse_items(cx: &Ctxt, tokens: TokenStream, span: Span, items: &mut Vec<Item>) {
+    let chunks = split_commas(tokens);
+    if chunks.is_empty() {
+        cx.error_at(span, "empty `#[lagrangian()]`: at least `kinetic = EXPR` is required");
+    }
+    for chunk in chunks {
+        match syn::parse2::<Item>(chunk) {
+            Ok(item) => items.push(item),
+            Err(e) => cx.syn_error(e),
+        }
+    }
+}
+
+impl Parse for Item {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        if input.peek(syn::Token![let]) {
+            input.parse::<syn::Token![let]>()?;
+            let name: syn::Ident = input.parse()?;
+            input.parse::<syn::Token![=]>()?;
+            let expr: syn::Expr = input.parse()?;
+            return Ok(Item::Let { name, expr });
+        }
+        if input.peek(syn::Token![crate]) {
+            let key = input.parse::<syn::Token![crate]>()?.span;
+            input.parse::<syn::Token![=]>()?;
+            let lit: syn::LitStr = input.parse()?;
+            let path = lit.parse_with(syn::Path::parse_mod_style).map_err(|_| {
+                syn::Error::new(lit.span(), format!("`crate = \"{}\"` is not a path", lit.value()))
+            })?;
+            return Ok(Item::Crate { key, path });
+        }
+        let key: syn::Ident = input.parse().map_err(|e| {
+            syn::Error::new(
+                e.span(),
+                "expected an item: `kinetic = EXPR`, `linear = EXPR`, `potential = EXPR`, `let NAME = EXPR` or `crate = \"path\"`",
+            )
+        })?;
+        let term = match key.to_string().as_str() {
+            "kinetic" => Term::Kinetic,
+            "linear" => Term::Linear,
+            "potential" => Term::Potential,
+            other => {
+                return Err(syn::Error::new(
+                    key.span(),
+                    format!(
+                        "unknown item `{other}`: expected `kinetic`, `linear`, `potential`, `let NAME = EXPR` or `crate`"
+                    ),
+                ))
+            }
+        };
+        let eq: Option<syn::Token![=]> = input.parse()?;
+        if eq.is_none() {
+            return Err(syn::Error::new(key.span(), format!("expected `{} = EXPR`", term.name())));
+        }
+        let expr: syn::Expr = input.parse()?;
+        let _ = expr.span();
+        Ok(Item::Term { term, key, expr })
+    }
+}

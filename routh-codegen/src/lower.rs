@@ -1,0 +1,404 @@
+//! Lowering of the DSL's `syn::Expr`s to nodes of a [`routh_symbolic::Graph`], with every error
+//! spanned at the user's tokens.
+
+use crate::attr::{FieldKind, Input, Item, Term};
+use crate::ctxt::Ctxt;
+use routh_symbolic::{shape, Func, Graph, Id, Value};
+use std::collections::HashMap;
+use syn::spanned::Spanned;
+
+/// How a scalar input slot is read from the model struct.
+#[derive(Clone, Debug)]
+pub enum Access {
+    /// `self.field`
+    Scalar,
+    /// `self.field[i]`
+    Component(usize),
+    /// `self.field[(i, j)]`
+    Entry(usize, usize),
+}
+
+/// A scalar parameter read from a field.
+#[derive(Clone, Debug)]
+pub struct Param {
+    pub var: u32,
+    pub field: syn::Ident,
+    pub access: Access,
+}
+
+/// The symbols of a model: the graph, the slots of ω (also used for Ω), γ and p_ψ, and the
+/// parameters.
+pub struct Symbols {
+    pub graph: Graph,
+    pub omega: [Id; 3],
+    pub gamma: [Id; 3],
+    pub p_psi: Id,
+    pub params: Vec<Param>,
+}
+
+impl Symbols {
+    /// Slot indices of ω.
+    pub fn omega_vars(&self) -> [u32; 3] {
+        self.omega.map(|x| self.graph.as_var(x).unwrap_or(u32::MAX))
+    }
+}
+
+/// A lowered model: `L = kinetic + linear − potential`.
+pub struct Lowered {
+    pub sym: Symbols,
+    pub kinetic: Id,
+    pub linear: Id,
+    pub potential: Id,
+    /// The `crate = "..."` path, if given.
+    pub krate: Option<syn::Path>,
+}
+
+/// A name in scope: a value, or a `let` whose definition failed (uses stay silent).
+#[derive(Clone, Copy)]
+enum Binding {
+    Value(Value),
+    Poisoned,
+}
+
+struct Lowerer<'a> {
+    cx: &'a Ctxt,
+    g: Graph,
+    names: HashMap<String, Binding>,
+    /// `let` names defined later in the attribute, for a better message.
+    later_lets: Vec<String>,
+    gamma: [Id; 3],
+    field_names: Vec<String>,
+}
+
+/// Lowers every item. Returns `None` if any error was recorded.
+pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
+    let mut g = Graph::new();
+    let omega = [g.var("ω₁"), g.var("ω₂"), g.var("ω₃")];
+    let gamma = [g.var("γ₁"), g.var("γ₂"), g.var("γ₃")];
+    let p_psi = g.var("p_ψ");
+    let mut names = HashMap::new();
+    names.insert("omega".to_string(), Binding::Value(Value::Vector(omega)));
+    names.insert("gamma".to_string(), Binding::Value(Value::Vector(gamma)));
+    let mut params = vec![];
+    let mut field_names = vec![];
+    for f in input.fields.iter().filter(|f| !f.skip) {
+        let Some(kind) = f.kind else { continue };
+        let name = f.ident.to_string();
+        field_names.push(name.clone());
+        let mut slot = |g: &mut Graph, label: String, access: Access| {
+            let id = g.var(label);
+            let var = g.as_var(id).unwrap_or(u32::MAX);
+            params.push(Param { var, field: f.ident.clone(), access });
+            id
+        };
+        let value = match kind {
+            FieldKind::Scalar => Value::Scalar(slot(&mut g, name.clone(), Access::Scalar)),
+            FieldKind::Vector => Value::Vector(std::array::from_fn(|i| {
+                slot(&mut g, format!("{name}[{i}]"), Access::Component(i))
+            })),
+            FieldKind::Matrix => Value::Matrix(std::array::from_fn(|i| {
+                std::array::from_fn(|j| slot(&mut g, format!("{name}[({i},{j})]"), Access::Entry(i, j)))
+            })),
+        };
+        names.insert(name, Binding::Value(value));
+    }
+    let later_lets = input
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Let { name, .. } => Some(name.to_string()),
+            _ => None,
+        })
+        .collect();
+    let mut l = Lowerer { cx, g, names, later_lets, gamma, field_names };
+    let mut terms: HashMap<&'static str, (Id, &syn::Expr)> = HashMap::new();
+    let mut krate = None;
+    for item in &input.items {
+        match item {
+            Item::Let { name, expr } => {
+                let s = name.to_string();
+                l.later_lets.retain(|n| *n != s);
+                let b = match l.expr(expr) {
+                    Some(v) => Binding::Value(v),
+                    None => Binding::Poisoned,
+                };
+                l.names.entry(s).or_insert(b);
+            }
+            Item::Term { term, expr, .. } => {
+                let Some(v) = l.expr(expr) else { continue };
+                match v {
+                    Value::Scalar(s) => {
+                        terms.entry(term.name()).or_insert((s, expr));
+                    }
+                    other => cx.error_spanned_by(
+                        expr,
+                        format!("`{}` must be a scalar, found {}", term.name(), other.shape()),
+                    ),
+                }
+            }
+            Item::Crate { path, .. } => krate = Some(path.clone()),
+        }
+    }
+    let mut g = l.g;
+    let zero = g.zero();
+    let kinetic = terms.get(Term::Kinetic.name()).map(|t| t.0);
+    let linear = terms.get(Term::Linear.name()).map_or(zero, |t| t.0);
+    let potential = terms.get(Term::Potential.name()).map_or(zero, |t| t.0);
+    let sym = Symbols { graph: g, omega, gamma, p_psi, params };
+    let omega_vars = sym.omega_vars();
+    for (name, (id, expr)) in &terms {
+        crate::check::term_degree(cx, &sym.graph, name, *id, expr, &omega_vars);
+    }
+    if cx.has_errors() {
+        return None;
+    }
+    Some(Lowered { kinetic: kinetic?, linear, potential, sym, krate })
+}
+
+fn int_lit(e: &syn::Expr) -> Option<i64> {
+    match e {
+        syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Int(i), .. }) => i.base10_parse().ok(),
+        syn::Expr::Unary(syn::ExprUnary { op: syn::UnOp::Neg(_), expr, .. }) => int_lit(expr).map(|v| -v),
+        syn::Expr::Paren(p) => int_lit(&p.expr),
+        syn::Expr::Group(p) => int_lit(&p.expr),
+        _ => None,
+    }
+}
+
+fn strip_ref(e: &syn::Expr) -> &syn::Expr {
+    match e {
+        syn::Expr::Reference(r) if r.mutability.is_none() => strip_ref(&r.expr),
+        _ => e,
+    }
+}
+
+const METHODS: &str = "dot, cross, norm, norm_squared, transpose, component_mul, trace, sqrt, powi, powf, sin, cos, tan, exp, ln, recip, abs";
+
+impl Lowerer<'_> {
+    fn err(&self, tokens: impl quote::ToTokens, msg: impl std::fmt::Display) -> Option<Value> {
+        self.cx.error_spanned_by(tokens, msg);
+        None
+    }
+
+    fn shaped(&self, tokens: impl quote::ToTokens, r: Result<Value, shape::ShapeError>) -> Option<Value> {
+        match r {
+            Ok(v) => Some(v),
+            Err(e) => self.err(tokens, e),
+        }
+    }
+
+    fn name(&self, ident: &syn::Ident) -> Option<Value> {
+        let s = ident.to_string();
+        match self.names.get(&s) {
+            Some(Binding::Value(v)) => Some(*v),
+            Some(Binding::Poisoned) => None,
+            None if self.later_lets.contains(&s) => {
+                self.err(ident, format!("`{s}` is used before its `let`; move the `let {s} = ...` item first"))
+            }
+            None => {
+                let mut known: Vec<&str> = vec!["omega", "gamma"];
+                known.extend(self.field_names.iter().map(String::as_str));
+                self.err(
+                    ident,
+                    format!("unknown name `{s}`: the Lagrangian can use `omega`, `gamma`, the fields of type f64, Vector3<f64> or Matrix3<f64> ({}) and earlier `let` names", known.join(", ")),
+                )
+            }
+        }
+    }
+
+    fn expr(&mut self, e: &syn::Expr) -> Option<Value> {
+        use syn::Expr as E;
+        match e {
+            E::Lit(lit) => match &lit.lit {
+                syn::Lit::Float(f) => match f.base10_parse::<f64>() {
+                    Ok(v) if f.suffix().is_empty() || f.suffix() == "f64" => Some(Value::Scalar(self.g.constant(v))),
+                    _ => self.err(e, "expected an `f64` literal"),
+                },
+                syn::Lit::Int(i) => match i.base10_parse::<i64>() {
+                    Ok(v) if i.suffix().is_empty() || i.suffix() == "f64" => Some(Value::Scalar(self.g.constant(v as f64))),
+                    _ => self.err(e, "expected an unsuffixed integer literal (it is read as an f64)"),
+                },
+                _ => self.err(e, "only numeric literals can appear in a Lagrangian"),
+            },
+            E::Path(p) if p.qself.is_none() && p.path.get_ident().is_some() => {
+                self.name(p.path.get_ident()?)
+            }
+            E::Paren(p) => self.expr(&p.expr),
+            E::Group(p) => self.expr(&p.expr),
+            E::Reference(_) => self.expr(strip_ref(e)),
+            E::Unary(u) => match u.op {
+                syn::UnOp::Neg(_) => {
+                    let v = self.expr(&u.expr)?;
+                    Some(shape::neg(&mut self.g, &v))
+                }
+                _ => self.err(e, "unsupported unary operator: only `-` is allowed"),
+            },
+            E::Binary(b) => {
+                let l = self.expr(&b.left);
+                let r = self.expr(&b.right);
+                let (l, r) = (l?, r?);
+                let res = match b.op {
+                    syn::BinOp::Add(_) => shape::add(&mut self.g, &l, &r),
+                    syn::BinOp::Sub(_) => shape::sub(&mut self.g, &l, &r),
+                    syn::BinOp::Mul(_) => shape::mul(&mut self.g, &l, &r),
+                    syn::BinOp::Div(_) => shape::div(&mut self.g, &l, &r),
+                    _ => return self.err(b.op, "unsupported operator: the Lagrangian uses `+`, `-`, `*` and `/`"),
+                };
+                self.shaped(e, res)
+            }
+            E::MethodCall(m) => self.method(e, m),
+            E::Field(f) => {
+                // `self.name` is the field `name`; `v.x`, `v.y`, `v.z` are components.
+                if let (E::Path(base), syn::Member::Named(n)) = (&*f.base, &f.member) {
+                    if base.path.is_ident("self") {
+                        return self.name(n);
+                    }
+                }
+                let base = self.expr(&f.base)?;
+                let i = match &f.member {
+                    syn::Member::Named(n) if n == "x" => 0,
+                    syn::Member::Named(n) if n == "y" => 1,
+                    syn::Member::Named(n) if n == "z" => 2,
+                    _ => return self.err(&f.member, "unknown component: use `.x`, `.y`, `.z` or `[i]`"),
+                };
+                self.shaped(e, shape::component(&base, i))
+            }
+            E::Index(ix) => {
+                let base = self.expr(&ix.expr)?;
+                match strip_ref(&ix.index) {
+                    E::Tuple(t) if t.elems.len() == 2 => {
+                        let (i, j) = (int_lit(&t.elems[0]), int_lit(&t.elems[1]));
+                        match (i, j) {
+                            (Some(i), Some(j)) if (0..3).contains(&i) && (0..3).contains(&j) => {
+                                self.shaped(e, shape::entry(&base, i as usize, j as usize))
+                            }
+                            _ => self.err(&ix.index, "matrix indices must be integer literals 0, 1 or 2: `m[(i, j)]`"),
+                        }
+                    }
+                    idx => match int_lit(idx) {
+                        Some(i) if (0..3).contains(&i) => self.shaped(e, shape::component(&base, i as usize)),
+                        _ => self.err(&ix.index, "a vector index must be an integer literal 0, 1 or 2"),
+                    },
+                }
+            }
+            E::Call(c) => self.call(e, c),
+            _ => self.err(
+                e,
+                "unsupported expression: a Lagrangian is built from literals, names, `+ - * /`, unary `-`, methods, components, `diag`, `skew` and `grad`",
+            ),
+        }
+    }
+
+    fn arity(&self, tokens: impl quote::ToTokens, name: &str, got: usize, want: usize) -> Option<()> {
+        if got == want {
+            Some(())
+        } else {
+            self.cx.error_spanned_by(
+                tokens,
+                format!("`{name}` takes {want} argument{}, found {got}", if want == 1 { "" } else { "s" }),
+            );
+            None
+        }
+    }
+
+    fn method(&mut self, e: &syn::Expr, m: &syn::ExprMethodCall) -> Option<Value> {
+        let name = m.method.to_string();
+        if let Some(t) = &m.turbofish {
+            return self.err(t, "type arguments are not supported here");
+        }
+        let recv = self.expr(&m.receiver);
+        let args: Vec<&syn::Expr> = m.args.iter().map(strip_ref).collect();
+        let n = args.len();
+        let scalar_fn = |f: Func| move |g: &mut Graph, s: Id| g.func(f, s);
+        let r = match name.as_str() {
+            "dot" | "cross" | "component_mul" => {
+                self.arity(&m.method, &name, n, 1)?;
+                let a = self.expr(args[0]);
+                let (recv, a) = (recv?, a?);
+                let g = &mut self.g;
+                match name.as_str() {
+                    "dot" => shape::dot(g, &recv, &a),
+                    "cross" => shape::cross(g, &recv, &a),
+                    _ => shape::component_mul(g, &recv, &a),
+                }
+            }
+            "norm" | "norm_squared" | "transpose" | "trace" | "sqrt" | "sin" | "cos" | "tan" | "exp"
+            | "ln" | "recip" | "abs" => {
+                self.arity(&m.method, &name, n, 0)?;
+                let recv = recv?;
+                let g = &mut self.g;
+                match name.as_str() {
+                    "norm" => shape::norm(g, &recv),
+                    "norm_squared" => shape::norm_squared(g, &recv),
+                    "transpose" => shape::transpose(g, &recv),
+                    "trace" => shape::trace(g, &recv),
+                    "sqrt" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Sqrt)),
+                    "sin" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Sin)),
+                    "cos" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Cos)),
+                    "tan" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Tan)),
+                    "exp" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Exp)),
+                    "ln" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Ln)),
+                    "abs" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Abs)),
+                    _ => shape::scalar_func(g, &name, &recv, Graph::recip),
+                }
+            }
+            "powi" => {
+                self.arity(&m.method, &name, n, 1)?;
+                let Some(k) = int_lit(args[0]).filter(|k| k.abs() <= 64) else {
+                    return self.err(args[0], "`powi` takes an integer literal exponent between -64 and 64");
+                };
+                let recv = recv?;
+                shape::scalar_func(&mut self.g, &name, &recv, |g, s| g.powi(s, k as i32))
+            }
+            "powf" => {
+                self.arity(&m.method, &name, n, 1)?;
+                let a = self.expr(args[0]);
+                let (recv, a) = (recv?, a?);
+                let g = &mut self.g;
+                match a.scalar("the exponent of `powf`") {
+                    Ok(x) => shape::scalar_func(g, &name, &recv, |g, s| g.powf(s, x)),
+                    Err(err) => Err(err),
+                }
+            }
+            _ => return self.err(&m.method, format!("unsupported method `{name}`: the Lagrangian can use {METHODS}")),
+        };
+        self.shaped(e, r)
+    }
+
+    fn call(&mut self, e: &syn::Expr, c: &syn::ExprCall) -> Option<Value> {
+        let syn::Expr::Path(p) = &*c.func else {
+            return self.err(&c.func, "unsupported call: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`");
+        };
+        let Some(f) = p.path.get_ident() else {
+            return self.err(&c.func, "unsupported call: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`");
+        };
+        let name = f.to_string();
+        let args: Vec<&syn::Expr> = c.args.iter().map(strip_ref).collect();
+        match name.as_str() {
+            "diag" | "skew" => {
+                self.arity(f, &name, args.len(), 1)?;
+                let v = self.expr(args[0])?;
+                let r = if name == "diag" { shape::diag(&mut self.g, &v) } else { shape::skew(&mut self.g, &v) };
+                self.shaped(e, r)
+            }
+            "grad" => {
+                self.arity(f, &name, args.len(), 2)?;
+                let is_gamma = matches!(args[1], syn::Expr::Path(p) if p.path.is_ident("gamma"));
+                let v = self.expr(args[0]);
+                if !is_gamma {
+                    return self.err(args[1], "`grad` differentiates with respect to `gamma` only: `grad(EXPR, gamma)`");
+                }
+                let v = v?;
+                let gamma = self.gamma;
+                let r = shape::grad(&mut self.g, &v, &gamma);
+                self.shaped(e, r)
+            }
+            _ => self.err(f, format!("unknown function `{name}`: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`")),
+        }
+    }
+}
+
+/// The span of an expression (re-exported for the checks).
+pub fn span_of(e: &syn::Expr) -> proc_macro2::Span {
+    e.span()
+}

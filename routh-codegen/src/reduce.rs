@@ -1,0 +1,222 @@
+//! The Routh reduction on the DAG: every output of the generated `Lagrangian` and `Routhian`
+//! impls, derived symbolically from `L = kinetic + linear − potential` for any model the DSL
+//! accepts (paper (8)–(19), section 5, with ERRATA E4–E6).
+
+use crate::lower::Lowered;
+use routh_symbolic::{Graph, Id};
+use std::collections::HashMap;
+
+pub type V3 = [Id; 3];
+pub type M3 = [[Id; 3]; 3];
+
+/// Every generated output, as nodes of one graph (so that everything is shared).
+pub struct Outputs {
+    pub lagrangian: Id,
+    pub dl_domega: V3,
+    pub dl_dgamma: V3,
+    /// J(γ) = ∂²L/∂ω², free of ω.
+    pub d2l_domega2: M3,
+    pub d2l_domega_dgamma: M3,
+    /// (3)
+    pub energy: Id,
+    /// (9)
+    pub cyclic_momentum: Id,
+    /// (38) generalised; the ω slots stand for Ω in every Routhian output.
+    pub psi_dot: Id,
+    /// (14)
+    pub routhian: Id,
+    pub dr_domega: V3,
+    pub dr_dgamma: V3,
+    /// (15)
+    pub dr_dp: Id,
+    pub d2r_domega2: M3,
+    pub d2r_domega_dgamma: M3,
+    pub d2r_dgamma2: M3,
+    /// (34), a function of γ and p_ψ only.
+    pub amended_potential: Id,
+    /// A, G, C of (64) at Ω = 0.
+    pub gyro_a: M3,
+    pub gyro_g: M3,
+    pub gyro_c: M3,
+}
+
+fn grad(g: &mut Graph, f: Id, x: &V3) -> V3 {
+    x.map(|xi| g.diff(f, xi).unwrap_or(f))
+}
+
+/// `∂f_i/∂x_j` for every i, j.
+fn jacobian(g: &mut Graph, f: &V3, x: &V3) -> M3 {
+    f.map(|fi| grad(g, fi, x))
+}
+
+/// Hessian of the gradient `f = ∂φ/∂x`: computes the upper triangle and mirrors it, so the
+/// result is exactly symmetric.
+fn sym_jacobian(g: &mut Graph, f: &V3, x: &V3) -> M3 {
+    let mut h = [[f[0]; 3]; 3];
+    for i in 0..3 {
+        for j in i..3 {
+            let d = g.diff(f[i], x[j]).unwrap_or(f[i]);
+            h[i][j] = d;
+            h[j][i] = d;
+        }
+    }
+    h
+}
+
+fn dot(g: &mut Graph, a: &V3, b: &V3) -> Id {
+    let t: Vec<Id> = (0..3).map(|i| g.mul(a[i], b[i])).collect();
+    g.sum(t)
+}
+
+fn subst_vec(g: &mut Graph, v: &[Id], map: &HashMap<u32, Id>) -> Vec<Id> {
+    g.substitute(v, map)
+}
+
+/// `a b` for 3×3 matrices of nodes.
+fn matmul(g: &mut Graph, a: &M3, b: &M3) -> M3 {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|k| {
+            let col = [b[0][k], b[1][k], b[2][k]];
+            dot(g, &a[i], &col)
+        })
+    })
+}
+
+fn transpose(a: &M3) -> M3 {
+    std::array::from_fn(|i| std::array::from_fn(|k| a[k][i]))
+}
+
+/// `[x]×`, with `[x]× y = x × y`.
+fn cross_matrix(g: &mut Graph, x: &V3) -> M3 {
+    let z = g.zero();
+    let n = x.map(|c| g.neg(c));
+    [[z, n[2], x[1]], [x[2], z, n[0]], [n[1], x[0], z]]
+}
+
+/// Derives every output from the lowered model.
+pub fn reduce(m: &mut Lowered) -> Outputs {
+    let s = &mut m.sym;
+    let g = &mut s.graph;
+    let (w, gm, p) = (s.omega, s.gamma, s.p_psi);
+    let w_vars = w.map(|x| g.as_var(x).unwrap_or(u32::MAX));
+
+    // L = T₂ + T₁ − U (35).
+    let t1u = g.sub(m.linear, m.potential);
+    let lagrangian = g.add(m.kinetic, t1u);
+    let dl_domega = grad(g, lagrangian, &w);
+    let dl_dgamma = grad(g, lagrangian, &gm);
+    let zero = g.zero();
+    let at_rest: HashMap<u32, Id> = w_vars.iter().map(|&v| (v, zero)).collect();
+    let j_full = sym_jacobian(g, &dl_domega, &w);
+    let j_flat: Vec<Id> = j_full.iter().flatten().copied().collect();
+    let j_rest = subst_vec(g, &j_flat, &at_rest);
+    let d2l_domega2: M3 = std::array::from_fn(|i| std::array::from_fn(|k| j_rest[3 * i + k]));
+    let d2l_domega_dgamma = jacobian(g, &dl_domega, &gm);
+    let e1 = dot(g, &w, &dl_domega);
+    let energy = g.sub(e1, lagrangian);
+    let cyclic_momentum = dot(g, &dl_domega, &gm);
+
+    // (12)/(38) with J(γ): ψ̇ = (p_ψ − (∂L/∂ω(Ω, γ), γ)) / (γᵀJγ), and γᵀJγ = 2 T₂(γ, γ).
+    let on_gamma: HashMap<u32, Id> = w_vars.iter().zip(gm).map(|(&v, x)| (v, x)).collect();
+    let t2_gamma = subst_vec(g, &[m.kinetic], &on_gamma)[0];
+    let two = g.constant(2.0);
+    let vertical_inertia = g.mul(two, t2_gamma);
+    let slack = g.sub(p, cyclic_momentum);
+    let psi_dot = g.div(slack, vertical_inertia);
+    // (14): R = L(Ω) + ψ̇ (∂L/∂ω, γ) + ½ψ̇² γᵀJγ − ψ̇ p_ψ = L(Ω) − ½ ψ̇ (p_ψ − (∂L/∂ω(Ω), γ)).
+    let half = g.constant(0.5);
+    let hs = g.mul(half, slack);
+    let corr = g.mul(psi_dot, hs);
+    let routhian = g.sub(lagrangian, corr);
+    // (18): ∂R/∂Ω = ∂L/∂ω at ω = Ω + ψ̇γ; (19): ∂R/∂γ = ∂L/∂γ(Ω + ψ̇γ, γ) + ψ̇ ∂R/∂Ω.
+    let full_omega: HashMap<u32, Id> = w_vars
+        .iter()
+        .zip(gm)
+        .zip(w)
+        .map(|((&v, gi), wi)| {
+            let t = g.mul(psi_dot, gi);
+            (v, g.add(wi, t))
+        })
+        .collect();
+    let mut firsts = dl_domega.to_vec();
+    firsts.extend(dl_dgamma);
+    let at_full = subst_vec(g, &firsts, &full_omega);
+    let dr_domega: V3 = [at_full[0], at_full[1], at_full[2]];
+    let dr_dgamma: V3 = std::array::from_fn(|i| {
+        let t = g.mul(psi_dot, dr_domega[i]);
+        g.add(at_full[3 + i], t)
+    });
+    // (15)
+    let dr_dp = g.neg(psi_dot);
+    let d2r_domega2 = sym_jacobian(g, &dr_domega, &w);
+    let d2r_domega_dgamma = jacobian(g, &dr_domega, &gm);
+    let d2r_dgamma2 = sym_jacobian(g, &dr_dgamma, &gm);
+
+    // (34) and section 5 at Ω = 0.
+    let mut rest: Vec<Id> = vec![routhian];
+    rest.extend(dr_domega);
+    rest.extend(dr_dgamma);
+    rest.extend(d2r_domega2.iter().flatten());
+    rest.extend(d2r_domega_dgamma.iter().flatten());
+    rest.extend(d2r_dgamma2.iter().flatten());
+    let r0 = subst_vec(g, &rest, &at_rest);
+    let amended_potential = g.neg(r0[0]);
+    let v3 = |o: usize| -> V3 { [r0[o], r0[o + 1], r0[o + 2]] };
+    let m3 = |o: usize| -> M3 { std::array::from_fn(|i| std::array::from_fn(|k| r0[o + 3 * i + k])) };
+    let (dw0, dg0) = (v3(1), v3(4));
+    let (a0, mx0, h0) = (m3(7), m3(16), m3(25));
+    let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dw0, &dg0, &mx0, &h0);
+
+    Outputs {
+        lagrangian,
+        dl_domega,
+        dl_dgamma,
+        d2l_domega2,
+        d2l_domega_dgamma,
+        energy,
+        cyclic_momentum,
+        psi_dot,
+        routhian,
+        dr_domega,
+        dr_dgamma,
+        dr_dp,
+        d2r_domega2,
+        d2r_domega_dgamma,
+        d2r_dgamma2,
+        amended_potential,
+        gyro_a: a0,
+        gyro_g,
+        gyro_c,
+    }
+}
+
+/// ERRATA E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these
+/// are the entries printed in section 5 in matrix form.
+fn gyroscopic(g: &mut Graph, gm: &V3, dr_dw: &V3, dr_dg: &V3, mx: &M3, h: &M3) -> (M3, M3) {
+    let gx = cross_matrix(g, gm);
+    let rw = cross_matrix(g, dr_dw);
+    let p1 = matmul(g, mx, &gx);
+    let p2 = matmul(g, &gx, &transpose(mx));
+    let half = g.constant(0.5);
+    let gyro_g: M3 = std::array::from_fn(|i| {
+        std::array::from_fn(|k| {
+            let s = g.add(p1[i][k], p2[i][k]);
+            let s = g.sub(s, rw[i][k]);
+            g.mul(half, s)
+        })
+    });
+    let mu = dot(g, dr_dg, gm);
+    let stiff: M3 = std::array::from_fn(|i| {
+        std::array::from_fn(|k| {
+            let nh = g.neg(h[i][k]);
+            if i == k {
+                g.add(mu, nh)
+            } else {
+                nh
+            }
+        })
+    });
+    let t = matmul(g, &transpose(&gx), &stiff);
+    let gyro_c = matmul(g, &t, &gx);
+    (gyro_g, gyro_c)
+}

@@ -1,0 +1,496 @@
+//! A compact DOP853 (Dormand–Prince 8(5,3)) integrator with Hairer's step-size control, initial
+//! step heuristic and 7th-order dense output, for small fixed-size systems `y' = f(t, y)`.
+//!
+//! This follows Hairer's `dop853.f` (Hairer, Nørsett & Wanner, *Solving ODEs I*, II.10): the
+//! error is the mixed norm with `sk = atol + rtol·max(|y₀ᵢ|, |y₁ᵢ|)`, the 5th- and 3rd-order
+//! estimators are combined as `err = |h|·err₅²/sqrt(N(err₅² + 0.01·err₃²))`, and the step factor
+//! is `h_new = h / clamp(err^{1/8}/0.9, 1/6, 1/0.333)`.
+
+use nalgebra::SVector;
+
+use super::tableau::{A, B, BHH, C, D, ER};
+use crate::RouthError;
+
+/// Safety factor of the step-size controller.
+const SAFE: f64 = 0.9;
+/// Lower bound `h_new/h ≥ FAC1`.
+const FAC1: f64 = 0.333;
+/// Upper bound `h_new/h ≤ FAC2`.
+const FAC2: f64 = 6.0;
+/// Step reduction after a step that produced non-finite values.
+const NONFINITE_SHRINK: f64 = 0.1;
+
+/// Settings of one adaptive integration (validated by the caller).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Config {
+    pub rtol: f64,
+    pub atol: f64,
+    /// Largest step (`f64::INFINITY` for none).
+    pub h_max: f64,
+    /// Initial step; `None` for Hairer's heuristic.
+    pub h_init: Option<f64>,
+    /// Budget of attempted steps.
+    pub max_steps: usize,
+    /// Whether to prepare the dense output of every accepted step (3 more evaluations a step).
+    pub dense: bool,
+}
+
+/// Work counters of one integration.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) struct Counters {
+    pub accepted: usize,
+    pub rejected: usize,
+    pub evaluations: usize,
+}
+
+/// The 7th-order continuous extension of one accepted step `[t_old, t_old + h]`.
+#[derive(Debug, Clone)]
+pub(crate) struct DenseStep<const N: usize> {
+    t_old: f64,
+    h: f64,
+    cont: [SVector<f64, N>; 8],
+}
+
+impl<const N: usize> DenseStep<N> {
+    /// The interpolated state at `t` (Hairer's `contd8`); exact at both ends up to round-off.
+    pub fn eval(&self, t: f64) -> SVector<f64, N> {
+        let s = (t - self.t_old) / self.h;
+        let s1 = 1.0 - s;
+        let c = &self.cont;
+        let conp = c[4] + (c[5] + (c[6] + c[7] * s) * s1) * s;
+        c[0] + (c[1] + (c[2] + (c[3] + conp * s1) * s) * s1) * s
+    }
+}
+
+/// One accepted step as seen by the output callback.
+pub(crate) struct Accepted<'a, const N: usize> {
+    /// Start of the step.
+    pub t_old: f64,
+    /// End of the step (the new current time).
+    pub t: f64,
+    /// State at `t`.
+    pub y: &'a SVector<f64, N>,
+    /// Continuous extension over `[t_old, t]`, when `Config::dense` is set.
+    pub dense: Option<&'a DenseStep<N>>,
+}
+
+fn all_finite<const N: usize>(v: &SVector<f64, N>) -> bool {
+    v.iter().all(|x| x.is_finite())
+}
+
+/// The result of one trial step of size `h` from `(t, y)` with `k[0] = f(t, y)`.
+struct Trial<const N: usize> {
+    y_new: SVector<f64, N>,
+    /// Scaled error estimate (accept when ≤ 1); may be non-finite.
+    err: f64,
+}
+
+/// Computes stages 2–12 into `k[1..12]`, the 8th-order solution and the error estimate.
+fn trial_step<const N: usize, F>(
+    f: &mut F,
+    t: f64,
+    y: &SVector<f64, N>,
+    h: f64,
+    k: &mut [SVector<f64, N>; 16],
+    rtol: f64,
+    atol: f64,
+) -> Result<Trial<N>, RouthError>
+where
+    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+{
+    for i in 1..12 {
+        let mut yi = *y;
+        for (j, a) in A[i].iter().enumerate().take(i) {
+            if *a != 0.0 {
+                yi += k[j] * (h * a);
+            }
+        }
+        k[i] = f(t + C[i] * h, &yi)?;
+    }
+    let mut incr = SVector::<f64, N>::zeros();
+    for (j, b) in B.iter().enumerate() {
+        if *b != 0.0 {
+            incr += k[j] * *b;
+        }
+    }
+    let y_new = y + incr * h;
+    let (mut err5, mut err3) = (0.0, 0.0);
+    for i in 0..N {
+        let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
+        let e3 = incr[i] - BHH[0] * k[0][i] - BHH[1] * k[8][i] - BHH[2] * k[11][i];
+        err3 += (e3 / sk).powi(2);
+        let e5: f64 = ER.iter().zip(k.iter()).map(|(e, kj)| e * kj[i]).sum();
+        err5 += (e5 / sk).powi(2);
+    }
+    let mut deno = err5 + 0.01 * err3;
+    if deno <= 0.0 {
+        deno = 1.0;
+    }
+    let err = h.abs() * err5 * (1.0 / (N as f64 * deno)).sqrt();
+    Ok(Trial { y_new, err })
+}
+
+/// Hairer's initial step heuristic (`hinit` of `dop853.f`, order 8).
+fn initial_step<const N: usize, F>(
+    f: &mut F,
+    t: f64,
+    y: &SVector<f64, N>,
+    f0: &SVector<f64, N>,
+    cfg: &Config,
+    counters: &mut Counters,
+) -> Result<f64, RouthError>
+where
+    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+{
+    let sk = y.map(|yi| cfg.atol + cfg.rtol * yi.abs());
+    let dnf: f64 = f0.component_div(&sk).norm_squared();
+    let dny: f64 = y.component_div(&sk).norm_squared();
+    let mut h = if dnf <= 1e-10 || dny <= 1e-10 { 1e-6 } else { (dny / dnf).sqrt() * 0.01 };
+    h = h.min(cfg.h_max);
+    let y1 = y + f0 * h;
+    let f1 = f(t + h, &y1)?;
+    counters.evaluations += 1;
+    let der2 = (f1 - f0).component_div(&sk).norm() / h;
+    let der12 = der2.abs().max(dnf.sqrt());
+    let h1 = if !der12.is_finite() {
+        h * 1e-3
+    } else if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(1.0 / 8.0)
+    };
+    Ok((100.0 * h).min(h1).min(cfg.h_max))
+}
+
+/// Integrates `y' = f(t, y)` from `(t0, y0)` to `t_end > t0`, calling `on_step` after every
+/// accepted step (the initial point is not reported). The last step ends exactly at `t_end`.
+///
+/// Errors: whatever `f` or `on_step` returns; `StepSizeUnderflow` when `0.1·h ≤ |t|·ε` (or `h`
+/// is subnormal); `TooManySteps` when `max_steps` steps were attempted; `NonFiniteState` when
+/// `f(t0, y0)` is not finite, or when non-finite trial values shrink the step to underflow.
+pub(crate) fn integrate<const N: usize, F, O>(
+    mut f: F,
+    t0: f64,
+    y0: SVector<f64, N>,
+    t_end: f64,
+    cfg: &Config,
+    mut on_step: O,
+) -> Result<Counters, RouthError>
+where
+    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+    O: FnMut(&Accepted<'_, N>) -> Result<(), RouthError>,
+{
+    let mut counters = Counters::default();
+    let mut t = t0;
+    let mut y = y0;
+    let mut k = [SVector::<f64, N>::zeros(); 16];
+    k[0] = f(t, &y)?;
+    counters.evaluations += 1;
+    if !all_finite(&k[0]) {
+        return Err(RouthError::NonFiniteState { t });
+    }
+    if t_end <= t0 {
+        return Ok(counters);
+    }
+    let mut h = match cfg.h_init {
+        Some(h) => h.min(cfg.h_max),
+        None => initial_step(&mut f, t, &y, &k[0], cfg, &mut counters)?,
+    };
+    let mut reject = false;
+    let mut nonfinite = false;
+    let mut attempts = 0usize;
+    loop {
+        if attempts >= cfg.max_steps {
+            return Err(RouthError::TooManySteps { t, steps: attempts });
+        }
+        if !(h.is_normal() && 0.1 * h > t.abs() * f64::EPSILON) {
+            return Err(if nonfinite {
+                RouthError::NonFiniteState { t }
+            } else {
+                RouthError::StepSizeUnderflow { t, h }
+            });
+        }
+        let last = t + 1.01 * h >= t_end;
+        if last {
+            h = t_end - t;
+        }
+        attempts += 1;
+
+        let trial = trial_step(&mut f, t, &y, h, &mut k, cfg.rtol, cfg.atol)?;
+        counters.evaluations += 11;
+        if !(trial.err.is_finite() && all_finite(&trial.y_new)) {
+            nonfinite = true;
+            reject = true;
+            counters.rejected += 1;
+            h *= NONFINITE_SHRINK;
+            continue;
+        }
+        let err = trial.err;
+        let fac11 = err.powf(1.0 / 8.0);
+        let fac = (fac11 / SAFE).clamp(1.0 / FAC2, 1.0 / FAC1);
+        let mut h_new = h / fac;
+
+        if err <= 1.0 {
+            // Stage 13: f at the new point, reused as stage 1 of the next step (FSAL).
+            let t_new = if last { t_end } else { t + h };
+            let k13 = f(t_new, &trial.y_new)?;
+            counters.evaluations += 1;
+            if !all_finite(&k13) {
+                nonfinite = true;
+                reject = true;
+                counters.rejected += 1;
+                h *= NONFINITE_SHRINK;
+                continue;
+            }
+            nonfinite = false;
+            k[12] = k13;
+            let dense = if cfg.dense {
+                Some(dense_step(&mut f, t, &y, &trial.y_new, h, &mut k, &mut counters)?)
+            } else {
+                None
+            };
+            let t_old = t;
+            t = t_new;
+            y = trial.y_new;
+            k[0] = k13;
+            counters.accepted += 1;
+            on_step(&Accepted { t_old, t, y: &y, dense: dense.as_ref() })?;
+            if last {
+                return Ok(counters);
+            }
+            h_new = h_new.min(cfg.h_max);
+            if reject {
+                h_new = h_new.min(h);
+            }
+            reject = false;
+        } else {
+            h_new = h / (1.0 / FAC1).min(fac11 / SAFE);
+            reject = true;
+            counters.rejected += 1;
+        }
+        h = h_new;
+    }
+}
+
+/// Stages 14–16 and the coefficients of the continuous extension (Hairer's `dop853.f`).
+fn dense_step<const N: usize, F>(
+    f: &mut F,
+    t: f64,
+    y: &SVector<f64, N>,
+    y_new: &SVector<f64, N>,
+    h: f64,
+    k: &mut [SVector<f64, N>; 16],
+    counters: &mut Counters,
+) -> Result<DenseStep<N>, RouthError>
+where
+    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+{
+    for i in 13..16 {
+        let mut yi = *y;
+        for (j, a) in A[i].iter().enumerate().take(i) {
+            if *a != 0.0 {
+                yi += k[j] * (h * a);
+            }
+        }
+        k[i] = f(t + C[i] * h, &yi)?;
+    }
+    counters.evaluations += 3;
+    let ydiff = y_new - y;
+    let bspl = k[0] * h - ydiff;
+    let mut cont = [SVector::<f64, N>::zeros(); 8];
+    cont[0] = *y;
+    cont[1] = ydiff;
+    cont[2] = bspl;
+    cont[3] = ydiff - k[12] * h - bspl;
+    for (r, drow) in D.iter().enumerate() {
+        let mut s = SVector::<f64, N>::zeros();
+        for (j, d) in drow.iter().enumerate() {
+            if *d != 0.0 {
+                s += k[j] * *d;
+            }
+        }
+        cont[4 + r] = s * h;
+    }
+    Ok(DenseStep { t_old: t, h, cont })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cfg(rtol: f64, atol: f64, dense: bool) -> Config {
+        Config { rtol, atol, h_max: f64::INFINITY, h_init: None, max_steps: 100_000, dense }
+    }
+
+    /// Row sums of A equal the nodes, and the weights satisfy the first order conditions.
+    #[test]
+    fn tableau_consistency() {
+        for i in 1..16 {
+            if i == 12 {
+                continue; // stage 13 is f(t + h, y_new), not built from A
+            }
+            let s: f64 = A[i].iter().sum();
+            assert!((s - C[i]).abs() < 1e-14, "row {i}: {s} vs {}", C[i]);
+        }
+        // Σb = 1, Σb c = 1/2, ..., Σ b c^{q−1} = 1/q for q ≤ 8 (quadrature order 8).
+        for q in 1..=8 {
+            let s: f64 = B.iter().zip(C.iter()).map(|(b, c)| b * c.powi(q - 1)).sum();
+            assert!((s - 1.0 / q as f64).abs() < 1e-13, "q = {q}: {s}");
+        }
+        // The 5th-order error estimator integrates constants to zero, the 3rd-order one uses
+        // weights summing to one.
+        assert!(ER.iter().sum::<f64>().abs() < 1e-14);
+        assert!((BHH.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+    }
+
+    /// `n` steps of size `h` of the 8th-order solution, without step-size control.
+    fn fixed_steps<F>(f: &mut F, y0: SVector<f64, 2>, h: f64, n: usize) -> SVector<f64, 2>
+    where
+        F: FnMut(f64, &SVector<f64, 2>) -> Result<SVector<f64, 2>, RouthError>,
+    {
+        let mut y = y0;
+        let mut t = 0.0;
+        let mut k = [SVector::<f64, 2>::zeros(); 16];
+        for _ in 0..n {
+            k[0] = f(t, &y).unwrap();
+            y = trial_step(f, t, &y, h, &mut k, 1.0, 1.0).unwrap().y_new;
+            t += h;
+        }
+        y
+    }
+
+    /// The local error of one step on a nonlinear problem shrinks like h⁹ (order 8).
+    #[test]
+    fn local_order_is_eight() {
+        let mut f = |_t: f64, y: &SVector<f64, 2>| -> Result<SVector<f64, 2>, RouthError> {
+            Ok(SVector::<f64, 2>::new(y[1], -y[0] * (1.0 + y[0] * y[0] / 10.0) + y[1].sin()))
+        };
+        let y0 = SVector::<f64, 2>::new(1.0, 0.5);
+        let h = 0.4;
+        // References: 64 sub-steps (their error is ~64⁻⁸ smaller than one step's).
+        let e1 = (fixed_steps(&mut f, y0, h, 1) - fixed_steps(&mut f, y0, h / 64.0, 64)).norm();
+        let e2 = (fixed_steps(&mut f, y0, h / 2.0, 1) - fixed_steps(&mut f, y0, h / 128.0, 64))
+            .norm();
+        let ratio = e1 / e2;
+        // 2⁹ = 512 asymptotically.
+        assert!(ratio > 300.0 && ratio < 900.0, "ratio {ratio} (e1 = {e1:e}, e2 = {e2:e})");
+    }
+
+    /// Global error on y' = λy scales with the tolerance, and the dense output is accurate.
+    #[test]
+    fn tolerance_proportionality_and_dense_output() {
+        // Harmonic oscillator, exact (cos t, −sin t).
+        let f = |_t: f64, y: &SVector<f64, 2>| -> Result<SVector<f64, 2>, RouthError> {
+            Ok(SVector::<f64, 2>::new(y[1], -y[0]))
+        };
+        let mut errors = vec![];
+        for &tol in &[1e-6, 1e-8, 1e-10, 1e-12] {
+            let mut max_err: f64 = 0.0;
+            let mut max_dense: f64 = 0.0;
+            let c = integrate(
+                f,
+                0.0,
+                SVector::<f64, 2>::new(1.0, 0.0),
+                20.0,
+                &cfg(tol, tol, true),
+                |acc| {
+                    let exact = SVector::<f64, 2>::new(acc.t.cos(), -acc.t.sin());
+                    max_err = max_err.max((acc.y - exact).amax());
+                    if let Some(d) = acc.dense {
+                        for s in [0.13, 0.5, 0.87] {
+                            let tm = acc.t_old + s * (acc.t - acc.t_old);
+                            let ex = SVector::<f64, 2>::new(tm.cos(), -tm.sin());
+                            max_dense = max_dense.max((d.eval(tm) - ex).amax());
+                        }
+                        assert!((d.eval(acc.t) - acc.y).amax() < 1e-14);
+                    }
+                    Ok(())
+                },
+            )
+            .unwrap();
+            assert!(c.accepted > 0);
+            assert!(max_err < 1e3 * tol, "tol {tol:e}: error {max_err:e}");
+            assert!(max_dense < 1e3 * tol, "tol {tol:e}: dense error {max_dense:e}");
+            errors.push(max_err);
+        }
+        // Tighter tolerance, smaller error (by ≥ 30 per factor 100).
+        for w in errors.windows(2) {
+            assert!(w[1] < w[0] / 30.0, "{errors:?}");
+        }
+    }
+
+    #[test]
+    fn ends_exactly_at_t_end_and_counts() {
+        let f = |t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
+            Ok(SVector::<f64, 1>::new(-y[0] + t.sin()))
+        };
+        let mut last_t = 0.0;
+        let mut n = 0;
+        let c = integrate(f, 0.0, SVector::<f64, 1>::new(1.0), 3.7, &cfg(1e-9, 1e-9, false), |a| {
+            assert!(a.t > a.t_old);
+            last_t = a.t;
+            n += 1;
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(last_t, 3.7);
+        assert_eq!(n, c.accepted);
+        // Exact: y = (3/2)e^{−t} + (sin t − cos t)/2.
+        let mut y_end = 0.0;
+        integrate(f, 0.0, SVector::<f64, 1>::new(1.0), 3.7, &cfg(1e-11, 1e-11, false), |a| {
+            y_end = a.y[0];
+            Ok(())
+        })
+        .unwrap();
+        let t: f64 = 3.7;
+        let exact = 1.5 * (-t).exp() + (t.sin() - t.cos()) / 2.0;
+        assert!((y_end - exact).abs() < 1e-10, "{y_end} vs {exact}");
+    }
+
+    #[test]
+    fn errors_are_values() {
+        // Blow-up y' = y²: y = 1/(1 − t), singular at t = 1.
+        let f = |_t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
+            Ok(SVector::<f64, 1>::new(y[0] * y[0]))
+        };
+        let r = integrate(f, 0.0, SVector::<f64, 1>::new(1.0), 2.0, &cfg(1e-8, 1e-8, false), |_| {
+            Ok(())
+        });
+        assert!(
+            matches!(
+                r,
+                Err(RouthError::StepSizeUnderflow { .. })
+                    | Err(RouthError::TooManySteps { .. })
+                    | Err(RouthError::NonFiniteState { .. })
+            ),
+            "{r:?}"
+        );
+        let mut small = cfg(1e-8, 1e-8, false);
+        small.max_steps = 3;
+        let g = |_t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
+            Ok(SVector::<f64, 1>::new(-y[0]))
+        };
+        let r = integrate(g, 0.0, SVector::<f64, 1>::new(1.0), 100.0, &small, |_| Ok(()));
+        assert!(matches!(r, Err(RouthError::TooManySteps { steps: 3, .. })), "{r:?}");
+        // Errors from the right-hand side propagate.
+        let bad = |t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
+            if t > 0.5 {
+                Err(RouthError::NonFiniteState { t: -1.0 })
+            } else {
+                Ok(*y)
+            }
+        };
+        let r = integrate(bad, 0.0, SVector::<f64, 1>::new(1.0), 1.0, &cfg(1e-8, 1e-8, false), |_| {
+            Ok(())
+        });
+        assert_eq!(r, Err(RouthError::NonFiniteState { t: -1.0 }));
+        // NaN at the start.
+        let nan = |_t: f64, _y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
+            Ok(SVector::<f64, 1>::new(f64::NAN))
+        };
+        let r = integrate(nan, 0.0, SVector::<f64, 1>::new(1.0), 1.0, &cfg(1e-8, 1e-8, false), |_| {
+            Ok(())
+        });
+        assert_eq!(r, Err(RouthError::NonFiniteState { t: 0.0 }));
+    }
+}

@@ -1,0 +1,373 @@
+//! Stability of a steady motion: sufficient conditions (62)–(63), the degree of instability and
+//! gyroscopic stabilisation (64), with the corrections of ERRATA E4, E5 and E8.
+//!
+//! # Method
+//!
+//! Let `P` be a 3×2 orthonormal basis of the tangent plane γ^⊥ (63).
+//! 1. The restricted second variation of the amended potential is the 2×2 form
+//!    `K = Pᵀ(μE − ∂²R/∂γ²)P` with `μ = (∂R/∂γ, γ)` at `Ω = 0` (62)–(63). Its eigenvalues are
+//!    [`StabilityReport::restricted_hessian_eigenvalues`]; the number of negative ones is the
+//!    degree of instability (section 5).
+//! 2. The characteristic polynomial of the linearised reduced system (65) on the tangent plane is
+//!    `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` with `A`, `G`, `C` of [`Routhian::gyroscopic_system`]
+//!    (ERRATA E5: the printed 3×3 `f(λ)` of (64) vanishes identically). With `a = PᵀAP`,
+//!    `c = PᵀCP` symmetric and `PᵀGP = [[0, g], [−g, 0]]`, it is the even quartic
+//!    `f₂(λ) = c₄λ⁴ + c₂λ² + c₀`, `c₄ = det a`, `c₂ = a₁₁c₂₂ + a₂₂c₁₁ − 2a₁₂c₁₂ + 4g²`,
+//!    `c₀ = det c`, solved exactly as a quadratic in `s = λ²` and then `λ = ±√s` (complex square
+//!    root). `c = PᵀCP` is `K` up to a rotation of the plane by a right angle (ERRATA E6), so
+//!    `c₀ = det K`.
+//!
+//! # Verdict
+//!
+//! - [`Stability::Degenerate`] when an eigenvalue of `K` is zero within
+//!   [`ZERO_EIGENVALUE_TOL`](crate::ZERO_EIGENVALUE_TOL) times the local scale
+//!   `s = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (ERRATA E8: the parity argument then says nothing; circles of
+//!   steady motions of a symmetric body are always in this case). The scale bounds the terms
+//!   whose difference forms `K` (γ is dimensionless, so all of them are energies); round-off in
+//!   `K` is a few `ε·s`.
+//! - Otherwise, with `d` the degree of instability: `d = 0` ⇒ [`Stability::SecularlyStable`]
+//!   (section 4); `d = 1` ⇒ [`Stability::Unstable`] (odd degree, section 5); `d = 2` ⇒
+//!   [`Stability::GyroscopicallyStabilized`] when the quadratic `c₄s² + c₂s + c₀` has two distinct
+//!   real negative roots (all four roots of `f₂` simple and on the imaginary axis: linear
+//!   stability), [`Stability::Unstable`] when a root of `f₂` leaves the imaginary axis.
+//! - The boundary of gyroscopic stabilisation, where the discriminant `c₂² − 4c₄c₀` vanishes
+//!   within [`DOUBLE_ROOT_TOL`] times `c₂² + 4|c₄c₀|` (e.g. the sleeping top at exactly
+//!   `p_ψ² = 4A₁mgl`, Maievskii): the roots are snapped to the double pair `±i√(−s)`,
+//!   `s = −c₂/(2c₄)`. Two modes of opposite Krein signature collide there and the linearisation
+//!   generically has a Jordan block (secular growth `t·e^{iωt}`), so neither linear stability nor
+//!   instability follows: with `d = 2` and `s < 0` the verdict is [`Stability::Degenerate`]
+//!   (inconclusive), with `s > 0` it is [`Stability::Unstable`] (real roots).
+
+use std::fmt;
+
+use nalgebra::{Complex, Vector3};
+
+use crate::error::{check_finite, RouthError};
+use crate::model::Routhian;
+use crate::steady::{
+    check_kinetic, local_scale, restricted_hessian, sym2_eigen, tangent_basis, unit_gamma,
+    SteadyMotion, ZERO_EIGENVALUE_TOL,
+};
+
+/// Tolerance on `| |γ| − 1 |` for an input γ to count as a unit vector (it is then normalised).
+/// Loose enough for a γ typed from a closed form or read back from a trajectory integrated with
+/// tight tolerances, tight enough that the second variation is evaluated on the sphere.
+pub const UNIT_GAMMA_TOL: f64 = 1e-8;
+/// Relative tolerance on the discriminant of `f₂` in `λ²` under which its two roots in `λ²` are
+/// treated as a double root (the boundary of gyroscopic stabilisation). The discriminant is a
+/// difference of terms of size `c₂² + 4|c₄c₀|` computed to a few ulps, so `1e−10` is far above
+/// round-off and far below any physically meaningful distance from the boundary (0.1 % from the
+/// Maievskii bound gives a relative discriminant of order `1e−3`).
+pub const DOUBLE_ROOT_TOL: f64 = 1e-10;
+
+/// The stability verdict of [`classify`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Stability {
+    /// The restricted second variation (62)–(63) is positive definite: the amended potential has
+    /// a strict minimum, stable in the secular sense (section 4).
+    SecularlyStable,
+    /// Degree of instability 2 and every root of `f₂` simple and on the imaginary axis: linear
+    /// stability by gyroscopic forces (section 5, ERRATA E5).
+    GyroscopicallyStabilized,
+    /// Odd degree of instability, or a root of `f₂` with positive real part.
+    Unstable,
+    /// The test is inconclusive: a zero eigenvalue of the restricted second variation
+    /// (ERRATA E8), or degree 2 exactly on the boundary of gyroscopic stabilisation (a double
+    /// imaginary pair of roots of `f₂`).
+    Degenerate,
+}
+
+impl fmt::Display for Stability {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Stability::SecularlyStable => "secularly stable",
+            Stability::GyroscopicallyStabilized => "gyroscopically stabilised",
+            Stability::Unstable => "unstable",
+            Stability::Degenerate => "degenerate (test inconclusive)",
+        })
+    }
+}
+
+/// The stability analysis of one steady motion (sections 4–5 with ERRATA E5, E8).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StabilityReport {
+    /// Eigenvalues, ascending, of the restricted second variation `Pᵀ(μE − ∂²R/∂γ²)P` of the
+    /// amended potential (62)–(63).
+    pub restricted_hessian_eigenvalues: [f64; 2],
+    /// Number of negative eigenvalues among those not counted as zero (section 5).
+    pub degree_of_instability: usize,
+    /// The four roots of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` (ERRATA E5), sorted by real part, then
+    /// imaginary part. They are the non-zero eigenvalues of the linearised full system (8).
+    pub f2_roots: [Complex<f64>; 4],
+    /// The verdict.
+    pub verdict: Stability,
+}
+
+impl fmt::Display for StabilityReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let [k1, k2] = self.restricted_hessian_eigenvalues;
+        write!(
+            f,
+            "{}: restricted second variation eigenvalues [{:+.6e}, {:+.6e}], degree of \
+             instability {}, roots of f₂:",
+            self.verdict, k1, k2, self.degree_of_instability
+        )?;
+        for (i, r) in self.f2_roots.iter().enumerate() {
+            let sep = if i == 0 { " " } else { ", " };
+            write!(f, "{sep}{:+.6e}{:+.6e}i", r.re, r.im)?;
+        }
+        Ok(())
+    }
+}
+
+/// Classifies the steady motion `steady` at the cyclic momentum `p_psi` (sections 4–5): the
+/// eigenvalues of the restricted second variation (62)–(63), the degree of instability, the roots
+/// of `f₂` (ERRATA E5) and the verdict (see the module documentation for the rules and their
+/// tolerances). `steady.gamma` must be a critical point of the amended potential, as returned by
+/// [`steady_motions`](crate::steady_motions) or built by [`SteadyMotion::at`]; the other fields of
+/// `steady` are not used.
+///
+/// Errors: [`RouthError::NonFinite`] for non-finite `p_psi` or γ (or non-finite derivatives of the
+/// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`];
+/// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
+/// `J(γ) = ∂²L/∂ω²` is not positive definite.
+///
+/// ```
+/// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
+/// use routh_core::{classify, SteadyMotion, Stability};
+/// /// A free symmetric body (no potential, J = diag(2, 2, 1)), written with its Routh function.
+/// struct Free;
+/// # fn j() -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(2.0, 2.0, 1.0)) }
+/// # impl Lagrangian for Free {
+/// #     fn lagrangian(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> f64 { 0.5 * w.dot(&(j() * w)) }
+/// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { j() * w }
+/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { Vector3::zeros() }
+/// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { j() }
+/// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+/// #         Matrix3::zeros()
+/// #     }
+/// # }
+/// # impl Routhian for Free {
+/// #     fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+/// #         0.5 * w.dot(&(j() * w)) - 0.5 * q * q / n
+/// #     }
+/// #     fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+/// #         j() * w + (q / n) * (j() * g)
+/// #     }
+/// #     fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+/// #         (q / n) * (j() * w) + (q * q / (n * n)) * (j() * g)
+/// #     }
+/// #     fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
+/// #         let n = g.dot(&(j() * g));
+/// #         j() - (j() * g) * (j() * g).transpose() / n
+/// #     }
+/// #     fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+/// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
+/// #         (j() * g) * dqn.transpose() + (q / n) * j()
+/// #     }
+/// #     fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+/// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
+/// #         (j() * w) * dqn.transpose() + (q * q / (n * n)) * j()
+/// #             + (2.0 * q / n) * (j() * g) * dqn.transpose()
+/// #     }
+/// # }
+/// // Spin about the axis of least inertia: U_r = ½p²/(γᵀJγ) has its maximum there, but the
+/// // gyroscopic forces stabilise it (all roots of f₂ on the imaginary axis).
+/// let p = 1.0;
+/// let spin = SteadyMotion::at(&Free, Vector3::z(), p, true)?;
+/// let report = classify(&Free, &spin, p)?;
+/// assert_eq!(report.degree_of_instability, 2);
+/// assert_eq!(report.verdict, Stability::GyroscopicallyStabilized);
+/// assert!(report.f2_roots.iter().all(|r| r.re == 0.0));
+/// println!("{report}");
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn classify<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    p_psi: f64,
+) -> Result<StabilityReport, RouthError> {
+    check_finite("p_psi", &[p_psi])?;
+    let gamma = unit_gamma(&steady.gamma)?;
+    check_kinetic(model, &gamma)?;
+
+    // (62)–(63): the restricted second variation of the amended potential.
+    let bundle = model.bundle(&Vector3::zeros(), &gamma, p_psi);
+    check_finite("dr_dgamma", bundle.dr_dgamma.as_slice())?;
+    check_finite("d2r_dgamma2", bundle.d2r_dgamma2.as_slice())?;
+    let p = tangent_basis(&gamma);
+    let mu = bundle.dr_dgamma.dot(&gamma);
+    let k = restricted_hessian(&p, mu, &bundle.d2r_dgamma2);
+    let eigs = sym2_eigen(&k).values;
+    let scale = local_scale(&bundle.dr_dgamma, &bundle.d2r_dgamma2);
+    let zero_tol = ZERO_EIGENVALUE_TOL * scale;
+    let any_zero = eigs.iter().any(|e| e.abs() <= zero_tol);
+    let degree = eigs.iter().filter(|&&e| e < -zero_tol).count();
+
+    // (64) on the tangent plane (ERRATA E5).
+    let [c4, c2, c0] = f2_coefficients(model, &gamma, p_psi)?;
+    let roots = quartic_roots(c4, c2, c0);
+
+    let verdict = if any_zero {
+        Stability::Degenerate
+    } else {
+        match degree {
+            0 => Stability::SecularlyStable,
+            2 => match roots.kind {
+                SquareRoots::DistinctNegative => Stability::GyroscopicallyStabilized,
+                SquareRoots::DoubleNegative => Stability::Degenerate,
+                _ => Stability::Unstable,
+            },
+            _ => Stability::Unstable,
+        }
+    };
+    Ok(StabilityReport {
+        restricted_hessian_eigenvalues: eigs,
+        degree_of_instability: degree,
+        f2_roots: roots.lambda,
+        verdict,
+    })
+}
+
+/// The coefficients `[c₄, c₂, c₀]` of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P) = c₄λ⁴ + c₂λ² + c₀`
+/// (ERRATA E5) at the unit vector γ, from [`Routhian::gyroscopic_system`]. They do not depend on
+/// the choice of the orthonormal basis `P` of γ^⊥.
+///
+/// Errors: as [`classify`].
+pub fn f2_coefficients<M: Routhian>(
+    model: &M,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+) -> Result<[f64; 3], RouthError> {
+    check_finite("p_psi", &[p_psi])?;
+    let gamma = unit_gamma(gamma)?;
+    check_kinetic(model, &gamma)?;
+    let sys = model.gyroscopic_system(&gamma, p_psi);
+    let p = tangent_basis(&gamma);
+    let a = p.transpose() * sys.a * p;
+    let a = 0.5 * (a + a.transpose());
+    let c = p.transpose() * sys.c * p;
+    let c = 0.5 * (c + c.transpose());
+    let gm = p.transpose() * sys.g * p;
+    let g = 0.5 * (gm[(0, 1)] - gm[(1, 0)]);
+    // det(aλ² + 2gJλ + c) for symmetric a, c and J = [[0, 1], [−1, 0]]: the skew part adds
+    // (2gλ)² to the determinant of the symmetric part.
+    let c4 = a.determinant();
+    let c2 = a[(0, 0)] * c[(1, 1)] + a[(1, 1)] * c[(0, 0)] - 2.0 * a[(0, 1)] * c[(0, 1)]
+        + 4.0 * g * g;
+    let c0 = c.determinant();
+    check_finite("coefficients of f2", &[c4, c2, c0])?;
+    if !(c4 > 0.0) {
+        // J positive definite makes PᵀAP (a Schur complement of J) positive definite.
+        return Err(RouthError::KineticNotPositiveDefinite {
+            gamma: [gamma.x, gamma.y, gamma.z],
+            min_eigenvalue: c4,
+        });
+    }
+    Ok([c4, c2, c0])
+}
+
+/// How the roots in `s = λ²` of `c₄s² + c₂s + c₀` lie.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum SquareRoots {
+    /// Two distinct real negative roots: four simple imaginary roots λ.
+    DistinctNegative,
+    /// A double real negative root (within [`DOUBLE_ROOT_TOL`]): a double imaginary pair.
+    DoubleNegative,
+    /// Anything else (a non-negative real root or a complex pair).
+    Other,
+}
+
+struct QuarticRoots {
+    lambda: [Complex<f64>; 4],
+    kind: SquareRoots,
+}
+
+/// The two square roots `±√s` of a real `s`, exactly on an axis.
+fn sqrt_real(s: f64) -> [Complex<f64>; 2] {
+    if s >= 0.0 {
+        let r = s.sqrt();
+        [Complex::new(r, 0.0), Complex::new(-r, 0.0)]
+    } else {
+        let r = (-s).sqrt();
+        [Complex::new(0.0, r), Complex::new(0.0, -r)]
+    }
+}
+
+/// Roots of the even quartic `c₄λ⁴ + c₂λ² + c₀` (`c₄ > 0`), sorted by `(re, im)`.
+fn quartic_roots(c4: f64, c2: f64, c0: f64) -> QuarticRoots {
+    let disc = c2 * c2 - 4.0 * c4 * c0;
+    let disc_scale = c2 * c2 + 4.0 * (c4 * c0).abs();
+    let (mut lambda, kind) = if disc.abs() <= DOUBLE_ROOT_TOL * disc_scale {
+        let s = -c2 / (2.0 * c4);
+        let [r1, r2] = sqrt_real(s);
+        let kind = if s < 0.0 {
+            SquareRoots::DoubleNegative
+        } else {
+            SquareRoots::Other
+        };
+        ([r1, r2, r1, r2], kind)
+    } else if disc > 0.0 {
+        // Numerically stable roots of the quadratic in s.
+        let q = -0.5 * (c2 + c2.signum() * disc.sqrt());
+        let s1 = q / c4;
+        let s2 = if q != 0.0 { c0 / q } else { -s1 };
+        let [a1, a2] = sqrt_real(s1);
+        let [b1, b2] = sqrt_real(s2);
+        let kind = if s1 < 0.0 && s2 < 0.0 {
+            SquareRoots::DistinctNegative
+        } else {
+            SquareRoots::Other
+        };
+        ([a1, a2, b1, b2], kind)
+    } else {
+        // A complex pair s = (−c₂ ± i√(−disc))/(2c₄): λ = ±√s, two roots in the right half-plane.
+        let s = Complex::new(-c2 / (2.0 * c4), (-disc).sqrt() / (2.0 * c4));
+        let r = s.sqrt();
+        let rc = r.conj();
+        ([r, -r, rc, -rc], SquareRoots::Other)
+    };
+    lambda.sort_by(|x, y| x.re.total_cmp(&y.re).then(x.im.total_cmp(&y.im)));
+    QuarticRoots { lambda, kind }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn f2(c4: f64, c2: f64, c0: f64, l: Complex<f64>) -> Complex<f64> {
+        let l2 = l * l;
+        l2 * l2 * c4 + l2 * c2 + c0
+    }
+
+    #[test]
+    fn quartic_roots_are_roots() {
+        for (c4, c2, c0) in [
+            (1.0, 5.0, 4.0),
+            (2.0, -1.0, 3.0),
+            (1.0, -5.0, 4.0),
+            (1.0, 2.0, 1.0),
+            (3.0, 1.0, -2.0),
+            (1.0, 0.0, 0.0),
+            (1.0, 1e-9, 0.0),
+        ] {
+            let r = quartic_roots(c4, c2, c0);
+            for l in r.lambda {
+                let scale = c4 * l.norm().powi(4) + c2.abs() * l.norm_sqr() + c0.abs() + 1e-300;
+                assert!(f2(c4, c2, c0, l).norm() <= 1e-12 * scale, "{c4} {c2} {c0}: {l}");
+            }
+            for w in r.lambda.windows(2) {
+                assert!((w[0].re, w[0].im) <= (w[1].re, w[1].im));
+            }
+        }
+        assert_eq!(quartic_roots(1.0, 5.0, 4.0).kind, SquareRoots::DistinctNegative);
+        assert_eq!(quartic_roots(1.0, 2.0, 1.0).kind, SquareRoots::DoubleNegative);
+        assert_eq!(quartic_roots(2.0, -1.0, 3.0).kind, SquareRoots::Other);
+        assert_eq!(quartic_roots(1.0, -5.0, 4.0).kind, SquareRoots::Other);
+    }
+}

@@ -1,0 +1,406 @@
+//! Validation of `classify` against things it did not produce: the closed forms of the sleeping
+//! Lagrange top (Maievskii's bound, ERRATA "classical checks"), the eigenvalues of a
+//! finite-difference Jacobian of the full equations (8), and the error contract.
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use routh_core::nalgebra::{Matrix6, Vector6};
+use routh_core::{
+    classify, f2_coefficients, steady_motions, Complex, Lagrangian, Matrix3, RouthError, Routhian,
+    Stability, SteadyMotion, Vector3,
+};
+
+// ---------------------------------------------------------------------------------------------
+// A hand-written heavy top: L = ½ωᵀJω − m g r·γ (J constant, symmetric positive definite), with
+// its Routh function (39) and every derivative in closed form. Independent of routh-core's
+// analysis code and of the code generator.
+
+#[derive(Debug, Clone)]
+struct HeavyTop {
+    j: Matrix3<f64>,
+    /// m g r: the weight times the body-frame position of the centre of mass.
+    mgr: Vector3<f64>,
+}
+
+impl HeavyTop {
+    /// The Lagrange top J = diag(A₁, A₁, C), U = m g l γ₃.
+    fn lagrange(a1: f64, c: f64, mgl: f64) -> Self {
+        HeavyTop {
+            j: Matrix3::from_diagonal(&Vector3::new(a1, a1, c)),
+            mgr: Vector3::new(0.0, 0.0, mgl),
+        }
+    }
+    fn n(&self, g: &Vector3<f64>) -> f64 {
+        g.dot(&(self.j * g))
+    }
+    fn q(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+        p - (self.j * w).dot(g)
+    }
+    /// ∂(q/n)/∂γ.
+    fn dqn(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        -(self.j * w) / n - (2.0 * q / (n * n)) * (self.j * g)
+    }
+}
+
+impl Lagrangian for HeavyTop {
+    fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+        0.5 * w.dot(&(self.j * w)) - self.mgr.dot(g)
+    }
+    fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+        self.j * w
+    }
+    fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+        -self.mgr
+    }
+    fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> {
+        self.j
+    }
+    fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+        Matrix3::zeros()
+    }
+}
+
+impl Routhian for HeavyTop {
+    fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        0.5 * w.dot(&(self.j * w)) - self.mgr.dot(g) - 0.5 * q * q / n
+    }
+    fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        self.j * w + (q / n) * (self.j * g)
+    }
+    fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        -self.mgr + (q / n) * (self.j * w) + (q * q / (n * n)) * (self.j * g)
+    }
+    fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
+        let jg = self.j * g;
+        self.j - jg * jg.transpose() / self.n(g)
+    }
+    fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        (self.j * g) * self.dqn(w, g, p).transpose() + (q / n) * self.j
+    }
+    fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        let dqn = self.dqn(w, g, p);
+        (self.j * w) * dqn.transpose()
+            + (q * q / (n * n)) * self.j
+            + (2.0 * q / n) * (self.j * g) * dqn.transpose()
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Helpers.
+
+/// The full equations (8) solved for ω̇: J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω),
+/// γ̇ = γ × ω, written from the Lagrangian trait methods only.
+fn full_field<M: Lagrangian>(m: &M, x: &Vector6<f64>) -> Vector6<f64> {
+    let w = Vector3::new(x[0], x[1], x[2]);
+    let g = Vector3::new(x[3], x[4], x[5]);
+    let gdot = g.cross(&w);
+    let rhs = m.dl_domega(&w, &g).cross(&w) + m.dl_dgamma(&w, &g).cross(&g)
+        - m.d2l_domega_dgamma(&w, &g) * gdot;
+    let wdot = m.d2l_domega2(&g).lu().solve(&rhs).expect("J invertible");
+    Vector6::new(wdot.x, wdot.y, wdot.z, gdot.x, gdot.y, gdot.z)
+}
+
+/// Central finite-difference Jacobian of the full vector field (8) at `x`, with one Richardson
+/// extrapolation (error O(h⁴)).
+fn fd_jacobian<M: Lagrangian>(m: &M, x: &Vector6<f64>, h: f64) -> Matrix6<f64> {
+    let mut jac = Matrix6::zeros();
+    for k in 0..6 {
+        let d = |h: f64| {
+            let mut xp = *x;
+            let mut xm = *x;
+            xp[k] += h;
+            xm[k] -= h;
+            (full_field(m, &xp) - full_field(m, &xm)) / (2.0 * h)
+        };
+        let col = (4.0 * d(h / 2.0) - d(h)) / 3.0;
+        jac.set_column(k, &col);
+    }
+    jac
+}
+
+fn random_spd(rng: &mut ChaCha8Rng) -> Matrix3<f64> {
+    let b = Matrix3::from_fn(|_, _| rng.gen_range(-1.0..1.0));
+    b * b.transpose() + Matrix3::from_diagonal_element(0.5)
+}
+
+fn random_top(rng: &mut ChaCha8Rng) -> HeavyTop {
+    HeavyTop {
+        j: random_spd(rng),
+        mgr: Vector3::from_fn(|_, _| rng.gen_range(-1.0..1.0)),
+    }
+}
+
+fn sleeping(top: &HeavyTop, p: f64) -> SteadyMotion {
+    SteadyMotion::at(top, Vector3::z(), p, true).expect("sleeping top is a steady motion")
+}
+
+/// The roots of f₂ of the sleeping Lagrange top in closed form: with k = p²(2A₁ − C)²/C²,
+/// f₂(λ) = (A₁λ² + h)² + kλ², so λ = (i/2A₁)(±√k ± √(p² − 4A₁mgl)) (complex square root).
+fn sleeping_roots(a1: f64, c: f64, mgl: f64, p: f64) -> Vec<Complex<f64>> {
+    let sk = p.abs() * (2.0 * a1 - c).abs() / c;
+    let d = Complex::new(p * p - 4.0 * a1 * mgl, 0.0).sqrt();
+    let i = Complex::new(0.0, 1.0);
+    let mut out = Vec::new();
+    for s1 in [1.0, -1.0] {
+        for s2 in [1.0, -1.0] {
+            out.push(i * (d * s2 + sk * s1) / (2.0 * a1));
+        }
+    }
+    out
+}
+
+/// Every root in `a` has a distinct partner in `b` within `tol` (greedy matching).
+fn assert_roots_match(a: &[Complex<f64>], b: &[Complex<f64>], tol: f64, what: &str) {
+    let mut used = vec![false; b.len()];
+    for r in a {
+        let (k, dist) = b
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| !used[*k])
+            .map(|(k, s)| (k, (r - s).norm()))
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+            .expect("enough roots");
+        assert!(dist <= tol, "{what}: root {r} unmatched (nearest at {dist:e}); a = {a:?}, b = {b:?}");
+        used[k] = true;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The hand-written model itself (so that failures below cannot come from it).
+
+#[test]
+fn heavy_top_derivatives_match_finite_differences() {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let top = random_top(&mut rng);
+    let w = Vector3::new(0.3, -0.2, 0.5);
+    let g = Vector3::new(0.2, 0.4, -0.9);
+    let p = 0.7;
+    let h = 1e-5;
+    for k in 0..3 {
+        let e = Vector3::ith(k, h);
+        let fd = |f: &dyn Fn(&Vector3<f64>) -> f64| (f(&(g + e)) - f(&(g - e))) / (2.0 * h);
+        let fdw = |f: &dyn Fn(&Vector3<f64>) -> f64| (f(&(w + e)) - f(&(w - e))) / (2.0 * h);
+        assert!((fd(&|g| top.routhian(&w, g, p)) - top.dr_dgamma(&w, &g, p)[k]).abs() < 1e-8);
+        assert!((fdw(&|w| top.routhian(w, &g, p)) - top.dr_domega(&w, &g, p)[k]).abs() < 1e-8);
+        for i in 0..3 {
+            let h_gg = fd(&|g| top.dr_dgamma(&w, g, p)[i]);
+            assert!((h_gg - top.d2r_dgamma2(&w, &g, p)[(i, k)]).abs() < 1e-7);
+            let h_wg = fd(&|g| top.dr_domega(&w, g, p)[i]);
+            assert!((h_wg - top.d2r_domega_dgamma(&w, &g, p)[(i, k)]).abs() < 1e-7);
+            let h_ww = fdw(&|w| top.dr_domega(w, &g, p)[i]);
+            assert!((h_ww - top.d2r_domega2(&w, &g, p)[(i, k)]).abs() < 1e-7);
+        }
+    }
+    // (12)/(38) and (15).
+    let fdp = (top.routhian(&w, &g, p + h) - top.routhian(&w, &g, p - h)) / (2.0 * h);
+    assert!((fdp + top.psi_dot(&w, &g, p)).abs() < 1e-8);
+}
+
+// ---------------------------------------------------------------------------------------------
+// a. The sleeping Lagrange top.
+
+/// Checks the verdict, the degree, the restricted eigenvalues h = −p²(A₁ − C)/C² − mgl (double),
+/// the discriminant p²(2A₁ − C)²(p² − 4A₁mgl)/C² of f₂ in λ² (ERRATA), and the roots of f₂
+/// against their closed form.
+fn check_sleeping(a1: f64, c: f64, mgl: f64, p2: f64, expected: Stability) {
+    let top = HeavyTop::lagrange(a1, c, mgl);
+    let p = p2.sqrt();
+    let report = classify(&top, &sleeping(&top, p), p).unwrap();
+    assert_eq!(report.verdict, expected, "A₁ = {a1}, C = {c}, mgl = {mgl}, p² = {p2}: {report}");
+
+    let h = -p2 * (a1 - c) / (c * c) - mgl;
+    for e in report.restricted_hessian_eigenvalues {
+        assert!((e - h).abs() <= 1e-12 * (p2 / c + mgl), "eigenvalue {e} vs {h}");
+    }
+    assert_eq!(report.degree_of_instability, if h < 0.0 { 2 } else { 0 });
+
+    let [c4, c2, c0] = f2_coefficients(&top, &Vector3::z(), p).unwrap();
+    assert!((c4 - a1 * a1).abs() < 1e-12 * a1 * a1);
+    let disc = c2 * c2 - 4.0 * c4 * c0;
+    let disc_closed = p2 * (2.0 * a1 - c).powi(2) * (p2 - 4.0 * a1 * mgl) / (c * c);
+    assert!(
+        (disc - disc_closed).abs() <= 1e-10 * (c2 * c2 + 4.0 * c4 * c0),
+        "discriminant {disc} vs {disc_closed}"
+    );
+
+    let closed = sleeping_roots(a1, c, mgl, p);
+    let scale = closed.iter().map(|r| r.norm()).fold(0.0, f64::max);
+    assert_roots_match(&report.f2_roots, &closed, 1e-9 * scale, "sleeping top f₂ roots");
+    for w in report.f2_roots.windows(2) {
+        assert!((w[0].re, w[0].im) <= (w[1].re, w[1].im), "roots not sorted");
+    }
+}
+
+#[test]
+fn maievskii_prolate_top() {
+    // C < A₁: the restricted form is negative definite for every p (degree 2).
+    let (a1, c, mgl) = (2.0, 1.0, 1.5);
+    let crit = 4.0 * a1 * mgl;
+    check_sleeping(a1, c, mgl, crit * 0.999, Stability::Unstable);
+    check_sleeping(a1, c, mgl, crit * 1.001, Stability::GyroscopicallyStabilized);
+    check_sleeping(a1, c, mgl, crit * 0.5, Stability::Unstable);
+    check_sleeping(a1, c, mgl, crit * 3.0, Stability::GyroscopicallyStabilized);
+}
+
+#[test]
+fn maievskii_and_secular_threshold_oblate_tops() {
+    // Oblate, A₁ < C < 2A₁ and C > 2A₁. From U_r = ½p²/(γᵀJγ) + mglγ₃ with γᵀJγ = C + (A₁ − C)r²
+    // near γ = e₃, the restricted form is h·E with h = −p²(A₁ − C)/C² − mgl, positive iff
+    // p² > mgl C²/(C − A₁). Since C² − 4A₁(C − A₁) = (C − 2A₁)² ≥ 0 this threshold lies above
+    // Maievskii's 4A₁mgl: Unstable → gyroscopically stabilised → secularly stable.
+    for (a1, c, mgl) in [(1.0, 1.5, 1.0), (1.0, 3.0, 0.7), (2.0, 2.5, 3.0)] {
+        let maievskii = 4.0 * a1 * mgl;
+        let secular = mgl * c * c / (c - a1);
+        assert!(secular > maievskii * 1.01);
+        check_sleeping(a1, c, mgl, maievskii * 0.999, Stability::Unstable);
+        check_sleeping(a1, c, mgl, maievskii * 1.001, Stability::GyroscopicallyStabilized);
+        check_sleeping(a1, c, mgl, secular * 0.999, Stability::GyroscopicallyStabilized);
+        check_sleeping(a1, c, mgl, secular * 1.001, Stability::SecularlyStable);
+        check_sleeping(a1, c, mgl, secular * 4.0, Stability::SecularlyStable);
+    }
+}
+
+#[test]
+fn sleeping_top_with_c_equal_two_a1() {
+    // C = 2A₁: the two thresholds coincide and f₂ has no gyroscopic coupling (k = 0).
+    let (a1, c, mgl) = (1.0, 2.0, 1.0);
+    let crit = 4.0 * a1 * mgl;
+    check_sleeping(a1, c, mgl, crit * 0.999, Stability::Unstable);
+    check_sleeping(a1, c, mgl, crit * 1.001, Stability::SecularlyStable);
+}
+
+#[test]
+fn exactly_on_the_maievskii_bound_is_inconclusive() {
+    // A double imaginary pair of roots (Krein collision): neither stable nor unstable linearly.
+    let (a1, c, mgl) = (2.0, 1.0, 1.5);
+    let top = HeavyTop::lagrange(a1, c, mgl);
+    let p = (4.0 * a1 * mgl).sqrt();
+    let report = classify(&top, &sleeping(&top, p), p).unwrap();
+    assert_eq!(report.verdict, Stability::Degenerate, "{report}");
+    assert_eq!(report.degree_of_instability, 2);
+    assert!(report.f2_roots.iter().all(|r| r.re == 0.0));
+}
+
+#[test]
+fn tilted_precessions_of_a_symmetric_top_are_degenerate() {
+    // ERRATA E8: a circle of relative equilibria has a zero eigenvalue in the restricted form.
+    let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
+    let p = 5.0;
+    let motions = steady_motions(&top, p).unwrap();
+    let circles: Vec<_> = motions.iter().filter(|s| !s.isolated).collect();
+    assert!(!circles.is_empty());
+    for s in circles {
+        let report = classify(&top, s, p).unwrap();
+        assert_eq!(report.verdict, Stability::Degenerate, "{s}: {report}");
+        let [k1, k2] = report.restricted_hessian_eigenvalues;
+        assert!(k1.abs().min(k2.abs()) <= 1e-9 * k1.abs().max(k2.abs()));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// d. Roots of f₂ vs the eigenvalues of a finite-difference Jacobian of the full system (8).
+
+/// The 6×6 Jacobian of (8) at ω = ψ̇γ has the four roots of f₂ and a double zero (ERRATA E5).
+fn check_jacobian<M: Routhian>(model: &M, steady: &SteadyMotion, p: f64, what: &str) -> usize {
+    let report = classify(model, steady, p).unwrap();
+    let w = steady.psi_dot * steady.gamma;
+    let x = Vector6::new(w.x, w.y, w.z, steady.gamma.x, steady.gamma.y, steady.gamma.z);
+    let jac = fd_jacobian(model, &x, 1e-3);
+    let eig: Vec<Complex<f64>> = jac.complex_eigenvalues().iter().copied().collect();
+    let scale = report.f2_roots.iter().map(|r| r.norm()).fold(0.0, f64::max);
+    // Match the f₂ roots (1e−6 relative); the two left over are the double zero. A zero of f₂ at
+    // a degenerate point would make the double zero a quadruple one; none occur here.
+    assert_roots_match(&report.f2_roots, &eig, 1e-6 * scale, what);
+    let mut rest = eig.clone();
+    for r in &report.f2_roots {
+        let k = (0..rest.len())
+            .min_by(|&a, &b| (rest[a] - r).norm().total_cmp(&(rest[b] - r).norm()))
+            .unwrap();
+        rest.remove(k);
+    }
+    for z in rest {
+        // A double zero may split by √(error): allow 1e−4 of the scale.
+        assert!(z.norm() <= 1e-4 * scale, "{what}: leftover eigenvalue {z} is not zero");
+    }
+    1
+}
+
+#[test]
+fn f2_roots_are_the_eigenvalues_of_the_full_jacobian() {
+    let mut checked = 0;
+    // The sleeping Lagrange top on both sides of Maievskii's bound.
+    for p2 in [5.0, 7.0, 20.0] {
+        let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
+        let p = f64::sqrt(p2);
+        checked += check_jacobian(&top, &sleeping(&top, p), p, "sleeping top");
+    }
+    // Every steady motion of random asymmetric heavy tops, at several p_ψ.
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    for _ in 0..2 {
+        let top = random_top(&mut rng);
+        for p in [0.3, 1.5, 4.0] {
+            for s in steady_motions(&top, p).unwrap() {
+                assert!(s.isolated);
+                checked += check_jacobian(&top, &s, p, "asymmetric heavy top");
+            }
+        }
+    }
+    assert!(checked >= 20, "only {checked} steady motions checked");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Error contract.
+
+#[test]
+fn classify_rejects_bad_input() {
+    let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
+    let s = sleeping(&top, 3.0);
+    assert!(matches!(classify(&top, &s, f64::NAN), Err(RouthError::NonFinite { .. })));
+    assert!(matches!(classify(&top, &s, f64::INFINITY), Err(RouthError::NonFinite { .. })));
+    let mut bad = s.clone();
+    bad.gamma = Vector3::new(0.0, 0.0, 1.01);
+    assert!(matches!(classify(&top, &bad, 3.0), Err(RouthError::NonUnitGamma { .. })));
+    bad.gamma = Vector3::zeros();
+    assert!(matches!(classify(&top, &bad, 3.0), Err(RouthError::NonUnitGamma { .. })));
+    bad.gamma = Vector3::new(f64::NAN, 0.0, 1.0);
+    assert!(matches!(classify(&top, &bad, 3.0), Err(RouthError::NonFinite { .. })));
+    // A γ within the documented tolerance is accepted (and normalised).
+    bad.gamma = Vector3::new(0.0, 0.0, 1.0 + 1e-10);
+    assert!(classify(&top, &bad, 3.0).is_ok());
+
+    // γᵀJγ ≤ 0 and J indefinite.
+    let flat = HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0)),
+        mgr: Vector3::z(),
+    };
+    assert!(matches!(
+        classify(&flat, &s, 3.0),
+        Err(RouthError::DegenerateVerticalInertia { .. })
+    ));
+    let tilted = SteadyMotion { gamma: Vector3::new(0.6, 0.0, 0.8), ..s.clone() };
+    let indefinite = HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(1.0, -0.1, 1.0)),
+        mgr: Vector3::z(),
+    };
+    assert!(matches!(
+        classify(&indefinite, &tilted, 3.0),
+        Err(RouthError::KineticNotPositiveDefinite { .. })
+    ));
+}
+
+#[test]
+fn display_is_readable() {
+    let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
+    let s = sleeping(&top, 4.0);
+    let r = classify(&top, &s, 4.0).unwrap();
+    let text = format!("{s}\n{r}");
+    assert!(text.contains("gyroscopically stabilised"), "{text}");
+    assert!(text.contains("degree of instability 2"), "{text}");
+    assert_eq!(Stability::Degenerate.to_string(), "degenerate (test inconclusive)");
+}

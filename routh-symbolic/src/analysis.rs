@@ -1,0 +1,218 @@
+//! Analyses of expressions: polynomial degree in a set of variables, scheduling of outputs,
+//! operation counts and a plain-text printer.
+
+use crate::graph::{Func, Graph, Id, Node};
+
+/// The degree of an expression in a set of variables.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub enum Degree {
+    /// A homogeneous polynomial of this degree in the variables (degree 0: free of them).
+    Homogeneous(u32),
+    /// A polynomial in the variables, but not homogeneous.
+    Mixed,
+    /// Not a polynomial in the variables (a quotient, root or elementary function of them).
+    NotPolynomial,
+}
+
+/// The degree of `root` in the variable slots `vars` (constants and other variables count as
+/// coefficients).
+///
+/// The analysis is structural on the simplified DAG: `ω·ω − ω·ω` has already folded to `0`
+/// (degree 0 here), while an expression that is polynomial only after cancellations it cannot
+/// see (e.g. `sqrt(ω·ω)²` written through a root) is reported as not polynomial.
+pub fn degree(g: &Graph, root: Id, vars: &[u32]) -> Degree {
+    use Degree::*;
+    let mut deg: Vec<Degree> = Vec::with_capacity(root.index() + 1);
+    for i in 0..=root.index() {
+        let d = |c: Id| deg[c.index()];
+        let node = g.nodes()[i];
+        let r = match node {
+            Node::Const(_) => Homogeneous(0),
+            Node::Var(v) => Homogeneous(u32::from(vars.contains(&v))),
+            Node::Add(a, b) => match (d(a), d(b)) {
+                (NotPolynomial, _) | (_, NotPolynomial) => NotPolynomial,
+                (Homogeneous(x), Homogeneous(y)) if x == y => Homogeneous(x),
+                _ => Mixed,
+            },
+            Node::Mul(a, b) => match (d(a), d(b)) {
+                (NotPolynomial, _) | (_, NotPolynomial) => NotPolynomial,
+                (Homogeneous(x), Homogeneous(y)) => Homogeneous(x + y),
+                _ => Mixed,
+            },
+            Node::Neg(a) => d(a),
+            Node::Powi(a, n) => match d(a) {
+                Homogeneous(0) => Homogeneous(0),
+                Homogeneous(x) if n > 0 => Homogeneous(x * n as u32),
+                Mixed if n > 0 => Mixed,
+                _ => NotPolynomial,
+            },
+            Node::Recip(a) | Node::Func(_, a) => match d(a) {
+                Homogeneous(0) => Homogeneous(0),
+                _ => NotPolynomial,
+            },
+            Node::Powf(a, b) => match (d(a), d(b)) {
+                (Homogeneous(0), Homogeneous(0)) => Homogeneous(0),
+                _ => NotPolynomial,
+            },
+        };
+        deg.push(r);
+    }
+    deg[root.index()]
+}
+
+/// The non-leaf nodes needed to compute `outputs`, children before parents (increasing id):
+/// emitting them in this order computes each shared subexpression once.
+pub fn schedule(g: &Graph, outputs: &[Id]) -> Vec<Id> {
+    let Some(max) = outputs.iter().max() else {
+        return Vec::new();
+    };
+    let mut need = vec![false; max.index() + 1];
+    for o in outputs {
+        need[o.index()] = true;
+    }
+    for i in (0..=max.index()).rev() {
+        if need[i] {
+            for c in g.nodes()[i].children() {
+                need[c.index()] = true;
+            }
+        }
+    }
+    (0..=max.index())
+        .filter(|&i| need[i] && !matches!(g.nodes()[i], Node::Const(_) | Node::Var(_)))
+        .map(|i| crate::graph::Id(i as u32))
+        .collect()
+}
+
+/// Floating-point operations of straight-line code, counted as the emitter writes them
+/// (an integer power `x^n` as `n − 1` multiplications, `x^−n` adds one division).
+#[derive(Copy, Clone, Default, PartialEq, Eq, Debug)]
+pub struct OpCounts {
+    pub add: usize,
+    pub mul: usize,
+    pub neg: usize,
+    pub div: usize,
+    pub func: usize,
+}
+
+impl OpCounts {
+    /// Every operation counted once.
+    pub fn total(&self) -> usize {
+        self.add + self.mul + self.neg + self.div + self.func
+    }
+}
+
+impl std::fmt::Display for OpCounts {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} ops ({} add, {} mul, {} neg, {} div, {} calls)",
+            self.total(),
+            self.add,
+            self.mul,
+            self.neg,
+            self.div,
+            self.func
+        )
+    }
+}
+
+/// Counts the operations of the schedule of `outputs`.
+pub fn op_counts(g: &Graph, outputs: &[Id]) -> OpCounts {
+    let mut c = OpCounts::default();
+    for id in schedule(g, outputs) {
+        match g.node(id) {
+            Node::Add(a, b) => {
+                // a + (−b) is emitted as a subtraction.
+                let _ = (a, b);
+                c.add += 1
+            }
+            Node::Mul(..) => c.mul += 1,
+            Node::Neg(_) => c.neg += 1,
+            Node::Recip(_) => c.div += 1,
+            Node::Powi(_, n) => c.mul += n.unsigned_abs() as usize - 1,
+            Node::Powf(..) | Node::Func(..) => c.func += 1,
+            Node::Const(_) | Node::Var(_) => {}
+        }
+    }
+    c
+}
+
+/// Prints `root` as an infix formula, with variables named by `Graph::var_name`.
+/// Shared subexpressions are printed in full, so keep this for small expressions.
+pub fn to_infix(g: &Graph, root: Id) -> String {
+    fn prec(n: &Node) -> u8 {
+        match n {
+            Node::Add(..) => 1,
+            Node::Mul(..) | Node::Recip(_) => 2,
+            Node::Neg(_) => 3,
+            Node::Powi(..) | Node::Powf(..) => 4,
+            Node::Const(b) if f64::from_bits(*b) < 0.0 => 3,
+            _ => 5,
+        }
+    }
+    fn go(g: &Graph, id: Id, out: &mut String, parent: u8) {
+        let node = g.node(id);
+        let p = prec(&node);
+        let paren = p < parent;
+        if paren {
+            out.push('(');
+        }
+        match node {
+            Node::Const(b) => out.push_str(&format!("{}", f64::from_bits(b))),
+            Node::Var(v) => out.push_str(g.var_name(v)),
+            Node::Add(a, b) => {
+                go(g, a, out, 1);
+                if let Node::Neg(nb) = g.node(b) {
+                    out.push_str(" - ");
+                    go(g, nb, out, 2);
+                } else {
+                    out.push_str(" + ");
+                    go(g, b, out, 1);
+                }
+            }
+            Node::Mul(a, b) => {
+                if let Node::Recip(d) = g.node(b) {
+                    go(g, a, out, 2);
+                    out.push_str(" / ");
+                    go(g, d, out, 3);
+                } else {
+                    go(g, a, out, 2);
+                    out.push('·');
+                    go(g, b, out, 2);
+                }
+            }
+            Node::Neg(a) => {
+                out.push('-');
+                go(g, a, out, 3);
+            }
+            Node::Recip(a) => {
+                out.push_str("1 / ");
+                go(g, a, out, 3);
+            }
+            Node::Powi(a, n) => {
+                go(g, a, out, 5);
+                out.push_str(&format!("^{n}"));
+            }
+            Node::Powf(a, b) => {
+                go(g, a, out, 5);
+                out.push('^');
+                go(g, b, out, 5);
+            }
+            Node::Func(f, a) => {
+                out.push_str(match f {
+                    Func::Sign => "sign",
+                    f => f.name(),
+                });
+                out.push('(');
+                go(g, a, out, 0);
+                out.push(')');
+            }
+        }
+        if paren {
+            out.push(')');
+        }
+    }
+    let mut s = String::new();
+    go(g, root, &mut s, 0);
+    s
+}

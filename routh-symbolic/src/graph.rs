@@ -1,0 +1,669 @@
+//! The hash-consed expression DAG.
+//!
+//! Every node lives once in a [`Graph`] and is named by an [`Id`]; a node's children always have
+//! smaller ids than the node (as in egg's `RecExpr`), so walking ids in increasing order is a
+//! topological order, and emitting the nodes reachable from a set of outputs in that order
+//! computes every shared subexpression exactly once.
+//!
+//! Nodes are only ever built through the simplifying constructors ([`Graph::add`],
+//! [`Graph::mul`], …), which fold constants, apply the 0/1 identities, put the operands of
+//! commutative operations in a canonical order and merge integer powers, so structurally equal
+//! expressions get equal ids.
+
+use std::collections::HashMap;
+use std::fmt;
+
+/// The name of a node in a [`Graph`].
+#[derive(Copy, Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
+pub struct Id(pub(crate) u32);
+
+impl Id {
+    /// The index of the node (children have smaller indices than their parents).
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+
+    /// The id of the node at `index` (for walking a graph's nodes in order).
+    pub fn from_index(index: usize) -> Self {
+        Id(index as u32)
+    }
+}
+
+/// Unary elementary functions.
+#[derive(Copy, Clone, PartialEq, Eq, Hash, Debug)]
+pub enum Func {
+    Sqrt,
+    Sin,
+    Cos,
+    Tan,
+    Exp,
+    Ln,
+    Abs,
+    /// The sign function (derivative of `abs`); `signum` with `sign(0) = 0`.
+    Sign,
+}
+
+impl Func {
+    /// The function applied to a number.
+    pub fn apply(self, x: f64) -> f64 {
+        match self {
+            Func::Sqrt => x.sqrt(),
+            Func::Sin => x.sin(),
+            Func::Cos => x.cos(),
+            Func::Tan => x.tan(),
+            Func::Exp => x.exp(),
+            Func::Ln => x.ln(),
+            Func::Abs => x.abs(),
+            Func::Sign => {
+                if x == 0.0 {
+                    0.0
+                } else {
+                    x.signum()
+                }
+            }
+        }
+    }
+
+    /// The method name in Rust's `f64` API (`sign` is emitted specially).
+    pub fn name(self) -> &'static str {
+        match self {
+            Func::Sqrt => "sqrt",
+            Func::Sin => "sin",
+            Func::Cos => "cos",
+            Func::Tan => "tan",
+            Func::Exp => "exp",
+            Func::Ln => "ln",
+            Func::Abs => "abs",
+            Func::Sign => "sign",
+        }
+    }
+}
+
+/// One node of the DAG. Children are [`Id`]s of earlier nodes.
+#[derive(Copy, Clone, PartialEq, Eq, Hash, Debug)]
+pub enum Node {
+    /// A constant, stored as the bits of an `f64` (`-0.0` is normalised to `0.0`).
+    Const(u64),
+    /// An input slot.
+    Var(u32),
+    /// `a + b`, operands in canonical order.
+    Add(Id, Id),
+    /// `a * b`, operands in canonical order.
+    Mul(Id, Id),
+    /// `-a`.
+    Neg(Id),
+    /// `1 / a`.
+    Recip(Id),
+    /// `a^n` for an integer `n ∉ {0, 1}`.
+    Powi(Id, i32),
+    /// `a^b` for a non-constant or non-integer exponent.
+    Powf(Id, Id),
+    /// `f(a)`.
+    Func(Func, Id),
+}
+
+impl Node {
+    /// The constant value, if this is a constant.
+    pub fn as_const(&self) -> Option<f64> {
+        match *self {
+            Node::Const(bits) => Some(f64::from_bits(bits)),
+            _ => None,
+        }
+    }
+
+    /// The children of the node.
+    pub fn children(&self) -> impl Iterator<Item = Id> {
+        let (a, b) = match *self {
+            Node::Const(_) | Node::Var(_) => (None, None),
+            Node::Add(a, b) | Node::Mul(a, b) | Node::Powf(a, b) => (Some(a), Some(b)),
+            Node::Neg(a) | Node::Recip(a) | Node::Powi(a, _) | Node::Func(_, a) => (Some(a), None),
+        };
+        a.into_iter().chain(b)
+    }
+}
+
+/// A hash-consed expression DAG with simplifying constructors.
+#[derive(Clone, Default)]
+pub struct Graph {
+    nodes: Vec<Node>,
+    memo: HashMap<Node, Id>,
+    var_names: Vec<String>,
+    diff_memo: HashMap<(Id, u32), Id>,
+}
+
+impl fmt::Debug for Graph {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Graph")
+            .field("nodes", &self.nodes.len())
+            .field("vars", &self.var_names)
+            .finish()
+    }
+}
+
+impl Graph {
+    /// An empty graph.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Number of nodes.
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Whether the graph has no nodes.
+    pub fn is_empty(&self) -> bool {
+        self.nodes.is_empty()
+    }
+
+    /// The node named `id`.
+    pub fn node(&self, id: Id) -> Node {
+        self.nodes[id.index()]
+    }
+
+    /// All nodes, children before parents.
+    pub fn nodes(&self) -> &[Node] {
+        &self.nodes
+    }
+
+    /// Number of input slots created with [`Graph::var`].
+    pub fn num_vars(&self) -> usize {
+        self.var_names.len()
+    }
+
+    /// The name given to input slot `v`.
+    pub fn var_name(&self, v: u32) -> &str {
+        &self.var_names[v as usize]
+    }
+
+    /// The constant value of `id`, if it is a constant.
+    pub fn as_const(&self, id: Id) -> Option<f64> {
+        self.node(id).as_const()
+    }
+
+    /// Whether `id` is the constant `c`.
+    pub fn is_const(&self, id: Id, c: f64) -> bool {
+        self.as_const(id) == Some(c)
+    }
+
+    fn intern(&mut self, node: Node) -> Id {
+        if let Some(&id) = self.memo.get(&node) {
+            return id;
+        }
+        let id = Id(u32::try_from(self.nodes.len()).expect("expression graph exceeds u32 nodes"));
+        debug_assert!(node.children().all(|c| c < id));
+        self.nodes.push(node);
+        self.memo.insert(node, id);
+        id
+    }
+
+    /// A new input slot called `name` (names need not be unique; each call is a new slot).
+    pub fn var(&mut self, name: impl Into<String>) -> Id {
+        let v = self.var_names.len() as u32;
+        self.var_names.push(name.into());
+        self.intern(Node::Var(v))
+    }
+
+    /// The input slot index of `id`, if it is a variable.
+    pub fn as_var(&self, id: Id) -> Option<u32> {
+        match self.node(id) {
+            Node::Var(v) => Some(v),
+            _ => None,
+        }
+    }
+
+    /// A constant.
+    pub fn constant(&mut self, c: f64) -> Id {
+        let c = if c == 0.0 { 0.0 } else { c };
+        self.intern(Node::Const(c.to_bits()))
+    }
+
+    /// `0`.
+    pub fn zero(&mut self) -> Id {
+        self.constant(0.0)
+    }
+
+    /// `1`.
+    pub fn one(&mut self) -> Id {
+        self.constant(1.0)
+    }
+
+    /// Canonical order of commutative operands: constants first, then by id.
+    fn order(&self, a: Id, b: Id) -> (Id, Id) {
+        match (self.as_const(a).is_some(), self.as_const(b).is_some()) {
+            (false, true) => (b, a),
+            (true, false) => (a, b),
+            _ => (a.min(b), a.max(b)),
+        }
+    }
+
+    /// `a + b`.
+    pub fn add(&mut self, a: Id, b: Id) -> Id {
+        let (a, b) = self.order(a, b);
+        match (self.node(a), self.node(b)) {
+            (Node::Const(x), Node::Const(y)) => {
+                return self.constant(f64::from_bits(x) + f64::from_bits(y))
+            }
+            (Node::Const(x), _) if f64::from_bits(x) == 0.0 => return b,
+            // c1 + (c2 + x) = (c1 + c2) + x
+            (Node::Const(x), Node::Add(c, rest)) if self.as_const(c).is_some() => {
+                let s = self.constant(f64::from_bits(x) + self.as_const(c).unwrap_or(0.0));
+                return self.add(s, rest);
+            }
+            (_, Node::Neg(nb)) if nb == a => return self.zero(),
+            (Node::Neg(na), _) if na == b => return self.zero(),
+            (Node::Neg(na), Node::Neg(nb)) => {
+                let s = self.add(na, nb);
+                return self.neg(s);
+            }
+            _ => {}
+        }
+        if a == b {
+            let two = self.constant(2.0);
+            return self.mul(two, a);
+        }
+        self.intern(Node::Add(a, b))
+    }
+
+    /// `a - b`.
+    pub fn sub(&mut self, a: Id, b: Id) -> Id {
+        let nb = self.neg(b);
+        self.add(a, nb)
+    }
+
+    /// `-a`.
+    pub fn neg(&mut self, a: Id) -> Id {
+        match self.node(a) {
+            Node::Const(x) => self.constant(-f64::from_bits(x)),
+            Node::Neg(x) => x,
+            // -(c * x) = (-c) * x
+            Node::Mul(c, x) if self.as_const(c).is_some() => {
+                let nc = self.constant(-self.as_const(c).unwrap_or(0.0));
+                self.mul(nc, x)
+            }
+            _ => self.intern(Node::Neg(a)),
+        }
+    }
+
+    /// `a * b`.
+    pub fn mul(&mut self, a: Id, b: Id) -> Id {
+        let (a, b) = self.order(a, b);
+        match (self.node(a), self.node(b)) {
+            (Node::Const(x), Node::Const(y)) => {
+                return self.constant(f64::from_bits(x) * f64::from_bits(y))
+            }
+            (Node::Const(x), _) => {
+                let x = f64::from_bits(x);
+                if x == 0.0 {
+                    return a;
+                }
+                if x == 1.0 {
+                    return b;
+                }
+                if x == -1.0 {
+                    return self.neg(b);
+                }
+                match self.node(b) {
+                    // c1 * (c2 * y) = (c1 c2) * y
+                    Node::Mul(c, y) if self.as_const(c).is_some() => {
+                        let p = self.constant(x * self.as_const(c).unwrap_or(0.0));
+                        return self.mul(p, y);
+                    }
+                    Node::Neg(y) => {
+                        let p = self.constant(-x);
+                        return self.mul(p, y);
+                    }
+                    _ => {}
+                }
+            }
+            (Node::Neg(x), _) => {
+                let p = self.mul(x, b);
+                return self.neg(p);
+            }
+            (_, Node::Neg(y)) => {
+                let p = self.mul(a, y);
+                return self.neg(p);
+            }
+            _ => {}
+        }
+        // Pull constant factors to the front: x * (c * y) = c * (x * y).
+        if let Node::Mul(c, y) = self.node(b) {
+            if let Some(cv) = self.as_const(c) {
+                let p = self.mul(a, y);
+                let c = self.constant(cv);
+                return self.mul(c, p);
+            }
+        }
+        if let Node::Mul(c, x) = self.node(a) {
+            if let Some(cv) = self.as_const(c) {
+                let p = self.mul(x, b);
+                let c = self.constant(cv);
+                return self.mul(c, p);
+            }
+        }
+        // Merge integer powers of the same base.
+        let (ba, ea) = self.base_exp(a);
+        let (bb, eb) = self.base_exp(b);
+        if ba == bb {
+            return self.powi(ba, ea + eb);
+        }
+        self.intern(Node::Mul(a, b))
+    }
+
+    /// `(base, n)` with `id = base^n` (`n = 1` for anything that is not a power).
+    fn base_exp(&self, id: Id) -> (Id, i32) {
+        match self.node(id) {
+            Node::Powi(b, n) => (b, n),
+            Node::Recip(b) => match self.node(b) {
+                Node::Powi(bb, n) => (bb, -n),
+                _ => (b, -1),
+            },
+            _ => (id, 1),
+        }
+    }
+
+    /// `1 / a`.
+    pub fn recip(&mut self, a: Id) -> Id {
+        match self.node(a) {
+            Node::Const(x) => self.constant(1.0 / f64::from_bits(x)),
+            Node::Recip(x) => x,
+            Node::Neg(x) => {
+                let r = self.recip(x);
+                self.neg(r)
+            }
+            Node::Powi(x, n) => self.powi(x, -n),
+            _ => self.intern(Node::Recip(a)),
+        }
+    }
+
+    /// `a / b`.
+    pub fn div(&mut self, a: Id, b: Id) -> Id {
+        let rb = self.recip(b);
+        self.mul(a, rb)
+    }
+
+    /// `a^n` for an integer `n`.
+    pub fn powi(&mut self, a: Id, n: i32) -> Id {
+        match n {
+            0 => return self.one(),
+            1 => return a,
+            -1 => {
+                return match self.node(a) {
+                    Node::Powi(_, _) | Node::Recip(_) => {
+                        let (b, e) = self.base_exp(a);
+                        self.powi(b, -e)
+                    }
+                    _ => self.recip(a),
+                };
+            }
+            _ => {}
+        }
+        match self.node(a) {
+            Node::Const(x) => self.constant(f64::from_bits(x).powi(n)),
+            Node::Powi(_, _) | Node::Recip(_) => {
+                let (b, e) = self.base_exp(a);
+                self.powi(b, e.saturating_mul(n))
+            }
+            Node::Neg(x) => {
+                let p = self.powi(x, n);
+                if n % 2 == 0 {
+                    p
+                } else {
+                    self.neg(p)
+                }
+            }
+            _ if n < 0 => {
+                let p = self.powi(a, -n);
+                self.intern(Node::Recip(p))
+            }
+            _ => self.intern(Node::Powi(a, n)),
+        }
+    }
+
+    /// `a^b`: an integer constant exponent becomes [`Graph::powi`], `½` becomes `sqrt`.
+    pub fn powf(&mut self, a: Id, b: Id) -> Id {
+        if let Some(e) = self.as_const(b) {
+            if e.fract() == 0.0 && e.abs() <= 64.0 {
+                return self.powi(a, e as i32);
+            }
+            if e == 0.5 {
+                return self.func(Func::Sqrt, a);
+            }
+            if let Some(x) = self.as_const(a) {
+                return self.constant(x.powf(e));
+            }
+        }
+        self.intern(Node::Powf(a, b))
+    }
+
+    /// `f(a)`.
+    pub fn func(&mut self, f: Func, a: Id) -> Id {
+        if let Some(x) = self.as_const(a) {
+            return self.constant(f.apply(x));
+        }
+        match (f, self.node(a)) {
+            (Func::Abs, Node::Neg(x)) => return self.func(Func::Abs, x),
+            (Func::Abs, Node::Func(Func::Abs | Func::Sqrt | Func::Exp, _)) => return a,
+            (Func::Sign, Node::Neg(x)) => {
+                let s = self.func(Func::Sign, x);
+                return self.neg(s);
+            }
+            (Func::Exp, Node::Func(Func::Ln, x)) | (Func::Ln, Node::Func(Func::Exp, x)) => {
+                if f == Func::Ln {
+                    return x;
+                }
+            }
+            (Func::Sqrt, Node::Powi(x, 2)) => return self.func(Func::Abs, x),
+            _ => {}
+        }
+        self.intern(Node::Func(f, a))
+    }
+
+    /// Sum of many terms (`0` for none).
+    pub fn sum(&mut self, terms: impl IntoIterator<Item = Id>) -> Id {
+        let mut acc: Option<Id> = None;
+        for t in terms {
+            acc = Some(match acc {
+                None => t,
+                Some(s) => self.add(s, t),
+            });
+        }
+        acc.unwrap_or_else(|| self.zero())
+    }
+
+    /// `∂f/∂x` for a variable `x`, memoised.
+    ///
+    /// Returns `None` if `x` is not a variable.
+    pub fn diff(&mut self, f: Id, x: Id) -> Option<Id> {
+        let v = self.as_var(x)?;
+        Some(self.diff_var(f, v))
+    }
+
+    fn diff_var(&mut self, f: Id, v: u32) -> Id {
+        // Iterative post-order so that deep expressions cannot overflow the stack.
+        let mut stack = vec![(f, false)];
+        while let Some((id, ready)) = stack.pop() {
+            if self.diff_memo.contains_key(&(id, v)) {
+                continue;
+            }
+            if !ready {
+                stack.push((id, true));
+                for c in self.node(id).children() {
+                    if !self.diff_memo.contains_key(&(c, v)) {
+                        stack.push((c, false));
+                    }
+                }
+                continue;
+            }
+            let d = self.diff_node(id, v);
+            self.diff_memo.insert((id, v), d);
+        }
+        self.diff_memo[&(f, v)]
+    }
+
+    fn diff_node(&mut self, id: Id, v: u32) -> Id {
+        let d = |g: &Self, c: Id| g.diff_memo[&(c, v)];
+        match self.node(id) {
+            Node::Const(_) => self.zero(),
+            Node::Var(w) => self.constant(if w == v { 1.0 } else { 0.0 }),
+            Node::Add(a, b) => {
+                let (da, db) = (d(self, a), d(self, b));
+                self.add(da, db)
+            }
+            Node::Mul(a, b) => {
+                let (da, db) = (d(self, a), d(self, b));
+                let l = self.mul(da, b);
+                let r = self.mul(a, db);
+                self.add(l, r)
+            }
+            Node::Neg(a) => {
+                let da = d(self, a);
+                self.neg(da)
+            }
+            Node::Recip(a) => {
+                // d(1/a) = -da / a² = -da · (1/a)²
+                let da = d(self, a);
+                if self.is_const(da, 0.0) {
+                    return da;
+                }
+                let r2 = self.powi(id, 2);
+                let p = self.mul(da, r2);
+                self.neg(p)
+            }
+            Node::Powi(a, n) => {
+                let da = d(self, a);
+                if self.is_const(da, 0.0) {
+                    return da;
+                }
+                let p = self.powi(a, n - 1);
+                let c = self.constant(f64::from(n));
+                let cp = self.mul(c, p);
+                self.mul(cp, da)
+            }
+            Node::Powf(a, b) => {
+                // d(a^b) = a^b (db ln a + b da / a)
+                let (da, db) = (d(self, a), d(self, b));
+                let ln_a = self.func(Func::Ln, a);
+                let t1 = self.mul(db, ln_a);
+                let bda = self.mul(b, da);
+                let t2 = self.div(bda, a);
+                let s = self.add(t1, t2);
+                self.mul(id, s)
+            }
+            Node::Func(f, a) => {
+                let da = d(self, a);
+                if self.is_const(da, 0.0) {
+                    return da;
+                }
+                let fp = match f {
+                    Func::Sqrt => {
+                        let half = self.constant(0.5);
+                        let r = self.recip(id);
+                        self.mul(half, r)
+                    }
+                    Func::Sin => self.func(Func::Cos, a),
+                    Func::Cos => {
+                        let s = self.func(Func::Sin, a);
+                        self.neg(s)
+                    }
+                    Func::Tan => {
+                        let one = self.one();
+                        let t2 = self.powi(id, 2);
+                        self.add(one, t2)
+                    }
+                    Func::Exp => id,
+                    Func::Ln => self.recip(a),
+                    Func::Abs => self.func(Func::Sign, a),
+                    Func::Sign => return self.zero(),
+                };
+                self.mul(fp, da)
+            }
+        }
+    }
+
+    /// Replaces variables by expressions (`map[v]` for slot `v`, `None` keeps the variable).
+    /// Returns the images of `roots`.
+    pub fn substitute(&mut self, roots: &[Id], map: &HashMap<u32, Id>) -> Vec<Id> {
+        let Some(max) = roots.iter().max() else {
+            return Vec::new();
+        };
+        let mut image: Vec<Id> = Vec::with_capacity(max.index() + 1);
+        for i in 0..=max.index() {
+            let node = self.nodes[i];
+            let m = |c: Id| image[c.index()];
+            let new = match node {
+                Node::Const(_) => Id(i as u32),
+                Node::Var(v) => map.get(&v).copied().unwrap_or(Id(i as u32)),
+                Node::Add(a, b) => {
+                    let (a, b) = (m(a), m(b));
+                    self.add(a, b)
+                }
+                Node::Mul(a, b) => {
+                    let (a, b) = (m(a), m(b));
+                    self.mul(a, b)
+                }
+                Node::Neg(a) => {
+                    let a = m(a);
+                    self.neg(a)
+                }
+                Node::Recip(a) => {
+                    let a = m(a);
+                    self.recip(a)
+                }
+                Node::Powi(a, n) => {
+                    let a = m(a);
+                    self.powi(a, n)
+                }
+                Node::Powf(a, b) => {
+                    let (a, b) = (m(a), m(b));
+                    self.powf(a, b)
+                }
+                Node::Func(f, a) => {
+                    let a = m(a);
+                    self.func(f, a)
+                }
+            };
+            image.push(new);
+        }
+        roots.iter().map(|r| image[r.index()]).collect()
+    }
+
+    /// For every node up to `root`, whether it depends on any of `vars`.
+    pub fn depends_on(&self, root: Id, vars: &[u32]) -> bool {
+        let mut dep = vec![false; root.index() + 1];
+        for i in 0..=root.index() {
+            dep[i] = match self.nodes[i] {
+                Node::Var(v) => vars.contains(&v),
+                n => n.children().any(|c| dep[c.index()]),
+            };
+        }
+        dep[root.index()]
+    }
+
+    /// Evaluates `roots` with variable slot `v` set to `inputs[v]`.
+    ///
+    /// # Panics
+    /// If `inputs` is shorter than the number of variable slots used.
+    pub fn eval(&self, roots: &[Id], inputs: &[f64]) -> Vec<f64> {
+        let Some(max) = roots.iter().max() else {
+            return Vec::new();
+        };
+        let mut val = Vec::with_capacity(max.index() + 1);
+        for i in 0..=max.index() {
+            let x = |c: Id| -> f64 { val[c.index()] };
+            let r = match self.nodes[i] {
+                Node::Const(b) => f64::from_bits(b),
+                Node::Var(v) => inputs[v as usize],
+                Node::Add(a, b) => x(a) + x(b),
+                Node::Mul(a, b) => x(a) * x(b),
+                Node::Neg(a) => -x(a),
+                Node::Recip(a) => 1.0 / x(a),
+                Node::Powi(a, n) => x(a).powi(n),
+                Node::Powf(a, b) => x(a).powf(x(b)),
+                Node::Func(f, a) => f.apply(x(a)),
+            };
+            val.push(r);
+        }
+        roots.iter().map(|r| val[r.index()]).collect()
+    }
+}
