@@ -11,11 +11,16 @@ pub use nalgebra::{Complex, Matrix3, Vector3};
 
 mod error;
 mod model;
+mod sim;
 mod stability;
 mod steady;
 
 pub use error::RouthError;
 pub use model::{cross_matrix, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+pub use sim::{
+    full_vector_field, reduced_vector_field, simulate_full, simulate_reduced, Method, Output,
+    ReducedTrajectory, SimOptions, SimStats, Trajectory, SIM_UNIT_GAMMA_TOL,
+};
 pub use stability::{classify, f2_coefficients, Stability, StabilityReport, DOUBLE_ROOT_TOL, UNIT_GAMMA_TOL};
 pub use steady::{
     steady_motion_near, steady_motions, steady_motions_with, SearchOptions, SteadyMotion,

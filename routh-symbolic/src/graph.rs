@@ -256,6 +256,14 @@ impl Graph {
                 let s = self.add(na, nb);
                 return self.neg(s);
             }
+            // c1·x + c2·x = (c1 + c2)·x: `neg` turns −(c·x) into (−c)·x, so this is what makes
+            // c·x − c·x fold to 0.
+            (Node::Mul(c1, x), Node::Mul(c2, y)) if x == y => {
+                if let (Some(c1), Some(c2)) = (self.as_const(c1), self.as_const(c2)) {
+                    let c = self.constant(c1 + c2);
+                    return self.mul(c, x);
+                }
+            }
             _ => {}
         }
         if a == b {
@@ -326,6 +334,13 @@ impl Graph {
             }
             _ => {}
         }
+        // Merge integer powers of the same base (before pulling constants out, so that
+        // e·e = e² and e·(1/e) = 1 also when e = c·x).
+        let (ba, ea) = self.base_exp(a);
+        let (bb, eb) = self.base_exp(b);
+        if ba == bb {
+            return self.powi(ba, ea + eb);
+        }
         // Pull constant factors to the front: x * (c * y) = c * (x * y).
         if let Node::Mul(c, y) = self.node(b) {
             if let Some(cv) = self.as_const(c) {
@@ -340,12 +355,6 @@ impl Graph {
                 let c = self.constant(cv);
                 return self.mul(c, p);
             }
-        }
-        // Merge integer powers of the same base.
-        let (ba, ea) = self.base_exp(a);
-        let (bb, eb) = self.base_exp(b);
-        if ba == bb {
-            return self.powi(ba, ea + eb);
         }
         self.intern(Node::Mul(a, b))
     }

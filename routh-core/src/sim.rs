@@ -1,0 +1,791 @@
+//! Simulation of the full equations (8) and of the reduced equations (13) (ARCHITECTURE §5).
+//!
+//! - [`simulate_full`] integrates (8) for `(ω, γ)` and records the energy (3), the cyclic
+//!   momentum (9) and `|γ|²` along the way.
+//! - [`simulate_reduced`] integrates (13) for `(Ω, γ)` in the gauge of ERRATA E4, reconstructs
+//!   the rotation angle ψ of the rotating frame by (15), and records E' (16), `(∂R/∂Ω, γ)` (17)
+//!   and `|γ|²`.
+//!
+//! Two integrators are offered ([`Method`]): DOP853, an adaptive Runge–Kutta method of order 8
+//! with error control and a dense output of order 7 (the default), and RKMK4, a fixed-step
+//! Lie-group Runge–Kutta method of order 4 that moves γ by exact rotations and so keeps
+//! `|γ| = 1` to round-off over arbitrarily long runs. (The crate `ode_solvers` was considered:
+//! it depends on another major version of nalgebra and has no fallible right-hand side, so a
+//! compact DOP853 is implemented here instead, following Hairer's `dop853.f`.)
+
+mod dop853;
+mod lie;
+mod tableau;
+
+use nalgebra::{Matrix3, SVector, Vector3};
+
+use crate::error::check_finite;
+use crate::{Lagrangian, RouthError, Routhian};
+
+/// Tolerance on `| |γ₀| − 1 |` for the initial vertical of both simulations.
+pub const SIM_UNIT_GAMMA_TOL: f64 = 1e-9;
+
+/// The integration method.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    /// Dormand–Prince 8(5,3) with Hairer's step-size control, initial-step heuristic and
+    /// 7th-order dense output. Uses [`SimOptions::rtol`], [`SimOptions::atol`],
+    /// [`SimOptions::h_max`], [`SimOptions::h_init`] and [`SimOptions::max_steps`].
+    Dop853,
+    /// The fixed-step Lie-group (Munthe-Kaas) Runge–Kutta method of order 4 on `ℝᵐ × S²`: the
+    /// velocities (and ψ) are advanced by classical RK4 stages, γ only by exact rotations
+    /// (Rodrigues), so `|γ|² − 1` stays at round-off level. `step` is the largest step; every
+    /// interval between two outputs (or `[0, t_end]`) is cut into equal steps no longer than it.
+    LieRk4 {
+        /// The (largest) step size, finite and positive.
+        step: f64,
+    },
+}
+
+/// Which points the trajectory records.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Output {
+    /// `t = 0` and the end of every accepted step (the last one is `t_end`).
+    Steps,
+    /// Exactly these times, which must be finite, non-decreasing and in `[0, t_end]`. With
+    /// [`Method::Dop853`] they are filled in by the dense output (3 more evaluations of the
+    /// vector field a step); with [`Method::LieRk4`] the steps are cut to land on them.
+    Times(Vec<f64>),
+}
+
+/// Options of [`simulate_full`] and [`simulate_reduced`].
+///
+/// Build with struct-update syntax, e.g. `SimOptions { rtol: 1e-12, ..SimOptions::default() }`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimOptions {
+    /// Relative tolerance of [`Method::Dop853`] (Hairer's mixed norm, per component
+    /// `atol + rtol·|y|`). Must be finite and at least `10·ε ≈ 2.2e-15`. Default `1e-10`.
+    pub rtol: f64,
+    /// Absolute tolerance of [`Method::Dop853`]. Must be finite and positive. Default `1e-12`.
+    pub atol: f64,
+    /// The integrator. Default [`Method::Dop853`].
+    pub method: Method,
+    /// Largest step of [`Method::Dop853`] (`None`: unbounded). Must be positive if given.
+    pub h_max: Option<f64>,
+    /// Initial step of [`Method::Dop853`] (`None`: Hairer's heuristic). Positive if given.
+    pub h_init: Option<f64>,
+    /// Budget of attempted steps (accepted and rejected); at least 1. Default `100_000`.
+    pub max_steps: usize,
+    /// Which points are recorded. Default [`Output::Steps`].
+    pub output: Output,
+}
+
+impl Default for SimOptions {
+    fn default() -> Self {
+        SimOptions {
+            rtol: 1e-10,
+            atol: 1e-12,
+            method: Method::Dop853,
+            h_max: None,
+            h_init: None,
+            max_steps: 100_000,
+            output: Output::Steps,
+        }
+    }
+}
+
+impl SimOptions {
+    /// The adaptive method with the given tolerances, other options at their defaults.
+    pub fn with_tolerances(rtol: f64, atol: f64) -> Self {
+        SimOptions { rtol, atol, ..SimOptions::default() }
+    }
+
+    /// The Lie-group RK4 method with the given step, other options at their defaults.
+    pub fn lie_rk4(step: f64) -> Self {
+        SimOptions { method: Method::LieRk4 { step }, ..SimOptions::default() }
+    }
+
+    /// The same options, recording exactly at `times` (see [`Output::Times`]).
+    pub fn at_times(mut self, times: Vec<f64>) -> Self {
+        self.output = Output::Times(times);
+        self
+    }
+}
+
+/// Work done by one simulation.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct SimStats {
+    /// Accepted steps.
+    pub accepted_steps: usize,
+    /// Rejected steps (error too large, or non-finite trial values).
+    pub rejected_steps: usize,
+    /// Evaluations of the vector field (each one is one evaluation of the model's derivatives,
+    /// or one [`Routhian::bundle`] for the reduced equations).
+    pub rhs_evaluations: usize,
+}
+
+/// A solution of the full equations (8), from [`simulate_full`].
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Trajectory {
+    /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
+    pub t: Vec<f64>,
+    /// Body angular velocity ω.
+    pub omega: Vec<Vector3<f64>>,
+    /// Body coordinates γ of the upward vertical.
+    pub gamma: Vec<Vector3<f64>>,
+    /// The Painlevé–Jacobi energy (3) `E = (∂L/∂ω, ω) − L` ([`Lagrangian::energy`]).
+    pub energy: Vec<f64>,
+    /// The cyclic momentum (9) `p_ψ = (∂L/∂ω, γ)` ([`Lagrangian::cyclic_momentum`]).
+    pub p_psi: Vec<f64>,
+    /// `|γ|²` (the geometric integral (4) is `|γ|² − 1 = 0`).
+    pub gamma_norm_sq: Vec<f64>,
+    /// Work counters.
+    pub stats: SimStats,
+}
+
+/// A solution of the reduced equations (13) with the reconstruction (15), from
+/// [`simulate_reduced`].
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ReducedTrajectory {
+    /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
+    pub t: Vec<f64>,
+    /// Angular velocity Ω relative to the frame rotating about the vertical (7).
+    pub big_omega: Vec<Vector3<f64>>,
+    /// Body coordinates γ of the upward vertical.
+    pub gamma: Vec<Vector3<f64>>,
+    /// Rotation angle ψ of the rotating frame about the vertical, integrated from
+    /// `ψ̇ = −∂R/∂p_ψ` (15) with `ψ(0) = 0`.
+    pub psi: Vec<f64>,
+    /// `ψ̇(Ω, γ, p_ψ)` of (12)/(38) ([`Routhian::psi_dot`] via the bundle).
+    pub psi_dot: Vec<f64>,
+    /// The reconstructed body angular velocity `ω = Ω + ψ̇γ` (7).
+    pub omega: Vec<Vector3<f64>>,
+    /// The reduced energy (16) `E' = (∂R/∂Ω, Ω) − R`, equal to E of (3) (Theorem 2).
+    pub energy: Vec<f64>,
+    /// `(∂R/∂Ω, γ)` of (17), identically `p_ψ` (Theorem 2).
+    pub p_psi: Vec<f64>,
+    /// `|γ|²`.
+    pub gamma_norm_sq: Vec<f64>,
+    /// Work counters.
+    pub stats: SimStats,
+}
+
+/// `max |x_i − x_0|` (0 for fewer than two points).
+fn max_deviation(x: &[f64]) -> f64 {
+    match x.first() {
+        Some(&x0) => x.iter().fold(0.0, |m, &v| m.max((v - x0).abs())),
+        None => 0.0,
+    }
+}
+
+/// `max | |γ|² − 1 |`.
+fn max_unit_error(x: &[f64]) -> f64 {
+    x.iter().fold(0.0, |m, &v| m.max((v - 1.0).abs()))
+}
+
+impl Trajectory {
+    /// Number of recorded points.
+    pub fn len(&self) -> usize {
+        self.t.len()
+    }
+    /// Whether no point was recorded.
+    pub fn is_empty(&self) -> bool {
+        self.t.is_empty()
+    }
+    /// `max |E(t) − E(t₀)|` of the energy (3) over the recorded points.
+    pub fn energy_drift(&self) -> f64 {
+        max_deviation(&self.energy)
+    }
+    /// `max |p_ψ(t) − p_ψ(t₀)|` of the cyclic momentum (9).
+    pub fn p_psi_drift(&self) -> f64 {
+        max_deviation(&self.p_psi)
+    }
+    /// `max | |γ(t)|² − 1 |`.
+    pub fn gamma_norm_error(&self) -> f64 {
+        max_unit_error(&self.gamma_norm_sq)
+    }
+}
+
+impl ReducedTrajectory {
+    /// Number of recorded points.
+    pub fn len(&self) -> usize {
+        self.t.len()
+    }
+    /// Whether no point was recorded.
+    pub fn is_empty(&self) -> bool {
+        self.t.is_empty()
+    }
+    /// `max |E'(t) − E'(t₀)|` of the reduced energy (16).
+    pub fn energy_drift(&self) -> f64 {
+        max_deviation(&self.energy)
+    }
+    /// `max |(∂R/∂Ω, γ)(t) − p_ψ|` (17), with `p_ψ` the constant the run was started with.
+    pub fn p_psi_error(&self, p_psi: f64) -> f64 {
+        self.p_psi.iter().fold(0.0, |m, &v| m.max((v - p_psi).abs()))
+    }
+    /// `max | |γ(t)|² − 1 |`.
+    pub fn gamma_norm_error(&self) -> f64 {
+        max_unit_error(&self.gamma_norm_sq)
+    }
+}
+
+/// The vector field of the full equations (8) solved for ω̇:
+/// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`, `γ̇ = γ × ω`, with `J = ∂²L/∂ω²`
+/// (ARCHITECTURE §1). Returns `(ω̇, γ̇)`.
+///
+/// Errors: [`RouthError::KineticNotPositiveDefinite`] when the Cholesky factorisation of a
+/// finite `J(γ)` fails. Non-finite model outputs give non-finite rates (no error), so that an
+/// integrator can shrink its step.
+pub fn full_vector_field<M: Lagrangian + ?Sized>(
+    model: &M,
+    omega: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+) -> Result<(Vector3<f64>, Vector3<f64>), RouthError> {
+    let gamma_dot = gamma.cross(omega);
+    let j = model.d2l_domega2(gamma);
+    let rhs = model.dl_domega(omega, gamma).cross(omega) + model.dl_dgamma(omega, gamma).cross(gamma)
+        - model.d2l_domega_dgamma(omega, gamma) * gamma_dot;
+    let omega_dot = solve_spd(&j, &rhs, gamma)?;
+    Ok((omega_dot, gamma_dot))
+}
+
+/// The vector field of the reduced equations (13) in the gauge of ERRATA E4, with (15):
+/// `(A + γγᵀ) Ω̇ = ∂R/∂Ω × Ω + ∂R/∂γ × γ − M γ̇`, `γ̇ = γ × Ω`, `ψ̇ = −∂R/∂p_ψ`, where
+/// `A = ∂²R/∂Ω²`, `M = ∂²R/∂Ω∂γ`, all from one [`Routhian::bundle`]. Returns `(Ω̇, γ̇, ψ̇)`.
+///
+/// `A` annihilates γ (E4), so the γ-component of (13) is an identity; adding `γγᵀ` fixes the
+/// gauge by `d(Ω·γ)/dt = 0`: the right side is orthogonal to γ (by `Mᵀγ = −∂R/∂Ω`, E6), hence
+/// `Ω̇·γ = 0` when `|γ| = 1`, and `γ̇·Ω = 0`.
+///
+/// Errors: [`RouthError::KineticNotPositiveDefinite`] (with the smallest eigenvalue of
+/// `A + γγᵀ`) when its Cholesky factorisation fails for finite entries.
+pub fn reduced_vector_field<M: Routhian + ?Sized>(
+    model: &M,
+    big_omega: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
+    let b = model.bundle(big_omega, gamma, p_psi);
+    let gamma_dot = gamma.cross(big_omega);
+    let rhs = b.dr_domega.cross(big_omega) + b.dr_dgamma.cross(gamma)
+        - b.d2r_domega_dgamma * gamma_dot;
+    let k = b.d2r_domega2 + gamma * gamma.transpose();
+    let big_omega_dot = solve_spd(&k, &rhs, gamma)?;
+    Ok((big_omega_dot, gamma_dot, -b.dr_dp))
+}
+
+/// Solves `K x = rhs` by Cholesky; non-finite `K` or `rhs` give a NaN solution.
+fn solve_spd(
+    k: &Matrix3<f64>,
+    rhs: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+) -> Result<Vector3<f64>, RouthError> {
+    if !(k.iter().all(|x| x.is_finite()) && rhs.iter().all(|x| x.is_finite())) {
+        return Ok(Vector3::repeat(f64::NAN));
+    }
+    match k.cholesky() {
+        Some(ch) => Ok(ch.solve(rhs)),
+        None => Err(RouthError::KineticNotPositiveDefinite {
+            gamma: [gamma.x, gamma.y, gamma.z],
+            min_eigenvalue: k.symmetric_eigenvalues().min(),
+        }),
+    }
+}
+
+fn check_unit_gamma(gamma: &Vector3<f64>) -> Result<(), RouthError> {
+    let norm = gamma.norm();
+    if (norm - 1.0).abs() > SIM_UNIT_GAMMA_TOL {
+        return Err(RouthError::NonUnitGamma { norm, tol: SIM_UNIT_GAMMA_TOL });
+    }
+    Ok(())
+}
+
+fn invalid(what: &'static str, reason: impl Into<String>) -> RouthError {
+    RouthError::InvalidOption { what, reason: reason.into() }
+}
+
+/// Checks `t_end` and every option.
+fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
+    check_finite("t_end", &[t_end])?;
+    if t_end < 0.0 {
+        return Err(invalid("t_end", format!("must be ≥ 0 (got {t_end})")));
+    }
+    check_finite("rtol", &[opts.rtol])?;
+    check_finite("atol", &[opts.atol])?;
+    if opts.rtol < 10.0 * f64::EPSILON {
+        return Err(invalid("rtol", format!("must be ≥ 10ε ≈ 2.2e-15 (got {:e})", opts.rtol)));
+    }
+    if opts.atol <= 0.0 {
+        return Err(invalid("atol", format!("must be > 0 (got {:e})", opts.atol)));
+    }
+    if let Method::LieRk4 { step } = opts.method {
+        check_finite("step", &[step])?;
+        if step <= 0.0 {
+            return Err(invalid("step", format!("must be > 0 (got {step:e})")));
+        }
+    }
+    if let Some(h) = opts.h_max {
+        if h.is_nan() {
+            return Err(RouthError::NonFinite { what: "h_max", value: h });
+        }
+        if h <= 0.0 {
+            return Err(invalid("h_max", format!("must be > 0 (got {h:e})")));
+        }
+    }
+    if let Some(h) = opts.h_init {
+        check_finite("h_init", &[h])?;
+        if h <= 0.0 {
+            return Err(invalid("h_init", format!("must be > 0 (got {h:e})")));
+        }
+    }
+    if opts.max_steps == 0 {
+        return Err(invalid("max_steps", "must be ≥ 1"));
+    }
+    if let Output::Times(ts) = &opts.output {
+        check_finite("output time", ts)?;
+        if let Some(&t) = ts.iter().find(|&&t| !(0.0..=t_end).contains(&t)) {
+            return Err(invalid("output", format!("time {t} outside [0, t_end = {t_end}]")));
+        }
+        if ts.windows(2).any(|w| w[1] < w[0]) {
+            return Err(invalid("output", "times must be non-decreasing"));
+        }
+    }
+    Ok(())
+}
+
+/// Integrates `y' = field(y).0` from `y0` at `t = 0` to `t_end` with the chosen method and
+/// output, calling `record` at every output point. `field` returns `(ẏ, w)` with `w` the
+/// angular velocity that moves γ (`y[3..6]`): `γ̇ = w × γ`.
+fn drive<const N: usize, F, R>(
+    mut field: F,
+    y0: SVector<f64, N>,
+    t_end: f64,
+    opts: &SimOptions,
+    mut record: R,
+) -> Result<SimStats, RouthError>
+where
+    F: FnMut(&SVector<f64, N>) -> Result<(SVector<f64, N>, Vector3<f64>), RouthError>,
+    R: FnMut(f64, &SVector<f64, N>),
+{
+    let times: Option<&[f64]> = match &opts.output {
+        Output::Steps => None,
+        Output::Times(ts) => Some(ts),
+    };
+    match opts.method {
+        Method::Dop853 => {
+            let cfg = dop853::Config {
+                rtol: opts.rtol,
+                atol: opts.atol,
+                h_max: opts.h_max.unwrap_or(f64::INFINITY),
+                h_init: opts.h_init,
+                max_steps: opts.max_steps,
+                dense: times.is_some(),
+            };
+            let mut next = 0;
+            match times {
+                None => record(0.0, &y0),
+                Some(ts) => {
+                    while next < ts.len() && ts[next] <= 0.0 {
+                        record(ts[next], &y0);
+                        next += 1;
+                    }
+                }
+            }
+            let counters = dop853::integrate(
+                |_t, y| field(y).map(|(d, _)| d),
+                0.0,
+                y0,
+                t_end,
+                &cfg,
+                |acc| {
+                    match (times, acc.dense) {
+                        (None, _) => record(acc.t, acc.y),
+                        (Some(ts), dense) => {
+                            while next < ts.len() && ts[next] <= acc.t {
+                                let tn = ts[next];
+                                match dense {
+                                    Some(d) if tn < acc.t => record(tn, &d.eval(tn)),
+                                    _ => record(tn, acc.y),
+                                }
+                                next += 1;
+                            }
+                        }
+                    }
+                    Ok(())
+                },
+            )?;
+            Ok(SimStats {
+                accepted_steps: counters.accepted,
+                rejected_steps: counters.rejected,
+                rhs_evaluations: counters.evaluations,
+            })
+        }
+        Method::LieRk4 { step } => {
+            // Segments [start, end] of equal sub-steps, recording at the end of each sub-step
+            // (Steps) or only at the end of the segment (Times).
+            let segments: Vec<f64> = match times {
+                None => vec![t_end],
+                Some(ts) => ts.to_vec(),
+            };
+            let mut total = 0.0;
+            let mut prev = 0.0;
+            for &end in &segments {
+                total += ((end - prev) / step).ceil();
+                prev = end;
+            }
+            if total > opts.max_steps as f64 {
+                return Err(RouthError::TooManySteps { t: t_end, steps: opts.max_steps });
+            }
+            // The vector field at the start: surfaces errors even when nothing is integrated.
+            let (d0, w0) = field(&y0)?;
+            if !(d0.iter().all(|x| x.is_finite()) && w0.iter().all(|x| x.is_finite())) {
+                return Err(RouthError::NonFiniteState { t: 0.0 });
+            }
+            let mut stats = SimStats { rhs_evaluations: 1, ..SimStats::default() };
+            if times.is_none() {
+                record(0.0, &y0);
+            }
+            let mut t = 0.0;
+            let mut y = y0;
+            for &end in &segments {
+                let n = ((end - t) / step).ceil() as usize;
+                let h = if n > 0 { (end - t) / n as f64 } else { 0.0 };
+                let start = t;
+                for i in 1..=n {
+                    y = lie::step(&mut field, &y, h)?;
+                    stats.accepted_steps += 1;
+                    stats.rhs_evaluations += 4;
+                    t = if i == n { end } else { start + i as f64 * h };
+                    if !y.iter().all(|x| x.is_finite()) {
+                        return Err(RouthError::NonFiniteState { t });
+                    }
+                    if times.is_none() {
+                        record(t, &y);
+                    }
+                }
+                t = end;
+                if times.is_some() {
+                    record(t, &y);
+                }
+            }
+            Ok(stats)
+        }
+    }
+}
+
+fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
+    Vector3::new(y[at], y[at + 1], y[at + 2])
+}
+
+/// Simulates the full equations of motion (8) from `(ω₀, γ₀)` at `t = 0` to `t_end`.
+///
+/// The state is `(ω, γ)`; ω̇ is solved from
+/// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)` with `J = ∂²L/∂ω²` by Cholesky, and
+/// `γ̇ = γ × ω` (see [`full_vector_field`]). Along the trajectory the energy (3), the cyclic
+/// momentum (9) and `|γ|²` are recorded; they are first integrals, so their drift measures the
+/// integration error.
+///
+/// γ₀ must be a unit vector (`| |γ₀| − 1 | ≤ 1e-9`, [`SIM_UNIT_GAMMA_TOL`]); it is used as given
+/// (not normalised).
+///
+/// # Errors
+///
+/// [`RouthError::NonFinite`] for non-finite `ω₀`, `γ₀`, `t_end`, tolerances or options;
+/// [`RouthError::InvalidOption`] for `t_end < 0` or invalid [`SimOptions`];
+/// [`RouthError::NonUnitGamma`]; [`RouthError::KineticNotPositiveDefinite`] when `J(γ)` has no
+/// Cholesky factor (at γ₀ or later); [`RouthError::StepSizeUnderflow`],
+/// [`RouthError::TooManySteps`] and [`RouthError::NonFiniteState`] from the integrator.
+///
+/// # Example
+///
+/// A heavy symmetric (Lagrange) top `L = ½(A(ω₁² + ω₂²) + Cω₃²) − m g l γ₃`, written by hand:
+///
+/// ```
+/// use routh_core::{simulate_full, Lagrangian, Matrix3, SimOptions, Vector3};
+///
+/// struct Top { a: f64, c: f64, mgl: f64 }
+///
+/// impl Lagrangian for Top {
+///     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+///         0.5 * (self.a * (w.x * w.x + w.y * w.y) + self.c * w.z * w.z) - self.mgl * g.z
+///     }
+///     fn dl_domega(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
+///         Vector3::new(self.a * w.x, self.a * w.y, self.c * w.z)
+///     }
+///     fn dl_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
+///         Vector3::new(0.0, 0.0, -self.mgl)
+///     }
+///     fn d2l_domega2(&self, _g: &Vector3<f64>) -> Matrix3<f64> {
+///         Matrix3::from_diagonal(&Vector3::new(self.a, self.a, self.c))
+///     }
+///     fn d2l_domega_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Matrix3<f64> {
+///         Matrix3::zeros()
+///     }
+/// }
+///
+/// let top = Top { a: 2.0, c: 1.0, mgl: 1.0 };
+/// let gamma0 = Vector3::new(0.6, 0.0, 0.8); // tilted
+/// let omega0 = Vector3::new(0.0, 0.3, 5.0); // spinning fast
+/// let traj = simulate_full(&top, omega0, gamma0, 10.0, &SimOptions::default())?;
+///
+/// assert_eq!(traj.t[0], 0.0);
+/// assert_eq!(*traj.t.last().unwrap(), 10.0);
+/// // The spin ω₃ of a Lagrange top is constant (Euler's third equation).
+/// assert!(traj.omega.iter().all(|w| (w.z - 5.0).abs() < 1e-9));
+/// // Energy (3), cyclic momentum (9) and |γ|² are kept.
+/// assert!(traj.energy_drift() < 1e-8);
+/// assert!(traj.p_psi_drift() < 1e-8);
+/// assert!(traj.gamma_norm_error() < 1e-9);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn simulate_full<M: Lagrangian>(
+    model: &M,
+    omega0: Vector3<f64>,
+    gamma0: Vector3<f64>,
+    t_end: f64,
+    opts: &SimOptions,
+) -> Result<Trajectory, RouthError> {
+    check_finite("omega0", omega0.as_slice())?;
+    check_finite("gamma0", gamma0.as_slice())?;
+    validate(opts, t_end)?;
+    check_unit_gamma(&gamma0)?;
+    let mut y0 = SVector::<f64, 6>::zeros();
+    y0.fixed_rows_mut::<3>(0).copy_from(&omega0);
+    y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
+
+    let mut traj = Trajectory::default();
+    let field = |y: &SVector<f64, 6>| {
+        let (w, g) = (split3(y, 0), split3(y, 3));
+        let (w_dot, g_dot) = full_vector_field(model, &w, &g)?;
+        let mut d = SVector::<f64, 6>::zeros();
+        d.fixed_rows_mut::<3>(0).copy_from(&w_dot);
+        d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
+        // γ̇ = γ × ω = (−ω) × γ.
+        Ok((d, -w))
+    };
+    let record = |t: f64, y: &SVector<f64, 6>| {
+        let (w, g) = (split3(y, 0), split3(y, 3));
+        traj.t.push(t);
+        traj.omega.push(w);
+        traj.gamma.push(g);
+        traj.energy.push(model.energy(&w, &g));
+        traj.p_psi.push(model.cyclic_momentum(&w, &g));
+        traj.gamma_norm_sq.push(g.norm_squared());
+    };
+    let stats = drive(field, y0, t_end, opts, record)?;
+    traj.stats = stats;
+    Ok(traj)
+}
+
+/// Simulates the reduced equations (13) from `(Ω₀, γ₀)` at `t = 0` to `t_end` on the level
+/// `p_ψ` of the cyclic momentum (9), and reconstructs the rotation angle ψ of the rotating frame
+/// by (15), `ψ̇ = −∂R/∂p_ψ`, with `ψ(0) = 0`.
+///
+/// The equations are solved in the gauge of ERRATA E4 (see [`reduced_vector_field`]):
+/// `∂²R/∂Ω²` is singular along γ, the component of Ω along γ is a gauge, and the integration
+/// keeps `Ω·γ` at its initial value. Ω₀ is used as given: the usual choice is `Ω₀·γ₀ = 0`, for
+/// which `ψ̇` is the whole rotation rate about the vertical. With `Ω₀·γ₀ = s ≠ 0` the body motion
+/// `ω = Ω + ψ̇γ` is the same and ψ differs by `s·t` (since `ψ̇(Ω + sγ) = ψ̇(Ω) − s` by (38)).
+///
+/// The full state corresponding to `(Ω₀, γ₀, p_ψ)` is `ω₀ = Ω₀ + ψ̇(Ω₀, γ₀, p_ψ) γ₀` (7), (12).
+/// Recorded along the way: E' (16) (equal to E of (3)), `(∂R/∂Ω, γ)` (17) (identically p_ψ),
+/// `|γ|²`, ψ̇ and the reconstructed ω; one [`Routhian::bundle`] per vector-field evaluation and
+/// per recorded point.
+///
+/// # Errors
+///
+/// As [`simulate_full`], plus [`RouthError::DegenerateVerticalInertia`] when
+/// `γ₀ᵀJ(γ₀)γ₀ ≤ 0` (ψ̇ of (38) undefined), and
+/// [`RouthError::KineticNotPositiveDefinite`] when `∂²R/∂Ω² + γγᵀ` has no Cholesky factor.
+pub fn simulate_reduced<M: Routhian>(
+    model: &M,
+    big_omega0: Vector3<f64>,
+    gamma0: Vector3<f64>,
+    p_psi: f64,
+    t_end: f64,
+    opts: &SimOptions,
+) -> Result<ReducedTrajectory, RouthError> {
+    check_finite("big_omega0", big_omega0.as_slice())?;
+    check_finite("gamma0", gamma0.as_slice())?;
+    check_finite("p_psi", &[p_psi])?;
+    validate(opts, t_end)?;
+    check_unit_gamma(&gamma0)?;
+    let vertical_inertia = gamma0.dot(&(model.d2l_domega2(&gamma0) * gamma0));
+    if !(vertical_inertia > 0.0) {
+        return Err(RouthError::DegenerateVerticalInertia {
+            gamma: [gamma0.x, gamma0.y, gamma0.z],
+            value: vertical_inertia,
+        });
+    }
+    let mut y0 = SVector::<f64, 7>::zeros();
+    y0.fixed_rows_mut::<3>(0).copy_from(&big_omega0);
+    y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
+
+    let mut traj = ReducedTrajectory::default();
+    let field = |y: &SVector<f64, 7>| {
+        let (w, g) = (split3(y, 0), split3(y, 3));
+        let (w_dot, g_dot, psi_dot) = reduced_vector_field(model, &w, &g, p_psi)?;
+        let mut d = SVector::<f64, 7>::zeros();
+        d.fixed_rows_mut::<3>(0).copy_from(&w_dot);
+        d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
+        d[6] = psi_dot;
+        // γ̇ = γ × Ω = (−Ω) × γ.
+        Ok((d, -w))
+    };
+    let record = |t: f64, y: &SVector<f64, 7>| {
+        let (w, g) = (split3(y, 0), split3(y, 3));
+        let b = model.bundle(&w, &g, p_psi);
+        traj.t.push(t);
+        traj.big_omega.push(w);
+        traj.gamma.push(g);
+        traj.psi.push(y[6]);
+        traj.psi_dot.push(b.psi_dot);
+        traj.omega.push(w + g * b.psi_dot);
+        traj.energy.push(b.dr_domega.dot(&w) - b.routhian);
+        traj.p_psi.push(b.dr_domega.dot(&g));
+        traj.gamma_norm_sq.push(g.norm_squared());
+    };
+    let stats = drive(field, y0, t_end, opts, record)?;
+    traj.stats = stats;
+    Ok(traj)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A torque-free asymmetric rigid body with a hand-written `L = ½ωᵀIω`.
+    struct Free {
+        inertia: Matrix3<f64>,
+    }
+
+    impl Lagrangian for Free {
+        fn lagrangian(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> f64 {
+            0.5 * w.dot(&(self.inertia * w))
+        }
+        fn dl_domega(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
+            self.inertia * w
+        }
+        fn dl_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
+            Vector3::zeros()
+        }
+        fn d2l_domega2(&self, _g: &Vector3<f64>) -> Matrix3<f64> {
+            self.inertia
+        }
+        fn d2l_domega_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Matrix3<f64> {
+            Matrix3::zeros()
+        }
+    }
+
+    fn free() -> Free {
+        Free { inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)) }
+    }
+
+    #[test]
+    fn invalid_inputs_are_errors() {
+        let m = free();
+        let w = Vector3::new(1.0, 0.0, 0.0);
+        let g = Vector3::z();
+        let o = SimOptions::default();
+        let nan = f64::NAN;
+        assert!(matches!(
+            simulate_full(&m, Vector3::new(nan, 0.0, 0.0), g, 1.0, &o),
+            Err(RouthError::NonFinite { what: "omega0", .. })
+        ));
+        assert!(matches!(
+            simulate_full(&m, w, Vector3::new(0.0, f64::INFINITY, 0.0), 1.0, &o),
+            Err(RouthError::NonFinite { what: "gamma0", .. })
+        ));
+        assert!(matches!(
+            simulate_full(&m, w, g, nan, &o),
+            Err(RouthError::NonFinite { what: "t_end", .. })
+        ));
+        assert!(matches!(
+            simulate_full(&m, w, g, -1.0, &o),
+            Err(RouthError::InvalidOption { what: "t_end", .. })
+        ));
+        assert!(matches!(
+            simulate_full(&m, w, g * 1.1, 1.0, &o),
+            Err(RouthError::NonUnitGamma { .. })
+        ));
+        let bad = |o: SimOptions| simulate_full(&m, w, g, 1.0, &o);
+        assert!(matches!(
+            bad(SimOptions { rtol: 0.0, ..o.clone() }),
+            Err(RouthError::InvalidOption { what: "rtol", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions { rtol: nan, ..o.clone() }),
+            Err(RouthError::NonFinite { what: "rtol", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions { atol: -1.0, ..o.clone() }),
+            Err(RouthError::InvalidOption { what: "atol", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions::lie_rk4(0.0)),
+            Err(RouthError::InvalidOption { what: "step", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions::lie_rk4(nan)),
+            Err(RouthError::NonFinite { what: "step", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions { h_max: Some(0.0), ..o.clone() }),
+            Err(RouthError::InvalidOption { what: "h_max", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions { max_steps: 0, ..o.clone() }),
+            Err(RouthError::InvalidOption { what: "max_steps", .. })
+        ));
+        assert!(matches!(
+            bad(o.clone().at_times(vec![0.5, 0.2])),
+            Err(RouthError::InvalidOption { what: "output", .. })
+        ));
+        assert!(matches!(
+            bad(o.clone().at_times(vec![0.5, 2.0])),
+            Err(RouthError::InvalidOption { what: "output", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions { max_steps: 5, ..o.clone() }),
+            Err(RouthError::TooManySteps { .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions { max_steps: 5, ..SimOptions::lie_rk4(0.01) }),
+            Err(RouthError::TooManySteps { .. })
+        ));
+        // A kinetic form that is not positive definite.
+        let indefinite = Free { inertia: Matrix3::from_diagonal(&Vector3::new(1.0, -2.0, 3.0)) };
+        assert!(matches!(
+            simulate_full(&indefinite, w, g, 1.0, &o),
+            Err(RouthError::KineticNotPositiveDefinite { min_eigenvalue, .. }) if min_eigenvalue == -2.0
+        ));
+    }
+
+    #[test]
+    fn zero_length_run_records_the_initial_state() {
+        let m = free();
+        let w = Vector3::new(1.0, 0.5, 0.0);
+        for o in [SimOptions::default(), SimOptions::lie_rk4(0.1)] {
+            let tr = simulate_full(&m, w, Vector3::z(), 0.0, &o).unwrap();
+            assert_eq!(tr.t, vec![0.0]);
+            assert_eq!(tr.omega, vec![w]);
+            assert_eq!(tr.energy[0], 0.5 * (1.0 + 0.5));
+        }
+    }
+
+    /// Torque-free rotation about the stable major axis with a small perturbation: energy and
+    /// |Iω|² are integrals; the output times are honoured exactly by both methods.
+    #[test]
+    fn output_times_and_integrals() {
+        let m = free();
+        let w0 = Vector3::new(0.05, 0.1, 2.0);
+        let times: Vec<f64> = (0..=20).map(|i| i as f64 * 0.25).collect();
+        for o in [
+            SimOptions::with_tolerances(1e-11, 1e-13).at_times(times.clone()),
+            SimOptions::lie_rk4(0.01).at_times(times.clone()),
+        ] {
+            let tr = simulate_full(&m, w0, Vector3::z(), 5.0, &o).unwrap();
+            assert_eq!(tr.t, times);
+            let l0 = (m.inertia * w0).norm_squared();
+            for w in &tr.omega {
+                assert!(((m.inertia * w).norm_squared() - l0).abs() < 1e-8);
+            }
+            assert!(tr.energy_drift() < 1e-8, "{:e}", tr.energy_drift());
+        }
+    }
+}

@@ -1,0 +1,497 @@
+//! Validation of `steady_motions` against things it did not produce: one-dimensional closed forms
+//! of the amended potential of symmetric bodies (circles of steady motions), the six steady
+//! rotations of a free asymmetric body, the Euler characteristic of the sphere for generic models,
+//! and Theorem 2 (the energy of a steady motion equals the amended potential).
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use routh_core::{
+    classify, steady_motion_near, steady_motions, steady_motions_with, Lagrangian, Matrix3,
+    RouthError, Routhian, SearchOptions, Stability, SteadyMotion, Vector3,
+};
+use test_models::{Ellipsoid, Gyrostat};
+
+// ---------------------------------------------------------------------------------------------
+// A hand-written heavy top: L = ½ωᵀJω − m g r·γ (J constant, symmetric positive definite), with
+// its Routh function (39) and every derivative in closed form. Independent of routh-core's
+// analysis code and of the code generator.
+
+#[derive(Debug, Clone)]
+struct HeavyTop {
+    j: Matrix3<f64>,
+    /// m g r: the weight times the body-frame position of the centre of mass.
+    mgr: Vector3<f64>,
+}
+
+impl HeavyTop {
+    /// The Lagrange top J = diag(A₁, A₁, C), U = m g l γ₃.
+    fn lagrange(a1: f64, c: f64, mgl: f64) -> Self {
+        HeavyTop {
+            j: Matrix3::from_diagonal(&Vector3::new(a1, a1, c)),
+            mgr: Vector3::new(0.0, 0.0, mgl),
+        }
+    }
+    fn n(&self, g: &Vector3<f64>) -> f64 {
+        g.dot(&(self.j * g))
+    }
+    fn q(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+        p - (self.j * w).dot(g)
+    }
+    /// ∂(q/n)/∂γ.
+    fn dqn(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        -(self.j * w) / n - (2.0 * q / (n * n)) * (self.j * g)
+    }
+}
+
+impl Lagrangian for HeavyTop {
+    fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+        0.5 * w.dot(&(self.j * w)) - self.mgr.dot(g)
+    }
+    fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+        self.j * w
+    }
+    fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+        -self.mgr
+    }
+    fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> {
+        self.j
+    }
+    fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+        Matrix3::zeros()
+    }
+}
+
+impl Routhian for HeavyTop {
+    fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        0.5 * w.dot(&(self.j * w)) - self.mgr.dot(g) - 0.5 * q * q / n
+    }
+    fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        self.j * w + (q / n) * (self.j * g)
+    }
+    fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        -self.mgr + (q / n) * (self.j * w) + (q * q / (n * n)) * (self.j * g)
+    }
+    fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
+        let jg = self.j * g;
+        self.j - jg * jg.transpose() / self.n(g)
+    }
+    fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        (self.j * g) * self.dqn(w, g, p).transpose() + (q / n) * self.j
+    }
+    fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        let dqn = self.dqn(w, g, p);
+        (self.j * w) * dqn.transpose()
+            + (q * q / (n * n)) * self.j
+            + (2.0 * q / n) * (self.j * g) * dqn.transpose()
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Helpers.
+
+/// The interior roots in (−1, 1) of a function of γ₃, by sign changes on a fine grid and
+/// bisection.
+fn roots_in_z(f: impl Fn(f64) -> f64) -> Vec<f64> {
+    let n = 20_000;
+    let zs: Vec<f64> = (1..n).map(|i| -1.0 + 2.0 * i as f64 / n as f64).collect();
+    let mut out = Vec::new();
+    for w in zs.windows(2) {
+        let (mut a, mut b) = (w[0], w[1]);
+        let (fa, fb) = (f(a), f(b));
+        if fa == 0.0 {
+            out.push(a);
+            continue;
+        }
+        if fa * fb > 0.0 {
+            continue;
+        }
+        for _ in 0..200 {
+            let m = 0.5 * (a + b);
+            if f(a) * f(m) <= 0.0 {
+                b = m;
+            } else {
+                a = m;
+            }
+        }
+        out.push(0.5 * (a + b));
+    }
+    out.dedup_by(|x, y| (*x - *y).abs() < 1e-9);
+    out
+}
+
+/// Checks the general properties of every steady motion: unit γ, critical point of U_r (33),
+/// ψ̇ by (15), μ = (∂R/∂γ, γ), U_r = −R(0, γ, p), Theorem 2 (E = U_r), sorted by U_r.
+fn check_records<M: Routhian>(model: &M, p: f64, motions: &[SteadyMotion]) {
+    let zero = Vector3::zeros();
+    for s in motions {
+        assert!((s.gamma.norm() - 1.0).abs() < 1e-14, "{s}");
+        let dr = model.dr_dgamma(&zero, &s.gamma, p);
+        let scale = dr.norm().max(model.d2r_dgamma2(&zero, &s.gamma, p).norm());
+        let tangential = dr - dr.dot(&s.gamma) * s.gamma;
+        assert!(tangential.norm() <= 1e-10 * scale, "not critical: {s}, |grad| = {:e}", tangential.norm());
+        assert!((s.mu - dr.dot(&s.gamma)).abs() <= 1e-12 * scale);
+        assert_eq!(s.psi_dot, model.psi_dot(&zero, &s.gamma, p));
+        assert_eq!(s.amended_potential, -model.routhian(&zero, &s.gamma, p));
+        let e_scale = s.amended_potential.abs().max(scale);
+        assert!(
+            (s.energy - s.amended_potential).abs() <= 1e-12 * e_scale,
+            "Theorem 2: E = {} vs U_r = {}",
+            s.energy,
+            s.amended_potential
+        );
+        // The full system's cyclic momentum (9) at ω = ψ̇γ is p_ψ.
+        let pm = model.cyclic_momentum(&(s.psi_dot * s.gamma), &s.gamma);
+        assert!((pm - p).abs() <= 1e-12 * p.abs().max(1.0));
+    }
+    for w in motions.windows(2) {
+        assert!(w[0].amended_potential <= w[1].amended_potential);
+    }
+}
+
+/// A body symmetric about e₃: its isolated steady motions are the poles ±e₃ and its other steady
+/// motions are circles γ₃ = z*, one per interior root z* of dU_r/dγ₃; the search must report
+/// exactly those (one representative per circle, `isolated: false`), all Degenerate.
+fn check_symmetric<M: Routhian>(model: &M, p: f64, du_dz: impl Fn(f64) -> f64, what: &str) -> usize {
+    let motions = steady_motions(model, p).unwrap();
+    check_records(model, p, &motions);
+    let poles: Vec<_> = motions.iter().filter(|s| s.isolated).collect();
+    assert_eq!(poles.len(), 2, "{what}, p = {p}: {motions:#?}");
+    assert!(poles.iter().any(|s| (s.gamma - Vector3::z()).norm() < 1e-9));
+    assert!(poles.iter().any(|s| (s.gamma + Vector3::z()).norm() < 1e-9));
+    let mut expected = roots_in_z(du_dz);
+    let mut circles: Vec<f64> = motions.iter().filter(|s| !s.isolated).map(|s| s.gamma.z).collect();
+    expected.sort_by(f64::total_cmp);
+    circles.sort_by(f64::total_cmp);
+    assert_eq!(circles.len(), expected.len(), "{what}, p = {p}: circles {circles:?} vs γ₃ = {expected:?}");
+    for (c, e) in circles.iter().zip(&expected) {
+        assert!((c - e).abs() < 1e-7, "{what}, p = {p}: circle at γ₃ = {c}, expected {e}");
+    }
+    for s in motions.iter().filter(|s| !s.isolated) {
+        assert_eq!(classify(model, s, p).unwrap().verdict, Stability::Degenerate);
+    }
+    eprintln!("{what}, p = {p}: poles ±e₃ and circles at γ₃ = {circles:?}");
+    circles.len()
+}
+
+/// #minima − #saddles + #maxima over the isolated critical points (they must all be
+/// non-degenerate); returns (χ, #critical points).
+fn euler_characteristic<M: Routhian>(model: &M, p: f64, what: &str) -> (i64, usize) {
+    let motions = steady_motions(model, p).unwrap();
+    check_records(model, p, &motions);
+    let mut chi = 0;
+    for s in &motions {
+        assert!(s.isolated, "{what}, p = {p}: a generic model has no circles: {s}");
+        let r = classify(model, s, p).unwrap();
+        assert_ne!(r.verdict, Stability::Degenerate, "{what}, p = {p}: {s}: {r}");
+        chi += match r.degree_of_instability {
+            0 | 2 => 1,
+            _ => -1,
+        };
+    }
+    let kinds: Vec<_> = motions
+        .iter()
+        .map(|s| classify(model, s, p).unwrap().degree_of_instability)
+        .collect();
+    eprintln!("{what}, p = {p}: χ = {chi} from {} points, degrees {kinds:?}", motions.len());
+    (chi, motions.len())
+}
+
+// ---------------------------------------------------------------------------------------------
+// Symmetric bodies: circles of steady motions.
+
+#[test]
+fn lagrange_top_poles_and_circles_of_tilted_precessions() {
+    let mut total = 0;
+    for (a1, c, mgl) in [(2.0, 1.0, 1.0), (1.0, 1.5, 2.0)] {
+        let top = HeavyTop::lagrange(a1, c, mgl);
+        for p in [0.5, 2.0, 3.5, 8.0] {
+            // U_r = ½p²/n + mgl γ₃ with n = C + (A₁ − C)(1 − γ₃²).
+            let du = |z: f64| {
+                let n = c + (a1 - c) * (1.0 - z * z);
+                p * p * (a1 - c) * z / (n * n) + mgl
+            };
+            total += check_symmetric(&top, p, du, "Lagrange top");
+        }
+    }
+    assert!(total >= 3, "too few circles exercised: {total}");
+}
+
+#[test]
+fn lagrange_top_from_test_models_matches_the_hand_written_one() {
+    let (a1, c, mgl, p) = (2.0, 1.0, 1.0, 3.5);
+    let a = steady_motions(&Gyrostat::lagrange_top(a1, c, mgl), p).unwrap();
+    let b = steady_motions(&HeavyTop::lagrange(a1, c, mgl), p).unwrap();
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!(x.isolated, y.isolated);
+        assert!((x.amended_potential - y.amended_potential).abs() < 1e-10);
+        assert!((x.gamma.z - y.gamma.z).abs() < 1e-8);
+    }
+}
+
+#[test]
+fn ellipsoid_of_revolution_has_symmetric_circles_on_one_level() {
+    // An ellipsoid of revolution (semi-axes a, a, c) with inertia diag(A, A, C) and its centre at
+    // the centre of mass: U_r = ½p²/(A(1 − z²) + Cz²) + mg√(a²(1 − z²) + c²z²) is even in z = γ₃,
+    // so besides the equator z = 0 any tilted circles come in pairs ±z* with the same U_r: they
+    // must be reported as two circles, not merged. Tilted circles need sign(C − A) =
+    // sign(c² − a²), hence a prolate shape with an oblate mass distribution here (a homogeneous
+    // body has none).
+    let mut total = 0;
+    let (a, c, ia, ic) = (1.0, 1.5, 1.0, 2.0);
+    let body = Ellipsoid::new(
+        Matrix3::from_diagonal(&Vector3::new(ia, ia, ic)),
+        Vector3::new(a, a, c),
+        Vector3::zeros(),
+        1.0,
+        9.81,
+    );
+    let mg = body.mass * body.g;
+    for p in [0.5, 4.0, 5.0, 8.0] {
+        let du = |z: f64| {
+            let n = ia * (1.0 - z * z) + ic * z * z;
+            let s = a * a * (1.0 - z * z) + c * c * z * z;
+            -0.5 * p * p * 2.0 * (ic - ia) * z / (n * n) + mg * (c * c - a * a) * z / s.sqrt()
+        };
+        total += check_symmetric(&body, p, du, "ellipsoid of revolution");
+    }
+    // p = 4 and 5 have the equator and a pair of tilted circles each.
+    assert!(total >= 8, "too few circles exercised: {total}");
+}
+
+#[test]
+fn free_asymmetric_body_has_six_steady_rotations() {
+    // No potential: U_r = ½p²/(γᵀJγ); critical points are the principal axes ±eᵢ: minima on the
+    // axis of largest inertia, maxima on the smallest, saddles on the middle one.
+    let top = HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+        mgr: Vector3::zeros(),
+    };
+    let p = 2.0;
+    let motions = steady_motions(&top, p).unwrap();
+    check_records(&top, p, &motions);
+    assert_eq!(motions.len(), 6, "{motions:#?}");
+    for (k, s) in motions.iter().enumerate() {
+        // Sorted by U_r: largest inertia (e₃) first.
+        let axis = 2 - k / 2;
+        assert!((s.gamma[axis].abs() - 1.0).abs() < 1e-12, "{s}");
+        assert!((s.amended_potential - 0.5 * p * p / top.j[(axis, axis)]).abs() < 1e-12);
+        assert!((s.psi_dot - p / top.j[(axis, axis)]).abs() < 1e-12);
+        let r = classify(&top, s, p).unwrap();
+        assert_eq!(r.degree_of_instability, [0, 1, 2][k / 2]);
+        // Euler's classical result: rotation about the middle axis is unstable, about the others
+        // stable (the smallest axis by gyroscopic stabilisation).
+        let expected = [
+            Stability::SecularlyStable,
+            Stability::Unstable,
+            Stability::GyroscopicallyStabilized,
+        ][k / 2];
+        assert_eq!(r.verdict, expected, "{s}: {r}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// b. Generic models: the isolated critical points satisfy the Morse relation χ(S²) = 2.
+
+#[test]
+fn euler_characteristic_asymmetric_heavy_tops() {
+    let mut rng = ChaCha8Rng::seed_from_u64(2024);
+    for _ in 0..3 {
+        let j = {
+            let b = Matrix3::from_fn(|_, _| rng.gen_range(-1.0..1.0));
+            b * b.transpose() + Matrix3::from_diagonal_element(0.5)
+        };
+        let top = HeavyTop { j, mgr: Vector3::from_fn(|_, _| rng.gen_range(-1.0..1.0)) };
+        for p in [0.0, 0.4, 1.5, 5.0] {
+            let (chi, n) = euler_characteristic(&top, p, "heavy top");
+            assert_eq!(chi, 2, "heavy top, p = {p}: χ = {chi} over {n} points");
+        }
+    }
+}
+
+#[test]
+fn euler_characteristic_gyrostats() {
+    let mut rng = ChaCha8Rng::seed_from_u64(99);
+    let mut counts = Vec::new();
+    for _ in 0..3 {
+        let body = Gyrostat::random(&mut rng);
+        for p in [0.5, 4.0, 12.0, 30.0] {
+            let (chi, n) = euler_characteristic(&body, p, "gyrostat");
+            assert_eq!(chi, 2, "gyrostat {body:?}, p = {p}: χ = {chi} over {n} points");
+            counts.push(n);
+        }
+    }
+    // Not only the trivial two-point case.
+    assert!(counts.iter().any(|&n| n >= 4), "{counts:?}");
+}
+
+#[test]
+fn euler_characteristic_triaxial_ellipsoids() {
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let mut counts = Vec::new();
+    for _ in 0..3 {
+        let body = Ellipsoid::random(&mut rng);
+        for p in [0.0, 3.0, 8.0, 20.0] {
+            let (chi, n) = euler_characteristic(&body, p, "ellipsoid");
+            assert_eq!(chi, 2, "ellipsoid {body:?}, p = {p}: χ = {chi} over {n} points");
+            counts.push(n);
+        }
+    }
+    assert!(counts.iter().any(|&n| n >= 6), "{counts:?}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Following a branch, options and errors.
+
+#[test]
+fn steady_motion_near_refines_a_guess() {
+    let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
+    let s = steady_motion_near(&top, Vector3::new(0.01, -0.02, 1.0), 3.0).unwrap();
+    assert!(s.isolated);
+    assert!((s.gamma - Vector3::z()).norm() < 1e-12);
+    // A point of a circle is reported as non-isolated.
+    let all = steady_motions(&top, 3.0).unwrap();
+    let circle = all.iter().find(|s| !s.isolated).unwrap();
+    let guess = circle.gamma + Vector3::new(0.01, 0.0, 0.0);
+    let t = steady_motion_near(&top, guess, 3.0).unwrap();
+    assert!(!t.isolated);
+    assert!((t.gamma.z - circle.gamma.z).abs() < 1e-9);
+    assert!(matches!(
+        steady_motion_near(&top, Vector3::zeros(), 3.0),
+        Err(RouthError::NonUnitGamma { .. })
+    ));
+}
+
+#[test]
+fn search_options_and_errors() {
+    let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
+    assert!(matches!(steady_motions(&top, f64::NAN), Err(RouthError::NonFinite { .. })));
+    let no_starts = SearchOptions { starts: 0, ..SearchOptions::default() };
+    assert!(matches!(
+        steady_motions_with(&top, 1.0, &no_starts),
+        Err(RouthError::InvalidOption { .. })
+    ));
+    // Few starts still find the two poles of a slow top (U_r has only those critical points).
+    let few = SearchOptions { starts: 20, ..SearchOptions::default() };
+    let poles = steady_motions_with(&top, 0.1, &few).unwrap();
+    assert!(poles.iter().filter(|s| s.isolated).count() == 2, "{poles:#?}");
+
+    // J indefinite: γᵀJγ ≤ 0 somewhere on the sphere.
+    let bad = HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0)),
+        mgr: Vector3::z(),
+    };
+    assert!(matches!(
+        steady_motions(&bad, 1.0),
+        Err(RouthError::DegenerateVerticalInertia { .. } | RouthError::KineticNotPositiveDefinite { .. })
+    ));
+
+    /// A model whose Routh function is not finite anywhere: nothing can converge.
+    struct Broken(HeavyTop);
+    impl Lagrangian for Broken {
+        fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+            self.0.lagrangian(w, g)
+        }
+        fn dl_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
+            self.0.dl_domega(w, g)
+        }
+        fn dl_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
+            self.0.dl_dgamma(w, g)
+        }
+        fn d2l_domega2(&self, g: &Vector3<f64>) -> Matrix3<f64> {
+            self.0.d2l_domega2(g)
+        }
+        fn d2l_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Matrix3<f64> {
+            self.0.d2l_domega_dgamma(w, g)
+        }
+    }
+    impl Routhian for Broken {
+        fn routhian(&self, _: &Vector3<f64>, _: &Vector3<f64>, _: f64) -> f64 {
+            f64::NAN
+        }
+        fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+            self.0.dr_domega(w, g, p)
+        }
+        fn dr_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>, _: f64) -> Vector3<f64> {
+            Vector3::repeat(f64::NAN)
+        }
+        fn d2r_domega2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+            self.0.d2r_domega2(w, g, p)
+        }
+        fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+            self.0.d2r_domega_dgamma(w, g, p)
+        }
+        fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+            self.0.d2r_dgamma2(w, g, p)
+        }
+    }
+    let broken = Broken(top.clone());
+    assert!(matches!(steady_motions(&broken, 1.0), Err(RouthError::NoConvergence { .. })));
+    assert!(steady_motion_near(&broken, Vector3::z(), 1.0).is_err());
+}
+
+#[test]
+#[ignore]
+fn zz_stress() {
+    let mut rng = ChaCha8Rng::seed_from_u64(12345);
+    let mut bad = 0;
+    let mut total = 0;
+    let t0 = std::time::Instant::now();
+    for i in 0..40 {
+        let gy = Gyrostat::random(&mut rng);
+        let el = Ellipsoid::random(&mut rng);
+        for k in 0..10 {
+            let p = 0.5 + 4.0 * k as f64 + rng.gen_range(0.0..3.0);
+            for (name, res) in [("gyro", steady_motions(&gy, p).map(|m| (m.clone(), m.iter().map(|s| classify(&gy, s, p).unwrap()).collect::<Vec<_>>()))),
+                                ("ell", steady_motions(&el, p).map(|m| (m.clone(), m.iter().map(|s| classify(&el, s, p).unwrap()).collect::<Vec<_>>())))] {
+                total += 1;
+                let (m, r) = res.unwrap();
+                let mut chi = 0i64;
+                let mut degen = 0;
+                for (s, r) in m.iter().zip(&r) {
+                    if r.verdict == Stability::Degenerate || !s.isolated { degen += 1; }
+                    chi += if r.degree_of_instability == 1 { -1 } else { 1 };
+                }
+                if chi != 2 || degen > 0 {
+                    bad += 1;
+                    eprintln!("{name} {i} p={p}: chi={chi} n={} degen={degen}", m.len());
+                    for (s, r) in m.iter().zip(&r) { eprintln!("   {s}\n     {r}"); }
+                }
+            }
+        }
+    }
+    eprintln!("bad {bad} / {total} in {:?}", t0.elapsed());
+}
+
+#[test]
+#[ignore]
+fn zz_stress_sym() {
+    let mut rng = ChaCha8Rng::seed_from_u64(777);
+    let mut bad = 0;
+    let mut total = 0;
+    let t0 = std::time::Instant::now();
+    for _ in 0..30 {
+        let (a1, c, mgl) = (rng.gen_range(0.5..3.0), rng.gen_range(0.5..3.0), rng.gen_range(0.2..3.0));
+        let top = HeavyTop::lagrange(a1, c, mgl);
+        for k in 0..15 {
+            let p: f64 = rng.gen_range(0.0..1.0) * 3.0 * (4.0f64 * a1 * mgl).sqrt() * (1.0 + k as f64 / 5.0);
+            total += 1;
+            let m = steady_motions(&top, p).unwrap();
+            let du = |z: f64| { let n = c + (a1 - c) * (1.0 - z * z); p * p * (a1 - c) * z / (n * n) + mgl };
+            let exp = roots_in_z(du);
+            let circ: Vec<f64> = m.iter().filter(|s| !s.isolated).map(|s| s.gamma.z).collect();
+            let iso: Vec<f64> = m.iter().filter(|s| s.isolated).map(|s| s.gamma.z).collect();
+            if circ.len() != exp.len() || iso.len() != 2 {
+                bad += 1;
+                eprintln!("A={a1:.3} C={c:.3} mgl={mgl:.3} p={p:.4}: circles {circ:?} iso {iso:?} expected {exp:?}");
+            }
+        }
+    }
+    eprintln!("bad {bad} / {total} in {:?}", t0.elapsed());
+}

@@ -1,0 +1,130 @@
+//! The generated Routh function against the paper's closed forms (38)–(41), the corrected (51)
+//! (ERRATA E1, E2), Theorem 2 and the identities of ERRATA E4–E6, at random points.
+
+mod common;
+
+use common::{close, Ellipsoid, Gyrostat};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use routh::{Lagrangian, Matrix3, Routhian, Vector3};
+
+fn sample(rng: &mut ChaCha8Rng) -> (Vector3<f64>, Vector3<f64>, f64) {
+    let w = test_models::random_vector(rng, 2.0);
+    let g = test_models::random_unit_vector(rng) * rng.gen_range(0.5..1.5);
+    (w, g, rng.gen_range(-5.0..5.0))
+}
+
+fn assert_close(what: &str, a: f64, b: f64, tol: f64) {
+    close(&[a], &[b], tol, 1.0).unwrap_or_else(|e| panic!("{what}: {e}"));
+}
+
+#[test]
+fn gyrostat_matches_closed_forms_38_to_41() {
+    let mut rng = ChaCha8Rng::seed_from_u64(10);
+    for _ in 0..20 {
+        let model = Gyrostat::from(&test_models::Gyrostat::random(&mut rng));
+        for _ in 0..10 {
+            let (w, g, p) = sample(&mut rng);
+            let i = model.inertia;
+            let a = model.rotor + model.coupling * g;
+            let u = model.mass * model.g * model.com.dot(&g);
+            let igg = g.dot(&(i * g));
+            let slack = p - (i * w).dot(&g) - a.dot(&g);
+            // (38)
+            assert_close("ψ̇ (38)", model.psi_dot(&w, &g, p), slack / igg, 1e-13);
+            // (39)
+            let r = 0.5 * w.dot(&(i * w)) + a.dot(&w) - u - 0.5 * slack * slack / igg;
+            assert_close("R (39)", model.routhian(&w, &g, p), r, 1e-13);
+            // (40)
+            let ur = 0.5 * (p - a.dot(&g)).powi(2) / igg + u;
+            assert_close("U_r (40)", model.amended_potential(&g, p), ur, 1e-13);
+            // (41): the quadratic part of R in Ω is ½ΩᵀAΩ with A = ∂²R/∂Ω².
+            let r2 = 0.5 * (w.dot(&(i * w)) - (i * w).dot(&g).powi(2) / igg);
+            let hw = model.d2r_domega2(&w, &g, p);
+            assert_close("R₂ (41)", 0.5 * w.dot(&(hw * w)), r2, 1e-13);
+        }
+    }
+}
+
+#[test]
+fn ellipsoid_matches_corrected_51() {
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    for _ in 0..20 {
+        let model = Ellipsoid::from(&test_models::Ellipsoid::random(&mut rng));
+        for _ in 0..10 {
+            let (w, g, p) = sample(&mut rng);
+            let d = Matrix3::from_diagonal(&model.semi_axes.component_mul(&model.semi_axes));
+            let root = g.dot(&(d * g)).sqrt();
+            let c3 = root - model.offset.dot(&g);
+            let n = d * g / root - model.offset;
+            let i = model.inertia;
+            // (51) with the ½ of ERRATA E1 and U = +m g C₃ (ERRATA E2).
+            let r = 0.5 * (w.dot(&(i * w)) + model.mass * n.dot(&g.cross(&w)).powi(2))
+                - 0.5 * (p - (i * w).dot(&g)).powi(2) / g.dot(&(i * g))
+                - model.mass * model.g * c3;
+            assert_close("R (51, E1)", model.routhian(&w, &g, p), r, 1e-13);
+            // ERRATA E6: γᵀJγ = γᵀIγ.
+            let j = model.d2l_domega2(&g);
+            assert_close("γᵀJγ = γᵀIγ", g.dot(&(j * g)), g.dot(&(i * g)), 1e-13);
+        }
+    }
+}
+
+fn check_theorem_2<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
+    for _ in 0..50 {
+        let (w, g, p) = sample(rng);
+        let b = model.bundle(&w, &g, p);
+        // Theorem 2: (∂R/∂Ω, γ) ≡ p_ψ, and E' = (∂R/∂Ω, Ω) − R equals E at ω = Ω + ψ̇γ.
+        assert_close("(∂R/∂Ω, γ) = p", b.dr_domega.dot(&g), p, 1e-12);
+        let omega = w + b.psi_dot * g;
+        assert_close("p_ψ of (9)", model.cyclic_momentum(&omega, &g), p, 1e-12);
+        assert_close("E' = E", b.dr_domega.dot(&w) - b.routhian, model.energy(&omega, &g), 1e-12);
+        // ERRATA E6: (∂²R/∂Ω∂γ)ᵀγ = −∂R/∂Ω.
+        let lhs = b.d2r_domega_dgamma.transpose() * g;
+        close(lhs.as_slice(), (-b.dr_domega).as_slice(), 1e-12, 1.0).unwrap();
+        // ERRATA E4: ∂²R/∂Ω² γ = 0, and R(Ω + sγ) = R(Ω) + s p_ψ.
+        close((b.d2r_domega2 * g).as_slice(), &[0.0; 3], 1e-12, b.d2r_domega2.amax()).unwrap();
+        let s = 0.37;
+        assert_close("gauge", model.routhian(&(w + s * g), &g, p), b.routhian + s * p, 1e-12);
+        // (15): ∂R/∂p = −ψ̇.
+        assert_close("(15)", b.dr_dp, -b.psi_dot, 1e-15);
+    }
+}
+
+#[test]
+fn theorem_2_and_errata_identities_hold() {
+    let mut rng = ChaCha8Rng::seed_from_u64(12);
+    for _ in 0..5 {
+        check_theorem_2(&Gyrostat::from(&test_models::Gyrostat::random(&mut rng)), &mut rng);
+        check_theorem_2(&Ellipsoid::from(&test_models::Ellipsoid::random(&mut rng)), &mut rng);
+    }
+}
+
+fn check_e5<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
+    for _ in 0..20 {
+        let g = test_models::random_unit_vector(rng);
+        let p = rng.gen_range(-5.0..5.0);
+        let sys = model.gyroscopic_system(&g, p);
+        let scale = sys.a.amax().max(sys.g.amax()).max(sys.c.amax());
+        // A, G, C all annihilate γ, so det(Aλ² + 2Gλ + C) ≡ 0 (ERRATA E5).
+        for (name, x) in [("A", sys.a), ("G", sys.g), ("C", sys.c)] {
+            close((x * g).as_slice(), &[0.0; 3], 1e-12, scale).unwrap_or_else(|e| panic!("{name}γ: {e}"));
+        }
+        close((sys.g + sys.g.transpose()).as_slice(), &[0.0; 9], 1e-14, scale).unwrap();
+        for _ in 0..5 {
+            let l = rng.gen_range(-3.0..3.0);
+            let f = (sys.a * l * l + sys.g * (2.0 * l) + sys.c).determinant();
+            let size = (scale * (1.0 + l * l)).powi(3);
+            assert!(f.abs() <= 1e-12 * size, "det = {f:e} at λ = {l}");
+        }
+    }
+}
+
+#[test]
+fn three_by_three_characteristic_polynomial_vanishes() {
+    let mut rng = ChaCha8Rng::seed_from_u64(13);
+    for _ in 0..5 {
+        check_e5(&Gyrostat::from(&test_models::Gyrostat::random(&mut rng)), &mut rng);
+        check_e5(&Ellipsoid::from(&test_models::Ellipsoid::random(&mut rng)), &mut rng);
+    }
+}
