@@ -92,12 +92,19 @@ impl Default for SimOptions {
 impl SimOptions {
     /// The adaptive method with the given tolerances, other options at their defaults.
     pub fn with_tolerances(rtol: f64, atol: f64) -> Self {
-        SimOptions { rtol, atol, ..SimOptions::default() }
+        SimOptions {
+            rtol,
+            atol,
+            ..SimOptions::default()
+        }
     }
 
     /// The Lie-group RK4 method with the given step, other options at their defaults.
     pub fn lie_rk4(step: f64) -> Self {
-        SimOptions { method: Method::LieRk4 { step }, ..SimOptions::default() }
+        SimOptions {
+            method: Method::LieRk4 { step },
+            ..SimOptions::default()
+        }
     }
 
     /// The same options, recording exactly at `times` (see [`Output::Times`]).
@@ -216,7 +223,9 @@ impl ReducedTrajectory {
     }
     /// `max |(∂R/∂Ω, γ)(t) − p_ψ|` (17), with `p_ψ` the constant the run was started with.
     pub fn p_psi_error(&self, p_psi: f64) -> f64 {
-        self.p_psi.iter().fold(0.0, |m, &v| m.max((v - p_psi).abs()))
+        self.p_psi
+            .iter()
+            .fold(0.0, |m, &v| m.max((v - p_psi).abs()))
     }
     /// `max | |γ(t)|² − 1 |`.
     pub fn gamma_norm_error(&self) -> f64 {
@@ -238,7 +247,8 @@ pub fn full_vector_field<M: Lagrangian + ?Sized>(
 ) -> Result<(Vector3<f64>, Vector3<f64>), RouthError> {
     let gamma_dot = gamma.cross(omega);
     let j = model.d2l_domega2(gamma);
-    let rhs = model.dl_domega(omega, gamma).cross(omega) + model.dl_dgamma(omega, gamma).cross(gamma)
+    let rhs = model.dl_domega(omega, gamma).cross(omega)
+        + model.dl_dgamma(omega, gamma).cross(gamma)
         - model.d2l_domega_dgamma(omega, gamma) * gamma_dot;
     let omega_dot = solve_spd(&j, &rhs, gamma)?;
     Ok((omega_dot, gamma_dot))
@@ -262,8 +272,8 @@ pub fn reduced_vector_field<M: Routhian + ?Sized>(
 ) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
     let b = model.bundle(big_omega, gamma, p_psi);
     let gamma_dot = gamma.cross(big_omega);
-    let rhs = b.dr_domega.cross(big_omega) + b.dr_dgamma.cross(gamma)
-        - b.d2r_domega_dgamma * gamma_dot;
+    let rhs =
+        b.dr_domega.cross(big_omega) + b.dr_dgamma.cross(gamma) - b.d2r_domega_dgamma * gamma_dot;
     let k = b.d2r_domega2 + gamma * gamma.transpose();
     let big_omega_dot = solve_spd(&k, &rhs, gamma)?;
     Ok((big_omega_dot, gamma_dot, -b.dr_dp))
@@ -290,13 +300,19 @@ fn solve_spd(
 fn check_unit_gamma(gamma: &Vector3<f64>) -> Result<(), RouthError> {
     let norm = gamma.norm();
     if (norm - 1.0).abs() > SIM_UNIT_GAMMA_TOL {
-        return Err(RouthError::NonUnitGamma { norm, tol: SIM_UNIT_GAMMA_TOL });
+        return Err(RouthError::NonUnitGamma {
+            norm,
+            tol: SIM_UNIT_GAMMA_TOL,
+        });
     }
     Ok(())
 }
 
 fn invalid(what: &'static str, reason: impl Into<String>) -> RouthError {
-    RouthError::InvalidOption { what, reason: reason.into() }
+    RouthError::InvalidOption {
+        what,
+        reason: reason.into(),
+    }
 }
 
 /// Checks `t_end` and every option.
@@ -308,10 +324,16 @@ fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
     check_finite("rtol", &[opts.rtol])?;
     check_finite("atol", &[opts.atol])?;
     if opts.rtol < 10.0 * f64::EPSILON {
-        return Err(invalid("rtol", format!("must be ≥ 10ε ≈ 2.2e-15 (got {:e})", opts.rtol)));
+        return Err(invalid(
+            "rtol",
+            format!("must be ≥ 10ε ≈ 2.2e-15 (got {:e})", opts.rtol),
+        ));
     }
     if opts.atol <= 0.0 {
-        return Err(invalid("atol", format!("must be > 0 (got {:e})", opts.atol)));
+        return Err(invalid(
+            "atol",
+            format!("must be > 0 (got {:e})", opts.atol),
+        ));
     }
     if let Method::LieRk4 { step } = opts.method {
         check_finite("step", &[step])?;
@@ -321,7 +343,10 @@ fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
     }
     if let Some(h) = opts.h_max {
         if h.is_nan() {
-            return Err(RouthError::NonFinite { what: "h_max", value: h });
+            return Err(RouthError::NonFinite {
+                what: "h_max",
+                value: h,
+            });
         }
         if h <= 0.0 {
             return Err(invalid("h_max", format!("must be > 0 (got {h:e})")));
@@ -339,7 +364,10 @@ fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
     if let Output::Times(ts) = &opts.output {
         check_finite("output time", ts)?;
         if let Some(&t) = ts.iter().find(|&&t| !(0.0..=t_end).contains(&t)) {
-            return Err(invalid("output", format!("time {t} outside [0, t_end = {t_end}]")));
+            return Err(invalid(
+                "output",
+                format!("time {t} outside [0, t_end = {t_end}]"),
+            ));
         }
         if ts.windows(2).any(|w| w[1] < w[0]) {
             return Err(invalid("output", "times must be non-decreasing"));
@@ -429,14 +457,21 @@ where
                 prev = end;
             }
             if total > opts.max_steps as f64 {
-                return Err(RouthError::TooManySteps { t: t_end, steps: opts.max_steps });
+                // Reported before integrating: `steps` is the number the run would need.
+                return Err(RouthError::TooManySteps {
+                    t: t_end,
+                    steps: total as usize,
+                });
             }
             // The vector field at the start: surfaces errors even when nothing is integrated.
             let (d0, w0) = field(&y0)?;
             if !(d0.iter().all(|x| x.is_finite()) && w0.iter().all(|x| x.is_finite())) {
                 return Err(RouthError::NonFiniteState { t: 0.0 });
             }
-            let mut stats = SimStats { rhs_evaluations: 1, ..SimStats::default() };
+            let mut stats = SimStats {
+                rhs_evaluations: 1,
+                ..SimStats::default()
+            };
             if times.is_none() {
                 record(0.0, &y0);
             }
@@ -606,7 +641,8 @@ pub fn simulate_reduced<M: Routhian>(
     validate(opts, t_end)?;
     check_unit_gamma(&gamma0)?;
     let vertical_inertia = gamma0.dot(&(model.d2l_domega2(&gamma0) * gamma0));
-    if !(vertical_inertia > 0.0) {
+    // Also rejects NaN.
+    if vertical_inertia.is_nan() || vertical_inertia <= 0.0 {
         return Err(RouthError::DegenerateVerticalInertia {
             gamma: [gamma0.x, gamma0.y, gamma0.z],
             value: vertical_inertia,
@@ -673,7 +709,9 @@ mod tests {
     }
 
     fn free() -> Free {
-        Free { inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)) }
+        Free {
+            inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+        }
     }
 
     #[test]
@@ -705,15 +743,24 @@ mod tests {
         ));
         let bad = |o: SimOptions| simulate_full(&m, w, g, 1.0, &o);
         assert!(matches!(
-            bad(SimOptions { rtol: 0.0, ..o.clone() }),
+            bad(SimOptions {
+                rtol: 0.0,
+                ..o.clone()
+            }),
             Err(RouthError::InvalidOption { what: "rtol", .. })
         ));
         assert!(matches!(
-            bad(SimOptions { rtol: nan, ..o.clone() }),
+            bad(SimOptions {
+                rtol: nan,
+                ..o.clone()
+            }),
             Err(RouthError::NonFinite { what: "rtol", .. })
         ));
         assert!(matches!(
-            bad(SimOptions { atol: -1.0, ..o.clone() }),
+            bad(SimOptions {
+                atol: -1.0,
+                ..o.clone()
+            }),
             Err(RouthError::InvalidOption { what: "atol", .. })
         ));
         assert!(matches!(
@@ -725,12 +772,21 @@ mod tests {
             Err(RouthError::NonFinite { what: "step", .. })
         ));
         assert!(matches!(
-            bad(SimOptions { h_max: Some(0.0), ..o.clone() }),
+            bad(SimOptions {
+                h_max: Some(0.0),
+                ..o.clone()
+            }),
             Err(RouthError::InvalidOption { what: "h_max", .. })
         ));
         assert!(matches!(
-            bad(SimOptions { max_steps: 0, ..o.clone() }),
-            Err(RouthError::InvalidOption { what: "max_steps", .. })
+            bad(SimOptions {
+                max_steps: 0,
+                ..o.clone()
+            }),
+            Err(RouthError::InvalidOption {
+                what: "max_steps",
+                ..
+            })
         ));
         assert!(matches!(
             bad(o.clone().at_times(vec![0.5, 0.2])),
@@ -740,16 +796,31 @@ mod tests {
             bad(o.clone().at_times(vec![0.5, 2.0])),
             Err(RouthError::InvalidOption { what: "output", .. })
         ));
+        let tumbling = Vector3::new(1.0, 0.5, 0.3);
         assert!(matches!(
-            bad(SimOptions { max_steps: 5, ..o.clone() }),
-            Err(RouthError::TooManySteps { .. })
+            simulate_full(
+                &m,
+                tumbling,
+                g,
+                100.0,
+                &SimOptions {
+                    max_steps: 5,
+                    ..o.clone()
+                }
+            ),
+            Err(RouthError::TooManySteps { steps: 5, .. })
         ));
         assert!(matches!(
-            bad(SimOptions { max_steps: 5, ..SimOptions::lie_rk4(0.01) }),
+            bad(SimOptions {
+                max_steps: 5,
+                ..SimOptions::lie_rk4(0.01)
+            }),
             Err(RouthError::TooManySteps { .. })
         ));
         // A kinetic form that is not positive definite.
-        let indefinite = Free { inertia: Matrix3::from_diagonal(&Vector3::new(1.0, -2.0, 3.0)) };
+        let indefinite = Free {
+            inertia: Matrix3::from_diagonal(&Vector3::new(1.0, -2.0, 3.0)),
+        };
         assert!(matches!(
             simulate_full(&indefinite, w, g, 1.0, &o),
             Err(RouthError::KineticNotPositiveDefinite { min_eigenvalue, .. }) if min_eigenvalue == -2.0

@@ -89,6 +89,8 @@ pub const TRACE_STEP: f64 = 0.05;
 
 /// Largest number of continuation steps along one curve of critical points.
 const MAX_TRACE_STEPS: usize = 1000;
+/// Fewest vertices for a traced closed curve before the trace is redone with a shorter step.
+const MIN_CLOSED_VERTICES: usize = 12;
 /// Largest number of Levenberg–Marquardt retries (growing λ) within one iteration.
 const MAX_LM_RETRIES: usize = 14;
 /// Gradient level (relative) at which the iteration stops improving.
@@ -299,39 +301,35 @@ pub fn steady_motions_with<M: Routhian>(
         max_iterations: opts.max_iterations,
     };
 
-    let mut isolated: Vec<Local> = Vec::new();
-    let mut curves: Vec<Curve> = Vec::new();
-    let mut planar: Vec<Local> = Vec::new();
-    let mut best_residual = f64::INFINITY;
+    let mut found = Found::default();
     for start in &grid {
-        let Some((loc, converged)) = search.refine(start) else {
-            continue;
-        };
-        best_residual = best_residual.min(loc.grad.norm() / search.tol_scale(&loc));
-        if !converged {
-            continue;
+        found.add(&search, start);
+    }
+    // Critical points closer together than the grid spacing (next to a bifurcation, e.g. the
+    // sleeping top inside a small circle of tilted precessions) share one start: probe around
+    // every point found.
+    let spacing = (4.0 * std::f64::consts::PI / opts.starts as f64).sqrt();
+    for start in found.probes(spacing) {
+        found.add(&search, &start);
+    }
+    // Morse check: non-degenerate isolated critical points alone must sum their indices to the
+    // Euler characteristic of the sphere, χ = 2 (curves contribute 0). Otherwise something was
+    // missed: search again on a grid four times finer.
+    if found.euler_characteristic() != Some(2) && !found.is_empty() {
+        let fine = fibonacci_sphere(4 * opts.starts);
+        for start in &fine {
+            found.add(&search, start);
         }
-        if isolated.iter().any(|q| same_point(q, &loc))
-            || curves.iter().any(|c| c.contains(&loc))
-            || planar.iter().any(|q| same_level(q, &loc))
-        {
-            continue;
-        }
-        let eigs = sym2_eigen(&loc.hess);
-        let zero = |k: f64| k.abs() <= ZERO_EIGENVALUE_TOL * loc.scale;
-        if zero(eigs.values[0]) && zero(eigs.values[1]) {
-            // The whole neighbourhood is critical (e.g. U_r constant): one representative per
-            // level.
-            planar.push(loc);
-        } else if zero(eigs.values[0]) || zero(eigs.values[1]) {
-            match search.trace(&loc) {
-                Some(curve) => curves.push(curve),
-                None => isolated.push(loc),
-            }
-        } else {
-            isolated.push(loc);
+        for start in found.probes(0.5 * spacing) {
+            found.add(&search, &start);
         }
     }
+    let Found {
+        isolated,
+        curves,
+        planar,
+        best_residual,
+    } = found;
     if isolated.is_empty() && curves.is_empty() && planar.is_empty() {
         return Err(RouthError::NoConvergence {
             what: "steady_motions (Newton on the sphere from every start)",
@@ -628,20 +626,159 @@ fn same_point(a: &Local, b: &Local) -> bool {
             && same_level(a, b))
 }
 
+/// The critical points found so far by [`steady_motions_with`].
+struct Found {
+    isolated: Vec<Local>,
+    curves: Vec<Curve>,
+    planar: Vec<Local>,
+    best_residual: f64,
+}
+
+impl Default for Found {
+    fn default() -> Self {
+        Found {
+            isolated: Vec::new(),
+            curves: Vec::new(),
+            planar: Vec::new(),
+            best_residual: f64::INFINITY,
+        }
+    }
+}
+
+impl Found {
+    fn is_empty(&self) -> bool {
+        self.isolated.is_empty() && self.curves.is_empty() && self.planar.is_empty()
+    }
+
+    /// Runs the Newton iteration from `start` and records a new critical point, if any.
+    fn add<M: Routhian>(&mut self, search: &Search<'_, M>, start: &Vector3<f64>) {
+        let Some((loc, converged)) = search.refine(start) else {
+            return;
+        };
+        self.best_residual = self
+            .best_residual
+            .min(loc.grad.norm() / search.tol_scale(&loc));
+        if !converged
+            || self.isolated.iter().any(|q| same_point(q, &loc))
+            || self.curves.iter().any(|c| c.contains(&loc))
+            || self.planar.iter().any(|q| same_level(q, &loc))
+        {
+            return;
+        }
+        let eigs = sym2_eigen(&loc.hess);
+        let zero = |k: f64| k.abs() <= ZERO_EIGENVALUE_TOL * loc.scale;
+        if zero(eigs.values[0]) && zero(eigs.values[1]) {
+            // The whole neighbourhood is critical (e.g. U_r constant): one representative per
+            // level.
+            self.planar.push(loc);
+        } else if zero(eigs.values[0]) || zero(eigs.values[1]) {
+            match search.trace(&loc) {
+                Some(curve) => self.curves.push(curve),
+                None => self.isolated.push(loc),
+            }
+        } else {
+            self.isolated.push(loc);
+        }
+    }
+
+    /// Starting points on rings of radii `{1/2, 1/5, 1/20} · spacing` around every isolated
+    /// point and around up to 16 vertices of every curve.
+    fn probes(&self, spacing: f64) -> Vec<Vector3<f64>> {
+        let mut centres: Vec<Vector3<f64>> = self.isolated.iter().map(|l| l.gamma).collect();
+        let mut out = Vec::new();
+        for c in &self.curves {
+            let stride = c.vertices.len().div_ceil(16).max(1);
+            centres.extend(c.vertices.iter().step_by(stride).copied());
+            // The axis of a closed curve: for a circle of latitude of a symmetric body it is the
+            // pole, a critical point by symmetry that a small circle around it hides from the
+            // grid. The normal of the plane of the vertices is exact for a circle however
+            // unevenly its vertices are spread.
+            if c.closed {
+                out.extend(curve_axis(&c.vertices).into_iter().flat_map(|n| [n, -n]));
+            }
+        }
+        for c in centres {
+            let basis = tangent_basis(&c);
+            for (ring, r) in [0.5, 0.2, 0.05].into_iter().enumerate() {
+                for k in 0..6 {
+                    let angle = std::f64::consts::PI * (k as f64 / 3.0 + ring as f64 / 9.0);
+                    let t = basis * Vector2::new(angle.cos(), angle.sin());
+                    out.push((c * (r * spacing).cos() + t * (r * spacing).sin()).normalize());
+                }
+            }
+        }
+        out
+    }
+
+    /// `#minima − #saddles + #maxima` over the isolated critical points, or `None` when one of
+    /// them is degenerate or a two-dimensional critical set was found (indices unknown).
+    fn euler_characteristic(&self) -> Option<i64> {
+        if !self.planar.is_empty() {
+            return None;
+        }
+        let mut chi = 0;
+        for loc in &self.isolated {
+            let e = sym2_eigen(&loc.hess).values;
+            let tol = ZERO_EIGENVALUE_TOL * loc.scale;
+            if e.iter().any(|k| k.abs() <= tol) {
+                return None;
+            }
+            chi += if (e[0] < 0.0) != (e[1] < 0.0) { -1 } else { 1 };
+        }
+        Some(chi)
+    }
+}
+
+/// The unit normal of the least-squares plane through `vertices` (the axis of a circle on the
+/// sphere), if there are at least three.
+fn curve_axis(vertices: &[Vector3<f64>]) -> Option<Vector3<f64>> {
+    if vertices.len() < 3 {
+        return None;
+    }
+    let mean: Vector3<f64> = vertices.iter().sum::<Vector3<f64>>() / vertices.len() as f64;
+    let cov: Matrix3<f64> = vertices
+        .iter()
+        .map(|v| (v - mean) * (v - mean).transpose())
+        .sum();
+    let eig = SymmetricEigen::try_new(cov, f64::EPSILON, 1000)?;
+    let k = eig.eigenvalues.imin();
+    let n = eig.eigenvectors.column(k).into_owned();
+    (n.iter().all(|x| x.is_finite()) && n.norm() > 0.0).then(|| n.normalize())
+}
+
 /// A traced curve of non-isolated critical points.
 struct Curve {
     start: Local,
+    /// Vertices in order along the curve (the trace may have gone both ways from the start: the
+    /// vertices of the second direction then follow those of the first, reversed at the seam).
     vertices: Vec<Vector3<f64>>,
+    closed: bool,
     step: f64,
 }
 
 impl Curve {
+    /// Whether `loc` lies on this curve: degenerate, same level of `U_r` and within `h/2` of the polyline
+    /// through the traced vertices (closed when the trace came back to its start).
     fn contains(&self, loc: &Local) -> bool {
-        same_level(&self.start, loc)
-            && self
-                .vertices
-                .iter()
-                .any(|v| (v - loc.gamma).norm() <= 0.6 * self.step)
+        // A point of a curve of critical points has a zero eigenvalue; a non-degenerate point
+        // close to a small curve (the pole inside a small circle) is not on it.
+        if !same_level(&self.start, loc) || !is_degenerate(loc) {
+            return false;
+        }
+        let n = self.vertices.len();
+        let segments = if self.closed { n } else { n.saturating_sub(1) };
+        let near = |a: &Vector3<f64>, b: &Vector3<f64>| {
+            let ab = b - a;
+            let len2 = ab.norm_squared();
+            let t = if len2 > 0.0 {
+                ((loc.gamma - a).dot(&ab) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (a + t * ab - loc.gamma).norm() <= 0.5 * self.step
+        };
+        (n == 1 && near(&self.vertices[0], &self.vertices[0]))
+            || (0..segments).any(|i| near(&self.vertices[i], &self.vertices[(i + 1) % n]))
     }
 }
 
@@ -728,9 +865,14 @@ impl<M: Routhian> Search<'_, M> {
     /// `None` when there is no such curve (a degenerate isolated point).
     fn trace(&self, start: &Local) -> Option<Curve> {
         let t0 = start.null_direction();
-        for h in [TRACE_STEP, 0.1 * TRACE_STEP] {
-            let mut vertices = vec![start.gamma];
-            let mut found = false;
+        let steps = [
+            TRACE_STEP,
+            TRACE_STEP / 4.0,
+            TRACE_STEP / 16.0,
+            TRACE_STEP / 64.0,
+        ];
+        for (level, h) in steps.into_iter().enumerate() {
+            let mut branches: Vec<Vec<Vector3<f64>>> = Vec::new();
             let mut closed = false;
             for sign in [1.0, -1.0] {
                 if closed {
@@ -739,8 +881,7 @@ impl<M: Routhian> Search<'_, M> {
                 let Some(first) = self.continue_from(start, &(sign * t0), h, start) else {
                     continue;
                 };
-                found = true;
-                vertices.push(first.gamma);
+                let mut branch = vec![first.gamma];
                 let mut prev = start.gamma;
                 let mut cur = first;
                 for step in 0..MAX_TRACE_STEPS {
@@ -751,7 +892,7 @@ impl<M: Routhian> Search<'_, M> {
                     let Some(next) = self.continue_from(&cur, &t, h, start) else {
                         break;
                     };
-                    vertices.push(next.gamma);
+                    branch.push(next.gamma);
                     if step >= 2 && (next.gamma - start.gamma).norm() < 1.5 * h {
                         closed = true;
                         break;
@@ -759,14 +900,30 @@ impl<M: Routhian> Search<'_, M> {
                     prev = cur.gamma;
                     cur = next;
                 }
+                branches.push(branch);
             }
-            if found {
-                return Some(Curve {
-                    start: start.clone(),
-                    vertices,
-                    step: h,
-                });
+            if branches.is_empty() {
+                continue;
             }
+            // A closed curve resolved by too few vertices (small compared with h): trace it again
+            // with a shorter step.
+            let count: usize = branches.iter().map(Vec::len).sum();
+            if closed && count < MIN_CLOSED_VERTICES && level + 1 < steps.len() {
+                continue;
+            }
+            // Order the vertices along the curve: second branch reversed, start, first branch.
+            let mut vertices: Vec<Vector3<f64>> = Vec::new();
+            if let Some(back) = branches.get(1) {
+                vertices.extend(back.iter().rev().copied());
+            }
+            vertices.push(start.gamma);
+            vertices.extend(branches[0].iter().copied());
+            return Some(Curve {
+                start: start.clone(),
+                vertices,
+                closed,
+                step: h,
+            });
         }
         None
     }

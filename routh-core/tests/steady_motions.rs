@@ -95,11 +95,14 @@ impl Routhian for HeavyTop {
 // ---------------------------------------------------------------------------------------------
 // Helpers.
 
-/// The interior roots in (−1, 1) of a function of γ₃, by sign changes on a fine grid and
-/// bisection.
+/// The interior roots in (−1, 1) of a function of γ₃, by sign changes on a fine grid (uniform in
+/// θ = arccos γ₃, so that roots near the poles are resolved) and bisection.
 fn roots_in_z(f: impl Fn(f64) -> f64) -> Vec<f64> {
     let n = 20_000;
-    let zs: Vec<f64> = (1..n).map(|i| -1.0 + 2.0 * i as f64 / n as f64).collect();
+    let zs: Vec<f64> = (1..n)
+        .rev()
+        .map(|i| (std::f64::consts::PI * i as f64 / n as f64).cos())
+        .collect();
     let mut out = Vec::new();
     for w in zs.windows(2) {
         let (mut a, mut b) = (w[0], w[1]);
@@ -494,4 +497,66 @@ fn zz_stress_sym() {
         }
     }
     eprintln!("bad {bad} / {total} in {:?}", t0.elapsed());
+}
+
+#[test]
+#[ignore]
+fn zz_debug() {
+    let (a1, c, mgl, p) = (2.151, 1.570, 0.218, 2.5145);
+    let top = HeavyTop::lagrange(a1, c, mgl);
+    let m = steady_motions(&top, p).unwrap();
+    for s in &m { eprintln!("{s}"); }
+}
+
+#[test]
+#[ignore]
+fn zz_stress_bif() {
+    let mut rng = ChaCha8Rng::seed_from_u64(778);
+    let mut bad = 0;
+    let mut total = 0;
+    let t0 = std::time::Instant::now();
+    for _ in 0..10 {
+        let (a1, c, mgl) = (rng.gen_range(0.5..3.0), rng.gen_range(0.5..3.0), rng.gen_range(0.2..3.0));
+        let top = HeavyTop::lagrange(a1, c, mgl);
+        let thr = mgl * c * c / (c - a1).abs();
+        for d in [1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 1e-4, 1e-6, -1e-1, -1e-2, -1e-3, -1e-4, -1e-6] {
+            let p = (thr * (1.0 + d)).sqrt();
+            total += 1;
+            let m = steady_motions(&top, p).unwrap();
+            let du = |z: f64| { let n = c + (a1 - c) * (1.0 - z * z); p * p * (a1 - c) * z / (n * n) + mgl };
+            let exp = roots_in_z(du);
+            let circ: Vec<f64> = m.iter().filter(|s| !s.isolated).map(|s| s.gamma.z).collect();
+            let iso: Vec<f64> = m.iter().filter(|s| s.isolated).map(|s| s.gamma.z).collect();
+            let verd: Vec<_> = m.iter().map(|s| classify(&top, s, p).unwrap().verdict).collect();
+            if circ.len() != exp.len() || iso.len() != 2 {
+                bad += 1;
+                eprintln!("A={a1:.3} C={c:.3} mgl={mgl:.3} d={d:e}: circles {circ:?} iso {iso:?} expected {exp:?} {verd:?}");
+            }
+        }
+    }
+    eprintln!("bad {bad} / {total} in {:?}", t0.elapsed());
+}
+
+#[test]
+#[ignore]
+fn zz_stress_dense() {
+    let mut rng = ChaCha8Rng::seed_from_u64(31337);
+    let mut bad = 0;
+    let mut total = 0;
+    let dense = SearchOptions { starts: 4000, ..SearchOptions::default() };
+    for _ in 0..15 {
+        let gy = Gyrostat::random(&mut rng);
+        let el = Ellipsoid::random(&mut rng);
+        for _ in 0..4 {
+            let p = rng.gen_range(0.0..40.0);
+            total += 2;
+            let a = steady_motions(&gy, p).unwrap().len();
+            let b = steady_motions_with(&gy, p, &dense).unwrap().len();
+            if a != b { bad += 1; eprintln!("gyro p={p}: {a} vs dense {b}"); }
+            let a = steady_motions(&el, p).unwrap().len();
+            let b = steady_motions_with(&el, p, &dense).unwrap().len();
+            if a != b { bad += 1; eprintln!("ell p={p}: {a} vs dense {b}"); }
+        }
+    }
+    eprintln!("bad {bad} / {total}");
 }

@@ -457,11 +457,8 @@ impl Graph {
                 let s = self.func(Func::Sign, x);
                 return self.neg(s);
             }
-            (Func::Exp, Node::Func(Func::Ln, x)) | (Func::Ln, Node::Func(Func::Exp, x)) => {
-                if f == Func::Ln {
-                    return x;
-                }
-            }
+            // ln(exp x) = x (but exp(ln x) ≠ x for x < 0).
+            (Func::Ln, Node::Func(Func::Exp, x)) => return x,
             (Func::Sqrt, Node::Powi(x, 2)) => return self.func(Func::Abs, x),
             _ => {}
         }

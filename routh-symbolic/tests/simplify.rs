@@ -70,7 +70,16 @@ fn constant_folding() {
     let e = c(&mut g, 1.5);
     let pf = g.powf(four, e);
     assert_eq!(g.as_const(pf), Some(8.0));
-    for f in [Func::Sqrt, Func::Sin, Func::Cos, Func::Tan, Func::Exp, Func::Ln, Func::Abs, Func::Sign] {
+    for f in [
+        Func::Sqrt,
+        Func::Sin,
+        Func::Cos,
+        Func::Tan,
+        Func::Exp,
+        Func::Ln,
+        Func::Abs,
+        Func::Sign,
+    ] {
         let r = g.func(f, three);
         assert_eq!(g.as_const(r), Some(f.apply(3.0)), "{f:?}");
     }
@@ -87,7 +96,9 @@ fn constant_folding() {
     // −0.0 is normalised.
     assert_eq!(g.constant(-0.0), g.zero());
     // A graph of constants only has no non-leaf node to schedule.
-    assert!(schedule(&g, &[s]).iter().all(|&id| g.as_const(id).is_none()));
+    assert!(schedule(&g, &[s])
+        .iter()
+        .all(|&id| g.as_const(id).is_none()));
 }
 
 #[test]
@@ -120,7 +131,12 @@ fn difference_of_equal_expressions_is_zero() {
     let (mut g, x, y, _) = xyz();
     for e in samples(&mut g, x, y) {
         let d = g.sub(e, e);
-        assert!(g.is_const(d, 0.0), "{} − itself = {}", to_infix(&g, e), to_infix(&g, d));
+        assert!(
+            g.is_const(d, 0.0),
+            "{} − itself = {}",
+            to_infix(&g, e),
+            to_infix(&g, d)
+        );
         let ne = g.neg(e);
         let s = g.add(ne, e);
         assert!(g.is_const(s, 0.0), "−{} + itself", to_infix(&g, e));
@@ -188,9 +204,19 @@ fn product_with_reciprocal_is_one() {
     for e in samples(&mut g, x, y) {
         let r = g.recip(e);
         let p = g.mul(e, r);
-        assert!(g.is_const(p, 1.0), "{} · 1/itself = {}", to_infix(&g, e), to_infix(&g, p));
+        assert!(
+            g.is_const(p, 1.0),
+            "{} · 1/itself = {}",
+            to_infix(&g, e),
+            to_infix(&g, p)
+        );
         let q = g.div(e, e);
-        assert!(g.is_const(q, 1.0), "{} / itself = {}", to_infix(&g, e), to_infix(&g, q));
+        assert!(
+            g.is_const(q, 1.0),
+            "{} / itself = {}",
+            to_infix(&g, e),
+            to_infix(&g, q)
+        );
         assert_eq!(g.recip(r), e, "1/(1/{})", to_infix(&g, e));
     }
 }
@@ -204,8 +230,20 @@ fn commutative_operands_are_ordered_canonically() {
     all.push(g.constant(-1.0));
     for &a in &all {
         for &b in &all {
-            assert_eq!(g.add(a, b), g.add(b, a), "{} + {}", to_infix(&g, a), to_infix(&g, b));
-            assert_eq!(g.mul(a, b), g.mul(b, a), "{} · {}", to_infix(&g, a), to_infix(&g, b));
+            assert_eq!(
+                g.add(a, b),
+                g.add(b, a),
+                "{} + {}",
+                to_infix(&g, a),
+                to_infix(&g, b)
+            );
+            assert_eq!(
+                g.mul(a, b),
+                g.mul(b, a),
+                "{} · {}",
+                to_infix(&g, a),
+                to_infix(&g, b)
+            );
         }
     }
     // Constants come first.
@@ -414,7 +452,10 @@ fn substitute_replaces_variables() {
     // Substituting constants folds: x·z with z ↦ 0 is 0; and x ↦ 2 gives 4 + sin(2)·z.
     let xz = g.mul(x, z);
     let zero = g.zero();
-    assert_eq!(g.substitute(&[xz], &HashMap::from([(2u32, zero)])), vec![zero]);
+    assert_eq!(
+        g.substitute(&[xz], &HashMap::from([(2u32, zero)])),
+        vec![zero]
+    );
     let two = g.constant(2.0);
     let r = g.substitute(&[f], &HashMap::from([(0u32, two)]))[0];
     let s2 = g.constant(2f64.sin());
@@ -447,7 +488,9 @@ macro_rules! na_templates {
 }
 
 fn inputs(n: usize) -> Vec<f64> {
-    (0..n).map(|i| ((i as f64 + 1.0) * 0.7361).sin() * 1.7 + 0.1).collect()
+    (0..n)
+        .map(|i| ((i as f64 + 1.0) * 0.7361).sin() * 1.7 + 0.1)
+        .collect()
 }
 
 #[test]
@@ -506,7 +549,14 @@ fn diag_transpose_trace_dot_norm() {
     let dot = shape::dot(&mut g, &v, &w).unwrap();
     let n2 = shape::norm_squared(&mut g, &v).unwrap();
     let n = shape::norm(&mut g, &v).unwrap();
-    let r = g.eval(&[dot.scalar("").unwrap(), n2.scalar("").unwrap(), n.scalar("").unwrap()], &x);
+    let r = g.eval(
+        &[
+            dot.scalar("").unwrap(),
+            n2.scalar("").unwrap(),
+            n.scalar("").unwrap(),
+        ],
+        &x,
+    );
     let dv: f64 = (0..3).map(|i| x[i] * x[3 + i]).sum();
     let nv: f64 = (0..3).map(|i| x[i] * x[i]).sum();
     assert!(close(r[0], dv) && close(r[1], nv) && close(r[2], nv.sqrt()));
@@ -521,8 +571,10 @@ fn diag_transpose_trace_dot_norm() {
 #[test]
 fn matrix_products_match_nalgebra() {
     let mut g = Graph::new();
-    let a: [[Id; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| g.var(format!("a{i}{j}"))));
-    let b: [[Id; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| g.var(format!("b{i}{j}"))));
+    let a: [[Id; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| g.var(format!("a{i}{j}"))));
+    let b: [[Id; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| g.var(format!("b{i}{j}"))));
     let v = vec_vars(&mut g, "v");
     // Make one factor non-trivial: entries sin(a_ij) + a_ij².
     let a2 = Value::Matrix(a).map(&mut g, |g, e| {
@@ -553,7 +605,11 @@ fn matrix_products_match_nalgebra() {
         nv[i] = x[18 + i];
     }
     let (nab, nabt, nav) = (na * nb, na * nb.transpose(), na * nv);
-    let (e_ab, e_abt, e_av) = (eval_value(&g, &ab, &x), eval_value(&g, &abt, &x), eval_value(&g, &av, &x));
+    let (e_ab, e_abt, e_av) = (
+        eval_value(&g, &ab, &x),
+        eval_value(&g, &abt, &x),
+        eval_value(&g, &av, &x),
+    );
     let (e_sum, e_diff) = (eval_value(&g, &a_sum, &x), eval_value(&g, &a_diff, &x));
     for i in 0..3 {
         for j in 0..3 {
@@ -577,7 +633,9 @@ fn shape_mismatches_are_errors_not_panics() {
     let mut g = Graph::new();
     let s = Value::Scalar(g.var("s"));
     let v = Value::Vector(vec_vars(&mut g, "v"));
-    let m = Value::Matrix(std::array::from_fn(|i| std::array::from_fn(|j| g.var(format!("m{i}{j}")))));
+    let m = Value::Matrix(std::array::from_fn(|i| {
+        std::array::from_fn(|j| g.var(format!("m{i}{j}")))
+    }));
     let checks: Vec<(&str, Result<Value, routh_symbolic::ShapeError>)> = vec![
         ("scalar + vector", shape::add(&mut g, &s, &v)),
         ("vector + matrix", shape::add(&mut g, &v, &m)),
@@ -592,18 +650,30 @@ fn shape_mismatches_are_errors_not_panics() {
         ("scalar.norm()", shape::norm(&mut g, &s)),
         ("scalar.norm_squared()", shape::norm_squared(&mut g, &s)),
         ("vector.transpose()", shape::transpose(&mut g, &v)),
-        ("scalar.component_mul(scalar)", shape::component_mul(&mut g, &s, &s)),
-        ("vector.component_mul(matrix)", shape::component_mul(&mut g, &v, &m)),
+        (
+            "scalar.component_mul(scalar)",
+            shape::component_mul(&mut g, &s, &s),
+        ),
+        (
+            "vector.component_mul(matrix)",
+            shape::component_mul(&mut g, &v, &m),
+        ),
         ("vector.trace()", shape::trace(&mut g, &v)),
         ("diag(matrix)", shape::diag(&mut g, &m)),
         ("skew(scalar)", shape::skew(&mut g, &s)),
-        ("sin(vector)", shape::scalar_func(&mut g, "sin", &v, |g, x| g.func(Func::Sin, x))),
+        (
+            "sin(vector)",
+            shape::scalar_func(&mut g, "sin", &v, |g, x| g.func(Func::Sin, x)),
+        ),
         ("scalar[0]", shape::component(&s, 0)),
         ("vector[3]", shape::component(&v, 3)),
         ("vector(0, 0)", shape::entry(&v, 0, 0)),
         ("matrix(3, 0)", shape::entry(&m, 3, 0)),
         ("matrix(0, 7)", shape::entry(&m, 0, 7)),
-        ("grad(vector, x)", shape::grad(&mut g, &v, &v.vector("").unwrap())),
+        (
+            "grad(vector, x)",
+            shape::grad(&mut g, &v, &v.vector("").unwrap()),
+        ),
     ];
     for (what, r) in checks {
         let e = r.expect_err(what);
@@ -642,7 +712,10 @@ fn degree_in_omega() {
         })
     });
     let iw = shape::mul(&mut g, &Value::Matrix(i), &Value::Vector(w)).unwrap();
-    let q = shape::dot(&mut g, &Value::Vector(w), &iw).unwrap().scalar("").unwrap();
+    let q = shape::dot(&mut g, &Value::Vector(w), &iw)
+        .unwrap()
+        .scalar("")
+        .unwrap();
     let h = g.constant(0.5);
     let t = g.mul(h, q);
     assert_eq!(degree(&g, t, &om), Degree::Homogeneous(2));
@@ -713,9 +786,16 @@ fn schedule_puts_children_first_and_shares_subexpressions() {
     let c = g.powi(s, 2);
     let out = [a, b, c];
     let sch = schedule(&g, &out);
-    assert_eq!(sch.iter().filter(|&&id| id == s).count(), 1, "shared sin(x) computed once");
+    assert_eq!(
+        sch.iter().filter(|&&id| id == s).count(),
+        1,
+        "shared sin(x) computed once"
+    );
     assert!(!sch.contains(&unrelated));
-    assert!(sch.windows(2).all(|w| w[0] < w[1]), "increasing ids, no duplicates");
+    assert!(
+        sch.windows(2).all(|w| w[0] < w[1]),
+        "increasing ids, no duplicates"
+    );
     for (k, &id) in sch.iter().enumerate() {
         assert!(!matches!(g.node(id), Node::Const(_) | Node::Var(_)));
         for ch in g.node(id).children() {
@@ -728,7 +808,7 @@ fn schedule_puts_children_first_and_shares_subexpressions() {
         assert!(sch.contains(&o));
     }
     assert_eq!(sch.len(), 5); // sin x, x·y, a, b, c
-    // Evaluating the schedule in order reproduces `eval`.
+                              // Evaluating the schedule in order reproduces `eval`.
     let p = [0.3, -0.8, 1.1];
     let mut val: HashMap<Id, f64> = HashMap::new();
     let get = |val: &HashMap<Id, f64>, id: Id| match g.node(id) {

@@ -43,16 +43,28 @@ impl Ellipsoid {
         mass: f64,
         g: f64,
     ) -> Self {
-        Ellipsoid { inertia, semi_axes, offset, mass, g }
+        Ellipsoid {
+            inertia,
+            semi_axes,
+            offset,
+            mass,
+            g,
+        }
     }
 
     /// A homogeneous solid ellipsoid: `I = m/5 · diag(a₂² + a₃², a₁² + a₃², a₁² + a₂²)`,
     /// `c₀ = 0`.
     pub fn homogeneous(semi_axes: Vector3<f64>, mass: f64, g: f64) -> Self {
         let s = semi_axes.component_mul(&semi_axes);
-        let inertia = Matrix3::from_diagonal(&Vector3::new(s.y + s.z, s.x + s.z, s.x + s.y))
-            * (mass / 5.0);
-        Ellipsoid { inertia, semi_axes, offset: Vector3::zeros(), mass, g }
+        let inertia =
+            Matrix3::from_diagonal(&Vector3::new(s.y + s.z, s.x + s.z, s.x + s.y)) * (mass / 5.0);
+        Ellipsoid {
+            inertia,
+            semi_axes,
+            offset: Vector3::zeros(),
+            mass,
+            g,
+        }
     }
 
     /// A generic model: random SPD inertia (eigenvalues in `[1, 3]`), semi-axes in

@@ -42,7 +42,14 @@ impl Gyrostat {
         mass: f64,
         g: f64,
     ) -> Self {
-        Gyrostat { inertia, rotor, coupling, com, mass, g }
+        Gyrostat {
+            inertia,
+            rotor,
+            coupling,
+            com,
+            mass,
+            g,
+        }
     }
 
     /// A heavy top (`K = B = 0`) with principal moments `inertia_diag` and centre of mass `com`

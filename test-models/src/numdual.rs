@@ -2,7 +2,7 @@
 //! built from them ([`impl_numdual_traits!`](crate::impl_numdual_traits)).
 
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
-use num_dual::{first_derivative, gradient, hessian, Dual64, DualNum, DualSVec64, Dual2SVec64};
+use num_dual::{first_derivative, gradient, hessian, Dual2SVec64, Dual64, DualNum, DualSVec64};
 use routh_core::RouthBundle;
 
 use crate::vec3::{lift, V3};
@@ -23,8 +23,12 @@ pub trait GenericModel {
         p_psi: D,
     ) -> D;
     /// `ψ̇(Ω, γ, p_ψ)` in closed form ((38) generalised to `J(γ)`).
-    fn psi_dot_closed_form(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64)
-        -> f64;
+    fn psi_dot_closed_form(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> f64;
 }
 
 fn stack(a: &Vector3<f64>, b: &Vector3<f64>) -> SVector<f64, 6> {
@@ -53,7 +57,11 @@ pub fn numdual_lagrangian_gradient<M: GenericModel + ?Sized>(
         },
         stack(omega, gamma),
     );
-    (l, g.fixed_rows::<3>(0).into_owned(), g.fixed_rows::<3>(3).into_owned())
+    (
+        l,
+        g.fixed_rows::<3>(0).into_owned(),
+        g.fixed_rows::<3>(3).into_owned(),
+    )
 }
 
 /// `(L, ∇L, ∇²L)` over `(ω, γ)` (in this order) by one second-order num-dual pass.
@@ -85,7 +93,11 @@ pub fn numdual_routhian_gradient<M: GenericModel + ?Sized>(
         },
         stack(big_omega, gamma),
     );
-    (r, g.fixed_rows::<3>(0).into_owned(), g.fixed_rows::<3>(3).into_owned())
+    (
+        r,
+        g.fixed_rows::<3>(0).into_owned(),
+        g.fixed_rows::<3>(3).into_owned(),
+    )
 }
 
 /// `(R, ∇R, ∇²R)` over `(Ω, γ)` (in this order) at fixed `p_ψ`, by one second-order pass.

@@ -110,9 +110,24 @@ fn check_model<M: Routhian + GenericModel>(model: &M, rng: &mut ChaCha8Rng) {
 
     // The bundle agrees with the individual methods.
     assert_close("bundle R", b.routhian, model.routhian(&w, &g, p), 1e-14);
-    assert_vec_close("bundle dR/dΩ", &b.dr_domega, &model.dr_domega(&w, &g, p), 1e-14);
-    assert_vec_close("bundle dR/dγ", &b.dr_dgamma, &model.dr_dgamma(&w, &g, p), 1e-14);
-    assert_vec_close("bundle H", &b.d2r_dgamma2, &model.d2r_dgamma2(&w, &g, p), 1e-14);
+    assert_vec_close(
+        "bundle dR/dΩ",
+        &b.dr_domega,
+        &model.dr_domega(&w, &g, p),
+        1e-14,
+    );
+    assert_vec_close(
+        "bundle dR/dγ",
+        &b.dr_dgamma,
+        &model.dr_dgamma(&w, &g, p),
+        1e-14,
+    );
+    assert_vec_close(
+        "bundle H",
+        &b.d2r_dgamma2,
+        &model.d2r_dgamma2(&w, &g, p),
+        1e-14,
+    );
     assert_eq!(b.psi_dot, model.psi_dot(&w, &g, p));
     assert_eq!(b.dr_dp, model.dr_dp(&w, &g, p));
 
@@ -123,7 +138,12 @@ fn check_model<M: Routhian + GenericModel>(model: &M, rng: &mut ChaCha8Rng) {
     let omega = w + g * b.psi_dot;
     assert_close("(12)", model.cyclic_momentum(&omega, &g), p, 1e-12);
     // (14): R = L(Ω + ψ̇γ, γ) − ψ̇ p.
-    assert_close("(14)", b.routhian, model.lagrangian(&omega, &g) - b.psi_dot * p, 1e-12);
+    assert_close(
+        "(14)",
+        b.routhian,
+        model.lagrangian(&omega, &g) - b.psi_dot * p,
+        1e-12,
+    );
     // (18): ∂R/∂Ω = ∂L/∂ω; (19): ∂R/∂γ = ∂L/∂γ + ψ̇ ∂R/∂Ω.
     assert_vec_close("(18)", &b.dr_domega, &model.dl_domega(&omega, &g), 1e-12);
     let rhs19 = model.dl_dgamma(&omega, &g) + b.dr_domega * b.psi_dot;
@@ -138,7 +158,12 @@ fn check_model<M: Routhian + GenericModel>(model: &M, rng: &mut ChaCha8Rng) {
     // E4: ∂²R/∂Ω² γ = 0 and R(Ω + sγ) = R(Ω) + s p.
     assert_vec_close("E4 kernel", &(b.d2r_domega2 * g), &Vector3::zeros(), 1e-12);
     let s = 0.37;
-    assert_close("E4 gauge", model.routhian(&(w + g * s), &g, p), b.routhian + s * p, 1e-12);
+    assert_close(
+        "E4 gauge",
+        model.routhian(&(w + g * s), &g, p),
+        b.routhian + s * p,
+        1e-12,
+    );
 
     // The trait's default ψ̇ (from J(γ) and ∂L/∂ω) agrees with the closed form.
     let q = model.dl_domega(&w, &g).dot(&g);
@@ -177,12 +202,22 @@ fn gyrostat_closed_forms() {
     let dl = model.inertia * w + model.rotor + model.coupling * g;
     assert_vec_close("dL/dω", &model.dl_domega(&w, &g), &dl, 1e-13);
     assert_vec_close("J", &model.d2l_domega2(&g), &model.inertia, 1e-13);
-    assert_vec_close("B", &model.d2l_domega_dgamma(&w, &g), &model.coupling, 1e-13);
+    assert_vec_close(
+        "B",
+        &model.d2l_domega_dgamma(&w, &g),
+        &model.coupling,
+        1e-13,
+    );
     let dg = model.coupling.transpose() * w - model.com * (model.mass * model.g);
     assert_vec_close("dL/dγ", &model.dl_dgamma(&w, &g), &dg, 1e-13);
     // Lagrange top: amended potential (40) at γ = e₃: p²/(2C) + m g l.
     let lt = Gyrostat::lagrange_top(2.0, 1.0, 3.0);
-    assert_close("(40)", lt.amended_potential(&Vector3::z(), 4.0), 16.0 / 2.0 + 3.0, 1e-14);
+    assert_close(
+        "(40)",
+        lt.amended_potential(&Vector3::z(), 4.0),
+        16.0 / 2.0 + 3.0,
+        1e-14,
+    );
 }
 
 #[test]
@@ -200,7 +235,12 @@ fn ellipsoid_closed_forms() {
     // C₃ = ρ|γ| and n = ργ/|γ|.
     let sphere = Ellipsoid::homogeneous(Vector3::repeat(0.7), 1.0, 9.81);
     assert_close("C3 sphere", sphere.height(&Vector3::z()), 0.7, 1e-15);
-    assert_vec_close("n sphere", &sphere.height_gradient(&g), &(g * (0.7 / g.norm())), 1e-15);
+    assert_vec_close(
+        "n sphere",
+        &sphere.height_gradient(&g),
+        &(g * (0.7 / g.norm())),
+        1e-15,
+    );
     // Resting on the flattest side is the minimum of C₃ (E2): a₃ the smallest semi-axis.
     let flat = Ellipsoid::homogeneous(Vector3::new(1.0, 0.8, 0.3), 1.0, 9.81);
     assert_close("C3 flat", flat.height(&Vector3::z()), 0.3, 1e-15);

@@ -64,8 +64,6 @@ impl<const N: usize> DenseStep<N> {
 
 /// One accepted step as seen by the output callback.
 pub(crate) struct Accepted<'a, const N: usize> {
-    /// Start of the step.
-    pub t_old: f64,
     /// End of the step (the new current time).
     pub t: f64,
     /// State at `t`.
@@ -145,7 +143,11 @@ where
     let sk = y.map(|yi| cfg.atol + cfg.rtol * yi.abs());
     let dnf: f64 = f0.component_div(&sk).norm_squared();
     let dny: f64 = y.component_div(&sk).norm_squared();
-    let mut h = if dnf <= 1e-10 || dny <= 1e-10 { 1e-6 } else { (dny / dnf).sqrt() * 0.01 };
+    let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
+        1e-6
+    } else {
+        (dny / dnf).sqrt() * 0.01
+    };
     h = h.min(cfg.h_max);
     let y1 = y + f0 * h;
     let f1 = f(t + h, &y1)?;
@@ -245,16 +247,27 @@ where
             nonfinite = false;
             k[12] = k13;
             let dense = if cfg.dense {
-                Some(dense_step(&mut f, t, &y, &trial.y_new, h, &mut k, &mut counters)?)
+                Some(dense_step(
+                    &mut f,
+                    t,
+                    &y,
+                    &trial.y_new,
+                    h,
+                    &mut k,
+                    &mut counters,
+                )?)
             } else {
                 None
             };
-            let t_old = t;
             t = t_new;
             y = trial.y_new;
             k[0] = k13;
             counters.accepted += 1;
-            on_step(&Accepted { t_old, t, y: &y, dense: dense.as_ref() })?;
+            on_step(&Accepted {
+                t,
+                y: &y,
+                dense: dense.as_ref(),
+            })?;
             if last {
                 return Ok(counters);
             }
@@ -319,7 +332,14 @@ mod tests {
     use super::*;
 
     fn cfg(rtol: f64, atol: f64, dense: bool) -> Config {
-        Config { rtol, atol, h_max: f64::INFINITY, h_init: None, max_steps: 100_000, dense }
+        Config {
+            rtol,
+            atol,
+            h_max: f64::INFINITY,
+            h_init: None,
+            max_steps: 100_000,
+            dense,
+        }
     }
 
     /// Row sums of A equal the nodes, and the weights satisfy the first order conditions.
@@ -343,42 +363,34 @@ mod tests {
         assert!((BHH.iter().sum::<f64>() - 1.0).abs() < 1e-14);
     }
 
-    /// `n` steps of size `h` of the 8th-order solution, without step-size control.
-    fn fixed_steps<F>(f: &mut F, y0: SVector<f64, 2>, h: f64, n: usize) -> SVector<f64, 2>
-    where
-        F: FnMut(f64, &SVector<f64, 2>) -> Result<SVector<f64, 2>, RouthError>,
-    {
-        let mut y = y0;
-        let mut t = 0.0;
-        let mut k = [SVector::<f64, 2>::zeros(); 16];
-        for _ in 0..n {
-            k[0] = f(t, &y).unwrap();
-            y = trial_step(f, t, &y, h, &mut k, 1.0, 1.0).unwrap().y_new;
-            t += h;
-        }
-        y
-    }
-
-    /// The local error of one step on a nonlinear problem shrinks like h⁹ (order 8):
-    /// y' = 1 + y², y(0) = 0.3, exact y = tan(t + atan 0.3); the second component is t.
+    /// The global error of fixed steps of the 8th-order solution shrinks like h⁸:
+    /// y' = y², y(0) = ½, exact y(1) = 1. (Local errors are no good here: for DOP853 the h⁹
+    /// coefficient is small and the asymptotic regime is below round-off.) High-precision
+    /// reference ratios for n = 2 → 4 → 8 steps: 184.4, 233.8.
     #[test]
-    fn local_order_is_eight() {
-        let mut f = |_t: f64, y: &SVector<f64, 2>| -> Result<SVector<f64, 2>, RouthError> {
-            Ok(SVector::<f64, 2>::new(1.0 + y[0] * y[0] + (y[1] * 3.0).sin(), 1.0))
+    fn global_order_is_eight() {
+        let mut f = |_t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
+            Ok(SVector::<f64, 1>::new(y[0] * y[0]))
         };
-        let y0 = SVector::<f64, 2>::new(0.3, 0.0);
-        let err = |f: &mut _, h: f64| {
-            (fixed_steps(f, y0, h, 1) - fixed_steps(f, y0, h / 64.0, 64)).norm()
+        let mut error = |n: usize| {
+            let h = 1.0 / n as f64;
+            let mut y = SVector::<f64, 1>::new(0.5);
+            let mut k = [SVector::<f64, 1>::zeros(); 16];
+            for i in 0..n {
+                let t = i as f64 * h;
+                k[0] = f(t, &y).unwrap();
+                y = trial_step(&mut f, t, &y, h, &mut k, 1.0, 1.0)
+                    .unwrap()
+                    .y_new;
+            }
+            y[0] - 1.0
         };
-        let mut ratios = vec![];
-        for h in [0.4, 0.2, 0.1] {
-            let (e1, e2) = (err(&mut f, h), err(&mut f, h / 2.0));
-            eprintln!("h {h}: {e1:e} {e2:e} ratio {}", e1 / e2);
-            ratios.push(e1 / e2);
-        }
-        // 2⁹ = 512 asymptotically.
-        let ratio = ratios[2];
-        assert!(ratio > 400.0 && ratio < 650.0, "ratios {ratios:?}");
+        let (e2, e4, e8) = (error(2), error(4), error(8));
+        let (r1, r2) = (e2 / e4, e4 / e8);
+        assert!(
+            (r1 - 184.4).abs() < 1.0 && (r2 - 233.8).abs() < 5.0,
+            "{e2:e} {e4:e} {e8:e}"
+        );
     }
 
     /// Global error on y' = λy scales with the tolerance, and the dense output is accurate.
@@ -392,6 +404,7 @@ mod tests {
         for &tol in &[1e-6, 1e-8, 1e-10, 1e-12] {
             let mut max_err: f64 = 0.0;
             let mut max_dense: f64 = 0.0;
+            let mut t_old = 0.0;
             let c = integrate(
                 f,
                 0.0,
@@ -403,19 +416,24 @@ mod tests {
                     max_err = max_err.max((acc.y - exact).amax());
                     if let Some(d) = acc.dense {
                         for s in [0.13, 0.5, 0.87] {
-                            let tm = acc.t_old + s * (acc.t - acc.t_old);
+                            let tm = t_old + s * (acc.t - t_old);
                             let ex = SVector::<f64, 2>::new(tm.cos(), -tm.sin());
                             max_dense = max_dense.max((d.eval(tm) - ex).amax());
                         }
                         assert!((d.eval(acc.t) - acc.y).amax() < 1e-14);
+                        assert!((d.eval(t_old) - d.cont[0]).amax() < 1e-14);
                     }
+                    t_old = acc.t;
                     Ok(())
                 },
             )
             .unwrap();
             assert!(c.accepted > 0);
             assert!(max_err < 1e3 * tol, "tol {tol:e}: error {max_err:e}");
-            assert!(max_dense < 1e3 * tol, "tol {tol:e}: dense error {max_dense:e}");
+            assert!(
+                max_dense < 1e3 * tol,
+                "tol {tol:e}: dense error {max_dense:e}"
+            );
             errors.push(max_err);
         }
         // Tighter tolerance, smaller error (by ≥ 30 per factor 100).
@@ -431,21 +449,35 @@ mod tests {
         };
         let mut last_t = 0.0;
         let mut n = 0;
-        let c = integrate(f, 0.0, SVector::<f64, 1>::new(1.0), 3.7, &cfg(1e-9, 1e-9, false), |a| {
-            assert!(a.t > a.t_old);
-            last_t = a.t;
-            n += 1;
-            Ok(())
-        })
+        let c = integrate(
+            f,
+            0.0,
+            SVector::<f64, 1>::new(1.0),
+            3.7,
+            &cfg(1e-9, 1e-9, false),
+            |a| {
+                assert!(a.t > last_t);
+                last_t = a.t;
+                n += 1;
+                Ok(())
+            },
+        )
         .unwrap();
         assert_eq!(last_t, 3.7);
         assert_eq!(n, c.accepted);
         // Exact: y = (3/2)e^{−t} + (sin t − cos t)/2.
         let mut y_end = 0.0;
-        integrate(f, 0.0, SVector::<f64, 1>::new(1.0), 3.7, &cfg(1e-11, 1e-11, false), |a| {
-            y_end = a.y[0];
-            Ok(())
-        })
+        integrate(
+            f,
+            0.0,
+            SVector::<f64, 1>::new(1.0),
+            3.7,
+            &cfg(1e-11, 1e-11, false),
+            |a| {
+                y_end = a.y[0];
+                Ok(())
+            },
+        )
         .unwrap();
         let t: f64 = 3.7;
         let exact = 1.5 * (-t).exp() + (t.sin() - t.cos()) / 2.0;
@@ -458,9 +490,14 @@ mod tests {
         let f = |_t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
             Ok(SVector::<f64, 1>::new(y[0] * y[0]))
         };
-        let r = integrate(f, 0.0, SVector::<f64, 1>::new(1.0), 2.0, &cfg(1e-8, 1e-8, false), |_| {
-            Ok(())
-        });
+        let r = integrate(
+            f,
+            0.0,
+            SVector::<f64, 1>::new(1.0),
+            2.0,
+            &cfg(1e-8, 1e-8, false),
+            |_| Ok(()),
+        );
         assert!(
             matches!(
                 r,
@@ -475,8 +512,13 @@ mod tests {
         let g = |_t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
             Ok(SVector::<f64, 1>::new(-y[0]))
         };
-        let r = integrate(g, 0.0, SVector::<f64, 1>::new(1.0), 100.0, &small, |_| Ok(()));
-        assert!(matches!(r, Err(RouthError::TooManySteps { steps: 3, .. })), "{r:?}");
+        let r = integrate(g, 0.0, SVector::<f64, 1>::new(1.0), 100.0, &small, |_| {
+            Ok(())
+        });
+        assert!(
+            matches!(r, Err(RouthError::TooManySteps { steps: 3, .. })),
+            "{r:?}"
+        );
         // Errors from the right-hand side propagate.
         let bad = |t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
             if t > 0.5 {
@@ -485,17 +527,27 @@ mod tests {
                 Ok(*y)
             }
         };
-        let r = integrate(bad, 0.0, SVector::<f64, 1>::new(1.0), 1.0, &cfg(1e-8, 1e-8, false), |_| {
-            Ok(())
-        });
+        let r = integrate(
+            bad,
+            0.0,
+            SVector::<f64, 1>::new(1.0),
+            1.0,
+            &cfg(1e-8, 1e-8, false),
+            |_| Ok(()),
+        );
         assert_eq!(r, Err(RouthError::NonFiniteState { t: -1.0 }));
         // NaN at the start.
         let nan = |_t: f64, _y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RouthError> {
             Ok(SVector::<f64, 1>::new(f64::NAN))
         };
-        let r = integrate(nan, 0.0, SVector::<f64, 1>::new(1.0), 1.0, &cfg(1e-8, 1e-8, false), |_| {
-            Ok(())
-        });
+        let r = integrate(
+            nan,
+            0.0,
+            SVector::<f64, 1>::new(1.0),
+            1.0,
+            &cfg(1e-8, 1e-8, false),
+            |_| Ok(()),
+        );
         assert_eq!(r, Err(RouthError::NonFiniteState { t: 0.0 }));
     }
 }

@@ -28,7 +28,13 @@ pub(crate) const GAMMA: usize = 3;
 /// `b = (1 − cos θ)/θ² = ½ (sin(θ/2)/(θ/2))²`, `θ = |w|` (no cancellation for small θ).
 pub(crate) fn rotate(w: &Vector3<f64>, gamma: &Vector3<f64>) -> Vector3<f64> {
     let theta = w.norm();
-    let sinc = |x: f64| if x.abs() < 1e-4 { 1.0 - x * x / 6.0 } else { x.sin() / x };
+    let sinc = |x: f64| {
+        if x.abs() < 1e-4 {
+            1.0 - x * x / 6.0
+        } else {
+            x.sin() / x
+        }
+    };
     let a = sinc(theta);
     let half = sinc(0.5 * theta);
     let b = 0.5 * half * half;
@@ -92,41 +98,50 @@ mod tests {
             let w = Vector3::new((i as f64).sin(), (1.3 * i as f64).cos(), 0.7) * 0.05;
             x = rotate(&w, &x);
         }
-        assert!((x.norm_squared() - 1.0).abs() < 1e-13, "{:e}", x.norm_squared() - 1.0);
+        assert!(
+            (x.norm_squared() - 1.0).abs() < 1e-13,
+            "{:e}",
+            x.norm_squared() - 1.0
+        );
     }
 
-    /// Order 4 on a coupled nonlinear system: ω' = γ × (a ⊙ γ) (a pendulum-like torque),
-    /// γ' = γ × ω.
+    type Rates = (SVector<f64, 6>, Vector3<f64>);
+
+    /// ω' = γ × (a ⊙ γ) − ω/10 (a pendulum-like torque with damping), γ' = γ × ω.
+    fn field(y: &SVector<f64, 6>) -> Result<Rates, RouthError> {
+        let a = Vector3::new(1.0, 2.0, 3.0);
+        let w = y.fixed_rows::<3>(0).into_owned();
+        let g = y.fixed_rows::<3>(3).into_owned();
+        let wdot = g.cross(&a.component_mul(&g)) - w * 0.1;
+        let gdot = g.cross(&w);
+        let mut d = SVector::<f64, 6>::zeros();
+        d.fixed_rows_mut::<3>(0).copy_from(&wdot);
+        d.fixed_rows_mut::<3>(3).copy_from(&gdot);
+        Ok((d, -w))
+    }
+
+    /// `n` steps over `[0, 2]`.
+    fn run(n: usize) -> SVector<f64, 6> {
+        let h = 2.0 / n as f64;
+        let mut y = SVector::<f64, 6>::from_column_slice(&[0.5, -1.0, 2.0, 0.6, 0.0, 0.8]);
+        for _ in 0..n {
+            y = step(&mut field, &y, h).unwrap();
+        }
+        y
+    }
+
+    /// Order 4 on a coupled nonlinear system.
     #[test]
     fn order_four() {
-        let a = Vector3::new(1.0, 2.0, 3.0);
-        let mut field = |y: &SVector<f64, 6>| -> Result<(SVector<f64, 6>, Vector3<f64>), RouthError> {
-            let w = y.fixed_rows::<3>(0).into_owned();
-            let g = y.fixed_rows::<3>(3).into_owned();
-            let wdot = g.cross(&a.component_mul(&g)) - w * 0.1;
-            let gdot = g.cross(&w);
-            let mut d = SVector::<f64, 6>::zeros();
-            d.fixed_rows_mut::<3>(0).copy_from(&wdot);
-            d.fixed_rows_mut::<3>(3).copy_from(&gdot);
-            Ok((d, -w))
-        };
-        let y0 = SVector::<f64, 6>::from_column_slice(&[0.5, -1.0, 2.0, 0.6, 0.0, 0.8]);
-        let run = |field: &mut dyn FnMut(&SVector<f64, 6>) -> Result<(SVector<f64, 6>, Vector3<f64>), RouthError>,
-                   n: usize| {
-            let h = 2.0 / n as f64;
-            let mut y = y0;
-            let mut f = |y: &SVector<f64, 6>| field(y);
-            for _ in 0..n {
-                y = step(&mut f, &y, h).unwrap();
-            }
-            y
-        };
-        let reference = run(&mut field, 4096);
-        let e1 = (run(&mut field, 64) - reference).norm();
-        let e2 = (run(&mut field, 128) - reference).norm();
+        let reference = run(4096);
+        let e1 = (run(64) - reference).norm();
+        let e2 = (run(128) - reference).norm();
         let ratio = e1 / e2;
-        assert!(ratio > 13.0 && ratio < 19.0, "ratio {ratio}, e1 {e1:e}, e2 {e2:e}");
-        let g = run(&mut field, 64).fixed_rows::<3>(3).into_owned();
+        assert!(
+            ratio > 13.0 && ratio < 19.0,
+            "ratio {ratio}, e1 {e1:e}, e2 {e2:e}"
+        );
+        let g = run(64).fixed_rows::<3>(3).into_owned();
         assert!((g.norm_squared() - 1.0).abs() < 1e-14);
     }
 }
