@@ -114,7 +114,24 @@ pub fn reduce(m: &mut Lowered) -> Outputs {
     let d2l_domega_dgamma = jacobian(g, &dl_domega, &gm);
     let e1 = dot(g, &w, &dl_domega);
     let energy = g.sub(e1, lagrangian);
-    let cyclic_momentum = dot(g, &dl_domega, &gm);
+    // (9) as the directional derivative d/ds L(ω + sγ, γ) at s = 0 rather than (∂L/∂ω, γ):
+    // the same number, but terms such as (n·(γ × γ)) vanish by hash-consing instead of surviving
+    // as sums that cancel only numerically (ERRATA E6, (n × γ) ⊥ γ).
+    let s_dir = g.var("s");
+    let s_var = g.as_var(s_dir).unwrap_or(u32::MAX);
+    let along: HashMap<u32, Id> = w_vars
+        .iter()
+        .zip(w)
+        .zip(gm)
+        .map(|((&v, wi), gi)| {
+            let t = g.mul(s_dir, gi);
+            (v, g.add(wi, t))
+        })
+        .collect();
+    let l_along = subst_vec(g, &[lagrangian], &along)[0];
+    let dl_ds = g.diff(l_along, s_dir).unwrap_or(l_along);
+    let s_zero: HashMap<u32, Id> = [(s_var, zero)].into_iter().collect();
+    let cyclic_momentum = subst_vec(g, &[dl_ds], &s_zero)[0];
 
     // (12)/(38) with J(γ): ψ̇ = (p_ψ − (∂L/∂ω(Ω, γ), γ)) / (γᵀJγ), and γᵀJγ = 2 T₂(γ, γ).
     let on_gamma: HashMap<u32, Id> = w_vars.iter().zip(gm).map(|(&v, x)| (v, x)).collect();
@@ -128,29 +145,50 @@ pub fn reduce(m: &mut Lowered) -> Outputs {
     let hs = g.mul(half, slack);
     let corr = g.mul(psi_dot, hs);
     let routhian = g.sub(lagrangian, corr);
-    // (18): ∂R/∂Ω = ∂L/∂ω at ω = Ω + ψ̇γ; (19): ∂R/∂γ = ∂L/∂γ(Ω + ψ̇γ, γ) + ψ̇ ∂R/∂Ω.
-    let full_omega: HashMap<u32, Id> = w_vars
-        .iter()
-        .zip(gm)
-        .zip(w)
-        .map(|((&v, gi), wi)| {
-            let t = g.mul(psi_dot, gi);
-            (v, g.add(wi, t))
-        })
-        .collect();
-    let mut firsts = dl_domega.to_vec();
-    firsts.extend(dl_dgamma);
-    let at_full = subst_vec(g, &firsts, &full_omega);
-    let dr_domega: V3 = [at_full[0], at_full[1], at_full[2]];
-    let dr_dgamma: V3 = std::array::from_fn(|i| {
-        let t = g.mul(psi_dot, dr_domega[i]);
-        g.add(at_full[3 + i], t)
-    });
+    // The derivatives go through (10) and (36): with ψ̇ as an independent slot,
+    // 𝒜(Ω, γ, ψ̇) = L(Ω + ψ̇γ, γ) = L(Ω, γ) + ψ̇ q(Ω, γ) + ½ψ̇² D(γ), where q = (∂L/∂ω(Ω), γ) and
+    // D = γᵀJγ (L is quadratic in ω, so the expansion is exact). Because ∂𝒜/∂ψ̇ = p_ψ on the
+    // level set (12), the first derivatives of R are those of 𝒜 ((18)–(19)), and the Hessian of R
+    // is the Schur complement R_xy = 𝒜_xy − 𝒜_xψ̇ 𝒜_ψ̇y / D (differentiate (12) implicitly).
+    // Each piece stays as compact as L itself; ψ̇ is bound to (38) at the end.
+    let psi = g.var("ψ̇");
+    let psi_var = g.as_var(psi).unwrap_or(u32::MAX);
+    let psi2 = g.powi(psi, 2);
+    let hd = g.mul(half, vertical_inertia);
+    let quad = g.mul(psi2, hd);
+    let lin = g.mul(psi, cyclic_momentum);
+    let a1 = g.add(lagrangian, lin);
+    let big_a = g.add(a1, quad);
+    let a_w = grad(g, big_a, &w);
+    let a_g = grad(g, big_a, &gm);
+    let a_wg: Vec<Id> = a_w.iter().chain(a_g.iter()).copied().collect();
+    // 𝒜_xψ̇ for x = (Ω, γ), and 𝒜_xψ̇ / D.
+    let k: Vec<Id> = a_wg.iter().map(|&f| g.diff(f, psi).unwrap_or(f)).collect();
+    let r_d = g.recip(vertical_inertia);
+    let kd: Vec<Id> = k.iter().map(|&x| g.mul(x, r_d)).collect();
+    let vars: Vec<Id> = w.iter().chain(gm.iter()).copied().collect();
+    let mut hess = [[zero; 6]; 6];
+    for i in 0..6 {
+        for j in i..6 {
+            let d = g.diff(a_wg[i], vars[j]).unwrap_or(zero);
+            let c = g.mul(kd[i], k[j]);
+            let h = g.sub(d, c);
+            hess[i][j] = h;
+            hess[j][i] = h;
+        }
+    }
+    let mut pre: Vec<Id> = a_wg.clone();
+    pre.extend(hess.iter().flatten());
+    let bind: HashMap<u32, Id> = [(psi_var, psi_dot)].into_iter().collect();
+    let post = subst_vec(g, &pre, &bind);
+    let dr_domega: V3 = [post[0], post[1], post[2]];
+    let dr_dgamma: V3 = [post[3], post[4], post[5]];
+    let h = |i: usize, j: usize| post[6 + 6 * i + j];
+    let d2r_domega2: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(i, j)));
+    let d2r_domega_dgamma: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(i, 3 + j)));
+    let d2r_dgamma2: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(3 + i, 3 + j)));
     // (15)
     let dr_dp = g.neg(psi_dot);
-    let d2r_domega2 = sym_jacobian(g, &dr_domega, &w);
-    let d2r_domega_dgamma = jacobian(g, &dr_domega, &gm);
-    let d2r_dgamma2 = sym_jacobian(g, &dr_dgamma, &gm);
 
     // (34) and section 5 at Ω = 0.
     let mut rest: Vec<Id> = vec![routhian];

@@ -21,7 +21,9 @@ pub use sim::{
     full_vector_field, reduced_vector_field, simulate_full, simulate_reduced, Method, Output,
     ReducedTrajectory, SimOptions, SimStats, Trajectory, SIM_UNIT_GAMMA_TOL,
 };
-pub use stability::{classify, f2_coefficients, Stability, StabilityReport, DOUBLE_ROOT_TOL, UNIT_GAMMA_TOL};
+pub use stability::{
+    classify, f2_coefficients, Stability, StabilityReport, DOUBLE_ROOT_TOL, UNIT_GAMMA_TOL,
+};
 pub use steady::{
     steady_motion_near, steady_motions, steady_motions_with, SearchOptions, SteadyMotion,
     GRADIENT_TOL, ZERO_EIGENVALUE_TOL,

@@ -1,42 +1,7 @@
 //! Stability of a steady motion: sufficient conditions (62)–(63), the degree of instability and
 //! gyroscopic stabilisation (64), with the corrections of ERRATA E4, E5 and E8.
 //!
-//! # Method
-//!
-//! Let `P` be a 3×2 orthonormal basis of the tangent plane γ^⊥ (63).
-//! 1. The restricted second variation of the amended potential is the 2×2 form
-//!    `K = Pᵀ(μE − ∂²R/∂γ²)P` with `μ = (∂R/∂γ, γ)` at `Ω = 0` (62)–(63). Its eigenvalues are
-//!    [`StabilityReport::restricted_hessian_eigenvalues`]; the number of negative ones is the
-//!    degree of instability (section 5).
-//! 2. The characteristic polynomial of the linearised reduced system (65) on the tangent plane is
-//!    `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` with `A`, `G`, `C` of [`Routhian::gyroscopic_system`]
-//!    (ERRATA E5: the printed 3×3 `f(λ)` of (64) vanishes identically). With `a = PᵀAP`,
-//!    `c = PᵀCP` symmetric and `PᵀGP = [[0, g], [−g, 0]]`, it is the even quartic
-//!    `f₂(λ) = c₄λ⁴ + c₂λ² + c₀`, `c₄ = det a`, `c₂ = a₁₁c₂₂ + a₂₂c₁₁ − 2a₁₂c₁₂ + 4g²`,
-//!    `c₀ = det c`, solved exactly as a quadratic in `s = λ²` and then `λ = ±√s` (complex square
-//!    root). `c = PᵀCP` is `K` up to a rotation of the plane by a right angle (ERRATA E6), so
-//!    `c₀ = det K`.
-//!
-//! # Verdict
-//!
-//! - [`Stability::Degenerate`] when an eigenvalue of `K` is zero within
-//!   [`ZERO_EIGENVALUE_TOL`](crate::ZERO_EIGENVALUE_TOL) times the local scale
-//!   `s = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (ERRATA E8: the parity argument then says nothing; circles of
-//!   steady motions of a symmetric body are always in this case). The scale bounds the terms
-//!   whose difference forms `K` (γ is dimensionless, so all of them are energies); round-off in
-//!   `K` is a few `ε·s`.
-//! - Otherwise, with `d` the degree of instability: `d = 0` ⇒ [`Stability::SecularlyStable`]
-//!   (section 4); `d = 1` ⇒ [`Stability::Unstable`] (odd degree, section 5); `d = 2` ⇒
-//!   [`Stability::GyroscopicallyStabilized`] when the quadratic `c₄s² + c₂s + c₀` has two distinct
-//!   real negative roots (all four roots of `f₂` simple and on the imaginary axis: linear
-//!   stability), [`Stability::Unstable`] when a root of `f₂` leaves the imaginary axis.
-//! - The boundary of gyroscopic stabilisation, where the discriminant `c₂² − 4c₄c₀` vanishes
-//!   within [`DOUBLE_ROOT_TOL`] times `c₂² + 4|c₄c₀|` (e.g. the sleeping top at exactly
-//!   `p_ψ² = 4A₁mgl`, Maievskii): the roots are snapped to the double pair `±i√(−s)`,
-//!   `s = −c₂/(2c₄)`. Two modes of opposite Krein signature collide there and the linearisation
-//!   generically has a Jordan block (secular growth `t·e^{iωt}`), so neither linear stability nor
-//!   instability follows: with `d = 2` and `s < 0` the verdict is [`Stability::Degenerate`]
-//!   (inconclusive), with `s > 0` it is [`Stability::Unstable`] (real roots).
+//! The method, the verdict rules and their tolerances are documented on [`classify`].
 
 use std::fmt;
 
@@ -122,10 +87,46 @@ impl fmt::Display for StabilityReport {
 
 /// Classifies the steady motion `steady` at the cyclic momentum `p_psi` (sections 4–5): the
 /// eigenvalues of the restricted second variation (62)–(63), the degree of instability, the roots
-/// of `f₂` (ERRATA E5) and the verdict (see the module documentation for the rules and their
-/// tolerances). `steady.gamma` must be a critical point of the amended potential, as returned by
+/// of `f₂` (ERRATA E5) and the verdict (rules and tolerances below). `steady.gamma` must be a critical point of the amended potential, as returned by
 /// [`steady_motions`](crate::steady_motions) or built by [`SteadyMotion::at`]; the other fields of
 /// `steady` are not used.
+///
+/// # Method
+///
+/// Let `P` be a 3×2 orthonormal basis of the tangent plane γ^⊥ (63).
+/// 1. The restricted second variation of the amended potential is the 2×2 form
+///    `K = Pᵀ(μE − ∂²R/∂γ²)P` with `μ = (∂R/∂γ, γ)` at `Ω = 0` (62)–(63). Its eigenvalues are
+///    [`StabilityReport::restricted_hessian_eigenvalues`]; the number of negative ones is the
+///    degree of instability (section 5).
+/// 2. The characteristic polynomial of the linearised reduced system (65) on the tangent plane is
+///    `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` with `A`, `G`, `C` of [`Routhian::gyroscopic_system`]
+///    (ERRATA E5: the printed 3×3 `f(λ)` of (64) vanishes identically). With `a = PᵀAP`,
+///    `c = PᵀCP` symmetric and `PᵀGP = [[0, g], [−g, 0]]`, it is the even quartic
+///    `f₂(λ) = c₄λ⁴ + c₂λ² + c₀`, `c₄ = det a`, `c₂ = a₁₁c₂₂ + a₂₂c₁₁ − 2a₁₂c₁₂ + 4g²`,
+///    `c₀ = det c`, solved exactly as a quadratic in `s = λ²` and then `λ = ±√s` (complex square
+///    root). `c = PᵀCP` is `K` up to a rotation of the plane by a right angle (ERRATA E6), so
+///    `c₀ = det K`.
+///
+/// # Verdict
+///
+/// - [`Stability::Degenerate`] when an eigenvalue of `K` is zero within
+///   [`ZERO_EIGENVALUE_TOL`](crate::ZERO_EIGENVALUE_TOL) times the local scale
+///   `s = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (ERRATA E8: the parity argument then says nothing; circles of
+///   steady motions of a symmetric body are always in this case). The scale bounds the terms
+///   whose difference forms `K` (γ is dimensionless, so all of them are energies); round-off in
+///   `K` is a few `ε·s`.
+/// - Otherwise, with `d` the degree of instability: `d = 0` ⇒ [`Stability::SecularlyStable`]
+///   (section 4); `d = 1` ⇒ [`Stability::Unstable`] (odd degree, section 5); `d = 2` ⇒
+///   [`Stability::GyroscopicallyStabilized`] when the quadratic `c₄s² + c₂s + c₀` has two distinct
+///   real negative roots (all four roots of `f₂` simple and on the imaginary axis: linear
+///   stability), [`Stability::Unstable`] when a root of `f₂` leaves the imaginary axis.
+/// - The boundary of gyroscopic stabilisation, where the discriminant `c₂² − 4c₄c₀` vanishes
+///   within [`DOUBLE_ROOT_TOL`] times `c₂² + 4|c₄c₀|` (e.g. the sleeping top at exactly
+///   `p_ψ² = 4A₁mgl`, Maievskii): the roots are snapped to the double pair `±i√(−s)`,
+///   `s = −c₂/(2c₄)`. Two modes of opposite Krein signature collide there and the linearisation
+///   generically has a Jordan block (secular growth `t·e^{iωt}`), so neither linear stability nor
+///   instability follows: with `d = 2` and `s < 0` the verdict is [`Stability::Degenerate`]
+///   (inconclusive), with `s > 0` it is [`Stability::Unstable`] (real roots).
 ///
 /// Errors: [`RouthError::NonFinite`] for non-finite `p_psi` or γ (or non-finite derivatives of the
 /// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`];
@@ -258,11 +259,11 @@ pub fn f2_coefficients<M: Routhian>(
     // det(aλ² + 2gJλ + c) for symmetric a, c and J = [[0, 1], [−1, 0]]: the skew part adds
     // (2gλ)² to the determinant of the symmetric part.
     let c4 = a.determinant();
-    let c2 = a[(0, 0)] * c[(1, 1)] + a[(1, 1)] * c[(0, 0)] - 2.0 * a[(0, 1)] * c[(0, 1)]
-        + 4.0 * g * g;
+    let c2 =
+        a[(0, 0)] * c[(1, 1)] + a[(1, 1)] * c[(0, 0)] - 2.0 * a[(0, 1)] * c[(0, 1)] + 4.0 * g * g;
     let c0 = c.determinant();
     check_finite("coefficients of f2", &[c4, c2, c0])?;
-    if !(c4 > 0.0) {
+    if c4 <= 0.0 {
         // J positive definite makes PᵀAP (a Schur complement of J) positive definite.
         return Err(RouthError::KineticNotPositiveDefinite {
             gamma: [gamma.x, gamma.y, gamma.z],
@@ -332,6 +333,10 @@ fn quartic_roots(c4: f64, c2: f64, c0: f64) -> QuarticRoots {
         let rc = r.conj();
         ([r, -r, rc, -rc], SquareRoots::Other)
     };
+    // Canonical zeros (−0.0 → +0.0) so that the total order agrees with the numeric one.
+    for l in &mut lambda {
+        *l = Complex::new(l.re + 0.0, l.im + 0.0);
+    }
     lambda.sort_by(|x, y| x.re.total_cmp(&y.re).then(x.im.total_cmp(&y.im)));
     QuarticRoots { lambda, kind }
 }
@@ -359,14 +364,23 @@ mod tests {
             let r = quartic_roots(c4, c2, c0);
             for l in r.lambda {
                 let scale = c4 * l.norm().powi(4) + c2.abs() * l.norm_sqr() + c0.abs() + 1e-300;
-                assert!(f2(c4, c2, c0, l).norm() <= 1e-12 * scale, "{c4} {c2} {c0}: {l}");
+                assert!(
+                    f2(c4, c2, c0, l).norm() <= 1e-12 * scale,
+                    "{c4} {c2} {c0}: {l}"
+                );
             }
             for w in r.lambda.windows(2) {
                 assert!((w[0].re, w[0].im) <= (w[1].re, w[1].im));
             }
         }
-        assert_eq!(quartic_roots(1.0, 5.0, 4.0).kind, SquareRoots::DistinctNegative);
-        assert_eq!(quartic_roots(1.0, 2.0, 1.0).kind, SquareRoots::DoubleNegative);
+        assert_eq!(
+            quartic_roots(1.0, 5.0, 4.0).kind,
+            SquareRoots::DistinctNegative
+        );
+        assert_eq!(
+            quartic_roots(1.0, 2.0, 1.0).kind,
+            SquareRoots::DoubleNegative
+        );
         assert_eq!(quartic_roots(2.0, -1.0, 3.0).kind, SquareRoots::Other);
         assert_eq!(quartic_roots(1.0, -5.0, 4.0).kind, SquareRoots::Other);
     }

@@ -5,60 +5,7 @@
 //! `∂R(0, γ, p_ψ)/∂γ` vanishes (33). Equivalently γ is a critical point of the amended potential
 //! `U_r(γ) = −R(0, γ, p_ψ)` (34) restricted to the sphere `|γ| = 1`.
 //!
-//! # Geometry on the sphere
-//!
-//! γ is an unconstrained vector of ℝ³ when the model differentiates (ERRATA, convention), so the
-//! Euclidean gradient and Hessian of `U_r` are `−∂R/∂γ` and `−∂²R/∂γ²`. On the sphere, with `P` a
-//! 3×2 orthonormal basis of the tangent plane γ^⊥ and `μ = (∂R/∂γ, γ)`:
-//! - Riemannian gradient: `Pᵀ(−∂R/∂γ)`; it vanishes exactly when (33) holds;
-//! - Riemannian Hessian: `Pᵀ(μE − ∂²R/∂γ²)P`, the restricted second variation (62)–(63); it
-//!   equals `PᵀCP` with `C` of section 5 up to a rotation of the plane (ERRATA E5, E6).
-//!
-//! # Search
-//!
-//! [`steady_motions`] starts a safeguarded Riemannian Newton iteration from every point of a
-//! Fibonacci grid on the sphere ([`SearchOptions::starts`], 400 by default: neighbouring starts
-//! are about `√(4π/400) ≈ 0.18` rad apart, finer than the basins of any smooth model of moderate
-//! complexity). Each iteration solves the 2×2 Levenberg–Marquardt system
-//! `(K² + λE) ξ = −K g` with `K` the Riemannian Hessian and `g` the Riemannian gradient in the basis
-//! `P`, steps along the retraction `γ ← (γ + Pξ)/|γ + Pξ|`, and accepts a step only when `|g|`
-//! decreases (otherwise λ grows, turning the step into steepest descent of `½|g|²`). With
-//! `λ → 0` this is Newton's method on the sphere (quadratic convergence at a non-degenerate critical
-//! point); the safeguard makes every start converge to a critical point or stall at a local minimum
-//! of `|g|` that is not one (such starts are discarded). Steps are capped at
-//! [`MAX_STEP`] radians.
-//!
-//! # Tolerances (all relative to the model scale)
-//!
-//! The *local scale* at γ is `s(γ) = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` at `Ω = 0`: it has units of energy
-//! (γ is dimensionless) and bounds the terms whose difference forms the Riemannian gradient and
-//! Hessian, so round-off in those is a small multiple of `ε·s`. The *search scale* `S` is the
-//! largest local scale over the grid of starts.
-//! - A point is critical when `|g| ≤` [`GRADIENT_TOL`]` · max(S, s(γ))`.
-//! - Two critical points are the same when they are closer than [`DUPLICATE_DISTANCE`] (non-
-//!   degenerate points converge to round-off, about 1e−13) or, for a degenerate isolated point
-//!   (which Newton approaches only linearly), closer than [`DEGENERATE_DUPLICATE_DISTANCE`] with the
-//!   same `U_r`.
-//! - An eigenvalue of the restricted Hessian is zero when `|κ| ≤`
-//!   [`ZERO_EIGENVALUE_TOL`]` · s(γ)` (the same test as [`classify`](crate::classify), so
-//!   `isolated: false` always comes with [`Stability::Degenerate`](crate::Stability)).
-//! - Two values of `U_r` are equal when they differ by at most
-//!   [`LEVEL_TOL`]` · max(s(γ), |U_r|)`.
-//!
-//! # Non-isolated critical points
-//!
-//! A body with a symmetry has whole circles of steady motions (the tilted precessions of a
-//! symmetric top). At a critical point whose restricted Hessian has a zero eigenvalue, the search
-//! moves by `h` along the null direction (`h` = [`TRACE_STEP`], then `h/10` for small circles),
-//! re-converges, and calls the point non-isolated if it lands on a *different* critical point
-//! (at least `h/4` away) with the same `U_r`. It then traces the curve of critical points by
-//! predictor–corrector continuation with step `h` and reports one representative per curve
-//! (`isolated: false`); any later start converging within `0.6h` of a traced vertex with the same
-//! `U_r` belongs to that curve. A zero eigenvalue without such a continuation is a degenerate
-//! isolated critical point (a bifurcation point): `isolated: true`, and
-//! [`classify`](crate::classify) reports it as [`Stability::Degenerate`](crate::Stability).
-//! Circles of radius below about `h/20` (i.e. right next to the bifurcation where they shrink to a
-//! point) are not resolved and are reported as degenerate isolated points.
+//! The method and its tolerances are documented on [`steady_motions`].
 
 use std::fmt;
 
@@ -67,25 +14,25 @@ use nalgebra::{Matrix2, Matrix3, Matrix3x2, SymmetricEigen, Vector2, Vector3};
 use crate::error::{check_finite, RouthError};
 use crate::model::Routhian;
 
-/// Relative tolerance on the Riemannian gradient for a point to count as critical (see the module
-/// documentation for the scale it multiplies).
+/// Relative tolerance on the Riemannian gradient for a point to count as critical (see
+/// [`steady_motions`] for the scale it multiplies).
 pub const GRADIENT_TOL: f64 = 1e-10;
 /// Relative tolerance under which an eigenvalue of the restricted second variation (62)–(63)
 /// counts as zero (ERRATA E8). Round-off in the eigenvalues is about `1e−15` of the scale and a
 /// converged point is located to about `1e−13`, so `1e−8` leaves a wide margin on both sides.
 pub const ZERO_EIGENVALUE_TOL: f64 = 1e-8;
 /// Relative tolerance for two values of the amended potential to be equal.
-pub const LEVEL_TOL: f64 = 1e-9;
+const LEVEL_TOL: f64 = 1e-9;
 /// Distance (in radians, on the unit sphere) under which two non-degenerate critical points are
 /// the same.
-pub const DUPLICATE_DISTANCE: f64 = 1e-6;
+const DUPLICATE_DISTANCE: f64 = 1e-6;
 /// Distance under which two degenerate isolated critical points with the same `U_r` are the same
 /// (Newton converges only linearly to them).
-pub const DEGENERATE_DUPLICATE_DISTANCE: f64 = 2e-2;
+const DEGENERATE_DUPLICATE_DISTANCE: f64 = 2e-2;
 /// Longest step of the Newton iteration on the sphere, in radians.
-pub const MAX_STEP: f64 = 0.5;
+const MAX_STEP: f64 = 0.5;
 /// Step of the continuation along a curve of non-isolated critical points, in radians.
-pub const TRACE_STEP: f64 = 0.05;
+const TRACE_STEP: f64 = 0.05;
 
 /// Largest number of continuation steps along one curve of critical points.
 const MAX_TRACE_STEPS: usize = 1000;
@@ -180,9 +127,74 @@ impl Default for SearchOptions {
 
 /// All steady motions (31)–(34) at the cyclic momentum `p_psi`: the critical points of the
 /// amended potential `U_r = −R(0, γ, p_ψ)` (34) on the unit sphere, found by a global search with
-/// the default [`SearchOptions`] (see the module documentation for the method and its
-/// tolerances). Sorted by increasing `U_r`. Curves of steady motions (bodies with a symmetry) are
+/// the default [`SearchOptions`] (method and tolerances below). Sorted by increasing `U_r`. Curves of steady motions (bodies with a symmetry) are
 /// reported once, with `isolated: false` (ERRATA E8).
+///
+/// # Geometry on the sphere
+///
+/// γ is an unconstrained vector of ℝ³ when the model differentiates (ERRATA, convention), so the
+/// Euclidean gradient and Hessian of `U_r` are `−∂R/∂γ` and `−∂²R/∂γ²`. On the sphere, with `P` a
+/// 3×2 orthonormal basis of the tangent plane γ^⊥ and `μ = (∂R/∂γ, γ)`:
+/// - Riemannian gradient: `g = Pᵀ(−∂R/∂γ)`; it vanishes exactly when (33) holds;
+/// - Riemannian Hessian: `K = Pᵀ(μE − ∂²R/∂γ²)P`, the restricted second variation (62)–(63); it
+///   equals `PᵀCP` with `C` of section 5 up to a rotation of the plane (ERRATA E5, E6).
+///
+/// # Search
+///
+/// A safeguarded Riemannian Newton iteration starts from every point of a Fibonacci grid on the
+/// sphere ([`SearchOptions::starts`], 400 by default: neighbouring starts are about
+/// `√(4π/400) ≈ 0.18` rad apart). Each iteration solves the 2×2 Levenberg–Marquardt system
+/// `(K² + λE) ξ = −K g`, steps along the retraction `γ ← (γ + Pξ)/|γ + Pξ|` (at most
+/// 0.5 radians), and accepts a step only when `|g|` decreases (otherwise λ grows, turning
+/// the step into steepest descent of `½|g|²`). With `λ → 0` this is Newton's method on the
+/// sphere (quadratic convergence at a non-degenerate critical point); the safeguard makes every
+/// start converge to a critical point or stall at a local minimum of `|g|` that is not one (such
+/// starts are discarded).
+///
+/// Critical points closer together than the grid spacing (next to a bifurcation, e.g. the sleeping
+/// top inside a small circle of tilted precessions) can share one basin, so the search then starts
+/// again from rings of radii `{1/2, 1/5, 1/20}` of the spacing around every point found (and around
+/// up to 16 vertices of every curve), and from the axis `±n` of every closed curve (the normal of
+/// the plane of its vertices: for a circle of latitude of a symmetric body, the pole, a critical
+/// point by symmetry). Finally the Morse relation is checked: the non-degenerate isolated critical
+/// points must satisfy `#minima − #saddles + #maxima = χ(S²) = 2` (curves contribute 0). If they
+/// do not, the whole search is repeated on a grid four times finer. (A pair of critical points
+/// born together in a fold and both missed leaves χ unchanged: such a pair, closer than the grid
+/// spacing to each other and to any other critical point, can be missed; use
+/// [`steady_motions_with`] with more starts near bifurcations.)
+///
+/// # Tolerances (all relative to the model scale)
+///
+/// The *local scale* at γ is `s(γ) = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` at `Ω = 0`: it has units of energy
+/// (γ is dimensionless) and bounds the terms whose difference forms `g` and `K`, so round-off in
+/// those is a small multiple of `ε·s`. The *search scale* `S` is the largest local scale over the
+/// grid of starts.
+/// - A point is critical when `|g| ≤` [`GRADIENT_TOL`]` · max(S, s(γ))` (`1e−10`; the iteration
+///   goes on to round-off, about `1e−15`, when it can).
+/// - Two critical points are the same when they are closer than `1e−6`
+///   (non-degenerate points converge to about `1e−13`) or, when one is degenerate (which Newton
+///   approaches only linearly), closer than `2e−2` with the same `U_r`.
+/// - An eigenvalue of `K` is zero when `|κ| ≤` [`ZERO_EIGENVALUE_TOL`]` · s(γ)`: the same test as
+///   [`classify`](crate::classify), so `isolated: false` always comes with
+///   [`Stability::Degenerate`](crate::Stability).
+/// - Two values of `U_r` are equal when they differ by at most
+///   `1e−9 · max(s(γ), |U_r|)`.
+///
+/// # Non-isolated critical points
+///
+/// A body with a symmetry has whole circles of steady motions (the tilted precessions of a
+/// symmetric top). At a critical point whose `K` has a zero eigenvalue, the search moves by `h`
+/// along the null direction, re-converges, and calls the point non-isolated if it lands on a
+/// *different* critical point (at least `h/4` away) with the same `U_r`; `h` is 0.05 rad, then
+/// `h/4`, `h/16`, `h/64` for small curves. It then traces the curve by predictor–corrector continuation with step `h` (again with a shorter step when a closed curve
+/// gets fewer than 12 vertices) and reports one representative per curve (`isolated: false`); a
+/// later degenerate critical point with the same `U_r` within `h/2` of the traced polyline belongs
+/// to that curve. Two circles on the same level (e.g. `γ₃ = ±z` for a body symmetric under
+/// `γ₃ → −γ₃`) are therefore two curves. A zero eigenvalue without such a continuation is a
+/// degenerate isolated critical point (a bifurcation point): `isolated: true`, and
+/// [`classify`](crate::classify) reports it as [`Stability::Degenerate`](crate::Stability).
+/// A whole neighbourhood of critical points (both eigenvalues zero, e.g. `U_r` constant) is
+/// reported once per level of `U_r`, with `isolated: false`.
 ///
 /// Errors: [`RouthError::NonFinite`] for a non-finite `p_psi`;
 /// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
@@ -257,10 +269,7 @@ impl Default for SearchOptions {
 /// assert!(motions.iter().any(|s| !s.isolated));
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
-pub fn steady_motions<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-) -> Result<Vec<SteadyMotion>, RouthError> {
+pub fn steady_motions<M: Routhian>(model: &M, p_psi: f64) -> Result<Vec<SteadyMotion>, RouthError> {
     steady_motions_with(model, p_psi, &SearchOptions::default())
 }
 
@@ -422,7 +431,10 @@ pub(crate) fn unit_gamma(gamma: &Vector3<f64>) -> Result<Vector3<f64>, RouthErro
 }
 
 /// Checks that `J(γ) = ∂²L/∂ω²` is finite and positive definite and `γᵀJγ > 0`.
-pub(crate) fn check_kinetic<M: Routhian>(model: &M, gamma: &Vector3<f64>) -> Result<(), RouthError> {
+pub(crate) fn check_kinetic<M: Routhian>(
+    model: &M,
+    gamma: &Vector3<f64>,
+) -> Result<(), RouthError> {
     let j = model.d2l_domega2(gamma);
     check_finite("J(gamma) = d2l_domega2", j.as_slice())?;
     let vertical = gamma.dot(&(j * gamma));
@@ -436,7 +448,7 @@ pub(crate) fn check_kinetic<M: Routhian>(model: &M, gamma: &Vector3<f64>) -> Res
     let min_eigenvalue = SymmetricEigen::try_new(sym, f64::EPSILON, 1000)
         .map(|e| e.eigenvalues.min())
         .unwrap_or(f64::NAN);
-    if !(min_eigenvalue > 0.0) {
+    if min_eigenvalue.is_nan() || min_eigenvalue <= 0.0 {
         return Err(RouthError::KineticNotPositiveDefinite {
             gamma: [gamma.x, gamma.y, gamma.z],
             min_eigenvalue,
@@ -461,7 +473,7 @@ pub(crate) fn tangent_basis(gamma: &Vector3<f64>) -> Matrix3x2<f64> {
     Matrix3x2::from_columns(&[u, v])
 }
 
-/// The local scale `max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` of the module documentation.
+/// The local scale `max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (see [`steady_motions`]).
 pub(crate) fn local_scale(dr_dgamma: &Vector3<f64>, d2r_dgamma2: &Matrix3<f64>) -> f64 {
     dr_dgamma.norm().max(d2r_dgamma2.norm())
 }
@@ -536,7 +548,10 @@ fn record<M: Routhian>(
     let mu = model.dr_dgamma(&zero, gamma, p_psi).dot(gamma);
     let amended_potential = model.amended_potential(gamma, p_psi);
     let energy = model.energy(&(psi_dot * gamma), gamma);
-    check_finite("steady motion (psi_dot, mu, U_r, E)", &[psi_dot, mu, amended_potential, energy])?;
+    check_finite(
+        "steady motion (psi_dot, mu, U_r, E)",
+        &[psi_dot, mu, amended_potential, energy],
+    )?;
     Ok(SteadyMotion {
         gamma: *gamma,
         psi_dot,
@@ -615,7 +630,9 @@ fn same_level(a: &Local, b: &Local) -> bool {
 
 fn is_degenerate(loc: &Local) -> bool {
     let e = sym2_eigen(&loc.hess);
-    e.values.iter().any(|k| k.abs() <= ZERO_EIGENVALUE_TOL * loc.scale)
+    e.values
+        .iter()
+        .any(|k| k.abs() <= ZERO_EIGENVALUE_TOL * loc.scale)
 }
 
 fn same_point(a: &Local, b: &Local) -> bool {
@@ -843,7 +860,11 @@ impl<M: Routhian> Search<'_, M> {
             match accepted {
                 Some(n) => {
                     cur = n;
-                    lambda = if lambda <= 1e-6 * kn2 { 0.0 } else { lambda / 10.0 };
+                    lambda = if lambda <= 1e-6 * kn2 {
+                        0.0
+                    } else {
+                        lambda / 10.0
+                    };
                 }
                 None => break,
             }
@@ -854,7 +875,13 @@ impl<M: Routhian> Search<'_, M> {
 
     /// A converged continuation point from `from` along the direction `dir` with step `h`:
     /// critical, on the level of `level`, and at a distance in `[h/4, 3h]` from `from`.
-    fn continue_from(&self, from: &Local, dir: &Vector3<f64>, h: f64, level: &Local) -> Option<Local> {
+    fn continue_from(
+        &self,
+        from: &Local,
+        dir: &Vector3<f64>,
+        h: f64,
+        level: &Local,
+    ) -> Option<Local> {
         let guess = (from.gamma + h * dir).normalize();
         let (loc, converged) = self.refine(&guess)?;
         let d = (loc.gamma - from.gamma).norm();
@@ -946,7 +973,12 @@ mod tests {
 
     #[test]
     fn sym2_eigen_matches_definition() {
-        for (a, b, c) in [(1.0, 0.0, 1.0), (2.0, 1.0, -3.0), (1e8, 1.0, 1e8 + 1e-3), (0.0, 0.0, 5.0)] {
+        for (a, b, c) in [
+            (1.0, 0.0, 1.0),
+            (2.0, 1.0, -3.0),
+            (1e8, 1.0, 1e8 + 1e-3),
+            (0.0, 0.0, 5.0),
+        ] {
             let k = Matrix2::new(a, b, b, c);
             let e = sym2_eigen(&k);
             assert!(e.values[0] <= e.values[1]);

@@ -137,7 +137,11 @@ fn check_records<M: Routhian>(model: &M, p: f64, motions: &[SteadyMotion]) {
         let dr = model.dr_dgamma(&zero, &s.gamma, p);
         let scale = dr.norm().max(model.d2r_dgamma2(&zero, &s.gamma, p).norm());
         let tangential = dr - dr.dot(&s.gamma) * s.gamma;
-        assert!(tangential.norm() <= 1e-10 * scale, "not critical: {s}, |grad| = {:e}", tangential.norm());
+        assert!(
+            tangential.norm() <= 1e-10 * scale,
+            "not critical: {s}, |grad| = {:e}",
+            tangential.norm()
+        );
         assert!((s.mu - dr.dot(&s.gamma)).abs() <= 1e-12 * scale);
         assert_eq!(s.psi_dot, model.psi_dot(&zero, &s.gamma, p));
         assert_eq!(s.amended_potential, -model.routhian(&zero, &s.gamma, p));
@@ -160,7 +164,12 @@ fn check_records<M: Routhian>(model: &M, p: f64, motions: &[SteadyMotion]) {
 /// A body symmetric about e₃: its isolated steady motions are the poles ±e₃ and its other steady
 /// motions are circles γ₃ = z*, one per interior root z* of dU_r/dγ₃; the search must report
 /// exactly those (one representative per circle, `isolated: false`), all Degenerate.
-fn check_symmetric<M: Routhian>(model: &M, p: f64, du_dz: impl Fn(f64) -> f64, what: &str) -> usize {
+fn check_symmetric<M: Routhian>(
+    model: &M,
+    p: f64,
+    du_dz: impl Fn(f64) -> f64,
+    what: &str,
+) -> usize {
     let motions = steady_motions(model, p).unwrap();
     check_records(model, p, &motions);
     let poles: Vec<_> = motions.iter().filter(|s| s.isolated).collect();
@@ -168,15 +177,29 @@ fn check_symmetric<M: Routhian>(model: &M, p: f64, du_dz: impl Fn(f64) -> f64, w
     assert!(poles.iter().any(|s| (s.gamma - Vector3::z()).norm() < 1e-9));
     assert!(poles.iter().any(|s| (s.gamma + Vector3::z()).norm() < 1e-9));
     let mut expected = roots_in_z(du_dz);
-    let mut circles: Vec<f64> = motions.iter().filter(|s| !s.isolated).map(|s| s.gamma.z).collect();
+    let mut circles: Vec<f64> = motions
+        .iter()
+        .filter(|s| !s.isolated)
+        .map(|s| s.gamma.z)
+        .collect();
     expected.sort_by(f64::total_cmp);
     circles.sort_by(f64::total_cmp);
-    assert_eq!(circles.len(), expected.len(), "{what}, p = {p}: circles {circles:?} vs γ₃ = {expected:?}");
+    assert_eq!(
+        circles.len(),
+        expected.len(),
+        "{what}, p = {p}: circles {circles:?} vs γ₃ = {expected:?}"
+    );
     for (c, e) in circles.iter().zip(&expected) {
-        assert!((c - e).abs() < 1e-7, "{what}, p = {p}: circle at γ₃ = {c}, expected {e}");
+        assert!(
+            (c - e).abs() < 1e-7,
+            "{what}, p = {p}: circle at γ₃ = {c}, expected {e}"
+        );
     }
     for s in motions.iter().filter(|s| !s.isolated) {
-        assert_eq!(classify(model, s, p).unwrap().verdict, Stability::Degenerate);
+        assert_eq!(
+            classify(model, s, p).unwrap().verdict,
+            Stability::Degenerate
+        );
     }
     eprintln!("{what}, p = {p}: poles ±e₃ and circles at γ₃ = {circles:?}");
     circles.len()
@@ -189,9 +212,16 @@ fn euler_characteristic<M: Routhian>(model: &M, p: f64, what: &str) -> (i64, usi
     check_records(model, p, &motions);
     let mut chi = 0;
     for s in &motions {
-        assert!(s.isolated, "{what}, p = {p}: a generic model has no circles: {s}");
+        assert!(
+            s.isolated,
+            "{what}, p = {p}: a generic model has no circles: {s}"
+        );
         let r = classify(model, s, p).unwrap();
-        assert_ne!(r.verdict, Stability::Degenerate, "{what}, p = {p}: {s}: {r}");
+        assert_ne!(
+            r.verdict,
+            Stability::Degenerate,
+            "{what}, p = {p}: {s}: {r}"
+        );
         chi += match r.degree_of_instability {
             0 | 2 => 1,
             _ => -1,
@@ -201,7 +231,10 @@ fn euler_characteristic<M: Routhian>(model: &M, p: f64, what: &str) -> (i64, usi
         .iter()
         .map(|s| classify(model, s, p).unwrap().degree_of_instability)
         .collect();
-    eprintln!("{what}, p = {p}: χ = {chi} from {} points, degrees {kinds:?}", motions.len());
+    eprintln!(
+        "{what}, p = {p}: χ = {chi} from {} points, degrees {kinds:?}",
+        motions.len()
+    );
     (chi, motions.len())
 }
 
@@ -310,7 +343,10 @@ fn euler_characteristic_asymmetric_heavy_tops() {
             let b = Matrix3::from_fn(|_, _| rng.gen_range(-1.0..1.0));
             b * b.transpose() + Matrix3::from_diagonal_element(0.5)
         };
-        let top = HeavyTop { j, mgr: Vector3::from_fn(|_, _| rng.gen_range(-1.0..1.0)) };
+        let top = HeavyTop {
+            j,
+            mgr: Vector3::from_fn(|_, _| rng.gen_range(-1.0..1.0)),
+        };
         for p in [0.0, 0.4, 1.5, 5.0] {
             let (chi, n) = euler_characteristic(&top, p, "heavy top");
             assert_eq!(chi, 2, "heavy top, p = {p}: χ = {chi} over {n} points");
@@ -326,7 +362,10 @@ fn euler_characteristic_gyrostats() {
         let body = Gyrostat::random(&mut rng);
         for p in [0.5, 4.0, 12.0, 30.0] {
             let (chi, n) = euler_characteristic(&body, p, "gyrostat");
-            assert_eq!(chi, 2, "gyrostat {body:?}, p = {p}: χ = {chi} over {n} points");
+            assert_eq!(
+                chi, 2,
+                "gyrostat {body:?}, p = {p}: χ = {chi} over {n} points"
+            );
             counts.push(n);
         }
     }
@@ -342,7 +381,10 @@ fn euler_characteristic_triaxial_ellipsoids() {
         let body = Ellipsoid::random(&mut rng);
         for p in [0.0, 3.0, 8.0, 20.0] {
             let (chi, n) = euler_characteristic(&body, p, "ellipsoid");
-            assert_eq!(chi, 2, "ellipsoid {body:?}, p = {p}: χ = {chi} over {n} points");
+            assert_eq!(
+                chi, 2,
+                "ellipsoid {body:?}, p = {p}: χ = {chi} over {n} points"
+            );
             counts.push(n);
         }
     }
@@ -374,16 +416,28 @@ fn steady_motion_near_refines_a_guess() {
 #[test]
 fn search_options_and_errors() {
     let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
-    assert!(matches!(steady_motions(&top, f64::NAN), Err(RouthError::NonFinite { .. })));
-    let no_starts = SearchOptions { starts: 0, ..SearchOptions::default() };
+    assert!(matches!(
+        steady_motions(&top, f64::NAN),
+        Err(RouthError::NonFinite { .. })
+    ));
+    let no_starts = SearchOptions {
+        starts: 0,
+        ..SearchOptions::default()
+    };
     assert!(matches!(
         steady_motions_with(&top, 1.0, &no_starts),
         Err(RouthError::InvalidOption { .. })
     ));
     // Few starts still find the two poles of a slow top (U_r has only those critical points).
-    let few = SearchOptions { starts: 20, ..SearchOptions::default() };
+    let few = SearchOptions {
+        starts: 20,
+        ..SearchOptions::default()
+    };
     let poles = steady_motions_with(&top, 0.1, &few).unwrap();
-    assert!(poles.iter().filter(|s| s.isolated).count() == 2, "{poles:#?}");
+    assert!(
+        poles.iter().filter(|s| s.isolated).count() == 2,
+        "{poles:#?}"
+    );
 
     // J indefinite: γᵀJγ ≤ 0 somewhere on the sphere.
     let bad = HeavyTop {
@@ -392,7 +446,8 @@ fn search_options_and_errors() {
     };
     assert!(matches!(
         steady_motions(&bad, 1.0),
-        Err(RouthError::DegenerateVerticalInertia { .. } | RouthError::KineticNotPositiveDefinite { .. })
+        Err(RouthError::DegenerateVerticalInertia { .. }
+            | RouthError::KineticNotPositiveDefinite { .. })
     ));
 
     /// A model whose Routh function is not finite anywhere: nothing can converge.
@@ -435,128 +490,9 @@ fn search_options_and_errors() {
         }
     }
     let broken = Broken(top.clone());
-    assert!(matches!(steady_motions(&broken, 1.0), Err(RouthError::NoConvergence { .. })));
+    assert!(matches!(
+        steady_motions(&broken, 1.0),
+        Err(RouthError::NoConvergence { .. })
+    ));
     assert!(steady_motion_near(&broken, Vector3::z(), 1.0).is_err());
-}
-
-#[test]
-#[ignore]
-fn zz_stress() {
-    let mut rng = ChaCha8Rng::seed_from_u64(12345);
-    let mut bad = 0;
-    let mut total = 0;
-    let t0 = std::time::Instant::now();
-    for i in 0..40 {
-        let gy = Gyrostat::random(&mut rng);
-        let el = Ellipsoid::random(&mut rng);
-        for k in 0..10 {
-            let p = 0.5 + 4.0 * k as f64 + rng.gen_range(0.0..3.0);
-            for (name, res) in [("gyro", steady_motions(&gy, p).map(|m| (m.clone(), m.iter().map(|s| classify(&gy, s, p).unwrap()).collect::<Vec<_>>()))),
-                                ("ell", steady_motions(&el, p).map(|m| (m.clone(), m.iter().map(|s| classify(&el, s, p).unwrap()).collect::<Vec<_>>())))] {
-                total += 1;
-                let (m, r) = res.unwrap();
-                let mut chi = 0i64;
-                let mut degen = 0;
-                for (s, r) in m.iter().zip(&r) {
-                    if r.verdict == Stability::Degenerate || !s.isolated { degen += 1; }
-                    chi += if r.degree_of_instability == 1 { -1 } else { 1 };
-                }
-                if chi != 2 || degen > 0 {
-                    bad += 1;
-                    eprintln!("{name} {i} p={p}: chi={chi} n={} degen={degen}", m.len());
-                    for (s, r) in m.iter().zip(&r) { eprintln!("   {s}\n     {r}"); }
-                }
-            }
-        }
-    }
-    eprintln!("bad {bad} / {total} in {:?}", t0.elapsed());
-}
-
-#[test]
-#[ignore]
-fn zz_stress_sym() {
-    let mut rng = ChaCha8Rng::seed_from_u64(777);
-    let mut bad = 0;
-    let mut total = 0;
-    let t0 = std::time::Instant::now();
-    for _ in 0..30 {
-        let (a1, c, mgl) = (rng.gen_range(0.5..3.0), rng.gen_range(0.5..3.0), rng.gen_range(0.2..3.0));
-        let top = HeavyTop::lagrange(a1, c, mgl);
-        for k in 0..15 {
-            let p: f64 = rng.gen_range(0.0..1.0) * 3.0 * (4.0f64 * a1 * mgl).sqrt() * (1.0 + k as f64 / 5.0);
-            total += 1;
-            let m = steady_motions(&top, p).unwrap();
-            let du = |z: f64| { let n = c + (a1 - c) * (1.0 - z * z); p * p * (a1 - c) * z / (n * n) + mgl };
-            let exp = roots_in_z(du);
-            let circ: Vec<f64> = m.iter().filter(|s| !s.isolated).map(|s| s.gamma.z).collect();
-            let iso: Vec<f64> = m.iter().filter(|s| s.isolated).map(|s| s.gamma.z).collect();
-            if circ.len() != exp.len() || iso.len() != 2 {
-                bad += 1;
-                eprintln!("A={a1:.3} C={c:.3} mgl={mgl:.3} p={p:.4}: circles {circ:?} iso {iso:?} expected {exp:?}");
-            }
-        }
-    }
-    eprintln!("bad {bad} / {total} in {:?}", t0.elapsed());
-}
-
-#[test]
-#[ignore]
-fn zz_debug() {
-    let (a1, c, mgl, p) = (2.151, 1.570, 0.218, 2.5145);
-    let top = HeavyTop::lagrange(a1, c, mgl);
-    let m = steady_motions(&top, p).unwrap();
-    for s in &m { eprintln!("{s}"); }
-}
-
-#[test]
-#[ignore]
-fn zz_stress_bif() {
-    let mut rng = ChaCha8Rng::seed_from_u64(778);
-    let mut bad = 0;
-    let mut total = 0;
-    let t0 = std::time::Instant::now();
-    for _ in 0..10 {
-        let (a1, c, mgl) = (rng.gen_range(0.5..3.0), rng.gen_range(0.5..3.0), rng.gen_range(0.2..3.0));
-        let top = HeavyTop::lagrange(a1, c, mgl);
-        let thr = mgl * c * c / (c - a1).abs();
-        for d in [1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 1e-4, 1e-6, -1e-1, -1e-2, -1e-3, -1e-4, -1e-6] {
-            let p = (thr * (1.0 + d)).sqrt();
-            total += 1;
-            let m = steady_motions(&top, p).unwrap();
-            let du = |z: f64| { let n = c + (a1 - c) * (1.0 - z * z); p * p * (a1 - c) * z / (n * n) + mgl };
-            let exp = roots_in_z(du);
-            let circ: Vec<f64> = m.iter().filter(|s| !s.isolated).map(|s| s.gamma.z).collect();
-            let iso: Vec<f64> = m.iter().filter(|s| s.isolated).map(|s| s.gamma.z).collect();
-            let verd: Vec<_> = m.iter().map(|s| classify(&top, s, p).unwrap().verdict).collect();
-            if circ.len() != exp.len() || iso.len() != 2 {
-                bad += 1;
-                eprintln!("A={a1:.3} C={c:.3} mgl={mgl:.3} d={d:e}: circles {circ:?} iso {iso:?} expected {exp:?} {verd:?}");
-            }
-        }
-    }
-    eprintln!("bad {bad} / {total} in {:?}", t0.elapsed());
-}
-
-#[test]
-#[ignore]
-fn zz_stress_dense() {
-    let mut rng = ChaCha8Rng::seed_from_u64(31337);
-    let mut bad = 0;
-    let mut total = 0;
-    let dense = SearchOptions { starts: 4000, ..SearchOptions::default() };
-    for _ in 0..15 {
-        let gy = Gyrostat::random(&mut rng);
-        let el = Ellipsoid::random(&mut rng);
-        for _ in 0..4 {
-            let p = rng.gen_range(0.0..40.0);
-            total += 2;
-            let a = steady_motions(&gy, p).unwrap().len();
-            let b = steady_motions_with(&gy, p, &dense).unwrap().len();
-            if a != b { bad += 1; eprintln!("gyro p={p}: {a} vs dense {b}"); }
-            let a = steady_motions(&el, p).unwrap().len();
-            let b = steady_motions_with(&el, p, &dense).unwrap().len();
-            if a != b { bad += 1; eprintln!("ell p={p}: {a} vs dense {b}"); }
-        }
-    }
-    eprintln!("bad {bad} / {total}");
 }

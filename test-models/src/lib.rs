@@ -18,6 +18,7 @@
 
 mod ellipsoid;
 mod gyrostat;
+mod hand; pub use hand::hand_gyrostat_bundle;
 mod numdual;
 mod random;
 pub mod vec3;

@@ -1,0 +1,12 @@
+use routh::{Lagrangian, Matrix3, Vector3};
+
+#[derive(Lagrangian)]
+#[lagrangian()]
+struct M {
+    inertia: Matrix3<f64>,
+    com: Vector3<f64>,
+    mass: f64,
+    g: f64,
+}
+
+fn main() {}

@@ -1,0 +1,17 @@
+use routh::{Lagrangian, Matrix3, Vector3};
+
+#[derive(Lagrangian)]
+#[lagrangian(
+    let h = mass * g,
+    let h = 2.0 * mass * g,
+    kinetic = 0.5 * omega.dot(inertia * omega),
+    potential = h * com.dot(gamma),
+)]
+struct M {
+    inertia: Matrix3<f64>,
+    com: Vector3<f64>,
+    mass: f64,
+    g: f64,
+}
+
+fn main() {}

@@ -1,0 +1,15 @@
+use routh::{Lagrangian, Matrix3, Vector3};
+
+#[derive(Lagrangian)]
+#[lagrangian(
+    kinetic = 0.5 * omega.dot(inertia * omega + mass),
+    potential = mass * g * com.dot(gamma),
+)]
+struct M {
+    inertia: Matrix3<f64>,
+    com: Vector3<f64>,
+    mass: f64,
+    g: f64,
+}
+
+fn main() {}
