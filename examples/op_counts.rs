@@ -15,6 +15,7 @@ const M1: &str = r#"
     potential = mass * g * com.dot(gamma),
 )]
 pub struct Gyrostat {
+    #[lagrangian(symmetric)]
     pub inertia: Matrix3<f64>,
     pub rotor: Vector3<f64>,
     pub coupling: Matrix3<f64>,

@@ -26,6 +26,9 @@ pub struct Field {
     pub kind: Option<FieldKind>,
     pub ty: syn::Type,
     pub skip: bool,
+    /// `#[lagrangian(symmetric)]` on a `Matrix3<f64>`: only the upper triangle is read and the
+    /// matrix is taken to be symmetric (an inertia tensor), which the generated code exploits.
+    pub symmetric: Option<proc_macro2::Span>,
 }
 
 /// Which term of `L = kinetic + linear − potential` an item defines.
@@ -96,21 +99,28 @@ pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
 fn parse_field(cx: &Ctxt, f: &syn::Field) -> Option<Field> {
     let ident = f.ident.clone()?;
     let mut skip = false;
+    let mut symmetric = None;
     for attr in f.attrs.iter().filter(|a| a.path().is_ident("lagrangian")) {
-        let ok = match &attr.meta {
+        let word = match &attr.meta {
             syn::Meta::List(list) => {
                 let t: Vec<TokenTree> = list.tokens.clone().into_iter().collect();
-                matches!(t.as_slice(), [TokenTree::Ident(i)] if i == "skip")
+                match t.as_slice() {
+                    [TokenTree::Ident(i)] => Some(i.clone()),
+                    _ => None,
+                }
             }
-            _ => false,
+            _ => None,
         };
-        if ok {
-            skip = true;
-        } else {
-            cx.error_spanned_by(attr, "the only field attribute is `#[lagrangian(skip)]`");
+        match word {
+            Some(i) if i == "skip" => skip = true,
+            Some(i) if i == "symmetric" => symmetric = Some(i.span()),
+            _ => cx.error_spanned_by(
+                attr,
+                "expected `#[lagrangian(skip)]` or `#[lagrangian(symmetric)]` on a field",
+            ),
         }
     }
-    Some(Field { ident, kind: field_kind(&f.ty), ty: f.ty.clone(), skip })
+    Some(Field { ident, kind: field_kind(&f.ty), ty: f.ty.clone(), skip, symmetric })
 }
 
 /// `f64`, `Vector3<f64>` or `Matrix3<f64>` under any path spelling.

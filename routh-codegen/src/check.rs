@@ -15,6 +15,7 @@ pub fn check(cx: &Ctxt, derive: &syn::DeriveInput, input: &Input) {
     has_attribute(cx, input);
     fields_have_supported_types(cx, input);
     fields_do_not_shadow_variables(cx, input);
+    symmetric_only_on_matrices(cx, input);
     items_are_unique(cx, input);
     kinetic_is_present(cx, input);
     lets_are_unique_and_do_not_shadow(cx, input);
@@ -80,6 +81,20 @@ fn fields_do_not_shadow_variables(cx: &Ctxt, input: &Input) {
                 &f.ident,
                 format!("field `{name}` clashes with the DSL's `{name}`; rename it or mark it `#[lagrangian(skip)]`"),
             );
+        }
+    }
+}
+
+/// Symmetry is a property of a 3×3 matrix; on anything else the attribute means nothing.
+fn symmetric_only_on_matrices(cx: &Ctxt, input: &Input) {
+    for f in &input.fields {
+        if let Some(span) = f.symmetric {
+            if f.kind != Some(crate::attr::FieldKind::Matrix) || f.skip {
+                cx.error_at(
+                    span,
+                    format!("`symmetric` applies to a used field of type `Matrix3<f64>`; `{}` is not one", f.ident),
+                );
+            }
         }
     }
 }

@@ -96,6 +96,19 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
             FieldKind::Vector => Value::Vector(std::array::from_fn(|i| {
                 slot(&mut g, format!("{name}[{i}]"), Access::Component(i))
             })),
+            FieldKind::Matrix if f.symmetric.is_some() => {
+                // One slot per entry of the upper triangle, shared by its mirror image.
+                let mut m = [[None; 3]; 3];
+                for i in 0..3 {
+                    for j in i..3 {
+                        let id = slot(&mut g, format!("{name}[({i},{j})]"), Access::Entry(i, j));
+                        m[i][j] = Some(id);
+                        m[j][i] = Some(id);
+                    }
+                }
+                let z = g.zero();
+                Value::Matrix(m.map(|row| row.map(|x| x.unwrap_or(z))))
+            }
             FieldKind::Matrix => Value::Matrix(std::array::from_fn(|i| {
                 std::array::from_fn(|j| slot(&mut g, format!("{name}[({i},{j})]"), Access::Entry(i, j)))
             })),

@@ -87,9 +87,10 @@ impl fmt::Display for StabilityReport {
 
 /// Classifies the steady motion `steady` at the cyclic momentum `p_psi` (sections 4–5): the
 /// eigenvalues of the restricted second variation (62)–(63), the degree of instability, the roots
-/// of `f₂` (ERRATA E5) and the verdict (rules and tolerances below). `steady.gamma` must be a critical point of the amended potential, as returned by
-/// [`steady_motions`](crate::steady_motions) or built by [`SteadyMotion::at`]; the other fields of
-/// `steady` are not used.
+/// of `f₂` (ERRATA E5) and the verdict (rules and tolerances below). `steady.gamma` must be a
+/// critical point of the amended potential, as returned by
+/// [`steady_motions`](crate::steady_motions) or built by [`SteadyMotion::at`]; the other fields
+/// of `steady` are not used.
 ///
 /// # Method
 ///
@@ -140,9 +141,13 @@ impl fmt::Display for StabilityReport {
 /// struct Free;
 /// # fn j() -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(2.0, 2.0, 1.0)) }
 /// # impl Lagrangian for Free {
-/// #     fn lagrangian(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> f64 { 0.5 * w.dot(&(j() * w)) }
+/// #     fn lagrangian(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> f64 {
+/// #         0.5 * w.dot(&(j() * w))
+/// #     }
 /// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { j() * w }
-/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { Vector3::zeros() }
+/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+/// #         Vector3::zeros()
+/// #     }
 /// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { j() }
 /// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
 /// #         Matrix3::zeros()

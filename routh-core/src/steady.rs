@@ -127,8 +127,9 @@ impl Default for SearchOptions {
 
 /// All steady motions (31)–(34) at the cyclic momentum `p_psi`: the critical points of the
 /// amended potential `U_r = −R(0, γ, p_ψ)` (34) on the unit sphere, found by a global search with
-/// the default [`SearchOptions`] (method and tolerances below). Sorted by increasing `U_r`. Curves of steady motions (bodies with a symmetry) are
-/// reported once, with `isolated: false` (ERRATA E8).
+/// the default [`SearchOptions`] (method and tolerances below). Sorted by increasing `U_r`.
+/// Curves of steady motions (bodies with a symmetry) are reported once, with `isolated: false`
+/// (ERRATA E8).
 ///
 /// # Geometry on the sphere
 ///
@@ -186,12 +187,13 @@ impl Default for SearchOptions {
 /// symmetric top). At a critical point whose `K` has a zero eigenvalue, the search moves by `h`
 /// along the null direction, re-converges, and calls the point non-isolated if it lands on a
 /// *different* critical point (at least `h/4` away) with the same `U_r`; `h` is 0.05 rad, then
-/// `h/4`, `h/16`, `h/64` for small curves. It then traces the curve by predictor–corrector continuation with step `h` (again with a shorter step when a closed curve
-/// gets fewer than 12 vertices) and reports one representative per curve (`isolated: false`); a
-/// later degenerate critical point with the same `U_r` within `h/2` of the traced polyline belongs
-/// to that curve. Two circles on the same level (e.g. `γ₃ = ±z` for a body symmetric under
-/// `γ₃ → −γ₃`) are therefore two curves. A zero eigenvalue without such a continuation is a
-/// degenerate isolated critical point (a bifurcation point): `isolated: true`, and
+/// `h/4`, `h/16`, `h/64` for small curves. It then traces the curve by predictor–corrector
+/// continuation with step `h` (again with a shorter step when a closed curve gets fewer than 12
+/// vertices) and reports one representative per curve (`isolated: false`); a later degenerate
+/// critical point with the same `U_r` within `h/2` of the traced polyline belongs to that curve.
+/// Two circles on the same level (e.g. `γ₃ = ±z` for a body symmetric under `γ₃ → −γ₃`) are
+/// therefore two curves. A zero eigenvalue without such a continuation is a degenerate isolated
+/// critical point (a bifurcation point): `isolated: true`, and
 /// [`classify`](crate::classify) reports it as [`Stability::Degenerate`](crate::Stability).
 /// A whole neighbourhood of critical points (both eigenvalues zero, e.g. `U_r` constant) is
 /// reported once per level of `U_r`, with `isolated: false`.
@@ -207,7 +209,9 @@ impl Default for SearchOptions {
 /// /// The Lagrange top: J = diag(A, A, C), U = m g l γ₃, with its Routh function by hand (39).
 /// struct Top { a: f64, c: f64, mgl: f64 }
 /// impl Top {
-///     fn j(&self) -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(self.a, self.a, self.c)) }
+///     fn j(&self) -> Matrix3<f64> {
+///         Matrix3::from_diagonal(&Vector3::new(self.a, self.a, self.c))
+///     }
 /// }
 /// impl Lagrangian for Top {
 ///     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
@@ -253,7 +257,9 @@ impl Default for SearchOptions {
 ///         let (j, n) = (self.j(), g.dot(&(self.j() * g)));
 ///         let q = p - (j * w).dot(g);
 ///         let dqn = -(j * w) / n - (2.0 * q / (n * n)) * (j * g);
-///         (j * w) * dqn.transpose() + (q * q / (n * n)) * j + (2.0 * q / n) * (j * g) * dqn.transpose()
+///         (j * w) * dqn.transpose()
+///             + (q * q / (n * n)) * j
+///             + (2.0 * q / n) * (j * g) * dqn.transpose()
 ///     }
 /// }
 ///
@@ -774,8 +780,8 @@ struct Curve {
 }
 
 impl Curve {
-    /// Whether `loc` lies on this curve: degenerate, same level of `U_r` and within `h/2` of the polyline
-    /// through the traced vertices (closed when the trace came back to its start).
+    /// Whether `loc` lies on this curve: degenerate, same level of `U_r` and within `h/2` of the
+    /// polyline through the traced vertices (closed when the trace came back to its start).
     fn contains(&self, loc: &Local) -> bool {
         // A point of a curve of critical points has a zero eigenvalue; a non-degenerate point
         // close to a small curve (the pole inside a small circle) is not on it.

@@ -332,6 +332,21 @@ fn free_asymmetric_body_has_six_steady_rotations() {
     }
 }
 
+#[test]
+fn free_body_at_rest_is_one_two_dimensional_critical_set() {
+    // p_ψ = 0 and no potential: U_r ≡ 0, every γ is a steady motion (rest). One representative.
+    let top = HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+        mgr: Vector3::zeros(),
+    };
+    let motions = steady_motions(&top, 0.0).unwrap();
+    assert_eq!(motions.len(), 1, "{motions:#?}");
+    assert!(!motions[0].isolated);
+    assert_eq!(motions[0].amended_potential, 0.0);
+    let r = classify(&top, &motions[0], 0.0).unwrap();
+    assert_eq!(r.verdict, Stability::Degenerate);
+}
+
 // ---------------------------------------------------------------------------------------------
 // b. Generic models: the isolated critical points satisfy the Morse relation χ(S²) = 2.
 

@@ -175,9 +175,15 @@ mod tests {
 
     /// `‖got − want‖∞ / ‖want‖∞` (absolute when `want` is exactly zero).
     fn rel_err(got: &[f64], want: &[f64]) -> f64 {
-        assert!(got.iter().all(|x| x.is_finite()), "non-finite output {got:?}");
+        assert!(
+            got.iter().all(|x| x.is_finite()),
+            "non-finite output {got:?}"
+        );
         let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let err = got.iter().zip(want).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        let err = got
+            .iter()
+            .zip(want)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
         if scale > 0.0 {
             err / scale
         } else {
@@ -201,8 +207,16 @@ mod tests {
             let outputs: [(&str, &[f64], &[f64]); 8] = [
                 ("R", &[got.routhian], &[want.routhian]),
                 ("psi_dot", &[got.psi_dot], &[want.psi_dot]),
-                ("dR/dOmega", got.dr_domega.as_slice(), want.dr_domega.as_slice()),
-                ("dR/dgamma", got.dr_dgamma.as_slice(), want.dr_dgamma.as_slice()),
+                (
+                    "dR/dOmega",
+                    got.dr_domega.as_slice(),
+                    want.dr_domega.as_slice(),
+                ),
+                (
+                    "dR/dgamma",
+                    got.dr_dgamma.as_slice(),
+                    want.dr_dgamma.as_slice(),
+                ),
                 ("dR/dp", &[got.dr_dp], &[want.dr_dp]),
                 (
                     "d2R/dOmega2",

@@ -18,7 +18,8 @@
 
 mod ellipsoid;
 mod gyrostat;
-mod hand; pub use hand::hand_gyrostat_bundle;
+mod hand;
+pub use hand::hand_gyrostat_bundle;
 mod numdual;
 mod random;
 pub mod vec3;
