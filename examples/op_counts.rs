@@ -65,7 +65,10 @@ fn main() {
         for m in [&o.gyro_a, &o.gyro_g, &o.gyro_c] {
             gyro.extend(m.iter().flatten());
         }
-        println!("{name}: expansion {per:?} per run, graph of {} nodes", g.len());
+        println!(
+            "{name}: expansion {per:?} per run, graph of {} nodes",
+            g.len()
+        );
         println!("  bundle             {}", op_counts(g, &bundle));
         println!("  gyroscopic_system  {}", op_counts(g, &gyro));
         println!("  routhian           {}", op_counts(g, &[o.routhian]));

@@ -45,6 +45,16 @@ fn main() {
     println!("L = {}", m.lagrangian(&w, &gm));
     println!("E = {}", m.energy(&w, &gm));
     println!("bundle = {:?}", m.bundle(&w, &gm, 1.5));
-    let e = Ellipsoid { inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)), semi_axes: Vector3::new(1.0, 2.0, 3.0), offset: Vector3::new(0.0, 0.0, 0.1), mass: 1.0, g: 9.81 };
-    println!("Ell L = {} R = {}", e.lagrangian(&w, &gm), e.routhian(&w, &gm, 1.0));
+    let e = Ellipsoid {
+        inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+        semi_axes: Vector3::new(1.0, 2.0, 3.0),
+        offset: Vector3::new(0.0, 0.0, 0.1),
+        mass: 1.0,
+        g: 9.81,
+    };
+    println!(
+        "Ell L = {} R = {}",
+        e.lagrangian(&w, &gm),
+        e.routhian(&w, &gm, 1.0)
+    );
 }

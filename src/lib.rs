@@ -32,13 +32,15 @@
 pub use routh_core::*;
 pub use routh_macros::Lagrangian;
 
+pub mod fluid;
+
 /// Paths used by the code that `#[derive(Lagrangian)]` generates. Not a public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use routh_core::{GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
-    pub use routh_core::nalgebra::{Matrix3, Vector3};
     pub use core::primitive::f64;
     pub use core::primitive::i32;
+    pub use routh_core::nalgebra::{Matrix3, Vector3};
+    pub use routh_core::{GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
 
     /// `sign(x)` with `sign(0) = 0`: the derivative of `abs`.
     #[inline]

@@ -7,7 +7,11 @@ use std::path::Path;
 fn expand_file(path: &Path) -> String {
     let src = std::fs::read_to_string(path).expect("read model");
     let file: syn::File = syn::parse_str(&src).expect("parse model");
-    let mut out = syn::File { shebang: None, attrs: vec![], items: vec![] };
+    let mut out = syn::File {
+        shebang: None,
+        attrs: vec![],
+        items: vec![],
+    };
     for item in file.items {
         if let syn::Item::Struct(s) = &item {
             let tokens = routh_codegen::derive(quote_item(s));
@@ -31,7 +35,11 @@ fn expansions_match_snapshots() {
     let mut checked = 0;
     for entry in std::fs::read_dir(&dir).expect("examples/expanded") {
         let path = entry.expect("entry").path();
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string();
+        let name = path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or_default()
+            .to_string();
         if !name.ends_with(".rs") || name.ends_with(".expanded.rs") {
             continue;
         }

@@ -16,7 +16,12 @@ fn random_gamma(rng: &mut ChaCha8Rng) -> Vector3<f64> {
     test_models::random_unit_vector(rng) * rng.gen_range(0.5..1.5)
 }
 
-fn check_lagrangian<G: Lagrangian, H: Lagrangian>(gen: &G, reference: &H, rng: &mut ChaCha8Rng, tol: f64) -> f64 {
+fn check_lagrangian<G: Lagrangian, H: Lagrangian>(
+    gen: &G,
+    reference: &H,
+    rng: &mut ChaCha8Rng,
+    tol: f64,
+) -> f64 {
     let mut worst = 0.0f64;
     for _ in 0..POINTS {
         let w = test_models::random_vector(rng, 2.0);
@@ -30,23 +35,54 @@ fn check_lagrangian<G: Lagrangian, H: Lagrangian>(gen: &G, reference: &H, rng: &
         let terms_l = dl.norm() * w.norm() + e_ref.abs();
         let terms_p = dl.norm() * g.norm();
         let checks: [(&str, Vec<f64>, Vec<f64>, f64); 7] = [
-            ("L", s(gen.lagrangian(&w, &g)), s(reference.lagrangian(&w, &g)), terms_l),
+            (
+                "L",
+                s(gen.lagrangian(&w, &g)),
+                s(reference.lagrangian(&w, &g)),
+                terms_l,
+            ),
             ("dL/dω", v(gen.dl_domega(&w, &g)), v(dl), 1e-12),
-            ("dL/dγ", v(gen.dl_dgamma(&w, &g)), v(reference.dl_dgamma(&w, &g)), 1e-12),
-            ("J", m(gen.d2l_domega2(&g)), m(reference.d2l_domega2(&g)), 1e-12),
-            ("d2L/dωdγ", m(gen.d2l_domega_dgamma(&w, &g)), m(reference.d2l_domega_dgamma(&w, &g)), 1e-12),
+            (
+                "dL/dγ",
+                v(gen.dl_dgamma(&w, &g)),
+                v(reference.dl_dgamma(&w, &g)),
+                1e-12,
+            ),
+            (
+                "J",
+                m(gen.d2l_domega2(&g)),
+                m(reference.d2l_domega2(&g)),
+                1e-12,
+            ),
+            (
+                "d2L/dωdγ",
+                m(gen.d2l_domega_dgamma(&w, &g)),
+                m(reference.d2l_domega_dgamma(&w, &g)),
+                1e-12,
+            ),
             ("E", s(gen.energy(&w, &g)), s(e_ref), terms_e),
-            ("p", s(gen.cyclic_momentum(&w, &g)), s(reference.cyclic_momentum(&w, &g)), terms_p),
+            (
+                "p",
+                s(gen.cyclic_momentum(&w, &g)),
+                s(reference.cyclic_momentum(&w, &g)),
+                terms_p,
+            ),
         ];
         for (name, a, b, floor) in checks {
-            let e = close(&a, &b, tol, floor).unwrap_or_else(|e| panic!("{name} at ω={w:?} γ={g:?}: {e}"));
+            let e = close(&a, &b, tol, floor)
+                .unwrap_or_else(|e| panic!("{name} at ω={w:?} γ={g:?}: {e}"));
             worst = worst.max(e);
         }
     }
     worst
 }
 
-fn check_routhian<G: Routhian, H: Routhian + test_models::GenericModel>(gen: &G, reference: &H, rng: &mut ChaCha8Rng, tol: f64) -> f64 {
+fn check_routhian<G: Routhian, H: Routhian + test_models::GenericModel>(
+    gen: &G,
+    reference: &H,
+    rng: &mut ChaCha8Rng,
+    tol: f64,
+) -> f64 {
     let mut worst = 0.0f64;
     for _ in 0..POINTS {
         let w = test_models::random_vector(rng, 2.0);
@@ -56,13 +92,33 @@ fn check_routhian<G: Routhian, H: Routhian + test_models::GenericModel>(gen: &G,
         let nd = test_models::numdual_bundle(reference, &w, &g, p);
         let z = Vector3::zeros();
         let checks: [(&str, Vec<f64>, Vec<f64>); 19] = [
-            ("psi_dot", s(gen.psi_dot(&w, &g, p)), s(reference.psi_dot(&w, &g, p))),
-            ("R", s(gen.routhian(&w, &g, p)), s(reference.routhian(&w, &g, p))),
-            ("dR/dΩ", v(gen.dr_domega(&w, &g, p)), v(reference.dr_domega(&w, &g, p))),
-            ("dR/dγ", v(gen.dr_dgamma(&w, &g, p)), v(reference.dr_dgamma(&w, &g, p))),
+            (
+                "psi_dot",
+                s(gen.psi_dot(&w, &g, p)),
+                s(reference.psi_dot(&w, &g, p)),
+            ),
+            (
+                "R",
+                s(gen.routhian(&w, &g, p)),
+                s(reference.routhian(&w, &g, p)),
+            ),
+            (
+                "dR/dΩ",
+                v(gen.dr_domega(&w, &g, p)),
+                v(reference.dr_domega(&w, &g, p)),
+            ),
+            (
+                "dR/dγ",
+                v(gen.dr_dgamma(&w, &g, p)),
+                v(reference.dr_dgamma(&w, &g, p)),
+            ),
             ("dR/dp", s(gen.dr_dp(&w, &g, p)), s(nd.dr_dp)),
             ("d2R/dΩ2", m(gen.d2r_domega2(&w, &g, p)), m(nd.d2r_domega2)),
-            ("d2R/dΩdγ", m(gen.d2r_domega_dgamma(&w, &g, p)), m(nd.d2r_domega_dgamma)),
+            (
+                "d2R/dΩdγ",
+                m(gen.d2r_domega_dgamma(&w, &g, p)),
+                m(nd.d2r_domega_dgamma),
+            ),
             ("d2R/dγ2", m(gen.d2r_dgamma2(&w, &g, p)), m(nd.d2r_dgamma2)),
             ("bundle.R", s(b.routhian), s(nd.routhian)),
             ("bundle.psi_dot", s(b.psi_dot), s(nd.psi_dot)),
@@ -70,17 +126,37 @@ fn check_routhian<G: Routhian, H: Routhian + test_models::GenericModel>(gen: &G,
             ("bundle.dR/dγ", v(b.dr_dgamma), v(nd.dr_dgamma)),
             ("bundle.dR/dp", s(b.dr_dp), s(nd.dr_dp)),
             ("bundle.d2R/dΩ2", m(b.d2r_domega2), m(nd.d2r_domega2)),
-            ("bundle.d2R/dΩdγ", m(b.d2r_domega_dgamma), m(nd.d2r_domega_dgamma)),
+            (
+                "bundle.d2R/dΩdγ",
+                m(b.d2r_domega_dgamma),
+                m(nd.d2r_domega_dgamma),
+            ),
             ("bundle.d2R/dγ2", m(b.d2r_dgamma2), m(nd.d2r_dgamma2)),
-            ("U_r", s(gen.amended_potential(&g, p)), s(-reference.routhian(&z, &g, p))),
-            ("A", m(gen.gyroscopic_system(&g, p).a), m(reference.gyroscopic_system(&g, p).a)),
-            ("G", m(gen.gyroscopic_system(&g, p).g), m(reference.gyroscopic_system(&g, p).g)),
+            (
+                "U_r",
+                s(gen.amended_potential(&g, p)),
+                s(-reference.routhian(&z, &g, p)),
+            ),
+            (
+                "A",
+                m(gen.gyroscopic_system(&g, p).a),
+                m(reference.gyroscopic_system(&g, p).a),
+            ),
+            (
+                "G",
+                m(gen.gyroscopic_system(&g, p).g),
+                m(reference.gyroscopic_system(&g, p).g),
+            ),
         ];
         for (name, a, b) in checks {
-            let e = close(&a, &b, tol, 1e-12).unwrap_or_else(|e| panic!("{name} at Ω={w:?} γ={g:?} p={p}: {e}"));
+            let e = close(&a, &b, tol, 1e-12)
+                .unwrap_or_else(|e| panic!("{name} at Ω={w:?} γ={g:?} p={p}: {e}"));
             worst = worst.max(e);
         }
-        let c = (m(gen.gyroscopic_system(&g, p).c), m(reference.gyroscopic_system(&g, p).c));
+        let c = (
+            m(gen.gyroscopic_system(&g, p).c),
+            m(reference.gyroscopic_system(&g, p).c),
+        );
         let e = close(&c.0, &c.1, tol, 1e-12).unwrap_or_else(|e| panic!("C at γ={g:?} p={p}: {e}"));
         worst = worst.max(e);
     }
@@ -93,9 +169,17 @@ fn gyrostat_lagrangian_matches_numdual() {
     let mut worst = 0.0f64;
     for _ in 0..4 {
         let reference = test_models::Gyrostat::random(&mut rng);
-        worst = worst.max(check_lagrangian(&Gyrostat::from(&reference), &reference, &mut rng, 1e-12));
+        worst = worst.max(check_lagrangian(
+            &Gyrostat::from(&reference),
+            &reference,
+            &mut rng,
+            1e-12,
+        ));
     }
-    eprintln!("worst normwise relative error: {worst:e} over {} points", 4 * POINTS);
+    eprintln!(
+        "worst normwise relative error: {worst:e} over {} points",
+        4 * POINTS
+    );
 }
 
 #[test]
@@ -104,9 +188,17 @@ fn ellipsoid_lagrangian_matches_numdual() {
     let mut worst = 0.0f64;
     for _ in 0..4 {
         let reference = test_models::Ellipsoid::random(&mut rng);
-        worst = worst.max(check_lagrangian(&Ellipsoid::from(&reference), &reference, &mut rng, 1e-12));
+        worst = worst.max(check_lagrangian(
+            &Ellipsoid::from(&reference),
+            &reference,
+            &mut rng,
+            1e-12,
+        ));
     }
-    eprintln!("worst normwise relative error: {worst:e} over {} points", 4 * POINTS);
+    eprintln!(
+        "worst normwise relative error: {worst:e} over {} points",
+        4 * POINTS
+    );
 }
 
 #[test]
@@ -115,9 +207,17 @@ fn gyrostat_routhian_matches_numdual() {
     let mut worst = 0.0f64;
     for _ in 0..4 {
         let reference = test_models::Gyrostat::random(&mut rng);
-        worst = worst.max(check_routhian(&Gyrostat::from(&reference), &reference, &mut rng, 1e-10));
+        worst = worst.max(check_routhian(
+            &Gyrostat::from(&reference),
+            &reference,
+            &mut rng,
+            1e-10,
+        ));
     }
-    eprintln!("worst normwise relative error: {worst:e} over {} points", 4 * POINTS);
+    eprintln!(
+        "worst normwise relative error: {worst:e} over {} points",
+        4 * POINTS
+    );
 }
 
 #[test]
@@ -126,7 +226,15 @@ fn ellipsoid_routhian_matches_numdual() {
     let mut worst = 0.0f64;
     for _ in 0..4 {
         let reference = test_models::Ellipsoid::random(&mut rng);
-        worst = worst.max(check_routhian(&Ellipsoid::from(&reference), &reference, &mut rng, 1e-10));
+        worst = worst.max(check_routhian(
+            &Ellipsoid::from(&reference),
+            &reference,
+            &mut rng,
+            1e-10,
+        ));
     }
-    eprintln!("worst normwise relative error: {worst:e} over {} points", 4 * POINTS);
+    eprintln!(
+        "worst normwise relative error: {worst:e} over {} points",
+        4 * POINTS
+    );
 }

@@ -78,14 +78,30 @@ fn check_theorem_2<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
         assert_close("(∂R/∂Ω, γ) = p", b.dr_domega.dot(&g), p, 1e-12);
         let omega = w + b.psi_dot * g;
         assert_close("p_ψ of (9)", model.cyclic_momentum(&omega, &g), p, 1e-12);
-        assert_close("E' = E", b.dr_domega.dot(&w) - b.routhian, model.energy(&omega, &g), 1e-12);
+        assert_close(
+            "E' = E",
+            b.dr_domega.dot(&w) - b.routhian,
+            model.energy(&omega, &g),
+            1e-12,
+        );
         // ERRATA E6: (∂²R/∂Ω∂γ)ᵀγ = −∂R/∂Ω.
         let lhs = b.d2r_domega_dgamma.transpose() * g;
         close(lhs.as_slice(), (-b.dr_domega).as_slice(), 1e-12, 1.0).unwrap();
         // ERRATA E4: ∂²R/∂Ω² γ = 0, and R(Ω + sγ) = R(Ω) + s p_ψ.
-        close((b.d2r_domega2 * g).as_slice(), &[0.0; 3], 1e-12, b.d2r_domega2.amax()).unwrap();
+        close(
+            (b.d2r_domega2 * g).as_slice(),
+            &[0.0; 3],
+            1e-12,
+            b.d2r_domega2.amax(),
+        )
+        .unwrap();
         let s = 0.37;
-        assert_close("gauge", model.routhian(&(w + s * g), &g, p), b.routhian + s * p, 1e-12);
+        assert_close(
+            "gauge",
+            model.routhian(&(w + s * g), &g, p),
+            b.routhian + s * p,
+            1e-12,
+        );
         // (15): ∂R/∂p = −ψ̇.
         assert_close("(15)", b.dr_dp, -b.psi_dot, 1e-15);
     }
@@ -95,8 +111,14 @@ fn check_theorem_2<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
 fn theorem_2_and_errata_identities_hold() {
     let mut rng = ChaCha8Rng::seed_from_u64(12);
     for _ in 0..5 {
-        check_theorem_2(&Gyrostat::from(&test_models::Gyrostat::random(&mut rng)), &mut rng);
-        check_theorem_2(&Ellipsoid::from(&test_models::Ellipsoid::random(&mut rng)), &mut rng);
+        check_theorem_2(
+            &Gyrostat::from(&test_models::Gyrostat::random(&mut rng)),
+            &mut rng,
+        );
+        check_theorem_2(
+            &Ellipsoid::from(&test_models::Ellipsoid::random(&mut rng)),
+            &mut rng,
+        );
     }
 }
 
@@ -108,9 +130,16 @@ fn check_e5<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
         let scale = sys.a.amax().max(sys.g.amax()).max(sys.c.amax());
         // A, G, C all annihilate γ, so det(Aλ² + 2Gλ + C) ≡ 0 (ERRATA E5).
         for (name, x) in [("A", sys.a), ("G", sys.g), ("C", sys.c)] {
-            close((x * g).as_slice(), &[0.0; 3], 1e-12, scale).unwrap_or_else(|e| panic!("{name}γ: {e}"));
+            close((x * g).as_slice(), &[0.0; 3], 1e-12, scale)
+                .unwrap_or_else(|e| panic!("{name}γ: {e}"));
         }
-        close((sys.g + sys.g.transpose()).as_slice(), &[0.0; 9], 1e-14, scale).unwrap();
+        close(
+            (sys.g + sys.g.transpose()).as_slice(),
+            &[0.0; 9],
+            1e-14,
+            scale,
+        )
+        .unwrap();
         for _ in 0..5 {
             let l = rng.gen_range(-3.0..3.0);
             let f = (sys.a * l * l + sys.g * (2.0 * l) + sys.c).determinant();
@@ -124,7 +153,13 @@ fn check_e5<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
 fn three_by_three_characteristic_polynomial_vanishes() {
     let mut rng = ChaCha8Rng::seed_from_u64(13);
     for _ in 0..5 {
-        check_e5(&Gyrostat::from(&test_models::Gyrostat::random(&mut rng)), &mut rng);
-        check_e5(&Ellipsoid::from(&test_models::Ellipsoid::random(&mut rng)), &mut rng);
+        check_e5(
+            &Gyrostat::from(&test_models::Gyrostat::random(&mut rng)),
+            &mut rng,
+        );
+        check_e5(
+            &Ellipsoid::from(&test_models::Ellipsoid::random(&mut rng)),
+            &mut rng,
+        );
     }
 }

@@ -154,7 +154,11 @@ impl Ellipsoid {
     /// module documentation, as `p_ψ = √P*` (`None` when the spin is not of degree 2 for large
     /// `p_ψ` or `Δ` has no positive root with `c₂ > 0`).
     pub fn spin_threshold(&self, sigma: f64) -> Option<f64> {
-        let (i1, i2, i3) = (self.inertia[(0, 0)], self.inertia[(1, 1)], self.inertia[(2, 2)]);
+        let (i1, i2, i3) = (
+            self.inertia[(0, 0)],
+            self.inertia[(1, 1)],
+            self.inertia[(2, 2)],
+        );
         let mg = self.mass * self.g;
         let (al1, al2) = (mg * self.ell(sigma, 0), mg * self.ell(sigma, 1));
         let (be1, be2) = ((i1 - i3) / (i3 * i3), (i2 - i3) / (i3 * i3));

@@ -31,11 +31,11 @@ pub struct Gyrostat {
 impl Gyrostat {
     /// A Kelvin gyrostat, `a = K`: an asymmetric heavy body (`I = diag(2, 2.5, 1.5)`, centre of
     /// mass on `e₃` at `l = 0.1`, `m = 1`, `g = 9.81`) carrying a rotor of momentum
-    /// `K = 0.8 e₃`.
+    /// `K = 3.5 e₃` along the axis through the centre of mass.
     pub fn kelvin() -> Self {
         Gyrostat {
             inertia: Matrix3::from_diagonal(&Vector3::new(2.0, 2.5, 1.5)),
-            rotor: Vector3::new(0.0, 0.0, 0.8),
+            rotor: Vector3::new(0.0, 0.0, 3.5),
             coupling: Matrix3::zeros(),
             com: Vector3::new(0.0, 0.0, 0.1),
             mass: 1.0,
@@ -49,9 +49,23 @@ impl Gyrostat {
     pub fn coupled() -> Self {
         Gyrostat {
             rotor: Vector3::zeros(),
-            coupling: Matrix3::new(0.5, 0.4, 0.0, -0.4, 0.2, 0.0, 0.0, 0.0, 0.8),
+            coupling: Matrix3::new(1.0, 0.8, 0.0, -0.8, 0.4, 0.0, 0.0, 0.0, 2.0),
             ..Gyrostat::kelvin()
         }
+    }
+
+    /// `m g l` for a centre of mass on the `e₃` axis at `l = com₃`.
+    pub fn mgl(&self) -> f64 {
+        self.mass * self.g * self.com.z
+    }
+
+    /// The Kelvin gyrostat at rest upright (`γ = e₃`, `ω = 0`, so `p_ψ = K₃` and `ψ̇ = 0`) with
+    /// `K = K₃e₃`, the centre of mass above the fixed point: linearising `Iω̇ = K × ω + torque`
+    /// with `θ̈ᵢ` the small tilts gives `I₁θ̈₁ + K₃θ̇₂ − mglθ₁ = 0`, `I₂θ̈₂ − K₃θ̇₁ − mglθ₂ = 0`,
+    /// `I₁I₂λ⁴ + (K₃² − (I₁ + I₂)mgl)λ² + (mgl)² = 0`: all roots imaginary iff
+    /// `K₃² − (I₁ + I₂)mgl > 2√(I₁I₂) mgl`, i.e. `|K₃| > √(mgl)(√I₁ + √I₂)`.
+    pub fn rest_rotor_threshold(&self) -> f64 {
+        self.mgl().sqrt() * (self.inertia[(0, 0)].sqrt() + self.inertia[(1, 1)].sqrt())
     }
 
     /// `(a(γ), γ) = (K, γ) + (Bγ, γ)`.

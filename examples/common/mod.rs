@@ -71,7 +71,12 @@ pub fn verdict_at<M: Routhian>(
 /// Bisection for the point where the predicate `pred` changes value between `lo` and `hi`
 /// (`pred(lo) != pred(hi)` is required, otherwise `None`). Stops when the bracket is shorter than
 /// `rel_tol · |hi|`; returns the midpoint of the final bracket.
-pub fn bisect<F>(mut lo: f64, mut hi: f64, rel_tol: f64, mut pred: F) -> Result<Option<f64>, RouthError>
+pub fn bisect<F>(
+    mut lo: f64,
+    mut hi: f64,
+    rel_tol: f64,
+    mut pred: F,
+) -> Result<Option<f64>, RouthError>
 where
     F: FnMut(f64) -> Result<bool, RouthError>,
 {
@@ -145,7 +150,15 @@ pub const VERDICTS: [Stability; 4] = [
 
 /// `γ` as `(+0.123456, −0.000000, +0.992345)`.
 pub fn fmt_vec(v: &Vector3<f64>) -> String {
-    format!("({:+.6}, {:+.6}, {:+.6})", v.x, v.y, v.z)
+    let c = |x: f64| {
+        let s = format!("{x:+.6}");
+        if s == "-0.000000" {
+            "+0.000000".to_string()
+        } else {
+            s
+        }
+    };
+    format!("({}, {}, {})", c(v.x), c(v.y), c(v.z))
 }
 
 /// The angle between the unit vector `gamma` and the body axis `axis` (a unit vector), in
@@ -169,26 +182,42 @@ pub fn num(x: f64, digits: usize) -> String {
     }
 }
 
+/// Display width of `s`: characters other than combining marks (so that `ψ̇` counts as one).
+pub fn display_width(s: &str) -> usize {
+    s.chars()
+        .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+        .count()
+}
+
+/// `s` right-aligned in `width` display columns.
+pub fn rpad(s: &str, width: usize) -> String {
+    format!("{}{s}", " ".repeat(width.saturating_sub(display_width(s))))
+}
+
+/// `s` left-aligned in `width` display columns.
+pub fn lpad(s: &str, width: usize) -> String {
+    format!("{s}{}", " ".repeat(width.saturating_sub(display_width(s))))
+}
+
 /// Prints a table of classified steady motions: one row per motion, with the angle between γ
 /// and `axis` (named `axis_name`), ψ̇, U_r, E, whether isolated, the eigenvalues of the
 /// restricted second variation, the degree of instability and the verdict.
 pub fn print_steady_table(rows: &[Classified], axis: &Vector3<f64>, axis_name: &str) {
     println!(
-        "  {:>8}  {:<33}  {:>8}  {:>11}  {:>11}  {:>11}  {:>25}  {:>3}  {:<25}",
-        "p_ψ",
-        "γ (body frame)",
-        axis_name,
-        "ψ̇",
-        "U_r",
-        "E",
-        "restricted Hessian eigs",
-        "deg",
-        "verdict"
+        "  {}  {}  {}  {}  {}  {}  {}  {}  verdict",
+        rpad("p_ψ", 8),
+        lpad("γ (body frame)", 33),
+        rpad(axis_name, 8),
+        rpad("ψ̇", 10),
+        rpad("U_r", 11),
+        rpad("E", 11),
+        rpad("restricted Hessian eigs", 23),
+        rpad("deg", 3),
     );
     for r in rows {
         let [k1, k2] = r.report.restricted_hessian_eigenvalues;
         println!(
-            "  {:>8.4}  {:<33}  {:>7.2}°  {:>+11.5}  {:>+11.5}  {:>+11.5}  {:>+12.4e} {:>+12.4e}  {:>3}  {:<25}{}",
+            "  {:>8.4}  {:<33}  {:>7.2}°  {:>+10.5}  {:>+11.5}  {:>+11.5}  {:>+11.5} {:>+11.5}  {:>3}  {}{}",
             r.p_psi,
             fmt_vec(&r.motion.gamma),
             angle_deg(&r.motion.gamma, axis),
@@ -199,7 +228,7 @@ pub fn print_steady_table(rows: &[Classified], axis: &Vector3<f64>, axis_name: &
             k2,
             r.report.degree_of_instability,
             verdict_label(r.report.verdict),
-            if r.motion.isolated { "" } else { " (circle)" }
+            if r.motion.isolated { "" } else { " (one of a circle)" }
         );
     }
 }

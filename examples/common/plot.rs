@@ -36,7 +36,12 @@ pub struct Series {
 
 impl Series {
     /// A new series.
-    pub fn new(name: impl Into<String>, color: RGBColor, style: Style, points: Vec<(f64, f64)>) -> Self {
+    pub fn new(
+        name: impl Into<String>,
+        color: RGBColor,
+        style: Style,
+        points: Vec<(f64, f64)>,
+    ) -> Self {
         Series {
             name: name.into(),
             color,
@@ -69,7 +74,11 @@ pub struct Figure {
 
 impl Figure {
     /// An empty figure with a title and axis labels.
-    pub fn new(title: impl Into<String>, x_label: impl Into<String>, y_label: impl Into<String>) -> Self {
+    pub fn new(
+        title: impl Into<String>,
+        x_label: impl Into<String>,
+        y_label: impl Into<String>,
+    ) -> Self {
         Figure {
             title: title.into(),
             x_label: x_label.into(),
@@ -95,7 +104,11 @@ impl Figure {
         if !lo.is_finite() {
             return 0.0..1.0;
         }
-        let pad = if hi > lo { 0.05 * (hi - lo) } else { 0.5 * lo.abs().max(1.0) };
+        let pad = if hi > lo {
+            0.05 * (hi - lo)
+        } else {
+            0.5 * lo.abs().max(1.0)
+        };
         (lo - pad)..(hi + pad)
     }
 
@@ -106,7 +119,10 @@ impl Figure {
             .x_range
             .clone()
             .unwrap_or_else(|| self.data_range(|p| p.0, &vx));
-        let yr = self.y_range.clone().unwrap_or_else(|| self.data_range(|p| p.1, &[]));
+        let yr = self
+            .y_range
+            .clone()
+            .unwrap_or_else(|| self.data_range(|p| p.1, &[]));
 
         let root = SVGBackend::new(path, (width, height)).into_drawing_area();
         root.fill(&WHITE)?;
@@ -155,9 +171,10 @@ impl Figure {
                         .legend(move |(x, y)| Circle::new((x + 10, y), r + 1, color.filled()));
                     continue;
                 }
-                Style::Line(w) => {
-                    chart.draw_series(LineSeries::new(s.points.iter().copied(), color.stroke_width(w)))?
-                }
+                Style::Line(w) => chart.draw_series(LineSeries::new(
+                    s.points.iter().copied(),
+                    color.stroke_width(w),
+                ))?,
                 Style::Dashed(w) => chart.draw_series(DashedLineSeries::new(
                     s.points.iter().copied(),
                     8,
@@ -208,7 +225,12 @@ pub fn verdict_series(points: &[(Stability, f64, f64)], radius: u32) -> Vec<Seri
                 .map(|p| (p.1, p.2))
                 .collect();
             (!pts.is_empty()).then(|| {
-                Series::new(verdict_label(v), verdict_color(v), Style::Points(radius), pts)
+                Series::new(
+                    verdict_label(v),
+                    verdict_color(v),
+                    Style::Points(radius),
+                    pts,
+                )
             })
         })
         .collect()

@@ -54,7 +54,11 @@ pub enum Item {
     /// `let NAME = EXPR`
     Let { name: syn::Ident, expr: syn::Expr },
     /// `kinetic = EXPR`, `linear = EXPR`, `potential = EXPR`
-    Term { term: Term, key: syn::Ident, expr: syn::Expr },
+    Term {
+        term: Term,
+        key: syn::Ident,
+        expr: syn::Expr,
+    },
     /// `crate = "path"`
     Crate { key: Span, path: syn::Path },
 }
@@ -73,10 +77,19 @@ pub struct Input {
 pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
     let mut items = Vec::new();
     let mut has_attr = false;
-    for attr in input.attrs.iter().filter(|a| a.path().is_ident("lagrangian")) {
+    for attr in input
+        .attrs
+        .iter()
+        .filter(|a| a.path().is_ident("lagrangian"))
+    {
         has_attr = true;
         match &attr.meta {
-            syn::Meta::List(list) => parse_items(cx, list.tokens.clone(), list.delimiter.span().join(), &mut items),
+            syn::Meta::List(list) => parse_items(
+                cx,
+                list.tokens.clone(),
+                list.delimiter.span().join(),
+                &mut items,
+            ),
             other => cx.error_spanned_by(
                 other,
                 "expected `#[lagrangian(kinetic = ..., linear = ..., potential = ...)]`",
@@ -85,7 +98,11 @@ pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
     }
     let fields = match &input.data {
         syn::Data::Struct(s) => match &s.fields {
-            syn::Fields::Named(named) => named.named.iter().filter_map(|f| parse_field(cx, f)).collect(),
+            syn::Fields::Named(named) => named
+                .named
+                .iter()
+                .filter_map(|f| parse_field(cx, f))
+                .collect(),
             syn::Fields::Unnamed(_) | syn::Fields::Unit => {
                 // Reported by `check::struct_has_named_fields`.
                 Vec::new()
@@ -93,7 +110,13 @@ pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
         },
         _ => Vec::new(),
     };
-    Input { ident: input.ident.clone(), generics: input.generics.clone(), fields, items, has_attr }
+    Input {
+        ident: input.ident.clone(),
+        generics: input.generics.clone(),
+        fields,
+        items,
+        has_attr,
+    }
 }
 
 fn parse_field(cx: &Ctxt, f: &syn::Field) -> Option<Field> {
@@ -120,7 +143,13 @@ fn parse_field(cx: &Ctxt, f: &syn::Field) -> Option<Field> {
             ),
         }
     }
-    Some(Field { ident, kind: field_kind(&f.ty), ty: f.ty.clone(), skip, symmetric })
+    Some(Field {
+        ident,
+        kind: field_kind(&f.ty),
+        ty: f.ty.clone(),
+        skip,
+        symmetric,
+    })
 }
 
 /// `f64`, `Vector3<f64>` or `Matrix3<f64>` under any path spelling.
@@ -156,13 +185,19 @@ fn split_commas(tokens: TokenStream) -> Vec<TokenStream> {
         }
     }
     out.push(cur);
-    out.into_iter().filter(|c| !c.is_empty()).map(|c| c.into_iter().collect()).collect()
+    out.into_iter()
+        .filter(|c| !c.is_empty())
+        .map(|c| c.into_iter().collect())
+        .collect()
 }
 
 fn parse_items(cx: &Ctxt, tokens: TokenStream, span: Span, items: &mut Vec<Item>) {
     let chunks = split_commas(tokens);
     if chunks.is_empty() {
-        cx.error_at(span, "empty `#[lagrangian()]`: at least `kinetic = EXPR` is required");
+        cx.error_at(
+            span,
+            "empty `#[lagrangian()]`: at least `kinetic = EXPR` is required",
+        );
     }
     for chunk in chunks {
         match syn::parse2::<Item>(chunk) {
@@ -186,7 +221,10 @@ impl Parse for Item {
             input.parse::<syn::Token![=]>()?;
             let lit: syn::LitStr = input.parse()?;
             let path = lit.parse_with(syn::Path::parse_mod_style).map_err(|_| {
-                syn::Error::new(lit.span(), format!("`crate = \"{}\"` is not a path", lit.value()))
+                syn::Error::new(
+                    lit.span(),
+                    format!("`crate = \"{}\"` is not a path", lit.value()),
+                )
             })?;
             return Ok(Item::Crate { key, path });
         }
@@ -211,7 +249,10 @@ impl Parse for Item {
         };
         let eq: Option<syn::Token![=]> = input.parse()?;
         if eq.is_none() {
-            return Err(syn::Error::new(key.span(), format!("expected `{} = EXPR`", term.name())));
+            return Err(syn::Error::new(
+                key.span(),
+                format!("expected `{} = EXPR`", term.name()),
+            ));
         }
         let expr: syn::Expr = input.parse()?;
         let _ = expr.span();

@@ -117,9 +117,20 @@ fn items_are_unique(cx: &Ctxt, input: &Input) {
 /// A body without kinetic energy has no dynamics: J(γ) = 0 cannot be inverted.
 fn kinetic_is_present(cx: &Ctxt, input: &Input) {
     if input.has_attr
-        && !input.items.iter().any(|i| matches!(i, Item::Term { term: Term::Kinetic, .. }))
+        && !input.items.iter().any(|i| {
+            matches!(
+                i,
+                Item::Term {
+                    term: Term::Kinetic,
+                    ..
+                }
+            )
+        })
     {
-        cx.error_spanned_by(&input.ident, "missing `kinetic = EXPR` in `#[lagrangian(...)]`");
+        cx.error_spanned_by(
+            &input.ident,
+            "missing `kinetic = EXPR` in `#[lagrangian(...)]`",
+        );
     }
 }
 
@@ -128,14 +139,19 @@ fn kinetic_is_present(cx: &Ctxt, input: &Input) {
 fn lets_are_unique_and_do_not_shadow(cx: &Ctxt, input: &Input) {
     let mut lets: Vec<String> = vec![];
     for item in &input.items {
-        let Item::Let { name, .. } = item else { continue };
+        let Item::Let { name, .. } = item else {
+            continue;
+        };
         let s = name.to_string();
         if RESERVED.contains(&s.as_str()) {
             cx.error_spanned_by(name, format!("`let {s}` would shadow the DSL's `{s}`"));
         } else if input.fields.iter().any(|f| f.ident == s) {
             cx.error_spanned_by(name, format!("`let {s}` would shadow the field `{s}`"));
         } else if lets.contains(&s) {
-            cx.error_spanned_by(name, format!("`{s}` is already defined by an earlier `let`"));
+            cx.error_spanned_by(
+                name,
+                format!("`{s}` is already defined by an earlier `let`"),
+            );
         }
         lets.push(s);
     }
@@ -161,7 +177,10 @@ pub fn term_degree(
     let d = routh_symbolic::degree(g, id, omega);
     let zero = g.is_const(id, 0.0);
     if name == "kinetic" && zero {
-        cx.error_spanned_by(expr, "`kinetic` is identically zero: a rigid body needs kinetic energy");
+        cx.error_spanned_by(
+            expr,
+            "`kinetic` is identically zero: a rigid body needs kinetic energy",
+        );
         return;
     }
     if d == Degree::Homogeneous(want) || (zero && want != 2) {

@@ -18,7 +18,9 @@ impl Ctxt {
 
     /// Records an error spanned at `tokens`.
     pub fn error_spanned_by<T: quote::ToTokens, M: Display>(&self, tokens: T, msg: M) {
-        self.errors.borrow_mut().push(syn::Error::new_spanned(tokens, msg));
+        self.errors
+            .borrow_mut()
+            .push(syn::Error::new_spanned(tokens, msg));
     }
 
     /// Records an error at `span`.

@@ -225,10 +225,7 @@ impl Emitter<'_> {
             }
         }
         let mut stmts = TokenStream::new();
-        for i in 0..n {
-            if !emit[i] {
-                continue;
-            }
+        for (i, _) in emit.iter().enumerate().filter(|(_, &e)| e) {
             let id = Id::from_index(i);
             match g.node(id) {
                 Node::Const(_) => {}
@@ -290,7 +287,14 @@ enum Ret {
 }
 
 impl Emitter<'_> {
-    fn method(&self, name: &str, args: TokenStream, ret_ty: &TokenStream, ret: Ret, inputs: Inputs) -> TokenStream {
+    fn method(
+        &self,
+        name: &str,
+        args: TokenStream,
+        ret_ty: &TokenStream,
+        ret: Ret,
+        inputs: Inputs,
+    ) -> TokenStream {
         let k = self.krate;
         let ids = match &ret {
             Ret::Scalar(s) => vec![*s],
@@ -323,13 +327,31 @@ impl Emitter<'_> {
         let gonly = quote!(__gamma: &#v3);
         let l = Inputs::Lagrangian;
         let ms = [
-            self.method("lagrangian", wg.clone(), &f64t, Ret::Scalar(o.lagrangian), l),
+            self.method(
+                "lagrangian",
+                wg.clone(),
+                &f64t,
+                Ret::Scalar(o.lagrangian),
+                l,
+            ),
             self.method("dl_domega", wg.clone(), v3, Ret::Vector(o.dl_domega), l),
             self.method("dl_dgamma", wg.clone(), v3, Ret::Vector(o.dl_dgamma), l),
             self.method("d2l_domega2", gonly, m3, Ret::Matrix(o.d2l_domega2), l),
-            self.method("d2l_domega_dgamma", wg.clone(), m3, Ret::Matrix(o.d2l_domega_dgamma), l),
+            self.method(
+                "d2l_domega_dgamma",
+                wg.clone(),
+                m3,
+                Ret::Matrix(o.d2l_domega_dgamma),
+                l,
+            ),
             self.method("energy", wg.clone(), &f64t, Ret::Scalar(o.energy), l),
-            self.method("cyclic_momentum", wg, &f64t, Ret::Scalar(o.cyclic_momentum), l),
+            self.method(
+                "cyclic_momentum",
+                wg,
+                &f64t,
+                Ret::Scalar(o.cyclic_momentum),
+                l,
+            ),
         ];
         quote!(#(#ms)*)
     }
@@ -350,9 +372,21 @@ impl Emitter<'_> {
             self.method("dr_dgamma", a.clone(), v3, Ret::Vector(o.dr_dgamma), r),
             self.method("dr_dp", a.clone(), &f64t, Ret::Scalar(o.dr_dp), r),
             self.method("d2r_domega2", a.clone(), m3, Ret::Matrix(o.d2r_domega2), r),
-            self.method("d2r_domega_dgamma", a.clone(), m3, Ret::Matrix(o.d2r_domega_dgamma), r),
+            self.method(
+                "d2r_domega_dgamma",
+                a.clone(),
+                m3,
+                Ret::Matrix(o.d2r_domega_dgamma),
+                r,
+            ),
             self.method("d2r_dgamma2", a.clone(), m3, Ret::Matrix(o.d2r_dgamma2), r),
-            self.method("amended_potential", ga.clone(), &f64t, Ret::Scalar(o.amended_potential), r),
+            self.method(
+                "amended_potential",
+                ga.clone(),
+                &f64t,
+                Ret::Scalar(o.amended_potential),
+                r,
+            ),
         ];
         // bundle: every output from one straight-line body.
         let mut ids = vec![o.routhian, o.psi_dot];
@@ -390,7 +424,11 @@ impl Emitter<'_> {
         ids.extend(flat_m(&o.gyro_g));
         ids.extend(flat_m(&o.gyro_c));
         let (stmts, outs) = self.body(&ids, r);
-        let (ma, mg, mc) = (mat_tokens(k, &outs[0..9]), mat_tokens(k, &outs[9..18]), mat_tokens(k, &outs[18..27]));
+        let (ma, mg, mc) = (
+            mat_tokens(k, &outs[0..9]),
+            mat_tokens(k, &outs[9..18]),
+            mat_tokens(k, &outs[18..27]),
+        );
         ms.push(quote! {
             #[inline]
             fn gyroscopic_system(&self, #ga) -> #k::__private::GyroscopicSystem {

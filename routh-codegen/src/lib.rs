@@ -44,7 +44,10 @@ pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
     let lowered = lower::lower(&cx, &input);
     cx.check()?;
     let Some(mut lowered) = lowered else {
-        return Err(syn::Error::new_spanned(&di.ident, "the Lagrangian could not be lowered"));
+        return Err(syn::Error::new_spanned(
+            &di.ident,
+            "the Lagrangian could not be lowered",
+        ));
     };
     let outputs = reduce::reduce(&mut lowered);
     Ok(Model { lowered, outputs })
@@ -61,7 +64,10 @@ fn crate_path(m: &Model) -> TokenStream {
 pub fn expand(di: &syn::DeriveInput) -> Result<TokenStream, syn::Error> {
     let model = analyse(di)?;
     let krate = crate_path(&model);
-    let e = emit::Emitter { sym: &model.lowered.sym, krate: &krate };
+    let e = emit::Emitter {
+        sym: &model.lowered.sym,
+        krate: &krate,
+    };
     let lag = e.lagrangian_methods(&model.outputs);
     let routh = e.routhian_methods(&model.outputs);
     let ident = &di.ident;

@@ -88,7 +88,11 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
         let mut slot = |g: &mut Graph, label: String, access: Access| {
             let id = g.var(label);
             let var = g.as_var(id).unwrap_or(u32::MAX);
-            params.push(Param { var, field: f.ident.clone(), access });
+            params.push(Param {
+                var,
+                field: f.ident.clone(),
+                access,
+            });
             id
         };
         let value = match kind {
@@ -98,19 +102,29 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
             })),
             FieldKind::Matrix if f.symmetric.is_some() => {
                 // One slot per entry of the upper triangle, shared by its mirror image.
-                let mut m = [[None; 3]; 3];
-                for i in 0..3 {
-                    for j in i..3 {
-                        let id = slot(&mut g, format!("{name}[({i},{j})]"), Access::Entry(i, j));
-                        m[i][j] = Some(id);
-                        m[j][i] = Some(id);
-                    }
-                }
+                let upper: Vec<(usize, usize, Id)> = (0..3)
+                    .flat_map(|i| (i..3).map(move |j| (i, j)))
+                    .map(|(i, j)| {
+                        (
+                            i,
+                            j,
+                            slot(&mut g, format!("{name}[({i},{j})]"), Access::Entry(i, j)),
+                        )
+                    })
+                    .collect();
+                let at = |i: usize, j: usize| {
+                    let (a, b) = (i.min(j), i.max(j));
+                    upper.iter().find(|e| e.0 == a && e.1 == b).map(|e| e.2)
+                };
                 let z = g.zero();
-                Value::Matrix(m.map(|row| row.map(|x| x.unwrap_or(z))))
+                Value::Matrix(std::array::from_fn(|i| {
+                    std::array::from_fn(|j| at(i, j).unwrap_or(z))
+                }))
             }
             FieldKind::Matrix => Value::Matrix(std::array::from_fn(|i| {
-                std::array::from_fn(|j| slot(&mut g, format!("{name}[({i},{j})]"), Access::Entry(i, j)))
+                std::array::from_fn(|j| {
+                    slot(&mut g, format!("{name}[({i},{j})]"), Access::Entry(i, j))
+                })
             })),
         };
         names.insert(name, Binding::Value(value));
@@ -123,7 +137,14 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
             _ => None,
         })
         .collect();
-    let mut l = Lowerer { cx, g, names, later_lets, gamma, field_names };
+    let mut l = Lowerer {
+        cx,
+        g,
+        names,
+        later_lets,
+        gamma,
+        field_names,
+    };
     let mut terms: HashMap<&'static str, (Id, &syn::Expr)> = HashMap::new();
     let mut krate = None;
     for item in &input.items {
@@ -145,7 +166,11 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
                     }
                     other => cx.error_spanned_by(
                         expr,
-                        format!("`{}` must be a scalar, found {}", term.name(), other.shape()),
+                        format!(
+                            "`{}` must be a scalar, found {}",
+                            term.name(),
+                            other.shape()
+                        ),
                     ),
                 }
             }
@@ -157,7 +182,13 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
     let kinetic = terms.get(Term::Kinetic.name()).map(|t| t.0);
     let linear = terms.get(Term::Linear.name()).map_or(zero, |t| t.0);
     let potential = terms.get(Term::Potential.name()).map_or(zero, |t| t.0);
-    let sym = Symbols { graph: g, omega, gamma, p_psi, params };
+    let sym = Symbols {
+        graph: g,
+        omega,
+        gamma,
+        p_psi,
+        params,
+    };
     let omega_vars = sym.omega_vars();
     for (name, (id, expr)) in &terms {
         crate::check::term_degree(cx, &sym.graph, name, *id, expr, &omega_vars);
@@ -165,13 +196,26 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
     if cx.has_errors() {
         return None;
     }
-    Some(Lowered { kinetic: kinetic?, linear, potential, sym, krate })
+    Some(Lowered {
+        kinetic: kinetic?,
+        linear,
+        potential,
+        sym,
+        krate,
+    })
 }
 
 fn int_lit(e: &syn::Expr) -> Option<i64> {
     match e {
-        syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Int(i), .. }) => i.base10_parse().ok(),
-        syn::Expr::Unary(syn::ExprUnary { op: syn::UnOp::Neg(_), expr, .. }) => int_lit(expr).map(|v| -v),
+        syn::Expr::Lit(syn::ExprLit {
+            lit: syn::Lit::Int(i),
+            ..
+        }) => i.base10_parse().ok(),
+        syn::Expr::Unary(syn::ExprUnary {
+            op: syn::UnOp::Neg(_),
+            expr,
+            ..
+        }) => int_lit(expr).map(|v| -v),
         syn::Expr::Paren(p) => int_lit(&p.expr),
         syn::Expr::Group(p) => int_lit(&p.expr),
         _ => None,
@@ -193,7 +237,11 @@ impl Lowerer<'_> {
         None
     }
 
-    fn shaped(&self, tokens: impl quote::ToTokens, r: Result<Value, shape::ShapeError>) -> Option<Value> {
+    fn shaped(
+        &self,
+        tokens: impl quote::ToTokens,
+        r: Result<Value, shape::ShapeError>,
+    ) -> Option<Value> {
         match r {
             Ok(v) => Some(v),
             Err(e) => self.err(tokens, e),
@@ -205,9 +253,10 @@ impl Lowerer<'_> {
         match self.names.get(&s) {
             Some(Binding::Value(v)) => Some(*v),
             Some(Binding::Poisoned) => None,
-            None if self.later_lets.contains(&s) => {
-                self.err(ident, format!("`{s}` is used before its `let`; move the `let {s} = ...` item first"))
-            }
+            None if self.later_lets.contains(&s) => self.err(
+                ident,
+                format!("`{s}` is used before its `let`; move the `let {s} = ...` item first"),
+            ),
             None => {
                 let mut known: Vec<&str> = vec!["omega", "gamma"];
                 known.extend(self.field_names.iter().map(String::as_str));
@@ -302,13 +351,22 @@ impl Lowerer<'_> {
         }
     }
 
-    fn arity(&self, tokens: impl quote::ToTokens, name: &str, got: usize, want: usize) -> Option<()> {
+    fn arity(
+        &self,
+        tokens: impl quote::ToTokens,
+        name: &str,
+        got: usize,
+        want: usize,
+    ) -> Option<()> {
         if got == want {
             Some(())
         } else {
             self.cx.error_spanned_by(
                 tokens,
-                format!("`{name}` takes {want} argument{}, found {got}", if want == 1 { "" } else { "s" }),
+                format!(
+                    "`{name}` takes {want} argument{}, found {got}",
+                    if want == 1 { "" } else { "s" }
+                ),
             );
             None
         }
@@ -335,8 +393,8 @@ impl Lowerer<'_> {
                     _ => shape::component_mul(g, &recv, &a),
                 }
             }
-            "norm" | "norm_squared" | "transpose" | "trace" | "sqrt" | "sin" | "cos" | "tan" | "exp"
-            | "ln" | "recip" | "abs" => {
+            "norm" | "norm_squared" | "transpose" | "trace" | "sqrt" | "sin" | "cos" | "tan"
+            | "exp" | "ln" | "recip" | "abs" => {
                 self.arity(&m.method, &name, n, 0)?;
                 let recv = recv?;
                 let g = &mut self.g;
@@ -358,7 +416,10 @@ impl Lowerer<'_> {
             "powi" => {
                 self.arity(&m.method, &name, n, 1)?;
                 let Some(k) = int_lit(args[0]).filter(|k| k.abs() <= 64) else {
-                    return self.err(args[0], "`powi` takes an integer literal exponent between -64 and 64");
+                    return self.err(
+                        args[0],
+                        "`powi` takes an integer literal exponent between -64 and 64",
+                    );
                 };
                 let recv = recv?;
                 shape::scalar_func(&mut self.g, &name, &recv, |g, s| g.powi(s, k as i32))
@@ -373,17 +434,28 @@ impl Lowerer<'_> {
                     Err(err) => Err(err),
                 }
             }
-            _ => return self.err(&m.method, format!("unsupported method `{name}`: the Lagrangian can use {METHODS}")),
+            _ => {
+                return self.err(
+                    &m.method,
+                    format!("unsupported method `{name}`: the Lagrangian can use {METHODS}"),
+                )
+            }
         };
         self.shaped(e, r)
     }
 
     fn call(&mut self, e: &syn::Expr, c: &syn::ExprCall) -> Option<Value> {
         let syn::Expr::Path(p) = &*c.func else {
-            return self.err(&c.func, "unsupported call: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`");
+            return self.err(
+                &c.func,
+                "unsupported call: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`",
+            );
         };
         let Some(f) = p.path.get_ident() else {
-            return self.err(&c.func, "unsupported call: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`");
+            return self.err(
+                &c.func,
+                "unsupported call: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`",
+            );
         };
         let name = f.to_string();
         let args: Vec<&syn::Expr> = c.args.iter().map(strip_ref).collect();

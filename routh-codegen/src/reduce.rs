@@ -200,7 +200,8 @@ pub fn reduce(m: &mut Lowered) -> Outputs {
     let r0 = subst_vec(g, &rest, &at_rest);
     let amended_potential = g.neg(r0[0]);
     let v3 = |o: usize| -> V3 { [r0[o], r0[o + 1], r0[o + 2]] };
-    let m3 = |o: usize| -> M3 { std::array::from_fn(|i| std::array::from_fn(|k| r0[o + 3 * i + k])) };
+    let m3 =
+        |o: usize| -> M3 { std::array::from_fn(|i| std::array::from_fn(|k| r0[o + 3 * i + k])) };
     let (dw0, dg0) = (v3(1), v3(4));
     let (a0, mx0, h0) = (m3(7), m3(16), m3(25));
     let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dw0, &dg0, &mx0, &h0);

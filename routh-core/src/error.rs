@@ -13,7 +13,10 @@ pub enum RouthError {
     NonUnitGamma { norm: f64, tol: f64 },
     /// The kinetic form J(γ) = ∂²L/∂ω² is not positive definite at this γ.
     #[error("the kinetic form J(γ) is not positive definite at γ = {gamma:?} (smallest eigenvalue {min_eigenvalue:e})")]
-    KineticNotPositiveDefinite { gamma: [f64; 3], min_eigenvalue: f64 },
+    KineticNotPositiveDefinite {
+        gamma: [f64; 3],
+        min_eigenvalue: f64,
+    },
     /// γᵀJ(γ)γ ≤ 0, so ψ̇ of (38) is undefined.
     #[error("γᵀJ(γ)γ = {value:e} ≤ 0 at γ = {gamma:?}: the reduction (12) is undefined")]
     DegenerateVerticalInertia { gamma: [f64; 3], value: f64 },
@@ -31,7 +34,11 @@ pub enum RouthError {
     NonFiniteState { t: f64 },
     /// An iterative method did not converge.
     #[error("no convergence in {what} after {iterations} iterations (residual {residual:e})")]
-    NoConvergence { what: &'static str, iterations: usize, residual: f64 },
+    NoConvergence {
+        what: &'static str,
+        iterations: usize,
+        residual: f64,
+    },
 }
 
 /// Checks that every component of `v` is finite.

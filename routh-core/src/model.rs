@@ -74,7 +74,11 @@ impl GyroscopicSystem {
         let g = 0.5 * (m * gx + gx * m.transpose() - cross_matrix(&bundle.dr_domega));
         let mu = bundle.dr_dgamma.dot(gamma);
         let c = gx.transpose() * (Matrix3::from_diagonal_element(mu) - bundle.d2r_dgamma2) * gx;
-        GyroscopicSystem { a: bundle.d2r_domega2, g, c }
+        GyroscopicSystem {
+            a: bundle.d2r_domega2,
+            g,
+            c,
+        }
     }
 }
 
@@ -95,15 +99,22 @@ pub trait Routhian: Lagrangian {
     /// `R(Ω, γ, p_ψ)` of (14) ((39) generalised).
     fn routhian(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64;
     /// `∂R/∂Ω`.
-    fn dr_domega(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Vector3<f64>;
+    fn dr_domega(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64)
+        -> Vector3<f64>;
     /// `∂R/∂γ`.
-    fn dr_dgamma(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Vector3<f64>;
+    fn dr_dgamma(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64)
+        -> Vector3<f64>;
     /// `∂R/∂p_ψ = −ψ̇` (15).
     fn dr_dp(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
         -self.psi_dot(big_omega, gamma, p_psi)
     }
     /// `∂²R/∂Ω²`.
-    fn d2r_domega2(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Matrix3<f64>;
+    fn d2r_domega2(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Matrix3<f64>;
     /// `∂²R/∂Ω_i∂γ_j`.
     fn d2r_domega_dgamma(
         &self,
@@ -112,7 +123,12 @@ pub trait Routhian: Lagrangian {
         p_psi: f64,
     ) -> Matrix3<f64>;
     /// `∂²R/∂γ²`.
-    fn d2r_dgamma2(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> Matrix3<f64>;
+    fn d2r_dgamma2(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Matrix3<f64>;
     /// All of the above from one evaluation.
     fn bundle(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> RouthBundle {
         RouthBundle {

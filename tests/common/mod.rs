@@ -68,11 +68,16 @@ impl From<&test_models::Ellipsoid> for Ellipsoid {
 /// Returns the relative error `‖a − b‖∞ / max(‖b‖∞, floor)` on success.
 pub fn close(a: &[f64], b: &[f64], tol: f64, floor: f64) -> Result<f64, String> {
     let scale = b.iter().fold(floor, |m, x| m.max(x.abs()));
-    let err = a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    let err = a
+        .iter()
+        .zip(b)
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
     if err <= tol * scale && a.iter().all(|x| x.is_finite()) {
         Ok(err / scale)
     } else {
-        Err(format!("error {err:e} > {tol:e} × {scale:e}\n  got      {a:?}\n  expected {b:?}"))
+        Err(format!(
+            "error {err:e} > {tol:e} × {scale:e}\n  got      {a:?}\n  expected {b:?}"
+        ))
     }
 }
 

@@ -1,0 +1,229 @@
+//! Generated `bundle` vs a hand-written bundle vs num-dual Hessians of the same R
+//! (ARCHITECTURE §7).
+//!
+//! Every measured function evaluates all the outputs a caller of the analysis uses at one point:
+//! `bundle(Ω, γ, p_ψ)` (R, ψ̇, ∂R/∂Ω, ∂R/∂γ, ∂R/∂p_ψ and the three Hessian blocks) and then
+//! `GyroscopicSystem::from_bundle` (A, G, C). One iteration is one evaluation, cycling through 64
+//! precomputed random points, so criterion's time per iteration is ns/eval.
+//!
+//! - `M1_gyrostat/{generated,hand,numdual}`: gyrostat with full symmetric I, K, general B,
+//!   U = m g r·γ; `hand` is `test_models::hand_gyrostat_bundle`, `numdual` is
+//!   `test_models::numdual_bundle` (one second-order num-dual Hessian over (Ω, γ)).
+//! - `M2_ellipsoid/{generated,numdual}`: heavy ellipsoid on a plane with diagonal I.
+//!
+//! After criterion, `same-run ratios` times every variant again in this process (interleaved,
+//! median of 31 samples) and prints the ratios.
+
+mod common;
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use common::Point;
+use criterion::{criterion_group, BenchmarkGroup, Criterion};
+use routh::{GyroscopicSystem, RouthBundle, Routhian};
+use test_models::{hand_gyrostat_bundle, numdual_bundle};
+
+const N_POINTS: usize = 64;
+
+type Output = (RouthBundle, GyroscopicSystem);
+
+/// `bundle` then `GyroscopicSystem::from_bundle`.
+#[inline(always)]
+fn with_system(bundle: RouthBundle, pt: &Point) -> Output {
+    let system = GyroscopicSystem::from_bundle(&bundle, &pt.gamma);
+    (bundle, system)
+}
+
+struct Setup {
+    pts: Vec<Point>,
+    m1: common::Gyrostat,
+    m1_twin: test_models::Gyrostat,
+    m2: common::Ellipsoid2,
+    m2_twin: test_models::Ellipsoid,
+}
+
+impl Setup {
+    fn new() -> Self {
+        let mut rng = common::rng(0xB0D1E5);
+        let (m1, m1_twin) = common::m1(&mut rng);
+        let (m2, m2_twin) = common::m2(&mut rng);
+        let pts = common::points(&mut rng, N_POINTS);
+        let s = Setup {
+            pts,
+            m1,
+            m1_twin,
+            m2,
+            m2_twin,
+        };
+        s.check();
+        s
+    }
+
+    fn m1_generated(&self, pt: &Point) -> Output {
+        with_system(self.m1.bundle(&pt.big_omega, &pt.gamma, pt.p_psi), pt)
+    }
+    fn m1_hand(&self, pt: &Point) -> Output {
+        with_system(
+            hand_gyrostat_bundle(&self.m1_twin, &pt.big_omega, &pt.gamma, pt.p_psi),
+            pt,
+        )
+    }
+    fn m1_numdual(&self, pt: &Point) -> Output {
+        with_system(
+            numdual_bundle(&self.m1_twin, &pt.big_omega, &pt.gamma, pt.p_psi),
+            pt,
+        )
+    }
+    fn m2_generated(&self, pt: &Point) -> Output {
+        with_system(self.m2.bundle(&pt.big_omega, &pt.gamma, pt.p_psi), pt)
+    }
+    fn m2_numdual(&self, pt: &Point) -> Output {
+        with_system(
+            numdual_bundle(&self.m2_twin, &pt.big_omega, &pt.gamma, pt.p_psi),
+            pt,
+        )
+    }
+
+    /// The variants agree (so that the benches compare equal work).
+    fn check(&self) {
+        fn flat((b, s): &Output) -> Vec<f64> {
+            let mut v = vec![b.routhian, b.psi_dot, b.dr_dp];
+            for x in [&b.dr_domega, &b.dr_dgamma] {
+                v.extend(x.iter());
+            }
+            for x in [
+                &b.d2r_domega2,
+                &b.d2r_domega_dgamma,
+                &b.d2r_dgamma2,
+                &s.a,
+                &s.g,
+                &s.c,
+            ] {
+                v.extend(x.iter());
+            }
+            v
+        }
+        fn assert_close(what: &str, a: &Output, b: &Output) {
+            let (a, b) = (flat(a), flat(b));
+            let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+            let err = a
+                .iter()
+                .zip(&b)
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+            assert!(err <= 1e-10 * scale, "{what}: error {err:e}");
+        }
+        for pt in &self.pts {
+            let m1 = self.m1_numdual(pt);
+            assert_close("M1 generated", &self.m1_generated(pt), &m1);
+            assert_close("M1 hand", &self.m1_hand(pt), &m1);
+            assert_close("M2 generated", &self.m2_generated(pt), &self.m2_numdual(pt));
+        }
+    }
+}
+
+type Variant = (&'static str, fn(&Setup, &Point) -> Output);
+
+const M1_VARIANTS: [Variant; 3] = [
+    ("generated", Setup::m1_generated),
+    ("hand", Setup::m1_hand),
+    ("numdual", Setup::m1_numdual),
+];
+const M2_VARIANTS: [Variant; 2] = [
+    ("generated", Setup::m2_generated),
+    ("numdual", Setup::m2_numdual),
+];
+
+fn bench_variant<M: criterion::measurement::Measurement>(
+    group: &mut BenchmarkGroup<'_, M>,
+    setup: &Setup,
+    (name, f): Variant,
+) {
+    group.bench_function(name, |b| {
+        let mut k = 0usize;
+        b.iter(|| {
+            let pt = &setup.pts[k % N_POINTS];
+            k = k.wrapping_add(1);
+            f(setup, black_box(pt))
+        })
+    });
+}
+
+fn bench_bundle(c: &mut Criterion) {
+    let setup = Setup::new();
+    let mut group = c.benchmark_group("M1_gyrostat");
+    for v in M1_VARIANTS {
+        bench_variant(&mut group, &setup, v);
+    }
+    group.finish();
+    let mut group = c.benchmark_group("M2_ellipsoid");
+    for v in M2_VARIANTS {
+        bench_variant(&mut group, &setup, v);
+    }
+    group.finish();
+}
+
+/// Median ns/eval of every variant, timed in this process: 31 samples of 200 sweeps over the 64
+/// points each, the variants interleaved sample by sample so that drift affects all alike.
+fn same_run_ratios() {
+    const SAMPLES: usize = 31;
+    const SWEEPS: usize = 200;
+    let setup = Setup::new();
+    let variants: Vec<(String, fn(&Setup, &Point) -> Output)> = M1_VARIANTS
+        .iter()
+        .map(|(n, f)| (format!("M1 {n}"), *f))
+        .chain(M2_VARIANTS.iter().map(|(n, f)| (format!("M2 {n}"), *f)))
+        .collect();
+    let mut samples = vec![Vec::with_capacity(SAMPLES); variants.len()];
+    for round in 0..=SAMPLES {
+        for (i, (_, f)) in variants.iter().enumerate() {
+            let start = Instant::now();
+            for _ in 0..SWEEPS {
+                for pt in &setup.pts {
+                    black_box(f(&setup, black_box(pt)));
+                }
+            }
+            let ns = start.elapsed().as_nanos() as f64 / (SWEEPS * N_POINTS) as f64;
+            // Round 0 is a warm-up.
+            if round > 0 {
+                samples[i].push(ns);
+            }
+        }
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let med: Vec<f64> = samples.iter_mut().map(median).collect();
+    let get = |name: &str| med[variants.iter().position(|(n, _)| n == name).unwrap()];
+    println!();
+    println!(
+        "same-run ratios (median of {SAMPLES} interleaved samples, ns per bundle + from_bundle):"
+    );
+    for ((name, _), t) in variants.iter().zip(&med) {
+        println!("  {name:<14} {t:9.1} ns/eval");
+    }
+    println!(
+        "  M1 generated / hand     = {:6.3}",
+        get("M1 generated") / get("M1 hand")
+    );
+    println!(
+        "  M1 num-dual / generated = {:6.3}",
+        get("M1 numdual") / get("M1 generated")
+    );
+    println!(
+        "  M2 num-dual / generated = {:6.3}",
+        get("M2 numdual") / get("M2 generated")
+    );
+}
+
+criterion_group!(benches, bench_bundle);
+
+fn main() {
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    // Only when benchmarking (`cargo bench`), not in `cargo test --benches`.
+    if std::env::args().any(|a| a == "--bench") {
+        same_run_ratios();
+    }
+}
