@@ -100,7 +100,11 @@ fn energy_momentum(
             }
         }
     }
-    let mut fig = Figure::new(title, "cyclic momentum p_ψ", "energy E of the steady motion");
+    let mut fig = Figure::new(
+        title,
+        "cyclic momentum p_ψ",
+        "energy E of the steady motion",
+    );
     fig.series.extend(verdict_series(&pts, 3));
     fig.legend = SeriesLabelPosition::UpperMiddle;
     fig.save(&path, 900, 560)?;
@@ -112,9 +116,15 @@ fn main() -> Result<(), Box<dyn Error>> {
     let out = common::out_dir("gyrostat")?;
     let e3 = Vector3::z();
 
-    println!("Example 1 — heavy body with gyroscopic forces, L = ½(Iω, ω) + (a(γ), ω) − U(γ)  (35)");
-    println!("====================================================================================");
-    println!("U(γ) = m g (r_c, γ); amended potential (40): U_r = ½(p_ψ − (a(γ), γ))² / (Iγ, γ) + U(γ)");
+    println!(
+        "Example 1 — heavy body with gyroscopic forces, L = ½(Iω, ω) + (a(γ), ω) − U(γ)  (35)"
+    );
+    println!(
+        "===================================================================================="
+    );
+    println!(
+        "U(γ) = m g (r_c, γ); amended potential (40): U_r = ½(p_ψ − (a(γ), γ))² / (Iγ, γ) + U(γ)"
+    );
 
     let kelvin = Gyrostat::kelvin();
     let coupled = Gyrostat::coupled();

@@ -15,7 +15,7 @@ use common::{
     classified_steady_motions, instability_threshold, linspace, report_at, verdict_label,
 };
 use plotters::prelude::{RGBColor, SeriesLabelPosition, BLACK};
-use routh::{simulate_full, Routhian, SimOptions, Stability, Vector3};
+use routh::{simulate_full, Routhian, SimOptions, Vector3};
 
 fn main() -> Result<(), Box<dyn Error>> {
     let start = Instant::now();

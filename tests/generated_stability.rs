@@ -9,7 +9,9 @@ use common::{Ellipsoid, Gyrostat};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh::nalgebra::{Matrix6, Vector6};
-use routh::{classify, full_vector_field, steady_motions, Complex, Lagrangian, Routhian, Stability};
+use routh::{
+    classify, full_vector_field, steady_motions, Complex, Lagrangian, Routhian, Stability,
+};
 use routh::{SteadyMotion, Vector3};
 
 fn field<M: Lagrangian>(m: &M, x: &Vector6<f64>) -> Vector6<f64> {
@@ -40,8 +42,16 @@ fn check_roots<M: Routhian>(model: &M, s: &SteadyMotion, p: f64) -> f64 {
     let report = classify(model, s, p).expect("classify");
     let w = s.psi_dot * s.gamma;
     let x = Vector6::new(w.x, w.y, w.z, s.gamma.x, s.gamma.y, s.gamma.z);
-    let eig: Vec<Complex<f64>> = fd_jacobian(model, &x, 1e-3).complex_eigenvalues().iter().copied().collect();
-    let scale = report.f2_roots.iter().map(|r| r.norm()).fold(1e-300, f64::max);
+    let eig: Vec<Complex<f64>> = fd_jacobian(model, &x, 1e-3)
+        .complex_eigenvalues()
+        .iter()
+        .copied()
+        .collect();
+    let scale = report
+        .f2_roots
+        .iter()
+        .map(|r| r.norm())
+        .fold(1e-300, f64::max);
     let mut rest = eig.clone();
     let mut worst = 0.0f64;
     for r in &report.f2_roots {
@@ -51,9 +61,16 @@ fn check_roots<M: Routhian>(model: &M, s: &SteadyMotion, p: f64) -> f64 {
         worst = worst.max((rest[k] - r).norm() / scale);
         rest.remove(k);
     }
-    assert!(worst <= 1e-6, "f₂ roots {:?} vs Jacobian eigenvalues {eig:?}", report.f2_roots);
+    assert!(
+        worst <= 1e-6,
+        "f₂ roots {:?} vs Jacobian eigenvalues {eig:?}",
+        report.f2_roots
+    );
     for z in rest {
-        assert!(z.norm() <= 1e-4 * scale, "leftover eigenvalue {z} is not zero");
+        assert!(
+            z.norm() <= 1e-4 * scale,
+            "leftover eigenvalue {z} is not zero"
+        );
     }
     worst
 }
@@ -69,7 +86,11 @@ fn f2_roots_of_generated_models_match_the_full_jacobian() {
         let p = rng.gen_range(1.0..6.0);
         let found = steady_motions(&model, p).expect("steady motions");
         let reference = steady_motions(&twin, p).expect("steady motions of the twin");
-        assert_eq!(found.len(), reference.len(), "same number of steady motions as the twin");
+        assert_eq!(
+            found.len(),
+            reference.len(),
+            "same number of steady motions as the twin"
+        );
         for s in found.iter().filter(|s| s.isolated) {
             worst = worst.max(check_roots(&model, s, p));
             // The verdict equals the num-dual twin's at the same steady motion.
@@ -80,7 +101,11 @@ fn f2_roots_of_generated_models_match_the_full_jacobian() {
         }
         let twin = test_models::Ellipsoid::random(&mut rng);
         let model = Ellipsoid::from(&twin);
-        for s in steady_motions(&model, p).expect("steady motions").iter().filter(|s| s.isolated) {
+        for s in steady_motions(&model, p)
+            .expect("steady motions")
+            .iter()
+            .filter(|s| s.isolated)
+        {
             worst = worst.max(check_roots(&model, s, p));
             checked += 1;
         }
@@ -115,10 +140,16 @@ fn derived_lagrange_top_obeys_maievskii() {
         };
         let below = threshold * (1.0 - 0.001f64).sqrt();
         let above = threshold * (1.0 + 0.001f64).sqrt();
-        assert_eq!(classify(&top, &sleeping(below), below).unwrap().verdict, Stability::Unstable);
+        assert_eq!(
+            classify(&top, &sleeping(below), below).unwrap().verdict,
+            Stability::Unstable
+        );
         let v = classify(&top, &sleeping(above), above).unwrap().verdict;
         assert!(
-            matches!(v, Stability::GyroscopicallyStabilized | Stability::SecularlyStable),
+            matches!(
+                v,
+                Stability::GyroscopicallyStabilized | Stability::SecularlyStable
+            ),
             "above Maievskii's bound: {v:?}"
         );
     }

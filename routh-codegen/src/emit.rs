@@ -10,7 +10,7 @@ use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
-use routh_symbolic::{Func, Graph, Id, Node};
+use routh_symbolic::{Func, Graph, Id, Node, Plan};
 
 /// How a variable slot is read in one method.
 #[derive(Clone, Copy)]
@@ -99,39 +99,16 @@ impl Emitter<'_> {
         }
     }
 
-    /// The effective children of a node as emitted (a `Neg` under an `Add` and a once-used
-    /// `Recip` under a `Mul` are folded into the parent).
-    fn effective_children(&self, id: Id, uses: &[u32]) -> Vec<Id> {
-        let g = self.g();
-        match g.node(id) {
-            Node::Add(a, b) => [a, b]
-                .into_iter()
-                .map(|c| match g.node(c) {
-                    Node::Neg(x) => x,
-                    _ => c,
-                })
-                .collect(),
-            Node::Mul(a, b) => [a, b]
-                .into_iter()
-                .map(|c| match g.node(c) {
-                    Node::Recip(x) if uses[c.index()] == 1 => x,
-                    _ => c,
-                })
-                .collect(),
-            n => n.children().collect(),
-        }
-    }
-
-    fn expr(&self, id: Id, uses: &[u32]) -> TokenStream {
+    fn expr(&self, id: Id, plan: &Plan) -> TokenStream {
         let g = self.g();
         let o = |c: Id| self.operand(c);
         match g.node(id) {
-            Node::Add(a, b) => match (g.node(a), g.node(b)) {
-                (_, Node::Neg(x)) => {
+            Node::Add(a, b) => match (plan.folds(g, id, a), plan.folds(g, id, b)) {
+                (_, Some(x)) => {
                     let (a, x) = (o(a), o(x));
                     quote!(#a - #x)
                 }
-                (Node::Neg(x), _) => {
+                (Some(x), _) => {
                     let (b, x) = (o(b), o(x));
                     quote!(#b - #x)
                 }
@@ -140,12 +117,12 @@ impl Emitter<'_> {
                     quote!(#a + #b)
                 }
             },
-            Node::Mul(a, b) => match (g.node(a), g.node(b)) {
-                (_, Node::Recip(x)) if uses[b.index()] == 1 => {
+            Node::Mul(a, b) => match (plan.folds(g, id, a), plan.folds(g, id, b)) {
+                (_, Some(x)) => {
                     let (a, x) = (o(a), o(x));
                     quote!(#a / #x)
                 }
-                (Node::Recip(x), _) if uses[a.index()] == 1 => {
+                (Some(x), _) => {
                     let (b, x) = (o(b), o(x));
                     quote!(#b / #x)
                 }
@@ -190,58 +167,21 @@ impl Emitter<'_> {
     /// Statements computing `outputs`, then the output tokens.
     pub fn body(&self, outputs: &[Id], inputs: Inputs) -> (TokenStream, Vec<TokenStream>) {
         let g = self.g();
-        let n = outputs.iter().max().map_or(0, |m| m.index() + 1);
-        // Raw uses among needed nodes (for the once-used reciprocal rule).
-        let mut needed = vec![false; n];
-        for o in outputs {
-            needed[o.index()] = true;
-        }
-        for i in (0..n).rev() {
-            if needed[i] {
-                for c in g.nodes()[i].children() {
-                    needed[c.index()] = true;
-                }
-            }
-        }
-        let mut uses = vec![0u32; n];
-        for i in (0..n).filter(|&i| needed[i]) {
-            for c in g.nodes()[i].children() {
-                uses[c.index()] += 1;
-            }
-        }
-        for o in outputs {
-            uses[o.index()] += 1;
-        }
-        // What is emitted, with folded children.
-        let mut emit = vec![false; n];
-        for o in outputs {
-            emit[o.index()] = true;
-        }
-        for i in (0..n).rev() {
-            if emit[i] {
-                for c in self.effective_children(Id::from_index(i), &uses) {
-                    emit[c.index()] = true;
-                }
-            }
-        }
+        let plan = Plan::new(g, outputs);
+        let k = self.krate;
         let mut stmts = TokenStream::new();
-        for (i, _) in emit.iter().enumerate().filter(|(_, &e)| e) {
-            let id = Id::from_index(i);
-            match g.node(id) {
-                Node::Const(_) => {}
-                Node::Var(v) => {
-                    let name = format_ident!("__v{}", v);
-                    let src = self.input_tokens(v, inputs);
-                    let k = self.krate;
-                    stmts.extend(quote!(let #name: #k::__private::f64 = #src;));
-                }
-                _ => {
-                    let name = Self::local(id);
-                    let e = self.expr(id, &uses);
-                    let k = self.krate;
-                    stmts.extend(quote!(let #name: #k::__private::f64 = #e;));
-                }
+        // Inputs first (only those read), then the nodes in order.
+        for (i, _) in plan.emit.iter().enumerate().filter(|(_, &e)| e) {
+            if let Node::Var(v) = g.node(Id::from_index(i)) {
+                let name = format_ident!("__v{}", v);
+                let src = self.input_tokens(v, inputs);
+                stmts.extend(quote!(let #name: #k::__private::f64 = #src;));
             }
+        }
+        for id in plan.statements(g) {
+            let name = Self::local(id);
+            let e = self.expr(id, &plan);
+            stmts.extend(quote!(let #name: #k::__private::f64 = #e;));
         }
         let outs = outputs.iter().map(|&o| self.operand(o)).collect();
         (stmts, outs)

@@ -368,10 +368,15 @@ fn trait_impls(file: &syn::File, ident: &Ident) -> Vec<String> {
     let mut out = vec![];
     for item in &file.items {
         let syn::Item::Const(c) = item else { continue };
-        let syn::Expr::Block(b) = &*c.expr else { continue };
+        let syn::Expr::Block(b) = &*c.expr else {
+            continue;
+        };
         for stmt in &b.block.stmts {
-            let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else { continue };
-            let self_is_ident = matches!(&*imp.self_ty, syn::Type::Path(p) if p.path.is_ident(ident));
+            let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else {
+                continue;
+            };
+            let self_is_ident =
+                matches!(&*imp.self_ty, syn::Type::Path(p) if p.path.is_ident(ident));
             if let (Some((_, path, _)), true) = (&imp.trait_, self_is_ident) {
                 if let Some(seg) = path.segments.last() {
                     out.push(seg.ident.to_string());
@@ -440,6 +445,7 @@ fn derive_never_panics() {
     let mut failures: Vec<String> = vec![];
     let (mut ran, mut valid, mut whole) = (0usize, 0usize, 0usize);
     let mut in_derive = std::time::Duration::ZERO;
+    let mut in_parse = std::time::Duration::ZERO;
     while ran < total {
         let (body, fields) = seeds.choose(&mut rng).unwrap();
         let mutations = rng.gen_range(1..=4);
@@ -478,10 +484,15 @@ fn derive_never_panics() {
             continue;
         }
         if let Ok(di) = syn::parse2::<syn::DeriveInput>(input) {
-            let file = match syn::parse2::<syn::File>(out.clone()) {
+            let t1 = Instant::now();
+            let parsed = syn::parse2::<syn::File>(out.clone());
+            in_parse += t1.elapsed();
+            let file = match parsed {
                 Ok(file) => file,
                 Err(e) => {
-                    failures.push(format!("output does not parse as items ({e}) on input:\n{text}\noutput:\n{out}"));
+                    failures.push(format!(
+                        "output does not parse as items ({e}) on input:\n{text}\noutput:\n{out}"
+                    ));
                     continue;
                 }
             };
@@ -489,8 +500,12 @@ fn derive_never_panics() {
             let errors = file.items.iter().any(|i| matches!(i, syn::Item::Macro(m) if m.mac.path.segments.last().is_some_and(|s| s.ident == "compile_error")));
             if errors {
                 let impls = trait_impls(&file, &di.ident);
-                if !(impls.iter().any(|t| t == "Lagrangian") && impls.iter().any(|t| t == "Routhian")) {
-                    failures.push(format!("errors without the stub impls on input:\n{text}\noutput:\n{out}"));
+                if !(impls.iter().any(|t| t == "Lagrangian")
+                    && impls.iter().any(|t| t == "Routhian"))
+                {
+                    failures.push(format!(
+                        "errors without the stub impls on input:\n{text}\noutput:\n{out}"
+                    ));
                 }
             } else {
                 valid += 1;
@@ -500,7 +515,7 @@ fn derive_never_panics() {
     panic::set_hook(prev_hook);
     let elapsed = start.elapsed();
     println!(
-        "fuzz: ran {ran} inputs ({whole} with the whole struct mutated; {valid} still valid models) in {elapsed:.2?} ({in_derive:.2?} in derive), seed {seed:#x}, {} failures",
+        "fuzz: ran {ran} inputs ({whole} with the whole struct mutated; {valid} still valid models) in {elapsed:.2?} ({in_derive:.2?} in derive, {in_parse:.2?} parsing outputs), seed {seed:#x}, {} failures",
         failures.len()
     );
     for f in failures.iter().take(20) {

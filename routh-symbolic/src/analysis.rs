@@ -79,12 +79,94 @@ pub fn schedule(g: &Graph, outputs: &[Id]) -> Vec<Id> {
     }
     (0..=max.index())
         .filter(|&i| need[i] && !matches!(g.nodes()[i], Node::Const(_) | Node::Var(_)))
-        .map(|i| crate::graph::Id(i as u32))
+        .map(Id::from_index)
         .collect()
 }
 
-/// Floating-point operations of straight-line code, counted as the emitter writes them
-/// (an integer power `x^n` as `n − 1` multiplications, `x^−n` adds one division).
+/// What straight-line code for a set of outputs computes: the nodes to emit (children before
+/// parents) and how each is written. A negation feeding a sum is written as a subtraction, a
+/// reciprocal used once as a division; such folded nodes are not emitted on their own.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    /// Number of uses of each node by the nodes the outputs need (outputs count one more).
+    pub uses: Vec<u32>,
+    /// Whether each node is emitted as a statement (constants and variables included).
+    pub emit: Vec<bool>,
+}
+
+impl Plan {
+    /// The plan for `outputs`.
+    pub fn new(g: &Graph, outputs: &[Id]) -> Plan {
+        let n = outputs.iter().max().map_or(0, |m| m.index() + 1);
+        let mut needed = vec![false; n];
+        for o in outputs {
+            needed[o.index()] = true;
+        }
+        for i in (0..n).rev() {
+            if needed[i] {
+                for c in g.nodes()[i].children() {
+                    needed[c.index()] = true;
+                }
+            }
+        }
+        let mut uses = vec![0u32; n];
+        for i in (0..n).filter(|&i| needed[i]) {
+            for c in g.nodes()[i].children() {
+                uses[c.index()] += 1;
+            }
+        }
+        for o in outputs {
+            uses[o.index()] += 1;
+        }
+        let mut plan = Plan {
+            uses,
+            emit: vec![false; n],
+        };
+        for o in outputs {
+            plan.emit[o.index()] = true;
+        }
+        for i in (0..n).rev() {
+            if plan.emit[i] {
+                for c in plan.operands(g, Id::from_index(i)) {
+                    plan.emit[c.index()] = true;
+                }
+            }
+        }
+        plan
+    }
+
+    /// Whether `child`, an operand of `parent`, is folded into it (written as `a - x` for
+    /// `a + (−x)`, or `a / x` for `a · (1/x)` when the reciprocal is used once).
+    pub fn folds(&self, g: &Graph, parent: Id, child: Id) -> Option<Id> {
+        match (g.node(parent), g.node(child)) {
+            (Node::Add(..), Node::Neg(x)) => Some(x),
+            (Node::Mul(..), Node::Recip(x)) if self.uses[child.index()] == 1 => Some(x),
+            _ => None,
+        }
+    }
+
+    /// The values a node reads when written out (folded children replaced by their operand).
+    pub fn operands(&self, g: &Graph, id: Id) -> Vec<Id> {
+        g.node(id)
+            .children()
+            .map(|c| self.folds(g, id, c).unwrap_or(c))
+            .collect()
+    }
+
+    /// The emitted non-leaf nodes, in order.
+    pub fn statements<'a>(&'a self, g: &'a Graph) -> impl Iterator<Item = Id> + 'a {
+        self.emit
+            .iter()
+            .enumerate()
+            .filter(|(_, &e)| e)
+            .map(|(i, _)| Id::from_index(i))
+            .filter(|&id| !matches!(g.node(id), Node::Const(_) | Node::Var(_)))
+    }
+}
+
+/// Floating-point operations of the straight-line code written for a [`Plan`]: a subtraction
+/// counts as an addition, an integer power `x^n` (n = 2, 3) as `n − 1` multiplications and a
+/// larger one as a call.
 #[derive(Copy, Clone, Default, PartialEq, Eq, Debug)]
 pub struct OpCounts {
     pub add: usize,
@@ -105,7 +187,7 @@ impl std::fmt::Display for OpCounts {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "{} ops ({} add, {} mul, {} neg, {} div, {} calls)",
+            "{} ops ({} add/sub, {} mul, {} neg, {} div, {} calls)",
             self.total(),
             self.add,
             self.mul,
@@ -116,21 +198,24 @@ impl std::fmt::Display for OpCounts {
     }
 }
 
-/// Counts the operations of the schedule of `outputs`.
+/// Counts the operations of the code written for `outputs`.
 pub fn op_counts(g: &Graph, outputs: &[Id]) -> OpCounts {
+    let plan = Plan::new(g, outputs);
     let mut c = OpCounts::default();
-    for id in schedule(g, outputs) {
+    for id in plan.statements(g) {
         match g.node(id) {
-            Node::Add(a, b) => {
-                // a + (−b) is emitted as a subtraction.
-                let _ = (a, b);
-                c.add += 1
+            Node::Add(..) => c.add += 1,
+            Node::Mul(a, b) => {
+                if plan.folds(g, id, a).is_some() || plan.folds(g, id, b).is_some() {
+                    c.div += 1
+                } else {
+                    c.mul += 1
+                }
             }
-            Node::Mul(..) => c.mul += 1,
             Node::Neg(_) => c.neg += 1,
             Node::Recip(_) => c.div += 1,
-            Node::Powi(_, n) => c.mul += n.unsigned_abs() as usize - 1,
-            Node::Powf(..) | Node::Func(..) => c.func += 1,
+            Node::Powi(_, n) if (2..=3).contains(&n) => c.mul += n as usize - 1,
+            Node::Powi(..) | Node::Powf(..) | Node::Func(..) => c.func += 1,
             Node::Const(_) | Node::Var(_) => {}
         }
     }
