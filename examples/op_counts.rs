@@ -55,12 +55,7 @@ fn main() {
         let model = routh_codegen::analyse(&di).expect("model is valid");
         let o = &model.outputs;
         let g = &model.lowered.sym.graph;
-        let mut bundle: Vec<Id> = vec![o.routhian, o.psi_dot, o.dr_dp];
-        bundle.extend(o.dr_domega);
-        bundle.extend(o.dr_dgamma);
-        for m in [&o.d2r_domega2, &o.d2r_domega_dgamma, &o.d2r_dgamma2] {
-            bundle.extend(m.iter().flatten());
-        }
+        let bundle = o.bundle_ids();
         let mut gyro: Vec<Id> = vec![];
         for m in [&o.gyro_a, &o.gyro_g, &o.gyro_c] {
             gyro.extend(m.iter().flatten());

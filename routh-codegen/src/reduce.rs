@@ -93,8 +93,50 @@ fn cross_matrix(g: &mut Graph, x: &V3) -> M3 {
     [[z, n[2], x[1]], [x[2], z, n[0]], [n[1], x[0], z]]
 }
 
-/// Derives every output from the lowered model.
+/// How the cyclic momentum q = (∂L/∂ω, γ) of (9) is formed. Both are exact; which gives the
+/// shorter code depends on the model, so [`reduce`] derives both and keeps the shorter.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub enum Momentum {
+    /// `Σ γ_i ∂L/∂ω_i`, reusing the gradient.
+    Contracted,
+    /// `d/ds L(ω + sγ, γ)` at `s = 0`: terms such as `n·(γ × γ)` vanish by hash-consing instead
+    /// of surviving as sums that cancel only numerically (ERRATA E6, `(n × γ) ⊥ γ`).
+    Directional,
+}
+
+impl Outputs {
+    /// The outputs of `bundle`.
+    pub fn bundle_ids(&self) -> Vec<Id> {
+        let mut ids = vec![self.routhian, self.psi_dot, self.dr_dp];
+        ids.extend(self.dr_domega);
+        ids.extend(self.dr_dgamma);
+        for m in [
+            &self.d2r_domega2,
+            &self.d2r_domega_dgamma,
+            &self.d2r_dgamma2,
+        ] {
+            ids.extend(m.iter().flatten());
+        }
+        ids
+    }
+}
+
+/// Derives every output from the lowered model, choosing the formulation of (9) that gives the
+/// shorter `bundle`.
 pub fn reduce(m: &mut Lowered) -> Outputs {
+    let a = reduce_with(m, Momentum::Contracted);
+    let b = reduce_with(m, Momentum::Directional);
+    let g = &m.sym.graph;
+    let cost = |o: &Outputs| routh_symbolic::op_counts(g, &o.bundle_ids()).total();
+    if cost(&a) <= cost(&b) {
+        a
+    } else {
+        b
+    }
+}
+
+/// Derives every output with the given formulation of the cyclic momentum.
+pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let s = &mut m.sym;
     let g = &mut s.graph;
     let (w, gm, p) = (s.omega, s.gamma, s.p_psi);
@@ -114,24 +156,26 @@ pub fn reduce(m: &mut Lowered) -> Outputs {
     let d2l_domega_dgamma = jacobian(g, &dl_domega, &gm);
     let e1 = dot(g, &w, &dl_domega);
     let energy = g.sub(e1, lagrangian);
-    // (9) as the directional derivative d/ds L(ω + sγ, γ) at s = 0 rather than (∂L/∂ω, γ):
-    // the same number, but terms such as (n·(γ × γ)) vanish by hash-consing instead of surviving
-    // as sums that cancel only numerically (ERRATA E6, (n × γ) ⊥ γ).
-    let s_dir = g.var("s");
-    let s_var = g.as_var(s_dir).unwrap_or(u32::MAX);
-    let along: HashMap<u32, Id> = w_vars
-        .iter()
-        .zip(w)
-        .zip(gm)
-        .map(|((&v, wi), gi)| {
-            let t = g.mul(s_dir, gi);
-            (v, g.add(wi, t))
-        })
-        .collect();
-    let l_along = subst_vec(g, &[lagrangian], &along)[0];
-    let dl_ds = g.diff(l_along, s_dir).unwrap_or(l_along);
-    let s_zero: HashMap<u32, Id> = [(s_var, zero)].into_iter().collect();
-    let cyclic_momentum = subst_vec(g, &[dl_ds], &s_zero)[0];
+    let cyclic_momentum = match momentum {
+        Momentum::Contracted => dot(g, &dl_domega, &gm),
+        Momentum::Directional => {
+            let s_dir = g.var("s");
+            let s_var = g.as_var(s_dir).unwrap_or(u32::MAX);
+            let along: HashMap<u32, Id> = w_vars
+                .iter()
+                .zip(w)
+                .zip(gm)
+                .map(|((&v, wi), gi)| {
+                    let t = g.mul(s_dir, gi);
+                    (v, g.add(wi, t))
+                })
+                .collect();
+            let l_along = subst_vec(g, &[lagrangian], &along)[0];
+            let dl_ds = g.diff(l_along, s_dir).unwrap_or(l_along);
+            let s_zero: HashMap<u32, Id> = [(s_var, zero)].into_iter().collect();
+            subst_vec(g, &[dl_ds], &s_zero)[0]
+        }
+    };
 
     // (12)/(38) with J(γ): ψ̇ = (p_ψ − (∂L/∂ω(Ω, γ), γ)) / (γᵀJγ), and γᵀJγ = 2 T₂(γ, γ).
     let on_gamma: HashMap<u32, Id> = w_vars.iter().zip(gm).map(|(&v, x)| (v, x)).collect();

@@ -164,6 +164,16 @@ impl Plan {
     }
 }
 
+/// The number of operation nodes `candidate` needs beyond those `base` already needs: what
+/// computing `candidate` next to `base` adds. Used to choose the cheaper of two exactly equal
+/// formulations.
+pub fn extra_cost(g: &Graph, candidate: Id, base: &[Id]) -> usize {
+    let mut roots = base.to_vec();
+    roots.push(candidate);
+    let with = schedule(g, &roots).len();
+    with - schedule(g, base).len()
+}
+
 /// Floating-point operations of the straight-line code written for a [`Plan`]: a subtraction
 /// counts as an addition, an integer power `x^n` (n = 2, 3) as `n − 1` multiplications and a
 /// larger one as a call.

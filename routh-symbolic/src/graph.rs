@@ -270,6 +270,97 @@ impl Graph {
             let two = self.constant(2.0);
             return self.mul(two, a);
         }
+        if let Some(s) = self.collect_like_terms(a, b) {
+            return s;
+        }
+        self.intern(Node::Add(a, b))
+    }
+
+    /// Most terms a sum is flattened into when looking for like terms.
+    const MAX_TERMS: usize = 24;
+
+    /// Appends the terms `coef · base` of `id` (through sums, negations and constant factors).
+    /// Returns `false` when there are more than [`Self::MAX_TERMS`].
+    fn terms(&self, id: Id, coef: f64, out: &mut Vec<(Id, f64)>, constant: &mut f64) -> bool {
+        if out.len() > Self::MAX_TERMS {
+            return false;
+        }
+        match self.node(id) {
+            Node::Add(x, y) => {
+                self.terms(x, coef, out, constant) && self.terms(y, coef, out, constant)
+            }
+            Node::Neg(x) => self.terms(x, -coef, out, constant),
+            Node::Mul(c, x) if self.as_const(c).is_some() => {
+                let c = self.as_const(c).unwrap_or(1.0);
+                self.terms(x, coef * c, out, constant)
+            }
+            Node::Const(v) => {
+                *constant += coef * f64::from_bits(v);
+                true
+            }
+            _ => {
+                out.push((id, coef));
+                true
+            }
+        }
+    }
+
+    /// `a + b` with like terms collected, if the two sums share a term: the terms are written in
+    /// increasing id order (so the same set of terms always makes the same node, and a dot
+    /// product built in that order is found again), with a common factor pulled out
+    /// (`2x + 2y = 2(x + y)`). `None` when there is nothing to collect, so that sums without like
+    /// terms keep the structure (and the sharing) they were built with.
+    fn collect_like_terms(&mut self, a: Id, b: Id) -> Option<Id> {
+        let (mut ta, mut tb) = (Vec::new(), Vec::new());
+        let (mut ka, mut kb) = (0.0, 0.0);
+        if !self.terms(a, 1.0, &mut ta, &mut ka) || !self.terms(b, 1.0, &mut tb, &mut kb) {
+            return None;
+        }
+        let shared = ta.iter().any(|(x, _)| tb.iter().any(|(y, _)| x == y));
+        if !shared {
+            return None;
+        }
+        let mut all = ta;
+        all.extend(tb);
+        all.sort_by_key(|t| t.0);
+        let mut merged: Vec<(Id, f64)> = Vec::with_capacity(all.len());
+        for (x, c) in all {
+            match merged.last_mut() {
+                Some((y, d)) if *y == x => *d += c,
+                _ => merged.push((x, c)),
+            }
+        }
+        merged.retain(|t| t.1 != 0.0);
+        let k = ka + kb;
+        // A common factor of every term (and of no constant) is pulled out.
+        let common = match merged.first() {
+            Some(&(_, c)) if k == 0.0 && c != 1.0 && merged.iter().all(|t| t.1 == c) => c,
+            _ => 1.0,
+        };
+        let mut acc: Option<Id> = if k != 0.0 {
+            Some(self.constant(k))
+        } else {
+            None
+        };
+        for (x, c) in merged {
+            let c = self.constant(c / common);
+            let term = self.mul(c, x);
+            acc = Some(match acc {
+                None => term,
+                Some(s) => self.add_plain(s, term),
+            });
+        }
+        let sum = acc.unwrap_or_else(|| self.zero());
+        let c = self.constant(common);
+        Some(self.mul(c, sum))
+    }
+
+    /// `a + b` with only the canonical order and the identities that cannot recurse.
+    fn add_plain(&mut self, a: Id, b: Id) -> Id {
+        let (a, b) = self.order(a, b);
+        if self.is_const(a, 0.0) {
+            return b;
+        }
         self.intern(Node::Add(a, b))
     }
 

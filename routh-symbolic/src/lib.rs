@@ -19,6 +19,6 @@ pub mod analysis;
 mod graph;
 pub mod shape;
 
-pub use analysis::{degree, op_counts, schedule, to_infix, Degree, OpCounts, Plan};
+pub use analysis::{degree, extra_cost, op_counts, schedule, to_infix, Degree, OpCounts, Plan};
 pub use graph::{Func, Graph, Id, Node};
 pub use shape::{Shape, ShapeError, Value};

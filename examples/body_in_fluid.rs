@@ -1,0 +1,248 @@
+//! Paper Example 3: a rigid body in an ideal fluid. Kirchhoff's equations (52) become (8) with
+//! the Lagrangian of ERRATA E3 (`routh::fluid::kirchhoff_lagrangian`); its steady motions are the
+//! steady translations and screw motions of the body, classified by the Routh machinery.
+//!
+//! Run with `cargo run --release --example body_in_fluid`. Figures go to `out/body_in_fluid/`.
+
+#[path = "common/mod.rs"]
+mod common;
+
+use std::error::Error;
+use std::time::Instant;
+
+use common::fluid_body::{perturbed_axial, FluidBody, Kirchhoff};
+use common::plot::{verdict_series, Figure, Series, Style};
+use common::{
+    classified_steady_motions, instability_threshold, linspace, lpad, report_at, rpad,
+    verdict_label,
+};
+use plotters::prelude::{RGBColor, SeriesLabelPosition};
+use routh::fluid::FluidParameters;
+use routh::{simulate_full, Lagrangian, Matrix3, SimOptions, Vector3};
+
+/// Prints `label` followed by the three rows of `m`, aligned under each other.
+fn print_mat(label: &str, m: &Matrix3<f64>) {
+    let indent = " ".repeat(common::display_width(label));
+    for i in 0..3 {
+        println!(
+            "{}[{:+.5}, {:+.5}, {:+.5}]",
+            if i == 0 { label } else { indent.as_str() },
+            m[(i, 0)],
+            m[(i, 1)],
+            m[(i, 2)]
+        );
+    }
+}
+
+fn describe(name: &str, body: &Kirchhoff, f: &FluidParameters) {
+    println!("\n{name}");
+    println!("{}", "-".repeat(name.chars().count()));
+    print_mat("  a = ", &body.a);
+    print_mat("  b = ", &body.b);
+    print_mat("  c = ", &body.c);
+    println!("kirchhoff_lagrangian(a, b, c, k = {}) (ERRATA E3):", f.k);
+    print_mat("  A = a − bᵀc⁻¹b = ", &f.kinetic);
+    print_mat("  Λ = k bᵀc⁻¹    = ", &f.linear);
+    print_mat("  Π = k² c⁻¹     = ", &f.potential);
+    // E3 identities at a sample state: L = T − (p, v), ∂L/∂ω = ∂T/∂ω, ∂L/∂γ = −k v.
+    let model = FluidBody::from(f);
+    let (w, g) = (Vector3::new(0.3, -0.7, 1.1), Vector3::new(0.48, -0.6, 0.64));
+    let v = f.velocity(&w, &g);
+    let t = body.energy(&w, &v);
+    let e1 = (model.lagrangian(&w, &g) - (t - f.impulse(&g).dot(&v))).abs();
+    let e2 = (model.dl_domega(&w, &g) - (body.a * w + body.b.transpose() * v)).norm();
+    let e3 = (model.dl_dgamma(&w, &g) + f.k * v).norm();
+    println!(
+        "  checks at a sample (ω, γ): |L − (T − (p, v))| = {e1:.1e}, |∂L/∂ω − ∂T/∂ω| = {e2:.1e}, \
+         |∂L/∂γ + k v| = {e3:.1e}"
+    );
+}
+
+/// Table of steady motions with the body's linear and angular velocities.
+fn table(model: &FluidBody, f: &FluidParameters, p: f64) -> Result<(), Box<dyn Error>> {
+    println!(
+        "\n p_ψ = {p} (Kirchhoff's constant (55) (∂T/∂ω, ∂T/∂v) = k·p_ψ = {}):",
+        f.kirchhoff_constant(p)
+    );
+    println!(
+        "  {}  {}  {}  {}  {}  {}",
+        lpad("γ = p/k (body frame)", 33),
+        rpad("ψ̇", 9),
+        lpad("v (body frame)", 33),
+        rpad("∠(v,γ)", 8),
+        rpad("deg", 3),
+        "verdict"
+    );
+    for r in classified_steady_motions(model, p)? {
+        let g = r.motion.gamma;
+        let omega = r.motion.psi_dot * g;
+        let v = f.velocity(&omega, &g);
+        println!(
+            "  {:<33}  {:>+9.5}  {:<33}  {:>7.2}°  {:>3}  {}{}",
+            common::fmt_vec(&g),
+            r.motion.psi_dot,
+            common::fmt_vec(&v),
+            common::angle_deg(&v.normalize(), &g),
+            r.report.degree_of_instability,
+            verdict_label(r.report.verdict),
+            if r.motion.isolated {
+                ""
+            } else {
+                " (one of a circle)"
+            }
+        );
+    }
+    Ok(())
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let start = Instant::now();
+    let out = common::out_dir("body_in_fluid")?;
+    let e3 = Vector3::z();
+    println!("Example 3 — rigid body in an ideal fluid (Kirchhoff's equations (52) as (8))");
+    println!("============================================================================");
+    println!("T(ω, v) = ½((aω, ω) + 2(bω, v) + (cv, v)),  p = bω + cv = kγ,  v = c⁻¹(kγ − bω)");
+    println!("L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)   (ERRATA E3)");
+    println!(
+        "Steady motions: ω = ψ̇γ — the body turns about its impulse while translating (a screw"
+    );
+    println!(
+        "motion; a pure translation when ψ̇ = 0). p_ψ = (∂L/∂ω, γ) is the reduced cyclic momentum;"
+    );
+    println!("Kirchhoff's constant (55) is k·p_ψ (ERRATA E7).");
+
+    // --- 1. Elongated body of revolution -------------------------------------------------------
+    let k = 1.0;
+    let rev = Kirchhoff::body_of_revolution();
+    let f = rev.parameters(k)?;
+    let model = FluidBody::from(&f);
+    describe("1. Elongated body of revolution (b = 0)", &rev, &f);
+    for p in [0.0, 0.3] {
+        table(&model, &f, p)?;
+    }
+    let formula = rev.axial_threshold(k);
+    let found = instability_threshold(&model, e3, 0.2 * formula, 3.0 * formula, 1e-13)?
+        .ok_or("no change of verdict for the axial motion")?;
+    println!("\nMotion along the axis (γ = e₃) spinning about it: stability threshold");
+    println!("  bisection on the verdict:         p_ψ = {found:.12}");
+    println!("  formula p_ψ² = 4A₁k²(1/c₃ − 1/c₁): p_ψ = {formula:.12}");
+    println!(
+        "  relative difference {:.1e};  Kirchhoff's constant k·p_ψ = {:.6}, spin ω₃ = p_ψ/A₃ = {:.6}",
+        (found - formula).abs() / formula,
+        f.kirchhoff_constant(formula),
+        formula / f.kinetic[(2, 2)]
+    );
+    for factor in [0.9, 1.1] {
+        let r = report_at(&model, e3, factor * formula)?;
+        println!(
+            "  p_ψ = {factor} × threshold: {} (degree {}, roots of f₂ {})",
+            verdict_label(r.verdict),
+            r.degree_of_instability,
+            r.f2_roots
+                .iter()
+                .map(|z| format!("{:+.4}{:+.4}i", z.re, z.im))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+
+    // Figure 1: steady motions against p_ψ.
+    let ps = linspace(0.0, 3.0, 61);
+    let mut pts = Vec::new();
+    for &p in &ps {
+        for r in classified_steady_motions(&model, p)? {
+            pts.push((r.report.verdict, p, common::angle_deg(&r.motion.gamma, &e3)));
+        }
+    }
+    let mut fig = Figure::new(
+        "Body of revolution in a fluid: steady motions",
+        "reduced cyclic momentum p_ψ (Kirchhoff's constant is k·p_ψ, k = 1)",
+        "angle between the impulse γ and the axis e₃ (degrees)",
+    );
+    fig.x_range = Some(0.0..3.0);
+    fig.y_range = Some(-5.0..185.0);
+    fig.series.extend(verdict_series(&pts, 3));
+    fig.vlines.push((
+        found,
+        format!("p² = 4A₁k²(1/c₃ − 1/c₁) ({found:.3})"),
+        RGBColor(30, 90, 220),
+    ));
+    fig.legend = SeriesLabelPosition::Coordinate(420, 40);
+    let path1 = out.join("steady_motions.svg");
+    fig.save(&path1, 900, 560)?;
+
+    // Figure 2: motion along the axis, slightly tilted, below and above the threshold.
+    let t_end = 80.0;
+    let times = linspace(0.0, t_end, 1601);
+    let tilt = 0.01;
+    let mut fig2 = Figure::new(
+        format!("Body moving along its axis, tilted by {tilt} rad from the impulse"),
+        "time t",
+        "angle between the axis e₃ and the impulse (degrees)",
+    );
+    println!("\nAxis tilted by {tilt} rad from the impulse (simulate_full), t ∈ [0, {t_end}]:");
+    println!(
+        "  {}  {}  {}  {}  {}",
+        rpad("p_ψ/threshold", 13),
+        lpad("verdict at e₃", 26),
+        rpad("max angle (deg)", 15),
+        rpad("|ΔE|", 9),
+        rpad("|Δp_ψ|", 9)
+    );
+    for (factor, color) in [(0.9, RGBColor(210, 30, 30)), (1.1, RGBColor(30, 90, 220))] {
+        let p = factor * formula;
+        let (w0, g0) = perturbed_axial(&f, p, tilt);
+        let traj = simulate_full(
+            &model,
+            w0,
+            g0,
+            t_end,
+            &SimOptions::with_tolerances(1e-11, 1e-13).at_times(times.clone()),
+        )?;
+        let angle: Vec<(f64, f64)> = traj
+            .t
+            .iter()
+            .zip(&traj.gamma)
+            .map(|(&t, g)| (t, common::angle_deg(&g.normalize(), &e3)))
+            .collect();
+        let max = angle.iter().fold(0.0f64, |m, a| m.max(a.1));
+        let verdict = report_at(&model, e3, p)?.verdict;
+        println!(
+            "  {:>13.2}  {:<26}  {:>15.3}  {:>9.1e}  {:>9.1e}",
+            factor,
+            verdict_label(verdict),
+            max,
+            traj.energy_drift(),
+            traj.p_psi_drift()
+        );
+        fig2.series.push(Series::new(
+            format!("p_ψ = {factor} × threshold: {}", verdict_label(verdict)),
+            color,
+            Style::Line(2),
+            angle,
+        ));
+    }
+    let y_max = fig2
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .fold(0.0f64, f64::max);
+    fig2.y_range = Some(0.0..1.3 * y_max);
+    let path2 = out.join("axial_motion_tilt.svg");
+    fig2.save(&path2, 900, 500)?;
+
+    // --- 2. A body without symmetry -------------------------------------------------------------
+    let chiral = Kirchhoff::chiral();
+    let f2 = chiral.parameters(k)?;
+    let model2 = FluidBody::from(&f2);
+    describe("2. Screw-like body without symmetry (b ≠ 0)", &chiral, &f2);
+    for p in [0.0, 0.5, 1.5] {
+        table(&model2, &f2, p)?;
+    }
+
+    println!("\nFigures:");
+    println!("  {}", path1.display());
+    println!("  {}", path2.display());
+    println!("Done in {:.2} s.", start.elapsed().as_secs_f64());
+    Ok(())
+}
