@@ -122,7 +122,9 @@ impl Setup {
     }
 }
 
-type Variant = (&'static str, fn(&Setup, &Point) -> Output);
+/// One measured function: a bundle of one model at one point, then `from_bundle`.
+type Eval = fn(&Setup, &Point) -> Output;
+type Variant = (&'static str, Eval);
 
 const M1_VARIANTS: [Variant; 3] = [
     ("generated", Setup::m1_generated),
@@ -163,32 +165,41 @@ fn bench_bundle(c: &mut Criterion) {
     group.finish();
 }
 
-/// ns/eval of every variant, timed in this process: 101 samples of 50 sweeps over the 64 points
-/// each, the variants interleaved sample by sample so that drift and load from other processes
-/// affect all alike. Prints the median and the minimum over the samples, and ratios of both.
+/// ns/eval of every variant, timed in this process. Every sample is a whole number of sweeps
+/// over the 64 points lasting about 200 µs for every variant (so that preemption by other
+/// processes, which the shared 2-core machine sees a lot of, hits all variants alike), and the
+/// variants are interleaved sample by sample. Prints the median and the minimum over 301
+/// samples, and the ratios of both.
 fn same_run_ratios() {
-    const SAMPLES: usize = 101;
-    const SWEEPS: usize = 50;
+    const SAMPLES: usize = 301;
+    const SAMPLE_NS: f64 = 200_000.0;
     let setup = Setup::new();
-    let variants: Vec<(String, fn(&Setup, &Point) -> Output)> = M1_VARIANTS
+    let variants: Vec<(String, Eval)> = M1_VARIANTS
         .iter()
         .map(|(n, f)| (format!("M1 {n}"), *f))
         .chain(M2_VARIANTS.iter().map(|(n, f)| (format!("M2 {n}"), *f)))
         .collect();
+    let time = |f: Eval, sweeps: usize| {
+        let start = Instant::now();
+        for _ in 0..sweeps {
+            for pt in &setup.pts {
+                black_box(f(&setup, black_box(pt)));
+            }
+        }
+        start.elapsed().as_nanos() as f64 / (sweeps * N_POINTS) as f64
+    };
+    // Calibration (also the warm-up): the fastest of 20 single sweeps.
+    let sweeps: Vec<usize> = variants
+        .iter()
+        .map(|(_, f)| {
+            let ns = (0..20).map(|_| time(*f, 1)).fold(f64::INFINITY, f64::min);
+            ((SAMPLE_NS / (ns * N_POINTS as f64)).round() as usize).max(1)
+        })
+        .collect();
     let mut samples = vec![Vec::with_capacity(SAMPLES); variants.len()];
-    for round in 0..=SAMPLES {
+    for _ in 0..SAMPLES {
         for (i, (_, f)) in variants.iter().enumerate() {
-            let start = Instant::now();
-            for _ in 0..SWEEPS {
-                for pt in &setup.pts {
-                    black_box(f(&setup, black_box(pt)));
-                }
-            }
-            let ns = start.elapsed().as_nanos() as f64 / (SWEEPS * N_POINTS) as f64;
-            // Round 0 is a warm-up.
-            if round > 0 {
-                samples[i].push(ns);
-            }
+            samples[i].push(time(*f, sweeps[i]));
         }
     }
     for v in &mut samples {
@@ -199,8 +210,9 @@ fn same_run_ratios() {
     let idx = |name: &str| variants.iter().position(|(n, _)| n == name).unwrap();
     println!();
     println!(
-        "same-run ratios ({SAMPLES} interleaved samples of {SWEEPS}x{N_POINTS} evaluations; \
-         ns per bundle + from_bundle):"
+        "same-run ratios ({SAMPLES} interleaved samples of ~{:.0} us each; \
+         ns per bundle + from_bundle):",
+        SAMPLE_NS / 1e3
     );
     println!("  {:<14} {:>10} {:>10}", "", "median", "min");
     for (i, (name, _)) in variants.iter().enumerate() {

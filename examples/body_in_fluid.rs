@@ -65,13 +65,12 @@ fn table(model: &FluidBody, f: &FluidParameters, p: f64) -> Result<(), Box<dyn E
         f.kirchhoff_constant(p)
     );
     println!(
-        "  {}  {}  {}  {}  {}  {}",
+        "  {}  {}  {}  {}  {}  verdict",
         lpad("γ = p/k (body frame)", 33),
         rpad("ψ̇", 9),
         lpad("v (body frame)", 33),
         rpad("∠(v,γ)", 8),
         rpad("deg", 3),
-        "verdict"
     );
     for r in classified_steady_motions(model, p)? {
         let g = r.motion.gamma;

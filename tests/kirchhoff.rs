@@ -88,9 +88,9 @@ fn general_body() -> Kirchhoff {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
     };
-    let l = Matrix6::from_fn(|_, _| next());
-    let m = l * l.transpose() + 0.5 * Matrix6::identity();
-    let m = 0.5 * (m + m.transpose());
+    let l = Matrix6::<f64>::from_fn(|_, _| next());
+    let m: Matrix6<f64> = l * l.transpose() + Matrix6::identity() * 0.5;
+    let m = (m + m.transpose()) * 0.5;
     Kirchhoff {
         a: m.fixed_view::<3, 3>(0, 0).into(),
         b: m.fixed_view::<3, 3>(3, 0).into(),
@@ -137,6 +137,10 @@ fn check(body: &Kirchhoff, omega0: Vector3<f64>, v0: Vector3<f64>, t_end: f64) {
         // The energy (3) of L is Kirchhoff's T (54).
         e_energy = e_energy.max((traj.energy[i] - energy_0).abs());
     }
+    eprintln!(
+        "k = {k:.4}: max |Δω| = {e_omega:.1e}, max |kγ − (bω + cv)| = {e_impulse:.1e}, \
+         max |Δv| = {e_v:.1e}, (55) drift {e_55:.1e}, energy drift {e_energy:.1e}"
+    );
     let scale = omega0.norm().max(v0.norm()).max(1.0);
     assert!(e_omega < 1e-8 * scale, "ω differs by {e_omega:e}");
     assert!(

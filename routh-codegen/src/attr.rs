@@ -61,6 +61,9 @@ pub enum Item {
     },
     /// `crate = "path"`
     Crate { key: Span, path: syn::Path },
+    /// An item that did not parse (already reported); `name` if it was a `let`, so that its uses
+    /// stay silent.
+    Failed { name: Option<syn::Ident> },
 }
 
 /// The parsed derive input.
@@ -71,12 +74,16 @@ pub struct Input {
     pub items: Vec<Item>,
     /// Whether the struct carries at least one `#[lagrangian(...)]`.
     pub has_attr: bool,
+    /// Whether some part of an attribute did not parse (already reported): rules about missing
+    /// items stay silent then, since the missing item may be the one that failed.
+    pub incomplete: bool,
 }
 
 /// Parses the derive input, recording every error in `cx`.
 pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
     let mut items = Vec::new();
     let mut has_attr = false;
+    let mut incomplete = false;
     for attr in input
         .attrs
         .iter()
@@ -84,16 +91,17 @@ pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
     {
         has_attr = true;
         match &attr.meta {
-            syn::Meta::List(list) => parse_items(
-                cx,
-                list.tokens.clone(),
-                list.delimiter.span().join(),
-                &mut items,
-            ),
-            other => cx.error_spanned_by(
-                other,
-                "expected `#[lagrangian(kinetic = ..., linear = ..., potential = ...)]`",
-            ),
+            syn::Meta::List(list) => {
+                let span = list.delimiter.span().join();
+                incomplete |= !parse_items(cx, list.tokens.clone(), span, &mut items);
+            }
+            other => {
+                incomplete = true;
+                cx.error_spanned_by(
+                    other,
+                    "expected `#[lagrangian(kinetic = ..., linear = ..., potential = ...)]`",
+                );
+            }
         }
     }
     let fields = match &input.data {
@@ -116,6 +124,7 @@ pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
         fields,
         items,
         has_attr,
+        incomplete,
     }
 }
 
@@ -191,19 +200,53 @@ fn split_commas(tokens: TokenStream) -> Vec<TokenStream> {
         .collect()
 }
 
-fn parse_items(cx: &Ctxt, tokens: TokenStream, span: Span, items: &mut Vec<Item>) {
+/// Parses every item; returns `false` if any failed (each failure is reported).
+fn parse_items(cx: &Ctxt, tokens: TokenStream, span: Span, items: &mut Vec<Item>) -> bool {
     let chunks = split_commas(tokens);
     if chunks.is_empty() {
         cx.error_at(
             span,
             "empty `#[lagrangian()]`: at least `kinetic = EXPR` is required",
         );
+        return false;
     }
+    let mut ok = true;
     for chunk in chunks {
-        match syn::parse2::<Item>(chunk) {
+        // Parsed inside a group spanning the item's last token, so that "expected an
+        // expression" at the end of an item points at the item, not at the derive.
+        let end = chunk.clone().into_iter().last().map_or(span, |t| t.span());
+        let mut group = proc_macro2::Group::new(proc_macro2::Delimiter::Parenthesis, chunk.clone());
+        group.set_span(end);
+        let parser = |input: ParseStream| {
+            let content;
+            syn::parenthesized!(content in input);
+            let item: Item = content.parse()?;
+            if !content.is_empty() {
+                return Err(content
+                    .error("unexpected tokens after the item: items are separated by commas"));
+            }
+            Ok(item)
+        };
+        match syn::parse::Parser::parse2(parser, TokenTree::Group(group).into()) {
             Ok(item) => items.push(item),
-            Err(e) => cx.syn_error(e),
+            Err(e) => {
+                ok = false;
+                cx.syn_error(e);
+                items.push(Item::Failed {
+                    name: let_name(&chunk),
+                });
+            }
         }
+    }
+    ok
+}
+
+/// The name of a `let NAME ...` item, if the tokens start so.
+fn let_name(chunk: &TokenStream) -> Option<syn::Ident> {
+    let mut it = chunk.clone().into_iter();
+    match (it.next(), it.next()) {
+        (Some(TokenTree::Ident(l)), Some(TokenTree::Ident(name))) if l == "let" => Some(name),
+        _ => None,
     }
 }
 

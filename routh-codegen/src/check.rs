@@ -106,7 +106,7 @@ fn items_are_unique(cx: &Ctxt, input: &Input) {
         let (key, span) = match item {
             Item::Term { term, key, .. } => (term.name(), key.span()),
             Item::Crate { key, .. } => ("crate", *key),
-            Item::Let { .. } => continue,
+            Item::Let { .. } | Item::Failed { .. } => continue,
         };
         if seen.insert(key, ()).is_some() {
             cx.error_at(span, format!("duplicate `{key}` item"));
@@ -117,6 +117,7 @@ fn items_are_unique(cx: &Ctxt, input: &Input) {
 /// A body without kinetic energy has no dynamics: J(γ) = 0 cannot be inverted.
 fn kinetic_is_present(cx: &Ctxt, input: &Input) {
     if input.has_attr
+        && !input.incomplete
         && !input.items.iter().any(|i| {
             matches!(
                 i,
@@ -194,6 +195,7 @@ pub fn term_degree(
     };
     let msg = match name {
         "kinetic" => format!("`kinetic` must be a homogeneous quadratic form in `omega` (½ ωᵀJ(γ)ω), but {found}"),
+        "linear" if d == Degree::Homogeneous(0) => format!("`linear` must be homogeneous linear in `omega` (a(γ)·ω), but {found}; a term without `omega` belongs in `potential` (with the opposite sign)"),
         "linear" => format!("`linear` must be homogeneous linear in `omega` (a(γ)·ω), but {found}"),
         _ => "`potential` must not depend on `omega`; velocity-dependent terms belong in `kinetic` or `linear`".to_string(),
     };

@@ -57,8 +57,14 @@ pub struct Lowered {
 #[derive(Clone, Copy)]
 enum Binding {
     Value(Value),
+    /// A name whose definition already produced an error: uses stay silent.
     Poisoned,
+    /// A field marked `#[lagrangian(skip)]`.
+    Skipped,
 }
+
+/// Deepest nesting of expressions lowered (deeper input is an error, not a stack overflow).
+const MAX_DEPTH: usize = 200;
 
 struct Lowerer<'a> {
     cx: &'a Ctxt,
@@ -68,6 +74,7 @@ struct Lowerer<'a> {
     later_lets: Vec<String>,
     gamma: [Id; 3],
     field_names: Vec<String>,
+    depth: usize,
 }
 
 /// Lowers every item. Returns `None` if any error was recorded.
@@ -81,9 +88,24 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
     names.insert("gamma".to_string(), Binding::Value(Value::Vector(gamma)));
     let mut params = vec![];
     let mut field_names = vec![];
-    for f in input.fields.iter().filter(|f| !f.skip) {
-        let Some(kind) = f.kind else { continue };
+    for f in &input.fields {
         let name = f.ident.to_string();
+        if crate::check::RESERVED.contains(&name.as_str()) {
+            // Reported by `check::fields_do_not_shadow_variables`; the DSL's meaning stays.
+            continue;
+        }
+        let Some(kind) = f.kind.filter(|_| !f.skip) else {
+            // Skipped, or of a type already reported: uses say so or stay silent.
+            names.insert(
+                name,
+                if f.skip {
+                    Binding::Skipped
+                } else {
+                    Binding::Poisoned
+                },
+            );
+            continue;
+        };
         field_names.push(name.clone());
         let mut slot = |g: &mut Graph, label: String, access: Access| {
             let id = g.var(label);
@@ -144,8 +166,10 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
         later_lets,
         gamma,
         field_names,
+        depth: 0,
     };
-    let mut terms: HashMap<&'static str, (Id, &syn::Expr)> = HashMap::new();
+    // In source order, so that errors come out in a stable order.
+    let mut terms: Vec<(&'static str, Id, &syn::Expr)> = Vec::new();
     let mut krate = None;
     for item in &input.items {
         match item {
@@ -162,7 +186,9 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
                 let Some(v) = l.expr(expr) else { continue };
                 match v {
                     Value::Scalar(s) => {
-                        terms.entry(term.name()).or_insert((s, expr));
+                        if !terms.iter().any(|t| t.0 == term.name()) {
+                            terms.push((term.name(), s, expr));
+                        }
                     }
                     other => cx.error_spanned_by(
                         expr,
@@ -175,13 +201,19 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
                 }
             }
             Item::Crate { path, .. } => krate = Some(path.clone()),
+            Item::Failed { name: Some(name) } => {
+                l.later_lets.retain(|n| *n != name.to_string());
+                l.names.entry(name.to_string()).or_insert(Binding::Poisoned);
+            }
+            Item::Failed { name: None } => {}
         }
     }
     let mut g = l.g;
     let zero = g.zero();
-    let kinetic = terms.get(Term::Kinetic.name()).map(|t| t.0);
-    let linear = terms.get(Term::Linear.name()).map_or(zero, |t| t.0);
-    let potential = terms.get(Term::Potential.name()).map_or(zero, |t| t.0);
+    let find = |t: Term| terms.iter().find(|x| x.0 == t.name()).map(|x| x.1);
+    let kinetic = find(Term::Kinetic);
+    let linear = find(Term::Linear).unwrap_or(zero);
+    let potential = find(Term::Potential).unwrap_or(zero);
     let sym = Symbols {
         graph: g,
         omega,
@@ -190,7 +222,7 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
         params,
     };
     let omega_vars = sym.omega_vars();
-    for (name, (id, expr)) in &terms {
+    for (name, id, expr) in &terms {
         crate::check::term_degree(cx, &sym.graph, name, *id, expr, &omega_vars);
     }
     if cx.has_errors() {
@@ -253,6 +285,10 @@ impl Lowerer<'_> {
         match self.names.get(&s) {
             Some(Binding::Value(v)) => Some(*v),
             Some(Binding::Poisoned) => None,
+            Some(Binding::Skipped) => self.err(
+                ident,
+                format!("field `{s}` is marked `#[lagrangian(skip)]`; remove the attribute to use it in the Lagrangian"),
+            ),
             None if self.later_lets.contains(&s) => self.err(
                 ident,
                 format!("`{s}` is used before its `let`; move the `let {s} = ...` item first"),
@@ -269,19 +305,36 @@ impl Lowerer<'_> {
     }
 
     fn expr(&mut self, e: &syn::Expr) -> Option<Value> {
+        if self.depth >= MAX_DEPTH {
+            if self.depth == MAX_DEPTH {
+                self.depth += 1;
+                self.cx.error_spanned_by(e, format!("expression nested more than {MAX_DEPTH} levels deep; split it with `let` items"));
+            }
+            return None;
+        }
+        self.depth += 1;
+        let v = self.expr_inner(e);
+        self.depth -= 1;
+        v
+    }
+
+    fn expr_inner(&mut self, e: &syn::Expr) -> Option<Value> {
         use syn::Expr as E;
         match e {
-            E::Lit(lit) => match &lit.lit {
-                syn::Lit::Float(f) => match f.base10_parse::<f64>() {
-                    Ok(v) if f.suffix().is_empty() || f.suffix() == "f64" => Some(Value::Scalar(self.g.constant(v))),
-                    _ => self.err(e, "expected an `f64` literal"),
-                },
-                syn::Lit::Int(i) => match i.base10_parse::<i64>() {
-                    Ok(v) if i.suffix().is_empty() || i.suffix() == "f64" => Some(Value::Scalar(self.g.constant(v as f64))),
-                    _ => self.err(e, "expected an unsuffixed integer literal (it is read as an f64)"),
-                },
-                _ => self.err(e, "only numeric literals can appear in a Lagrangian"),
-            },
+            E::Lit(lit) => {
+                let (digits, suffix, what) = match &lit.lit {
+                    syn::Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string(), "float"),
+                    syn::Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string(), "integer"),
+                    _ => return self.err(e, "only numeric literals can appear in a Lagrangian"),
+                };
+                if !(suffix.is_empty() || suffix == "f64") {
+                    return self.err(e, format!("a {what} literal with suffix `{suffix}`: numbers in a Lagrangian are `f64`; drop the suffix"));
+                }
+                match digits.parse::<f64>() {
+                    Ok(v) if v.is_finite() => Some(Value::Scalar(self.g.constant(v))),
+                    _ => self.err(e, "this literal is out of the range of `f64`"),
+                }
+            }
             E::Path(p) if p.qself.is_none() && p.path.get_ident().is_some() => {
                 self.name(p.path.get_ident()?)
             }
@@ -313,6 +366,9 @@ impl Lowerer<'_> {
                 // `self.name` is the field `name`; `v.x`, `v.y`, `v.z` are components.
                 if let (E::Path(base), syn::Member::Named(n)) = (&*f.base, &f.member) {
                     if base.path.is_ident("self") {
+                        if !self.field_names.contains(&n.to_string()) && !matches!(self.names.get(&n.to_string()), Some(Binding::Skipped | Binding::Poisoned)) {
+                            return self.err(n, format!("`self.{n}` is not a field the Lagrangian can use"));
+                        }
                         return self.name(n);
                     }
                 }
@@ -336,6 +392,10 @@ impl Lowerer<'_> {
                             }
                             _ => self.err(&ix.index, "matrix indices must be integer literals 0, 1 or 2: `m[(i, j)]`"),
                         }
+                    }
+                    E::Tuple(_) => self.err(&ix.index, "a matrix is indexed by two integer literals: `m[(i, j)]`"),
+                    _ if base.shape() == routh_symbolic::Shape::Matrix => {
+                        self.err(&ix.index, "a matrix is indexed by a pair: `m[(i, j)]`")
                     }
                     idx => match int_lit(idx) {
                         Some(i) if (0..3).contains(&i) => self.shaped(e, shape::component(&base, i as usize)),
@@ -478,6 +538,10 @@ impl Lowerer<'_> {
                 let r = shape::grad(&mut self.g, &v, &gamma);
                 self.shaped(e, r)
             }
+            _ if METHODS.split(", ").any(|m| m == name) => self.err(
+                f,
+                format!("`{name}` is a method here: write `x.{name}(..)`; the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`"),
+            ),
             _ => self.err(f, format!("unknown function `{name}`: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`")),
         }
     }

@@ -10,10 +10,11 @@ use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenS
 use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::collections::HashSet;
 use std::panic::{self, AssertUnwindSafe};
 use std::str::FromStr;
 use std::sync::{Arc, Mutex};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 /// `(attribute body, fields)` of valid models.
 const SEEDS: &[(&str, &str)] = &[
@@ -395,6 +396,151 @@ fn trait_impls(file: &syn::File, ident: &Ident) -> Vec<String> {
     out
 }
 
+/// Hand-written edge cases, run before the random ones: `(attribute body, fields)`; `None` for the
+/// fields means the gyrostat's.
+const EDGE_CASES: &[(&str, Option<&str>)] = &[
+    // Integer powers that overflow `i32`/`u32` exponents or degrees.
+    ("kinetic = 0.5 * omega.dot(inertia * omega), potential = gamma.z.powi(64).powi(64).powi(64).powi(64).powi(64).powi(64) * gamma.z", None),
+    ("kinetic = 0.5 * omega.dot(inertia * omega), potential = gamma.z.powi(64).powi(64).powi(64).powi(64).powi(64).powi(-64)", None),
+    ("kinetic = (omega.x * omega.y * omega.z).powi(64).powi(64).powi(64).powi(64).powi(64).powi(64)", None),
+    ("kinetic = 0.5 * omega.dot(inertia * omega), potential = gamma.z.powi(-64).powi(-64).powi(-64)", None),
+    ("kinetic = 0.5 * omega.dot(inertia * omega), potential = gamma.z.powf(1e300).powf(1e300)", None),
+    // Literals.
+    ("kinetic = 1e400 * omega.dot(inertia * omega), potential = -1e400 * gamma.z", None),
+    ("kinetic = 0.5 * omega.dot(inertia * omega), potential = (0.0 / 0.0) * gamma.z + -0.0 + 1e-320", None),
+    ("kinetic = 0.5 * omega.dot(inertia * omega), potential = 99999999999999999999 * gamma.z", None),
+    ("kinetic = 0.5 * omega.dot(inertia * omega), potential = 0x10 * gamma.z + 1_000.5e-3 + 1f64", None),
+    ("kinetic = (0.0 / 0.0) * omega.dot(omega)", None),
+    ("kinetic = 0.5 * omega.dot(inertia * omega) / 0", None),
+    // Malformed items.
+    ("", None),
+    (",,,", None),
+    ("kinetic", None),
+    ("kinetic =", None),
+    ("kinetic = = omega.dot(omega)", None),
+    ("let", None),
+    ("let x", None),
+    ("let x =", None),
+    ("let 1 = 2, kinetic = omega.dot(omega)", None),
+    ("crate", None),
+    ("crate =", None),
+    ("crate = 1, kinetic = omega.dot(omega)", None),
+    ("crate = \"\", kinetic = omega.dot(omega)", None),
+    ("crate = \"a b\", kinetic = omega.dot(omega)", None),
+    ("kinetic = omega.dot(omega); potential = mass", None),
+    ("kinetic = |x| x", None),
+    // Functions, methods and indices at the edges.
+    ("kinetic = omega.dot(omega), potential = grad(grad(mass * gamma.z.powi(3), gamma).z, gamma).z", None),
+    ("kinetic = omega.dot(omega), potential = grad(1, gamma).x + diag().trace() + skew(com, com).trace()", None),
+    ("kinetic = omega.dot(omega), potential = grad(mass) + grad(com, gamma) + grad(mass, gamma.x)", None),
+    ("kinetic = omega.dot(omega), potential = inertia[(0, 1, 2)] + inertia[(-1, 0)] + inertia[()] + com[-1]", None),
+    ("kinetic = omega.dot(omega), potential = com[1usize] + com[&1] + com[(1)] + inertia[&(0, 1)] + mass[0]", None),
+    ("kinetic = omega.dot(omega), potential = self.omega.x + self.mass + self + self.0 + com.0 + Self::mass + ::mass", None),
+    ("kinetic = omega.dot(omega), potential = mass.dot() + mass.powi() + mass.powf() + mass.sqrt(1) + mass.powi(65)", None),
+    ("kinetic = omega.dot(omega), potential = inertia.norm() + inertia.norm_squared() + mass.norm() + com.trace() + com.transpose().x", None),
+    ("kinetic = omega.dot(omega), potential = com.component_mul(mass).x + inertia.component_mul(inertia).trace() + com.cross(inertia).x", None),
+    ("kinetic = omega.dot(omega), potential = mass.sin.cos + (mass)() + mass::<f64>() + mass.abs::<f64>()", None),
+    ("kinetic = omega.dot(omega), potential = mass += 1", None),
+    ("kinetic = omega.dot(omega), potential = [mass, g][0] + (mass, g).0 + { mass } + mass as f64", None),
+    // Names.
+    ("let omega = 1, let gamma = 2, let diag = 3, let mass = 4, let t = 5, let t = 6, kinetic = omega.dot(omega) * t", None),
+    ("let a = b, let b = a, kinetic = omega.dot(omega) * a * b", None),
+    ("let a = a, kinetic = omega.dot(omega) * a", None),
+    // Structs.
+    ("kinetic = omega.dot(omega)", Some("gamma: Vector3<f64>, omega: f64, diag: Matrix3<f64>, #[lagrangian(skip)] skew: f64")),
+    ("kinetic = omega.dot(omega) * x", Some("#[lagrangian] x: f64, #[lagrangian = 1] y: f64, #[lagrangian(skip, skip)] z: f64, #[lagrangian(skip)] #[lagrangian(skip)] w: Vec<u8>")),
+    ("kinetic = omega.dot(omega) * x", Some("x: <f64 as Trait>::Output, y: Vector3<f64, f64>, z: Matrix3<>, w: Vector3<Vector3<f64>>, v: &'static f64, u: [f64; 3], t: (f64,), s: fn(f64)")),
+];
+
+/// Whole derive inputs.
+const EDGE_INPUTS: &[&str] = &[
+    "#[lagrangian(kinetic = omega.dot(omega))] pub struct M<T: Copy, const N: usize> where T: Default { #[lagrangian(skip)] t: [T; N], m: f64 }",
+    "#[lagrangian(kinetic = omega.dot(omega))] pub struct M<'a> { #[lagrangian(skip)] r: &'a f64 }",
+    "#[lagrangian(kinetic = omega.dot(omega))] union U { a: f64, b: u64 }",
+    "#[lagrangian(kinetic = omega.dot(omega))] enum E {}",
+    "#[lagrangian(kinetic = omega.dot(omega))] struct S;",
+    "#[lagrangian(kinetic = omega.dot(omega))] struct S();",
+    "#[lagrangian(kinetic = omega.dot(omega))] struct S {}",
+    "#[lagrangian(kinetic = omega.dot(omega))] #[lagrangian(kinetic = omega.dot(omega), crate = \"::routh\")] #[lagrangian(crate = \"::routh\")] struct S {}",
+    "#[lagrangian] #[lagrangian = 1] #[lagrangian()] #[lagrangian{kinetic = omega.dot(omega)}] struct S {}",
+    "struct S { m: f64 }",
+    "struct S",
+    "",
+    "fn f() {}",
+];
+
+/// Expands inputs and checks the output; records failures.
+#[derive(Default)]
+struct Checker {
+    failures: Vec<String>,
+    ran: usize,
+    valid: usize,
+    in_derive: Duration,
+    in_parse: Duration,
+    /// Outputs of valid models already parsed (mutants often give the same model).
+    parsed_ok: HashSet<String>,
+    last_panic: Arc<Mutex<String>>,
+}
+
+impl Checker {
+    fn check(&mut self, input: TokenStream) {
+        self.ran += 1;
+        let text = input.to_string();
+        let t0 = Instant::now();
+        let result = panic::catch_unwind(AssertUnwindSafe(|| routh_codegen::derive(input.clone())));
+        self.in_derive += t0.elapsed();
+        let out = match result {
+            Ok(out) => out,
+            Err(_) => {
+                let msg = self.last_panic.lock().unwrap().clone();
+                self.failures
+                    .push(format!("PANIC ({msg}) on input:\n{text}"));
+                return;
+            }
+        };
+        if out.is_empty() {
+            self.failures
+                .push(format!("EMPTY output on input:\n{text}"));
+            return;
+        }
+        let Ok(di) = syn::parse2::<syn::DeriveInput>(input) else {
+            return;
+        };
+        let key = out.to_string();
+        if self.parsed_ok.contains(&key) {
+            self.valid += 1;
+            return;
+        }
+        let t1 = Instant::now();
+        let parsed = syn::parse2::<syn::File>(out);
+        self.in_parse += t1.elapsed();
+        let file = match parsed {
+            Ok(file) => file,
+            Err(e) => {
+                self.failures.push(format!(
+                    "output does not parse as items ({e}) on input:\n{text}\noutput:\n{key}"
+                ));
+                return;
+            }
+        };
+        let errors = file.items.iter().any(|i| {
+            matches!(i, syn::Item::Macro(m) if m.mac.path.segments.last().is_some_and(|s| s.ident == "compile_error"))
+        });
+        if errors {
+            // Errors come with stub impls of both traits, so that no follow-on errors appear.
+            let impls = trait_impls(&file, &di.ident);
+            if !(impls.iter().any(|t| t == "Lagrangian") && impls.iter().any(|t| t == "Routhian")) {
+                self.failures.push(format!(
+                    "errors without the stub impls on input:\n{text}\noutput:\n{key}"
+                ));
+            }
+        } else {
+            self.valid += 1;
+            self.parsed_ok.insert(key);
+        }
+    }
+}
+
 #[test]
 fn derive_never_panics() {
     let seed: u64 = std::env::var("ROUTH_FUZZ_SEED")
@@ -430,32 +576,42 @@ fn derive_never_panics() {
     }
 
     // Record panic messages instead of printing them.
-    let last_panic: Arc<Mutex<String>> = Arc::default();
+    let mut ck = Checker::default();
     let prev_hook = panic::take_hook();
     {
-        let last_panic = last_panic.clone();
+        let last_panic = ck.last_panic.clone();
         panic::set_hook(Box::new(move |info| {
             let loc = info
                 .location()
                 .map(|l| format!(" at {}:{}", l.file(), l.line()))
                 .unwrap_or_default();
-            let msg = info
-                .payload()
+            let payload = info.payload();
+            let msg = payload
                 .downcast_ref::<&str>()
                 .map(|s| s.to_string())
-                .or_else(|| info.payload().downcast_ref::<String>().cloned())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_default();
             *last_panic.lock().unwrap() = format!("{msg}{loc}");
         }));
     }
-
     let start = Instant::now();
-    let mut failures: Vec<String> = vec![];
-    let (mut ran, mut valid, mut whole) = (0usize, 0usize, 0usize);
-    let mut in_derive = std::time::Duration::ZERO;
-    let mut in_parse = std::time::Duration::ZERO;
-    let mut parsed_ok: std::collections::HashSet<String> = Default::default();
-    while ran < total {
+
+    let gyrostat_fields = &seeds[0].1;
+    for (body, fields) in EDGE_CASES {
+        let body = TokenStream::from_str(body).unwrap();
+        let fields = fields.map_or_else(
+            || gyrostat_fields.clone(),
+            |f| TokenStream::from_str(f).unwrap(),
+        );
+        ck.check(derive_input(&body, &fields));
+    }
+    for input in EDGE_INPUTS {
+        ck.check(TokenStream::from_str(input).unwrap());
+    }
+    let edge = ck.ran;
+
+    let mut whole = 0usize;
+    while ck.ran < edge + total {
         let (body, fields) = seeds.choose(&mut rng).unwrap();
         let mutations = rng.gen_range(1..=4);
         let input = if rng.gen_bool(0.1) {
@@ -473,74 +629,27 @@ fn derive_never_panics() {
             }
             derive_input(&to_stream(&toks), fields)
         };
-        ran += 1;
-        let text = input.to_string();
-        let t0 = Instant::now();
-        let result = panic::catch_unwind(AssertUnwindSafe(|| routh_codegen::derive(input.clone())));
-        in_derive += t0.elapsed();
-        let out = match result {
-            Ok(out) => out,
-            Err(_) => {
-                failures.push(format!(
-                    "PANIC ({}) on input:\n{text}",
-                    last_panic.lock().unwrap()
-                ));
-                continue;
-            }
-        };
-        if out.is_empty() {
-            failures.push(format!("EMPTY output on input:\n{text}"));
-            continue;
-        }
-        if let Ok(di) = syn::parse2::<syn::DeriveInput>(input) {
-            // Large outputs (valid models) are often identical; parse each distinct one once.
-            let key = out.to_string();
-            if parsed_ok.contains(&key) {
-                valid += 1;
-                continue;
-            }
-            let t1 = Instant::now();
-            let parsed = syn::parse2::<syn::File>(out.clone());
-            in_parse += t1.elapsed();
-            let file = match parsed {
-                Ok(file) => file,
-                Err(e) => {
-                    failures.push(format!(
-                        "output does not parse as items ({e}) on input:\n{text}\noutput:\n{out}"
-                    ));
-                    continue;
-                }
-            };
-            // Errors come with the stub impls, so that no follow-on errors appear.
-            let errors = file.items.iter().any(|i| matches!(i, syn::Item::Macro(m) if m.mac.path.segments.last().is_some_and(|s| s.ident == "compile_error")));
-            if errors {
-                let impls = trait_impls(&file, &di.ident);
-                if !(impls.iter().any(|t| t == "Lagrangian")
-                    && impls.iter().any(|t| t == "Routhian"))
-                {
-                    failures.push(format!(
-                        "errors without the stub impls on input:\n{text}\noutput:\n{out}"
-                    ));
-                }
-            } else {
-                valid += 1;
-                parsed_ok.insert(key);
-            }
-        }
+        ck.check(input);
     }
     panic::set_hook(prev_hook);
+
     let elapsed = start.elapsed();
     println!(
-        "fuzz: ran {ran} inputs ({whole} with the whole struct mutated; {valid} still valid models, {} distinct) in {elapsed:.2?} ({in_derive:.2?} in derive, {in_parse:.2?} parsing outputs), seed {seed:#x}, {} failures",
-        parsed_ok.len(),
-        failures.len()
+        "fuzz: ran {} inputs ({edge} hand-written, {total} mutants of which {whole} with the whole struct mutated; {} valid models, {} distinct) in {elapsed:.2?} ({:.2?} in derive, {:.2?} parsing outputs), seed {seed:#x}, {} failures",
+        ck.ran,
+        ck.valid,
+        ck.parsed_ok.len(),
+        ck.in_derive,
+        ck.in_parse,
+        ck.failures.len()
     );
-    for f in failures.iter().take(20) {
+    for f in ck.failures.iter().take(20) {
         println!("----\n{f}");
     }
     assert!(
-        failures.is_empty(),
-        "{} of {ran} inputs failed (first ones printed above)",
-        failures.len()
+        ck.failures.is_empty(),
+        "{} of {} inputs failed (printed above)",
+        ck.failures.len(),
+        ck.ran
     );
 }

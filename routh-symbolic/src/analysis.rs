@@ -36,13 +36,13 @@ pub fn degree(g: &Graph, root: Id, vars: &[u32]) -> Degree {
             },
             Node::Mul(a, b) => match (d(a), d(b)) {
                 (NotPolynomial, _) | (_, NotPolynomial) => NotPolynomial,
-                (Homogeneous(x), Homogeneous(y)) => Homogeneous(x + y),
+                (Homogeneous(x), Homogeneous(y)) => Homogeneous(x.saturating_add(y)),
                 _ => Mixed,
             },
             Node::Neg(a) => d(a),
             Node::Powi(a, n) => match d(a) {
                 Homogeneous(0) => Homogeneous(0),
-                Homogeneous(x) if n > 0 => Homogeneous(x * n as u32),
+                Homogeneous(x) if n > 0 => Homogeneous(x.saturating_mul(n.unsigned_abs())),
                 Mixed if n > 0 => Mixed,
                 _ => NotPolynomial,
             },

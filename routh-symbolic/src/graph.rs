@@ -430,7 +430,12 @@ impl Graph {
         let (ba, ea) = self.base_exp(a);
         let (bb, eb) = self.base_exp(b);
         if ba == bb {
-            return self.powi(ba, ea + eb);
+            if let Some(e) = ea
+                .checked_add(eb)
+                .filter(|e| e.unsigned_abs() <= Self::MAX_POW)
+            {
+                return self.powi(ba, e);
+            }
         }
         // Pull constant factors to the front: x * (c * y) = c * (x * y).
         if let Node::Mul(c, y) = self.node(b) {
@@ -482,36 +487,43 @@ impl Graph {
         self.mul(a, rb)
     }
 
+    /// Largest |n| kept as an integer power; larger exponents become `powf` with a constant
+    /// exponent, so that exponent arithmetic can never overflow.
+    pub const MAX_POW: u32 = 1 << 16;
+
     /// `a^n` for an integer `n`.
     pub fn powi(&mut self, a: Id, n: i32) -> Id {
+        if n.unsigned_abs() > Self::MAX_POW {
+            if let Some(x) = self.as_const(a) {
+                return self.constant(x.powi(n));
+            }
+            let e = self.constant(f64::from(n));
+            return self.intern(Node::Powf(a, e));
+        }
         match n {
             0 => return self.one(),
             1 => return a,
-            -1 => {
-                return match self.node(a) {
-                    Node::Powi(_, _) | Node::Recip(_) => {
-                        let (b, e) = self.base_exp(a);
-                        self.powi(b, -e)
-                    }
-                    _ => self.recip(a),
-                };
-            }
             _ => {}
         }
         match self.node(a) {
-            Node::Const(x) => self.constant(f64::from_bits(x).powi(n)),
+            Node::Const(x) => return self.constant(f64::from_bits(x).powi(n)),
             Node::Powi(_, _) | Node::Recip(_) => {
                 let (b, e) = self.base_exp(a);
-                self.powi(b, e.saturating_mul(n))
+                if let Some(m) = e
+                    .checked_mul(n)
+                    .filter(|m| m.unsigned_abs() <= Self::MAX_POW)
+                {
+                    return self.powi(b, m);
+                }
             }
             Node::Neg(x) => {
                 let p = self.powi(x, n);
-                if n % 2 == 0 {
-                    p
-                } else {
-                    self.neg(p)
-                }
+                return if n % 2 == 0 { p } else { self.neg(p) };
             }
+            _ => {}
+        }
+        match n {
+            -1 => self.intern(Node::Recip(a)),
             _ if n < 0 => {
                 let p = self.powi(a, -n);
                 self.intern(Node::Recip(p))

@@ -1,4 +1,4 @@
-use routh::{Lagrangian, Matrix3, Vector3};
+use routh::Lagrangian;
 
 #[derive(Lagrangian)]
 #[lagrangian(
