@@ -294,11 +294,10 @@ impl Lowerer<'_> {
                 format!("`{s}` is used before its `let`; move the `let {s} = ...` item first"),
             ),
             None => {
-                let mut known: Vec<&str> = vec!["omega", "gamma"];
-                known.extend(self.field_names.iter().map(String::as_str));
+                let known: Vec<&str> = self.field_names.iter().map(String::as_str).collect();
                 self.err(
                     ident,
-                    format!("unknown name `{s}`: the Lagrangian can use `omega`, `gamma`, the fields of type f64, Vector3<f64> or Matrix3<f64> ({}) and earlier `let` names", known.join(", ")),
+                    format!("unknown name `{s}`: the Lagrangian can use `omega`, `gamma`, the fields of type f64, Vector3<f64> or Matrix3<f64> ({}) and earlier `let` names", if known.is_empty() { "none".to_string() } else { known.join(", ") }),
                 )
             }
         }
@@ -323,12 +322,12 @@ impl Lowerer<'_> {
         match e {
             E::Lit(lit) => {
                 let (digits, suffix, what) = match &lit.lit {
-                    syn::Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string(), "float"),
-                    syn::Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string(), "integer"),
+                    syn::Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string(), "a float"),
+                    syn::Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string(), "an integer"),
                     _ => return self.err(e, "only numeric literals can appear in a Lagrangian"),
                 };
                 if !(suffix.is_empty() || suffix == "f64") {
-                    return self.err(e, format!("a {what} literal with suffix `{suffix}`: numbers in a Lagrangian are `f64`; drop the suffix"));
+                    return self.err(e, format!("{what} literal with suffix `{suffix}`: numbers in a Lagrangian are `f64`; drop the suffix"));
                 }
                 match digits.parse::<f64>() {
                     Ok(v) if v.is_finite() => Some(Value::Scalar(self.g.constant(v))),

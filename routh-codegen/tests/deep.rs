@@ -20,7 +20,11 @@ fn deep_parentheses_are_an_error() {
         .expect("thread")
         .join()
         .expect("no panic");
-    assert!(out.contains("nested more than"), "{}", &out[..out.len().min(400)]);
+    assert!(
+        out.contains("nested more than"),
+        "{}",
+        &out[..out.len().min(400)]
+    );
 }
 
 #[test]
@@ -32,5 +36,9 @@ fn long_method_chains_are_an_error() {
         .expect("thread")
         .join()
         .expect("no panic");
-    assert!(out.contains("nested more than"), "{}", &out[..out.len().min(400)]);
+    assert!(
+        out.contains("nested more than"),
+        "{}",
+        &out[..out.len().min(400)]
+    );
 }
