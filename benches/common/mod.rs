@@ -18,7 +18,8 @@ macro_rules! model {
 
 model! { GYROSTAT_SRC:
     /// M1. Heavy rigid body about a fixed point carrying a rotor (Kelvin gyrostat), with
-    /// a(γ) = K + Bγ (as in `tests/common/mod.rs`).
+    /// a(γ) = K + Bγ (as in `tests/common/mod.rs`). The inertia tensor is declared symmetric,
+    /// as the hand-written bundle assumes it to be.
     #[derive(Lagrangian, Debug, Clone)]
     #[lagrangian(
         kinetic = 0.5 * omega.dot(inertia * omega),
@@ -26,6 +27,7 @@ model! { GYROSTAT_SRC:
         potential = mass * g * com.dot(gamma),
     )]
     pub struct Gyrostat {
+        #[lagrangian(symmetric)]
         pub inertia: Matrix3<f64>,
         pub rotor: Vector3<f64>,
         pub coupling: Matrix3<f64>,
