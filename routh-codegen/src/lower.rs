@@ -5,7 +5,6 @@ use crate::attr::{FieldKind, Input, Item, Term};
 use crate::ctxt::Ctxt;
 use routh_symbolic::{shape, Func, Graph, Id, Value};
 use std::collections::HashMap;
-use syn::spanned::Spanned;
 
 /// How a scalar input slot is read from the model struct.
 #[derive(Clone, Debug)]
@@ -202,7 +201,7 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
             }
             Item::Crate { path, .. } => krate = Some(path.clone()),
             Item::Failed { name: Some(name) } => {
-                l.later_lets.retain(|n| *n != name.to_string());
+                l.later_lets.retain(|n| name != n);
                 l.names.entry(name.to_string()).or_insert(Binding::Poisoned);
             }
             Item::Failed { name: None } => {}
@@ -544,9 +543,4 @@ impl Lowerer<'_> {
             _ => self.err(f, format!("unknown function `{name}`: the functions are `diag(v)`, `skew(v)` and `grad(EXPR, gamma)`")),
         }
     }
-}
-
-/// The span of an expression (re-exported for the checks).
-pub fn span_of(e: &syn::Expr) -> proc_macro2::Span {
-    e.span()
 }

@@ -310,7 +310,7 @@ fn mutate(rng: &mut ChaCha8Rng, toks: &mut Vec<Tok>, donors: &[Vec<Tok>]) {
             let j = rng.gen_range(i + 1..=n.min(i + 4));
             let run: Vec<Tok> = seq[i..j].to_vec();
             let k = rng.gen_range(1..=32);
-            let copies: Vec<Tok> = std::iter::repeat(run).take(k).flatten().collect();
+            let copies: Vec<Tok> = std::iter::repeat_n(run, k).flatten().collect();
             seq.splice(j..j, copies);
         }
         // swap two tokens
