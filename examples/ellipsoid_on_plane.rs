@@ -169,24 +169,24 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     let spheroid = Ellipsoid::spheroid();
     let triaxial = Ellipsoid::triaxial();
-    let mut figures = Vec::new();
-
-    figures.push(study(
-        "1. Prolate spheroid (egg)",
-        "spheroid_steady_motions.svg",
-        &spheroid,
-        true,
-        &[0.0, 9.0],
-        14.0,
-    )?);
-    figures.push(study(
-        "2. Triaxial ellipsoid",
-        "triaxial_steady_motions.svg",
-        &triaxial,
-        false,
-        &[0.0, 9.0],
-        14.0,
-    )?);
+    let figures = [
+        study(
+            "1. Prolate spheroid (egg)",
+            "spheroid_steady_motions.svg",
+            &spheroid,
+            true,
+            &[0.0, 9.0],
+            14.0,
+        )?,
+        study(
+            "2. Triaxial ellipsoid",
+            "triaxial_steady_motions.svg",
+            &triaxial,
+            false,
+            &[0.0, 9.0],
+            14.0,
+        )?,
+    ];
 
     // ERRATA E2: at rest the body lies stably on its flattest side (the minimum of C₃).
     let at_rest = classified_steady_motions(&triaxial, 0.0)?;

@@ -183,7 +183,7 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     // --- a(γ) = Bγ -----------------------------------------------------------------------------
     describe("2. Body with a(γ) = Bγ", &coupled);
-    for p in [0.0, 2.0, 5.0] {
+    for p in [0.0, 2.0, 4.5] {
         println!("\n p_ψ = {p}:");
         common::print_steady_table(&classified_steady_motions(&coupled, p)?, &e3, "∠(γ,e₃)");
     }

@@ -146,7 +146,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     fig.save(&path1, 900, 560)?;
     println!(
         "\nFamilies of steady motions over p_ψ ∈ [0, 5] ({} values): {} secularly stable, {} \
-         gyroscopically stabilised, {} unstable, {} degenerate (circles of tilted steady motions).",
+         gyroscopically stabilised, {} unstable, {} degenerate (the circles of tilted steady motions, and the sleeping top exactly on a boundary).",
         ps.len(),
         counts[0],
         counts[1],

@@ -51,8 +51,6 @@
 //! # Ok::<(), routh::fluid::FluidError>(())
 //! ```
 
-use std::fmt;
-
 use routh_core::nalgebra::{Matrix3, SymmetricEigen, Vector3};
 
 /// The matrices of the Lagrangian `L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)` of a body in an
@@ -103,15 +101,17 @@ impl FluidParameters {
 }
 
 /// Why [`kirchhoff_lagrangian`] rejected its input.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum FluidError {
     /// An entry of `a`, `b`, `c` or `k` is NaN or infinite.
+    #[error("non-finite entry in {what}")]
     NonFinite {
         /// Which input.
         what: &'static str,
     },
     /// `a` or `c` is not symmetric (relative asymmetry `‖M − Mᵀ‖/‖M‖` above `1e−12`).
+    #[error("{what} is not symmetric (relative asymmetry {asymmetry:e})")]
     NotSymmetric {
         /// Which input.
         what: &'static str,
@@ -120,6 +120,7 @@ pub enum FluidError {
     },
     /// `c`, or the kinetic form `T` of (53) (equivalently `A = a − bᵀc⁻¹b` with `c`), is not
     /// positive definite.
+    #[error("{what} is not positive definite (smallest eigenvalue {min_eigenvalue:e})")]
     NotPositiveDefinite {
         /// Which matrix.
         what: &'static str,
@@ -127,37 +128,12 @@ pub enum FluidError {
         min_eigenvalue: f64,
     },
     /// `k = |p|` must be positive (56).
+    #[error("the impulse magnitude k = {k} must be positive")]
     NonPositiveImpulse {
         /// The value given.
         k: f64,
     },
 }
-
-impl fmt::Display for FluidError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            FluidError::NonFinite { what } => write!(f, "non-finite entry in {what}"),
-            FluidError::NotSymmetric { what, asymmetry } => {
-                write!(
-                    f,
-                    "{what} is not symmetric (relative asymmetry {asymmetry:e})"
-                )
-            }
-            FluidError::NotPositiveDefinite {
-                what,
-                min_eigenvalue,
-            } => write!(
-                f,
-                "{what} is not positive definite (smallest eigenvalue {min_eigenvalue:e})"
-            ),
-            FluidError::NonPositiveImpulse { k } => {
-                write!(f, "the impulse magnitude k = {k} must be positive")
-            }
-        }
-    }
-}
-
-impl std::error::Error for FluidError {}
 
 /// Relative asymmetry above which `a` or `c` is rejected.
 const SYMMETRY_TOL: f64 = 1e-12;
@@ -178,7 +154,7 @@ fn check_symmetric(what: &'static str, m: &Matrix3<f64>) -> Result<(), FluidErro
 fn check_positive_definite(what: &'static str, m: &Matrix3<f64>) -> Result<(), FluidError> {
     let min_eigenvalue = SymmetricEigen::new(*m).eigenvalues.min();
     // Relative to the largest entry, so that round-off cannot pass off a singular form.
-    if !(min_eigenvalue > 1e-14 * m.amax()) {
+    if min_eigenvalue.is_nan() || min_eigenvalue <= 1e-14 * m.amax() {
         return Err(FluidError::NotPositiveDefinite {
             what,
             min_eigenvalue,
