@@ -7,44 +7,15 @@
 use routh_symbolic::{op_counts, Id};
 use std::time::Instant;
 
-const M1: &str = r#"
-#[derive(Lagrangian)]
-#[lagrangian(
-    kinetic = 0.5 * omega.dot(inertia * omega),
-    linear = (rotor + coupling * gamma).dot(omega),
-    potential = mass * g * com.dot(gamma),
-)]
-pub struct Gyrostat {
-    #[lagrangian(symmetric)]
-    pub inertia: Matrix3<f64>,
-    pub rotor: Vector3<f64>,
-    pub coupling: Matrix3<f64>,
-    pub com: Vector3<f64>,
-    pub mass: f64,
-    pub g: f64,
-}
-"#;
-
-const M2: &str = r#"
-#[derive(Lagrangian)]
-#[lagrangian(
-    let d = diag(semi_axes.component_mul(semi_axes)),
-    let c3 = gamma.dot(d * gamma).sqrt() - offset.dot(gamma),
-    let n = grad(c3, gamma),
-    kinetic = 0.5 * (omega.dot(diag(inertia) * omega) + mass * n.dot(gamma.cross(omega)).powi(2)),
-    potential = mass * g * c3,
-)]
-pub struct Ellipsoid {
-    pub inertia: Vector3<f64>,
-    pub semi_axes: Vector3<f64>,
-    pub offset: Vector3<f64>,
-    pub mass: f64,
-    pub g: f64,
-}
-"#;
+// The benchmark models M1 and M2, exactly as `benches/bundle.rs` evaluates them.
+#[path = "../benches/common/mod.rs"]
+mod common;
 
 fn main() {
-    for (name, src) in [("M1 gyrostat", M1), ("M2 ellipsoid", M2)] {
+    for (name, src) in [
+        ("M1 gyrostat", common::GYROSTAT_SRC),
+        ("M2 ellipsoid", common::ELLIPSOID2_SRC),
+    ] {
         let di: syn::DeriveInput = syn::parse_str(src).expect("model parses");
         let t0 = Instant::now();
         let runs = 20;
