@@ -1,5 +1,5 @@
 //! The code generator behind `#[derive(Lagrangian)]` (the proc-macro crate `routh-macros` is a
-//! shim over [`derive`]). Kept in a plain crate so that it can be unit-tested, fuzzed and
+//! shim over [`derive()`]). Kept in a plain crate so that it can be unit-tested, fuzzed and
 //! benchmarked.
 //!
 //! Pipeline: [`attr`] parses the struct and its `#[lagrangian(...)]` items, [`check`] applies the
