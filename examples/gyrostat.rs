@@ -15,7 +15,7 @@ use common::gyrostat::Gyrostat;
 use common::plot::{verdict_series, Figure};
 use common::{classified_steady_motions, linspace, report_at, verdict_label};
 use plotters::prelude::SeriesLabelPosition;
-use routh::{Routhian, Vector3};
+use routh::{DerivedFormulas, Routhian, Vector3};
 
 /// Unit vectors spread over the sphere (deterministic), for the formula check.
 fn sample_directions(n: usize) -> Vec<Vector3<f64>> {
@@ -62,7 +62,12 @@ fn describe(name: &str, body: &Gyrostat) {
             b[(2, 2)]
         );
     }
-    println!("Amended potential (40):");
+    println!("Amended potential (34) as the derive derived it, in the model's parameters:");
+    println!(
+        "  U_r = {}",
+        <Gyrostat as DerivedFormulas>::AMENDED_POTENTIAL
+    );
+    println!("The same, (40) with this body's numbers:");
     println!("  {}", body.amended_potential_formula());
     // The derive's U_r = −R(0, γ, p_ψ) against the closed form (40) evaluated directly.
     let mut max_err = 0.0f64;

@@ -40,7 +40,7 @@ pub mod __private {
     pub use core::primitive::f64;
     pub use core::primitive::i32;
     pub use routh_core::nalgebra::{Matrix3, Vector3};
-    pub use routh_core::{GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+    pub use routh_core::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
 
     /// `sign(x)` with `sign(0) = 0`: the derivative of `abs`.
     #[inline]

@@ -1022,4 +1022,10 @@ const _: () = {
             }
         }
     }
+    #[automatically_derived]
+    impl ::routh::__private::DerivedFormulas for LagrangeTop {
+        const LAGRANGIAN: &'static str = "0.5·(a1·(ω₁^2 + ω₂^2) + ω₃^2·c) - γ₃·mgl";
+        const AMENDED_POTENTIAL: &'static str = "γ₃·mgl + 0.5·p_ψ^2 / (a1·(γ₁^2 + γ₂^2) + γ₃^2·c)";
+        const PSI_DOT_AT_REST: &'static str = "p_ψ / (a1·(γ₁^2 + γ₂^2) + γ₃^2·c)";
+    }
 };

@@ -72,6 +72,10 @@ pub fn expand(di: &syn::DeriveInput) -> Result<TokenStream, syn::Error> {
     let routh = e.routhian_methods(&model.outputs);
     let ident = &di.ident;
     let (ig, tg, wc) = di.generics.split_for_impl();
+    let graph = &model.lowered.sym.graph;
+    let o = &model.outputs;
+    let [f_l, f_ur, f_pd] = [o.lagrangian, o.amended_potential, o.psi_dot_at_rest]
+        .map(|id| routh_symbolic::to_infix(graph, id));
     Ok(quote! {
         #[doc(hidden)]
         #[allow(non_upper_case_globals, unused_qualifications, clippy::all, clippy::pedantic, clippy::nursery)]
@@ -83,6 +87,12 @@ pub fn expand(di: &syn::DeriveInput) -> Result<TokenStream, syn::Error> {
             #[automatically_derived]
             impl #ig #krate::__private::Routhian for #ident #tg #wc {
                 #routh
+            }
+            #[automatically_derived]
+            impl #ig #krate::__private::DerivedFormulas for #ident #tg #wc {
+                const LAGRANGIAN: &'static str = #f_l;
+                const AMENDED_POTENTIAL: &'static str = #f_ur;
+                const PSI_DOT_AT_REST: &'static str = #f_pd;
             }
         };
     })
@@ -121,6 +131,12 @@ pub fn fallback(di: &syn::DeriveInput, err: syn::Error) -> TokenStream {
                 fn d2r_domega2(&self, _: &#v3, _: &#v3, _: #f) -> #m3 #body
                 fn d2r_domega_dgamma(&self, _: &#v3, _: &#v3, _: #f) -> #m3 #body
                 fn d2r_dgamma2(&self, _: &#v3, _: &#v3, _: #f) -> #m3 #body
+            }
+            #[automatically_derived]
+            impl #ig #k::__private::DerivedFormulas for #ident #tg #wc {
+                const LAGRANGIAN: &'static str = "";
+                const AMENDED_POTENTIAL: &'static str = "";
+                const PSI_DOT_AT_REST: &'static str = "";
             }
         };
     }

@@ -34,6 +34,8 @@ pub struct Outputs {
     pub d2r_dgamma2: M3,
     /// (34), a function of γ and p_ψ only.
     pub amended_potential: Id,
+    /// ψ̇ at Ω = 0 (38).
+    pub psi_dot_at_rest: Id,
     /// A, G, C of (64) at Ω = 0.
     pub gyro_a: M3,
     pub gyro_g: M3,
@@ -235,7 +237,7 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let dr_dp = g.neg(psi_dot);
 
     // (34) and section 5 at Ω = 0.
-    let mut rest: Vec<Id> = vec![routhian];
+    let mut rest: Vec<Id> = vec![routhian, psi_dot];
     rest.extend(dr_domega);
     rest.extend(dr_dgamma);
     rest.extend(d2r_domega2.iter().flatten());
@@ -243,6 +245,8 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     rest.extend(d2r_dgamma2.iter().flatten());
     let r0 = subst_vec(g, &rest, &at_rest);
     let amended_potential = g.neg(r0[0]);
+    let psi_dot_at_rest = r0[1];
+    let r0 = &r0[1..];
     let v3 = |o: usize| -> V3 { [r0[o], r0[o + 1], r0[o + 2]] };
     let m3 =
         |o: usize| -> M3 { std::array::from_fn(|i| std::array::from_fn(|k| r0[o + 3 * i + k])) };
@@ -267,6 +271,7 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         d2r_domega_dgamma,
         d2r_dgamma2,
         amended_potential,
+        psi_dot_at_rest,
         gyro_a: a0,
         gyro_g,
         gyro_c,

@@ -16,7 +16,9 @@ mod stability;
 mod steady;
 
 pub use error::RouthError;
-pub use model::{cross_matrix, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+pub use model::{
+    cross_matrix, DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian,
+};
 pub use sim::{
     full_vector_field, reduced_vector_field, simulate_full, simulate_reduced, Method, Output,
     ReducedTrajectory, SimOptions, SimStats, Trajectory, SIM_UNIT_GAMMA_TOL,

@@ -151,3 +151,15 @@ pub trait Routhian: Lagrangian {
         GyroscopicSystem::from_bundle(&self.bundle(&Vector3::zeros(), gamma, p_psi), gamma)
     }
 }
+
+/// Formulas that `#[derive(Lagrangian)]` derived for a model, as plain text, for reports. The
+/// variables are the DSL's names: the fields (a vector field `v` as `v[0]`, a matrix `m` as
+/// `m[(i,j)]`), `ω₁ ω₂ ω₃`, `γ₁ γ₂ γ₃` and `p_ψ`. Hand-written models need not implement it.
+pub trait DerivedFormulas {
+    /// `L(ω, γ)` after simplification.
+    const LAGRANGIAN: &'static str;
+    /// The amended potential (34) `U_r(γ, p_ψ) = −R(0, γ, p_ψ)`, i.e. (40) for the model.
+    const AMENDED_POTENTIAL: &'static str;
+    /// `ψ̇(0, γ, p_ψ)` of (38): the rate of rotation about the vertical of a steady motion at γ.
+    const PSI_DOT_AT_REST: &'static str;
+}

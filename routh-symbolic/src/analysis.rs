@@ -1,7 +1,7 @@
 //! Analyses of expressions: polynomial degree in a set of variables, scheduling of outputs,
 //! operation counts and a plain-text printer.
 
-use crate::graph::{Func, Graph, Id, Node};
+use crate::graph::{Graph, Id, Node};
 
 /// The degree of an expression in a set of variables.
 #[derive(Copy, Clone, PartialEq, Eq, Debug)]
@@ -232,82 +232,184 @@ pub fn op_counts(g: &Graph, outputs: &[Id]) -> OpCounts {
     c
 }
 
-/// Prints `root` as an infix formula, with variables named by `Graph::var_name`.
-/// Shared subexpressions are printed in full, so keep this for small expressions.
+/// Prints `root` as an infix formula, with variables named by `Graph::var_name`: sums are
+/// written with their signs (`a - 0.5·b`), products with their numerator and denominator
+/// (`a·b / (c·d)`). Shared subexpressions are printed in full, so keep this for formulas of a
+/// modest size (an amended potential, say).
 pub fn to_infix(g: &Graph, root: Id) -> String {
-    fn prec(n: &Node) -> u8 {
-        match n {
-            Node::Add(..) => 1,
-            Node::Mul(..) | Node::Recip(_) => 2,
-            Node::Neg(_) => 3,
-            Node::Powi(..) | Node::Powf(..) => 4,
-            Node::Const(b) if f64::from_bits(*b) < 0.0 => 3,
-            _ => 5,
-        }
+    // Printing expands the DAG into a tree, which can be exponentially larger: refuse beyond a
+    // size that is still readable.
+    const MAX_TREE: u64 = 4000;
+    let mut size = vec![0u64; root.index() + 1];
+    for i in 0..=root.index() {
+        size[i] = g.nodes()[i]
+            .children()
+            .fold(1u64, |acc, c| acc.saturating_add(size[c.index()]));
     }
-    fn go(g: &Graph, id: Id, out: &mut String, parent: u8) {
-        let node = g.node(id);
-        let p = prec(&node);
-        let paren = p < parent;
-        if paren {
-            out.push('(');
-        }
-        match node {
-            Node::Const(b) => out.push_str(&format!("{}", f64::from_bits(b))),
-            Node::Var(v) => out.push_str(g.var_name(v)),
-            Node::Add(a, b) => {
-                go(g, a, out, 1);
-                if let Node::Neg(nb) = g.node(b) {
-                    out.push_str(" - ");
-                    go(g, nb, out, 2);
-                } else {
-                    out.push_str(" + ");
-                    go(g, b, out, 1);
-                }
-            }
-            Node::Mul(a, b) => {
-                if let Node::Recip(d) = g.node(b) {
-                    go(g, a, out, 2);
-                    out.push_str(" / ");
-                    go(g, d, out, 3);
-                } else {
-                    go(g, a, out, 2);
-                    out.push('·');
-                    go(g, b, out, 2);
-                }
-            }
-            Node::Neg(a) => {
-                out.push('-');
-                go(g, a, out, 3);
-            }
-            Node::Recip(a) => {
-                out.push_str("1 / ");
-                go(g, a, out, 3);
-            }
-            Node::Powi(a, n) => {
-                go(g, a, out, 5);
-                out.push_str(&format!("^{n}"));
-            }
-            Node::Powf(a, b) => {
-                go(g, a, out, 5);
-                out.push('^');
-                go(g, b, out, 5);
-            }
-            Node::Func(f, a) => {
-                out.push_str(match f {
-                    Func::Sign => "sign",
-                    f => f.name(),
-                });
-                out.push('(');
-                go(g, a, out, 0);
-                out.push(')');
-            }
-        }
-        if paren {
-            out.push(')');
-        }
+    if size[root.index()] > MAX_TREE {
+        return format!(
+            "(a formula of more than {MAX_TREE} terms, not printed; {} distinct subexpressions)",
+            schedule(g, &[root]).len()
+        );
     }
     let mut s = String::new();
-    go(g, root, &mut s, 0);
+    write_expr(g, root, &mut s, 0);
     s
+}
+
+/// Binding strength: 1 sums, 2 products and quotients, 3 unary minus, 4 powers, 5 atoms.
+fn write_expr(g: &Graph, id: Id, out: &mut String, parent: u8) {
+    let (prec, text) = match g.node(id) {
+        Node::Add(..) => (1, sum_text(g, id, false)),
+        Node::Mul(..) | Node::Recip(_) => {
+            let (negative, body) = product_text(g, id);
+            if negative {
+                (3, format!("-{body}"))
+            } else {
+                (2, body)
+            }
+        }
+        Node::Neg(x) if matches!(g.node(x), Node::Add(..)) => (1, sum_text(g, x, true)),
+        Node::Neg(x) => {
+            let mut t = String::from("-");
+            write_expr(g, x, &mut t, 3);
+            (3, t)
+        }
+        Node::Const(b) => {
+            let c = f64::from_bits(b);
+            (if c < 0.0 { 3 } else { 5 }, format!("{c}"))
+        }
+        Node::Var(v) => (5, g.var_name(v).to_string()),
+        Node::Powi(x, n) => {
+            let mut t = String::new();
+            write_expr(g, x, &mut t, 5);
+            (4, format!("{t}^{n}"))
+        }
+        Node::Powf(x, e) => {
+            let (mut t, mut u) = (String::new(), String::new());
+            write_expr(g, x, &mut t, 5);
+            write_expr(g, e, &mut u, 5);
+            (4, format!("{t}^{u}"))
+        }
+        Node::Func(f, x) => {
+            let mut t = String::new();
+            write_expr(g, x, &mut t, 0);
+            (5, format!("{}({t})", f.name()))
+        }
+    };
+    if prec < parent {
+        out.push('(');
+        out.push_str(&text);
+        out.push(')');
+    } else {
+        out.push_str(&text);
+    }
+}
+
+/// The terms of a sum (negated if `negate`), each with its sign.
+fn sum_text(g: &Graph, id: Id, negate: bool) -> String {
+    fn terms(g: &Graph, id: Id, acc: &mut Vec<Id>) {
+        match g.node(id) {
+            Node::Add(a, b) => {
+                terms(g, a, acc);
+                terms(g, b, acc);
+            }
+            _ => acc.push(id),
+        }
+    }
+    let mut ts = Vec::new();
+    terms(g, id, &mut ts);
+    let mut out = String::new();
+    for (k, t) in ts.into_iter().enumerate() {
+        let mut body = String::new();
+        let negative = match g.node(t) {
+            Node::Neg(x) => {
+                write_expr(g, x, &mut body, 2);
+                true
+            }
+            Node::Const(b) if f64::from_bits(b) < 0.0 => {
+                body = format!("{}", -f64::from_bits(b));
+                true
+            }
+            Node::Mul(..) => {
+                let (negative, text) = product_text(g, t);
+                body = text;
+                negative
+            }
+            _ => {
+                write_expr(g, t, &mut body, 2);
+                false
+            }
+        };
+        match (k, negative != negate) {
+            (0, true) => out.push('-'),
+            (0, false) => {}
+            (_, true) => out.push_str(" - "),
+            (_, false) => out.push_str(" + "),
+        }
+        out.push_str(&body);
+    }
+    out
+}
+
+/// A product as `(negative, "num / den")` with the constant factor in front.
+fn product_text(g: &Graph, id: Id) -> (bool, String) {
+    fn factors(g: &Graph, id: Id, coef: &mut f64, num: &mut Vec<Id>, den: &mut Vec<Id>) {
+        match g.node(id) {
+            Node::Mul(a, b) => {
+                factors(g, a, coef, num, den);
+                factors(g, b, coef, num, den);
+            }
+            Node::Neg(x) => {
+                *coef = -*coef;
+                factors(g, x, coef, num, den);
+            }
+            Node::Const(b) => *coef *= f64::from_bits(b),
+            Node::Recip(x) => den.push(x),
+            _ => num.push(id),
+        }
+    }
+    let (mut coef, mut num, mut den) = (1.0, Vec::new(), Vec::new());
+    factors(g, id, &mut coef, &mut num, &mut den);
+    // Equal factors are written as a power: x·x → x^2.
+    let join = |ids: &[Id], wrap_all: bool| {
+        let mut t = String::new();
+        let mut seen: Vec<Id> = Vec::new();
+        for &f in ids {
+            if seen.contains(&f) {
+                continue;
+            }
+            seen.push(f);
+            if seen.len() > 1 {
+                t.push('·');
+            }
+            let n = ids.iter().filter(|&&x| x == f).count();
+            if n > 1 {
+                write_expr(g, f, &mut t, 5);
+                t.push_str(&format!("^{n}"));
+            } else {
+                write_expr(g, f, &mut t, if wrap_all { 3 } else { 2 });
+            }
+        }
+        t
+    };
+    let mut text = String::new();
+    if coef.abs() != 1.0 || num.is_empty() {
+        text.push_str(&format!("{}", coef.abs()));
+        if !num.is_empty() {
+            text.push('·');
+        }
+    }
+    text.push_str(&join(&num, false));
+    if !den.is_empty() {
+        text.push_str(" / ");
+        if den.len() == 1 {
+            write_expr(g, den[0], &mut text, 3);
+        } else {
+            text.push('(');
+            text.push_str(&join(&den, false));
+            text.push(')');
+        }
+    }
+    (coef < 0.0, text)
 }
