@@ -8,7 +8,7 @@
 mod common;
 
 use std::error::Error;
-use std::path::PathBuf;
+use std::path::Path;
 use std::time::Instant;
 
 use common::gyrostat::Gyrostat;
@@ -92,9 +92,9 @@ fn describe(name: &str, body: &Gyrostat) {
 fn energy_momentum(
     body: &Gyrostat,
     title: &str,
-    path: PathBuf,
+    path: &Path,
     ps: &[f64],
-) -> Result<[usize; 4], Box<dyn Error>> {
+) -> Result<(), Box<dyn Error>> {
     let mut pts = Vec::new();
     let mut counts = [0usize; 4];
     for &p in ps {
@@ -112,8 +112,21 @@ fn energy_momentum(
     );
     fig.series.extend(verdict_series(&pts, 3));
     fig.legend = SeriesLabelPosition::UpperMiddle;
-    fig.save(&path, 900, 560)?;
-    Ok(counts)
+    fig.save(path, 900, 560)?;
+    let (lo, hi) = (
+        ps.first().copied().unwrap_or(0.0),
+        ps.last().copied().unwrap_or(0.0),
+    );
+    println!(
+        "\nEnergy–momentum diagram over p_ψ ∈ [{lo}, {hi}] ({} values): {} secularly stable, {} \
+         gyroscopically stabilised, {} unstable, {} degenerate steady motions.",
+        ps.len(),
+        counts[0],
+        counts[1],
+        counts[2],
+        counts[3]
+    );
+    Ok(())
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -169,21 +182,12 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     let ps = linspace(-6.0, 9.0, 121);
     let path = out.join("kelvin_energy_momentum.svg");
-    let c = energy_momentum(
+    energy_momentum(
         &kelvin,
         "Kelvin gyrostat (a = K = 3.5e₃): energy–momentum diagram of steady motions",
-        path.clone(),
+        &path,
         &ps,
     )?;
-    println!(
-        "\nEnergy–momentum diagram over p_ψ ∈ [−6, 9] ({} values): {} secularly stable, {} \
-         gyroscopically stabilised, {} unstable, {} degenerate steady motions.",
-        ps.len(),
-        c[0],
-        c[1],
-        c[2],
-        c[3]
-    );
     figures.push(path);
 
     // --- a(γ) = Bγ -----------------------------------------------------------------------------
@@ -194,21 +198,12 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     let ps = linspace(-6.0, 6.0, 121);
     let path = out.join("coupled_energy_momentum.svg");
-    let c = energy_momentum(
+    energy_momentum(
         &coupled,
         "Body with a(γ) = Bγ: energy–momentum diagram of steady motions",
-        path.clone(),
+        &path,
         &ps,
     )?;
-    println!(
-        "\nEnergy–momentum diagram over p_ψ ∈ [−6, 6] ({} values): {} secularly stable, {} \
-         gyroscopically stabilised, {} unstable, {} degenerate steady motions.",
-        ps.len(),
-        c[0],
-        c[1],
-        c[2],
-        c[3]
-    );
     figures.push(path);
 
     println!("\nFigures:");

@@ -3,6 +3,7 @@
 //! accepts (paper (8)–(19), section 5, with ERRATA E4–E6).
 
 use crate::lower::Lowered;
+use routh_symbolic::shape::{dot3, matmul3, skew3, transpose3};
 use routh_symbolic::{Graph, Id};
 use std::collections::HashMap;
 
@@ -65,34 +66,8 @@ fn sym_jacobian(g: &mut Graph, f: &V3, x: &V3) -> M3 {
     h
 }
 
-fn dot(g: &mut Graph, a: &V3, b: &V3) -> Id {
-    let t: Vec<Id> = (0..3).map(|i| g.mul(a[i], b[i])).collect();
-    g.sum(t)
-}
-
 fn subst_vec(g: &mut Graph, v: &[Id], map: &HashMap<u32, Id>) -> Vec<Id> {
     g.substitute(v, map)
-}
-
-/// `a b` for 3×3 matrices of nodes.
-fn matmul(g: &mut Graph, a: &M3, b: &M3) -> M3 {
-    std::array::from_fn(|i| {
-        std::array::from_fn(|k| {
-            let col = [b[0][k], b[1][k], b[2][k]];
-            dot(g, &a[i], &col)
-        })
-    })
-}
-
-fn transpose(a: &M3) -> M3 {
-    std::array::from_fn(|i| std::array::from_fn(|k| a[k][i]))
-}
-
-/// `[x]×`, with `[x]× y = x × y`.
-fn cross_matrix(g: &mut Graph, x: &V3) -> M3 {
-    let z = g.zero();
-    let n = x.map(|c| g.neg(c));
-    [[z, n[2], x[1]], [x[2], z, n[0]], [n[1], x[0], z]]
 }
 
 /// How the cyclic momentum q = (∂L/∂ω, γ) of (9) is formed. Both are exact; which gives the
@@ -156,10 +131,10 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let j_rest = subst_vec(g, &j_flat, &at_rest);
     let d2l_domega2: M3 = std::array::from_fn(|i| std::array::from_fn(|k| j_rest[3 * i + k]));
     let d2l_domega_dgamma = jacobian(g, &dl_domega, &gm);
-    let e1 = dot(g, &w, &dl_domega);
+    let e1 = dot3(g, &w, &dl_domega);
     let energy = g.sub(e1, lagrangian);
     let cyclic_momentum = match momentum {
-        Momentum::Contracted => dot(g, &dl_domega, &gm),
+        Momentum::Contracted => dot3(g, &dl_domega, &gm),
         Momentum::Directional => {
             let s_dir = g.var("s");
             let s_var = g.as_var(s_dir).unwrap_or(u32::MAX);
@@ -281,10 +256,10 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
 /// ERRATA E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these
 /// are the entries printed in section 5 in matrix form.
 fn gyroscopic(g: &mut Graph, gm: &V3, dr_dw: &V3, dr_dg: &V3, mx: &M3, h: &M3) -> (M3, M3) {
-    let gx = cross_matrix(g, gm);
-    let rw = cross_matrix(g, dr_dw);
-    let p1 = matmul(g, mx, &gx);
-    let p2 = matmul(g, &gx, &transpose(mx));
+    let gx = skew3(g, gm);
+    let rw = skew3(g, dr_dw);
+    let p1 = matmul3(g, mx, &gx);
+    let p2 = matmul3(g, &gx, &transpose3(mx));
     let half = g.constant(0.5);
     let gyro_g: M3 = std::array::from_fn(|i| {
         std::array::from_fn(|k| {
@@ -293,7 +268,7 @@ fn gyroscopic(g: &mut Graph, gm: &V3, dr_dw: &V3, dr_dg: &V3, mx: &M3, h: &M3) -
             g.mul(half, s)
         })
     });
-    let mu = dot(g, dr_dg, gm);
+    let mu = dot3(g, dr_dg, gm);
     let stiff: M3 = std::array::from_fn(|i| {
         std::array::from_fn(|k| {
             let nh = g.neg(h[i][k]);
@@ -304,7 +279,7 @@ fn gyroscopic(g: &mut Graph, gm: &V3, dr_dw: &V3, dr_dg: &V3, mx: &M3, h: &M3) -
             }
         })
     });
-    let t = matmul(g, &transpose(&gx), &stiff);
-    let gyro_c = matmul(g, &t, &gx);
+    let t = matmul3(g, &transpose3(&gx), &stiff);
+    let gyro_c = matmul3(g, &t, &gx);
     (gyro_g, gyro_c)
 }

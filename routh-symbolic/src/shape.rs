@@ -147,7 +147,11 @@ pub fn neg(g: &mut Graph, a: &Value) -> Value {
     a.map(g, Graph::neg)
 }
 
-fn dot3(g: &mut Graph, a: &[Id; 3], b: &[Id; 3]) -> Id {
+// Kernels on arrays of nodes (no shape checks), shared by the DSL's operators below and by
+// code that builds formulas from known shapes (the Routh reduction).
+
+/// `a·b` for two 3-vectors of nodes.
+pub fn dot3(g: &mut Graph, a: &[Id; 3], b: &[Id; 3]) -> Id {
     let t: Vec<Id> = (0..3).map(|i| g.mul(a[i], b[i])).collect();
     g.sum(t)
 }
@@ -156,17 +160,34 @@ fn column(m: &[[Id; 3]; 3], j: usize) -> [Id; 3] {
     [m[0][j], m[1][j], m[2][j]]
 }
 
+/// `a b` for two 3×3 matrices of nodes.
+pub fn matmul3(g: &mut Graph, a: &[[Id; 3]; 3], b: &[[Id; 3]; 3]) -> [[Id; 3]; 3] {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let c = column(b, j);
+            dot3(g, &a[i], &c)
+        })
+    })
+}
+
+/// `aᵀ` for a 3×3 matrix of nodes.
+pub fn transpose3(a: &[[Id; 3]; 3]) -> [[Id; 3]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[j][i]))
+}
+
+/// `[v]×`, the cross-product matrix of a 3-vector of nodes: `[v]× w = v × w`.
+pub fn skew3(g: &mut Graph, v: &[Id; 3]) -> [[Id; 3]; 3] {
+    let z = g.zero();
+    let n: [Id; 3] = v.map(|x| g.neg(x));
+    [[z, n[2], v[1]], [v[2], z, n[0]], [n[1], v[0], z]]
+}
+
 /// `a * b`: scalar·anything, matrix·vector, matrix·matrix.
 pub fn mul(g: &mut Graph, a: &Value, b: &Value) -> R {
     Ok(match (*a, *b) {
         (Value::Scalar(s), other) | (other, Value::Scalar(s)) => other.map(g, |g, x| g.mul(s, x)),
         (Value::Matrix(m), Value::Vector(v)) => Value::Vector(std::array::from_fn(|i| dot3(g, &m[i], &v))),
-        (Value::Matrix(m), Value::Matrix(n)) => Value::Matrix(std::array::from_fn(|i| {
-            std::array::from_fn(|j| {
-                let c = column(&n, j);
-                dot3(g, &m[i], &c)
-            })
-        })),
+        (Value::Matrix(m), Value::Matrix(n)) => Value::Matrix(matmul3(g, &m, &n)),
         (Value::Vector(_), Value::Vector(_)) => {
             return err("cannot multiply two vectors with `*`: use `a.dot(b)`, `a.cross(b)` or `a.component_mul(b)`".into())
         }
@@ -227,9 +248,7 @@ pub fn norm(g: &mut Graph, a: &Value) -> R {
 /// `m.transpose()`.
 pub fn transpose(_g: &mut Graph, a: &Value) -> R {
     let m = a.matrix("the receiver of `transpose`")?;
-    Ok(Value::Matrix(std::array::from_fn(|i| {
-        std::array::from_fn(|j| m[j][i])
-    })))
+    Ok(Value::Matrix(transpose3(&m)))
 }
 
 /// `a.component_mul(b)` (same shapes).
@@ -264,13 +283,7 @@ pub fn diag(g: &mut Graph, a: &Value) -> R {
 /// `skew(v)`: the cross-product matrix, `skew(v) * w == v.cross(w)`.
 pub fn skew(g: &mut Graph, a: &Value) -> R {
     let v = a.vector("the argument of `skew`")?;
-    let z = g.zero();
-    let n: [Id; 3] = v.map(|x| g.neg(x));
-    Ok(Value::Matrix([
-        [z, n[2], v[1]],
-        [v[2], z, n[0]],
-        [n[1], v[0], z],
-    ]))
+    Ok(Value::Matrix(skew3(g, &v)))
 }
 
 /// An elementary function or `recip` applied componentwise to a scalar.
