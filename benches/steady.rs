@@ -16,7 +16,7 @@ fn analyse(model: &common::Gyrostat, p_psi: f64) -> Vec<(SteadyMotion, Stability
     motions
         .into_iter()
         .map(|s| {
-            let report = classify(model, &s, p_psi).expect("classify");
+            let report = classify(model, &s).expect("classify");
             (s, report)
         })
         .collect()
@@ -46,7 +46,7 @@ fn bench_steady(c: &mut Criterion) {
         b.iter(|| {
             motions
                 .iter()
-                .map(|s| classify(black_box(&model), s, P_PSI).expect("classify"))
+                .map(|s| classify(black_box(&model), s).expect("classify"))
                 .collect::<Vec<_>>()
         })
     });

@@ -135,6 +135,29 @@ pub enum FluidError {
     },
 }
 
+impl FluidError {
+    /// Which input of [`kirchhoff_lagrangian`] the error is about.
+    fn what(&self) -> &'static str {
+        match self {
+            FluidError::NonFinite { what }
+            | FluidError::NotSymmetric { what, .. }
+            | FluidError::NotPositiveDefinite { what, .. } => what,
+            FluidError::NonPositiveImpulse { .. } => "k",
+        }
+    }
+}
+
+/// A fluid body that cannot be built is an invalid model, so `?` works in functions returning
+/// [`RouthError`](crate::RouthError).
+impl From<FluidError> for crate::RouthError {
+    fn from(e: FluidError) -> Self {
+        crate::RouthError::InvalidModel {
+            what: e.what(),
+            reason: e.to_string(),
+        }
+    }
+}
+
 /// Relative asymmetry above which `a` or `c` is rejected.
 const SYMMETRY_TOL: f64 = 1e-12;
 

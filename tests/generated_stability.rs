@@ -10,7 +10,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh::nalgebra::{Matrix6, Vector6};
 use routh::{
-    classify, full_vector_field, steady_motions, Complex, Lagrangian, Routhian, Stability,
+    classify, sim::full_vector_field, steady_motions, Complex, Lagrangian, Routhian, Stability,
 };
 use routh::{SteadyMotion, Vector3};
 
@@ -38,8 +38,8 @@ fn fd_jacobian<M: Lagrangian>(m: &M, x: &Vector6<f64>, h: f64) -> Matrix6<f64> {
 
 /// Checks the f₂ roots against the Jacobian's eigenvalues (f₂ roots ∪ {0, 0}); returns the worst
 /// relative mismatch.
-fn check_roots<M: Routhian>(model: &M, s: &SteadyMotion, p: f64) -> f64 {
-    let report = classify(model, s, p).expect("classify");
+fn check_roots<M: Routhian>(model: &M, s: &SteadyMotion) -> f64 {
+    let report = classify(model, s).expect("classify");
     let w = s.psi_dot * s.gamma;
     let x = Vector6::new(w.x, w.y, w.z, s.gamma.x, s.gamma.y, s.gamma.z);
     let eig: Vec<Complex<f64>> = fd_jacobian(model, &x, 1e-3)
@@ -92,10 +92,10 @@ fn f2_roots_of_generated_models_match_the_full_jacobian() {
             "same number of steady motions as the twin"
         );
         for s in found.iter().filter(|s| s.isolated) {
-            worst = worst.max(check_roots(&model, s, p));
+            worst = worst.max(check_roots(&model, s));
             // The verdict equals the num-dual twin's at the same steady motion.
-            let ours = classify(&model, s, p).expect("classify").verdict;
-            let theirs = classify(&twin, s, p).expect("classify twin").verdict;
+            let ours = classify(&model, s).expect("classify").verdict;
+            let theirs = classify(&twin, s).expect("classify twin").verdict;
             assert_eq!(ours, theirs);
             checked += 1;
         }
@@ -106,7 +106,7 @@ fn f2_roots_of_generated_models_match_the_full_jacobian() {
             .iter()
             .filter(|s| s.isolated)
         {
-            worst = worst.max(check_roots(&model, s, p));
+            worst = worst.max(check_roots(&model, s));
             checked += 1;
         }
     }
@@ -131,6 +131,7 @@ fn derived_lagrange_top_obeys_maievskii() {
         let top = LagrangeTop { a1, c, mgl };
         let threshold = (4.0 * a1 * mgl).sqrt();
         let sleeping = |p: f64| SteadyMotion {
+            p_psi: p,
             gamma: Vector3::z(),
             psi_dot: top.psi_dot(&Vector3::zeros(), &Vector3::z(), p),
             mu: top.dr_dgamma(&Vector3::zeros(), &Vector3::z(), p).z,
@@ -141,10 +142,10 @@ fn derived_lagrange_top_obeys_maievskii() {
         let below = threshold * (1.0 - 0.001f64).sqrt();
         let above = threshold * (1.0 + 0.001f64).sqrt();
         assert_eq!(
-            classify(&top, &sleeping(below), below).unwrap().verdict,
+            classify(&top, &sleeping(below)).unwrap().verdict,
             Stability::Unstable
         );
-        let v = classify(&top, &sleeping(above), above).unwrap().verdict;
+        let v = classify(&top, &sleeping(above)).unwrap().verdict;
         assert!(
             matches!(
                 v,

@@ -38,7 +38,7 @@ pub fn classified_steady_motions<M: Routhian>(
     steady_motions(model, p_psi)?
         .into_iter()
         .map(|motion| {
-            let report = classify(model, &motion, p_psi)?;
+            let report = classify(model, &motion)?;
             Ok(Classified {
                 p_psi,
                 motion,
@@ -56,7 +56,7 @@ pub fn report_at<M: Routhian>(
     p_psi: f64,
 ) -> Result<StabilityReport, RouthError> {
     let motion = SteadyMotion::at(model, gamma, p_psi, true)?;
-    classify(model, &motion, p_psi)
+    classify(model, &motion)
 }
 
 /// The verdict of [`report_at`].

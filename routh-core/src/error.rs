@@ -1,50 +1,120 @@
+//! The error type of the runtime: every failure is a value, no function of `routh-core` panics on
+//! bad input.
+
 use thiserror::Error;
 
-/// Everything that can go wrong at run time. Errors are values: no function of `routh-core`
-/// panics on bad input.
+/// Everything that can go wrong at run time. Each variant says which input or which computation
+/// failed, with the offending value where there is one.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum RouthError {
     /// An input (initial state, parameter, tolerance, time) is NaN or infinite.
     #[error("non-finite input: {what} = {value}")]
-    NonFinite { what: &'static str, value: f64 },
+    NonFinite {
+        /// The name of the input, as in the function's signature (e.g. `"p_psi"`, `"omega0"`).
+        what: &'static str,
+        /// The first non-finite value found in it.
+        value: f64,
+    },
+    /// The model returned a non-finite value (NaN or ±∞) for one of its derivatives at this γ.
+    #[error("the model's {what} is not finite at γ = {gamma:?}")]
+    NonFiniteModel {
+        /// Which output of the model (e.g. `"d2r_dgamma2"`).
+        what: &'static str,
+        /// Where it was evaluated.
+        gamma: [f64; 3],
+    },
     /// A unit vertical γ was required (|γ| = 1 within `tol`).
     #[error("γ must be a unit vector: |γ| = {norm} (tolerance {tol:e})")]
-    NonUnitGamma { norm: f64, tol: f64 },
+    NonUnitGamma {
+        /// The norm of the γ given.
+        norm: f64,
+        /// The tolerance on `| |γ| − 1 |` ([`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL)).
+        tol: f64,
+    },
     /// The kinetic form J(γ) = ∂²L/∂ω² is not positive definite at this γ.
     #[error("the kinetic form J(γ) is not positive definite at γ = {gamma:?} (smallest eigenvalue {min_eigenvalue:e})")]
     KineticNotPositiveDefinite {
+        /// Where J was evaluated.
         gamma: [f64; 3],
+        /// The smallest eigenvalue of the symmetric part of J (NaN if it could not be computed).
         min_eigenvalue: f64,
     },
     /// γᵀJ(γ)γ ≤ 0, so ψ̇ of (38) is undefined.
     #[error("γᵀJ(γ)γ = {value:e} ≤ 0 at γ = {gamma:?}: the reduction (12) is undefined")]
-    DegenerateVerticalInertia { gamma: [f64; 3], value: f64 },
-    /// An invalid option (e.g. a negative tolerance).
+    DegenerateVerticalInertia {
+        /// Where J was evaluated.
+        gamma: [f64; 3],
+        /// The value of γᵀJγ.
+        value: f64,
+    },
+    /// The gauge-fixed reduced kinetic form `∂²R/∂Ω² + c·γγᵀ` (errata E4) is singular or not
+    /// positive definite, so the reduced equations (13) cannot be solved for Ω̇.
+    #[error("the reduced kinetic form ∂²R/∂Ω² + cγγᵀ is singular at γ = {gamma:?} (smallest eigenvalue {min_eigenvalue:e})")]
+    SingularReducedKinetic {
+        /// Where it was evaluated.
+        gamma: [f64; 3],
+        /// Its smallest eigenvalue (NaN if it could not be computed).
+        min_eigenvalue: f64,
+    },
+    /// The γ given to [`classify`](crate::classify) is not a steady motion: the tangential part of
+    /// `∂R/∂γ` (33) does not vanish there within the tolerance.
+    #[error("γ = {gamma:?} is not a steady motion: |tangential ∂R/∂γ| = {residual:e} > {tol:e} (relative to the local scale)")]
+    NotASteadyMotion {
+        /// The γ given.
+        gamma: [f64; 3],
+        /// The norm of the tangential gradient of the amended potential, relative to the local
+        /// scale of the restricted form.
+        residual: f64,
+        /// The relative tolerance it was compared with.
+        tol: f64,
+    },
+    /// The model itself is invalid (e.g. a fluid body with a non-symmetric added-mass tensor).
+    #[error("invalid model: {what}: {reason}")]
+    InvalidModel {
+        /// Which parameter of the model.
+        what: &'static str,
+        /// Why it is invalid.
+        reason: String,
+    },
+    /// An invalid option (e.g. a negative tolerance) or argument (e.g. an empty range).
     #[error("invalid option {what}: {reason}")]
-    InvalidOption { what: &'static str, reason: String },
+    InvalidOption {
+        /// The option or argument.
+        what: &'static str,
+        /// Why it is invalid.
+        reason: String,
+    },
     /// The adaptive integrator's step size fell below what the floating-point time can resolve.
     #[error("step size underflow at t = {t}: h = {h:e}")]
-    StepSizeUnderflow { t: f64, h: f64 },
+    StepSizeUnderflow {
+        /// The time reached.
+        t: f64,
+        /// The step size proposed.
+        h: f64,
+    },
     /// The integrator exceeded its step budget.
     #[error("too many steps ({steps}) before t = {t}")]
-    TooManySteps { t: f64, steps: usize },
+    TooManySteps {
+        /// The time reached.
+        t: f64,
+        /// The budget ([`SimOptions::max_steps`](crate::SimOptions)).
+        steps: usize,
+    },
     /// The state became non-finite during integration.
     #[error("the solution became non-finite at t = {t}")]
-    NonFiniteState { t: f64 },
+    NonFiniteState {
+        /// The time reached.
+        t: f64,
+    },
     /// An iterative method did not converge.
     #[error("no convergence in {what} after {iterations} iterations (residual {residual:e})")]
     NoConvergence {
+        /// Which method.
         what: &'static str,
+        /// The iterations (or steps) spent.
         iterations: usize,
+        /// The best residual reached, relative to the method's scale.
         residual: f64,
     },
-}
-
-/// Checks that every component of `v` is finite.
-pub(crate) fn check_finite(what: &'static str, values: &[f64]) -> Result<(), RouthError> {
-    match values.iter().find(|v| !v.is_finite()) {
-        Some(&value) => Err(RouthError::NonFinite { what, value }),
-        None => Ok(()),
-    }
 }

@@ -1,32 +1,36 @@
 //! Runtime of `routh`: the [`Lagrangian`] and [`Routhian`] traits that generated (or hand-written)
-//! models implement, simulation of the full equations (8) and the reduced equations (13), steady
-//! motions (31)–(34) and their stability (62)–(64).
+//! models implement, simulation of the full equations (8) and the reduced equations (13) ([`sim`]),
+//! steady motions (31)–(34) ([`steady`]), their stability (62)–(64) ([`stability`]) and families
+//! of steady motions through parameters ([`families`]).
 //!
-//! Equation numbers are those of Bourov & Chevallier, ZAMM 78 (1998) 695–702; where the paper has
-//! a misprint the corrected form of `shared/design/ERRATA.md` is implemented and cited (E1–E8).
+//! Equation numbers are those of Bourov & Chevallier, ZAMM 78 (1998) 695–702. Where the paper has
+//! a misprint the corrected form is implemented and cited as "errata E1"–"errata E8": the
+//! corrections, with their derivations and the tests that check them, are in `docs/errata.md` of
+//! the repository; the method as a whole is in `docs/method.md`.
+//!
+//! The crate root re-exports what a first program uses; the modules hold the rest (options,
+//! lower-level functions such as the vector fields).
 #![forbid(unsafe_code)]
 
 pub use nalgebra;
 pub use nalgebra::{Complex, Matrix3, Vector3};
 
 mod error;
+pub mod families;
 mod model;
-mod sim;
-mod stability;
-mod steady;
+pub mod sim;
+mod sphere;
+pub mod stability;
+pub mod steady;
+pub mod validate;
 
 pub use error::RouthError;
-pub use model::{
-    cross_matrix, DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian,
+pub use families::{
+    bifurcation_diagram, continue_branch, stability_atlas, AtlasOptions, BifurcationDiagram,
+    BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions, EventKind,
+    StabilityAtlas,
 };
-pub use sim::{
-    full_vector_field, reduced_vector_field, simulate_full, simulate_reduced, Method, Output,
-    ReducedTrajectory, SimOptions, SimStats, Trajectory, SIM_UNIT_GAMMA_TOL,
-};
-pub use stability::{
-    classify, f2_coefficients, Stability, StabilityReport, DOUBLE_ROOT_TOL, UNIT_GAMMA_TOL,
-};
-pub use steady::{
-    steady_motion_near, steady_motions, steady_motions_with, SearchOptions, SteadyMotion,
-    GRADIENT_TOL, ZERO_EIGENVALUE_TOL,
-};
+pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
+pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};
+pub use steady::{steady_motion_near, steady_motions, SearchOptions, SteadyMotion};

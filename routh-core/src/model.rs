@@ -69,9 +69,9 @@ impl GyroscopicSystem {
     /// Forms `A`, `G`, `C` from a bundle evaluated at `Ω = 0` (section 5 in the matrix form of
     /// ERRATA E6).
     pub fn from_bundle(bundle: &RouthBundle, gamma: &Vector3<f64>) -> Self {
-        let gx = cross_matrix(gamma);
+        let gx = gamma.cross_matrix();
         let m = bundle.d2r_domega_dgamma;
-        let g = 0.5 * (m * gx + gx * m.transpose() - cross_matrix(&bundle.dr_domega));
+        let g = 0.5 * (m * gx + gx * m.transpose() - bundle.dr_domega.cross_matrix());
         let mu = bundle.dr_dgamma.dot(gamma);
         let c = gx.transpose() * (Matrix3::from_diagonal_element(mu) - bundle.d2r_dgamma2) * gx;
         GyroscopicSystem {
@@ -80,11 +80,6 @@ impl GyroscopicSystem {
             c,
         }
     }
-}
-
-/// `[x]×`, the matrix with `[x]× y = x × y`.
-pub fn cross_matrix(x: &Vector3<f64>) -> Matrix3<f64> {
-    Matrix3::new(0.0, -x.z, x.y, x.z, 0.0, -x.x, -x.y, x.x, 0.0)
 }
 
 /// The Routh function of Theorem 1 and its derivatives, with arguments `(Ω, γ, p_ψ)`: Ω is the

@@ -7,23 +7,53 @@ use std::fmt;
 
 use nalgebra::{Complex, Vector3};
 
-use crate::error::{check_finite, RouthError};
+use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::steady::{
-    check_kinetic, local_scale, restricted_hessian, sym2_eigen, tangent_basis, unit_gamma,
-    SteadyMotion, ZERO_EIGENVALUE_TOL,
-};
+use crate::sphere::{local_scale, restricted_hessian, sym2_eigen, tangent_basis};
+use crate::steady::SteadyMotion;
+use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
 
-/// Tolerance on `| |γ| − 1 |` for an input γ to count as a unit vector (it is then normalised).
-/// Loose enough for a γ typed from a closed form or read back from a trajectory integrated with
-/// tight tolerances, tight enough that the second variation is evaluated on the sphere.
-pub const UNIT_GAMMA_TOL: f64 = 1e-8;
-/// Relative tolerance on the discriminant of `f₂` in `λ²` under which its two roots in `λ²` are
-/// treated as a double root (the boundary of gyroscopic stabilisation). The discriminant is a
-/// difference of terms of size `c₂² + 4|c₄c₀|` computed to a few ulps, so `1e−10` is far above
-/// round-off and far below any physically meaningful distance from the boundary (0.1 % from the
-/// Maievskii bound gives a relative discriminant of order `1e−3`).
-pub const DOUBLE_ROOT_TOL: f64 = 1e-10;
+/// The tolerances of [`classify_with`]; [`classify`] uses the defaults.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ClassifyOptions {
+    /// Relative tolerance under which an eigenvalue of the restricted second variation counts as
+    /// zero (errata E8), relative to the local scale (see [`classify`]). Default `1e−8`: round-off
+    /// in the eigenvalues is about `1e−15` of the scale and a converged steady motion is located
+    /// to about `1e−13`.
+    pub zero_eigenvalue_tol: f64,
+    /// Relative tolerance on the discriminant of `f₂` in `λ²` under which its two roots in `λ²`
+    /// are treated as a double root (the boundary of gyroscopic stabilisation). The discriminant
+    /// is a difference of terms of size `c₂² + 4|c₄c₀|` computed to a few ulps, so the default
+    /// `1e−10` is far above round-off and far below any physically meaningful distance from the
+    /// boundary (0.1 % from the Maievskii bound gives a relative discriminant of order `1e−3`).
+    pub double_root_tol: f64,
+}
+
+impl Default for ClassifyOptions {
+    fn default() -> Self {
+        ClassifyOptions {
+            zero_eigenvalue_tol: 1e-8,
+            double_root_tol: 1e-10,
+        }
+    }
+}
+
+impl ClassifyOptions {
+    fn validate(&self) -> Result<(), RouthError> {
+        for (what, v) in [
+            ("zero_eigenvalue_tol", self.zero_eigenvalue_tol),
+            ("double_root_tol", self.double_root_tol),
+        ] {
+            if !(v > 0.0 && v < 1.0) {
+                return Err(RouthError::InvalidOption {
+                    what,
+                    reason: format!("must be in (0, 1) (got {v:e})"),
+                });
+            }
+        }
+        Ok(())
+    }
+}
 
 /// The stability verdict of [`classify`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -85,7 +115,7 @@ impl fmt::Display for StabilityReport {
     }
 }
 
-/// Classifies the steady motion `steady` at the cyclic momentum `p_psi` (sections 4–5): the
+/// Classifies the steady motion `steady` at its cyclic momentum `steady.p_psi` (sections 4–5): the
 /// eigenvalues of the restricted second variation (62)–(63), the degree of instability, the roots
 /// of `f₂` (ERRATA E5) and the verdict (rules and tolerances below). `steady.gamma` must be a
 /// critical point of the amended potential, as returned by
@@ -111,7 +141,7 @@ impl fmt::Display for StabilityReport {
 /// # Verdict
 ///
 /// - [`Stability::Degenerate`] when an eigenvalue of `K` is zero within
-///   [`ZERO_EIGENVALUE_TOL`](crate::ZERO_EIGENVALUE_TOL) times the local scale
+///   [`ClassifyOptions::zero_eigenvalue_tol`] times the local scale
 ///   `s = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (ERRATA E8: the parity argument then says nothing; circles of
 ///   steady motions of a symmetric body are always in this case). The scale bounds the terms
 ///   whose difference forms `K` (γ is dimensionless, so all of them are energies); round-off in
@@ -122,7 +152,7 @@ impl fmt::Display for StabilityReport {
 ///   real negative roots (all four roots of `f₂` simple and on the imaginary axis: linear
 ///   stability), [`Stability::Unstable`] when a root of `f₂` leaves the imaginary axis.
 /// - The boundary of gyroscopic stabilisation, where the discriminant `c₂² − 4c₄c₀` vanishes
-///   within [`DOUBLE_ROOT_TOL`] times `c₂² + 4|c₄c₀|` (e.g. the sleeping top at exactly
+///   within [`ClassifyOptions::double_root_tol`] times `c₂² + 4|c₄c₀|` (e.g. the sleeping top at exactly
 ///   `p_ψ² = 4A₁mgl`, Maievskii): the roots are snapped to the double pair `±i√(−s)`,
 ///   `s = −c₂/(2c₄)`. Two modes of opposite Krein signature collide there and the linearisation
 ///   generically has a Jordan block (secular growth `t·e^{iωt}`), so neither linear stability nor
@@ -130,7 +160,7 @@ impl fmt::Display for StabilityReport {
 ///   (inconclusive), with `s > 0` it is [`Stability::Unstable`] (real roots).
 ///
 /// Errors: [`RouthError::NonFinite`] for non-finite `p_psi` or γ (or non-finite derivatives of the
-/// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`];
+/// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL);
 /// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
 /// `J(γ) = ∂²L/∂ω²` is not positive definite.
 ///
@@ -186,7 +216,7 @@ impl fmt::Display for StabilityReport {
 /// // gyroscopic forces stabilise it (all roots of f₂ on the imaginary axis).
 /// let p = 1.0;
 /// let spin = SteadyMotion::at(&Free, Vector3::z(), p, true)?;
-/// let report = classify(&Free, &spin, p)?;
+/// let report = classify(&Free, &spin)?;
 /// assert_eq!(report.degree_of_instability, 2);
 /// assert_eq!(report.verdict, Stability::GyroscopicallyStabilized);
 /// assert!(report.f2_roots.iter().all(|r| r.re == 0.0));
@@ -196,28 +226,40 @@ impl fmt::Display for StabilityReport {
 pub fn classify<M: Routhian>(
     model: &M,
     steady: &SteadyMotion,
-    p_psi: f64,
 ) -> Result<StabilityReport, RouthError> {
-    check_finite("p_psi", &[p_psi])?;
-    let gamma = unit_gamma(&steady.gamma)?;
+    classify_with(model, steady, &ClassifyOptions::default())
+}
+
+/// [`classify`] with explicit tolerances.
+///
+/// Errors: as [`classify`], plus [`RouthError::InvalidOption`] for a tolerance outside `(0, 1)`.
+pub fn classify_with<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    opts: &ClassifyOptions,
+) -> Result<StabilityReport, RouthError> {
+    opts.validate()?;
+    let p_psi = steady.p_psi;
+    check_finite("steady.p_psi", &[p_psi])?;
+    let gamma = unit_gamma("steady.gamma", &steady.gamma)?;
     check_kinetic(model, &gamma)?;
 
     // (62)–(63): the restricted second variation of the amended potential.
     let bundle = model.bundle(&Vector3::zeros(), &gamma, p_psi);
-    check_finite("dr_dgamma", bundle.dr_dgamma.as_slice())?;
-    check_finite("d2r_dgamma2", bundle.d2r_dgamma2.as_slice())?;
+    check_model_finite("dr_dgamma", bundle.dr_dgamma.as_slice(), &gamma)?;
+    check_model_finite("d2r_dgamma2", bundle.d2r_dgamma2.as_slice(), &gamma)?;
     let p = tangent_basis(&gamma);
     let mu = bundle.dr_dgamma.dot(&gamma);
     let k = restricted_hessian(&p, mu, &bundle.d2r_dgamma2);
     let eigs = sym2_eigen(&k).values;
     let scale = local_scale(&bundle.dr_dgamma, &bundle.d2r_dgamma2);
-    let zero_tol = ZERO_EIGENVALUE_TOL * scale;
+    let zero_tol = opts.zero_eigenvalue_tol * scale;
     let any_zero = eigs.iter().any(|e| e.abs() <= zero_tol);
     let degree = eigs.iter().filter(|&&e| e < -zero_tol).count();
 
     // (64) on the tangent plane (ERRATA E5).
     let [c4, c2, c0] = f2_coefficients(model, &gamma, p_psi)?;
-    let roots = quartic_roots(c4, c2, c0);
+    let roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
 
     let verdict = if any_zero {
         Stability::Degenerate
@@ -251,7 +293,7 @@ pub fn f2_coefficients<M: Routhian>(
     p_psi: f64,
 ) -> Result<[f64; 3], RouthError> {
     check_finite("p_psi", &[p_psi])?;
-    let gamma = unit_gamma(gamma)?;
+    let gamma = unit_gamma("gamma", gamma)?;
     check_kinetic(model, &gamma)?;
     let sys = model.gyroscopic_system(&gamma, p_psi);
     let p = tangent_basis(&gamma);
@@ -267,7 +309,7 @@ pub fn f2_coefficients<M: Routhian>(
     let c2 =
         a[(0, 0)] * c[(1, 1)] + a[(1, 1)] * c[(0, 0)] - 2.0 * a[(0, 1)] * c[(0, 1)] + 4.0 * g * g;
     let c0 = c.determinant();
-    check_finite("coefficients of f2", &[c4, c2, c0])?;
+    check_model_finite("coefficients of f2", &[c4, c2, c0], &gamma)?;
     if c4 <= 0.0 {
         // J positive definite makes PᵀAP (a Schur complement of J) positive definite.
         return Err(RouthError::KineticNotPositiveDefinite {
@@ -283,7 +325,7 @@ pub fn f2_coefficients<M: Routhian>(
 enum SquareRoots {
     /// Two distinct real negative roots: four simple imaginary roots λ.
     DistinctNegative,
-    /// A double real negative root (within [`DOUBLE_ROOT_TOL`]): a double imaginary pair.
+    /// A double real negative root (within [`ClassifyOptions::double_root_tol`]): a double imaginary pair.
     DoubleNegative,
     /// Anything else (a non-negative real root or a complex pair).
     Other,
@@ -306,10 +348,10 @@ fn sqrt_real(s: f64) -> [Complex<f64>; 2] {
 }
 
 /// Roots of the even quartic `c₄λ⁴ + c₂λ² + c₀` (`c₄ > 0`), sorted by `(re, im)`.
-fn quartic_roots(c4: f64, c2: f64, c0: f64) -> QuarticRoots {
+fn quartic_roots(c4: f64, c2: f64, c0: f64, double_root_tol: f64) -> QuarticRoots {
     let disc = c2 * c2 - 4.0 * c4 * c0;
     let disc_scale = c2 * c2 + 4.0 * (c4 * c0).abs();
-    let (mut lambda, kind) = if disc.abs() <= DOUBLE_ROOT_TOL * disc_scale {
+    let (mut lambda, kind) = if disc.abs() <= double_root_tol * disc_scale {
         let s = -c2 / (2.0 * c4);
         let [r1, r2] = sqrt_real(s);
         let kind = if s < 0.0 {
@@ -366,7 +408,7 @@ mod tests {
             (1.0, 0.0, 0.0),
             (1.0, 1e-9, 0.0),
         ] {
-            let r = quartic_roots(c4, c2, c0);
+            let r = quartic_roots(c4, c2, c0, 1e-10);
             for l in r.lambda {
                 let scale = c4 * l.norm().powi(4) + c2.abs() * l.norm_sqr() + c0.abs() + 1e-300;
                 assert!(
@@ -379,14 +421,20 @@ mod tests {
             }
         }
         assert_eq!(
-            quartic_roots(1.0, 5.0, 4.0).kind,
+            quartic_roots(1.0, 5.0, 4.0, 1e-10).kind,
             SquareRoots::DistinctNegative
         );
         assert_eq!(
-            quartic_roots(1.0, 2.0, 1.0).kind,
+            quartic_roots(1.0, 2.0, 1.0, 1e-10).kind,
             SquareRoots::DoubleNegative
         );
-        assert_eq!(quartic_roots(2.0, -1.0, 3.0).kind, SquareRoots::Other);
-        assert_eq!(quartic_roots(1.0, -5.0, 4.0).kind, SquareRoots::Other);
+        assert_eq!(
+            quartic_roots(2.0, -1.0, 3.0, 1e-10).kind,
+            SquareRoots::Other
+        );
+        assert_eq!(
+            quartic_roots(1.0, -5.0, 4.0, 1e-10).kind,
+            SquareRoots::Other
+        );
     }
 }

@@ -6,8 +6,8 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh_core::nalgebra::{Matrix6, Vector6};
 use routh_core::{
-    classify, f2_coefficients, simulate_full, steady_motions, Complex, Lagrangian, Matrix3,
-    RouthError, Routhian, SimOptions, Stability, SteadyMotion, Vector3,
+    classify, simulate_full, stability::f2_coefficients, steady_motions, Complex, Lagrangian,
+    Matrix3, RouthError, Routhian, SimOptions, Stability, SteadyMotion, Vector3,
 };
 use test_models::{Ellipsoid, Gyrostat};
 
@@ -137,7 +137,7 @@ fn heavy_top_derivatives_match_finite_differences() {
 fn check_sleeping(a1: f64, c: f64, mgl: f64, p2: f64, expected: Stability) {
     let top = HeavyTop::lagrange(a1, c, mgl);
     let p = p2.sqrt();
-    let report = classify(&top, &sleeping(&top, p), p).unwrap();
+    let report = classify(&top, &sleeping(&top, p)).unwrap();
     assert_eq!(
         report.verdict, expected,
         "A₁ = {a1}, C = {c}, mgl = {mgl}, p² = {p2}: {report}"
@@ -236,7 +236,7 @@ fn exactly_on_the_maievskii_bound_is_inconclusive() {
     let (a1, c, mgl) = (2.0, 1.0, 1.5);
     let top = HeavyTop::lagrange(a1, c, mgl);
     let p = (4.0 * a1 * mgl).sqrt();
-    let report = classify(&top, &sleeping(&top, p), p).unwrap();
+    let report = classify(&top, &sleeping(&top, p)).unwrap();
     assert_eq!(report.verdict, Stability::Degenerate, "{report}");
     assert_eq!(report.degree_of_instability, 2);
     assert!(report.f2_roots.iter().all(|r| r.re == 0.0));
@@ -251,7 +251,7 @@ fn tilted_precessions_of_a_symmetric_top_are_degenerate() {
     let circles: Vec<_> = motions.iter().filter(|s| !s.isolated).collect();
     assert!(!circles.is_empty());
     for s in circles {
-        let report = classify(&top, s, p).unwrap();
+        let report = classify(&top, s).unwrap();
         assert_eq!(report.verdict, Stability::Degenerate, "{s}: {report}");
         let [k1, k2] = report.restricted_hessian_eigenvalues;
         assert!(k1.abs().min(k2.abs()) <= 1e-9 * k1.abs().max(k2.abs()));
@@ -262,8 +262,8 @@ fn tilted_precessions_of_a_symmetric_top_are_degenerate() {
 // d. Roots of f₂ vs the eigenvalues of a finite-difference Jacobian of the full system (8).
 
 /// The 6×6 Jacobian of (8) at ω = ψ̇γ has the four roots of f₂ and a double zero (ERRATA E5).
-fn check_jacobian<M: Routhian>(model: &M, steady: &SteadyMotion, p: f64, what: &str) -> usize {
-    let report = classify(model, steady, p).unwrap();
+fn check_jacobian<M: Routhian>(model: &M, steady: &SteadyMotion, what: &str) -> usize {
+    let report = classify(model, steady).unwrap();
     let w = steady.psi_dot * steady.gamma;
     let x = Vector6::new(
         w.x,
@@ -317,7 +317,7 @@ fn f2_roots_are_the_eigenvalues_of_the_full_jacobian() {
     for p2 in [5.0, 7.0, 20.0] {
         let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
         let p = f64::sqrt(p2);
-        checked += check_jacobian(&top, &sleeping(&top, p), p, "sleeping top");
+        checked += check_jacobian(&top, &sleeping(&top, p), "sleeping top");
     }
     // Every steady motion of random asymmetric heavy tops, at several p_ψ.
     let mut rng = ChaCha8Rng::seed_from_u64(11);
@@ -326,7 +326,7 @@ fn f2_roots_are_the_eigenvalues_of_the_full_jacobian() {
         for p in [0.3, 1.5, 4.0] {
             for s in steady_motions(&top, p).unwrap() {
                 assert!(s.isolated);
-                checked += check_jacobian(&top, &s, p, "asymmetric heavy top");
+                checked += check_jacobian(&top, &s, "asymmetric heavy top");
             }
         }
     }
@@ -335,10 +335,10 @@ fn f2_roots_are_the_eigenvalues_of_the_full_jacobian() {
     let ellipsoid = Ellipsoid::random(&mut rng);
     for p in [3.0, 25.0] {
         for s in steady_motions(&gyrostat, p).unwrap() {
-            checked += check_jacobian(&gyrostat, &s, p, "gyrostat");
+            checked += check_jacobian(&gyrostat, &s, "gyrostat");
         }
         for s in steady_motions(&ellipsoid, p).unwrap() {
-            checked += check_jacobian(&ellipsoid, &s, p, "ellipsoid");
+            checked += check_jacobian(&ellipsoid, &s, "ellipsoid");
         }
     }
     assert!(checked >= 30, "only {checked} steady motions checked");
@@ -401,7 +401,7 @@ fn check_against_simulation<M: Routhian>(
 ) -> Vec<Stability> {
     let mut seen = Vec::new();
     for s in steady_motions(model, p).unwrap() {
-        let report = classify(model, &s, p).unwrap();
+        let report = classify(model, &s).unwrap();
         if report.verdict == Stability::Degenerate {
             continue;
         }
@@ -431,7 +431,7 @@ fn maievskii_bound_in_simulation() {
     ] {
         let p = (4.0 * a1 * mgl * factor).sqrt();
         let s = sleeping(&top, p);
-        let report = classify(&top, &s, p).unwrap();
+        let report = classify(&top, &s).unwrap();
         assert_eq!(report.verdict, expected);
         let (dev, t_end) = deviation(&top, &s, &report, &mut rng);
         eprintln!(
@@ -484,33 +484,36 @@ fn verdicts_agree_with_long_simulations() {
 fn classify_rejects_bad_input() {
     let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
     let s = sleeping(&top, 3.0);
-    assert!(matches!(
-        classify(&top, &s, f64::NAN),
-        Err(RouthError::NonFinite { .. })
-    ));
-    assert!(matches!(
-        classify(&top, &s, f64::INFINITY),
-        Err(RouthError::NonFinite { .. })
-    ));
+    for p in [f64::NAN, f64::INFINITY] {
+        let mut bad = s.clone();
+        bad.p_psi = p;
+        assert!(matches!(
+            classify(&top, &bad),
+            Err(RouthError::NonFinite {
+                what: "steady.p_psi",
+                ..
+            })
+        ));
+    }
     let mut bad = s.clone();
     bad.gamma = Vector3::new(0.0, 0.0, 1.01);
     assert!(matches!(
-        classify(&top, &bad, 3.0),
+        classify(&top, &bad),
         Err(RouthError::NonUnitGamma { .. })
     ));
     bad.gamma = Vector3::zeros();
     assert!(matches!(
-        classify(&top, &bad, 3.0),
+        classify(&top, &bad),
         Err(RouthError::NonUnitGamma { .. })
     ));
     bad.gamma = Vector3::new(f64::NAN, 0.0, 1.0);
     assert!(matches!(
-        classify(&top, &bad, 3.0),
+        classify(&top, &bad),
         Err(RouthError::NonFinite { .. })
     ));
     // A γ within the documented tolerance is accepted (and normalised).
     bad.gamma = Vector3::new(0.0, 0.0, 1.0 + 1e-10);
-    assert!(classify(&top, &bad, 3.0).is_ok());
+    assert!(classify(&top, &bad).is_ok());
 
     // γᵀJγ ≤ 0 and J indefinite.
     let flat = HeavyTop {
@@ -518,7 +521,7 @@ fn classify_rejects_bad_input() {
         mgr: Vector3::z(),
     };
     assert!(matches!(
-        classify(&flat, &s, 3.0),
+        classify(&flat, &s),
         Err(RouthError::DegenerateVerticalInertia { .. })
     ));
     let tilted = SteadyMotion {
@@ -530,7 +533,7 @@ fn classify_rejects_bad_input() {
         mgr: Vector3::z(),
     };
     assert!(matches!(
-        classify(&indefinite, &tilted, 3.0),
+        classify(&indefinite, &tilted),
         Err(RouthError::KineticNotPositiveDefinite { .. })
     ));
 }
@@ -539,7 +542,7 @@ fn classify_rejects_bad_input() {
 fn display_is_readable() {
     let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
     let s = sleeping(&top, 4.0);
-    let r = classify(&top, &s, 4.0).unwrap();
+    let r = classify(&top, &s).unwrap();
     let text = format!("{s}\n{r}");
     assert!(text.contains("gyroscopically stabilised"), "{text}");
     assert!(text.contains("degree of instability 2"), "{text}");

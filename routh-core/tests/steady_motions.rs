@@ -6,7 +6,7 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh_core::{
-    classify, steady_motion_near, steady_motions, steady_motions_with, Lagrangian, Matrix3,
+    classify, steady::steady_motions_with, steady_motion_near, steady_motions, Lagrangian, Matrix3,
     RouthError, Routhian, SearchOptions, Stability, SteadyMotion, Vector3,
 };
 use test_models::{Ellipsoid, Gyrostat};
@@ -118,10 +118,7 @@ fn check_symmetric<M: Routhian>(
         );
     }
     for s in motions.iter().filter(|s| !s.isolated) {
-        assert_eq!(
-            classify(model, s, p).unwrap().verdict,
-            Stability::Degenerate
-        );
+        assert_eq!(classify(model, s).unwrap().verdict, Stability::Degenerate);
     }
     eprintln!("{what}, p = {p}: poles ±e₃ and circles at γ₃ = {circles:?}");
     circles.len()
@@ -138,7 +135,7 @@ fn euler_characteristic<M: Routhian>(model: &M, p: f64, what: &str) -> (i64, usi
             s.isolated,
             "{what}, p = {p}: a generic model has no circles: {s}"
         );
-        let r = classify(model, s, p).unwrap();
+        let r = classify(model, s).unwrap();
         assert_ne!(
             r.verdict,
             Stability::Degenerate,
@@ -151,7 +148,7 @@ fn euler_characteristic<M: Routhian>(model: &M, p: f64, what: &str) -> (i64, usi
     }
     let kinds: Vec<_> = motions
         .iter()
-        .map(|s| classify(model, s, p).unwrap().degree_of_instability)
+        .map(|s| classify(model, s).unwrap().degree_of_instability)
         .collect();
     eprintln!(
         "{what}, p = {p}: χ = {chi} from {} points, degrees {kinds:?}",
@@ -241,7 +238,7 @@ fn free_asymmetric_body_has_six_steady_rotations() {
         assert!((s.gamma[axis].abs() - 1.0).abs() < 1e-12, "{s}");
         assert!((s.amended_potential - 0.5 * p * p / top.j[(axis, axis)]).abs() < 1e-12);
         assert!((s.psi_dot - p / top.j[(axis, axis)]).abs() < 1e-12);
-        let r = classify(&top, s, p).unwrap();
+        let r = classify(&top, s).unwrap();
         assert_eq!(r.degree_of_instability, [0, 1, 2][k / 2]);
         // Euler's classical result: rotation about the middle axis is unstable, about the others
         // stable (the smallest axis by gyroscopic stabilisation).
@@ -265,7 +262,7 @@ fn free_body_at_rest_is_one_two_dimensional_critical_set() {
     assert_eq!(motions.len(), 1, "{motions:#?}");
     assert!(!motions[0].isolated);
     assert_eq!(motions[0].amended_potential, 0.0);
-    let r = classify(&top, &motions[0], 0.0).unwrap();
+    let r = classify(&top, &motions[0]).unwrap();
     assert_eq!(r.verdict, Stability::Degenerate);
 }
 

@@ -14,16 +14,16 @@
 //! compact DOP853 is implemented here instead, following Hairer's `dop853.f`.)
 
 mod dop853;
+mod field;
 mod lie;
 mod tableau;
 
-use nalgebra::{Matrix3, SVector, Vector3};
+pub use field::{full_vector_field, reduced_vector_field};
 
-use crate::error::check_finite;
+use nalgebra::{SVector, Vector3};
+
+use crate::validate::{check_finite, unit_gamma};
 use crate::{Lagrangian, RouthError, Routhian};
-
-/// Tolerance on `| |γ₀| − 1 |` for the initial vertical of both simulations.
-pub const SIM_UNIT_GAMMA_TOL: f64 = 1e-9;
 
 /// The integration method.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -233,79 +233,8 @@ impl ReducedTrajectory {
     }
 }
 
-/// The vector field of the full equations (8) solved for ω̇:
-/// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`, `γ̇ = γ × ω`, with `J = ∂²L/∂ω²`
-/// (ARCHITECTURE §1). Returns `(ω̇, γ̇)`.
-///
-/// Errors: [`RouthError::KineticNotPositiveDefinite`] when the Cholesky factorisation of a
-/// finite `J(γ)` fails. Non-finite model outputs give non-finite rates (no error), so that an
-/// integrator can shrink its step.
-pub fn full_vector_field<M: Lagrangian + ?Sized>(
-    model: &M,
-    omega: &Vector3<f64>,
-    gamma: &Vector3<f64>,
-) -> Result<(Vector3<f64>, Vector3<f64>), RouthError> {
-    let gamma_dot = gamma.cross(omega);
-    let j = model.d2l_domega2(gamma);
-    let rhs = model.dl_domega(omega, gamma).cross(omega)
-        + model.dl_dgamma(omega, gamma).cross(gamma)
-        - model.d2l_domega_dgamma(omega, gamma) * gamma_dot;
-    let omega_dot = solve_spd(&j, &rhs, gamma)?;
-    Ok((omega_dot, gamma_dot))
-}
-
-/// The vector field of the reduced equations (13) in the gauge of ERRATA E4, with (15):
-/// `(A + γγᵀ) Ω̇ = ∂R/∂Ω × Ω + ∂R/∂γ × γ − M γ̇`, `γ̇ = γ × Ω`, `ψ̇ = −∂R/∂p_ψ`, where
-/// `A = ∂²R/∂Ω²`, `M = ∂²R/∂Ω∂γ`, all from one [`Routhian::bundle`]. Returns `(Ω̇, γ̇, ψ̇)`.
-///
-/// `A` annihilates γ (E4), so the γ-component of (13) is an identity; adding `γγᵀ` fixes the
-/// gauge by `d(Ω·γ)/dt = 0`: the right side is orthogonal to γ (by `Mᵀγ = −∂R/∂Ω`, E6), hence
-/// `Ω̇·γ = 0` when `|γ| = 1`, and `γ̇·Ω = 0`.
-///
-/// Errors: [`RouthError::KineticNotPositiveDefinite`] (with the smallest eigenvalue of
-/// `A + γγᵀ`) when its Cholesky factorisation fails for finite entries.
-pub fn reduced_vector_field<M: Routhian + ?Sized>(
-    model: &M,
-    big_omega: &Vector3<f64>,
-    gamma: &Vector3<f64>,
-    p_psi: f64,
-) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
-    let b = model.bundle(big_omega, gamma, p_psi);
-    let gamma_dot = gamma.cross(big_omega);
-    let rhs =
-        b.dr_domega.cross(big_omega) + b.dr_dgamma.cross(gamma) - b.d2r_domega_dgamma * gamma_dot;
-    let k = b.d2r_domega2 + gamma * gamma.transpose();
-    let big_omega_dot = solve_spd(&k, &rhs, gamma)?;
-    Ok((big_omega_dot, gamma_dot, -b.dr_dp))
-}
-
-/// Solves `K x = rhs` by Cholesky; non-finite `K` or `rhs` give a NaN solution.
-fn solve_spd(
-    k: &Matrix3<f64>,
-    rhs: &Vector3<f64>,
-    gamma: &Vector3<f64>,
-) -> Result<Vector3<f64>, RouthError> {
-    if !(k.iter().all(|x| x.is_finite()) && rhs.iter().all(|x| x.is_finite())) {
-        return Ok(Vector3::repeat(f64::NAN));
-    }
-    match k.cholesky() {
-        Some(ch) => Ok(ch.solve(rhs)),
-        None => Err(RouthError::KineticNotPositiveDefinite {
-            gamma: [gamma.x, gamma.y, gamma.z],
-            min_eigenvalue: k.symmetric_eigenvalues().min(),
-        }),
-    }
-}
-
 fn check_unit_gamma(gamma: &Vector3<f64>) -> Result<(), RouthError> {
-    let norm = gamma.norm();
-    if (norm - 1.0).abs() > SIM_UNIT_GAMMA_TOL {
-        return Err(RouthError::NonUnitGamma {
-            norm,
-            tol: SIM_UNIT_GAMMA_TOL,
-        });
-    }
-    Ok(())
+    unit_gamma("gamma0", gamma).map(|_| ())
 }
 
 fn invalid(what: &'static str, reason: impl Into<String>) -> RouthError {
@@ -515,7 +444,7 @@ fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
 /// momentum (9) and `|γ|²` are recorded; they are first integrals, so their drift measures the
 /// integration error.
 ///
-/// γ₀ must be a unit vector (`| |γ₀| − 1 | ≤ 1e-9`, [`SIM_UNIT_GAMMA_TOL`]); it is used as given
+/// γ₀ must be a unit vector (`| |γ₀| − 1 | ≤ 1e−8`, [`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL)); it is used as given
 /// (not normalised).
 ///
 /// # Errors
@@ -684,6 +613,7 @@ pub fn simulate_reduced<M: Routhian>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::Matrix3;
 
     /// A torque-free asymmetric rigid body with a hand-written `L = ½ωᵀIω`.
     struct Free {

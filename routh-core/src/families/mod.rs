@@ -1,0 +1,247 @@
+//! Families of steady motions: how steady motions move, appear, split and change stability as
+//! the cyclic momentum `p_ψ` or a parameter of the body changes.
+//!
+//! A one-parameter family is a closure `s ↦ (model, p_ψ)`: `|p| (top.clone(), p)` follows the
+//! cyclic momentum, `|mgl| (Top { mgl, ..top }, 3.0)` a field of the body at fixed `p_ψ`. A
+//! two-parameter family is `(x, y) ↦ (model, p_ψ)`. Derivatives in the parameters are taken
+//! numerically; derivatives in γ come from the model (the generated code).
+//!
+//! - [`bifurcation_diagram`]: every branch of steady motions over a range of `s`, followed by
+//!   pseudo-arclength continuation through folds, with the events on them ([`EventKind`]).
+//! - [`continue_branch`]: the same, restricted to the branch through one steady motion.
+//! - [`stability_atlas`]: the verdict of one steady motion over a grid of two parameters, with
+//!   the boundary curves of its stability region traced by continuation.
+//!
+//! # Events
+//!
+//! Along a branch the restricted second variation `K` (62)–(63) and the roots of `f₂` (errata E5)
+//! change continuously. The verdict can change only where
+//! - an eigenvalue of `K` passes through zero (`det K = 0`): a [`EventKind::Fold`] (the branch
+//!   turns back in `s`) or a [`EventKind::BranchPoint`] (other branches meet it: a
+//!   symmetry-breaking pitchfork, or the birth of a circle of tilted steady motions of a symmetric
+//!   body);
+//! - with degree of instability 2, two pairs of roots of `f₂` collide on the imaginary axis and
+//!   leave it (or come back), which is a zero of the discriminant of `f₂` in `λ²`: a
+//!   [`EventKind::HamiltonianHopf`] (Krein collision). Two pairs of equal Krein signature pass
+//!   each other without leaving the axis; that is no event.
+
+mod atlas;
+mod continuation;
+mod diagram;
+mod equations;
+
+use std::fmt;
+
+use nalgebra::Vector3;
+
+use crate::stability::{ClassifyOptions, Stability, StabilityReport};
+use crate::steady::{SearchOptions, SteadyMotion};
+
+pub use atlas::stability_atlas;
+pub use diagram::{bifurcation_diagram, continue_branch};
+
+/// Options of [`bifurcation_diagram`] and [`continue_branch`].
+///
+/// Steps are measured in the pseudo-arclength of the curve `(s, γ)`, with `s` scaled by the
+/// length of the range (so a step of `0.01` is about 1 % of the range where the branch is flat).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContinuationOptions {
+    /// First step, relative to the length of the range (default `0.01`).
+    pub initial_step: f64,
+    /// Largest step, relative to the length of the range (default `0.05`).
+    pub max_step: f64,
+    /// Smallest step before a branch is given up as unreachable (default `1e−7`).
+    pub min_step: f64,
+    /// Budget of continuation steps per branch; a branch that needs more ends with
+    /// [`RouthError::NoConvergence`](crate::RouthError) (default `20_000`).
+    pub max_steps: usize,
+    /// Budget of branches (default `64`).
+    pub max_branches: usize,
+    /// Relative tolerance of the Newton corrector on the Riemannian gradient (default `1e−11`).
+    pub newton_tol: f64,
+    /// Events are located to `|Δs| ≤ event_tol · max(1, |s|)` (default `1e−10`, inside the
+    /// `1e−9` of the contract).
+    pub event_tol: f64,
+    /// Number of parameter values, evenly spread over the range ends included, at which
+    /// [`bifurcation_diagram`] seeds branches with a global search (default `5`).
+    pub seeds: usize,
+    /// Whether [`bifurcation_diagram`] checks, between consecutive events, that the number of
+    /// steady motions equals what [`steady_motions`](crate::steady_motions) finds there, and seeds
+    /// the missing branches if not (default `true`).
+    pub verify_counts: bool,
+    /// Options of the global searches.
+    pub search: SearchOptions,
+    /// Tolerances of the verdicts at each point.
+    pub classify: ClassifyOptions,
+}
+
+impl Default for ContinuationOptions {
+    fn default() -> Self {
+        ContinuationOptions {
+            initial_step: 0.01,
+            max_step: 0.05,
+            min_step: 1e-7,
+            max_steps: 20_000,
+            max_branches: 64,
+            newton_tol: 1e-11,
+            event_tol: 1e-10,
+            seeds: 5,
+            verify_counts: true,
+            search: SearchOptions::default(),
+            classify: ClassifyOptions::default(),
+        }
+    }
+}
+
+/// Every branch of steady motions over a range of the parameter, with its events.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct BifurcationDiagram {
+    /// The branches; [`BranchEvent::branch`] indexes this list.
+    pub branches: Vec<Branch>,
+    /// The events, sorted by `s`.
+    pub events: Vec<BranchEvent>,
+}
+
+/// One branch: a curve of steady motions `s ↦ γ(s)`, possibly turning back in `s` at folds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Branch {
+    /// The points, in arclength order along the branch.
+    pub points: Vec<BranchPoint>,
+    /// `false` for a branch of circles of steady motions (a symmetric body's tilted precessions):
+    /// each point is one representative of its circle.
+    pub isolated: bool,
+}
+
+/// One point of a branch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BranchPoint {
+    /// The parameter.
+    pub s: f64,
+    /// The steady motion (its `p_psi` is the family's at `s`).
+    pub steady: SteadyMotion,
+    /// Its stability.
+    pub report: StabilityReport,
+}
+
+/// An event on a branch, located by solving its defining equation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BranchEvent {
+    /// What happens.
+    pub kind: EventKind,
+    /// Where, in the parameter.
+    pub s: f64,
+    /// The steady motion at the event (for a branch point, the meeting point of the branches).
+    pub gamma: Vector3<f64>,
+    /// The index of the branch in [`BifurcationDiagram::branches`] (for a branch point, the one
+    /// that passes through it).
+    pub branch: usize,
+    /// The verdict on the branch just before the event (in `s`, or for a fold along the branch's
+    /// point order).
+    pub before: Stability,
+    /// The verdict just after.
+    pub after: Stability,
+}
+
+/// The kinds of [`BranchEvent`] and [`BoundaryCurve`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum EventKind {
+    /// A zero eigenvalue of the restricted second variation where the branch turns back in the
+    /// parameter: two steady motions meet and vanish.
+    Fold,
+    /// A zero eigenvalue of the restricted second variation where other branches meet this one
+    /// (a pitchfork, or the birth of a circle of steady motions).
+    BranchPoint,
+    /// A zero of the discriminant of `f₂` in `λ²` with degree of instability 2: two pairs of
+    /// roots of `f₂` collide on the imaginary axis and leave it (gyroscopic stabilisation is lost
+    /// or gained).
+    HamiltonianHopf,
+}
+
+impl fmt::Display for EventKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            EventKind::Fold => "fold",
+            EventKind::BranchPoint => "branch point",
+            EventKind::HamiltonianHopf => "Hamiltonian–Hopf",
+        })
+    }
+}
+
+impl fmt::Display for BranchEvent {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} at s = {:.12} on branch {}, γ = ({:+.6}, {:+.6}, {:+.6}): {} → {}",
+            self.kind,
+            self.s,
+            self.branch,
+            self.gamma.x,
+            self.gamma.y,
+            self.gamma.z,
+            self.before,
+            self.after
+        )
+    }
+}
+
+/// Options of [`stability_atlas`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct AtlasOptions {
+    /// Number of grid nodes along x (default `41`), at least 2.
+    pub nx: usize,
+    /// Number of grid nodes along y (default `41`), at least 2.
+    pub ny: usize,
+    /// Points on the boundary curves satisfy their defining equation to this relative tolerance
+    /// (default `1e−10`, inside the `1e−8` of the contract).
+    pub curve_tol: f64,
+    /// Step of the boundary-curve continuation, relative to the diagonal of the rectangle
+    /// (default `0.005`).
+    pub curve_step: f64,
+    /// Budget of points per boundary curve (default `20_000`).
+    pub max_curve_points: usize,
+    /// Number of worker threads for the grid (`0`: all cores; default `0`). The result does not
+    /// depend on it.
+    pub threads: usize,
+    /// Tolerances of the verdicts at each node.
+    pub classify: ClassifyOptions,
+}
+
+impl Default for AtlasOptions {
+    fn default() -> Self {
+        AtlasOptions {
+            nx: 41,
+            ny: 41,
+            curve_tol: 1e-10,
+            curve_step: 0.005,
+            max_curve_points: 20_000,
+            threads: 0,
+            classify: ClassifyOptions::default(),
+        }
+    }
+}
+
+/// The verdict of one steady motion over a grid of two parameters, with the boundary curves of
+/// its stability regions.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StabilityAtlas {
+    /// The grid abscissae, ascending.
+    pub x: Vec<f64>,
+    /// The grid ordinates, ascending.
+    pub y: Vec<f64>,
+    /// `verdicts[j][i]` at `(x[i], y[j])`; `None` where the steady motion does not exist (beyond
+    /// a fold) or could not be followed.
+    pub verdicts: Vec<Vec<Option<Stability>>>,
+    /// The boundary curves, traced by continuation of their defining equations.
+    pub boundaries: Vec<BoundaryCurve>,
+}
+
+/// A curve in the parameter plane where the verdict of the followed steady motion changes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoundaryCurve {
+    /// Which defining equation: a zero eigenvalue of the restricted second variation
+    /// ([`EventKind::Fold`] or [`EventKind::BranchPoint`]) or a zero discriminant of `f₂`
+    /// ([`EventKind::HamiltonianHopf`]).
+    pub kind: EventKind,
+    /// Points `(x, y)` along the curve, in order.
+    pub points: Vec<(f64, f64)>,
+}

@@ -1,0 +1,368 @@
+//! Steady motions (31)–(34): the critical points of the amended potential on the unit sphere.
+//!
+//! A steady motion of (8) is a uniform rotation about the vertical with the body at rest in the
+//! rotating frame: `Ω = 0` (31) (in the gauge `Ω·γ = 0` of ERRATA E4) and the tangential part of
+//! `∂R(0, γ, p_ψ)/∂γ` vanishes (33). Equivalently γ is a critical point of the amended potential
+//! `U_r(γ) = −R(0, γ, p_ψ)` (34) restricted to the sphere `|γ| = 1`.
+//!
+//! The method and its tolerances are documented on [`steady_motions`].
+
+use std::fmt;
+
+mod search;
+
+use nalgebra::Vector3;
+
+use crate::error::RouthError;
+use crate::model::Routhian;
+use crate::validate::{check_finite, check_kinetic, check_model_finite, stable_norm, unit_gamma};
+
+/// One steady motion (31)–(34): the body at rest in the frame that turns uniformly about the
+/// vertical at the rate `psi_dot`, with body-frame vertical `gamma`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SteadyMotion {
+    /// The cyclic momentum `p_ψ` (9) at which this is a steady motion.
+    pub p_psi: f64,
+    /// The body-frame upward vertical γ, a unit vector; a critical point of `U_r` on the sphere
+    /// (33).
+    pub gamma: Vector3<f64>,
+    /// The rotation rate about the vertical, `ψ̇ = −∂R/∂p_ψ` at `Ω = 0` (15), (38); the full
+    /// angular velocity is `ω = ψ̇γ` (7).
+    pub psi_dot: f64,
+    /// The Lagrange multiplier `μ = (∂R/∂γ, γ)` at `Ω = 0` (32)–(33).
+    pub mu: f64,
+    /// The amended potential `U_r(γ, p_ψ) = −R(0, γ, p_ψ)` (34).
+    pub amended_potential: f64,
+    /// The energy (3) of the full system at `ω = ψ̇γ`, computed from the Lagrangian. By Theorem 2
+    /// (E' = E) it equals `amended_potential` up to round-off.
+    pub energy: f64,
+    /// `false` when γ lies on a curve of steady motions (a circle for a body with a symmetry); one
+    /// representative per curve is reported. A degenerate isolated point keeps `true`.
+    pub isolated: bool,
+}
+
+impl fmt::Display for SteadyMotion {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "γ = ({:+.9}, {:+.9}, {:+.9}), ψ̇ = {:+.9e}, μ = {:+.9e}, U_r = {:+.9e}, E = {:+.9e}{}",
+            self.gamma.x,
+            self.gamma.y,
+            self.gamma.z,
+            self.psi_dot,
+            self.mu,
+            self.amended_potential,
+            self.energy,
+            if self.isolated {
+                ""
+            } else {
+                " (one of a curve of steady motions)"
+            }
+        )
+    }
+}
+
+impl SteadyMotion {
+    /// The record of the steady motion at the unit vector `gamma`, without any search: `ψ̇` by
+    /// (15), `μ` by (32)–(33), `U_r` by (34), the energy (3) of the full system at `ω = ψ̇γ`, and
+    /// `isolated` as given. The caller is responsible for `gamma` being a critical point of `U_r`
+    /// (for example the sleeping top `γ = e₃`); [`steady_motion_near`] finds one from a guess.
+    ///
+    /// Errors: non-finite input, `|γ| ≠ 1` beyond [`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL), and a
+    /// kinetic form `J(γ)` that is not positive definite.
+    pub fn at<M: Routhian>(
+        model: &M,
+        gamma: Vector3<f64>,
+        p_psi: f64,
+        isolated: bool,
+    ) -> Result<Self, RouthError> {
+        check_finite("p_psi", &[p_psi])?;
+        let gamma = unit_gamma("gamma", &gamma)?;
+        check_kinetic(model, &gamma)?;
+        record(model, &gamma, p_psi, isolated)
+    }
+}
+
+/// Options of the global search of [`steady_motions_with`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchOptions {
+    /// Number of starting points of the Fibonacci grid on the sphere (default 400).
+    pub starts: usize,
+    /// Largest number of Newton iterations from one start (default 100).
+    pub max_iterations: usize,
+    /// Relative tolerance on the Riemannian gradient for a point to count as critical (default
+    /// `1e−10`; see [`steady_motions`] for the scale it multiplies).
+    pub gradient_tol: f64,
+    /// Relative tolerance under which an eigenvalue of the restricted second variation
+    /// (62)–(63) counts as zero (errata E8; default `1e−8`, the same as
+    /// [`ClassifyOptions::zero_eigenvalue_tol`](crate::stability::ClassifyOptions)). Round-off
+    /// in the eigenvalues is about `1e−15` of the scale and a converged point is located to about
+    /// `1e−13`, so `1e−8` leaves a wide margin on both sides.
+    pub zero_eigenvalue_tol: f64,
+}
+
+impl Default for SearchOptions {
+    fn default() -> Self {
+        SearchOptions {
+            starts: 400,
+            max_iterations: 100,
+            gradient_tol: 1e-10,
+            zero_eigenvalue_tol: 1e-8,
+        }
+    }
+}
+
+impl SearchOptions {
+    fn validate(&self) -> Result<(), RouthError> {
+        let invalid = |what, reason: &str| {
+            Err(RouthError::InvalidOption {
+                what,
+                reason: reason.into(),
+            })
+        };
+        if self.starts == 0 {
+            return invalid("starts", "at least one starting point is needed");
+        }
+        if self.max_iterations == 0 {
+            return invalid("max_iterations", "at least one iteration is needed");
+        }
+        if !(self.gradient_tol > 0.0 && self.gradient_tol < 1.0) {
+            return invalid("gradient_tol", "must be in (0, 1)");
+        }
+        if !(self.zero_eigenvalue_tol > 0.0 && self.zero_eigenvalue_tol < 1.0) {
+            return invalid("zero_eigenvalue_tol", "must be in (0, 1)");
+        }
+        Ok(())
+    }
+}
+
+/// All steady motions (31)–(34) at the cyclic momentum `p_psi`: the critical points of the
+/// amended potential `U_r = −R(0, γ, p_ψ)` (34) on the unit sphere, found by a global search with
+/// the default [`SearchOptions`] (method and tolerances below). Sorted by increasing `U_r`.
+/// Curves of steady motions (bodies with a symmetry) are reported once, with `isolated: false`
+/// (ERRATA E8).
+///
+/// # Geometry on the sphere
+///
+/// γ is an unconstrained vector of ℝ³ when the model differentiates (ERRATA, convention), so the
+/// Euclidean gradient and Hessian of `U_r` are `−∂R/∂γ` and `−∂²R/∂γ²`. On the sphere, with `P` a
+/// 3×2 orthonormal basis of the tangent plane γ^⊥ and `μ = (∂R/∂γ, γ)`:
+/// - Riemannian gradient: `g = Pᵀ(−∂R/∂γ)`; it vanishes exactly when (33) holds;
+/// - Riemannian Hessian: `K = Pᵀ(μE − ∂²R/∂γ²)P`, the restricted second variation (62)–(63); it
+///   equals `PᵀCP` with `C` of section 5 up to a rotation of the plane (ERRATA E5, E6).
+///
+/// # Search
+///
+/// A safeguarded Riemannian Newton iteration starts from every point of a Fibonacci grid on the
+/// sphere ([`SearchOptions::starts`], 400 by default: neighbouring starts are about
+/// `√(4π/400) ≈ 0.18` rad apart). Each iteration solves the 2×2 Levenberg–Marquardt system
+/// `(K² + λE) ξ = −K g`, steps along the retraction `γ ← (γ + Pξ)/|γ + Pξ|` (at most
+/// 0.5 radians), and accepts a step only when `|g|` decreases (otherwise λ grows, turning
+/// the step into steepest descent of `½|g|²`). With `λ → 0` this is Newton's method on the
+/// sphere (quadratic convergence at a non-degenerate critical point); the safeguard makes every
+/// start converge to a critical point or stall at a local minimum of `|g|` that is not one (such
+/// starts are discarded).
+///
+/// Critical points closer together than the grid spacing (next to a bifurcation, e.g. the sleeping
+/// top inside a small circle of tilted precessions) can share one basin, so the search then starts
+/// again from rings of radii `{1/2, 1/5, 1/20}` of the spacing around every point found (and around
+/// up to 16 vertices of every curve), and from the axis `±n` of every closed curve (the normal of
+/// the plane of its vertices: for a circle of latitude of a symmetric body, the pole, a critical
+/// point by symmetry). Finally the Morse relation is checked: the non-degenerate isolated critical
+/// points must satisfy `#minima − #saddles + #maxima = χ(S²) = 2` (curves contribute 0). If they
+/// do not, the whole search is repeated on a grid four times finer. (A pair of critical points
+/// born together in a fold and both missed leaves χ unchanged: such a pair, closer than the grid
+/// spacing to each other and to any other critical point, can be missed; use
+/// [`steady_motions_with`] with more starts near bifurcations.)
+///
+/// # Tolerances (all relative to the model scale)
+///
+/// The *local scale* at γ is `s(γ) = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` at `Ω = 0`: it has units of energy
+/// (γ is dimensionless) and bounds the terms whose difference forms `g` and `K`, so round-off in
+/// those is a small multiple of `ε·s`. The *search scale* `S` is the largest local scale over the
+/// grid of starts.
+/// - A point is critical when `|g| ≤` [`SearchOptions::gradient_tol`]` · max(S, s(γ))` (`1e−10`; the iteration
+///   goes on to round-off, about `1e−15`, when it can).
+/// - Two critical points are the same when they are closer than `1e−6`
+///   (non-degenerate points converge to about `1e−13`) or, when one is degenerate (which Newton
+///   approaches only linearly), closer than `2e−2` with the same `U_r`.
+/// - An eigenvalue of `K` is zero when `|κ| ≤` [`SearchOptions::zero_eigenvalue_tol`]` · s(γ)`: the same test as
+///   [`classify`](crate::classify), so `isolated: false` always comes with
+///   [`Stability::Degenerate`](crate::Stability).
+/// - Two values of `U_r` are equal when they differ by at most
+///   `1e−9 · max(s(γ), |U_r|)`.
+///
+/// # Non-isolated critical points
+///
+/// A body with a symmetry has whole circles of steady motions (the tilted precessions of a
+/// symmetric top). At a critical point whose `K` has a zero eigenvalue, the search moves by `h`
+/// along the null direction, re-converges, and calls the point non-isolated if it lands on a
+/// *different* critical point (at least `h/4` away) with the same `U_r`; `h` is 0.05 rad, then
+/// `h/4`, `h/16`, `h/64` for small curves. It then traces the curve by predictor–corrector
+/// continuation with step `h` (again with a shorter step when a closed curve gets fewer than 12
+/// vertices) and reports one representative per curve (`isolated: false`); a later degenerate
+/// critical point with the same `U_r` within `h/2` of the traced polyline belongs to that curve.
+/// Two circles on the same level (e.g. `γ₃ = ±z` for a body symmetric under `γ₃ → −γ₃`) are
+/// therefore two curves. A zero eigenvalue without such a continuation is a degenerate isolated
+/// critical point (a bifurcation point): `isolated: true`, and
+/// [`classify`](crate::classify) reports it as [`Stability::Degenerate`](crate::Stability).
+/// A whole neighbourhood of critical points (both eigenvalues zero, e.g. `U_r` constant) is
+/// reported once per level of `U_r`, with `isolated: false`.
+///
+/// Errors: [`RouthError::NonFinite`] for a non-finite `p_psi`;
+/// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
+/// `J(γ) = ∂²L/∂ω²` fails to be positive definite at a point of the search grid;
+/// [`RouthError::NoConvergence`] when no start converges.
+///
+/// ```
+/// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
+/// # use routh_core::{steady_motions, classify, Stability};
+/// /// The Lagrange top: J = diag(A, A, C), U = m g l γ₃, with its Routh function by hand (39).
+/// struct Top { a: f64, c: f64, mgl: f64 }
+/// impl Top {
+///     fn j(&self) -> Matrix3<f64> {
+///         Matrix3::from_diagonal(&Vector3::new(self.a, self.a, self.c))
+///     }
+/// }
+/// impl Lagrangian for Top {
+///     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+///         0.5 * w.dot(&(self.j() * w)) - self.mgl * g.z
+///     }
+///     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { self.j() * w }
+///     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+///         Vector3::new(0.0, 0.0, -self.mgl)
+///     }
+///     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { self.j() }
+///     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+///         Matrix3::zeros()
+///     }
+/// }
+/// // R = ½ΩᵀJΩ − mglγ₃ − ½q²/n with q = p − (JΩ)·γ, n = γᵀJγ.
+/// impl Routhian for Top {
+///     fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+///         let (j, n) = (self.j(), g.dot(&(self.j() * g)));
+///         let q = p - (j * w).dot(g);
+///         0.5 * w.dot(&(j * w)) - self.mgl * g.z - 0.5 * q * q / n
+///     }
+///     fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+///         let (j, n) = (self.j(), g.dot(&(self.j() * g)));
+///         let q = p - (j * w).dot(g);
+///         j * w + (q / n) * (j * g)
+///     }
+///     fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+///         let (j, n) = (self.j(), g.dot(&(self.j() * g)));
+///         let q = p - (j * w).dot(g);
+///         Vector3::new(0.0, 0.0, -self.mgl) + (q / n) * (j * w) + (q * q / (n * n)) * (j * g)
+///     }
+///     fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
+///         let (j, n) = (self.j(), g.dot(&(self.j() * g)));
+///         j - (j * g) * (j * g).transpose() / n
+///     }
+///     fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+///         let (j, n) = (self.j(), g.dot(&(self.j() * g)));
+///         let q = p - (j * w).dot(g);
+///         let dqn = -(j * w) / n - (2.0 * q / (n * n)) * (j * g); // ∂(q/n)/∂γ
+///         (j * g) * dqn.transpose() + (q / n) * j
+///     }
+///     fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+///         let (j, n) = (self.j(), g.dot(&(self.j() * g)));
+///         let q = p - (j * w).dot(g);
+///         let dqn = -(j * w) / n - (2.0 * q / (n * n)) * (j * g);
+///         (j * w) * dqn.transpose()
+///             + (q * q / (n * n)) * j
+///             + (2.0 * q / n) * (j * g) * dqn.transpose()
+///     }
+/// }
+///
+/// // A prolate top spinning fast enough: p² > 4 A m g l (Maievskii).
+/// let top = Top { a: 2.0, c: 1.0, mgl: 1.0 };
+/// let p = 1.1 * (4.0f64 * 2.0 * 1.0).sqrt();
+/// let motions = steady_motions(&top, p)?;
+/// // The sleeping top upright and upside down, plus one circle of tilted precessions.
+/// let upright = motions.iter().find(|s| s.isolated && s.gamma.z > 0.999).unwrap();
+/// assert!((upright.energy - upright.amended_potential).abs() < 1e-9);
+/// let report = classify(&top, upright)?;
+/// assert_eq!(report.verdict, Stability::GyroscopicallyStabilized);
+/// assert!(motions.iter().any(|s| !s.isolated));
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn steady_motions<M: Routhian>(model: &M, p_psi: f64) -> Result<Vec<SteadyMotion>, RouthError> {
+    steady_motions_with(model, p_psi, &SearchOptions::default())
+}
+
+/// [`steady_motions`] with explicit [`SearchOptions`].
+///
+/// Errors: as [`steady_motions`], plus [`RouthError::InvalidOption`] for zero starts or zero
+/// iterations.
+pub fn steady_motions_with<M: Routhian>(
+    model: &M,
+    p_psi: f64,
+    opts: &SearchOptions,
+) -> Result<Vec<SteadyMotion>, RouthError> {
+    check_finite("p_psi", &[p_psi])?;
+    opts.validate()?;
+    let points = search::global(model, p_psi, opts)?;
+    let mut out = Vec::with_capacity(points.len());
+    for (gamma, isolated) in points {
+        check_kinetic(model, &gamma)?;
+        out.push(record(model, &gamma, p_psi, isolated)?);
+    }
+    out.sort_by(|a, b| a.amended_potential.total_cmp(&b.amended_potential));
+    Ok(out)
+}
+
+/// The steady motion nearest (in the sense of Newton's method on the sphere) to the guess
+/// `gamma_guess` (any non-zero vector; it is normalised), with `isolated` decided as in
+/// [`steady_motions`]. Useful to follow a branch of steady motions as `p_ψ` varies.
+///
+/// Errors: non-finite input, a zero guess ([`RouthError::NonUnitGamma`] with `norm = 0`), a kinetic
+/// form that is not positive definite, and [`RouthError::NoConvergence`] when the iteration stalls
+/// before reaching a critical point.
+pub fn steady_motion_near<M: Routhian>(
+    model: &M,
+    gamma_guess: Vector3<f64>,
+    p_psi: f64,
+) -> Result<SteadyMotion, RouthError> {
+    check_finite("p_psi", &[p_psi])?;
+    check_finite("gamma_guess", gamma_guess.as_slice())?;
+    let norm = stable_norm(&gamma_guess);
+    if norm == 0.0 {
+        return Err(RouthError::NonUnitGamma {
+            norm,
+            tol: crate::validate::UNIT_GAMMA_TOL,
+        });
+    }
+    let g0 = gamma_guess / norm;
+    check_kinetic(model, &g0)?;
+    let (gamma, isolated) = search::near(model, &g0, p_psi, &SearchOptions::default())?;
+    check_kinetic(model, &gamma)?;
+    record(model, &gamma, p_psi, isolated)
+}
+
+/// The [`SteadyMotion`] record at a unit γ.
+pub(crate) fn record<M: Routhian>(
+    model: &M,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+    isolated: bool,
+) -> Result<SteadyMotion, RouthError> {
+    let zero = Vector3::zeros();
+    let psi_dot = model.psi_dot(&zero, gamma, p_psi);
+    let mu = model.dr_dgamma(&zero, gamma, p_psi).dot(gamma);
+    let amended_potential = model.amended_potential(gamma, p_psi);
+    let energy = model.energy(&(psi_dot * gamma), gamma);
+    check_model_finite(
+        "steady motion (psi_dot, mu, U_r, E)",
+        &[psi_dot, mu, amended_potential, energy],
+        gamma,
+    )?;
+    Ok(SteadyMotion {
+        p_psi,
+        gamma: *gamma,
+        psi_dot,
+        mu,
+        amended_potential,
+        energy,
+        isolated,
+    })
+}

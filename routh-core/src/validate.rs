@@ -1,0 +1,140 @@
+//! Input validation shared by every public function: finite inputs, a unit γ (one tolerance for
+//! the whole crate), a kinetic form that is positive definite.
+
+use nalgebra::{Matrix3, Vector3};
+
+use crate::error::RouthError;
+use crate::model::Lagrangian;
+
+/// Tolerance on `| |γ| − 1 |` for an input γ to count as a unit vector (it is then normalised).
+/// The same for simulation, steady motions and stability. Loose enough for a γ typed from a
+/// closed form with 9 digits or read back from a trajectory integrated with tight tolerances,
+/// tight enough that every formula is evaluated on the sphere to well below the tolerances of
+/// the analysis.
+pub const UNIT_GAMMA_TOL: f64 = 1e-8;
+
+/// Checks that every value is finite; the error names the input and its first bad value.
+pub(crate) fn check_finite(what: &'static str, values: &[f64]) -> Result<(), RouthError> {
+    match values.iter().find(|v| !v.is_finite()) {
+        Some(&value) => Err(RouthError::NonFinite { what, value }),
+        None => Ok(()),
+    }
+}
+
+/// Checks that a model output is finite at γ.
+pub(crate) fn check_model_finite(
+    what: &'static str,
+    values: &[f64],
+    gamma: &Vector3<f64>,
+) -> Result<(), RouthError> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(RouthError::NonFiniteModel {
+            what,
+            gamma: gamma_array(gamma),
+        })
+    }
+}
+
+pub(crate) fn gamma_array(gamma: &Vector3<f64>) -> [f64; 3] {
+    [gamma.x, gamma.y, gamma.z]
+}
+
+/// Checks that γ is finite and `| |γ| − 1 | ≤` [`UNIT_GAMMA_TOL`]; returns `γ/|γ|`.
+pub(crate) fn unit_gamma(
+    what: &'static str,
+    gamma: &Vector3<f64>,
+) -> Result<Vector3<f64>, RouthError> {
+    check_finite(what, gamma.as_slice())?;
+    let norm = stable_norm(gamma);
+    if (norm - 1.0).abs().is_nan() || (norm - 1.0).abs() > UNIT_GAMMA_TOL {
+        return Err(RouthError::NonUnitGamma {
+            norm,
+            tol: UNIT_GAMMA_TOL,
+        });
+    }
+    Ok(gamma / norm)
+}
+
+/// The Euclidean norm without overflow or underflow for any finite vector (scaled by its largest
+/// component).
+pub(crate) fn stable_norm(v: &Vector3<f64>) -> f64 {
+    let m = v.amax();
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * (v / m).norm()
+}
+
+/// Checks that `J(γ) = ∂²L/∂ω²` is finite and positive definite (Cholesky of its symmetric part,
+/// scaled to its diagonal so that any units work) and that `γᵀJγ > 0`.
+pub(crate) fn check_kinetic<M: Lagrangian + ?Sized>(
+    model: &M,
+    gamma: &Vector3<f64>,
+) -> Result<Matrix3<f64>, RouthError> {
+    let j = model.d2l_domega2(gamma);
+    check_model_finite("J(gamma) = d2l_domega2", j.as_slice(), gamma)?;
+    let sym = 0.5 * (j + j.transpose());
+    let vertical = gamma.dot(&(sym * gamma));
+    if vertical.is_nan() || vertical <= 0.0 {
+        return Err(RouthError::DegenerateVerticalInertia {
+            gamma: gamma_array(gamma),
+            value: vertical,
+        });
+    }
+    if !is_positive_definite(&sym) {
+        return Err(RouthError::KineticNotPositiveDefinite {
+            gamma: gamma_array(gamma),
+            min_eigenvalue: min_eigenvalue(&sym),
+        });
+    }
+    Ok(sym)
+}
+
+/// Whether the symmetric matrix `m` is positive definite: Cholesky of `D^{-1/2} m D^{-1/2}`
+/// (`D` its diagonal), which is invariant under the units of `m` and cheap on the hot path.
+pub(crate) fn is_positive_definite(m: &Matrix3<f64>) -> bool {
+    let d = m.diagonal();
+    if !d.iter().all(|x| *x > 0.0 && x.is_finite()) {
+        return false;
+    }
+    let s = d.map(|x| 1.0 / x.sqrt());
+    let scaled = Matrix3::from_fn(|i, k| m[(i, k)] * s[i] * s[k]);
+    scaled.cholesky().is_some()
+}
+
+/// The smallest eigenvalue of a symmetric matrix (NaN if it cannot be computed), for error
+/// messages only.
+pub(crate) fn min_eigenvalue(m: &Matrix3<f64>) -> f64 {
+    if !m.iter().all(|x| x.is_finite()) {
+        return f64::NAN;
+    }
+    nalgebra::SymmetricEigen::try_new(*m, f64::EPSILON, 1000)
+        .map(|e| e.eigenvalues.min())
+        .unwrap_or(f64::NAN)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stable_norm_survives_extremes() {
+        let v = Vector3::new(1e300, 1e300, 0.0);
+        assert!((stable_norm(&v) / (1e300 * 2f64.sqrt()) - 1.0).abs() < 1e-15);
+        let v = Vector3::new(3e-310, 4e-310, 0.0);
+        assert!((stable_norm(&v) / 5e-310 - 1.0).abs() < 1e-6);
+        assert_eq!(stable_norm(&Vector3::zeros()), 0.0);
+    }
+
+    #[test]
+    fn positive_definiteness_is_unit_free() {
+        let m = Matrix3::from_diagonal(&Vector3::new(1e-200, 1.0, 1e200));
+        assert!(is_positive_definite(&m));
+        let mut n = Matrix3::identity();
+        n[(0, 1)] = 1.0;
+        n[(1, 0)] = 1.0;
+        assert!(!is_positive_definite(&n));
+    }
+}
