@@ -6,6 +6,7 @@
 //! written as a subtraction, a reciprocal used once as a division, and small integer powers as
 //! products. Paths go through `<crate>::__private`; no allocation, no `unsafe`.
 
+use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
@@ -334,21 +335,14 @@ impl Emitter<'_> {
             ),
         ];
         // bundle: every output from one straight-line body.
-        let mut ids = vec![o.routhian, o.psi_dot];
-        ids.extend(flat_v(&o.dr_domega));
-        ids.extend(flat_v(&o.dr_dgamma));
-        ids.push(o.dr_dp);
-        ids.extend(flat_m(&o.d2r_domega2));
-        ids.extend(flat_m(&o.d2r_domega_dgamma));
-        ids.extend(flat_m(&o.d2r_dgamma2));
-        let (stmts, outs) = self.body(&ids, r);
-        let (rr, pd) = (&outs[0], &outs[1]);
-        let dw = vec_tokens(k, &outs[2..5]);
-        let dg = vec_tokens(k, &outs[5..8]);
-        let dp = &outs[8];
-        let hw = mat_tokens(k, &outs[9..18]);
-        let hwg = mat_tokens(k, &outs[18..27]);
-        let hg = mat_tokens(k, &outs[27..36]);
+        let (stmts, outs) = self.body(&o.bundle().flatten(), r);
+        let b = Bundle::from_flat(outs);
+        let (rr, pd, dp) = (&b.routhian, &b.psi_dot, &b.dr_dp);
+        let dw = vec_tokens(k, &b.dr_domega);
+        let dg = vec_tokens(k, &b.dr_dgamma);
+        let hw = mat_tokens(k, b.d2r_domega2.as_flattened());
+        let hwg = mat_tokens(k, b.d2r_domega_dgamma.as_flattened());
+        let hg = mat_tokens(k, b.d2r_dgamma2.as_flattened());
         ms.push(quote! {
             #[inline]
             fn bundle(&self, #a) -> #k::__private::RouthBundle {
@@ -365,14 +359,12 @@ impl Emitter<'_> {
                 }
             }
         });
-        let mut ids = flat_m(&o.gyro_a);
-        ids.extend(flat_m(&o.gyro_g));
-        ids.extend(flat_m(&o.gyro_c));
-        let (stmts, outs) = self.body(&ids, r);
+        let (stmts, outs) = self.body(&o.gyroscopic().flatten(), r);
+        let s = Gyroscopic::from_flat(outs);
         let (ma, mg, mc) = (
-            mat_tokens(k, &outs[0..9]),
-            mat_tokens(k, &outs[9..18]),
-            mat_tokens(k, &outs[18..27]),
+            mat_tokens(k, s.a.as_flattened()),
+            mat_tokens(k, s.g.as_flattened()),
+            mat_tokens(k, s.c.as_flattened()),
         );
         ms.push(quote! {
             #[inline]

@@ -2,6 +2,7 @@
 //! impls, derived symbolically from `L = kinetic + linear − potential` for any model the DSL
 //! accepts (paper (8)–(19), section 5, with ERRATA E4–E6).
 
+use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::Lowered;
 use routh_symbolic::shape::{dot3, matmul3, skew3, transpose3};
 use routh_symbolic::{Graph, Id, Var};
@@ -83,19 +84,32 @@ pub enum Momentum {
 }
 
 impl Outputs {
-    /// The outputs of `bundle`.
-    pub fn bundle_ids(&self) -> Vec<Id> {
-        let mut ids = vec![self.routhian, self.psi_dot, self.dr_dp];
-        ids.extend(self.dr_domega);
-        ids.extend(self.dr_dgamma);
-        for m in [
-            &self.d2r_domega2,
-            &self.d2r_domega_dgamma,
-            &self.d2r_dgamma2,
-        ] {
-            ids.extend(m.iter().flatten());
+    /// The outputs of `bundle`, by name.
+    pub fn bundle(&self) -> Bundle<Id> {
+        Bundle {
+            routhian: self.routhian,
+            psi_dot: self.psi_dot,
+            dr_domega: self.dr_domega,
+            dr_dgamma: self.dr_dgamma,
+            dr_dp: self.dr_dp,
+            d2r_domega2: self.d2r_domega2,
+            d2r_domega_dgamma: self.d2r_domega_dgamma,
+            d2r_dgamma2: self.d2r_dgamma2,
         }
-        ids
+    }
+
+    /// The outputs of `bundle`, in the order of [`Bundle::flatten`].
+    pub fn bundle_ids(&self) -> Vec<Id> {
+        self.bundle().flatten()
+    }
+
+    /// The outputs of `gyroscopic_system`, by name.
+    pub fn gyroscopic(&self) -> Gyroscopic<Id> {
+        Gyroscopic {
+            a: self.gyro_a,
+            g: self.gyro_g,
+            c: self.gyro_c,
+        }
     }
 }
 
@@ -201,35 +215,44 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
             hess[j][i] = h;
         }
     }
+    // Bind ψ̇ in the gradient and the Hessian of 𝒜 in x = (Ω, γ).
     let mut pre: Vec<Id> = a_wg.clone();
     pre.extend(hess.iter().flatten());
     let bind: HashMap<Var, Id> = [(psi_var, psi_dot)].into_iter().collect();
     let post = subst_vec(g, &pre, &bind);
-    let dr_domega: V3 = [post[0], post[1], post[2]];
-    let dr_dgamma: V3 = [post[3], post[4], post[5]];
-    let h = |i: usize, j: usize| post[6 + 6 * i + j];
-    let d2r_domega2: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(i, j)));
-    let d2r_domega_dgamma: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(i, 3 + j)));
-    let d2r_dgamma2: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(3 + i, 3 + j)));
-    // (15)
-    let dr_dp = g.neg(psi_dot);
+    let (grad_x, hess_x) = post.split_at(6);
+    let grad_x: [Id; 6] = std::array::from_fn(|i| grad_x[i]);
+    let hess_x: [[Id; 6]; 6] = std::array::from_fn(|i| std::array::from_fn(|j| hess_x[6 * i + j]));
+    let bundle = Bundle {
+        routhian,
+        psi_dot,
+        dr_domega: part(&grad_x, X_OMEGA),
+        dr_dgamma: part(&grad_x, X_GAMMA),
+        // (15)
+        dr_dp: g.neg(psi_dot),
+        d2r_domega2: block(&hess_x, X_OMEGA, X_OMEGA),
+        d2r_domega_dgamma: block(&hess_x, X_OMEGA, X_GAMMA),
+        d2r_dgamma2: block(&hess_x, X_GAMMA, X_GAMMA),
+    };
 
-    // (34) and section 5 at Ω = 0.
-    let mut rest: Vec<Id> = vec![routhian, psi_dot];
-    rest.extend(dr_domega);
-    rest.extend(dr_dgamma);
-    rest.extend(d2r_domega2.iter().flatten());
-    rest.extend(d2r_domega_dgamma.iter().flatten());
-    rest.extend(d2r_dgamma2.iter().flatten());
-    let r0 = subst_vec(g, &rest, &at_rest);
-    let amended_potential = g.neg(r0[0]);
-    let psi_dot_at_rest = r0[1];
-    let r0 = &r0[1..];
-    let v3 = |o: usize| -> V3 { [r0[o], r0[o + 1], r0[o + 2]] };
-    let m3 =
-        |o: usize| -> M3 { std::array::from_fn(|i| std::array::from_fn(|k| r0[o + 3 * i + k])) };
-    let (dw0, dg0) = (v3(1), v3(4));
-    let (a0, mx0, h0) = (m3(7), m3(16), m3(25));
+    // (34) and section 5 at Ω = 0. ∂R/∂p_ψ = −ψ̇ is not needed at rest, and it is left out
+    // rather than substituted: it is the newest node, and `substitute` rebuilds every node up to
+    // the largest root, so it would build nodes no output uses. Its place repeats ψ̇.
+    let rest = Bundle {
+        dr_dp: bundle.psi_dot,
+        ..bundle
+    };
+    let Bundle {
+        routhian: r0,
+        psi_dot: psi_dot_at_rest,
+        dr_domega: dw0,
+        dr_dgamma: dg0,
+        dr_dp: _,
+        d2r_domega2: a0,
+        d2r_domega_dgamma: mx0,
+        d2r_dgamma2: h0,
+    } = Bundle::from_flat(subst_vec(g, &rest.flatten(), &at_rest));
+    let amended_potential = g.neg(r0);
     let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dw0, &dg0, &mx0, &h0);
 
     Outputs {
@@ -242,18 +265,34 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         cyclic_momentum,
         psi_dot,
         routhian,
-        dr_domega,
-        dr_dgamma,
-        dr_dp,
-        d2r_domega2,
-        d2r_domega_dgamma,
-        d2r_dgamma2,
+        dr_domega: bundle.dr_domega,
+        dr_dgamma: bundle.dr_dgamma,
+        dr_dp: bundle.dr_dp,
+        d2r_domega2: bundle.d2r_domega2,
+        d2r_domega_dgamma: bundle.d2r_domega_dgamma,
+        d2r_dgamma2: bundle.d2r_dgamma2,
         amended_potential,
         psi_dot_at_rest,
         gyro_a: a0,
         gyro_g,
         gyro_c,
     }
+}
+
+/// Where Ω starts in the coordinates `x = (Ω, γ)` of the Schur complement.
+const X_OMEGA: usize = 0;
+/// Where γ starts in `x = (Ω, γ)`.
+const X_GAMMA: usize = 3;
+
+/// The three coordinates of `v` (a vector in `x = (Ω, γ)`) from `start` on.
+fn part(v: &[Id; 6], start: usize) -> V3 {
+    std::array::from_fn(|i| v[start + i])
+}
+
+/// The 3×3 block of `h` (a matrix in `x = (Ω, γ)`) whose rows start at `row` and columns at
+/// `col`.
+fn block(h: &[[Id; 6]; 6], row: usize, col: usize) -> M3 {
+    std::array::from_fn(|i| part(&h[row + i], col))
 }
 
 /// ERRATA E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these
