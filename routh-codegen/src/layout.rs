@@ -49,19 +49,16 @@ impl<T> Bundle<T> {
     /// If `flat` does not hold exactly one scalar per field (a bug in the caller: it is always
     /// the image of a flattened bundle).
     pub fn from_flat(flat: impl IntoIterator<Item = T>) -> Self {
-        let mut it = flat.into_iter();
-        let b = Bundle {
-            routhian: take(&mut it),
-            psi_dot: take(&mut it),
-            dr_domega: take3(&mut it),
-            dr_dgamma: take3(&mut it),
-            dr_dp: take(&mut it),
-            d2r_domega2: take33(&mut it),
-            d2r_domega_dgamma: take33(&mut it),
-            d2r_dgamma2: take33(&mut it),
-        };
-        assert!(it.next().is_none(), "more scalars than a bundle holds");
-        b
+        read_exactly(flat, |it| Bundle {
+            routhian: take(it),
+            psi_dot: take(it),
+            dr_domega: take3(it),
+            dr_dgamma: take3(it),
+            dr_dp: take(it),
+            d2r_domega2: take33(it),
+            d2r_domega_dgamma: take33(it),
+            d2r_dgamma2: take33(it),
+        })
     }
 }
 
@@ -92,18 +89,23 @@ impl<T> Gyroscopic<T> {
     /// # Panics
     /// If `flat` does not hold exactly 27 scalars.
     pub fn from_flat(flat: impl IntoIterator<Item = T>) -> Self {
-        let mut it = flat.into_iter();
-        let s = Gyroscopic {
-            a: take33(&mut it),
-            g: take33(&mut it),
-            c: take33(&mut it),
-        };
-        assert!(
-            it.next().is_none(),
-            "more scalars than a gyroscopic system holds"
-        );
-        s
+        read_exactly(flat, |it| Gyroscopic {
+            a: take33(it),
+            g: take33(it),
+            c: take33(it),
+        })
     }
+}
+
+/// A layout read from `flat` by `read`, which must use up every scalar.
+fn read_exactly<T, I: IntoIterator<Item = T>, S>(
+    flat: I,
+    read: impl FnOnce(&mut I::IntoIter) -> S,
+) -> S {
+    let mut it = flat.into_iter();
+    let layout = read(&mut it);
+    assert!(it.next().is_none(), "more scalars than the layout holds");
+    layout
 }
 
 fn take<T>(it: &mut impl Iterator<Item = T>) -> T {
@@ -148,5 +150,11 @@ mod tests {
     #[should_panic(expected = "fewer scalars")]
     fn a_short_run_is_a_bug() {
         let _ = Bundle::from_flat(0..35);
+    }
+
+    #[test]
+    #[should_panic(expected = "more scalars")]
+    fn a_long_run_is_a_bug() {
+        let _ = Gyroscopic::from_flat(0..28);
     }
 }
