@@ -167,7 +167,7 @@ pub fn term_degree(
     name: &str,
     id: routh_symbolic::Id,
     expr: &syn::Expr,
-    omega: &[u32; 3],
+    omega: &[routh_symbolic::Var; 3],
 ) {
     use routh_symbolic::Degree;
     let want = match name {

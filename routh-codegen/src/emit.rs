@@ -6,13 +6,14 @@
 //! written as a subtraction, a reciprocal used once as a division, and small integer powers as
 //! products. Paths go through `<crate>::__private`; no allocation, no `unsafe`.
 
+use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
-use routh_symbolic::{Func, Graph, Id, Node, Plan};
+use routh_symbolic::{Func, Graph, Id, Node, Plan, Var};
 
-/// How a variable slot is read in one method.
+/// How a variable is read in one method.
 #[derive(Clone, Copy)]
 pub enum Inputs {
     /// `(omega, gamma)` of the Lagrangian methods.
@@ -50,10 +51,10 @@ impl Emitter<'_> {
         &self.sym.graph
     }
 
-    fn input_tokens(&self, var: u32, inputs: Inputs) -> TokenStream {
+    /// The tokens reading variable `var` from the method's arguments or from `self`.
+    fn input_tokens(&self, var: Var, inputs: Inputs) -> TokenStream {
         let s = self.sym;
-        let g = &s.graph;
-        let idx = |ids: &[Id; 3]| ids.iter().position(|&x| g.as_var(x) == Some(var));
+        let idx = |vars: &[Var; 3]| vars.iter().position(|&x| x == var);
         if let Some(i) = idx(&s.omega) {
             return match inputs {
                 Inputs::Lagrangian => quote!(__omega[#i]),
@@ -63,7 +64,7 @@ impl Emitter<'_> {
         if let Some(i) = idx(&s.gamma) {
             return quote!(__gamma[#i]);
         }
-        if g.as_var(s.p_psi) == Some(var) {
+        if s.p_psi == var {
             return quote!(__p_psi);
         }
         match s.params.iter().find(|p| p.var == var) {
@@ -75,7 +76,7 @@ impl Emitter<'_> {
                     Access::Entry(i, j) => quote!(self.#f[(#i, #j)]),
                 }
             }
-            // Every slot is ω, γ, p_ψ or a parameter.
+            // Every variable is ω, γ, p_ψ or a parameter.
             None => quote!(0.0f64),
         }
     }
@@ -84,12 +85,17 @@ impl Emitter<'_> {
         format_ident!("__t{}", id.index())
     }
 
+    /// The local an input is read into.
+    fn input_local(v: Var) -> Ident {
+        format_ident!("__v{}", v.index())
+    }
+
     /// The tokens naming the value of `id` (a literal, an input local or a node local).
     fn operand(&self, id: Id) -> TokenStream {
         match self.g().node(id) {
             Node::Const(b) => lit(f64::from_bits(b), self.krate),
             Node::Var(v) => {
-                let n = format_ident!("__v{}", v);
+                let n = Self::input_local(v);
                 quote!(#n)
             }
             _ => {
@@ -173,7 +179,7 @@ impl Emitter<'_> {
         // Inputs first (only those read), then the nodes in order.
         for (i, _) in plan.emit.iter().enumerate().filter(|(_, &e)| e) {
             if let Node::Var(v) = g.node(Id::from_index(i)) {
-                let name = format_ident!("__v{}", v);
+                let name = Self::input_local(v);
                 let src = self.input_tokens(v, inputs);
                 stmts.extend(quote!(let #name: #k::__private::f64 = #src;));
             }
@@ -329,21 +335,14 @@ impl Emitter<'_> {
             ),
         ];
         // bundle: every output from one straight-line body.
-        let mut ids = vec![o.routhian, o.psi_dot];
-        ids.extend(flat_v(&o.dr_domega));
-        ids.extend(flat_v(&o.dr_dgamma));
-        ids.push(o.dr_dp);
-        ids.extend(flat_m(&o.d2r_domega2));
-        ids.extend(flat_m(&o.d2r_domega_dgamma));
-        ids.extend(flat_m(&o.d2r_dgamma2));
-        let (stmts, outs) = self.body(&ids, r);
-        let (rr, pd) = (&outs[0], &outs[1]);
-        let dw = vec_tokens(k, &outs[2..5]);
-        let dg = vec_tokens(k, &outs[5..8]);
-        let dp = &outs[8];
-        let hw = mat_tokens(k, &outs[9..18]);
-        let hwg = mat_tokens(k, &outs[18..27]);
-        let hg = mat_tokens(k, &outs[27..36]);
+        let (stmts, outs) = self.body(&o.bundle().flatten(), r);
+        let b = Bundle::from_flat(outs);
+        let (rr, pd, dp) = (&b.routhian, &b.psi_dot, &b.dr_dp);
+        let dw = vec_tokens(k, &b.dr_domega);
+        let dg = vec_tokens(k, &b.dr_dgamma);
+        let hw = mat_tokens(k, b.d2r_domega2.as_flattened());
+        let hwg = mat_tokens(k, b.d2r_domega_dgamma.as_flattened());
+        let hg = mat_tokens(k, b.d2r_dgamma2.as_flattened());
         ms.push(quote! {
             #[inline]
             fn bundle(&self, #a) -> #k::__private::RouthBundle {
@@ -360,14 +359,12 @@ impl Emitter<'_> {
                 }
             }
         });
-        let mut ids = flat_m(&o.gyro_a);
-        ids.extend(flat_m(&o.gyro_g));
-        ids.extend(flat_m(&o.gyro_c));
-        let (stmts, outs) = self.body(&ids, r);
+        let (stmts, outs) = self.body(&o.gyroscopic().flatten(), r);
+        let s = Gyroscopic::from_flat(outs);
         let (ma, mg, mc) = (
-            mat_tokens(k, &outs[0..9]),
-            mat_tokens(k, &outs[9..18]),
-            mat_tokens(k, &outs[18..27]),
+            mat_tokens(k, s.a.as_flattened()),
+            mat_tokens(k, s.g.as_flattened()),
+            mat_tokens(k, s.c.as_flattened()),
         );
         ms.push(quote! {
             #[inline]

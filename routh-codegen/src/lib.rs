@@ -4,7 +4,8 @@
 //!
 //! Pipeline: [`attr`] parses the struct and its `#[lagrangian(...)]` items, [`check`] applies the
 //! semantic rules, [`lower`] turns the DSL's expressions into a `routh_symbolic::Graph`,
-//! [`reduce`] derives the Routh reduction, [`emit`] writes the impls. Every stage records its
+//! [`reduce`] derives the Routh reduction, [`emit`] writes the impls ([`layout`] names the outputs
+//! of the methods that return many at once, for both). Every stage records its
 //! errors in a [`ctxt::Ctxt`] and carries on, so all mistakes of an attribute are reported at
 //! once; on error the output is `compile_error!`s plus a stub impl, so no follow-on errors appear.
 
@@ -12,6 +13,7 @@ pub mod attr;
 pub mod check;
 pub mod ctxt;
 pub mod emit;
+pub mod layout;
 pub mod lower;
 pub mod reduce;
 

@@ -3,7 +3,7 @@
 
 use crate::attr::{FieldKind, Input, Item, Term};
 use crate::ctxt::Ctxt;
-use routh_symbolic::{shape, Func, Graph, Id, Value};
+use routh_symbolic::{shape, Func, Graph, Id, Value, Var};
 use std::collections::HashMap;
 
 /// How a scalar input slot is read from the model struct.
@@ -20,25 +20,26 @@ pub enum Access {
 /// A scalar parameter read from a field.
 #[derive(Clone, Debug)]
 pub struct Param {
-    pub var: u32,
+    /// The variable standing for the parameter in the graph.
+    pub var: Var,
     pub field: syn::Ident,
     pub access: Access,
 }
 
-/// The symbols of a model: the graph, the slots of ω (also used for Ω), γ and p_ψ, and the
-/// parameters.
+/// The symbols of a model: the graph, the variables ω (also used for Ω), γ and p_ψ, and the
+/// parameters. Their nodes are [`Symbols::ids`].
 pub struct Symbols {
     pub graph: Graph,
-    pub omega: [Id; 3],
-    pub gamma: [Id; 3],
-    pub p_psi: Id,
+    pub omega: [Var; 3],
+    pub gamma: [Var; 3],
+    pub p_psi: Var,
     pub params: Vec<Param>,
 }
 
 impl Symbols {
-    /// Slot indices of ω.
-    pub fn omega_vars(&self) -> [u32; 3] {
-        self.omega.map(|x| self.graph.as_var(x).unwrap_or(u32::MAX))
+    /// The nodes of three variables (of ω or γ), to build expressions with.
+    pub fn ids(&self, vars: [Var; 3]) -> [Id; 3] {
+        vars.map(|v| self.graph.var_id(v))
     }
 }
 
@@ -79,12 +80,19 @@ struct Lowerer<'a> {
 /// Lowers every item. Returns `None` if any error was recorded.
 pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
     let mut g = Graph::new();
-    let omega = [g.var("ω₁"), g.var("ω₂"), g.var("ω₃")];
-    let gamma = [g.var("γ₁"), g.var("γ₂"), g.var("γ₃")];
-    let p_psi = g.var("p_ψ");
+    let omega = ["ω₁", "ω₂", "ω₃"].map(|name| g.new_var(name));
+    let gamma = ["γ₁", "γ₂", "γ₃"].map(|name| g.new_var(name));
+    let p_psi = g.new_var("p_ψ");
+    let [omega_ids, gamma_ids] = [omega, gamma].map(|vs| vs.map(|v| g.var_id(v)));
     let mut names = HashMap::new();
-    names.insert("omega".to_string(), Binding::Value(Value::Vector(omega)));
-    names.insert("gamma".to_string(), Binding::Value(Value::Vector(gamma)));
+    names.insert(
+        "omega".to_string(),
+        Binding::Value(Value::Vector(omega_ids)),
+    );
+    names.insert(
+        "gamma".to_string(),
+        Binding::Value(Value::Vector(gamma_ids)),
+    );
     let mut params = vec![];
     let mut field_names = vec![];
     for f in &input.fields {
@@ -107,14 +115,13 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
         };
         field_names.push(name.clone());
         let mut slot = |g: &mut Graph, label: String, access: Access| {
-            let id = g.var(label);
-            let var = g.as_var(id).unwrap_or(u32::MAX);
+            let var = g.new_var(label);
             params.push(Param {
                 var,
                 field: f.ident.clone(),
                 access,
             });
-            id
+            g.var_id(var)
         };
         let value = match kind {
             FieldKind::Scalar => Value::Scalar(slot(&mut g, name.clone(), Access::Scalar)),
@@ -163,7 +170,7 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
         g,
         names,
         later_lets,
-        gamma,
+        gamma: gamma_ids,
         field_names,
         depth: 0,
     };
@@ -220,9 +227,8 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
         p_psi,
         params,
     };
-    let omega_vars = sym.omega_vars();
     for (name, id, expr) in &terms {
-        crate::check::term_degree(cx, &sym.graph, name, *id, expr, &omega_vars);
+        crate::check::term_degree(cx, &sym.graph, name, *id, expr, &sym.omega);
     }
     if cx.has_errors() {
         return None;

@@ -2,9 +2,10 @@
 //! impls, derived symbolically from `L = kinetic + linear − potential` for any model the DSL
 //! accepts (paper (8)–(19), section 5, with ERRATA E4–E6).
 
+use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::Lowered;
 use routh_symbolic::shape::{dot3, matmul3, skew3, transpose3};
-use routh_symbolic::{Graph, Id};
+use routh_symbolic::{Graph, Id, Var};
 use std::collections::HashMap;
 
 pub type V3 = [Id; 3];
@@ -43,22 +44,23 @@ pub struct Outputs {
     pub gyro_c: M3,
 }
 
-fn grad(g: &mut Graph, f: Id, x: &V3) -> V3 {
-    x.map(|xi| g.diff(f, xi).unwrap_or(f))
+/// `∂f/∂x_i` for the three variables `x`.
+fn grad(g: &mut Graph, f: Id, x: &[Var; 3]) -> V3 {
+    x.map(|xi| g.diff(f, xi))
 }
 
 /// `∂f_i/∂x_j` for every i, j.
-fn jacobian(g: &mut Graph, f: &V3, x: &V3) -> M3 {
+fn jacobian(g: &mut Graph, f: &V3, x: &[Var; 3]) -> M3 {
     f.map(|fi| grad(g, fi, x))
 }
 
 /// Hessian of the gradient `f = ∂φ/∂x`: computes the upper triangle and mirrors it, so the
 /// result is exactly symmetric.
-fn sym_jacobian(g: &mut Graph, f: &V3, x: &V3) -> M3 {
+fn sym_jacobian(g: &mut Graph, f: &V3, x: &[Var; 3]) -> M3 {
     let mut h = [[f[0]; 3]; 3];
     for i in 0..3 {
         for j in i..3 {
-            let d = g.diff(f[i], x[j]).unwrap_or(f[i]);
+            let d = g.diff(f[i], x[j]);
             h[i][j] = d;
             h[j][i] = d;
         }
@@ -66,7 +68,7 @@ fn sym_jacobian(g: &mut Graph, f: &V3, x: &V3) -> M3 {
     h
 }
 
-fn subst_vec(g: &mut Graph, v: &[Id], map: &HashMap<u32, Id>) -> Vec<Id> {
+fn subst_vec(g: &mut Graph, v: &[Id], map: &HashMap<Var, Id>) -> Vec<Id> {
     g.substitute(v, map)
 }
 
@@ -82,19 +84,32 @@ pub enum Momentum {
 }
 
 impl Outputs {
-    /// The outputs of `bundle`.
-    pub fn bundle_ids(&self) -> Vec<Id> {
-        let mut ids = vec![self.routhian, self.psi_dot, self.dr_dp];
-        ids.extend(self.dr_domega);
-        ids.extend(self.dr_dgamma);
-        for m in [
-            &self.d2r_domega2,
-            &self.d2r_domega_dgamma,
-            &self.d2r_dgamma2,
-        ] {
-            ids.extend(m.iter().flatten());
+    /// The outputs of `bundle`, by name.
+    pub fn bundle(&self) -> Bundle<Id> {
+        Bundle {
+            routhian: self.routhian,
+            psi_dot: self.psi_dot,
+            dr_domega: self.dr_domega,
+            dr_dgamma: self.dr_dgamma,
+            dr_dp: self.dr_dp,
+            d2r_domega2: self.d2r_domega2,
+            d2r_domega_dgamma: self.d2r_domega_dgamma,
+            d2r_dgamma2: self.d2r_dgamma2,
         }
-        ids
+    }
+
+    /// The outputs of `bundle`, in the order of [`Bundle::flatten`].
+    pub fn bundle_ids(&self) -> Vec<Id> {
+        self.bundle().flatten()
+    }
+
+    /// The outputs of `gyroscopic_system`, by name.
+    pub fn gyroscopic(&self) -> Gyroscopic<Id> {
+        Gyroscopic {
+            a: self.gyro_a,
+            g: self.gyro_g,
+            c: self.gyro_c,
+        }
     }
 }
 
@@ -115,30 +130,32 @@ pub fn reduce(m: &mut Lowered) -> Outputs {
 /// Derives every output with the given formulation of the cyclic momentum.
 pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let s = &mut m.sym;
+    // The variables ω and γ (to differentiate and substitute by) and their nodes.
+    let (w_vars, g_vars) = (s.omega, s.gamma);
+    let (w, gm) = (s.ids(w_vars), s.ids(g_vars));
     let g = &mut s.graph;
-    let (w, gm, p) = (s.omega, s.gamma, s.p_psi);
-    let w_vars = w.map(|x| g.as_var(x).unwrap_or(u32::MAX));
+    let p = g.var_id(s.p_psi);
 
     // L = T₂ + T₁ − U (35).
     let t1u = g.sub(m.linear, m.potential);
     let lagrangian = g.add(m.kinetic, t1u);
-    let dl_domega = grad(g, lagrangian, &w);
-    let dl_dgamma = grad(g, lagrangian, &gm);
+    let dl_domega = grad(g, lagrangian, &w_vars);
+    let dl_dgamma = grad(g, lagrangian, &g_vars);
     let zero = g.zero();
-    let at_rest: HashMap<u32, Id> = w_vars.iter().map(|&v| (v, zero)).collect();
-    let j_full = sym_jacobian(g, &dl_domega, &w);
+    let at_rest: HashMap<Var, Id> = w_vars.iter().map(|&v| (v, zero)).collect();
+    let j_full = sym_jacobian(g, &dl_domega, &w_vars);
     let j_flat: Vec<Id> = j_full.iter().flatten().copied().collect();
     let j_rest = subst_vec(g, &j_flat, &at_rest);
     let d2l_domega2: M3 = std::array::from_fn(|i| std::array::from_fn(|k| j_rest[3 * i + k]));
-    let d2l_domega_dgamma = jacobian(g, &dl_domega, &gm);
+    let d2l_domega_dgamma = jacobian(g, &dl_domega, &g_vars);
     let e1 = dot3(g, &w, &dl_domega);
     let energy = g.sub(e1, lagrangian);
     let cyclic_momentum = match momentum {
         Momentum::Contracted => dot3(g, &dl_domega, &gm),
         Momentum::Directional => {
-            let s_dir = g.var("s");
-            let s_var = g.as_var(s_dir).unwrap_or(u32::MAX);
-            let along: HashMap<u32, Id> = w_vars
+            let s_var = g.new_var("s");
+            let s_dir = g.var_id(s_var);
+            let along: HashMap<Var, Id> = w_vars
                 .iter()
                 .zip(w)
                 .zip(gm)
@@ -148,14 +165,14 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
                 })
                 .collect();
             let l_along = subst_vec(g, &[lagrangian], &along)[0];
-            let dl_ds = g.diff(l_along, s_dir).unwrap_or(l_along);
-            let s_zero: HashMap<u32, Id> = [(s_var, zero)].into_iter().collect();
+            let dl_ds = g.diff(l_along, s_var);
+            let s_zero: HashMap<Var, Id> = [(s_var, zero)].into_iter().collect();
             subst_vec(g, &[dl_ds], &s_zero)[0]
         }
     };
 
     // (12)/(38) with J(γ): ψ̇ = (p_ψ − (∂L/∂ω(Ω, γ), γ)) / (γᵀJγ), and γᵀJγ = 2 T₂(γ, γ).
-    let on_gamma: HashMap<u32, Id> = w_vars.iter().zip(gm).map(|(&v, x)| (v, x)).collect();
+    let on_gamma: HashMap<Var, Id> = w_vars.iter().zip(gm).map(|(&v, x)| (v, x)).collect();
     let t2_gamma = subst_vec(g, &[m.kinetic], &on_gamma)[0];
     let two = g.constant(2.0);
     let vertical_inertia = g.mul(two, t2_gamma);
@@ -172,61 +189,70 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     // level set (12), the first derivatives of R are those of 𝒜 ((18)–(19)), and the Hessian of R
     // is the Schur complement R_xy = 𝒜_xy − 𝒜_xψ̇ 𝒜_ψ̇y / D (differentiate (12) implicitly).
     // Each piece stays as compact as L itself; ψ̇ is bound to (38) at the end.
-    let psi = g.var("ψ̇");
-    let psi_var = g.as_var(psi).unwrap_or(u32::MAX);
+    let psi_var = g.new_var("ψ̇");
+    let psi = g.var_id(psi_var);
     let psi2 = g.powi(psi, 2);
     let hd = g.mul(half, vertical_inertia);
     let quad = g.mul(psi2, hd);
     let lin = g.mul(psi, cyclic_momentum);
     let a1 = g.add(lagrangian, lin);
     let big_a = g.add(a1, quad);
-    let a_w = grad(g, big_a, &w);
-    let a_g = grad(g, big_a, &gm);
+    let a_w = grad(g, big_a, &w_vars);
+    let a_g = grad(g, big_a, &g_vars);
     let a_wg: Vec<Id> = a_w.iter().chain(a_g.iter()).copied().collect();
     // 𝒜_xψ̇ for x = (Ω, γ), and 𝒜_xψ̇ / D.
-    let k: Vec<Id> = a_wg.iter().map(|&f| g.diff(f, psi).unwrap_or(f)).collect();
+    let k: Vec<Id> = a_wg.iter().map(|&f| g.diff(f, psi_var)).collect();
     let r_d = g.recip(vertical_inertia);
     let kd: Vec<Id> = k.iter().map(|&x| g.mul(x, r_d)).collect();
-    let vars: Vec<Id> = w.iter().chain(gm.iter()).copied().collect();
+    let vars: Vec<Var> = w_vars.iter().chain(g_vars.iter()).copied().collect();
     let mut hess = [[zero; 6]; 6];
     for i in 0..6 {
         for j in i..6 {
-            let d = g.diff(a_wg[i], vars[j]).unwrap_or(zero);
+            let d = g.diff(a_wg[i], vars[j]);
             let c = g.mul(kd[i], k[j]);
             let h = g.sub(d, c);
             hess[i][j] = h;
             hess[j][i] = h;
         }
     }
+    // Bind ψ̇ in the gradient and the Hessian of 𝒜 in x = (Ω, γ).
     let mut pre: Vec<Id> = a_wg.clone();
     pre.extend(hess.iter().flatten());
-    let bind: HashMap<u32, Id> = [(psi_var, psi_dot)].into_iter().collect();
+    let bind: HashMap<Var, Id> = [(psi_var, psi_dot)].into_iter().collect();
     let post = subst_vec(g, &pre, &bind);
-    let dr_domega: V3 = [post[0], post[1], post[2]];
-    let dr_dgamma: V3 = [post[3], post[4], post[5]];
-    let h = |i: usize, j: usize| post[6 + 6 * i + j];
-    let d2r_domega2: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(i, j)));
-    let d2r_domega_dgamma: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(i, 3 + j)));
-    let d2r_dgamma2: M3 = std::array::from_fn(|i| std::array::from_fn(|j| h(3 + i, 3 + j)));
-    // (15)
-    let dr_dp = g.neg(psi_dot);
+    let (grad_x, hess_x) = post.split_at(6);
+    let grad_x: [Id; 6] = std::array::from_fn(|i| grad_x[i]);
+    let hess_x: [[Id; 6]; 6] = std::array::from_fn(|i| std::array::from_fn(|j| hess_x[6 * i + j]));
+    let bundle = Bundle {
+        routhian,
+        psi_dot,
+        dr_domega: part(&grad_x, X_OMEGA),
+        dr_dgamma: part(&grad_x, X_GAMMA),
+        // (15)
+        dr_dp: g.neg(psi_dot),
+        d2r_domega2: block(&hess_x, X_OMEGA, X_OMEGA),
+        d2r_domega_dgamma: block(&hess_x, X_OMEGA, X_GAMMA),
+        d2r_dgamma2: block(&hess_x, X_GAMMA, X_GAMMA),
+    };
 
-    // (34) and section 5 at Ω = 0.
-    let mut rest: Vec<Id> = vec![routhian, psi_dot];
-    rest.extend(dr_domega);
-    rest.extend(dr_dgamma);
-    rest.extend(d2r_domega2.iter().flatten());
-    rest.extend(d2r_domega_dgamma.iter().flatten());
-    rest.extend(d2r_dgamma2.iter().flatten());
-    let r0 = subst_vec(g, &rest, &at_rest);
-    let amended_potential = g.neg(r0[0]);
-    let psi_dot_at_rest = r0[1];
-    let r0 = &r0[1..];
-    let v3 = |o: usize| -> V3 { [r0[o], r0[o + 1], r0[o + 2]] };
-    let m3 =
-        |o: usize| -> M3 { std::array::from_fn(|i| std::array::from_fn(|k| r0[o + 3 * i + k])) };
-    let (dw0, dg0) = (v3(1), v3(4));
-    let (a0, mx0, h0) = (m3(7), m3(16), m3(25));
+    // (34) and section 5 at Ω = 0. ∂R/∂p_ψ = −ψ̇ is not needed at rest, and it is left out
+    // rather than substituted: it is the newest node, and `substitute` rebuilds every node up to
+    // the largest root, so it would build nodes no output uses. Its place repeats ψ̇.
+    let rest = Bundle {
+        dr_dp: bundle.psi_dot,
+        ..bundle
+    };
+    let Bundle {
+        routhian: r0,
+        psi_dot: psi_dot_at_rest,
+        dr_domega: dw0,
+        dr_dgamma: dg0,
+        dr_dp: _,
+        d2r_domega2: a0,
+        d2r_domega_dgamma: mx0,
+        d2r_dgamma2: h0,
+    } = Bundle::from_flat(subst_vec(g, &rest.flatten(), &at_rest));
+    let amended_potential = g.neg(r0);
     let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dw0, &dg0, &mx0, &h0);
 
     Outputs {
@@ -239,18 +265,34 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         cyclic_momentum,
         psi_dot,
         routhian,
-        dr_domega,
-        dr_dgamma,
-        dr_dp,
-        d2r_domega2,
-        d2r_domega_dgamma,
-        d2r_dgamma2,
+        dr_domega: bundle.dr_domega,
+        dr_dgamma: bundle.dr_dgamma,
+        dr_dp: bundle.dr_dp,
+        d2r_domega2: bundle.d2r_domega2,
+        d2r_domega_dgamma: bundle.d2r_domega_dgamma,
+        d2r_dgamma2: bundle.d2r_dgamma2,
         amended_potential,
         psi_dot_at_rest,
         gyro_a: a0,
         gyro_g,
         gyro_c,
     }
+}
+
+/// Where Ω starts in the coordinates `x = (Ω, γ)` of the Schur complement.
+const X_OMEGA: usize = 0;
+/// Where γ starts in `x = (Ω, γ)`.
+const X_GAMMA: usize = 3;
+
+/// The three coordinates of `v` (a vector in `x = (Ω, γ)`) from `start` on.
+fn part(v: &[Id; 6], start: usize) -> V3 {
+    std::array::from_fn(|i| v[start + i])
+}
+
+/// The 3×3 block of `h` (a matrix in `x = (Ω, γ)`) whose rows start at `row` and columns at
+/// `col`.
+fn block(h: &[[Id; 6]; 6], row: usize, col: usize) -> M3 {
+    std::array::from_fn(|i| part(&h[row + i], col))
 }
 
 /// ERRATA E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these

@@ -1,7 +1,7 @@
 //! Analyses of expressions: polynomial degree in a set of variables, scheduling of outputs,
 //! operation counts and a plain-text printer.
 
-use crate::graph::{Graph, Id, Node};
+use crate::graph::{Graph, Id, Node, Var};
 
 /// The degree of an expression in a set of variables.
 #[derive(Copy, Clone, PartialEq, Eq, Debug)]
@@ -14,13 +14,13 @@ pub enum Degree {
     NotPolynomial,
 }
 
-/// The degree of `root` in the variable slots `vars` (constants and other variables count as
+/// The degree of `root` in the variables `vars` (constants and other variables count as
 /// coefficients).
 ///
 /// The analysis is structural on the simplified DAG: `ω·ω − ω·ω` has already folded to `0`
 /// (degree 0 here), while an expression that is polynomial only after cancellations it cannot
 /// see (e.g. `sqrt(ω·ω)²` written through a root) is reported as not polynomial.
-pub fn degree(g: &Graph, root: Id, vars: &[u32]) -> Degree {
+pub fn degree(g: &Graph, root: Id, vars: &[Var]) -> Degree {
     use Degree::*;
     let mut deg: Vec<Degree> = Vec::with_capacity(root.index() + 1);
     for i in 0..=root.index() {

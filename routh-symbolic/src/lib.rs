@@ -6,10 +6,11 @@
 //! ```
 //! use routh_symbolic::Graph;
 //! let mut g = Graph::new();
-//! let x = g.var("x");
+//! let v = g.new_var("x");             // the variable, to differentiate by
+//! let x = g.var_id(v);                 // and its node, to build with
 //! let s = g.func(routh_symbolic::Func::Sin, x);
 //! let f = g.mul(x, s);                 // x sin x
-//! let df = g.diff(f, x).unwrap();      // sin x + x cos x
+//! let df = g.diff(f, v);               // sin x + x cos x
 //! let v = g.eval(&[df], &[0.5])[0];
 //! assert!((v - (0.5f64.sin() + 0.5 * 0.5f64.cos())).abs() < 1e-15);
 //! ```
@@ -20,5 +21,5 @@ mod graph;
 pub mod shape;
 
 pub use analysis::{degree, extra_cost, op_counts, schedule, to_infix, Degree, OpCounts, Plan};
-pub use graph::{Func, Graph, Id, Node};
+pub use graph::{Func, Graph, Id, Node, Var};
 pub use shape::{Shape, ShapeError, Value};

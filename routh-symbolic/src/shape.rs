@@ -321,9 +321,10 @@ pub fn grad(g: &mut Graph, s: &Value, x: &[Id; 3]) -> R {
     let s = s.scalar("the first argument of `grad`")?;
     let mut out = [s; 3];
     for (o, &xi) in out.iter_mut().zip(x) {
-        *o = g.diff(s, xi).ok_or_else(|| {
+        let v = g.as_var(xi).ok_or_else(|| {
             ShapeError("`grad` differentiates with respect to variables only".into())
         })?;
+        *o = g.diff(s, v);
     }
     Ok(Value::Vector(out))
 }

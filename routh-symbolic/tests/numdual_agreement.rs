@@ -17,7 +17,7 @@
 use num_dual::DualNum;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use routh_symbolic::{Func, Graph, Id, Node};
+use routh_symbolic::{Func, Graph, Id, Node, Var};
 
 const NVARS: usize = 4;
 const SEEDS: [u64; 4] = [0x5eed_0001, 0x5eed_0002, 0xdead_beef, 2024];
@@ -34,7 +34,7 @@ fn eval_generic<D: DualNum<f64>>(g: &Graph, root: Id, x: &[D]) -> D {
         let v = |c: Id| val[c.index()].clone();
         let r = match *node {
             Node::Const(bits) => D::from(f64::from_bits(bits)),
-            Node::Var(i) => x[i as usize].clone(),
+            Node::Var(i) => x[i.index()].clone(),
             Node::Add(a, b) => v(a) + v(b),
             Node::Mul(a, b) => v(a) * v(b),
             Node::Neg(a) => -v(a),
@@ -458,10 +458,11 @@ fn run_seed(seed: u64, st: &mut Stats) {
         st.constant_exprs += usize::from(g.as_const(f).is_some());
 
         // Symbolic derivatives: gradient and the full matrix of diff-of-diff.
-        let grad: Vec<Id> = vars.iter().map(|&x| g.diff(f, x).unwrap()).collect();
+        let by: Vec<Var> = vars.iter().map(|&x| g.as_var(x).unwrap()).collect();
+        let grad: Vec<Id> = by.iter().map(|&v| g.diff(f, v)).collect();
         let hess: Vec<Vec<Id>> = grad
             .iter()
-            .map(|&gi| vars.iter().map(|&x| g.diff(gi, x).unwrap()).collect())
+            .map(|&gi| by.iter().map(|&v| g.diff(gi, v)).collect())
             .collect();
         st.max_nodes = st.max_nodes.max(g.len());
         let mut roots = vec![f];

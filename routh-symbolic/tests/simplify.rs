@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use routh_symbolic::shape::{self, Value};
-use routh_symbolic::{degree, op_counts, schedule, to_infix, Degree, Func, Graph, Id, Node};
+use routh_symbolic::{degree, op_counts, schedule, to_infix, Degree, Func, Graph, Id, Node, Var};
 
 fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-13 * 1f64.max(a.abs()).max(b.abs())
@@ -16,6 +16,11 @@ fn xyz() -> (Graph, Id, Id, Id) {
     let y = g.var("y");
     let z = g.var("z");
     (g, x, y, z)
+}
+
+/// The variable `x` is (panics if it is not one).
+fn var(g: &Graph, x: Id) -> Var {
+    g.as_var(x).expect("a variable")
 }
 
 /// A handful of non-constant expressions of different node kinds in `x, y`.
@@ -326,7 +331,10 @@ fn hash_consing_gives_equal_ids_for_equal_structure() {
     let x_again = g.var("x");
     assert_ne!(x_again, x);
     assert_eq!(g.num_vars(), 4);
-    assert_eq!(g.var_name(3), "x");
+    let v = var(&g, x_again);
+    assert_eq!(v.index(), 3);
+    assert_eq!(g.var_name(v), "x");
+    assert_eq!(g.var_id(v), x_again);
 }
 
 // ---------------------------------------------------------------- differentiation
@@ -334,6 +342,7 @@ fn hash_consing_gives_equal_ids_for_equal_structure() {
 #[test]
 fn derivative_of_expression_free_of_the_variable_is_the_zero_node() {
     let (mut g, x, y, z) = xyz();
+    let vx = var(&g, x);
     let zero = g.zero();
     let mut free = samples(&mut g, y, z);
     let c = g.constant(4.0);
@@ -347,61 +356,62 @@ fn derivative_of_expression_free_of_the_variable_is_the_zero_node() {
     free.push(g.func(Func::Sign, y));
     free.push(g.func(Func::Tan, z));
     for f in free {
-        assert_eq!(g.diff(f, x), Some(zero), "∂({})/∂x", to_infix(&g, f));
+        assert_eq!(g.diff(f, vx), zero, "∂({})/∂x", to_infix(&g, f));
     }
-    let t = g.diff(x, x).unwrap();
+    let t = g.diff(x, vx);
     assert!(g.is_const(t, 1.0));
-    assert_eq!(g.diff(y, x), Some(zero));
-    // Only variables can be differentiated by.
+    assert_eq!(g.diff(y, vx), zero);
+    // Only variables can be differentiated by: `diff` takes a `Var`, and `as_var` is the check.
     let x2 = g.powi(x, 2);
-    assert_eq!(g.diff(x2, x2), None);
-    assert_eq!(g.diff(x2, c), None);
+    assert_eq!(g.as_var(x2), None);
+    assert_eq!(g.as_var(c), None);
 }
 
 #[test]
 fn derivatives_have_the_expected_forms() {
     let (mut g, x, y, _) = xyz();
+    let (vx, vy) = (var(&g, x), var(&g, y));
     let sx = g.func(Func::Sin, x);
     let cx = g.func(Func::Cos, x);
-    assert_eq!(g.diff(sx, x), Some(cx));
+    assert_eq!(g.diff(sx, vx), cx);
     let nsx = g.neg(sx);
-    assert_eq!(g.diff(cx, x), Some(nsx));
+    assert_eq!(g.diff(cx, vx), nsx);
     let ex = g.func(Func::Exp, x);
-    assert_eq!(g.diff(ex, x), Some(ex));
+    assert_eq!(g.diff(ex, vx), ex);
     let lx = g.func(Func::Ln, x);
     let rx = g.recip(x);
-    assert_eq!(g.diff(lx, x), Some(rx));
+    assert_eq!(g.diff(lx, vx), rx);
     let ax = g.func(Func::Abs, x);
     let sg = g.func(Func::Sign, x);
-    assert_eq!(g.diff(ax, x), Some(sg));
-    assert_eq!(g.diff(sg, x), Some(g.zero()));
+    assert_eq!(g.diff(ax, vx), sg);
+    assert_eq!(g.diff(sg, vx), g.zero());
     // d(c·x³)/dx = 3c·x²
     let c = g.constant(1.5);
     let x3 = g.powi(x, 3);
     let f = g.mul(c, x3);
     let x2 = g.powi(x, 2);
     let c45 = g.constant(4.5);
-    assert_eq!(g.diff(f, x), Some(g.mul(c45, x2)));
+    assert_eq!(g.diff(f, vx), g.mul(c45, x2));
     // d(1/x)/dx = −1/x²
     let xm2 = g.powi(x, -2);
-    assert_eq!(g.diff(rx, x), Some(g.neg(xm2)));
+    assert_eq!(g.diff(rx, vx), g.neg(xm2));
     // d(x·y)/dx = y, d²(x·y)/dxdy = 1
     let xy = g.mul(x, y);
-    assert_eq!(g.diff(xy, x), Some(y));
-    let dxy = g.diff(xy, x).unwrap();
-    let t = g.diff(dxy, y).unwrap();
+    assert_eq!(g.diff(xy, vx), y);
+    let dxy = g.diff(xy, vx);
+    let t = g.diff(dxy, vy);
     assert!(g.is_const(t, 1.0));
     // Memoised: asking again adds nothing.
     let n = g.len();
-    g.diff(f, x);
+    g.diff(f, vx);
     assert_eq!(g.len(), n);
     // Numerical spot checks of trickier rules.
     let h = g.constant(0.5);
     let sq = g.powf(x, h); // sqrt(x)
     let pf = g.powf(x, y); // x^y
     let t = g.func(Func::Tan, x);
-    let d: Vec<Id> = [sq, pf, t].iter().map(|&f| g.diff(f, x).unwrap()).collect();
-    let dy = g.diff(pf, y).unwrap();
+    let d: Vec<Id> = [sq, pf, t].iter().map(|&f| g.diff(f, vx)).collect();
+    let dy = g.diff(pf, vy);
     let (xv, yv) = (0.7f64, 1.3f64);
     let v = g.eval(&[d[0], d[1], d[2], dy], &[xv, yv, 0.0]);
     assert!(close(v[0], 0.5 / xv.sqrt()));
@@ -413,13 +423,14 @@ fn derivatives_have_the_expected_forms() {
 #[test]
 fn deep_expressions_differentiate_without_stack_overflow() {
     let mut g = Graph::new();
-    let x = g.var("x");
+    let vx = g.new_var("x");
+    let x = g.var_id(vx);
     let mut f = x;
     for i in 0..20_000 {
         let s = g.func(if i % 2 == 0 { Func::Sin } else { Func::Cos }, f);
         f = g.add(s, x);
     }
-    let d = g.diff(f, x).unwrap();
+    let d = g.diff(f, vx);
     assert!(g.eval(&[d], &[0.3])[0].is_finite());
 }
 
@@ -434,7 +445,8 @@ fn substitute_replaces_variables() {
     // x ↦ y + 1
     let one = g.one();
     let y1 = g.add(y, one);
-    let map = HashMap::from([(0u32, y1)]);
+    let (vx, vy, vz) = (var(&g, x), var(&g, y), var(&g, z));
+    let map = HashMap::from([(vx, y1)]);
     let out = g.substitute(&[f, x, z], &map);
     assert_eq!(out[1], y1);
     assert_eq!(out[2], z, "unmapped variables stay");
@@ -447,17 +459,17 @@ fn substitute_replaces_variables() {
     let sy1 = g.func(Func::Sin, y1);
     let t = g.mul(sy1, z);
     assert_eq!(out[0], g.add(y1sq, t));
-    assert!(!g.depends_on(out[0], &[0]));
-    assert!(g.depends_on(out[0], &[1]));
+    assert!(!g.depends_on(out[0], &[vx]));
+    assert!(g.depends_on(out[0], &[vy]));
     // Substituting constants folds: x·z with z ↦ 0 is 0; and x ↦ 2 gives 4 + sin(2)·z.
     let xz = g.mul(x, z);
     let zero = g.zero();
     assert_eq!(
-        g.substitute(&[xz], &HashMap::from([(2u32, zero)])),
+        g.substitute(&[xz], &HashMap::from([(vz, zero)])),
         vec![zero]
     );
     let two = g.constant(2.0);
-    let r = g.substitute(&[f], &HashMap::from([(0u32, two)]))[0];
+    let r = g.substitute(&[f], &HashMap::from([(vx, two)]))[0];
     let s2 = g.constant(2f64.sin());
     let four = g.constant(4.0);
     let t = g.mul(s2, z);
@@ -701,7 +713,7 @@ fn degree_in_omega() {
     let w = vec_vars(&mut g, "omega");
     let gamma = g.var("gamma");
     let a = g.var("a");
-    let om = [0u32, 1, 2];
+    let om = w.map(|x| var(&g, x));
     // ½ ωᵀ I(γ) ω with a symmetric inertia depending on γ.
     let i: [[Id; 3]; 3] = std::array::from_fn(|r| {
         std::array::from_fn(|c| {
@@ -769,7 +781,7 @@ fn degree_in_omega() {
     assert!(g.is_const(zero, 0.0));
     assert_eq!(degree(&g, zero, &om), Degree::Homogeneous(0));
     // The variables in the set matter: in γ, ½ωᵀI(γ)ω is not a polynomial.
-    assert_eq!(degree(&g, t, &[3]), Degree::NotPolynomial);
+    assert_eq!(degree(&g, t, &[var(&g, gamma)]), Degree::NotPolynomial);
 }
 
 // ---------------------------------------------------------------- schedule, op counts, printing
@@ -813,7 +825,7 @@ fn schedule_puts_children_first_and_shares_subexpressions() {
     let mut val: HashMap<Id, f64> = HashMap::new();
     let get = |val: &HashMap<Id, f64>, id: Id| match g.node(id) {
         Node::Const(bits) => f64::from_bits(bits),
-        Node::Var(v) => p[v as usize],
+        Node::Var(v) => p[v.index()],
         _ => val[&id],
     };
     for &id in &sch {

@@ -1,0 +1,160 @@
+//! The layouts of the two methods that return many outputs from one straight-line body,
+//! `Routhian::bundle` and `Routhian::gyroscopic_system`: which output is which, by name.
+//!
+//! [`reduce`](crate::reduce) derives the outputs as nodes and [`emit`](crate::emit) writes one
+//! body for all of them, which hands back one token per node in the order it was given. Both
+//! sides go through these structs, so the order of the scalars is written down once
+//! ([`Bundle::flatten`] and [`Bundle::from_flat`]) instead of as offsets (`outs[2..5]`) on each
+//! side that must agree. The structs are generic over what is stored per scalar: nodes
+//! ([`Id`](routh_symbolic::Id)) on the way in, tokens on the way out.
+
+/// What `Routhian::bundle` returns, one field per field of `routh::RouthBundle` and in its
+/// order: `R`, `ψ̇` and the first and second derivatives of `R`.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub struct Bundle<T> {
+    /// `R(Ω, γ, p_ψ)` (14).
+    pub routhian: T,
+    /// `ψ̇` (38).
+    pub psi_dot: T,
+    /// `∂R/∂Ω`.
+    pub dr_domega: [T; 3],
+    /// `∂R/∂γ`.
+    pub dr_dgamma: [T; 3],
+    /// `∂R/∂p_ψ = −ψ̇` (15).
+    pub dr_dp: T,
+    /// `∂²R/∂Ω²`, row-major.
+    pub d2r_domega2: [[T; 3]; 3],
+    /// `∂²R/∂Ω_i∂γ_j`, row-major.
+    pub d2r_domega_dgamma: [[T; 3]; 3],
+    /// `∂²R/∂γ²`, row-major.
+    pub d2r_dgamma2: [[T; 3]; 3],
+}
+
+impl<T> Bundle<T> {
+    /// The scalars in layout order (fields in declaration order, matrices row-major).
+    pub fn flatten(self) -> Vec<T> {
+        let mut out = vec![self.routhian, self.psi_dot];
+        out.extend(self.dr_domega);
+        out.extend(self.dr_dgamma);
+        out.push(self.dr_dp);
+        for m in [self.d2r_domega2, self.d2r_domega_dgamma, self.d2r_dgamma2] {
+            out.extend(m.into_iter().flatten());
+        }
+        out
+    }
+
+    /// The inverse of [`Bundle::flatten`].
+    ///
+    /// # Panics
+    /// If `flat` does not hold exactly one scalar per field (a bug in the caller: it is always
+    /// the image of a flattened bundle).
+    pub fn from_flat(flat: impl IntoIterator<Item = T>) -> Self {
+        read_exactly(flat, |it| Bundle {
+            routhian: take(it),
+            psi_dot: take(it),
+            dr_domega: take3(it),
+            dr_dgamma: take3(it),
+            dr_dp: take(it),
+            d2r_domega2: take33(it),
+            d2r_domega_dgamma: take33(it),
+            d2r_dgamma2: take33(it),
+        })
+    }
+}
+
+/// What `Routhian::gyroscopic_system` returns: `A`, `G`, `C` of (64) at `Ω = 0`, in the order of
+/// `routh::GyroscopicSystem`.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub struct Gyroscopic<T> {
+    /// `A = ∂²R/∂Ω²` at rest, row-major.
+    pub a: [[T; 3]; 3],
+    /// The gyroscopic matrix `G`, row-major.
+    pub g: [[T; 3]; 3],
+    /// The stiffness matrix `C`, row-major.
+    pub c: [[T; 3]; 3],
+}
+
+impl<T> Gyroscopic<T> {
+    /// The scalars in layout order (`A`, `G`, `C`, each row-major).
+    pub fn flatten(self) -> Vec<T> {
+        [self.a, self.g, self.c]
+            .into_iter()
+            .flatten()
+            .flatten()
+            .collect()
+    }
+
+    /// The inverse of [`Gyroscopic::flatten`].
+    ///
+    /// # Panics
+    /// If `flat` does not hold exactly 27 scalars.
+    pub fn from_flat(flat: impl IntoIterator<Item = T>) -> Self {
+        read_exactly(flat, |it| Gyroscopic {
+            a: take33(it),
+            g: take33(it),
+            c: take33(it),
+        })
+    }
+}
+
+/// A layout read from `flat` by `read`, which must use up every scalar.
+fn read_exactly<T, I: IntoIterator<Item = T>, S>(
+    flat: I,
+    read: impl FnOnce(&mut I::IntoIter) -> S,
+) -> S {
+    let mut it = flat.into_iter();
+    let layout = read(&mut it);
+    assert!(it.next().is_none(), "more scalars than the layout holds");
+    layout
+}
+
+fn take<T>(it: &mut impl Iterator<Item = T>) -> T {
+    it.next().expect("fewer scalars than the layout holds")
+}
+
+fn take3<T>(it: &mut impl Iterator<Item = T>) -> [T; 3] {
+    // `from_fn` calls the closure for indices 0, 1, 2 in order.
+    std::array::from_fn(|_| take(it))
+}
+
+fn take33<T>(it: &mut impl Iterator<Item = T>) -> [[T; 3]; 3] {
+    std::array::from_fn(|_| take3(it))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bundle_round_trips_in_field_order() {
+        let b = Bundle::from_flat(0..36);
+        assert_eq!((b.routhian, b.psi_dot), (0, 1));
+        assert_eq!(
+            (b.dr_domega, b.dr_dgamma, b.dr_dp),
+            ([2, 3, 4], [5, 6, 7], 8)
+        );
+        assert_eq!(b.d2r_domega2[1][2], 9 + 3 + 2);
+        assert_eq!(b.d2r_domega_dgamma[0][0], 18);
+        assert_eq!(b.d2r_dgamma2[2][2], 35);
+        assert_eq!(b.flatten(), (0..36).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn gyroscopic_round_trips_in_field_order() {
+        let s = Gyroscopic::from_flat(0..27);
+        assert_eq!((s.a[0][1], s.g[0][0], s.c[2][2]), (1, 9, 26));
+        assert_eq!(s.flatten(), (0..27).collect::<Vec<_>>());
+    }
+
+    #[test]
+    #[should_panic(expected = "fewer scalars")]
+    fn a_short_run_is_a_bug() {
+        let _ = Bundle::from_flat(0..35);
+    }
+
+    #[test]
+    #[should_panic(expected = "more scalars")]
+    fn a_long_run_is_a_bug() {
+        let _ = Gyroscopic::from_flat(0..28);
+    }
+}

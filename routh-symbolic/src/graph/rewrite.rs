@@ -1,0 +1,324 @@
+//! The simplifying constructors: every node is built through one of these, which fold constants,
+//! apply the 0/1 identities, put the operands of commutative operations in a canonical order and
+//! merge integer powers, so that structurally equal expressions get equal ids. Sums go on to
+//! [`collect`](super::collect) for like terms; [`Graph::substitute`] rebuilds through them.
+
+use super::{Func, Graph, Id, Node, Var};
+use std::collections::HashMap;
+
+impl Graph {
+    /// Canonical order of commutative operands: constants first, then by id.
+    pub(super) fn order(&self, a: Id, b: Id) -> (Id, Id) {
+        match (self.as_const(a).is_some(), self.as_const(b).is_some()) {
+            (false, true) => (b, a),
+            (true, false) => (a, b),
+            _ => (a.min(b), a.max(b)),
+        }
+    }
+
+    /// `a + b`.
+    pub fn add(&mut self, a: Id, b: Id) -> Id {
+        let (a, b) = self.order(a, b);
+        match (self.node(a), self.node(b)) {
+            (Node::Const(x), Node::Const(y)) => {
+                return self.constant(f64::from_bits(x) + f64::from_bits(y))
+            }
+            (Node::Const(x), _) if f64::from_bits(x) == 0.0 => return b,
+            // c1 + (c2 + x) = (c1 + c2) + x
+            (Node::Const(x), Node::Add(c, rest)) if self.as_const(c).is_some() => {
+                let s = self.constant(f64::from_bits(x) + self.as_const(c).unwrap_or(0.0));
+                return self.add(s, rest);
+            }
+            (_, Node::Neg(nb)) if nb == a => return self.zero(),
+            (Node::Neg(na), _) if na == b => return self.zero(),
+            (Node::Neg(na), Node::Neg(nb)) => {
+                let s = self.add(na, nb);
+                return self.neg(s);
+            }
+            // c1·x + c2·x = (c1 + c2)·x: `neg` turns −(c·x) into (−c)·x, so this is what makes
+            // c·x − c·x fold to 0.
+            (Node::Mul(c1, x), Node::Mul(c2, y)) if x == y => {
+                if let (Some(c1), Some(c2)) = (self.as_const(c1), self.as_const(c2)) {
+                    let c = self.constant(c1 + c2);
+                    return self.mul(c, x);
+                }
+            }
+            _ => {}
+        }
+        if a == b {
+            let two = self.constant(2.0);
+            return self.mul(two, a);
+        }
+        if let Some(s) = self.collect_like_terms(a, b) {
+            return s;
+        }
+        self.intern(Node::Add(a, b))
+    }
+
+    /// `a - b`.
+    pub fn sub(&mut self, a: Id, b: Id) -> Id {
+        let nb = self.neg(b);
+        self.add(a, nb)
+    }
+
+    /// `-a`.
+    pub fn neg(&mut self, a: Id) -> Id {
+        match self.node(a) {
+            Node::Const(x) => self.constant(-f64::from_bits(x)),
+            Node::Neg(x) => x,
+            // -(c * x) = (-c) * x
+            Node::Mul(c, x) if self.as_const(c).is_some() => {
+                let nc = self.constant(-self.as_const(c).unwrap_or(0.0));
+                self.mul(nc, x)
+            }
+            _ => self.intern(Node::Neg(a)),
+        }
+    }
+
+    /// `a * b`.
+    pub fn mul(&mut self, a: Id, b: Id) -> Id {
+        let (a, b) = self.order(a, b);
+        match (self.node(a), self.node(b)) {
+            (Node::Const(x), Node::Const(y)) => {
+                return self.constant(f64::from_bits(x) * f64::from_bits(y))
+            }
+            (Node::Const(x), _) => {
+                let x = f64::from_bits(x);
+                if x == 0.0 {
+                    return a;
+                }
+                if x == 1.0 {
+                    return b;
+                }
+                if x == -1.0 {
+                    return self.neg(b);
+                }
+                match self.node(b) {
+                    // c1 * (c2 * y) = (c1 c2) * y
+                    Node::Mul(c, y) if self.as_const(c).is_some() => {
+                        let p = self.constant(x * self.as_const(c).unwrap_or(0.0));
+                        return self.mul(p, y);
+                    }
+                    Node::Neg(y) => {
+                        let p = self.constant(-x);
+                        return self.mul(p, y);
+                    }
+                    _ => {}
+                }
+            }
+            (Node::Neg(x), _) => {
+                let p = self.mul(x, b);
+                return self.neg(p);
+            }
+            (_, Node::Neg(y)) => {
+                let p = self.mul(a, y);
+                return self.neg(p);
+            }
+            _ => {}
+        }
+        // Merge integer powers of the same base (before pulling constants out, so that
+        // e·e = e² and e·(1/e) = 1 also when e = c·x).
+        let (ba, ea) = self.base_exp(a);
+        let (bb, eb) = self.base_exp(b);
+        if ba == bb {
+            if let Some(e) = ea
+                .checked_add(eb)
+                .filter(|e| e.unsigned_abs() <= Self::MAX_POW)
+            {
+                return self.powi(ba, e);
+            }
+        }
+        // Pull constant factors to the front: x * (c * y) = c * (x * y).
+        if let Node::Mul(c, y) = self.node(b) {
+            if let Some(cv) = self.as_const(c) {
+                let p = self.mul(a, y);
+                let c = self.constant(cv);
+                return self.mul(c, p);
+            }
+        }
+        if let Node::Mul(c, x) = self.node(a) {
+            if let Some(cv) = self.as_const(c) {
+                let p = self.mul(x, b);
+                let c = self.constant(cv);
+                return self.mul(c, p);
+            }
+        }
+        self.intern(Node::Mul(a, b))
+    }
+
+    /// `(base, n)` with `id = base^n` (`n = 1` for anything that is not a power).
+    fn base_exp(&self, id: Id) -> (Id, i32) {
+        match self.node(id) {
+            Node::Powi(b, n) => (b, n),
+            Node::Recip(b) => match self.node(b) {
+                Node::Powi(bb, n) => (bb, -n),
+                _ => (b, -1),
+            },
+            _ => (id, 1),
+        }
+    }
+
+    /// `1 / a`.
+    pub fn recip(&mut self, a: Id) -> Id {
+        match self.node(a) {
+            Node::Const(x) => self.constant(1.0 / f64::from_bits(x)),
+            Node::Recip(x) => x,
+            Node::Neg(x) => {
+                let r = self.recip(x);
+                self.neg(r)
+            }
+            Node::Powi(x, n) => self.powi(x, -n),
+            _ => self.intern(Node::Recip(a)),
+        }
+    }
+
+    /// `a / b`.
+    pub fn div(&mut self, a: Id, b: Id) -> Id {
+        let rb = self.recip(b);
+        self.mul(a, rb)
+    }
+
+    /// Largest |n| kept as an integer power; larger exponents become `powf` with a constant
+    /// exponent, so that exponent arithmetic can never overflow.
+    pub const MAX_POW: u32 = 1 << 16;
+
+    /// `a^n` for an integer `n`.
+    pub fn powi(&mut self, a: Id, n: i32) -> Id {
+        if n.unsigned_abs() > Self::MAX_POW {
+            if let Some(x) = self.as_const(a) {
+                return self.constant(x.powi(n));
+            }
+            let e = self.constant(f64::from(n));
+            return self.intern(Node::Powf(a, e));
+        }
+        match n {
+            0 => return self.one(),
+            1 => return a,
+            _ => {}
+        }
+        match self.node(a) {
+            Node::Const(x) => return self.constant(f64::from_bits(x).powi(n)),
+            Node::Powi(_, _) | Node::Recip(_) => {
+                let (b, e) = self.base_exp(a);
+                if let Some(m) = e
+                    .checked_mul(n)
+                    .filter(|m| m.unsigned_abs() <= Self::MAX_POW)
+                {
+                    return self.powi(b, m);
+                }
+            }
+            Node::Neg(x) => {
+                let p = self.powi(x, n);
+                return if n % 2 == 0 { p } else { self.neg(p) };
+            }
+            _ => {}
+        }
+        match n {
+            -1 => self.intern(Node::Recip(a)),
+            _ if n < 0 => {
+                let p = self.powi(a, -n);
+                self.intern(Node::Recip(p))
+            }
+            _ => self.intern(Node::Powi(a, n)),
+        }
+    }
+
+    /// `a^b`: an integer constant exponent becomes [`Graph::powi`], `½` becomes `sqrt`.
+    pub fn powf(&mut self, a: Id, b: Id) -> Id {
+        if let Some(e) = self.as_const(b) {
+            if e.fract() == 0.0 && e.abs() <= 64.0 {
+                return self.powi(a, e as i32);
+            }
+            if e == 0.5 {
+                return self.func(Func::Sqrt, a);
+            }
+            if let Some(x) = self.as_const(a) {
+                return self.constant(x.powf(e));
+            }
+        }
+        self.intern(Node::Powf(a, b))
+    }
+
+    /// `f(a)`.
+    pub fn func(&mut self, f: Func, a: Id) -> Id {
+        if let Some(x) = self.as_const(a) {
+            return self.constant(f.apply(x));
+        }
+        match (f, self.node(a)) {
+            (Func::Abs, Node::Neg(x)) => return self.func(Func::Abs, x),
+            (Func::Abs, Node::Func(Func::Abs | Func::Sqrt | Func::Exp, _)) => return a,
+            (Func::Sign, Node::Neg(x)) => {
+                let s = self.func(Func::Sign, x);
+                return self.neg(s);
+            }
+            // ln(exp x) = x (but exp(ln x) ≠ x for x < 0).
+            (Func::Ln, Node::Func(Func::Exp, x)) => return x,
+            (Func::Sqrt, Node::Powi(x, 2)) => return self.func(Func::Abs, x),
+            _ => {}
+        }
+        self.intern(Node::Func(f, a))
+    }
+
+    /// Sum of many terms (`0` for none).
+    pub fn sum(&mut self, terms: impl IntoIterator<Item = Id>) -> Id {
+        let mut acc: Option<Id> = None;
+        for t in terms {
+            acc = Some(match acc {
+                None => t,
+                Some(s) => self.add(s, t),
+            });
+        }
+        acc.unwrap_or_else(|| self.zero())
+    }
+
+    /// Replaces variables by expressions (`map[v]` for slot `v`; a slot not in `map` stays) and
+    /// rebuilds every node through the simplifying constructors, so the images are simplified
+    /// too. Returns the images of `roots`.
+    ///
+    /// Every node up to the largest root is rebuilt, reachable or not (so which nodes this adds,
+    /// and in which order, depends only on the largest root).
+    pub fn substitute(&mut self, roots: &[Id], map: &HashMap<Var, Id>) -> Vec<Id> {
+        let Some(max) = roots.iter().max() else {
+            return Vec::new();
+        };
+        let mut image: Vec<Id> = Vec::with_capacity(max.index() + 1);
+        for i in 0..=max.index() {
+            let node = self.nodes[i];
+            let m = |c: Id| image[c.index()];
+            let new = match node {
+                Node::Const(_) => Id(i as u32),
+                Node::Var(v) => map.get(&v).copied().unwrap_or(Id(i as u32)),
+                Node::Add(a, b) => {
+                    let (a, b) = (m(a), m(b));
+                    self.add(a, b)
+                }
+                Node::Mul(a, b) => {
+                    let (a, b) = (m(a), m(b));
+                    self.mul(a, b)
+                }
+                Node::Neg(a) => {
+                    let a = m(a);
+                    self.neg(a)
+                }
+                Node::Recip(a) => {
+                    let a = m(a);
+                    self.recip(a)
+                }
+                Node::Powi(a, n) => {
+                    let a = m(a);
+                    self.powi(a, n)
+                }
+                Node::Powf(a, b) => {
+                    let (a, b) = (m(a), m(b));
+                    self.powf(a, b)
+                }
+                Node::Func(f, a) => {
+                    let a = m(a);
+                    self.func(f, a)
+                }
+            };
+            image.push(new);
+        }
+        roots.iter().map(|r| image[r.index()]).collect()
+    }
+}
