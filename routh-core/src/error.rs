@@ -77,6 +77,15 @@ pub enum RouthError {
         /// Why it is invalid.
         reason: String,
     },
+    /// A failure while evaluating a family of models at the parameter value `s` (see
+    /// [`families`](crate::families)): the family returned an invalid model or `p_ψ` there.
+    #[error("at the family parameter s = {s}: {source}")]
+    AtParameter {
+        /// The parameter value.
+        s: f64,
+        /// What went wrong there.
+        source: Box<RouthError>,
+    },
     /// An invalid option (e.g. a negative tolerance) or argument (e.g. an empty range).
     #[error("invalid option {what}: {reason}")]
     InvalidOption {
