@@ -1,1 +1,410 @@
-//! Branch following.
+//! Pseudo-arclength continuation of one branch of steady motions, with event detection and
+//! location.
+//!
+//! The unknowns are `(γ, σ)`, `σ = s/L` with `L` the length of the range, so that steps mix
+//! comparable quantities. Predictor: a step `h` along the unit tangent `τ` of the curve
+//! `{F = 0}` (the null vector of the 2×3 Jacobian `[∂F/∂ξ | ∂F/∂σ]`). Corrector: Newton in the
+//! chart around the predicted point on `F = 0` and `τ·(x − x_pred) = 0`. For a branch of circles
+//! of steady motions (`isolated: false`) the Jacobian has rank one along the whole branch (the
+//! circle direction `c`, the kernel of `K`, is a direction of solutions at fixed `s`); the
+//! corrector then also keeps `c·ξ = 0` (it stays in the meridian plane) and solves in the least
+//! squares sense, and the tangent is the null vector orthogonal to `c`.
+
+use nalgebra::{DMatrix, DVector, Matrix2x3, Vector2, Vector3};
+
+use super::equations::{chart_eval, member, relative_discriminant, restricted_eigen, Local};
+use super::{BranchPoint, ContinuationOptions};
+use crate::error::RouthError;
+use crate::model::Routhian;
+use crate::sphere::tangent_basis;
+use crate::stability::{classify_with, Stability};
+use crate::steady::record;
+
+/// A converged point of a branch with its tangent and test functions.
+#[derive(Debug, Clone)]
+pub(crate) struct Node {
+    pub gamma: Vector3<f64>,
+    pub s: f64,
+    /// Unit tangent in `(γ, σ)`, γ part (tangent to the sphere).
+    pub tau_g: Vector3<f64>,
+    /// σ part of the unit tangent.
+    pub tau_s: f64,
+    /// Eigenvalues of `K`, ascending.
+    pub eig: [f64; 2],
+    /// Relative discriminant of `f₂` in `λ²`.
+    pub disc: f64,
+    pub point: BranchPoint,
+    /// Newton iterations the corrector needed.
+    pub iterations: usize,
+    /// The 2×3 Jacobian `[∂F/∂ξ | ∂F/∂σ]` at the point (chart at the point itself).
+    pub jac: Matrix2x3<f64>,
+}
+
+impl Node {
+    pub fn verdict(&self) -> Stability {
+        self.point.report.verdict
+    }
+    /// Degree of instability 2 with no zero eigenvalue: where gyroscopic stabilisation is decided
+    /// by `f₂`.
+    pub fn degree_two(&self) -> bool {
+        self.point.report.degree_of_instability == 2 && self.verdict() != Stability::Degenerate
+    }
+    pub fn dot_tangent(&self, g: &Vector3<f64>, s: f64) -> f64 {
+        self.tau_g.dot(g) + self.tau_s * s
+    }
+}
+
+/// A linear constraint `a_g·(γ − γ_ref) + a_s(σ − σ_ref) = c` of the corrector.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Constraint {
+    pub a_g: Vector3<f64>,
+    pub a_s: f64,
+    pub gamma_ref: Vector3<f64>,
+    pub sigma_ref: f64,
+    pub c: f64,
+}
+
+/// The continuation context of one family over one range.
+pub(crate) struct Ctx<'a, M, F> {
+    pub family: &'a F,
+    pub len: f64,
+    pub opts: &'a ContinuationOptions,
+    /// Residual scale of the branch (set from its first point).
+    pub scale: f64,
+    pub isolated: bool,
+    pub _model: std::marker::PhantomData<fn() -> M>,
+}
+
+impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
+    pub fn new(family: &'a F, range: (f64, f64), opts: &'a ContinuationOptions) -> Self {
+        Ctx {
+            family,
+            len: range.1 - range.0,
+            opts,
+            scale: 1.0,
+            isolated: true,
+            _model: std::marker::PhantomData,
+        }
+    }
+
+    fn ds(&self) -> f64 {
+        1e-6 * self.len
+    }
+
+    /// The kernel direction of `K` (the circle direction) at γ, in ℝ³.
+    fn circle_direction(&self, gamma: &Vector3<f64>, s: f64) -> Result<Vector3<f64>, RouthError> {
+        let (m, p) = member(self.family, s)?;
+        let l = Local::at(&m, gamma, p).map_err(|e| super::equations::at(s, e))?;
+        Ok(restricted_eigen(&l).1)
+    }
+
+    /// Newton's method from `(gamma_p, sigma_p)` on `F = 0` plus `constraint` (plus `c·ξ = 0`
+    /// for a branch of circles). `Ok(None)` when it does not converge.
+    pub fn correct(
+        &self,
+        gamma_p: &Vector3<f64>,
+        sigma_p: f64,
+        constraint: &Constraint,
+        circle: Option<Vector3<f64>>,
+    ) -> Result<Option<(Vector3<f64>, f64, usize)>, RouthError> {
+        let basis = tangent_basis(gamma_p);
+        let circle = match (self.isolated, circle) {
+            (true, _) => None,
+            (false, Some(c)) => Some(basis.transpose() * c),
+            (false, None) => {
+                Some(basis.transpose() * self.circle_direction(gamma_p, sigma_p * self.len)?)
+            }
+        };
+        let a_xi = basis.transpose() * constraint.a_g;
+        // The constraint is linear in (ξ, σ) around the predicted point.
+        let c0 = constraint.c
+            - constraint.a_g.dot(&(gamma_p - constraint.gamma_ref))
+            - constraint.a_s * (sigma_p - constraint.sigma_ref);
+        let mut xi = Vector2::zeros();
+        let mut sigma = sigma_p;
+        let rows = if circle.is_some() { 4 } else { 3 };
+        for it in 0..16 {
+            let e = chart_eval(
+                self.family,
+                gamma_p,
+                &basis,
+                &xi,
+                sigma * self.len,
+                self.ds(),
+            )?;
+            let sc = self.scale.max(e.local.scale()).max(f64::MIN_POSITIVE);
+            let f = e.f / sc;
+            let cres = a_xi.dot(&xi) + constraint.a_s * (sigma - sigma_p) - c0;
+            let cir = circle.map_or(0.0, |c| c.dot(&xi));
+            if f.norm() <= self.opts.newton_tol && cres.abs() <= 1e-13 && cir.abs() <= 1e-13 {
+                return Ok(Some((e.gamma, sigma * self.len, it)));
+            }
+            let mut a = DMatrix::zeros(rows, 3);
+            let mut r = DVector::zeros(rows);
+            for i in 0..2 {
+                a[(i, 0)] = e.jac[(i, 0)] / sc;
+                a[(i, 1)] = e.jac[(i, 1)] / sc;
+                a[(i, 2)] = e.jac[(i, 2)] * self.len / sc;
+                r[i] = f[i];
+            }
+            a[(2, 0)] = a_xi.x;
+            a[(2, 1)] = a_xi.y;
+            a[(2, 2)] = constraint.a_s;
+            r[2] = cres;
+            if let Some(c) = circle {
+                a[(3, 0)] = c.x;
+                a[(3, 1)] = c.y;
+                r[3] = cir;
+            }
+            let svd = a.svd(true, true);
+            let Ok(step) = svd.solve(&r, 1e-12) else {
+                return Ok(None);
+            };
+            if !step.iter().all(|v| v.is_finite()) {
+                return Ok(None);
+            }
+            xi -= Vector2::new(step[0], step[1]);
+            sigma -= step[2];
+            if xi.norm() > 0.5 || !sigma.is_finite() {
+                return Ok(None);
+            }
+        }
+        Ok(None)
+    }
+
+    /// The node at a converged `(gamma, s)`: tangent oriented along `prev` (if any), test
+    /// functions and the classification.
+    pub fn node(
+        &self,
+        gamma: &Vector3<f64>,
+        s: f64,
+        prev: Option<(&Vector3<f64>, f64)>,
+        iterations: usize,
+    ) -> Result<Option<Node>, RouthError> {
+        let basis = tangent_basis(gamma);
+        let e = chart_eval(self.family, gamma, &basis, &Vector2::zeros(), s, self.ds())?;
+        let mut jac = e.jac;
+        jac.column_mut(2).scale_mut(self.len);
+        let r1 = Vector3::new(jac[(0, 0)], jac[(0, 1)], jac[(0, 2)]);
+        let r2 = Vector3::new(jac[(1, 0)], jac[(1, 1)], jac[(1, 2)]);
+        let (eig, kernel) = restricted_eigen(&e.local);
+        let mut t = if self.isolated {
+            r1.cross(&r2)
+        } else {
+            // The circle direction: across the previous tangent (robust at folds, where both
+            // eigenvalues of K vanish), else the kernel of K.
+            let c3 = prev
+                .and_then(|(g, _)| meridian_normal(gamma, g))
+                .unwrap_or(kernel);
+            let c = basis.transpose() * c3;
+            let r = if r1.norm() >= r2.norm() { r1 } else { r2 };
+            r.cross(&Vector3::new(c.x, c.y, 0.0))
+        };
+        let big = if self.isolated {
+            r1.norm() * r2.norm()
+        } else {
+            r1.norm().max(r2.norm())
+        };
+        if t.norm().is_nan() || t.norm() <= 1e-12 * big {
+            // Singular: keep the previous direction if there is one.
+            match prev {
+                Some((g, ts)) => {
+                    let tp = basis.transpose() * g;
+                    t = Vector3::new(tp.x, tp.y, ts);
+                }
+                None => return Ok(None),
+            }
+        }
+        let t = t.normalize();
+        let mut tau_g = basis * Vector2::new(t.x, t.y);
+        let mut tau_s = t.z;
+        if let Some((g, ts)) = prev {
+            if tau_g.dot(g) + tau_s * ts < 0.0 {
+                tau_g = -tau_g;
+                tau_s = -tau_s;
+            }
+        } else if tau_s < 0.0 {
+            tau_g = -tau_g;
+            tau_s = -tau_s;
+        }
+        let (m, p) = member(self.family, s)?;
+        let at = |e| super::equations::at(s, e);
+        let steady = record(&m, gamma, p, self.isolated).map_err(at)?;
+        let report = classify_with(&m, &steady, &self.opts.classify).map_err(at)?;
+        let disc = relative_discriminant(&m, gamma, p).map_err(at)?;
+        let sc = self.scale.max(f64::MIN_POSITIVE);
+        Ok(Some(Node {
+            gamma: *gamma,
+            s,
+            tau_g,
+            tau_s,
+            eig: [eig[0] / sc, eig[1] / sc],
+            disc,
+            point: BranchPoint { s, steady, report },
+            iterations,
+            jac,
+        }))
+    }
+
+    /// The point at arclength `h` from `a` along its tangent (predictor + corrector + node).
+    pub fn advance(&self, a: &Node, h: f64) -> Result<Option<Node>, RouthError> {
+        let g_p = (a.gamma + h * a.tau_g).normalize();
+        let s_p = a.s / self.len + h * a.tau_s;
+        let con = Constraint {
+            a_g: a.tau_g,
+            a_s: a.tau_s,
+            gamma_ref: g_p,
+            sigma_ref: s_p,
+            c: 0.0,
+        };
+        let circle = meridian_normal(&g_p, &a.tau_g);
+        let Some((g, s, it)) = self.correct(&g_p, s_p, &con, circle)? else {
+            return Ok(None);
+        };
+        // A corrector that moved much further than the step jumped to another branch.
+        let moved = ((g - g_p).norm_squared() + ((s - s_p * self.len) / self.len).powi(2)).sqrt();
+        if moved > 0.5 * h.max(1e-9) + 1e-9 {
+            return Ok(None);
+        }
+        self.node(&g, s, Some((&a.tau_g, a.tau_s)), it)
+    }
+
+    /// The point of the branch at exactly `s = target`, from `a` towards `b`.
+    pub fn at_parameter(
+        &self,
+        a: &Node,
+        b: &Node,
+        target: f64,
+    ) -> Result<Option<Node>, RouthError> {
+        let t = ((target - a.s) / (b.s - a.s)).clamp(0.0, 1.0);
+        let g_p = (a.gamma + t * (b.gamma - a.gamma)).normalize();
+        let con = Constraint {
+            a_g: Vector3::zeros(),
+            a_s: 1.0,
+            gamma_ref: g_p,
+            sigma_ref: target / self.len,
+            c: 0.0,
+        };
+        let circle = meridian_normal(&g_p, &a.tau_g);
+        let Some((g, s, it)) = self.correct(&g_p, target / self.len, &con, circle)? else {
+            return Ok(None);
+        };
+        self.node(&g, s, Some((&a.tau_g, a.tau_s)), it)
+    }
+
+    /// Locates the zero of `phi` on the step from `a` (arclength 0) to `b` (arclength `h`) by the
+    /// Illinois method, to `|Δs| ≤ event_tol·max(1, |s|)`. Returns the node at the zero.
+    pub fn locate(
+        &self,
+        a: &Node,
+        b: &Node,
+        h: f64,
+        phi: &dyn Fn(&Node) -> f64,
+    ) -> Result<Node, RouthError> {
+        let (mut lo, mut hi) = ((0.0, phi(a), a.clone()), (h, phi(b), b.clone()));
+        let mut side = 0i32;
+        for _ in 0..200 {
+            let tol = self.opts.event_tol * 1f64.max(lo.2.s.abs());
+            if (hi.2.s - lo.2.s).abs() <= tol && (hi.0 - lo.0) <= 1e-6 * h.max(1e-12) {
+                break;
+            }
+            let mut t = if hi.1 != lo.1 {
+                lo.0 - lo.1 * (hi.0 - lo.0) / (hi.1 - lo.1)
+            } else {
+                0.5 * (lo.0 + hi.0)
+            };
+            let w = hi.0 - lo.0;
+            if !(t > lo.0 + 1e-3 * w && t < hi.0 - 1e-3 * w) {
+                t = 0.5 * (lo.0 + hi.0);
+            }
+            let Some(n) = self.advance(a, t)? else {
+                break;
+            };
+            let v = phi(&n);
+            if v == 0.0 {
+                return Ok(n);
+            }
+            if (v < 0.0) == (lo.1 < 0.0) {
+                lo = (t, v, n);
+                if side == -1 {
+                    hi.1 *= 0.5;
+                }
+                side = -1;
+            } else {
+                hi = (t, v, n);
+                if side == 1 {
+                    lo.1 *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        Ok(if lo.1.abs() <= hi.1.abs() { lo.2 } else { hi.2 })
+    }
+
+    /// Whether the Jacobian `[∂F/∂ξ | ∂F/∂σ]` at `n` has rank below 2 (a branch point rather
+    /// than a fold).
+    pub fn is_branch_point(&self, n: &Node) -> bool {
+        if !self.isolated {
+            // Along a branch of circles the Jacobian always has the circle direction in its
+            // kernel; the branch meets another one only where it vanishes altogether (the
+            // circle shrinks to its axis).
+            return n.jac.norm() <= 1e-6 * self.scale;
+        }
+        let sv = n.jac.svd(false, false).singular_values;
+        let (big, small) = (sv.max(), sv.min());
+        small.is_nan() || small <= 1e-6 * big || (n.eig[0].abs() <= 1e-8 && n.eig[1].abs() <= 1e-8)
+    }
+}
+
+/// The unit normal `γ × τ` of the meridian plane spanned by γ and the tangent direction `tau`
+/// (the direction along a circle of steady motions), if `tau` has a tangential part.
+fn meridian_normal(gamma: &Vector3<f64>, tau: &Vector3<f64>) -> Option<Vector3<f64>> {
+    let g = gamma.normalize();
+    let n = g.cross(tau);
+    (n.norm() > 1e-6 * tau.norm().max(1e-300)).then(|| n.normalize())
+}
+
+/// Which test function changed sign on a step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Change {
+    /// An eigenvalue of `K` (index 0 or 1), or the trace of `K` on a branch of circles (2).
+    Eigen(usize),
+    /// The discriminant of `f₂` with degree of instability 2 on both sides.
+    Discriminant,
+    /// The σ component of the tangent (a turning point in `s`).
+    Turn,
+}
+
+/// The test functions that change sign between `a` and `b`.
+pub(crate) fn changes(a: &Node, b: &Node, isolated: bool) -> Vec<Change> {
+    let mut out = Vec::new();
+    if isolated {
+        for i in 0..2 {
+            if a.eig[i] * b.eig[i] < 0.0 {
+                out.push(Change::Eigen(i));
+            }
+        }
+        if out.len() == 2 {
+            out.truncate(1);
+        }
+    } else if (a.eig[0] + a.eig[1]) * (b.eig[0] + b.eig[1]) < 0.0 {
+        out.push(Change::Eigen(2));
+    }
+    if a.degree_two() && b.degree_two() && a.disc * b.disc < 0.0 {
+        out.push(Change::Discriminant);
+    }
+    if a.tau_s * b.tau_s < 0.0 {
+        out.push(Change::Turn);
+    }
+    out
+}
+
+/// The value of the test function of `change` at `n`.
+pub(crate) fn test_value(change: Change, n: &Node) -> f64 {
+    match change {
+        Change::Eigen(2) => n.eig[0] + n.eig[1],
+        Change::Eigen(i) => n.eig[i],
+        Change::Discriminant => n.disc,
+        Change::Turn => n.tau_s,
+    }
+}

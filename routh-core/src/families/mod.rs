@@ -38,7 +38,9 @@ use crate::stability::{ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{SearchOptions, SteadyMotion};
 
 pub use atlas::stability_atlas;
-pub use diagram::{bifurcation_diagram, continue_branch};
+pub use diagram::{
+    bifurcation_diagram, bifurcation_diagram_checked, continue_branch, CheckedDiagram, CountCheck,
+};
 
 /// Options of [`bifurcation_diagram`] and [`continue_branch`].
 ///

@@ -1,0 +1,390 @@
+//! Families of steady motions (bifurcation diagrams) against closed forms and independent
+//! computations: Maievskii's and the secular bound of Lagrange tops, the branch points and the
+//! fold of the asymmetric top, the Hamiltonian–Hopf point of a prolate asymmetric top from a
+//! hand-derived f₂, counts of steady motions between events, and finite-difference Jacobian
+//! eigenvalues on each side of every event.
+
+mod common;
+
+use common::HeavyTop;
+use routh_core::families::bifurcation_diagram_checked;
+use routh_core::nalgebra::{Matrix4, Matrix6, Vector6};
+use routh_core::sim::full_vector_field;
+use routh_core::{
+    bifurcation_diagram, continue_branch, BifurcationDiagram, ContinuationOptions, EventKind,
+    Matrix3, RouthError, Stability, Vector3,
+};
+
+fn asymmetric(a: f64, b: f64, c: f64, mgl: f64) -> HeavyTop {
+    HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(a, b, c)),
+        mgr: Vector3::new(0.0, 0.0, mgl),
+    }
+}
+
+fn events(d: &BifurcationDiagram, kind: EventKind) -> Vec<f64> {
+    d.events
+        .iter()
+        .filter(|e| e.kind == kind)
+        .map(|e| e.s)
+        .collect()
+}
+
+fn assert_located(found: f64, exact: f64, what: &str) {
+    let err = (found - exact).abs();
+    assert!(
+        err <= 1e-9 * exact.abs().max(1.0),
+        "{what}: found {found:.15}, closed form {exact:.15}, |Δs| = {err:e}"
+    );
+}
+
+/// The fold of tilted steady motions in the plane γ = (sin θ, 0, cos θ) of a top
+/// J = diag(A, ·, C), U = mgl·γ₃: with c = cos θ, U_r = ½p²/(A + (C − A)c²) + mgl·c; critical
+/// where ∂U_r/∂c = 0 and folded where also ∂²U_r/∂c² = 0, which gives A = 3(C − A)c² and
+/// p² = mgl(A + (C − A)c²)²/((C − A)c).
+fn plane_fold(a: f64, c: f64, mgl: f64) -> (f64, f64) {
+    let z = (a / (3.0 * (c - a))).sqrt();
+    let p2 = mgl * (a + (c - a) * z * z).powi(2) / ((c - a) * z);
+    (p2.sqrt(), z)
+}
+
+#[test]
+fn lagrange_tops_have_exactly_the_closed_form_events() {
+    // (A₁, C, mgl): prolate-ish, C > 4A₁/3 (subcritical: a fold of circles below the secular
+    // bound), C > 2A₁.
+    for (a1, c, mgl) in [
+        (1.0, 1.25, 1.0),
+        (1.0, 1.5, 0.7),
+        (1.0, 3.0, 2.0),
+        (2.0, 2.5, 1.3),
+    ] {
+        let top = HeavyTop::lagrange(a1, c, mgl);
+        let maievskii = (4.0 * a1 * mgl).sqrt();
+        let secular = (mgl * c * c / (c - a1)).sqrt();
+        let hi = (1.4 * secular).max(5.0);
+        let checked = bifurcation_diagram_checked(
+            |p| (top.clone(), p),
+            (0.0, hi),
+            &ContinuationOptions::default(),
+        )
+        .unwrap();
+        let d = &checked.diagram;
+        let what = format!("A₁ = {a1}, C = {c}, mgl = {mgl}");
+        let hh = events(d, EventKind::HamiltonianHopf);
+        assert_eq!(hh.len(), 1, "{what}: {:#?}", d.events);
+        assert_located(hh[0], maievskii, &format!("{what}: Maievskii"));
+        let bp = events(d, EventKind::BranchPoint);
+        assert_eq!(bp.len(), 1, "{what}: {:#?}", d.events);
+        assert_located(bp[0], secular, &format!("{what}: secular bound"));
+        let folds = events(d, EventKind::Fold);
+        if c > 4.0 * a1 / 3.0 {
+            let (p, z) = plane_fold(a1, c, mgl);
+            assert_eq!(folds.len(), 1, "{what}: {:#?}", d.events);
+            assert_located(folds[0], p, &format!("{what}: fold of circles"));
+            let e = d.events.iter().find(|e| e.kind == EventKind::Fold).unwrap();
+            assert!(
+                (e.gamma.z - z).abs() < 1e-6,
+                "{what}: fold at γ₃ = {}",
+                e.gamma.z
+            );
+            assert!(!d.branches[e.branch].isolated, "the fold is one of circles");
+        } else {
+            assert!(folds.is_empty(), "{what}: {:#?}", d.events);
+        }
+        // Verdicts on the sleeping top.
+        let hh = d
+            .events
+            .iter()
+            .find(|e| e.kind == EventKind::HamiltonianHopf)
+            .unwrap();
+        assert_eq!(
+            (hh.before, hh.after),
+            (Stability::Unstable, Stability::GyroscopicallyStabilized)
+        );
+        let bp = d
+            .events
+            .iter()
+            .find(|e| e.kind == EventKind::BranchPoint)
+            .unwrap();
+        assert_eq!(
+            (bp.before, bp.after),
+            (
+                Stability::GyroscopicallyStabilized,
+                Stability::SecularlyStable
+            ),
+            "{what}"
+        );
+        assert!((bp.gamma - Vector3::z()).norm() < 1e-9);
+        // The circles are born at the branch point.
+        assert!(d.branches.iter().any(|b| !b.isolated));
+        assert!(checked.consistent(), "{what}: {:#?}", checked.checks);
+    }
+}
+
+#[test]
+fn asymmetric_top_branch_points_and_fold() {
+    // J = diag(A, B, C), C largest, centre of mass on e₃: on the sleeping top
+    // K = diag(p²(C − A)/C² − mgl, p²(C − B)/C² − mgl), zero at p² = mglC²/(C − A), mglC²/(C − B).
+    let (a, b, c, mgl) = (1.0, 1.2, 1.5, 1.0);
+    let top = asymmetric(a, b, c, mgl);
+    let checked = bifurcation_diagram_checked(
+        |p| (top.clone(), p),
+        (0.0, 4.0),
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
+    let d = &checked.diagram;
+    let bp = events(d, EventKind::BranchPoint);
+    assert_eq!(bp.len(), 2, "{:#?}", d.events);
+    assert_located(bp[0], (mgl * c * c / (c - a)).sqrt(), "first branch point");
+    assert_located(bp[1], (mgl * c * c / (c - b)).sqrt(), "second branch point");
+    // The branch leaving the first branch point lies in the plane γ₂ = 0 and folds where the
+    // plane's own {∂U_r/∂θ = 0, ∂²U_r/∂θ² = 0} holds (two mirror images).
+    let (p_fold, z_fold) = plane_fold(a, c, mgl);
+    let folds: Vec<_> = d
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::Fold)
+        .collect();
+    assert_eq!(folds.len(), 2, "{:#?}", d.events);
+    for f in folds {
+        assert_located(f.s, p_fold, "fold");
+        assert!(
+            f.gamma.y.abs() < 1e-9 && (f.gamma.z - z_fold).abs() < 1e-7,
+            "{f}"
+        );
+    }
+    assert!(checked.consistent(), "{:#?}", checked.checks);
+}
+
+/// f₂ of the sleeping asymmetric top by hand: the linearised Euler–Poisson equations about
+/// ω = (0, 0, r), γ = e₃ (r = p/C) in (ω₁, ω₂, γ₁, γ₂) are
+/// Aω̇₁ = (B − C)rω₂ + mgl γ₂, Bω̇₂ = (C − A)rω₁ − mgl γ₁, γ̇₁ = rγ₂ − ω₂, γ̇₂ = ω₁ − rγ₁.
+/// Its characteristic polynomial is an even quartic; its coefficients come from evaluating the
+/// determinant at λ = 0, 1, 2 (even: c₀ + c₂λ² + c₄λ⁴).
+fn sleeping_discriminant(a: f64, b: f64, c: f64, mgl: f64, p: f64) -> f64 {
+    let r = p / c;
+    let det = |l: f64| {
+        Matrix4::new(
+            a * l,
+            -(b - c) * r,
+            0.0,
+            -mgl, //
+            -(c - a) * r,
+            b * l,
+            mgl,
+            0.0, //
+            0.0,
+            1.0,
+            l,
+            -r, //
+            -1.0,
+            0.0,
+            r,
+            l,
+        )
+        .determinant()
+    };
+    let c0 = det(0.0);
+    let c4 = (det(2.0) - 4.0 * det(1.0) + 3.0 * c0) / 12.0;
+    let c2 = det(1.0) - c0 - c4;
+    c2 * c2 - 4.0 * c4 * c0
+}
+
+#[test]
+fn hamiltonian_hopf_of_a_prolate_asymmetric_top_matches_the_hand_written_discriminant() {
+    let (a, b, c, mgl) = (2.0, 2.3, 1.0, 1.0);
+    let top = asymmetric(a, b, c, mgl);
+    let d = bifurcation_diagram(
+        |p| (top.clone(), p),
+        (0.5, 6.0),
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
+    let hh: Vec<_> = d
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::HamiltonianHopf && (e.gamma - Vector3::z()).norm() < 1e-9)
+        .collect();
+    assert_eq!(hh.len(), 1, "{:#?}", d.events);
+    // The zero of the hand-written discriminant, by bisection.
+    let f = |p: f64| sleeping_discriminant(a, b, c, mgl, p);
+    let (mut lo, mut hi) = (hh[0].s - 0.05, hh[0].s + 0.05);
+    assert!(
+        f(lo) * f(hi) < 0.0,
+        "the discriminant changes sign near the event"
+    );
+    for _ in 0..200 {
+        let m = 0.5 * (lo + hi);
+        if f(m) * f(lo) > 0.0 {
+            lo = m;
+        } else {
+            hi = m;
+        }
+    }
+    assert_located(hh[0].s, 0.5 * (lo + hi), "Hamiltonian–Hopf");
+    assert_eq!(hh[0].before, Stability::Unstable);
+    assert_eq!(hh[0].after, Stability::GyroscopicallyStabilized);
+}
+
+/// The 6×6 Jacobian of the full equations (8) by central differences.
+fn fd_jacobian(top: &HeavyTop, x: &Vector6<f64>) -> Matrix6<f64> {
+    let f = |x: &Vector6<f64>| {
+        let (wd, gd) = full_vector_field(
+            top,
+            &Vector3::new(x[0], x[1], x[2]),
+            &Vector3::new(x[3], x[4], x[5]),
+        )
+        .unwrap();
+        Vector6::new(wd.x, wd.y, wd.z, gd.x, gd.y, gd.z)
+    };
+    let mut j = Matrix6::zeros();
+    for k in 0..6 {
+        let mut xp = *x;
+        let mut xm = *x;
+        xp[k] += 1e-6;
+        xm[k] -= 1e-6;
+        j.set_column(k, &((f(&xp) - f(&xm)) / 2e-6));
+    }
+    j
+}
+
+#[test]
+fn jacobian_eigenvalues_agree_with_verdicts_on_each_side_of_every_event() {
+    let mut checked = 0;
+    for (top, hi) in [
+        (HeavyTop::lagrange(1.0, 1.25, 1.0), 3.5),
+        (asymmetric(1.0, 1.2, 1.5, 1.0), 3.5),
+        (asymmetric(2.0, 2.3, 1.0, 1.0), 6.0),
+    ] {
+        let d = bifurcation_diagram(
+            |p| (top.clone(), p),
+            (0.5, hi),
+            &ContinuationOptions::default(),
+        )
+        .unwrap();
+        for e in &d.events {
+            let branch = &d.branches[e.branch];
+            // The points of the branch nearest the event on either side.
+            let i = branch
+                .points
+                .iter()
+                .enumerate()
+                .min_by(|x, y| (x.1.s - e.s).abs().total_cmp(&(y.1.s - e.s).abs()))
+                .unwrap()
+                .0;
+            for q in [i.saturating_sub(1), (i + 1).min(branch.points.len() - 1)] {
+                let pt = &branch.points[q];
+                let verdict = pt.report.verdict;
+                if verdict == Stability::Degenerate {
+                    continue;
+                }
+                let w = pt.steady.psi_dot * pt.steady.gamma;
+                let g = pt.steady.gamma;
+                let x = Vector6::new(w.x, w.y, w.z, g.x, g.y, g.z);
+                let eig = fd_jacobian(&top, &x).complex_eigenvalues();
+                let max_re = eig.iter().map(|l| l.re).fold(f64::MIN, f64::max);
+                let size = eig.iter().map(|l| l.norm()).fold(0.0, f64::max);
+                if verdict == Stability::Unstable {
+                    assert!(
+                        max_re > 1e-4 * size,
+                        "{e}: at s = {} unstable but {eig}",
+                        pt.s
+                    );
+                } else {
+                    assert!(
+                        max_re < 1e-5 * size.max(1.0),
+                        "{e}: at s = {} {verdict} but {eig}",
+                        pt.s
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 10, "only {checked} points checked");
+}
+
+#[test]
+fn continue_branch_follows_one_branch_over_a_body_parameter() {
+    // The sleeping top over mgl at p = 3: secular stability lost at mgl = p²(C − A₁)/C²,
+    // gyroscopic stabilisation lost at Maievskii's mgl = p²/(4A₁).
+    let (a1, c, p) = (1.0, 1.25, 3.0);
+    let d = continue_branch(
+        |mgl| (HeavyTop::lagrange(a1, c, mgl), p),
+        Vector3::new(0.01, 0.0, 1.0),
+        1.0,
+        (0.5, 3.0),
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
+    let on_sleeping: Vec<_> = d
+        .events
+        .iter()
+        .filter(|e| (e.gamma - Vector3::z()).norm() < 1e-9)
+        .collect();
+    let bp = on_sleeping
+        .iter()
+        .find(|e| e.kind == EventKind::BranchPoint)
+        .unwrap();
+    assert_located(bp.s, p * p * (c - a1) / (c * c), "secular bound in mgl");
+    assert_eq!(
+        (bp.before, bp.after),
+        (
+            Stability::SecularlyStable,
+            Stability::GyroscopicallyStabilized
+        )
+    );
+    let hh = on_sleeping
+        .iter()
+        .find(|e| e.kind == EventKind::HamiltonianHopf)
+        .unwrap();
+    assert_located(hh.s, p * p / (4.0 * a1), "Maievskii in mgl");
+    assert_eq!(
+        (hh.before, hh.after),
+        (Stability::GyroscopicallyStabilized, Stability::Unstable)
+    );
+}
+
+#[test]
+fn errors_are_values() {
+    let top = HeavyTop::lagrange(1.0, 1.25, 1.0);
+    let opts = ContinuationOptions::default();
+    assert!(matches!(
+        bifurcation_diagram(|p| (top.clone(), p), (1.0, 1.0), &opts),
+        Err(RouthError::InvalidOption { what: "range", .. })
+    ));
+    assert!(matches!(
+        bifurcation_diagram(|p| (top.clone(), p), (0.0, f64::NAN), &opts),
+        Err(RouthError::NonFinite { what: "range", .. })
+    ));
+    // A family whose kinetic form stops being positive definite inside the range.
+    let bad = |s: f64| (HeavyTop::lagrange(1.0 - s, 1.25, 1.0), 1.0);
+    match bifurcation_diagram(bad, (0.0, 2.0), &opts) {
+        Err(RouthError::AtParameter { s, source }) => {
+            assert!(s >= 1.0, "{s}");
+            assert!(matches!(
+                *source,
+                RouthError::KineticNotPositiveDefinite { .. }
+                    | RouthError::DegenerateVerticalInertia { .. }
+            ));
+        }
+        other => panic!("{other:?}"),
+    }
+    // A non-finite p_ψ from the family.
+    assert!(matches!(
+        bifurcation_diagram(|_| (top.clone(), f64::NAN), (0.0, 1.0), &opts),
+        Err(RouthError::AtParameter { .. })
+    ));
+    // A guess where nothing converges is an error; a tiny budget ends early without a panic.
+    let tiny = ContinuationOptions {
+        max_steps: 3,
+        ..ContinuationOptions::default()
+    };
+    let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &tiny).unwrap();
+    assert!(d.branches.iter().all(|b| b.points.len() <= 8));
+    assert!(matches!(
+        continue_branch(|p| (top.clone(), p), Vector3::z(), 9.0, (0.0, 5.0), &opts),
+        Err(RouthError::InvalidOption { what: "s0", .. })
+    ));
+}
