@@ -57,21 +57,19 @@ impl CheckedDiagram {
 /// definite) or a non-finite `p_ψ` at some `s`.
 ///
 /// ```
-/// use routh::{bifurcation_diagram, ContinuationOptions, EventKind, Lagrangian, Vector3};
+/// use routh_core::{bifurcation_diagram, ContinuationOptions, EventKind};
+/// # use test_models::Gyrostat;
 ///
-/// #[derive(Lagrangian, Clone)]
-/// #[lagrangian(kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z)]
-/// struct Top { inertia: Vector3<f64>, mgl: f64 }
-///
-/// // A Lagrange top A₁ = 1, C = 1.25, mgl = 1 followed over the cyclic momentum.
-/// let top = Top { inertia: Vector3::new(1.0, 1.0, 1.25), mgl: 1.0 };
+/// // A Lagrange top A₁ = 1, C = 1.25, mgl = 1 (any model implementing `Routhian`; with the
+/// // derive of the `routh` crate it is one struct and one attribute) over the cyclic momentum.
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
 /// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
 /// // Maievskii's bound p² = 4A₁mgl and the secular bound p² = mglC²/(C − A₁).
 /// let hh = d.events.iter().find(|e| e.kind == EventKind::HamiltonianHopf).unwrap();
 /// assert!((hh.s - 2.0).abs() < 1e-8);
 /// let bp = d.events.iter().find(|e| e.kind == EventKind::BranchPoint).unwrap();
 /// assert!((bp.s - 2.5).abs() < 1e-8);
-/// # Ok::<(), routh::RouthError>(())
+/// # Ok::<(), routh_core::RouthError>(())
 /// ```
 pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
     family: F,
@@ -129,22 +127,19 @@ pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
 /// is found from the guess and [`RouthError::InvalidOption`] when `s0` is outside the range.
 ///
 /// ```
-/// use routh::{continue_branch, ContinuationOptions, EventKind, Lagrangian, Vector3};
-///
-/// #[derive(Lagrangian, Clone)]
-/// #[lagrangian(kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z)]
-/// struct Top { inertia: Vector3<f64>, mgl: f64 }
+/// use routh_core::{continue_branch, ContinuationOptions, Vector3};
+/// # use test_models::Gyrostat;
 ///
 /// // The sleeping top γ = e₃ of a top with A₁ = 1, C = 1.25, followed over the weight mgl at
 /// // p_ψ = 3: it loses secular stability at mgl = p²(C − A₁)/C² = 1.44 and gyroscopic
 /// // stabilisation at Maievskii's mgl = p²/(4A₁) = 2.25.
 /// let d = continue_branch(
-///     |mgl| (Top { inertia: Vector3::new(1.0, 1.0, 1.25), mgl }, 3.0),
+///     |mgl| (Gyrostat::lagrange_top(1.0, 1.25, mgl), 3.0),
 ///     Vector3::z(), 1.0, (1.0, 3.0), &ContinuationOptions::default())?;
 /// let s: Vec<f64> = d.events.iter().filter(|e| e.branch == 0).map(|e| e.s).collect();
 /// assert!(s.iter().any(|s| (s - 1.44).abs() < 1e-8));
 /// assert!(s.iter().any(|s| (s - 2.25).abs() < 1e-8));
-/// # Ok::<(), routh::RouthError>(())
+/// # Ok::<(), routh_core::RouthError>(())
 /// ```
 pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
     family: F,
