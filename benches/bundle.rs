@@ -37,9 +37,9 @@ fn with_system(bundle: RouthBundle, pt: &Point) -> Output {
 
 struct Setup {
     pts: Vec<Point>,
-    m1: common::Gyrostat,
+    m1: derived_models::Gyrostat,
     m1_twin: test_models::Gyrostat,
-    m2: common::Ellipsoid2,
+    m2: derived_models::DiagonalEllipsoid,
     m2_twin: test_models::Ellipsoid,
 }
 

@@ -10,12 +10,10 @@ mod common;
 use std::error::Error;
 use std::time::Instant;
 
-use common::fluid_body::{perturbed_axial, FluidBody, Kirchhoff};
 use common::plot::{verdict_series, Figure, Series, Style};
-use common::{
-    classified_steady_motions, instability_threshold, linspace, lpad, report_at, rpad,
-    verdict_label,
-};
+use common::{linspace, lpad, rpad, verdict_label};
+use derived_models::fluid_body::{perturbed_axial, FluidBody, Kirchhoff};
+use derived_models::{classified_steady_motions, instability_threshold, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::fluid::FluidParameters;
 use routh::{simulate_full, Lagrangian, Matrix3, SimOptions, Vector3};

@@ -12,11 +12,10 @@ mod common;
 use std::error::Error;
 use std::time::Instant;
 
-use common::ellipsoid::Ellipsoid;
 use common::plot::{verdict_series, Figure};
-use common::{
-    classified_steady_motions, instability_threshold, linspace, report_at, verdict_label,
-};
+use common::{linspace, verdict_label};
+use derived_models::Ellipsoid;
+use derived_models::{classified_steady_motions, instability_threshold, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::{Routhian, Stability, Vector3};
 
@@ -52,9 +51,9 @@ fn study(
         body.offset.x,
         body.offset.y,
         body.offset.z,
-        common::num(i[(0, 0)], 4),
-        common::num(i[(1, 1)], 4),
-        common::num(i[(2, 2)], 4),
+        derived_models::num(i[(0, 0)], 4),
+        derived_models::num(i[(1, 1)], 4),
+        derived_models::num(i[(2, 2)], 4),
         body.mass,
         body.g
     );

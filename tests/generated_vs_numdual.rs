@@ -4,7 +4,8 @@
 
 mod common;
 
-use common::{close, m, s, v, Ellipsoid, Gyrostat};
+use common::{close, m, s, v};
+use derived_models::{Ellipsoid, Gyrostat};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh::{Lagrangian, Routhian, Vector3};

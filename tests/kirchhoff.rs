@@ -1,12 +1,9 @@
 //! Paper Example 3 end to end: the equations (8) of the Lagrangian of ERRATA E3
-//! (`routh::fluid::kirchhoff_lagrangian`, declared with the derive in `examples/common`),
+//! (`routh::fluid::kirchhoff_lagrangian`, declared with the derive in `derived-models`),
 //! integrated by `routh::simulate_full`, reproduce Kirchhoff's equations (52) integrated directly
 //! in `(ω, v)` by a classical Runge–Kutta method written here.
 
-#[path = "../examples/common/mod.rs"]
-mod common;
-
-use common::fluid_body::{FluidBody, Kirchhoff};
+use derived_models::{FluidBody, Kirchhoff};
 use routh::nalgebra::{Matrix6, Vector6};
 use routh::{simulate_full, Matrix3, SimOptions, Vector3};
 

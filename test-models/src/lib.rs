@@ -10,6 +10,14 @@
 //! - [`Gyrostat`]: `L = ½ωᵀIω + (K + Bγ)·ω − m g r·γ` (paper (35) with `A(γ) = K + Bγ`); the
 //!   heavy (Lagrange or asymmetric) top is `K = B = 0`.
 //! - [`Ellipsoid`]: a heavy ellipsoid on a frictionless horizontal plane (paper Example 2).
+//! - [`HeavyTop`]: a heavy top with its Routh function and every derivative in closed form (no
+//!   automatic differentiation), a second reference for the analysis tests.
+//!
+//! [`jacobian`] linearises the full equations (8) by finite differences and matches the roots of
+//! f₂ to the eigenvalues (errata E5). The models declared with `#[derive(Lagrangian)]`, each
+//! beside its twin here, are in the companion crate `derived-models` (`test-models/derived`):
+//! they need the facade `routh`, which this crate must not depend on, because routh-core's own
+//! tests use this crate.
 //!
 //! [`numdual_bundle`] evaluates every output of the Routh function with one num-dual Hessian over
 //! `(Ω, γ)` (plus a first-order dual in `p_ψ`): it is the "num-dual Hessians of the same R"
@@ -20,12 +28,15 @@ mod ellipsoid;
 mod gyrostat;
 mod hand;
 pub use hand::hand_gyrostat_bundle;
+mod heavy_top;
+pub mod jacobian;
 mod numdual;
 mod random;
 pub mod vec3;
 
 pub use ellipsoid::Ellipsoid;
 pub use gyrostat::Gyrostat;
+pub use heavy_top::HeavyTop;
 pub use numdual::{
     numdual_bundle, numdual_dr_dp, numdual_lagrangian_gradient, numdual_lagrangian_hessian,
     numdual_routhian_gradient, numdual_routhian_hessian, GenericModel,
