@@ -1,5 +1,5 @@
 //! Paper Example 2: a heavy ellipsoid on a smooth horizontal plane, with `C₃` the support function
-//! (ERRATA E6), `U = +m g C₃` (ERRATA E2) and the ½ of (51) restored (ERRATA E1). Steady motions of
+//! (errata E6), `U = +m g C₃` (errata E2) and the ½ of (51) restored (errata E1). Steady motions of
 //! a spheroid and of a triaxial body, and the spin needed to stand on the end of the long axis,
 //! found numerically and compared with the hand-derived formulas of `common/ellipsoid.rs`.
 //!
@@ -161,7 +161,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let start = Instant::now();
     println!("Example 2 — heavy ellipsoid on a smooth horizontal plane");
     println!("========================================================");
-    println!("The model (C₃ is the support function, ERRATA E6; U = +m g C₃, ERRATA E2):\n{DSL}");
+    println!("The model (C₃ is the support function, errata E6; U = +m g C₃, errata E2):\n{DSL}");
     println!(
         "Amended potential (34): U_r(γ) = ½ p_ψ² / (γᵀIγ) + m g C₃(γ)   ((Jγ, γ) = (Iγ, γ) by E6)"
     );
@@ -187,13 +187,13 @@ fn main() -> Result<(), Box<dyn Error>> {
         )?,
     ];
 
-    // ERRATA E2: at rest the body lies stably on its flattest side (the minimum of C₃).
+    // errata E2: at rest the body lies stably on its flattest side (the minimum of C₃).
     let at_rest = classified_steady_motions(&triaxial, 0.0)?;
     let stable: Vec<_> = at_rest
         .iter()
         .filter(|r| r.report.verdict == Stability::SecularlyStable)
         .collect();
-    println!("\nERRATA E2 check (triaxial body, p_ψ = 0): secularly stable rest positions:");
+    println!("\nerrata E2 check (triaxial body, p_ψ = 0): secularly stable rest positions:");
     for r in &stable {
         println!(
             "  γ = {}, C₃ = {:.6} (smallest semi-axis a₁ = {}), U_r = {:.6}",

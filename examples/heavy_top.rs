@@ -22,7 +22,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let out = common::out_dir("heavy_top")?;
     let e3 = Vector3::z();
 
-    println!("Heavy symmetric (Lagrange) top — Bourov & Chevallier, ZAMM 1998, with ERRATA");
+    println!("Heavy symmetric (Lagrange) top — Bourov & Chevallier, ZAMM 1998, with errata");
     println!("=========================================================================");
     println!(
         "L = ½(A₁(ω₁² + ω₂²) + Cω₃²) − m g l γ₃,  A₁ = {}, C = {}, m = {}, g = {}, l = {}",

@@ -64,7 +64,7 @@ fn sleeping_top_verdicts_on_either_side_of_the_bounds() {
         verdict_at(&top, e3, 1.001 * ps).unwrap(),
         Stability::SecularlyStable
     );
-    // Exactly on the boundary of secular stability the second variation vanishes (ERRATA E8).
+    // Exactly on the boundary of secular stability the second variation vanishes (errata E8).
     assert_eq!(verdict_at(&top, e3, ps).unwrap(), Stability::Degenerate);
     // Restricted second variation p²(C − A₁)/C² − mgl, twice.
     for p in [1.0, 2.2, 3.0] {
@@ -282,7 +282,7 @@ fn triaxial_spin_threshold_matches_the_hand_quartic() {
 
 #[test]
 fn body_at_rest_lies_stably_on_its_flattest_side() {
-    // ERRATA E2: U = +m g C₃, the stable rest positions are the minima of C₃.
+    // errata E2: U = +m g C₃, the stable rest positions are the minima of C₃.
     let body = Ellipsoid::triaxial();
     let rows = classified_steady_motions(&body, 0.0).unwrap();
     assert_eq!(rows.len(), 6, "the six ends of the principal axes");

@@ -1,5 +1,5 @@
 //! The generated Routh function against the paper's closed forms (38)–(41), the corrected (51)
-//! (ERRATA E1, E2), Theorem 2 and the identities of ERRATA E4–E6, at random points.
+//! (errata E1, E2), Theorem 2 and the identities of errata E4–E6, at random points.
 
 mod common;
 
@@ -59,12 +59,12 @@ fn ellipsoid_matches_corrected_51() {
             let c3 = root - model.offset.dot(&g);
             let n = d * g / root - model.offset;
             let i = model.inertia;
-            // (51) with the ½ of ERRATA E1 and U = +m g C₃ (ERRATA E2).
+            // (51) with the ½ of errata E1 and U = +m g C₃ (errata E2).
             let r = 0.5 * (w.dot(&(i * w)) + model.mass * n.dot(&g.cross(&w)).powi(2))
                 - 0.5 * (p - (i * w).dot(&g)).powi(2) / g.dot(&(i * g))
                 - model.mass * model.g * c3;
             assert_close("R (51, E1)", model.routhian(&w, &g, p), r, 1e-13);
-            // ERRATA E6: γᵀJγ = γᵀIγ.
+            // errata E6: γᵀJγ = γᵀIγ.
             let j = model.d2l_domega2(&g);
             assert_close("γᵀJγ = γᵀIγ", g.dot(&(j * g)), g.dot(&(i * g)), 1e-13);
         }
@@ -85,10 +85,10 @@ fn check_theorem_2<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
             model.energy(&omega, &g),
             1e-12,
         );
-        // ERRATA E6: (∂²R/∂Ω∂γ)ᵀγ = −∂R/∂Ω.
+        // errata E6: (∂²R/∂Ω∂γ)ᵀγ = −∂R/∂Ω.
         let lhs = b.d2r_domega_dgamma.transpose() * g;
         close(lhs.as_slice(), (-b.dr_domega).as_slice(), 1e-12, 1.0).unwrap();
-        // ERRATA E4: ∂²R/∂Ω² γ = 0, and R(Ω + sγ) = R(Ω) + s p_ψ.
+        // errata E4: ∂²R/∂Ω² γ = 0, and R(Ω + sγ) = R(Ω) + s p_ψ.
         close(
             (b.d2r_domega2 * g).as_slice(),
             &[0.0; 3],
@@ -132,7 +132,7 @@ fn check_e5<M: Routhian>(model: &M, rng: &mut ChaCha8Rng) {
         let p = rng.gen_range(-5.0..5.0);
         let sys = model.gyroscopic_system(&g, p);
         let scale = sys.a.amax().max(sys.g.amax()).max(sys.c.amax());
-        // A, G, C all annihilate γ, so det(Aλ² + 2Gλ + C) ≡ 0 (ERRATA E5).
+        // A, G, C all annihilate γ, so det(Aλ² + 2Gλ + C) ≡ 0 (errata E5).
         for (name, x) in [("A", sys.a), ("G", sys.g), ("C", sys.c)] {
             close((x * g).as_slice(), &[0.0; 3], 1e-12, scale)
                 .unwrap_or_else(|e| panic!("{name}γ: {e}"));

@@ -2,7 +2,7 @@
 //!
 //! Every model here is written twice by hand, as a generic Lagrangian `L(ω, γ)` and as a generic
 //! closed-form Routh function `R(Ω, γ, p_ψ)` (paper (39) and its Example 2 form (51) with the
-//! corrections of ERRATA E1, E2, E6), and all derivatives are computed by forward-mode automatic
+//! corrections of errata E1, E2, E6), and all derivatives are computed by forward-mode automatic
 //! differentiation with [`num_dual`] (second-order dual numbers). The models are therefore
 //! independent of `routh`'s symbolic code generator, and the two hand-written forms check each
 //! other through the identities (14), (18), (19) and Theorem 2 (see the unit tests).

@@ -1,6 +1,6 @@
 //! Independent checks of the num-dual derivatives (central finite differences of the plain `f64`
 //! functions) and of the hand-written `R` against the hand-written `L` ((14), (18), (19), (38),
-//! Theorem 2, ERRATA E4, E6).
+//! Theorem 2, errata E4, E6).
 
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 use rand::{Rng, SeedableRng};

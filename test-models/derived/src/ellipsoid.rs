@@ -1,6 +1,6 @@
 //! Paper Example 2: a heavy ellipsoid on a smooth horizontal plane (twin:
 //! [`test_models::Ellipsoid`]), with the corrections of
-//! ERRATA E1 (the ½ in (51)), E2 (`U = +m g C₃`) and E6 (the support function).
+//! errata E1 (the ½ in (51)), E2 (`U = +m g C₃`) and E6 (the support function).
 //!
 //! # The spin threshold about a vertical principal axis, by hand
 //!
@@ -67,8 +67,8 @@ use rand::Rng;
 use routh::{Lagrangian, Matrix3, Vector3};
 
 /// A heavy ellipsoid on a smooth horizontal plane (paper Example 2). The height of the centre of
-/// mass is the support function `C₃(γ) = √(γᵀDγ) − c₀·γ` (ERRATA E6), the potential is
-/// `U = +m g C₃` (ERRATA E2) and the kinetic energy is (49).
+/// mass is the support function `C₃(γ) = √(γᵀDγ) − c₀·γ` (errata E6), the potential is
+/// `U = +m g C₃` (errata E2) and the kinetic energy is (49).
 #[derive(Lagrangian, Debug, Clone)]
 #[lagrangian(
     let d = diag(semi_axes.component_mul(semi_axes)),
