@@ -1,7 +1,8 @@
 //! Paper Example 2: a heavy ellipsoid on a smooth horizontal plane, with `C₃` the support function
 //! (errata E6), `U = +m g C₃` (errata E2) and the ½ of (51) restored (errata E1). Steady motions of
 //! a spheroid and of a triaxial body, and the spin needed to stand on the end of the long axis,
-//! found numerically and compared with the hand-derived formulas of `common/ellipsoid.rs`.
+//! found numerically and compared with the hand-derived formulas of
+//! `test-models/derived/src/ellipsoid.rs` (crate `derived-models`).
 //!
 //! Run with `cargo run --release --example ellipsoid_on_plane`. Figures go to
 //! `out/ellipsoid_on_plane/`.

@@ -260,7 +260,7 @@ fn check<M: Routhian + DerivedFormulas>(
     let mut worst = 0.0f64;
     for _ in 0..50 {
         let w = test_models::random_vector(rng, 2.0);
-        let g = test_models::random_unit_vector(rng) * rng.gen_range(0.5..1.5);
+        let g = test_models::random_gamma(rng);
         let p = rng.gen_range(-5.0..5.0);
         let vars = with_point(vars.clone(), &w, &g, p);
         for (name, text, generated) in [

@@ -1,4 +1,4 @@
-//! No-panic fuzzing of `routh_codegen::derive`: mistakes in the DSL are compile errors, never panics.
+//! No-panic fuzzing of `routh_codegen::derive`: DSL mistakes are compile errors, never panics.
 //!
 //! The attribute bodies of a few valid models are mutated at the token level (deleting,
 //! duplicating, swapping, replacing, inserting, wrapping in and unwrapping groups, transplanting

@@ -29,6 +29,7 @@ mod gyrostat;
 mod hand;
 pub use hand::hand_gyrostat_bundle;
 mod heavy_top;
+pub mod identities;
 pub mod jacobian;
 mod numdual;
 mod random;
@@ -41,7 +42,9 @@ pub use numdual::{
     numdual_bundle, numdual_dr_dp, numdual_lagrangian_gradient, numdual_lagrangian_hessian,
     numdual_routhian_gradient, numdual_routhian_hessian, GenericModel,
 };
-pub use random::{random_matrix, random_spd, random_tangent, random_unit_vector, random_vector};
+pub use random::{
+    random_gamma, random_matrix, random_spd, random_tangent, random_unit_vector, random_vector,
+};
 
 /// Paths used by [`impl_numdual_traits!`]; not part of the API.
 #[doc(hidden)]
