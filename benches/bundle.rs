@@ -1,5 +1,5 @@
 //! Generated `bundle` vs a hand-written bundle vs num-dual Hessians of the same R
-//! (ARCHITECTURE §7).
+//! (README, “Performance”).
 //!
 //! Every measured function evaluates all the outputs a caller of the analysis uses at one point:
 //! `bundle(Ω, γ, p_ψ)` (R, ψ̇, ∂R/∂Ω, ∂R/∂γ, ∂R/∂p_ψ and the three Hessian blocks) and then
@@ -37,9 +37,9 @@ fn with_system(bundle: RouthBundle, pt: &Point) -> Output {
 
 struct Setup {
     pts: Vec<Point>,
-    m1: common::Gyrostat,
+    m1: derived_models::Gyrostat,
     m1_twin: test_models::Gyrostat,
-    m2: common::Ellipsoid2,
+    m2: derived_models::DiagonalEllipsoid,
     m2_twin: test_models::Ellipsoid,
 }
 

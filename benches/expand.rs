@@ -2,10 +2,8 @@
 //! attribute, check, lower to the symbolic DAG, differentiate, reduce, CSE, emit tokens) on a
 //! `syn::DeriveInput` parsed once beforehand.
 //!
-//! - `M1_gyrostat`, `M2_ellipsoid`: the models of `benches/bundle.rs` (`benches/common`);
+//! - `M1_gyrostat`, `M2_ellipsoid`: the models of `benches/bundle.rs` (`derived-models`);
 //! - `lagrange_top`: `examples/expanded/lagrange_top.rs`.
-
-mod common;
 
 use std::hint::black_box;
 
@@ -30,8 +28,11 @@ fn derive_input(src: &str) -> syn::DeriveInput {
 
 fn bench_expand(c: &mut Criterion) {
     let models = [
-        ("M1_gyrostat", derive_input(common::GYROSTAT_SRC)),
-        ("M2_ellipsoid", derive_input(common::ELLIPSOID2_SRC)),
+        ("M1_gyrostat", derive_input(derived_models::GYROSTAT_SRC)),
+        (
+            "M2_ellipsoid",
+            derive_input(derived_models::DIAGONAL_ELLIPSOID_SRC),
+        ),
         ("lagrange_top", derive_input(LAGRANGE_TOP_SRC)),
     ];
     let mut group = c.benchmark_group("expand");

@@ -1,17 +1,16 @@
 //! Families of steady motions: the bifurcation diagram of a Lagrange top (A₁ = 1, C = 1.25,
-//! mgl = 1, derived model M1 of `benches/common` with K = B = 0) over p_ψ ∈ [0, 5] — every
+//! mgl = 1, the derived gyrostat of `derived-models` with K = B = 0) over p_ψ ∈ [0, 5] — every
 //! branch, its events located to 1e−10, and the count checks against global searches — and the
 //! same diagram without count checks.
-
-mod common;
 
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use derived_models::Gyrostat;
 use routh::{bifurcation_diagram, ContinuationOptions, Matrix3, Vector3};
 
-fn lagrange_top() -> common::Gyrostat {
-    common::Gyrostat {
+fn lagrange_top() -> Gyrostat {
+    Gyrostat {
         inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.25)),
         rotor: Vector3::zeros(),
         coupling: Matrix3::zeros(),

@@ -5,25 +5,13 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use routh::{simulate_full, Lagrangian, SimOptions, Vector3};
-
-/// A heavy rigid body about a fixed point: principal moments `inertia`, centre of mass `com`.
-#[derive(Lagrangian, Debug, Clone)]
-#[lagrangian(
-    kinetic = 0.5 * omega.dot(diag(inertia) * omega),
-    potential = mass * g * com.dot(gamma),
-)]
-pub struct HeavyTop {
-    pub inertia: Vector3<f64>,
-    pub com: Vector3<f64>,
-    pub mass: f64,
-    pub g: f64,
-}
+use derived_models::AsymmetricTop;
+use routh::{simulate_full, SimOptions, Vector3};
 
 const T_END: f64 = 10.0;
 
 fn bench_simulate(c: &mut Criterion) {
-    let top = HeavyTop {
+    let top = AsymmetricTop {
         inertia: Vector3::new(2.0, 2.5, 1.0),
         com: Vector3::new(0.05, 0.02, 0.5),
         mass: 1.0,

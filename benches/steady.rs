@@ -1,6 +1,6 @@
 //! Steady motions and their stability: `routh::steady_motions` (global search of the critical
 //! points of the amended potential on S²) followed by `routh::classify` of every motion found,
-//! for a generic asymmetric gyrostat (derived model M1 of `benches/common`) at p_ψ = 3.
+//! for a generic asymmetric gyrostat (derived model M1 of `derived-models`) at p_ψ = 3.
 
 mod common;
 
@@ -11,7 +11,7 @@ use routh::{classify, steady_motions, StabilityReport, SteadyMotion};
 
 const P_PSI: f64 = 3.0;
 
-fn analyse(model: &common::Gyrostat, p_psi: f64) -> Vec<(SteadyMotion, StabilityReport)> {
+fn analyse(model: &derived_models::Gyrostat, p_psi: f64) -> Vec<(SteadyMotion, StabilityReport)> {
     let motions = steady_motions(model, p_psi).expect("steady motions");
     motions
         .into_iter()

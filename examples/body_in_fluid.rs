@@ -1,5 +1,5 @@
 //! Paper Example 3: a rigid body in an ideal fluid. Kirchhoff's equations (52) become (8) with
-//! the Lagrangian of ERRATA E3 (`routh::fluid::kirchhoff_lagrangian`); its steady motions are the
+//! the Lagrangian of errata E3 (`routh::fluid::kirchhoff_lagrangian`); its steady motions are the
 //! steady translations and screw motions of the body, classified by the Routh machinery.
 //!
 //! Run with `cargo run --release --example body_in_fluid`. Figures go to `out/body_in_fluid/`.
@@ -10,12 +10,10 @@ mod common;
 use std::error::Error;
 use std::time::Instant;
 
-use common::fluid_body::{perturbed_axial, FluidBody, Kirchhoff};
 use common::plot::{verdict_series, Figure, Series, Style};
-use common::{
-    classified_steady_motions, instability_threshold, linspace, lpad, report_at, rpad,
-    verdict_label,
-};
+use common::{linspace, lpad, rpad, verdict_label};
+use derived_models::fluid_body::{perturbed_axial, FluidBody, Kirchhoff};
+use derived_models::{classified_steady_motions, instability_threshold, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::fluid::FluidParameters;
 use routh::{simulate_full, Lagrangian, Matrix3, SimOptions, Vector3};
@@ -40,7 +38,7 @@ fn describe(name: &str, body: &Kirchhoff, f: &FluidParameters) {
     print_mat("  a = ", &body.a);
     print_mat("  b = ", &body.b);
     print_mat("  c = ", &body.c);
-    println!("kirchhoff_lagrangian(a, b, c, k = {}) (ERRATA E3):", f.k);
+    println!("kirchhoff_lagrangian(a, b, c, k = {}) (errata E3):", f.k);
     print_mat("  A = a − bᵀc⁻¹b = ", &f.kinetic);
     print_mat("  Λ = k bᵀc⁻¹    = ", &f.linear);
     print_mat("  Π = k² c⁻¹     = ", &f.potential);
@@ -101,14 +99,14 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!("Example 3 — rigid body in an ideal fluid (Kirchhoff's equations (52) as (8))");
     println!("============================================================================");
     println!("T(ω, v) = ½((aω, ω) + 2(bω, v) + (cv, v)),  p = bω + cv = kγ,  v = c⁻¹(kγ − bω)");
-    println!("L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)   (ERRATA E3)");
+    println!("L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)   (errata E3)");
     println!(
         "Steady motions: ω = ψ̇γ — the body turns about its impulse while translating (a screw"
     );
     println!(
         "motion; a pure translation when ψ̇ = 0). p_ψ = (∂L/∂ω, γ) is the reduced cyclic momentum;"
     );
-    println!("Kirchhoff's constant (55) is k·p_ψ (ERRATA E7).");
+    println!("Kirchhoff's constant (55) is k·p_ψ (errata E7).");
 
     // --- 1. Elongated body of revolution -------------------------------------------------------
     let k = 1.0;

@@ -1,7 +1,8 @@
 //! Paper Example 2: a heavy ellipsoid on a smooth horizontal plane, with `C₃` the support function
-//! (ERRATA E6), `U = +m g C₃` (ERRATA E2) and the ½ of (51) restored (ERRATA E1). Steady motions of
+//! (errata E6), `U = +m g C₃` (errata E2) and the ½ of (51) restored (errata E1). Steady motions of
 //! a spheroid and of a triaxial body, and the spin needed to stand on the end of the long axis,
-//! found numerically and compared with the hand-derived formulas of `common/ellipsoid.rs`.
+//! found numerically and compared with the hand-derived formulas of
+//! `test-models/derived/src/ellipsoid.rs` (crate `derived-models`).
 //!
 //! Run with `cargo run --release --example ellipsoid_on_plane`. Figures go to
 //! `out/ellipsoid_on_plane/`.
@@ -12,11 +13,10 @@ mod common;
 use std::error::Error;
 use std::time::Instant;
 
-use common::ellipsoid::Ellipsoid;
 use common::plot::{verdict_series, Figure};
-use common::{
-    classified_steady_motions, instability_threshold, linspace, report_at, verdict_label,
-};
+use common::{linspace, verdict_label};
+use derived_models::Ellipsoid;
+use derived_models::{classified_steady_motions, instability_threshold, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::{Routhian, Stability, Vector3};
 
@@ -52,9 +52,9 @@ fn study(
         body.offset.x,
         body.offset.y,
         body.offset.z,
-        common::num(i[(0, 0)], 4),
-        common::num(i[(1, 1)], 4),
-        common::num(i[(2, 2)], 4),
+        derived_models::num(i[(0, 0)], 4),
+        derived_models::num(i[(1, 1)], 4),
+        derived_models::num(i[(2, 2)], 4),
         body.mass,
         body.g
     );
@@ -162,7 +162,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let start = Instant::now();
     println!("Example 2 — heavy ellipsoid on a smooth horizontal plane");
     println!("========================================================");
-    println!("The model (C₃ is the support function, ERRATA E6; U = +m g C₃, ERRATA E2):\n{DSL}");
+    println!("The model (C₃ is the support function, errata E6; U = +m g C₃, errata E2):\n{DSL}");
     println!(
         "Amended potential (34): U_r(γ) = ½ p_ψ² / (γᵀIγ) + m g C₃(γ)   ((Jγ, γ) = (Iγ, γ) by E6)"
     );
@@ -188,13 +188,13 @@ fn main() -> Result<(), Box<dyn Error>> {
         )?,
     ];
 
-    // ERRATA E2: at rest the body lies stably on its flattest side (the minimum of C₃).
+    // errata E2: at rest the body lies stably on its flattest side (the minimum of C₃).
     let at_rest = classified_steady_motions(&triaxial, 0.0)?;
     let stable: Vec<_> = at_rest
         .iter()
         .filter(|r| r.report.verdict == Stability::SecularlyStable)
         .collect();
-    println!("\nERRATA E2 check (triaxial body, p_ψ = 0): secularly stable rest positions:");
+    println!("\nerrata E2 check (triaxial body, p_ψ = 0): secularly stable rest positions:");
     for r in &stable {
         println!(
             "  γ = {}, C₃ = {:.6} (smallest semi-axis a₁ = {}), U_r = {:.6}",

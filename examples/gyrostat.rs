@@ -11,9 +11,10 @@ use std::error::Error;
 use std::path::Path;
 use std::time::Instant;
 
-use common::gyrostat::Gyrostat;
 use common::plot::{verdict_series, Figure};
-use common::{classified_steady_motions, linspace, report_at, verdict_label};
+use common::{linspace, verdict_label};
+use derived_models::Gyrostat;
+use derived_models::{classified_steady_motions, report_at};
 use plotters::prelude::SeriesLabelPosition;
 use routh::{DerivedFormulas, Routhian, Vector3};
 
@@ -42,9 +43,9 @@ fn describe(name: &str, body: &Gyrostat) {
         body.rotor.x,
         body.rotor.y,
         body.rotor.z,
-        common::num(body.mass * body.g * body.com.x, 6),
-        common::num(body.mass * body.g * body.com.y, 6),
-        common::num(body.mass * body.g * body.com.z, 6)
+        derived_models::num(body.mass * body.g * body.com.x, 6),
+        derived_models::num(body.mass * body.g * body.com.y, 6),
+        derived_models::num(body.mass * body.g * body.com.z, 6)
     );
     let b = body.coupling;
     if b != routh::Matrix3::zeros() {
@@ -156,7 +157,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     let k_formula = kelvin.rest_rotor_threshold();
     // The gyrostat at rest upright: γ = e₃, ω = 0, hence p_ψ = K₃; bisect on the rotor's K₃.
-    let k_found = common::bisect(0.2 * k_formula, 3.0 * k_formula, 1e-13, |k3| {
+    let k_found = derived_models::bisect(0.2 * k_formula, 3.0 * k_formula, 1e-13, |k3| {
         let body = Gyrostat {
             rotor: Vector3::new(0.0, 0.0, k3),
             ..kelvin.clone()

@@ -10,10 +10,9 @@ use std::error::Error;
 use std::time::Instant;
 
 use common::plot::{verdict_series, Figure, Series, Style};
-use common::top::LagrangeTop;
-use common::{
-    classified_steady_motions, instability_threshold, linspace, report_at, verdict_label,
-};
+use common::{linspace, verdict_label};
+use derived_models::LagrangeTop;
+use derived_models::{classified_steady_motions, instability_threshold, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition, BLACK};
 use routh::{simulate_full, Routhian, SimOptions, Vector3};
 
@@ -23,7 +22,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let out = common::out_dir("heavy_top")?;
     let e3 = Vector3::z();
 
-    println!("Heavy symmetric (Lagrange) top — Bourov & Chevallier, ZAMM 1998, with ERRATA");
+    println!("Heavy symmetric (Lagrange) top — Bourov & Chevallier, ZAMM 1998, with errata");
     println!("=========================================================================");
     println!(
         "L = ½(A₁(ω₁² + ω₂²) + Cω₃²) − m g l γ₃,  A₁ = {}, C = {}, m = {}, g = {}, l = {}",
@@ -62,7 +61,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         // Where the restricted second variation changes sign: there the verdict goes from
         // gyroscopically stabilised to secularly stable (through `Degenerate` exactly at the
         // boundary, within classify's zero-eigenvalue tolerance).
-        let found_s = common::bisect(formula * 1.001, 3.0 * ps, 1e-13, |p| {
+        let found_s = derived_models::bisect(formula * 1.001, 3.0 * ps, 1e-13, |p| {
             Ok(report_at(&top, e3, p)?.restricted_hessian_eigenvalues[0] > 0.0)
         })?
         .ok_or("no secular-stability boundary found")?;

@@ -8,13 +8,12 @@ use routh_symbolic::{op_counts, Id};
 use std::time::Instant;
 
 // The benchmark models M1 and M2, exactly as `benches/bundle.rs` evaluates them.
-#[path = "../benches/common/mod.rs"]
-mod common;
+use derived_models::{DIAGONAL_ELLIPSOID_SRC, GYROSTAT_SRC};
 
 fn main() {
     for (name, src) in [
-        ("M1 gyrostat", common::GYROSTAT_SRC),
-        ("M2 ellipsoid", common::ELLIPSOID2_SRC),
+        ("M1 gyrostat", GYROSTAT_SRC),
+        ("M2 ellipsoid", DIAGONAL_ELLIPSOID_SRC),
     ] {
         let di: syn::DeriveInput = syn::parse_str(src).expect("model parses");
         let t0 = Instant::now();

@@ -9,7 +9,7 @@
 //! ```
 //!
 //! The impulse `p` is constant in space, so in the body frame `ṗ = p × ω` and `|p| = k` (56).
-//! The partial Legendre transform in v, with the missing `−(p, v)` of (59) restored (ERRATA E3),
+//! The partial Legendre transform in v, with the missing `−(p, v)` of (59) restored (errata E3),
 //!
 //! ```text
 //! L(ω, p) = T − (p, v) = ½((Aω, ω) + 2(Bω, p) + (Cp, p)),   A = a − bᵀc⁻¹b,  B = c⁻¹b,  C = −c⁻¹,
@@ -27,7 +27,7 @@
 //! Kirchhoff's equations (52): `∂L/∂ω = aω + bᵀv = ∂T/∂ω` and `∂L/∂γ × γ = −kv × γ = p × v`.
 //!
 //! The cyclic momentum (9) of this `L`, `p_ψ = (∂L/∂ω, γ) = (∂T/∂ω, p)/k`, is **not** the
-//! constant written `p_ψ` in (55): that one is `(∂T/∂ω, ∂T/∂v) = k·p_ψ` (ERRATA E7). See
+//! constant written `p_ψ` in (55): that one is `(∂T/∂ω, ∂T/∂v) = k·p_ψ` (errata E7). See
 //! [`FluidParameters::kirchhoff_constant`].
 //!
 //! ```
@@ -54,7 +54,7 @@
 use routh_core::nalgebra::{Matrix3, SymmetricEigen, Vector3};
 
 /// The matrices of the Lagrangian `L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)` of a body in an
-/// ideal fluid with impulse of magnitude `k` (ERRATA E3; see the [module documentation](self)).
+/// ideal fluid with impulse of magnitude `k` (errata E3; see the [module documentation](self)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FluidParameters {
     /// `A = a − bᵀc⁻¹b`: the kinetic matrix, `½(Aω, ω)` (symmetric positive definite).
@@ -89,7 +89,7 @@ impl FluidParameters {
     }
 
     /// Kirchhoff's constant (55), `(∂T/∂ω, ∂T/∂v) = k·p_ψ`, from the cyclic momentum
-    /// `p_ψ = (∂L/∂ω, γ)` (9) of the reduced Lagrangian (ERRATA E7: keep the two apart).
+    /// `p_ψ = (∂L/∂ω, γ)` (9) of the reduced Lagrangian (errata E7: keep the two apart).
     pub fn kirchhoff_constant(&self, p_psi: f64) -> f64 {
         self.k * p_psi
     }
@@ -187,7 +187,7 @@ fn check_positive_definite(what: &'static str, m: &Matrix3<f64>) -> Result<(), F
 }
 
 /// The Lagrangian of a body in an ideal fluid with impulse magnitude `k`, in the form (8) of this
-/// crate (ERRATA E3): from the matrices `a`, `b`, `c` of the kinetic energy (53),
+/// crate (errata E3): from the matrices `a`, `b`, `c` of the kinetic energy (53),
 /// `T = ½((aω, ω) + 2(bω, v) + (cv, v))`, returns `A = a − bᵀc⁻¹b` (kinetic), `Λ = k bᵀc⁻¹`
 /// (linear term `(Λγ, ω)`) and `Π = k²c⁻¹` (potential `½(Πγ, γ)`).
 ///

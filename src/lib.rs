@@ -7,7 +7,7 @@
 //! code for `L`, its derivatives, the Routh function `R` of (14) with its gradients and Hessians,
 //! and the matrices `A`, `G`, `C` of (64). The runtime ([`routh_core`]) simulates the body in full
 //! (8) or reduced (13) form, finds its steady motions (33) and classifies their stability
-//! (sections 4–5, with the corrections of `ERRATA.md`).
+//! (sections 4–5, with the corrections of `docs/errata.md`).
 //!
 //! ```
 //! use routh::{Lagrangian, Matrix3, Vector3};

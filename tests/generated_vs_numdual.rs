@@ -4,17 +4,13 @@
 
 mod common;
 
-use common::{close, m, s, v, Ellipsoid, Gyrostat};
+use common::{close, m, s, v};
+use derived_models::{Ellipsoid, Gyrostat};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh::{Lagrangian, Routhian, Vector3};
 
 const POINTS: usize = 150;
-
-/// γ of random length in [0.5, 1.5] (the paper differentiates in ℝ³, so γ need not be unit).
-fn random_gamma(rng: &mut ChaCha8Rng) -> Vector3<f64> {
-    test_models::random_unit_vector(rng) * rng.gen_range(0.5..1.5)
-}
 
 fn check_lagrangian<G: Lagrangian, H: Lagrangian>(
     gen: &G,
@@ -25,7 +21,7 @@ fn check_lagrangian<G: Lagrangian, H: Lagrangian>(
     let mut worst = 0.0f64;
     for _ in 0..POINTS {
         let w = test_models::random_vector(rng, 2.0);
-        let g = random_gamma(rng);
+        let g = test_models::random_gamma(rng);
         // Scalars that are sums with cancellation (L = (∂L/∂ω, ω) − E, E, p = (∂L/∂ω, γ)) are
         // compared relative to the size of their terms, which bounds the rounding error of any
         // evaluation (the reference's too); vectors and matrices normwise.
@@ -86,7 +82,7 @@ fn check_routhian<G: Routhian, H: Routhian + test_models::GenericModel>(
     let mut worst = 0.0f64;
     for _ in 0..POINTS {
         let w = test_models::random_vector(rng, 2.0);
-        let g = random_gamma(rng);
+        let g = test_models::random_gamma(rng);
         let p = rng.gen_range(-5.0..5.0);
         let b = gen.bundle(&w, &g, p);
         let nd = test_models::numdual_bundle(reference, &w, &g, p);
@@ -163,78 +159,44 @@ fn check_routhian<G: Routhian, H: Routhian + test_models::GenericModel>(
     worst
 }
 
-#[test]
-fn gyrostat_lagrangian_matches_numdual() {
-    let mut rng = ChaCha8Rng::seed_from_u64(1);
+/// Runs `check` on four random twins drawn by `twin` (seeded with `seed`), each against its
+/// derived model, and reports the worst error.
+fn over_random_twins<T, G>(
+    seed: u64,
+    twin: fn(&mut ChaCha8Rng) -> T,
+    check: fn(&G, &T, &mut ChaCha8Rng, f64) -> f64,
+    tol: f64,
+) where
+    G: for<'a> From<&'a T>,
+{
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut worst = 0.0f64;
     for _ in 0..4 {
-        let reference = test_models::Gyrostat::random(&mut rng);
-        worst = worst.max(check_lagrangian(
-            &Gyrostat::from(&reference),
-            &reference,
-            &mut rng,
-            1e-12,
-        ));
+        let reference = twin(&mut rng);
+        worst = worst.max(check(&G::from(&reference), &reference, &mut rng, tol));
     }
     eprintln!(
         "worst normwise relative error: {worst:e} over {} points",
         4 * POINTS
     );
+}
+
+#[test]
+fn gyrostat_lagrangian_matches_numdual() {
+    over_random_twins::<_, Gyrostat>(1, test_models::Gyrostat::random, check_lagrangian, 1e-13);
 }
 
 #[test]
 fn ellipsoid_lagrangian_matches_numdual() {
-    let mut rng = ChaCha8Rng::seed_from_u64(2);
-    let mut worst = 0.0f64;
-    for _ in 0..4 {
-        let reference = test_models::Ellipsoid::random(&mut rng);
-        worst = worst.max(check_lagrangian(
-            &Ellipsoid::from(&reference),
-            &reference,
-            &mut rng,
-            1e-12,
-        ));
-    }
-    eprintln!(
-        "worst normwise relative error: {worst:e} over {} points",
-        4 * POINTS
-    );
+    over_random_twins::<_, Ellipsoid>(2, test_models::Ellipsoid::random, check_lagrangian, 1e-13);
 }
 
 #[test]
 fn gyrostat_routhian_matches_numdual() {
-    let mut rng = ChaCha8Rng::seed_from_u64(3);
-    let mut worst = 0.0f64;
-    for _ in 0..4 {
-        let reference = test_models::Gyrostat::random(&mut rng);
-        worst = worst.max(check_routhian(
-            &Gyrostat::from(&reference),
-            &reference,
-            &mut rng,
-            1e-10,
-        ));
-    }
-    eprintln!(
-        "worst normwise relative error: {worst:e} over {} points",
-        4 * POINTS
-    );
+    over_random_twins::<_, Gyrostat>(3, test_models::Gyrostat::random, check_routhian, 1e-12);
 }
 
 #[test]
 fn ellipsoid_routhian_matches_numdual() {
-    let mut rng = ChaCha8Rng::seed_from_u64(4);
-    let mut worst = 0.0f64;
-    for _ in 0..4 {
-        let reference = test_models::Ellipsoid::random(&mut rng);
-        worst = worst.max(check_routhian(
-            &Ellipsoid::from(&reference),
-            &reference,
-            &mut rng,
-            1e-10,
-        ));
-    }
-    eprintln!(
-        "worst normwise relative error: {worst:e} over {} points",
-        4 * POINTS
-    );
+    over_random_twins::<_, Ellipsoid>(4, test_models::Ellipsoid::random, check_routhian, 1e-12);
 }

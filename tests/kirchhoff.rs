@@ -1,12 +1,9 @@
-//! Paper Example 3 end to end: the equations (8) of the Lagrangian of ERRATA E3
-//! (`routh::fluid::kirchhoff_lagrangian`, declared with the derive in `examples/common`),
+//! Paper Example 3 end to end: the equations (8) of the Lagrangian of errata E3
+//! (`routh::fluid::kirchhoff_lagrangian`, declared with the derive in `derived-models`),
 //! integrated by `routh::simulate_full`, reproduce Kirchhoff's equations (52) integrated directly
 //! in `(ω, v)` by a classical Runge–Kutta method written here.
 
-#[path = "../examples/common/mod.rs"]
-mod common;
-
-use common::fluid_body::{FluidBody, Kirchhoff};
+use derived_models::{FluidBody, Kirchhoff};
 use routh::nalgebra::{Matrix6, Vector6};
 use routh::{simulate_full, Matrix3, SimOptions, Vector3};
 
@@ -132,7 +129,7 @@ fn check(body: &Kirchhoff, omega0: Vector3<f64>, v0: Vector3<f64>, t_end: f64) {
         e_impulse = e_impulse.max((k * g_r - p).norm());
         // The velocity reconstructed by (58) from (ω, γ) is Kirchhoff's v.
         e_v = e_v.max((f.velocity(&w_r, &g_r) - v).norm());
-        // ERRATA E7: Kirchhoff's constant (55) is k·p_ψ, not p_ψ.
+        // errata E7: Kirchhoff's constant (55) is k·p_ψ, not p_ψ.
         e_55 = e_55.max((f.kirchhoff_constant(traj.p_psi[i]) - kirchhoff_55_0).abs());
         // The energy (3) of L is Kirchhoff's T (54).
         e_energy = e_energy.max((traj.energy[i] - energy_0).abs());

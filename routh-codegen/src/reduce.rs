@@ -1,6 +1,6 @@
 //! The Routh reduction on the DAG: every output of the generated `Lagrangian` and `Routhian`
 //! impls, derived symbolically from `L = kinetic + linear − potential` for any model the DSL
-//! accepts (paper (8)–(19), section 5, with ERRATA E4–E6).
+//! accepts (paper (8)–(19), section 5, with errata E4–E6).
 
 use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::Lowered;
@@ -79,7 +79,7 @@ pub enum Momentum {
     /// `Σ γ_i ∂L/∂ω_i`, reusing the gradient.
     Contracted,
     /// `d/ds L(ω + sγ, γ)` at `s = 0`: terms such as `n·(γ × γ)` vanish by hash-consing instead
-    /// of surviving as sums that cancel only numerically (ERRATA E6, `(n × γ) ⊥ γ`).
+    /// of surviving as sums that cancel only numerically (errata E6, `(n × γ) ⊥ γ`).
     Directional,
 }
 
@@ -295,7 +295,7 @@ fn block(h: &[[Id; 6]; 6], row: usize, col: usize) -> M3 {
     std::array::from_fn(|i| part(&h[row + i], col))
 }
 
-/// ERRATA E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these
+/// errata E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these
 /// are the entries printed in section 5 in matrix form.
 fn gyroscopic(g: &mut Graph, gm: &V3, dr_dw: &V3, dr_dg: &V3, mx: &M3, h: &M3) -> (M3, M3) {
     let gx = skew3(g, gm);

@@ -1,4 +1,4 @@
-//! No-panic fuzzing of `routh_codegen::derive` (ARCHITECTURE §3: "The macro never panics").
+//! No-panic fuzzing of `routh_codegen::derive`: DSL mistakes are compile errors, never panics.
 //!
 //! The attribute bodies of a few valid models are mutated at the token level (deleting,
 //! duplicating, swapping, replacing, inserting, wrapping in and unwrapping groups, transplanting
@@ -18,7 +18,7 @@ use std::time::{Duration, Instant};
 
 /// `(attribute body, fields)` of valid models.
 const SEEDS: &[(&str, &str)] = &[
-    // Kelvin gyrostat (ARCHITECTURE §3).
+    // Kelvin gyrostat (the README's DSL example).
     (
         "kinetic = 0.5 * omega.dot(inertia * omega),
          linear = (rotor + coupling * gamma).dot(omega),

@@ -1,4 +1,4 @@
-//! The model traits (ARCHITECTURE §4). Generated code implements every method; a hand-written
+//! The model traits (docs/method.md §8). Generated code implements every method; a hand-written
 //! model needs only the required ones, the rest have defaults built from them.
 
 use nalgebra::{Matrix3, Vector3};
@@ -42,7 +42,7 @@ pub struct RouthBundle {
     pub dr_dgamma: Vector3<f64>,
     /// `∂R/∂p_ψ = −ψ̇` (15).
     pub dr_dp: f64,
-    /// `∂²R/∂Ω²` (singular along γ, ERRATA E4).
+    /// `∂²R/∂Ω²` (singular along γ, errata E4).
     pub d2r_domega2: Matrix3<f64>,
     /// `∂²R/∂Ω_i∂γ_j`.
     pub d2r_domega_dgamma: Matrix3<f64>,
@@ -50,11 +50,11 @@ pub struct RouthBundle {
     pub d2r_dgamma2: Matrix3<f64>,
 }
 
-/// The matrices `A`, `G`, `C` of (64) at `Ω = 0` (section 5, ERRATA E5–E6).
+/// The matrices `A`, `G`, `C` of (64) at `Ω = 0` (section 5, errata E5–E6).
 ///
 /// `A = ∂²R/∂Ω²`, `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` with `M = ∂²R/∂Ω∂γ`, and
 /// `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with `μ = (∂R/∂γ, γ)`. All three annihilate γ, so
-/// `det(Aλ² + 2Gλ + C) ≡ 0` (ERRATA E5); the characteristic polynomial is the 2×2 one on γ^⊥.
+/// `det(Aλ² + 2Gλ + C) ≡ 0` (errata E5); the characteristic polynomial is the 2×2 one on γ^⊥.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GyroscopicSystem {
     /// Kinetic matrix `A = ∂²R/∂Ω²` at Ω = 0.
@@ -67,7 +67,7 @@ pub struct GyroscopicSystem {
 
 impl GyroscopicSystem {
     /// Forms `A`, `G`, `C` from a bundle evaluated at `Ω = 0` (section 5 in the matrix form of
-    /// ERRATA E6).
+    /// errata E6).
     pub fn from_bundle(bundle: &RouthBundle, gamma: &Vector3<f64>) -> Self {
         let gx = gamma.cross_matrix();
         let m = bundle.d2r_domega_dgamma;

@@ -1,5 +1,5 @@
 //! A heavy ellipsoid on a frictionless horizontal plane, paper Example 2 ((43)–(51)) with
-//! ERRATA E1, E2, E6.
+//! errata E1, E2, E6.
 
 use nalgebra::{Matrix3, Vector3};
 use num_dual::DualNum;
@@ -11,13 +11,13 @@ use crate::GenericModel;
 
 /// A convex body bounded by an ellipsoid, sliding without friction on the plane `X₃ = 0`.
 ///
-/// The height of the centre of mass above the plane is the support function (ERRATA E6)
+/// The height of the centre of mass above the plane is the support function (errata E6)
 /// `C₃(γ) = sqrt(γᵀDγ) − c₀·γ`, `D = diag(a₁², a₂², a₃²)`, with gradient
-/// `n = ∂C₃/∂γ = Dγ/sqrt(γᵀDγ) − c₀`. The Lagrangian is (49) minus the potential of ERRATA E2:
+/// `n = ∂C₃/∂γ = Dγ/sqrt(γᵀDγ) − c₀`. The Lagrangian is (49) minus the potential of errata E2:
 ///
 /// `L(ω, γ) = ½(ωᵀIω + m (n·(γ×ω))²) − m g C₃(γ)`,
 ///
-/// and the Routh function is (51) with the ½ of ERRATA E1 (`γᵀJγ = γᵀIγ`, E6):
+/// and the Routh function is (51) with the ½ of errata E1 (`γᵀJγ = γᵀIγ`, E6):
 ///
 /// `R = ½(ΩᵀIΩ + m (n·(γ×Ω))²) − ½(p_ψ − (IΩ)·γ)²/(γᵀIγ) − m g C₃(γ)`.
 #[derive(Debug, Clone, PartialEq)]
@@ -84,7 +84,7 @@ impl Ellipsoid {
         Matrix3::from_diagonal(&self.semi_axes.component_mul(&self.semi_axes))
     }
 
-    /// The height `C₃(γ)` of the centre of mass above the plane (46), ERRATA E6.
+    /// The height `C₃(γ)` of the centre of mass above the plane (46), errata E6.
     pub fn height(&self, gamma: &Vector3<f64>) -> f64 {
         self.height_generic(&lift::<f64>(gamma))
     }
@@ -124,7 +124,7 @@ impl GenericModel for Ellipsoid {
         gamma: &V3<D>,
         p_psi: D,
     ) -> D {
-        // (51) with ERRATA E1 (the ½), E2 (sign of U) and E6 (γᵀJγ = γᵀIγ).
+        // (51) with errata E1 (the ½), E2 (sign of U) and E6 (γᵀJγ = γᵀIγ).
         let d = p_psi - dot(&mat_vec(&self.inertia, big_omega), gamma);
         let c = quad_form(&self.inertia, gamma);
         self.kinetic_generic(big_omega, gamma)
@@ -138,7 +138,7 @@ impl GenericModel for Ellipsoid {
         gamma: &Vector3<f64>,
         p_psi: f64,
     ) -> f64 {
-        // (38) with a = 0 and, by ERRATA E6, (JΩ)·γ = (IΩ)·γ, γᵀJγ = γᵀIγ.
+        // (38) with a = 0 and, by errata E6, (JΩ)·γ = (IΩ)·γ, γᵀJγ = γᵀIγ.
         let q = (self.inertia * big_omega).dot(gamma);
         (p_psi - q) / gamma.dot(&(self.inertia * gamma))
     }

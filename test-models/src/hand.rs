@@ -1,5 +1,5 @@
 //! A hand-simplified closed form of every output of the gyrostat's Routh function: the
-//! "hand-written bundle" that the benches compare the generated code against (ARCHITECTURE §7).
+//! "hand-written bundle" that the benches compare the generated code against (README, “Performance”).
 //!
 //! For `L = ½ωᵀIω + (K + Bγ)·ω − m g r·γ` with `I` symmetric, write
 //! `u = Iγ`, `D = γ·u`, `w = IΩ`, `a = K + Bγ`, `s = p_ψ − w·γ − a·γ`, `ψ̇ = s/D` (38),

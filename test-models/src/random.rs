@@ -24,6 +24,12 @@ pub fn random_unit_vector<R: Rng + ?Sized>(rng: &mut R) -> Vector3<f64> {
     }
 }
 
+/// A vector of uniformly random direction and length uniform in `[0.5, 1.5]`: a γ off the sphere
+/// (the paper differentiates in ℝ³, so the functions of γ are defined there too).
+pub fn random_gamma<R: Rng + ?Sized>(rng: &mut R) -> Vector3<f64> {
+    random_unit_vector(rng) * rng.gen_range(0.5..1.5)
+}
+
 /// A random unit vector orthogonal to `gamma` (which need not be unit, but must be non-zero).
 pub fn random_tangent<R: Rng + ?Sized>(rng: &mut R, gamma: &Vector3<f64>) -> Vector3<f64> {
     let g = gamma.normalize();

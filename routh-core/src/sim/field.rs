@@ -9,7 +9,7 @@ use crate::RouthError;
 
 /// The vector field of the full equations (8) solved for ω̇:
 /// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`, `γ̇ = γ × ω`, with `J = ∂²L/∂ω²`
-/// (ARCHITECTURE §1). Returns `(ω̇, γ̇)`.
+/// (docs/method.md §2). Returns `(ω̇, γ̇)`.
 ///
 /// Errors: [`RouthError::KineticNotPositiveDefinite`] when the Cholesky factorisation of a
 /// finite `J(γ)` fails. Non-finite model outputs give non-finite rates (no error), so that an

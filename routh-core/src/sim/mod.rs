@@ -1,4 +1,4 @@
-//! Simulation of the full equations (8) and of the reduced equations (13) (ARCHITECTURE §5).
+//! Simulation of the full equations (8) and of the reduced equations (13) (docs/method.md §2–3).
 //!
 //! - [`simulate_full`] integrates (8) for `(ω, γ)` and records the energy (3), the cyclic
 //!   momentum (9) and `|γ|²` along the way.

@@ -1,4 +1,6 @@
-//! The heavy symmetric (Lagrange) top: `J = diag(A₁, A₁, C)`, `U = m g l γ₃`.
+//! Heavy tops: the symmetric (Lagrange) top `J = diag(A₁, A₁, C)`, `U = m g l γ₃`, and a heavy
+//! asymmetric top with principal moments. Their twins are `test_models::Gyrostat::lagrange_top`
+//! and `test_models::Gyrostat::heavy_top` (`K = B = 0`).
 
 use routh::{Lagrangian, Vector3};
 
@@ -36,6 +38,22 @@ impl LagrangeTop {
         }
     }
 
+    /// The Lagrange top `(A₁, C, m g l)` in units where `m = g = 1`.
+    pub fn with_mgl(a1: f64, c: f64, mgl: f64) -> Self {
+        LagrangeTop {
+            a1,
+            c,
+            mass: 1.0,
+            g: 1.0,
+            l: mgl,
+        }
+    }
+
+    /// The num-dual twin.
+    pub fn twin(&self) -> test_models::Gyrostat {
+        test_models::Gyrostat::lagrange_top(self.a1, self.c, self.mgl())
+    }
+
     /// `m g l`.
     pub fn mgl(&self) -> f64 {
         self.mass * self.g * self.l
@@ -71,5 +89,30 @@ impl LagrangeTop {
         let gamma0 = Vector3::new(tilt.sin(), 0.0, tilt.cos());
         let omega0 = Vector3::new(0.0, 0.0, p_psi / (self.c * tilt.cos()));
         (omega0, gamma0)
+    }
+}
+
+/// A heavy rigid body about a fixed point with principal moments `inertia` and centre of mass
+/// `com` (off the axes: an asymmetric heavy top), as in the simulation bench.
+#[derive(Lagrangian, Debug, Clone)]
+#[lagrangian(
+    kinetic = 0.5 * omega.dot(diag(inertia) * omega),
+    potential = mass * g * com.dot(gamma),
+)]
+pub struct AsymmetricTop {
+    /// Principal moments of inertia about the fixed point.
+    pub inertia: Vector3<f64>,
+    /// Centre of mass in the body frame.
+    pub com: Vector3<f64>,
+    /// Mass `m`.
+    pub mass: f64,
+    /// Gravity `g`.
+    pub g: f64,
+}
+
+impl AsymmetricTop {
+    /// The num-dual twin.
+    pub fn twin(&self) -> test_models::Gyrostat {
+        test_models::Gyrostat::heavy_top(self.inertia, self.com, self.mass, self.g)
     }
 }

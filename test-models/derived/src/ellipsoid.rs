@@ -1,5 +1,6 @@
-//! Paper Example 2: a heavy ellipsoid on a smooth horizontal plane, with the corrections of
-//! ERRATA E1 (the ½ in (51)), E2 (`U = +m g C₃`) and E6 (the support function).
+//! Paper Example 2: a heavy ellipsoid on a smooth horizontal plane (twin:
+//! [`test_models::Ellipsoid`]), with the corrections of
+//! errata E1 (the ½ in (51)), E2 (`U = +m g C₃`) and E6 (the support function).
 //!
 //! # The spin threshold about a vertical principal axis, by hand
 //!
@@ -62,11 +63,12 @@
 //! the analogue of Maievskii's `p² > 4A₁mgl` with the centre of curvature of the contact point in
 //! place of the fixed point: [`Ellipsoid::spheroid_threshold`].
 
+use rand::Rng;
 use routh::{Lagrangian, Matrix3, Vector3};
 
 /// A heavy ellipsoid on a smooth horizontal plane (paper Example 2). The height of the centre of
-/// mass is the support function `C₃(γ) = √(γᵀDγ) − c₀·γ` (ERRATA E6), the potential is
-/// `U = +m g C₃` (ERRATA E2) and the kinetic energy is (49).
+/// mass is the support function `C₃(γ) = √(γᵀDγ) − c₀·γ` (errata E6), the potential is
+/// `U = +m g C₃` (errata E2) and the kinetic energy is (49).
 #[derive(Lagrangian, Debug, Clone)]
 #[lagrangian(
     let d = diag(semi_axes.component_mul(semi_axes)),
@@ -86,6 +88,67 @@ pub struct Ellipsoid {
     pub mass: f64,
     /// Gravity `g`.
     pub g: f64,
+}
+
+impl From<&test_models::Ellipsoid> for Ellipsoid {
+    fn from(m: &test_models::Ellipsoid) -> Self {
+        Ellipsoid {
+            inertia: m.inertia,
+            semi_axes: m.semi_axes,
+            offset: m.offset,
+            mass: m.mass,
+            g: m.g,
+        }
+    }
+}
+
+model! { DIAGONAL_ELLIPSOID_SRC:
+    /// Bench model M2: [`Ellipsoid`] with a diagonal inertia tensor, written with `diag(v)`.
+    #[derive(Lagrangian, Debug, Clone)]
+    #[lagrangian(
+        let d = diag(semi_axes.component_mul(semi_axes)),
+        let c3 = gamma.dot(d * gamma).sqrt() - offset.dot(gamma),
+        let n = grad(c3, gamma),
+        kinetic = 0.5 * (omega.dot(diag(inertia) * omega) + mass * n.dot(gamma.cross(omega)).powi(2)),
+        potential = mass * g * c3,
+    )]
+    pub struct DiagonalEllipsoid {
+        /// Principal moments of inertia `(I₁, I₂, I₃)`.
+        pub inertia: Vector3<f64>,
+        /// Semi-axes `(a₁, a₂, a₃)`.
+        pub semi_axes: Vector3<f64>,
+        /// Position `c₀` of the ellipsoid's centre relative to the centre of mass.
+        pub offset: Vector3<f64>,
+        /// Mass `m`.
+        pub mass: f64,
+        /// Gravity `g`.
+        pub g: f64,
+    }
+}
+
+impl DiagonalEllipsoid {
+    /// A generic body: moments in [1, 3], semi-axes in [0.5, 1.5], offset in [−0.2, 0.2]³,
+    /// `m ∈ [0.5, 2]`, `g = 9.81`.
+    pub fn random<R: Rng + ?Sized>(rng: &mut R) -> Self {
+        DiagonalEllipsoid {
+            inertia: Vector3::from_fn(|_, _| rng.gen_range(1.0..3.0)),
+            semi_axes: Vector3::from_fn(|_, _| rng.gen_range(0.5..1.5)),
+            offset: test_models::random_vector(rng, 0.2),
+            mass: rng.gen_range(0.5..2.0),
+            g: 9.81,
+        }
+    }
+
+    /// The num-dual twin: `test_models::Ellipsoid` with `I = diag(inertia)`.
+    pub fn twin(&self) -> test_models::Ellipsoid {
+        test_models::Ellipsoid {
+            inertia: Matrix3::from_diagonal(&self.inertia),
+            semi_axes: self.semi_axes,
+            offset: self.offset,
+            mass: self.mass,
+            g: self.g,
+        }
+    }
 }
 
 /// Central inertia of a uniform solid ellipsoid of mass `m` and semi-axes `a`.

@@ -1,31 +1,49 @@
 //! Paper Example 1: a heavy body about a fixed point with gyroscopic forces,
-//! `L = ½(Iω, ω) + (a(γ), ω) − U(γ)` (35), with `a(γ) = K + Bγ` and `U = m g (r_c, γ)`.
+//! `L = ½(Iω, ω) + (a(γ), ω) − U(γ)` (35), with `a(γ) = K + Bγ` and `U = m g (r_c, γ)`. Its
+//! twin is [`test_models::Gyrostat`]; it is also the bench model M1 (generic: full symmetric I,
+//! K, general B).
 
 use routh::{Lagrangian, Matrix3, Vector3};
 
-use super::num;
+use crate::num;
 
-/// A heavy gyrostat with `a(γ) = rotor + coupling·γ` (35): `rotor = K` is the Kelvin gyrostat's
-/// constant rotor momentum, `coupling = B` the field-dependent part `a(γ) = Bγ`.
-#[derive(Lagrangian, Debug, Clone)]
-#[lagrangian(
-    kinetic = 0.5 * omega.dot(inertia * omega),
-    linear = (rotor + coupling * gamma).dot(omega),
-    potential = mass * g * com.dot(gamma),
-)]
-pub struct Gyrostat {
-    /// Inertia tensor `I` about the fixed point.
-    pub inertia: Matrix3<f64>,
-    /// Constant part `K` of `a(γ)` (the rotor's momentum).
-    pub rotor: Vector3<f64>,
-    /// Linear part `B` of `a(γ) = K + Bγ`.
-    pub coupling: Matrix3<f64>,
-    /// Centre of mass `r_c` in the body frame.
-    pub com: Vector3<f64>,
-    /// Mass `m`.
-    pub mass: f64,
-    /// Gravity `g`.
-    pub g: f64,
+model! { GYROSTAT_SRC:
+    /// A heavy gyrostat with `a(γ) = rotor + coupling·γ` (35): `rotor = K` is the Kelvin gyrostat's
+    /// constant rotor momentum, `coupling = B` the field-dependent part `a(γ) = Bγ`.
+    #[derive(Lagrangian, Debug, Clone)]
+    #[lagrangian(
+        kinetic = 0.5 * omega.dot(inertia * omega),
+        linear = (rotor + coupling * gamma).dot(omega),
+        potential = mass * g * com.dot(gamma),
+    )]
+    pub struct Gyrostat {
+        /// Inertia tensor `I` about the fixed point (symmetric: only its upper triangle is read).
+        #[lagrangian(symmetric)]
+        pub inertia: Matrix3<f64>,
+        /// Constant part `K` of `a(γ)` (the rotor's momentum).
+        pub rotor: Vector3<f64>,
+        /// Linear part `B` of `a(γ) = K + Bγ`.
+        pub coupling: Matrix3<f64>,
+        /// Centre of mass `r_c` in the body frame.
+        pub com: Vector3<f64>,
+        /// Mass `m`.
+        pub mass: f64,
+        /// Gravity `g`.
+        pub g: f64,
+    }
+}
+
+impl From<&test_models::Gyrostat> for Gyrostat {
+    fn from(m: &test_models::Gyrostat) -> Self {
+        Gyrostat {
+            inertia: m.inertia,
+            rotor: m.rotor,
+            coupling: m.coupling,
+            com: m.com,
+            mass: m.mass,
+            g: m.g,
+        }
+    }
 }
 
 impl Gyrostat {

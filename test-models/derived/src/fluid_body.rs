@@ -1,5 +1,5 @@
 //! Paper Example 3: a rigid body in an ideal fluid, through [`routh::fluid::kirchhoff_lagrangian`]
-//! (ERRATA E3, E7).
+//! (errata E3, E7).
 
 use routh::fluid::{kirchhoff_lagrangian, FluidError, FluidParameters};
 use routh::{Lagrangian, Matrix3, Vector3};
