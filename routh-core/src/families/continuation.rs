@@ -390,7 +390,9 @@ pub(crate) fn changes(a: &Node, b: &Node, isolated: bool) -> Vec<Change> {
     } else if (a.eig[0] + a.eig[1]) * (b.eig[0] + b.eig[1]) < 0.0 {
         out.push(Change::Eigen(2));
     }
-    if a.degree_two() && b.degree_two() && a.disc * b.disc < 0.0 {
+    // With degree 2 on one side only, an eigenvalue event shares the step: the caller shortens
+    // the step until the two are apart.
+    if (a.degree_two() || b.degree_two()) && a.disc * b.disc < 0.0 {
         out.push(Change::Discriminant);
     }
     if a.tau_s * b.tau_s < 0.0 {

@@ -384,7 +384,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             let ch = changes(&a, &b, ctx.isolated);
             let eigen = ch.iter().any(|c| matches!(c, Change::Eigen(_)));
             let disc = ch.contains(&Change::Discriminant);
-            if (cos < 0.97 || (eigen && disc)) && h > 4.0 * opts.min_step {
+            // Shorten the step when the tangent turns too fast, when two events share it, or
+            // when the verdict changes with no test function changing sign.
+            let unexplained = ch.is_empty() && a.verdict() != b.verdict();
+            if (cos < 0.97 || (eigen && disc) || unexplained) && h > 4.0 * opts.min_step {
                 h *= 0.5;
                 continue;
             }
@@ -441,7 +444,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                     end = true;
                 }
             }
-            if disc && !end {
+            if disc && !end && a.degree_two() && b.degree_two() {
                 let e = ctx.locate(&a, &b, h, &|n| n.disc)?;
                 if a.verdict() != b.verdict() {
                     out.events
