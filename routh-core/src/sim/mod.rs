@@ -22,7 +22,7 @@ pub use field::{full_vector_field, reduced_vector_field};
 
 use nalgebra::{SVector, Vector3};
 
-use crate::validate::{check_finite, unit_gamma};
+use crate::validate::{check_finite, stable_norm, unit_gamma};
 use crate::{Lagrangian, RouthError, Routhian};
 
 /// The integration method.
@@ -56,13 +56,37 @@ pub enum Output {
 /// Options of [`simulate_full`] and [`simulate_reduced`].
 ///
 /// Build with struct-update syntax, e.g. `SimOptions { rtol: 1e-12, ..SimOptions::default() }`.
+///
+/// # Error control and units
+///
+/// [`Method::Dop853`] accepts a step when the RMS over the state of `eᵢ/skᵢ` is at most 1, where
+/// `eᵢ` is the local error estimate. The weights are taken per 3-vector, by Euclidean length, so
+/// that rotating the body frame changes nothing:
+///
+/// - angular velocity ω (full) or Ω (reduced): `sk = rate_atol + rtol·|ω|`;
+/// - γ: `sk = atol + rtol·|γ|`;
+/// - ψ (reduced): `sk = atol + rtol·|ψ|`.
+///
+/// `rtol` has no units. γ and ψ have none either, so neither has `atol`. The angular velocity
+/// has the units 1/time, and so does `rate_atol`: the same motion in a unit of time s times
+/// smaller (ω s times larger, output times s times larger, `t_end` too) takes the same steps
+/// and gives the same γ at the same physical times when `rate_atol` is multiplied by s and the
+/// rest is kept. Scaling the inertia, the gyroscopic term, the potential and p_ψ by one factor
+/// (the same Lagrangian in other units of energy) changes no state variable and needs no change
+/// of the options.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SimOptions {
-    /// Relative tolerance of [`Method::Dop853`] (Hairer's mixed norm, per component
-    /// `atol + rtol·|y|`). Must be finite and at least `10·ε ≈ 2.2e-15`. Default `1e-10`.
+    /// Relative tolerance of [`Method::Dop853`]. Must be finite and at least
+    /// `10·ε ≈ 2.2e-15`. Default `1e-10`.
     pub rtol: f64,
-    /// Absolute tolerance of [`Method::Dop853`]. Must be finite and positive. Default `1e-12`.
+    /// Absolute tolerance of [`Method::Dop853`] for γ and ψ (dimensionless), and for the angular
+    /// velocity unless [`rate_atol`](Self::rate_atol) is given. Finite and positive. Default
+    /// `1e-12`.
     pub atol: f64,
+    /// Absolute tolerance of [`Method::Dop853`] for the angular velocity (ω or Ω), in the units
+    /// of the angular velocity (1/time). `None`: [`atol`](Self::atol). Finite and positive if
+    /// given. Default `None`.
+    pub rate_atol: Option<f64>,
     /// The integrator. Default [`Method::Dop853`].
     pub method: Method,
     /// Largest step of [`Method::Dop853`] (`None`: unbounded). Must be positive if given.
@@ -80,6 +104,7 @@ impl Default for SimOptions {
         SimOptions {
             rtol: 1e-10,
             atol: 1e-12,
+            rate_atol: None,
             method: Method::Dop853,
             h_max: None,
             h_init: None,
@@ -264,6 +289,12 @@ fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
             format!("must be > 0 (got {:e})", opts.atol),
         ));
     }
+    if let Some(a) = opts.rate_atol {
+        check_finite("rate_atol", &[a])?;
+        if a <= 0.0 {
+            return Err(invalid("rate_atol", format!("must be > 0 (got {a:e})")));
+        }
+    }
     if let Method::LieRk4 { step } = opts.method {
         check_finite("step", &[step])?;
         if step <= 0.0 {
@@ -325,9 +356,21 @@ where
     };
     match opts.method {
         Method::Dop853 => {
+            let (rtol, atol) = (opts.rtol, opts.atol);
+            let rate_atol = opts.rate_atol.unwrap_or(atol);
+            // Per-3-vector weights (see `SimOptions`): y[0..3] is the angular velocity, y[3..6]
+            // γ, any further component (ψ) is weighted on its own.
+            let weights = move |y0: &SVector<f64, N>, y1: &SVector<f64, N>| {
+                let len = |at| stable_norm(&split3(y0, at)).max(stable_norm(&split3(y1, at)));
+                let (w_rate, w_gamma) = (rate_atol + rtol * len(0), atol + rtol * len(3));
+                SVector::<f64, N>::from_fn(|i, _| match i {
+                    0..=2 => w_rate,
+                    3..=5 => w_gamma,
+                    _ => atol + rtol * y0[i].abs().max(y1[i].abs()),
+                })
+            };
             let cfg = dop853::Config {
-                rtol: opts.rtol,
-                atol: opts.atol,
+                weights: &weights,
                 h_max: opts.h_max.unwrap_or(f64::INFINITY),
                 h_init: opts.h_init,
                 max_steps: opts.max_steps,
@@ -432,6 +475,21 @@ where
     }
 }
 
+fn all_finite(v: &Vector3<f64>) -> bool {
+    v.iter().all(|x| x.is_finite())
+}
+
+/// A finite input so large that the vector field overflows at the initial state.
+fn too_large(what: &'static str, size: f64, equations: &str) -> RouthError {
+    invalid(
+        what,
+        format!(
+            "|{what}| = {size:e} is too large for this model: the vector field of {equations} \
+             overflows f64 at the initial state"
+        ),
+    )
+}
+
 fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
     Vector3::new(y[at], y[at + 1], y[at + 2])
 }
@@ -450,7 +508,9 @@ fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
 /// # Errors
 ///
 /// [`RouthError::NonFinite`] for non-finite `ω₀`, `γ₀`, `t_end`, tolerances or options;
-/// [`RouthError::InvalidOption`] for `t_end < 0` or invalid [`SimOptions`];
+/// [`RouthError::InvalidOption`] for `t_end < 0`, invalid [`SimOptions`], or a finite `ω₀` so
+/// large that the vector field overflows (`what: "omega0"`); [`RouthError::NonFiniteModel`]
+/// when the vector field is not finite at `(0, γ₀)`;
 /// [`RouthError::NonUnitGamma`]; [`RouthError::KineticNotPositiveDefinite`] when `J(γ)` has no
 /// Cholesky factor (at γ₀ or later); [`RouthError::StepSizeUnderflow`],
 /// [`RouthError::TooManySteps`] and [`RouthError::NonFiniteState`] from the integrator.
@@ -508,6 +568,20 @@ pub fn simulate_full<M: Lagrangian>(
     check_finite("gamma0", gamma0.as_slice())?;
     validate(opts, t_end)?;
     check_unit_gamma(&gamma0)?;
+    // A finite input for which the vector field overflows: say which input is too large.
+    let finite_at = |w: &Vector3<f64>| {
+        full_vector_field(model, w, &gamma0).map(|(a, b)| all_finite(&a) && all_finite(&b))
+    };
+    if !finite_at(&omega0)? {
+        return Err(if finite_at(&Vector3::zeros())? {
+            too_large("omega0", stable_norm(&omega0), "(8)")
+        } else {
+            RouthError::NonFiniteModel {
+                what: "full vector field (8) at omega = 0",
+                gamma: [gamma0.x, gamma0.y, gamma0.z],
+            }
+        });
+    }
     let mut y0 = SVector::<f64, 6>::zeros();
     y0.fixed_rows_mut::<3>(0).copy_from(&omega0);
     y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
@@ -553,9 +627,10 @@ pub fn simulate_full<M: Lagrangian>(
 ///
 /// # Errors
 ///
-/// As [`simulate_full`], plus [`RouthError::DegenerateVerticalInertia`] when
+/// As [`simulate_full`] (an overflowing input is named `"p_psi"` or `"big_omega0"`), plus
+/// [`RouthError::DegenerateVerticalInertia`] when
 /// `γ₀ᵀJ(γ₀)γ₀ ≤ 0` (ψ̇ of (38) undefined), and
-/// [`RouthError::KineticNotPositiveDefinite`] when `∂²R/∂Ω² + γγᵀ` has no Cholesky factor.
+/// [`RouthError::SingularReducedKinetic`] when `∂²R/∂Ω² + cγγᵀ` has no Cholesky factor.
 pub fn simulate_reduced<M: Routhian>(
     model: &M,
     big_omega0: Vector3<f64>,
@@ -575,6 +650,23 @@ pub fn simulate_reduced<M: Routhian>(
         return Err(RouthError::DegenerateVerticalInertia {
             gamma: [gamma0.x, gamma0.y, gamma0.z],
             value: vertical_inertia,
+        });
+    }
+    let finite_at = |w: &Vector3<f64>, p: f64| {
+        reduced_vector_field(model, w, &gamma0, p)
+            .map(|(a, b, c)| all_finite(&a) && all_finite(&b) && c.is_finite())
+    };
+    if !finite_at(&big_omega0, p_psi)? {
+        let zero = Vector3::zeros();
+        return Err(if !finite_at(&zero, 0.0)? {
+            RouthError::NonFiniteModel {
+                what: "reduced vector field (13) at Omega = 0, p_psi = 0",
+                gamma: [gamma0.x, gamma0.y, gamma0.z],
+            }
+        } else if !finite_at(&zero, p_psi)? {
+            too_large("p_psi", p_psi.abs(), "(13)")
+        } else {
+            too_large("big_omega0", stable_norm(&big_omega0), "(13)")
         });
     }
     let mut y0 = SVector::<f64, 7>::zeros();
@@ -692,6 +784,16 @@ mod tests {
                 ..o.clone()
             }),
             Err(RouthError::InvalidOption { what: "atol", .. })
+        ));
+        assert!(matches!(
+            bad(SimOptions {
+                rate_atol: Some(0.0),
+                ..o.clone()
+            }),
+            Err(RouthError::InvalidOption {
+                what: "rate_atol",
+                ..
+            })
         ));
         assert!(matches!(
             bad(SimOptions::lie_rk4(0.0)),
