@@ -12,13 +12,20 @@
 //! `|γ| = 1` to round-off over arbitrarily long runs. (The crate `ode_solvers` was considered:
 //! it depends on another major version of nalgebra and has no fallible right-hand side, so a
 //! compact DOP853 is implemented here instead, following Hairer's `dop853.f`.)
+//!
+//! Layout: this module holds the options, the trajectory types and the two drivers; `drive` the
+//! integration loop over both methods, `field` the vector fields, `dop853` (with `tableau`) and
+//! `lie` the two steppers.
 
 mod dop853;
+mod drive;
 mod field;
 mod lie;
 mod tableau;
 
 pub use field::{full_vector_field, reduced_vector_field};
+
+use drive::{drive, split3};
 
 use nalgebra::{SVector, Vector3};
 
@@ -336,145 +343,6 @@ fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
     Ok(())
 }
 
-/// Integrates `y' = field(y).0` from `y0` at `t = 0` to `t_end` with the chosen method and
-/// output, calling `record` at every output point. `field` returns `(ẏ, w)` with `w` the
-/// angular velocity that moves γ (`y[3..6]`): `γ̇ = w × γ`.
-fn drive<const N: usize, F, R>(
-    mut field: F,
-    y0: SVector<f64, N>,
-    t_end: f64,
-    opts: &SimOptions,
-    mut record: R,
-) -> Result<SimStats, RouthError>
-where
-    F: FnMut(&SVector<f64, N>) -> Result<(SVector<f64, N>, Vector3<f64>), RouthError>,
-    R: FnMut(f64, &SVector<f64, N>),
-{
-    let times: Option<&[f64]> = match &opts.output {
-        Output::Steps => None,
-        Output::Times(ts) => Some(ts),
-    };
-    match opts.method {
-        Method::Dop853 => {
-            let (rtol, atol) = (opts.rtol, opts.atol);
-            let rate_atol = opts.rate_atol.unwrap_or(atol);
-            // Per-3-vector weights (see `SimOptions`): y[0..3] is the angular velocity, y[3..6]
-            // γ, any further component (ψ) is weighted on its own.
-            let weights = move |y0: &SVector<f64, N>, y1: &SVector<f64, N>| {
-                let len = |at| stable_norm(&split3(y0, at)).max(stable_norm(&split3(y1, at)));
-                let (w_rate, w_gamma) = (rate_atol + rtol * len(0), atol + rtol * len(3));
-                SVector::<f64, N>::from_fn(|i, _| match i {
-                    0..=2 => w_rate,
-                    3..=5 => w_gamma,
-                    _ => atol + rtol * y0[i].abs().max(y1[i].abs()),
-                })
-            };
-            let cfg = dop853::Config {
-                weights: &weights,
-                h_max: opts.h_max.unwrap_or(f64::INFINITY),
-                h_init: opts.h_init,
-                max_steps: opts.max_steps,
-                dense: times.is_some(),
-            };
-            let mut next = 0;
-            match times {
-                None => record(0.0, &y0),
-                Some(ts) => {
-                    while next < ts.len() && ts[next] <= 0.0 {
-                        record(ts[next], &y0);
-                        next += 1;
-                    }
-                }
-            }
-            let counters = dop853::integrate(
-                |_t, y| field(y).map(|(d, _)| d),
-                0.0,
-                y0,
-                t_end,
-                &cfg,
-                |acc| {
-                    match (times, acc.dense) {
-                        (None, _) => record(acc.t, acc.y),
-                        (Some(ts), dense) => {
-                            while next < ts.len() && ts[next] <= acc.t {
-                                let tn = ts[next];
-                                match dense {
-                                    Some(d) if tn < acc.t => record(tn, &d.eval(tn)),
-                                    _ => record(tn, acc.y),
-                                }
-                                next += 1;
-                            }
-                        }
-                    }
-                    Ok(())
-                },
-            )?;
-            Ok(SimStats {
-                accepted_steps: counters.accepted,
-                rejected_steps: counters.rejected,
-                rhs_evaluations: counters.evaluations,
-            })
-        }
-        Method::LieRk4 { step } => {
-            // Segments [start, end] of equal sub-steps, recording at the end of each sub-step
-            // (Steps) or only at the end of the segment (Times).
-            let segments: Vec<f64> = match times {
-                None => vec![t_end],
-                Some(ts) => ts.to_vec(),
-            };
-            let mut total = 0.0;
-            let mut prev = 0.0;
-            for &end in &segments {
-                total += ((end - prev) / step).ceil();
-                prev = end;
-            }
-            if total > opts.max_steps as f64 {
-                // Reported before integrating: `steps` is the number the run would need.
-                return Err(RouthError::TooManySteps {
-                    t: t_end,
-                    steps: total as usize,
-                });
-            }
-            // The vector field at the start: surfaces errors even when nothing is integrated.
-            let (d0, w0) = field(&y0)?;
-            if !(d0.iter().all(|x| x.is_finite()) && w0.iter().all(|x| x.is_finite())) {
-                return Err(RouthError::NonFiniteState { t: 0.0 });
-            }
-            let mut stats = SimStats {
-                rhs_evaluations: 1,
-                ..SimStats::default()
-            };
-            if times.is_none() {
-                record(0.0, &y0);
-            }
-            let mut t = 0.0;
-            let mut y = y0;
-            for &end in &segments {
-                let n = ((end - t) / step).ceil() as usize;
-                let h = if n > 0 { (end - t) / n as f64 } else { 0.0 };
-                let start = t;
-                for i in 1..=n {
-                    y = lie::step(&mut field, &y, h)?;
-                    stats.accepted_steps += 1;
-                    stats.rhs_evaluations += 4;
-                    t = if i == n { end } else { start + i as f64 * h };
-                    if !y.iter().all(|x| x.is_finite()) {
-                        return Err(RouthError::NonFiniteState { t });
-                    }
-                    if times.is_none() {
-                        record(t, &y);
-                    }
-                }
-                t = end;
-                if times.is_some() {
-                    record(t, &y);
-                }
-            }
-            Ok(stats)
-        }
-    }
-}
-
 fn all_finite(v: &Vector3<f64>) -> bool {
     v.iter().all(|x| x.is_finite())
 }
@@ -488,10 +356,6 @@ fn too_large(what: &'static str, size: f64, equations: &str) -> RouthError {
              overflows f64 at the initial state"
         ),
     )
-}
-
-fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
-    Vector3::new(y[at], y[at + 1], y[at + 2])
 }
 
 /// Simulates the full equations of motion (8) from `(ω₀, γ₀)` at `t = 0` to `t_end`.
@@ -703,192 +567,4 @@ pub fn simulate_reduced<M: Routhian>(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::Matrix3;
-
-    /// A torque-free asymmetric rigid body with a hand-written `L = ½ωᵀIω`.
-    struct Free {
-        inertia: Matrix3<f64>,
-    }
-
-    impl Lagrangian for Free {
-        fn lagrangian(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> f64 {
-            0.5 * w.dot(&(self.inertia * w))
-        }
-        fn dl_domega(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
-            self.inertia * w
-        }
-        fn dl_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
-            Vector3::zeros()
-        }
-        fn d2l_domega2(&self, _g: &Vector3<f64>) -> Matrix3<f64> {
-            self.inertia
-        }
-        fn d2l_domega_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Matrix3<f64> {
-            Matrix3::zeros()
-        }
-    }
-
-    fn free() -> Free {
-        Free {
-            inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
-        }
-    }
-
-    #[test]
-    fn invalid_inputs_are_errors() {
-        let m = free();
-        let w = Vector3::new(1.0, 0.0, 0.0);
-        let g = Vector3::z();
-        let o = SimOptions::default();
-        let nan = f64::NAN;
-        assert!(matches!(
-            simulate_full(&m, Vector3::new(nan, 0.0, 0.0), g, 1.0, &o),
-            Err(RouthError::NonFinite { what: "omega0", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, Vector3::new(0.0, f64::INFINITY, 0.0), 1.0, &o),
-            Err(RouthError::NonFinite { what: "gamma0", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, g, nan, &o),
-            Err(RouthError::NonFinite { what: "t_end", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, g, -1.0, &o),
-            Err(RouthError::InvalidOption { what: "t_end", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, g * 1.1, 1.0, &o),
-            Err(RouthError::NonUnitGamma { .. })
-        ));
-        let bad = |o: SimOptions| simulate_full(&m, w, g, 1.0, &o);
-        assert!(matches!(
-            bad(SimOptions {
-                rtol: 0.0,
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption { what: "rtol", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                rtol: nan,
-                ..o.clone()
-            }),
-            Err(RouthError::NonFinite { what: "rtol", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                atol: -1.0,
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption { what: "atol", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                rate_atol: Some(0.0),
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption {
-                what: "rate_atol",
-                ..
-            })
-        ));
-        assert!(matches!(
-            bad(SimOptions::lie_rk4(0.0)),
-            Err(RouthError::InvalidOption { what: "step", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions::lie_rk4(nan)),
-            Err(RouthError::NonFinite { what: "step", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                h_max: Some(0.0),
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption { what: "h_max", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                max_steps: 0,
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption {
-                what: "max_steps",
-                ..
-            })
-        ));
-        assert!(matches!(
-            bad(o.clone().at_times(vec![0.5, 0.2])),
-            Err(RouthError::InvalidOption { what: "output", .. })
-        ));
-        assert!(matches!(
-            bad(o.clone().at_times(vec![0.5, 2.0])),
-            Err(RouthError::InvalidOption { what: "output", .. })
-        ));
-        let tumbling = Vector3::new(1.0, 0.5, 0.3);
-        assert!(matches!(
-            simulate_full(
-                &m,
-                tumbling,
-                g,
-                100.0,
-                &SimOptions {
-                    max_steps: 5,
-                    ..o.clone()
-                }
-            ),
-            Err(RouthError::TooManySteps { steps: 5, .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                max_steps: 5,
-                ..SimOptions::lie_rk4(0.01)
-            }),
-            Err(RouthError::TooManySteps { .. })
-        ));
-        // A kinetic form that is not positive definite.
-        let indefinite = Free {
-            inertia: Matrix3::from_diagonal(&Vector3::new(1.0, -2.0, 3.0)),
-        };
-        assert!(matches!(
-            simulate_full(&indefinite, w, g, 1.0, &o),
-            Err(RouthError::KineticNotPositiveDefinite { min_eigenvalue, .. }) if min_eigenvalue == -2.0
-        ));
-    }
-
-    #[test]
-    fn zero_length_run_records_the_initial_state() {
-        let m = free();
-        let w = Vector3::new(1.0, 0.5, 0.0);
-        for o in [SimOptions::default(), SimOptions::lie_rk4(0.1)] {
-            let tr = simulate_full(&m, w, Vector3::z(), 0.0, &o).unwrap();
-            assert_eq!(tr.t, vec![0.0]);
-            assert_eq!(tr.omega, vec![w]);
-            assert_eq!(tr.energy[0], 0.5 * (1.0 + 0.5));
-        }
-    }
-
-    /// Torque-free rotation about the stable major axis with a small perturbation: energy and
-    /// |Iω|² are integrals; the output times are honoured exactly by both methods.
-    #[test]
-    fn output_times_and_integrals() {
-        let m = free();
-        let w0 = Vector3::new(0.05, 0.1, 2.0);
-        let times: Vec<f64> = (0..=20).map(|i| i as f64 * 0.25).collect();
-        for o in [
-            SimOptions::with_tolerances(1e-11, 1e-13).at_times(times.clone()),
-            SimOptions::lie_rk4(0.01).at_times(times.clone()),
-        ] {
-            let tr = simulate_full(&m, w0, Vector3::z(), 5.0, &o).unwrap();
-            assert_eq!(tr.t, times);
-            let l0 = (m.inertia * w0).norm_squared();
-            for w in &tr.omega {
-                assert!(((m.inertia * w).norm_squared() - l0).abs() < 1e-8);
-            }
-            assert!(tr.energy_drift() < 1e-8, "{:e}", tr.energy_drift());
-        }
-    }
-}
+mod tests;
