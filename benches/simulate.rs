@@ -14,7 +14,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use ode_solvers::{Dop853, SVector as OdeVector, System};
+use ode_solvers::{Dop853, OutputType, SVector as OdeVector, System};
 use routh::{simulate_full, simulate_reduced, Lagrangian, Routhian, SimOptions, Vector3};
 
 /// A heavy rigid body about a fixed point: principal moments `inertia`, centre of mass `com`.
@@ -82,7 +82,25 @@ fn ode_solvers_run<S: System<f64, State>>(
     g0: Vector3<f64>,
 ) -> (Vector3<f64>, usize) {
     let y0 = State::from_column_slice(&[w0.x, w0.y, w0.z, g0.x, g0.y, g0.z]);
-    let mut solver = Dop853::new(rhs, 0.0, T_END, T_END, y0, RTOL, ATOL);
+    // Sparse output (the end of every step), Hairer's default controller parameters.
+    let mut solver = Dop853::from_param(
+        rhs,
+        0.0,
+        T_END,
+        T_END,
+        y0,
+        RTOL,
+        ATOL,
+        0.9,
+        0.0,
+        0.333,
+        6.0,
+        T_END,
+        0.0,
+        100_000,
+        1000,
+        OutputType::Sparse,
+    );
     let stats = solver.integrate().expect("ode_solvers");
     let y = solver
         .results()
