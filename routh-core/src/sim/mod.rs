@@ -12,17 +12,24 @@
 //! `|γ| = 1` to round-off over arbitrarily long runs. (The crate `ode_solvers` was considered:
 //! it depends on another major version of nalgebra and has no fallible right-hand side, so a
 //! compact DOP853 is implemented here instead, following Hairer's `dop853.f`.)
+//!
+//! Layout: this module holds the options, the trajectory types and the two drivers; `drive` the
+//! integration loop over both methods, `field` the vector fields, `dop853` (with `tableau`) and
+//! `lie` the two steppers.
 
 mod dop853;
+mod drive;
 mod field;
 mod lie;
 mod tableau;
 
 pub use field::{full_vector_field, reduced_vector_field};
 
+use drive::{drive, split3};
+
 use nalgebra::{SVector, Vector3};
 
-use crate::validate::{check_finite, unit_gamma};
+use crate::validate::{check_finite, stable_norm, unit_gamma};
 use crate::{Lagrangian, RouthError, Routhian};
 
 /// The integration method.
@@ -56,13 +63,37 @@ pub enum Output {
 /// Options of [`simulate_full`] and [`simulate_reduced`].
 ///
 /// Build with struct-update syntax, e.g. `SimOptions { rtol: 1e-12, ..SimOptions::default() }`.
+///
+/// # Error control and units
+///
+/// [`Method::Dop853`] accepts a step when the RMS over the state of `eᵢ/skᵢ` is at most 1, where
+/// `eᵢ` is the local error estimate. The weights are taken per 3-vector, by Euclidean length, so
+/// that rotating the body frame changes nothing:
+///
+/// - angular velocity ω (full) or Ω (reduced): `sk = rate_atol + rtol·|ω|`;
+/// - γ: `sk = atol + rtol·|γ|`;
+/// - ψ (reduced): `sk = atol + rtol·|ψ|`.
+///
+/// `rtol` has no units. γ and ψ have none either, so neither has `atol`. The angular velocity
+/// has the units 1/time, and so does `rate_atol`: the same motion in a unit of time s times
+/// smaller (ω s times larger, output times s times larger, `t_end` too) takes the same steps
+/// and gives the same γ at the same physical times when `rate_atol` is multiplied by s and the
+/// rest is kept. Scaling the inertia, the gyroscopic term, the potential and p_ψ by one factor
+/// (the same Lagrangian in other units of energy) changes no state variable and needs no change
+/// of the options.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SimOptions {
-    /// Relative tolerance of [`Method::Dop853`] (Hairer's mixed norm, per component
-    /// `atol + rtol·|y|`). Must be finite and at least `10·ε ≈ 2.2e-15`. Default `1e-10`.
+    /// Relative tolerance of [`Method::Dop853`]. Must be finite and at least
+    /// `10·ε ≈ 2.2e-15`. Default `1e-10`.
     pub rtol: f64,
-    /// Absolute tolerance of [`Method::Dop853`]. Must be finite and positive. Default `1e-12`.
+    /// Absolute tolerance of [`Method::Dop853`] for γ and ψ (dimensionless), and for the angular
+    /// velocity unless [`rate_atol`](Self::rate_atol) is given. Finite and positive. Default
+    /// `1e-12`.
     pub atol: f64,
+    /// Absolute tolerance of [`Method::Dop853`] for the angular velocity (ω or Ω), in the units
+    /// of the angular velocity (1/time). `None`: [`atol`](Self::atol). Finite and positive if
+    /// given. Default `None`.
+    pub rate_atol: Option<f64>,
     /// The integrator. Default [`Method::Dop853`].
     pub method: Method,
     /// Largest step of [`Method::Dop853`] (`None`: unbounded). Must be positive if given.
@@ -80,6 +111,7 @@ impl Default for SimOptions {
         SimOptions {
             rtol: 1e-10,
             atol: 1e-12,
+            rate_atol: None,
             method: Method::Dop853,
             h_max: None,
             h_init: None,
@@ -264,6 +296,12 @@ fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
             format!("must be > 0 (got {:e})", opts.atol),
         ));
     }
+    if let Some(a) = opts.rate_atol {
+        check_finite("rate_atol", &[a])?;
+        if a <= 0.0 {
+            return Err(invalid("rate_atol", format!("must be > 0 (got {a:e})")));
+        }
+    }
     if let Method::LieRk4 { step } = opts.method {
         check_finite("step", &[step])?;
         if step <= 0.0 {
@@ -305,135 +343,19 @@ fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
     Ok(())
 }
 
-/// Integrates `y' = field(y).0` from `y0` at `t = 0` to `t_end` with the chosen method and
-/// output, calling `record` at every output point. `field` returns `(ẏ, w)` with `w` the
-/// angular velocity that moves γ (`y[3..6]`): `γ̇ = w × γ`.
-fn drive<const N: usize, F, R>(
-    mut field: F,
-    y0: SVector<f64, N>,
-    t_end: f64,
-    opts: &SimOptions,
-    mut record: R,
-) -> Result<SimStats, RouthError>
-where
-    F: FnMut(&SVector<f64, N>) -> Result<(SVector<f64, N>, Vector3<f64>), RouthError>,
-    R: FnMut(f64, &SVector<f64, N>),
-{
-    let times: Option<&[f64]> = match &opts.output {
-        Output::Steps => None,
-        Output::Times(ts) => Some(ts),
-    };
-    match opts.method {
-        Method::Dop853 => {
-            let cfg = dop853::Config {
-                rtol: opts.rtol,
-                atol: opts.atol,
-                h_max: opts.h_max.unwrap_or(f64::INFINITY),
-                h_init: opts.h_init,
-                max_steps: opts.max_steps,
-                dense: times.is_some(),
-            };
-            let mut next = 0;
-            match times {
-                None => record(0.0, &y0),
-                Some(ts) => {
-                    while next < ts.len() && ts[next] <= 0.0 {
-                        record(ts[next], &y0);
-                        next += 1;
-                    }
-                }
-            }
-            let counters = dop853::integrate(
-                |_t, y| field(y).map(|(d, _)| d),
-                0.0,
-                y0,
-                t_end,
-                &cfg,
-                |acc| {
-                    match (times, acc.dense) {
-                        (None, _) => record(acc.t, acc.y),
-                        (Some(ts), dense) => {
-                            while next < ts.len() && ts[next] <= acc.t {
-                                let tn = ts[next];
-                                match dense {
-                                    Some(d) if tn < acc.t => record(tn, &d.eval(tn)),
-                                    _ => record(tn, acc.y),
-                                }
-                                next += 1;
-                            }
-                        }
-                    }
-                    Ok(())
-                },
-            )?;
-            Ok(SimStats {
-                accepted_steps: counters.accepted,
-                rejected_steps: counters.rejected,
-                rhs_evaluations: counters.evaluations,
-            })
-        }
-        Method::LieRk4 { step } => {
-            // Segments [start, end] of equal sub-steps, recording at the end of each sub-step
-            // (Steps) or only at the end of the segment (Times).
-            let segments: Vec<f64> = match times {
-                None => vec![t_end],
-                Some(ts) => ts.to_vec(),
-            };
-            let mut total = 0.0;
-            let mut prev = 0.0;
-            for &end in &segments {
-                total += ((end - prev) / step).ceil();
-                prev = end;
-            }
-            if total > opts.max_steps as f64 {
-                // Reported before integrating: `steps` is the number the run would need.
-                return Err(RouthError::TooManySteps {
-                    t: t_end,
-                    steps: total as usize,
-                });
-            }
-            // The vector field at the start: surfaces errors even when nothing is integrated.
-            let (d0, w0) = field(&y0)?;
-            if !(d0.iter().all(|x| x.is_finite()) && w0.iter().all(|x| x.is_finite())) {
-                return Err(RouthError::NonFiniteState { t: 0.0 });
-            }
-            let mut stats = SimStats {
-                rhs_evaluations: 1,
-                ..SimStats::default()
-            };
-            if times.is_none() {
-                record(0.0, &y0);
-            }
-            let mut t = 0.0;
-            let mut y = y0;
-            for &end in &segments {
-                let n = ((end - t) / step).ceil() as usize;
-                let h = if n > 0 { (end - t) / n as f64 } else { 0.0 };
-                let start = t;
-                for i in 1..=n {
-                    y = lie::step(&mut field, &y, h)?;
-                    stats.accepted_steps += 1;
-                    stats.rhs_evaluations += 4;
-                    t = if i == n { end } else { start + i as f64 * h };
-                    if !y.iter().all(|x| x.is_finite()) {
-                        return Err(RouthError::NonFiniteState { t });
-                    }
-                    if times.is_none() {
-                        record(t, &y);
-                    }
-                }
-                t = end;
-                if times.is_some() {
-                    record(t, &y);
-                }
-            }
-            Ok(stats)
-        }
-    }
+fn all_finite(v: &Vector3<f64>) -> bool {
+    v.iter().all(|x| x.is_finite())
 }
 
-fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
-    Vector3::new(y[at], y[at + 1], y[at + 2])
+/// A finite input so large that the vector field overflows at the initial state.
+fn too_large(what: &'static str, size: f64, equations: &str) -> RouthError {
+    invalid(
+        what,
+        format!(
+            "|{what}| = {size:e} is too large for this model: the vector field of {equations} \
+             overflows f64 at the initial state"
+        ),
+    )
 }
 
 /// Simulates the full equations of motion (8) from `(ω₀, γ₀)` at `t = 0` to `t_end`.
@@ -450,7 +372,9 @@ fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
 /// # Errors
 ///
 /// [`RouthError::NonFinite`] for non-finite `ω₀`, `γ₀`, `t_end`, tolerances or options;
-/// [`RouthError::InvalidOption`] for `t_end < 0` or invalid [`SimOptions`];
+/// [`RouthError::InvalidOption`] for `t_end < 0`, invalid [`SimOptions`], or a finite `ω₀` so
+/// large that the vector field overflows (`what: "omega0"`); [`RouthError::NonFiniteModel`]
+/// when the vector field is not finite at `(0, γ₀)`;
 /// [`RouthError::NonUnitGamma`]; [`RouthError::KineticNotPositiveDefinite`] when `J(γ)` has no
 /// Cholesky factor (at γ₀ or later); [`RouthError::StepSizeUnderflow`],
 /// [`RouthError::TooManySteps`] and [`RouthError::NonFiniteState`] from the integrator.
@@ -508,6 +432,20 @@ pub fn simulate_full<M: Lagrangian>(
     check_finite("gamma0", gamma0.as_slice())?;
     validate(opts, t_end)?;
     check_unit_gamma(&gamma0)?;
+    // A finite input for which the vector field overflows: say which input is too large.
+    let finite_at = |w: &Vector3<f64>| {
+        full_vector_field(model, w, &gamma0).map(|(a, b)| all_finite(&a) && all_finite(&b))
+    };
+    if !finite_at(&omega0)? {
+        return Err(if finite_at(&Vector3::zeros())? {
+            too_large("omega0", stable_norm(&omega0), "(8)")
+        } else {
+            RouthError::NonFiniteModel {
+                what: "full vector field (8) at omega = 0",
+                gamma: [gamma0.x, gamma0.y, gamma0.z],
+            }
+        });
+    }
     let mut y0 = SVector::<f64, 6>::zeros();
     y0.fixed_rows_mut::<3>(0).copy_from(&omega0);
     y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
@@ -553,9 +491,10 @@ pub fn simulate_full<M: Lagrangian>(
 ///
 /// # Errors
 ///
-/// As [`simulate_full`], plus [`RouthError::DegenerateVerticalInertia`] when
+/// As [`simulate_full`] (an overflowing input is named `"p_psi"` or `"big_omega0"`), plus
+/// [`RouthError::DegenerateVerticalInertia`] when
 /// `γ₀ᵀJ(γ₀)γ₀ ≤ 0` (ψ̇ of (38) undefined), and
-/// [`RouthError::KineticNotPositiveDefinite`] when `∂²R/∂Ω² + γγᵀ` has no Cholesky factor.
+/// [`RouthError::SingularReducedKinetic`] when `∂²R/∂Ω² + cγγᵀ` has no Cholesky factor.
 pub fn simulate_reduced<M: Routhian>(
     model: &M,
     big_omega0: Vector3<f64>,
@@ -575,6 +514,23 @@ pub fn simulate_reduced<M: Routhian>(
         return Err(RouthError::DegenerateVerticalInertia {
             gamma: [gamma0.x, gamma0.y, gamma0.z],
             value: vertical_inertia,
+        });
+    }
+    let finite_at = |w: &Vector3<f64>, p: f64| {
+        reduced_vector_field(model, w, &gamma0, p)
+            .map(|(a, b, c)| all_finite(&a) && all_finite(&b) && c.is_finite())
+    };
+    if !finite_at(&big_omega0, p_psi)? {
+        let zero = Vector3::zeros();
+        return Err(if !finite_at(&zero, 0.0)? {
+            RouthError::NonFiniteModel {
+                what: "reduced vector field (13) at Omega = 0, p_psi = 0",
+                gamma: [gamma0.x, gamma0.y, gamma0.z],
+            }
+        } else if !finite_at(&zero, p_psi)? {
+            too_large("p_psi", p_psi.abs(), "(13)")
+        } else {
+            too_large("big_omega0", stable_norm(&big_omega0), "(13)")
         });
     }
     let mut y0 = SVector::<f64, 7>::zeros();
@@ -611,182 +567,4 @@ pub fn simulate_reduced<M: Routhian>(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::Matrix3;
-
-    /// A torque-free asymmetric rigid body with a hand-written `L = ½ωᵀIω`.
-    struct Free {
-        inertia: Matrix3<f64>,
-    }
-
-    impl Lagrangian for Free {
-        fn lagrangian(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> f64 {
-            0.5 * w.dot(&(self.inertia * w))
-        }
-        fn dl_domega(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
-            self.inertia * w
-        }
-        fn dl_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
-            Vector3::zeros()
-        }
-        fn d2l_domega2(&self, _g: &Vector3<f64>) -> Matrix3<f64> {
-            self.inertia
-        }
-        fn d2l_domega_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Matrix3<f64> {
-            Matrix3::zeros()
-        }
-    }
-
-    fn free() -> Free {
-        Free {
-            inertia: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
-        }
-    }
-
-    #[test]
-    fn invalid_inputs_are_errors() {
-        let m = free();
-        let w = Vector3::new(1.0, 0.0, 0.0);
-        let g = Vector3::z();
-        let o = SimOptions::default();
-        let nan = f64::NAN;
-        assert!(matches!(
-            simulate_full(&m, Vector3::new(nan, 0.0, 0.0), g, 1.0, &o),
-            Err(RouthError::NonFinite { what: "omega0", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, Vector3::new(0.0, f64::INFINITY, 0.0), 1.0, &o),
-            Err(RouthError::NonFinite { what: "gamma0", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, g, nan, &o),
-            Err(RouthError::NonFinite { what: "t_end", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, g, -1.0, &o),
-            Err(RouthError::InvalidOption { what: "t_end", .. })
-        ));
-        assert!(matches!(
-            simulate_full(&m, w, g * 1.1, 1.0, &o),
-            Err(RouthError::NonUnitGamma { .. })
-        ));
-        let bad = |o: SimOptions| simulate_full(&m, w, g, 1.0, &o);
-        assert!(matches!(
-            bad(SimOptions {
-                rtol: 0.0,
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption { what: "rtol", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                rtol: nan,
-                ..o.clone()
-            }),
-            Err(RouthError::NonFinite { what: "rtol", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                atol: -1.0,
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption { what: "atol", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions::lie_rk4(0.0)),
-            Err(RouthError::InvalidOption { what: "step", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions::lie_rk4(nan)),
-            Err(RouthError::NonFinite { what: "step", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                h_max: Some(0.0),
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption { what: "h_max", .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                max_steps: 0,
-                ..o.clone()
-            }),
-            Err(RouthError::InvalidOption {
-                what: "max_steps",
-                ..
-            })
-        ));
-        assert!(matches!(
-            bad(o.clone().at_times(vec![0.5, 0.2])),
-            Err(RouthError::InvalidOption { what: "output", .. })
-        ));
-        assert!(matches!(
-            bad(o.clone().at_times(vec![0.5, 2.0])),
-            Err(RouthError::InvalidOption { what: "output", .. })
-        ));
-        let tumbling = Vector3::new(1.0, 0.5, 0.3);
-        assert!(matches!(
-            simulate_full(
-                &m,
-                tumbling,
-                g,
-                100.0,
-                &SimOptions {
-                    max_steps: 5,
-                    ..o.clone()
-                }
-            ),
-            Err(RouthError::TooManySteps { steps: 5, .. })
-        ));
-        assert!(matches!(
-            bad(SimOptions {
-                max_steps: 5,
-                ..SimOptions::lie_rk4(0.01)
-            }),
-            Err(RouthError::TooManySteps { .. })
-        ));
-        // A kinetic form that is not positive definite.
-        let indefinite = Free {
-            inertia: Matrix3::from_diagonal(&Vector3::new(1.0, -2.0, 3.0)),
-        };
-        assert!(matches!(
-            simulate_full(&indefinite, w, g, 1.0, &o),
-            Err(RouthError::KineticNotPositiveDefinite { min_eigenvalue, .. }) if min_eigenvalue == -2.0
-        ));
-    }
-
-    #[test]
-    fn zero_length_run_records_the_initial_state() {
-        let m = free();
-        let w = Vector3::new(1.0, 0.5, 0.0);
-        for o in [SimOptions::default(), SimOptions::lie_rk4(0.1)] {
-            let tr = simulate_full(&m, w, Vector3::z(), 0.0, &o).unwrap();
-            assert_eq!(tr.t, vec![0.0]);
-            assert_eq!(tr.omega, vec![w]);
-            assert_eq!(tr.energy[0], 0.5 * (1.0 + 0.5));
-        }
-    }
-
-    /// Torque-free rotation about the stable major axis with a small perturbation: energy and
-    /// |Iω|² are integrals; the output times are honoured exactly by both methods.
-    #[test]
-    fn output_times_and_integrals() {
-        let m = free();
-        let w0 = Vector3::new(0.05, 0.1, 2.0);
-        let times: Vec<f64> = (0..=20).map(|i| i as f64 * 0.25).collect();
-        for o in [
-            SimOptions::with_tolerances(1e-11, 1e-13).at_times(times.clone()),
-            SimOptions::lie_rk4(0.01).at_times(times.clone()),
-        ] {
-            let tr = simulate_full(&m, w0, Vector3::z(), 5.0, &o).unwrap();
-            assert_eq!(tr.t, times);
-            let l0 = (m.inertia * w0).norm_squared();
-            for w in &tr.omega {
-                assert!(((m.inertia * w).norm_squared() - l0).abs() < 1e-8);
-            }
-            assert!(tr.energy_drift() < 1e-8, "{:e}", tr.energy_drift());
-        }
-    }
-}
+mod tests;
