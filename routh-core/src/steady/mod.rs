@@ -299,16 +299,62 @@ pub fn steady_motions_with<M: Routhian>(
     p_psi: f64,
     opts: &SearchOptions,
 ) -> Result<Vec<SteadyMotion>, RouthError> {
+    Ok(steady_motions_checked_with(model, p_psi, opts)?.motions)
+}
+
+/// The steady motions of [`steady_motions`] with the outcome of its Morse self-check.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchResult {
+    /// The steady motions, as returned by [`steady_motions`].
+    pub motions: Vec<SteadyMotion>,
+    /// The sum of the indices of the isolated steady motions (`+1` at a minimum or a maximum of
+    /// `U_r`, `−1` at a saddle; at a degenerate isolated point, the winding number of the gradient
+    /// of `U_r` on a small circle around it), closed curves counting 0. By Poincaré–Hopf it is
+    /// χ(S²) = 2 when every critical point was found. `None` when it could not be computed: a
+    /// two-dimensional set of critical points, a curve that did not close, or a degenerate point
+    /// whose index could not be resolved.
+    pub euler_characteristic: Option<i64>,
+    /// `true` when the count is reconciled: `euler_characteristic == Some(2)`, or `U_r` is
+    /// constant on the sphere (every γ is a steady motion, reported once). `false` means that
+    /// critical points were probably missed or mis-merged even after the refined second search:
+    /// do not trust the list as complete.
+    pub consistent: bool,
+}
+
+/// [`steady_motions`] with its self-check: the motions with the index sum of the Morse relation
+/// and whether it is reconciled with χ(S²) = 2 ([`SearchResult`]). Use it whenever completeness of
+/// the list matters; [`steady_motions`] returns the same motions without the flag.
+///
+/// Errors: as [`steady_motions`].
+pub fn steady_motions_checked<M: Routhian>(
+    model: &M,
+    p_psi: f64,
+) -> Result<SearchResult, RouthError> {
+    steady_motions_checked_with(model, p_psi, &SearchOptions::default())
+}
+
+/// [`steady_motions_checked`] with explicit [`SearchOptions`].
+///
+/// Errors: as [`steady_motions_with`].
+pub fn steady_motions_checked_with<M: Routhian>(
+    model: &M,
+    p_psi: f64,
+    opts: &SearchOptions,
+) -> Result<SearchResult, RouthError> {
     check_finite("p_psi", &[p_psi])?;
     opts.validate()?;
-    let points = search::global(model, p_psi, opts)?;
-    let mut out = Vec::with_capacity(points.len());
-    for (gamma, isolated) in points {
+    let outcome = search::global(model, p_psi, opts)?;
+    let mut motions = Vec::with_capacity(outcome.points.len());
+    for (gamma, isolated) in outcome.points {
         check_kinetic(model, &gamma)?;
-        out.push(record(model, &gamma, p_psi, isolated)?);
+        motions.push(record(model, &gamma, p_psi, isolated)?);
     }
-    out.sort_by(|a, b| a.amended_potential.total_cmp(&b.amended_potential));
-    Ok(out)
+    motions.sort_by(|a, b| a.amended_potential.total_cmp(&b.amended_potential));
+    Ok(SearchResult {
+        motions,
+        euler_characteristic: outcome.euler,
+        consistent: outcome.consistent,
+    })
 }
 
 /// The steady motion nearest (in the sense of Newton's method on the sphere) to the guess
