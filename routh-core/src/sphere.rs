@@ -166,8 +166,13 @@ pub(crate) fn restricted_hessian(
     mu: f64,
     d2r_dgamma2: &Matrix3<f64>,
 ) -> Matrix2<f64> {
-    let k = p.transpose() * (Matrix3::from_diagonal_element(mu) - d2r_dgamma2) * p;
-    0.5 * (k + k.transpose())
+    // Written out (no 3×3 temporaries): K_ij = μ δ_ij − p_iᵀ H p_j, symmetrised.
+    let u = Vector3::new(p[(0, 0)], p[(1, 0)], p[(2, 0)]);
+    let v = Vector3::new(p[(0, 1)], p[(1, 1)], p[(2, 1)]);
+    let hu = d2r_dgamma2 * u;
+    let hv = d2r_dgamma2 * v;
+    let k01 = -0.5 * (u.dot(&hv) + v.dot(&hu));
+    Matrix2::new(mu - u.dot(&hu), k01, k01, mu - v.dot(&hv))
 }
 
 /// Eigen-decomposition of a symmetric 2×2 matrix, eigenvalues ascending.

@@ -152,12 +152,19 @@ impl fmt::Display for StabilityReport {
 ///
 /// # Verdict
 ///
-/// - [`Stability::Degenerate`] when an eigenvalue of `K` is zero within
-///   [`ClassifyOptions::zero_eigenvalue_tol`] times the local scale
-///   `s = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (ERRATA E8: the parity argument then says nothing; circles of
-///   steady motions of a symmetric body are always in this case). The scale bounds the terms
-///   whose difference forms `K` (γ is dimensionless, so all of them are energies); round-off in
-///   `K` is a few `ε·s`.
+/// - `γ` must be a steady motion: the Newton step `|K⁻¹g|` to the nearest critical point (`g` the
+///   tangential gradient of `U_r`; 0 when `|g| ≤ 1024 ε |∂R/∂γ|`, round-off) must not exceed
+///   [`ClassifyOptions::steady_tol`] (radians, default `1e−6`), otherwise
+///   [`RouthError::NotASteadyMotion`].
+/// - An eigenvalue κ of `K` is zero when `|κ| ≤ max(`[`ClassifyOptions::zero_eigenvalue_tol`]` ·
+///   ‖K‖_F, 1024 ε · s_raw)`, `s_raw = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`: relative to the restricted form
+///   itself (invariant under adding `c|γ|²` to `U`, which changes `∂R/∂γ` and `∂²R/∂γ²` but not
+///   `K`), with the raw scale only as a round-off floor.
+/// - With a zero eigenvalue, `det K = c₀ ≈ 0` and `f₂ ≈ λ²(c₄λ² + c₂)`: if `c₂ < 0` beyond its
+///   perturbation by the tolerance on `K`, `f₂` has the real root `√(−c₂/c₄) > 0` whatever the
+///   sign of the zero eigenvalue, a proven instability: [`Stability::Unstable`]. Otherwise
+///   [`Stability::Degenerate`] (ERRATA E8: the parity argument then says nothing; circles of
+///   steady motions of a symmetric body are in this case unless `f₂` proves an instability).
 /// - Otherwise, with `d` the degree of instability: `d = 0` ⇒ [`Stability::SecularlyStable`]
 ///   (section 4); `d = 1` ⇒ [`Stability::Unstable`] (odd degree, section 5); `d = 2` ⇒
 ///   [`Stability::GyroscopicallyStabilized`] when the quadratic `c₄s² + c₂s + c₀` has two distinct
@@ -174,7 +181,8 @@ impl fmt::Display for StabilityReport {
 /// Errors: [`RouthError::NonFinite`] for non-finite `p_psi` or γ (or non-finite derivatives of the
 /// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL);
 /// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
-/// `J(γ) = ∂²L/∂ω²` is not positive definite.
+/// `J(γ) = ∂²L/∂ω²` is not positive definite; [`RouthError::NotASteadyMotion`] when γ is not a
+/// critical point of `U_r` within [`ClassifyOptions::steady_tol`].
 ///
 /// ```
 /// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};

@@ -537,9 +537,16 @@ impl<M: Routhian> Search<'_, M> {
                 let mut xi = Vector2::zeros();
                 for i in 0..2 {
                     let (k, v) = (cur.t.values[i], cur.t.vectors[i]);
+                    let gi = cur.t.grad.dot(&v);
+                    // Along a zero eigenvalue with a gradient component within round-off (the
+                    // tangent of a curve of critical points) there is nothing to correct: a step
+                    // of noise/noise would slide along the curve.
+                    if k.abs() <= cur.t.zero_tol && gi.abs() <= cur.t.grad_floor() {
+                        continue;
+                    }
                     let den = k * k + lambda;
                     if den > 0.0 {
-                        xi -= (k * cur.t.grad.dot(&v) / den) * v;
+                        xi -= (k * gi / den) * v;
                     }
                 }
                 let len = xi.norm();
