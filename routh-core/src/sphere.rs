@@ -20,9 +20,144 @@ pub(crate) fn tangent_basis(gamma: &Vector3<f64>) -> Matrix3x2<f64> {
     Matrix3x2::from_columns(&[u, v])
 }
 
-/// The local scale `max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (see [`steady_motions`]).
-pub(crate) fn local_scale(dr_dgamma: &Vector3<f64>, d2r_dgamma2: &Matrix3<f64>) -> f64 {
-    dr_dgamma.norm().max(d2r_dgamma2.norm())
+/// Round-off floor, relative to the raw scale `max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`, under which the
+/// tangential quantities `g` and `K` are indistinguishable from zero. They are differences of
+/// terms of the raw size (the radial parts cancel exactly in `K`, not in floating point), so their
+/// round-off is a few `ε` of it; `1024 ε ≈ 2.3e−13` leaves a wide margin for round-off inside the
+/// model.
+pub(crate) const ROUND: f64 = 1024.0 * f64::EPSILON;
+
+/// The realistic round-off of the tangential gradient relative to `|∂R/∂γ|` (a few ulps), used
+/// to estimate how precisely a converged critical point is located.
+pub(crate) const NOISE: f64 = 16.0 * f64::EPSILON;
+
+/// The tangential (Riemannian) quantities of the amended potential `U_r = −R(0, γ, p_ψ)` at a
+/// unit γ, with the scales the tests of the search and of `classify` are relative to.
+///
+/// Everything here except the round-off floors is invariant under adding `c|γ|²` to `U` (which
+/// changes `∂R/∂γ` by a radial vector and `∂²R/∂γ²` by `2cE`, and `μE − ∂²R/∂γ²` not at all) and
+/// scales linearly when the model is multiplied by a constant.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tangential {
+    /// `P`: orthonormal basis of γ^⊥.
+    pub basis: Matrix3x2<f64>,
+    /// Riemannian gradient `Pᵀ(−∂R/∂γ)` of `U_r`.
+    pub grad: Vector2<f64>,
+    /// `|g|`.
+    pub grad_norm: f64,
+    /// Eigenvalues (ascending) of the restricted second variation `K = Pᵀ(μE − ∂²R/∂γ²)P`
+    /// (62)–(63).
+    pub values: [f64; 2],
+    /// Orthonormal eigenvectors of `K`.
+    pub vectors: [Vector2<f64>; 2],
+    /// `‖K‖_F`: the scale of the restricted form itself.
+    pub knorm: f64,
+    /// `|∂R/∂γ|` (radial part included): the size of the terms whose difference is `g`.
+    pub raw_grad: f64,
+    /// `max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`: the size of the terms whose difference is `K`.
+    pub raw: f64,
+    /// The threshold under which an eigenvalue of `K` is zero: `rel · ‖K‖_F` (`rel` the relative
+    /// zero-eigenvalue tolerance), never below the round-off floor [`ROUND`]` · raw`.
+    pub zero_tol: f64,
+    /// The Newton step `−K⁻¹g` in the tangent plane (radians), with the eigenvalues of `K` below
+    /// `zero_tol` replaced by that threshold (and a component of `g` within round-off along them
+    /// dropped): an estimate of the distance to the nearest critical point that is never small
+    /// where `g` is not zero but `K` is (a flat region).
+    pub step: Vector2<f64>,
+    /// `|step|` (`+∞` if it is not finite).
+    pub step_len: f64,
+    /// The residual of (33) as a distance on the sphere: 0 when `|g|` is within round-off
+    /// ([`Self::grad_floor`]), otherwise `step_len`. Invariant under adding `c|γ|²` to `U` and
+    /// under multiplying the model by a constant.
+    pub residual: f64,
+}
+
+impl Tangential {
+    /// The tangential quantities at the unit vector γ; `rel` is the relative tolerance for a zero
+    /// eigenvalue of `K`.
+    pub(crate) fn new(
+        gamma: &Vector3<f64>,
+        dr_dgamma: &Vector3<f64>,
+        d2r_dgamma2: &Matrix3<f64>,
+        rel: f64,
+    ) -> Self {
+        let basis = tangent_basis(gamma);
+        let mu = dr_dgamma.dot(gamma);
+        let hess = restricted_hessian(&basis, mu, d2r_dgamma2);
+        let e = sym2_eigen(&hess);
+        let raw_grad = norm3(dr_dgamma.x, dr_dgamma.y, dr_dgamma.z);
+        let h2: f64 = d2r_dgamma2.iter().map(|x| x * x).sum();
+        let k2 = hess[(0, 0)].powi(2) + 2.0 * hess[(0, 1)].powi(2) + hess[(1, 1)].powi(2);
+        let (hnorm, knorm) = if h2.is_normal() || h2 == 0.0 {
+            (h2.sqrt(), k2.sqrt())
+        } else {
+            (d2r_dgamma2.norm(), hess.norm())
+        };
+        let raw = raw_grad.max(hnorm);
+        let grad = -(basis.transpose() * dr_dgamma);
+        let grad_norm = grad.norm();
+        let zero_tol = (rel * knorm).max(ROUND * raw);
+        let gf = ROUND * raw_grad;
+        let mut step = Vector2::zeros();
+        for i in 0..2 {
+            let v = e.vectors[i];
+            let gi = grad.dot(&v);
+            let k = e.values[i];
+            let c = if k.abs() > zero_tol {
+                -gi / k
+            } else if gi.abs() <= gf {
+                0.0
+            } else if zero_tol > 0.0 {
+                -gi / zero_tol
+            } else {
+                // K = 0 and ∂R/∂γ = 0 exactly, but g ≠ 0: cannot happen (|g| ≤ |∂R/∂γ|).
+                f64::INFINITY
+            };
+            step += c * v;
+        }
+        let step_len = match step.norm() {
+            l if l.is_finite() => l,
+            _ => f64::INFINITY,
+        };
+        let residual = if grad_norm <= gf { 0.0 } else { step_len };
+        Tangential {
+            basis,
+            grad,
+            grad_norm,
+            values: e.values,
+            vectors: e.vectors,
+            knorm,
+            raw_grad,
+            raw,
+            zero_tol,
+            step,
+            step_len,
+            residual,
+        }
+    }
+
+    /// The threshold under which the gradient is zero within round-off: [`ROUND`]` · |∂R/∂γ|`.
+    pub(crate) fn grad_floor(&self) -> f64 {
+        ROUND * self.raw_grad
+    }
+
+    /// Number of eigenvalues of `K` that are zero within [`Self::zero_tol`].
+    pub(crate) fn zero_count(&self) -> usize {
+        self.values
+            .iter()
+            .filter(|k| k.abs() <= self.zero_tol)
+            .count()
+    }
+}
+
+/// `|(x, y, z)|` without the cost of `hypot` when no overflow or underflow is possible.
+fn norm3(x: f64, y: f64, z: f64) -> f64 {
+    let s = x * x + y * y + z * z;
+    if s.is_normal() || s == 0.0 && x == 0.0 && y == 0.0 && z == 0.0 {
+        s.sqrt()
+    } else {
+        Vector3::new(x, y, z).norm()
+    }
 }
 
 /// The restricted second variation `Pᵀ(μE − ∂²R/∂γ²)P` (62)–(63), symmetrised.
@@ -31,8 +166,13 @@ pub(crate) fn restricted_hessian(
     mu: f64,
     d2r_dgamma2: &Matrix3<f64>,
 ) -> Matrix2<f64> {
-    let k = p.transpose() * (Matrix3::from_diagonal_element(mu) - d2r_dgamma2) * p;
-    0.5 * (k + k.transpose())
+    // Written out (no 3×3 temporaries): K_ij = μ δ_ij − p_iᵀ H p_j, symmetrised.
+    let u = Vector3::new(p[(0, 0)], p[(1, 0)], p[(2, 0)]);
+    let v = Vector3::new(p[(0, 1)], p[(1, 1)], p[(2, 1)]);
+    let hu = d2r_dgamma2 * u;
+    let hv = d2r_dgamma2 * v;
+    let k01 = -0.5 * (u.dot(&hv) + v.dot(&hu));
+    Matrix2::new(mu - u.dot(&hu), k01, k01, mu - v.dot(&hv))
 }
 
 /// Eigen-decomposition of a symmetric 2×2 matrix, eigenvalues ascending.
@@ -45,7 +185,13 @@ pub(crate) struct Eigen2 {
 pub(crate) fn sym2_eigen(k: &Matrix2<f64>) -> Eigen2 {
     let (a, b, c) = (k[(0, 0)], k[(0, 1)], k[(1, 1)]);
     let m = 0.5 * (a + c);
-    let d = (0.5 * (a - c)).hypot(b);
+    let h = 0.5 * (a - c);
+    let d2 = h * h + b * b;
+    let d = if d2.is_normal() || (h == 0.0 && b == 0.0) {
+        d2.sqrt()
+    } else {
+        h.hypot(b)
+    };
     // The eigenvalue of larger magnitude by the direct formula, the other from the determinant
     // when that avoids cancellation.
     let (lo, hi) = if d == 0.0 {

@@ -9,7 +9,7 @@ use nalgebra::{Complex, Vector3};
 
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::sphere::{local_scale, restricted_hessian, sym2_eigen, tangent_basis};
+use crate::sphere::{tangent_basis, Tangential};
 use crate::steady::SteadyMotion;
 use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
 
@@ -17,10 +17,20 @@ use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamm
 #[derive(Debug, Clone, PartialEq)]
 pub struct ClassifyOptions {
     /// Relative tolerance under which an eigenvalue of the restricted second variation counts as
-    /// zero (errata E8), relative to the local scale (see [`classify`]). Default `1e−8`: round-off
-    /// in the eigenvalues is about `1e−15` of the scale and a converged steady motion is located
-    /// to about `1e−13`.
+    /// zero (errata E8), relative to the norm of the restricted form itself, with a round-off
+    /// floor (see [`classify`]). Default `1e−8`: round-off in the eigenvalues is about `1e−15` of
+    /// the scale and a converged steady motion is located to about `1e−13`.
     pub zero_eigenvalue_tol: f64,
+    /// Tolerance on the residual of (33) for `steady.gamma` to count as a steady motion, as a
+    /// distance on the sphere (radians): the length of the Newton step `K⁻¹g` to the nearest
+    /// critical point of `U_r` (`g` the tangential gradient, `K` the restricted form, see
+    /// [`classify`]). It is relative in the sense that it compares `g` with `K`, so it does not
+    /// change when the model is multiplied by a constant or `c|γ|²` is added to `U`. Beyond it,
+    /// [`classify`] fails with [`RouthError::NotASteadyMotion`]. Default `1e−6`: loose enough for a
+    /// point found by [`steady_motions`](crate::steady_motions) (`≤ 1e−10`) or typed with 9
+    /// digits, far below any distance between distinct steady motions that the analysis can
+    /// resolve.
+    pub steady_tol: f64,
     /// Relative tolerance on the discriminant of `f₂` in `λ²` under which its two roots in `λ²`
     /// are treated as a double root (the boundary of gyroscopic stabilisation). The discriminant
     /// is a difference of terms of size `c₂² + 4|c₄c₀|` computed to a few ulps, so the default
@@ -34,6 +44,7 @@ impl Default for ClassifyOptions {
         ClassifyOptions {
             zero_eigenvalue_tol: 1e-8,
             double_root_tol: 1e-10,
+            steady_tol: 1e-6,
         }
     }
 }
@@ -43,6 +54,7 @@ impl ClassifyOptions {
         for (what, v) in [
             ("zero_eigenvalue_tol", self.zero_eigenvalue_tol),
             ("double_root_tol", self.double_root_tol),
+            ("steady_tol", self.steady_tol),
         ] {
             if !(v > 0.0 && v < 1.0) {
                 return Err(RouthError::InvalidOption {
@@ -140,12 +152,19 @@ impl fmt::Display for StabilityReport {
 ///
 /// # Verdict
 ///
-/// - [`Stability::Degenerate`] when an eigenvalue of `K` is zero within
-///   [`ClassifyOptions::zero_eigenvalue_tol`] times the local scale
-///   `s = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` (ERRATA E8: the parity argument then says nothing; circles of
-///   steady motions of a symmetric body are always in this case). The scale bounds the terms
-///   whose difference forms `K` (γ is dimensionless, so all of them are energies); round-off in
-///   `K` is a few `ε·s`.
+/// - `γ` must be a steady motion: the Newton step `|K⁻¹g|` to the nearest critical point (`g` the
+///   tangential gradient of `U_r`; 0 when `|g| ≤ 1024 ε |∂R/∂γ|`, round-off) must not exceed
+///   [`ClassifyOptions::steady_tol`] (radians, default `1e−6`), otherwise
+///   [`RouthError::NotASteadyMotion`].
+/// - An eigenvalue κ of `K` is zero when `|κ| ≤ max(`[`ClassifyOptions::zero_eigenvalue_tol`]` ·
+///   ‖K‖_F, 1024 ε · s_raw)`, `s_raw = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`: relative to the restricted form
+///   itself (invariant under adding `c|γ|²` to `U`, which changes `∂R/∂γ` and `∂²R/∂γ²` but not
+///   `K`), with the raw scale only as a round-off floor.
+/// - With a zero eigenvalue, `det K = c₀ ≈ 0` and `f₂ ≈ λ²(c₄λ² + c₂)`: if `c₂ < 0` beyond its
+///   perturbation by the tolerance on `K`, `f₂` has the real root `√(−c₂/c₄) > 0` whatever the
+///   sign of the zero eigenvalue, a proven instability: [`Stability::Unstable`]. Otherwise
+///   [`Stability::Degenerate`] (ERRATA E8: the parity argument then says nothing; circles of
+///   steady motions of a symmetric body are in this case unless `f₂` proves an instability).
 /// - Otherwise, with `d` the degree of instability: `d = 0` ⇒ [`Stability::SecularlyStable`]
 ///   (section 4); `d = 1` ⇒ [`Stability::Unstable`] (odd degree, section 5); `d = 2` ⇒
 ///   [`Stability::GyroscopicallyStabilized`] when the quadratic `c₄s² + c₂s + c₀` has two distinct
@@ -162,7 +181,8 @@ impl fmt::Display for StabilityReport {
 /// Errors: [`RouthError::NonFinite`] for non-finite `p_psi` or γ (or non-finite derivatives of the
 /// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL);
 /// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
-/// `J(γ) = ∂²L/∂ω²` is not positive definite.
+/// `J(γ) = ∂²L/∂ω²` is not positive definite; [`RouthError::NotASteadyMotion`] when γ is not a
+/// critical point of `U_r` within [`ClassifyOptions::steady_tol`].
 ///
 /// ```
 /// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
@@ -248,21 +268,43 @@ pub fn classify_with<M: Routhian>(
     let bundle = model.bundle(&Vector3::zeros(), &gamma, p_psi);
     check_model_finite("dr_dgamma", bundle.dr_dgamma.as_slice(), &gamma)?;
     check_model_finite("d2r_dgamma2", bundle.d2r_dgamma2.as_slice(), &gamma)?;
-    let p = tangent_basis(&gamma);
-    let mu = bundle.dr_dgamma.dot(&gamma);
-    let k = restricted_hessian(&p, mu, &bundle.d2r_dgamma2);
-    let eigs = sym2_eigen(&k).values;
-    let scale = local_scale(&bundle.dr_dgamma, &bundle.d2r_dgamma2);
-    let zero_tol = opts.zero_eigenvalue_tol * scale;
+    let tan = Tangential::new(
+        &gamma,
+        &bundle.dr_dgamma,
+        &bundle.d2r_dgamma2,
+        opts.zero_eigenvalue_tol,
+    );
+    check_model_finite("restricted second variation", &[tan.knorm, tan.raw], &gamma)?;
+    // (33): γ must be a critical point of U_r on the sphere.
+    let residual = tan.residual;
+    if residual.is_nan() || residual > opts.steady_tol {
+        return Err(RouthError::NotASteadyMotion {
+            gamma: [gamma.x, gamma.y, gamma.z],
+            residual,
+            tol: opts.steady_tol,
+        });
+    }
+    let eigs = tan.values;
+    let zero_tol = tan.zero_tol;
     let any_zero = eigs.iter().any(|e| e.abs() <= zero_tol);
     let degree = eigs.iter().filter(|&&e| e < -zero_tol).count();
 
     // (64) on the tangent plane (ERRATA E5).
-    let [c4, c2, c0] = f2_coefficients(model, &gamma, p_psi)?;
+    let (coeffs, a_norm) = f2_parts(model, &gamma, p_psi)?;
+    let [c4, c2, c0] = coeffs;
     let roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
 
     let verdict = if any_zero {
-        Stability::Degenerate
+        // det K = c₀ is zero within the tolerance, so f₂ ≈ λ²(c₄λ² + c₂): a real root pair
+        // ±√(−c₂/c₄) persists whatever the sign of the zero eigenvalue when c₂ < 0 beyond the
+        // perturbation of c₂ by the tolerance on K (|Δc₂| ≤ 2‖PᵀAP‖·tol). That is a proven
+        // instability; otherwise the test is inconclusive (ERRATA E8).
+        let c2_scale = 2.0 * a_norm * zero_tol;
+        if c2 < -(c2_scale + 1e-12 * c2.abs()) {
+            Stability::Unstable
+        } else {
+            Stability::Degenerate
+        }
     } else {
         match degree {
             0 => Stability::SecularlyStable,
@@ -292,6 +334,16 @@ pub fn f2_coefficients<M: Routhian>(
     gamma: &Vector3<f64>,
     p_psi: f64,
 ) -> Result<[f64; 3], RouthError> {
+    Ok(f2_parts(model, gamma, p_psi)?.0)
+}
+
+/// [`f2_coefficients`] and the Frobenius norm of `PᵀAP` (which bounds how much an error in `PᵀCP`
+/// moves `c₂`).
+fn f2_parts<M: Routhian>(
+    model: &M,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+) -> Result<([f64; 3], f64), RouthError> {
     check_finite("p_psi", &[p_psi])?;
     let gamma = unit_gamma("gamma", gamma)?;
     check_kinetic(model, &gamma)?;
@@ -317,7 +369,7 @@ pub fn f2_coefficients<M: Routhian>(
             min_eigenvalue: c4,
         });
     }
-    Ok([c4, c2, c0])
+    Ok(([c4, c2, c0], a.norm()))
 }
 
 /// How the roots in `s = λ²` of `c₄s² + c₂s + c₀` lie.

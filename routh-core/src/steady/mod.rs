@@ -90,14 +90,12 @@ pub struct SearchOptions {
     pub starts: usize,
     /// Largest number of Newton iterations from one start (default 100).
     pub max_iterations: usize,
-    /// Relative tolerance on the Riemannian gradient for a point to count as critical (default
-    /// `1e−10`; see [`steady_motions`] for the scale it multiplies).
+    /// Tolerance on the Newton step `|K⁻¹g|` (radians, the estimated distance to the critical
+    /// point) for a point to count as critical (default `1e−10`; see [`steady_motions`]).
     pub gradient_tol: f64,
-    /// Relative tolerance under which an eigenvalue of the restricted second variation
-    /// (62)–(63) counts as zero (errata E8; default `1e−8`, the same as
-    /// [`ClassifyOptions::zero_eigenvalue_tol`](crate::stability::ClassifyOptions)). Round-off
-    /// in the eigenvalues is about `1e−15` of the scale and a converged point is located to about
-    /// `1e−13`, so `1e−8` leaves a wide margin on both sides.
+    /// Tolerance, relative to `‖K‖_F` with a round-off floor, under which an eigenvalue of the
+    /// restricted second variation `K` (62)–(63) counts as zero (errata E8; default `1e−8`, the
+    /// same as [`ClassifyOptions::zero_eigenvalue_tol`](crate::stability::ClassifyOptions)).
     pub zero_eigenvalue_tol: f64,
 }
 
@@ -168,46 +166,62 @@ impl SearchOptions {
 /// again from rings of radii `{1/2, 1/5, 1/20}` of the spacing around every point found (and around
 /// up to 16 vertices of every curve), and from the axis `±n` of every closed curve (the normal of
 /// the plane of its vertices: for a circle of latitude of a symmetric body, the pole, a critical
-/// point by symmetry). Finally the Morse relation is checked: the non-degenerate isolated critical
-/// points must satisfy `#minima − #saddles + #maxima = χ(S²) = 2` (curves contribute 0). If they
-/// do not, the whole search is repeated on a grid four times finer. (A pair of critical points
+/// point by symmetry). Finally the Morse relation is checked (see *Self-check* below); if it
+/// fails, the whole search is repeated on a grid four times finer. (A pair of critical points
 /// born together in a fold and both missed leaves χ unchanged: such a pair, closer than the grid
 /// spacing to each other and to any other critical point, can be missed; use
 /// [`steady_motions_with`] with more starts near bifurcations.)
 ///
-/// # Tolerances (all relative to the model scale)
+/// # Tolerances (all local, invariant under scaling the model and under adding `c|γ|²` to `U`)
 ///
-/// The *local scale* at γ is `s(γ) = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)` at `Ω = 0`: it has units of energy
-/// (γ is dimensionless) and bounds the terms whose difference forms `g` and `K`, so round-off in
-/// those is a small multiple of `ε·s`. The *search scale* `S` is the largest local scale over the
-/// grid of starts.
-/// - A point is critical when `|g| ≤` [`SearchOptions::gradient_tol`]` · max(S, s(γ))` (`1e−10`; the iteration
-///   goes on to round-off, about `1e−15`, when it can).
-/// - Two critical points are the same when they are closer than `1e−6`
-///   (non-degenerate points converge to about `1e−13`) or, when one is degenerate (which Newton
-///   approaches only linearly), closer than `2e−2` with the same `U_r`.
-/// - An eigenvalue of `K` is zero when `|κ| ≤` [`SearchOptions::zero_eigenvalue_tol`]` · s(γ)`: the same test as
-///   [`classify`](crate::classify), so `isolated: false` always comes with
-///   [`Stability::Degenerate`](crate::Stability).
-/// - Two values of `U_r` are equal when they differ by at most
-///   `1e−9 · max(s(γ), |U_r|)`.
+/// Every test compares the *tangential* quantities at γ with each other: the Riemannian gradient
+/// `g` and the restricted form `K` (both unchanged by adding `c|γ|²` to `U`, which only changes
+/// the radial parts of `∂R/∂γ` and `∂²R/∂γ²`, and both proportional to the model). The raw
+/// derivatives enter only as a round-off floor: `g` and `K` are differences of terms of size
+/// `|∂R/∂γ|` and `s_raw = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`, so below `1024 ε` of those they are zero.
+/// There is no scale taken over the sphere, so flat regions (e.g. `U = e^{15γ₃}` near the south
+/// pole) are treated exactly as steep ones.
+/// - An eigenvalue κ of `K` is zero when `|κ| ≤ max(`[`SearchOptions::zero_eigenvalue_tol`]` ·
+///   ‖K‖_F, 1024 ε · s_raw)`: the same test as [`classify`](crate::classify).
+/// - The *Newton step* `ξ = −K⁻¹g` (radians; eigenvalues below the zero threshold replaced by it)
+///   estimates the distance to the critical point. A point is critical when `|ξ| ≤`
+///   [`SearchOptions::gradient_tol`] (`1e−10` rad), or `|g| ≤ 1024 ε |∂R/∂γ|` (round-off). Where
+///   `g ≠ 0` but `K ≈ 0` (a flat region) `|ξ|` is large, so such points never pass. The iteration
+///   goes on to round-off when it can; at a degenerate point (linear convergence) it stops at the
+///   tolerance.
+/// - Two critical points are the same when they are closer than 8 times the sum of their
+///   estimated distances to the exact point (the Newton step, or the round-off in `g` over the
+///   curvature): copies of a higher-order point, which Newton approaches only linearly, merge; two
+///   distinct points 2e−4 apart do not.
+/// - During the grid phase an iterate that heads into a known non-degenerate point (its Newton
+///   step lands within a quarter of its distance to it, within 0.5 rad) stops early: its basin is
+///   already known. Probes near known points are stopped only on much stronger evidence (1e−3).
+/// - Two values of `U_r` are equal when they differ by at most `1e−10 · max(|U_r|, s_raw)`.
 ///
-/// # Non-isolated critical points
+/// # Degenerate and non-isolated critical points
 ///
-/// A body with a symmetry has whole circles of steady motions (the tilted precessions of a
-/// symmetric top). At a critical point whose `K` has a zero eigenvalue, the search moves by `h`
-/// along the null direction, re-converges, and calls the point non-isolated if it lands on a
-/// *different* critical point (at least `h/4` away) with the same `U_r`; `h` is 0.05 rad, then
-/// `h/4`, `h/16`, `h/64` for small curves. It then traces the curve by predictor–corrector
-/// continuation with step `h` (again with a shorter step when a closed curve gets fewer than 12
-/// vertices) and reports one representative per curve (`isolated: false`); a later degenerate
-/// critical point with the same `U_r` within `h/2` of the traced polyline belongs to that curve.
-/// Two circles on the same level (e.g. `γ₃ = ±z` for a body symmetric under `γ₃ → −γ₃`) are
-/// therefore two curves. A zero eigenvalue without such a continuation is a degenerate isolated
-/// critical point (a bifurcation point): `isolated: true`, and
-/// [`classify`](crate::classify) reports it as [`Stability::Degenerate`](crate::Stability).
-/// A whole neighbourhood of critical points (both eigenvalues zero, e.g. `U_r` constant) is
-/// reported once per level of `U_r`, with `isolated: false`.
+/// A point with one zero eigenvalue is tested for a curve along the kernel of `K`: the search
+/// steps by `h` along the null direction, re-converges, and traces the curve by
+/// predictor–corrector continuation if it lands on a *different*, also degenerate critical point
+/// on the same level at a distance in `[h/4, 3h]`; `h` is 0.05 rad, then quarters of it down to
+/// `0.05/4⁸` for small curves (a closed curve must get at least 12 vertices). One representative
+/// per curve is reported (`isolated: false`); a later degenerate point on the same level within
+/// `h/2` of the traced polyline belongs to that curve. A non-degenerate point is never absorbed by
+/// a curve (the sleeping top inside a tiny circle of tilted precessions). Two circles on the same
+/// level (e.g. `γ₃ = ±z` for a body symmetric under `γ₃ → −γ₃`) are two curves. A point with two
+/// zero eigenvalues is a two-dimensional critical set only if the gradient vanishes within
+/// round-off at four neighbours 0.01 rad away (e.g. `U_r` constant; reported once per level, with
+/// `isolated: false`); otherwise it is a higher-order isolated point (`x⁴ + y⁴` at its minimum),
+/// reported once with `isolated: true`, and [`classify`](crate::classify) calls it
+/// [`Stability::Degenerate`](crate::Stability) unless `f₂` proves an instability.
+///
+/// # Self-check
+///
+/// The index of every isolated point (`±1` from the signs of the eigenvalues of `K`, or the
+/// winding number of `g` on a small circle at a degenerate point) is summed, closed curves
+/// counting 0; Poincaré–Hopf requires χ(S²) = 2. If the sum is not 2 the search is repeated on a
+/// grid four times finer. [`steady_motions_checked`] reports the sum and whether it is reconciled;
+/// `steady_motions` returns the same motions without the flag.
 ///
 /// Errors: [`RouthError::NonFinite`] for a non-finite `p_psi`;
 /// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
@@ -299,16 +313,62 @@ pub fn steady_motions_with<M: Routhian>(
     p_psi: f64,
     opts: &SearchOptions,
 ) -> Result<Vec<SteadyMotion>, RouthError> {
+    Ok(steady_motions_checked_with(model, p_psi, opts)?.motions)
+}
+
+/// The steady motions of [`steady_motions`] with the outcome of its Morse self-check.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchResult {
+    /// The steady motions, as returned by [`steady_motions`].
+    pub motions: Vec<SteadyMotion>,
+    /// The sum of the indices of the isolated steady motions (`+1` at a minimum or a maximum of
+    /// `U_r`, `−1` at a saddle; at a degenerate isolated point, the winding number of the gradient
+    /// of `U_r` on a small circle around it), closed curves counting 0. By Poincaré–Hopf it is
+    /// χ(S²) = 2 when every critical point was found. `None` when it could not be computed: a
+    /// two-dimensional set of critical points, a curve that did not close, or a degenerate point
+    /// whose index could not be resolved.
+    pub euler_characteristic: Option<i64>,
+    /// `true` when the count is reconciled: `euler_characteristic == Some(2)`, or `U_r` is
+    /// constant on the sphere (every γ is a steady motion, reported once). `false` means that
+    /// critical points were probably missed or mis-merged even after the refined second search:
+    /// do not trust the list as complete.
+    pub consistent: bool,
+}
+
+/// [`steady_motions`] with its self-check: the motions with the index sum of the Morse relation
+/// and whether it is reconciled with χ(S²) = 2 ([`SearchResult`]). Use it whenever completeness of
+/// the list matters; [`steady_motions`] returns the same motions without the flag.
+///
+/// Errors: as [`steady_motions`].
+pub fn steady_motions_checked<M: Routhian>(
+    model: &M,
+    p_psi: f64,
+) -> Result<SearchResult, RouthError> {
+    steady_motions_checked_with(model, p_psi, &SearchOptions::default())
+}
+
+/// [`steady_motions_checked`] with explicit [`SearchOptions`].
+///
+/// Errors: as [`steady_motions_with`].
+pub fn steady_motions_checked_with<M: Routhian>(
+    model: &M,
+    p_psi: f64,
+    opts: &SearchOptions,
+) -> Result<SearchResult, RouthError> {
     check_finite("p_psi", &[p_psi])?;
     opts.validate()?;
-    let points = search::global(model, p_psi, opts)?;
-    let mut out = Vec::with_capacity(points.len());
-    for (gamma, isolated) in points {
+    let outcome = search::global(model, p_psi, opts)?;
+    let mut motions = Vec::with_capacity(outcome.points.len());
+    for (gamma, isolated) in outcome.points {
         check_kinetic(model, &gamma)?;
-        out.push(record(model, &gamma, p_psi, isolated)?);
+        motions.push(record(model, &gamma, p_psi, isolated)?);
     }
-    out.sort_by(|a, b| a.amended_potential.total_cmp(&b.amended_potential));
-    Ok(out)
+    motions.sort_by(|a, b| a.amended_potential.total_cmp(&b.amended_potential));
+    Ok(SearchResult {
+        motions,
+        euler_characteristic: outcome.euler,
+        consistent: outcome.consistent,
+    })
 }
 
 /// The steady motion nearest (in the sense of Newton's method on the sphere) to the guess

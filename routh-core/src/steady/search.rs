@@ -1,55 +1,85 @@
 //! The global search behind [`steady_motions`](super::steady_motions): safeguarded Newton on the
 //! sphere from a grid of starts, de-duplication, tracing of curves of critical points and the
 //! Morse (Euler characteristic) self-check.
+//!
+//! Every test here is local: it compares tangential quantities at γ (the Riemannian gradient `g`
+//! and the restricted form `K`, see [`Tangential`]) with each other, never with a scale taken over
+//! the whole sphere, and never with the raw `∂R/∂γ`, `∂²R/∂γ²` except as a round-off floor.
 
-use nalgebra::{Matrix2, Matrix3, Matrix3x2, SymmetricEigen, Vector2, Vector3};
+use nalgebra::{Matrix3, SymmetricEigen, Vector2, Vector3};
 
 use super::SearchOptions;
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::sphere::{fibonacci_sphere, local_scale, restricted_hessian, sym2_eigen, tangent_basis};
+use crate::sphere::{fibonacci_sphere, tangent_basis, Tangential, NOISE, ROUND};
 use crate::validate::check_kinetic;
 
-const LEVEL_TOL: f64 = 1e-9;
-/// Distance (in radians, on the unit sphere) under which two non-degenerate critical points are
-/// the same.
-const DUPLICATE_DISTANCE: f64 = 1e-6;
-/// Distance under which two degenerate isolated critical points with the same `U_r` are the same
-/// (Newton converges only linearly to them).
-const DEGENERATE_DUPLICATE_DISTANCE: f64 = 2e-2;
+/// Two values of `U_r` are equal when they differ by at most this much relative to the larger of
+/// `|U_r|` and the raw scale (round-off in `U_r` is a few `ε` of the terms that form it).
+const LEVEL_TOL: f64 = 1e-10;
 /// Longest step of the Newton iteration on the sphere, in radians.
 const MAX_STEP: f64 = 0.5;
-/// Step of the continuation along a curve of non-isolated critical points, in radians.
+/// First step of the continuation along a curve of non-isolated critical points, in radians.
 const TRACE_STEP: f64 = 0.05;
-
+/// Number of continuation step lengths tried, each a quarter of the previous one (down to
+/// `0.05 / 4⁸ ≈ 7.6e−7` rad, for circles next to a bifurcation).
+const TRACE_LEVELS: usize = 9;
 /// Largest number of continuation steps along one curve of critical points.
 const MAX_TRACE_STEPS: usize = 1000;
 /// Fewest vertices for a traced closed curve before the trace is redone with a shorter step.
 const MIN_CLOSED_VERTICES: usize = 12;
 /// Largest number of Levenberg–Marquardt retries (growing λ) within one iteration.
 const MAX_LM_RETRIES: usize = 14;
-/// Gradient level (relative) at which the iteration stops improving.
-const STOP_TOL: f64 = 1e-15;
+/// The iteration stops when the Newton step is below this fraction of
+/// [`SearchOptions::gradient_tol`] (or below the tolerance itself when convergence is only
+/// linear, at a degenerate critical point).
+const STOP_FACTOR: f64 = 1e-2;
+/// Two converged points are the same when they are closer than this multiple of the sum of their
+/// estimated distances to the exact critical point (the Newton step, or the round-off radius).
+/// Newton converges linearly with ratio `(n−2)/(n−1)` to a critical point of order `n`, whose
+/// distance is then `(n−1)` times the last step: 8 covers `n ≤ 9`.
+const MERGE_FACTOR: f64 = 8.0;
+/// An iterate of a grid start joins a known non-degenerate critical point `p` within this distance
+/// (radians) when its Newton step lands within [`GRID_CAPTURE`] of its distance to `p`
+/// (quadratic convergence towards `p` is under way).
+const CAPTURE_RADIUS: f64 = 0.5;
+/// Contraction ratio for the early capture of a grid start.
+const GRID_CAPTURE: f64 = 0.25;
+/// Contraction ratio for the early capture of a probe start (probes look for critical points
+/// next to known ones, so they are captured only on much stronger evidence).
+const PROBE_CAPTURE: f64 = 1e-3;
+/// Distance (radians) of the neighbours tested to tell a two-dimensional critical set from a
+/// higher-order isolated critical point.
+const PLANAR_PROBE: f64 = 1e-2;
+/// Samples on the small circle around a degenerate isolated critical point for its index.
+const INDEX_SAMPLES: usize = 48;
+/// Largest radius of that circle (radians).
+const INDEX_RADIUS: f64 = 1e-2;
 
-/// The global search of [`steady_motions_with`](super::steady_motions_with): every critical
-/// point found, with whether it is isolated (curves and planar sets by one representative).
+/// What the global search found.
+pub(super) struct Outcome {
+    /// Every critical point found, with whether it is isolated (curves and planar sets by one
+    /// representative).
+    pub points: Vec<(Vector3<f64>, bool)>,
+    /// The sum of the indices of the critical points (curves count 0), when it could be computed.
+    pub euler: Option<i64>,
+    /// Whether the count is reconciled with χ(S²) = 2 (or the whole sphere is critical).
+    pub consistent: bool,
+}
+
+/// The global search of [`steady_motions_with`](super::steady_motions_with).
 pub(super) fn global<M: Routhian>(
     model: &M,
     p_psi: f64,
     opts: &SearchOptions,
-) -> Result<Vec<(Vector3<f64>, bool)>, RouthError> {
+) -> Result<Outcome, RouthError> {
     let grid = fibonacci_sphere(opts.starts);
-    let mut scale = 0.0f64;
     for g in &grid {
         check_kinetic(model, g)?;
-        if let Some(loc) = Local::at(model, g, p_psi, opts.zero_eigenvalue_tol) {
-            scale = scale.max(loc.scale);
-        }
     }
     let search = Search {
         model,
         p_psi,
-        scale,
         max_iterations: opts.max_iterations,
         gradient_tol: opts.gradient_tol,
         zero_rel: opts.zero_eigenvalue_tol,
@@ -57,27 +87,30 @@ pub(super) fn global<M: Routhian>(
 
     let mut found = Found::default();
     for start in &grid {
-        found.add(&search, start);
+        found.add(&search, start, GRID_CAPTURE);
     }
     // Critical points closer together than the grid spacing (next to a bifurcation, e.g. the
     // sleeping top inside a small circle of tilted precessions) share one start: probe around
     // every point found.
     let spacing = (4.0 * std::f64::consts::PI / opts.starts as f64).sqrt();
     for start in found.probes(spacing) {
-        found.add(&search, &start);
+        found.add(&search, &start, PROBE_CAPTURE);
     }
-    // Morse check: non-degenerate isolated critical points alone must sum their indices to the
-    // Euler characteristic of the sphere, χ = 2 (curves contribute 0). Otherwise something was
+    // Morse check: the indices of the isolated critical points must sum to the Euler
+    // characteristic of the sphere, χ = 2 (closed curves contribute 0). Otherwise something was
     // missed: search again on a grid four times finer.
-    if found.euler_characteristic() != Some(2) && !found.is_empty() {
+    let mut euler = found.euler_characteristic(&search);
+    if euler != Some(2) && !found.is_empty() && !found.planar_only() {
         let fine = fibonacci_sphere(4 * opts.starts);
         for start in &fine {
-            found.add(&search, start);
+            found.add(&search, start, GRID_CAPTURE);
         }
         for start in found.probes(0.5 * spacing) {
-            found.add(&search, &start);
+            found.add(&search, &start, PROBE_CAPTURE);
         }
+        euler = found.euler_characteristic(&search);
     }
+    let consistent = euler == Some(2) || found.planar_only();
     let Found {
         isolated,
         curves,
@@ -91,15 +124,19 @@ pub(super) fn global<M: Routhian>(
             residual: best_residual,
         });
     }
-    let mut out: Vec<(Vector3<f64>, bool)> = isolated.iter().map(|l| (l.gamma, true)).collect();
-    out.extend(
+    let mut points: Vec<(Vector3<f64>, bool)> = isolated.iter().map(|l| (l.gamma, true)).collect();
+    points.extend(
         curves
             .iter()
             .map(|c| &c.start)
             .chain(planar.iter())
             .map(|l| (l.gamma, false)),
     );
-    Ok(out)
+    Ok(Outcome {
+        points,
+        euler,
+        consistent,
+    })
 }
 
 /// The critical point reached by Newton on the sphere from the unit vector `g0`, with whether it
@@ -114,48 +151,45 @@ pub(super) fn near<M: Routhian>(
         what: "amended potential or its derivatives",
         gamma: [g0.x, g0.y, g0.z],
     };
-    let start = Local::at(model, g0, p_psi, opts.zero_eigenvalue_tol).ok_or_else(non_finite)?;
     let search = Search {
         model,
         p_psi,
-        scale: start.scale,
         max_iterations: 2 * opts.max_iterations,
         gradient_tol: opts.gradient_tol,
         zero_rel: opts.zero_eigenvalue_tol,
     };
-    let (loc, converged) = search.refine(g0).ok_or_else(non_finite)?;
-    if !converged {
-        return Err(RouthError::NoConvergence {
-            what: "steady_motion_near (Newton on the sphere)",
-            iterations: search.max_iterations,
-            residual: loc.grad.norm() / search.tol_scale(&loc),
-        });
-    }
-    let eigs = sym2_eigen(&loc.hess);
-    let zero = |k: f64| k.abs() <= loc.zero_rel * loc.scale;
-    let isolated = if zero(eigs.values[0]) && zero(eigs.values[1]) {
-        false
-    } else if zero(eigs.values[0]) || zero(eigs.values[1]) {
-        search.trace(&loc).is_none()
-    } else {
-        true
+    let loc = match search.refine(g0, None).ok_or_else(non_finite)? {
+        Refined::Converged(loc) => loc,
+        Refined::Stalled(loc) => {
+            return Err(RouthError::NoConvergence {
+                what: "steady_motion_near (Newton on the sphere)",
+                iterations: search.max_iterations,
+                residual: loc.residual(),
+            })
+        }
+        // Without a list of known points the iteration never reports a capture.
+        Refined::Captured => {
+            return Err(RouthError::NoConvergence {
+                what: "steady_motion_near (Newton on the sphere)",
+                iterations: 0,
+                residual: f64::NAN,
+            })
+        }
+    };
+    let isolated = match loc.zeros() {
+        0 => true,
+        1 => search.trace(&loc).is_none(),
+        _ => !search.is_planar(&loc),
     };
     Ok((loc.gamma, isolated))
 }
 
 /// The amended potential and its Riemannian derivatives at one unit γ.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy)]
 struct Local {
     gamma: Vector3<f64>,
-    basis: Matrix3x2<f64>,
-    /// Riemannian gradient of `U_r` in the basis.
-    grad: Vector2<f64>,
-    /// Riemannian Hessian of `U_r` in the basis (62)–(63).
-    hess: Matrix2<f64>,
+    t: Tangential,
     u_r: f64,
-    scale: f64,
-    /// Relative tolerance for a zero eigenvalue ([`SearchOptions::zero_eigenvalue_tol`]).
-    zero_rel: f64,
 }
 
 impl Local {
@@ -173,51 +207,80 @@ impl Local {
         if !finite {
             return None;
         }
-        let basis = tangent_basis(gamma);
-        let mu = b.dr_dgamma.dot(gamma);
+        let t = Tangential::new(gamma, &b.dr_dgamma, &b.d2r_dgamma2, zero_rel);
+        if !(t.knorm.is_finite() && t.raw.is_finite()) {
+            return None;
+        }
         Some(Local {
             gamma: *gamma,
-            basis,
-            grad: -(basis.transpose() * b.dr_dgamma),
-            hess: restricted_hessian(&basis, mu, &b.d2r_dgamma2),
+            t,
             u_r: -b.routhian,
-            scale: local_scale(&b.dr_dgamma, &b.d2r_dgamma2),
-            zero_rel,
         })
+    }
+
+    /// Number of zero eigenvalues of `K` (relative to `‖K‖` with a round-off floor).
+    fn zeros(&self) -> usize {
+        self.t.zero_count()
+    }
+
+    fn degenerate(&self) -> bool {
+        self.zeros() > 0
+    }
+
+    /// The Newton step, as a distance on the sphere; 0 when `g` is within round-off.
+    fn residual(&self) -> f64 {
+        self.t.residual
+    }
+
+    /// The length of the Newton step itself, also when `g` is within round-off (the distance to
+    /// the critical point if `g` is accurate).
+    fn step_len(&self) -> f64 {
+        self.t.step_len
+    }
+
+    /// The estimated distance to the exact critical point: the Newton step, or the round-off in
+    /// `g` divided by the curvature, whichever is larger.
+    fn radius(&self) -> f64 {
+        let curvature = if self.degenerate() {
+            self.t.knorm.max(ROUND * self.t.raw)
+        } else {
+            self.t.values[0].abs().min(self.t.values[1].abs())
+        };
+        let noise = NOISE * self.t.raw_grad;
+        let r = if noise > 0.0 { noise / curvature } else { 0.0 };
+        self.step_len().max(r)
     }
 
     /// The unit tangent vector (in ℝ³) along the eigenvector of the eigenvalue of smaller
     /// magnitude.
     fn null_direction(&self) -> Vector3<f64> {
-        let e = sym2_eigen(&self.hess);
-        let i = if e.values[0].abs() <= e.values[1].abs() {
+        let i = if self.t.values[0].abs() <= self.t.values[1].abs() {
             0
         } else {
             1
         };
-        self.basis * e.vectors[i]
+        self.t.basis * self.t.vectors[i]
+    }
+
+    /// The Riemannian gradient of `U_r` as a tangent vector of ℝ³.
+    fn grad3(&self) -> Vector3<f64> {
+        self.t.basis * self.t.grad
     }
 }
 
 fn same_level(a: &Local, b: &Local) -> bool {
-    let s = a.scale.max(b.scale).max(a.u_r.abs()).max(b.u_r.abs());
+    let s = a.u_r.abs().max(b.u_r.abs()).max(a.t.raw).max(b.t.raw);
     (a.u_r - b.u_r).abs() <= LEVEL_TOL * s
 }
 
-fn is_degenerate(loc: &Local) -> bool {
-    let e = sym2_eigen(&loc.hess);
-    e.values.iter().any(|k| k.abs() <= loc.zero_rel * loc.scale)
-}
-
+/// Whether two converged points are the same critical point: closer than [`MERGE_FACTOR`] times
+/// the sum of their estimated distances to it.
 fn same_point(a: &Local, b: &Local) -> bool {
     let d = (a.gamma - b.gamma).norm();
-    d <= DUPLICATE_DISTANCE
-        || (d <= DEGENERATE_DUPLICATE_DISTANCE
-            && (is_degenerate(a) || is_degenerate(b))
-            && same_level(a, b))
+    d <= MERGE_FACTOR * (a.radius() + b.radius()) + 8.0 * f64::EPSILON
 }
 
-/// The critical points found so far by [`steady_motions_with`].
+/// The critical points found so far by [`global`].
 struct Found {
     isolated: Vec<Local>,
     curves: Vec<Curve>,
@@ -241,39 +304,51 @@ impl Found {
         self.isolated.is_empty() && self.curves.is_empty() && self.planar.is_empty()
     }
 
+    /// Only two-dimensional critical sets (`U_r` constant on the sphere).
+    fn planar_only(&self) -> bool {
+        !self.planar.is_empty() && self.isolated.is_empty() && self.curves.is_empty()
+    }
+
     /// Runs the Newton iteration from `start` and records a new critical point, if any.
-    fn add<M: Routhian>(&mut self, search: &Search<'_, M>, start: &Vector3<f64>) {
-        let Some((loc, converged)) = search.refine(start) else {
-            return;
+    fn add<M: Routhian>(&mut self, search: &Search<'_, M>, start: &Vector3<f64>, capture: f64) {
+        let loc = match search.refine(start, Some((&self.isolated, capture))) {
+            Some(Refined::Converged(loc)) => loc,
+            Some(Refined::Stalled(loc)) => {
+                self.best_residual = self.best_residual.min(loc.residual());
+                return;
+            }
+            Some(Refined::Captured) | None => return,
         };
-        self.best_residual = self
-            .best_residual
-            .min(loc.grad.norm() / search.tol_scale(&loc));
-        if !converged
-            || self.isolated.iter().any(|q| same_point(q, &loc))
+        self.best_residual = self.best_residual.min(loc.residual());
+        if self.isolated.iter().any(|q| same_point(q, &loc))
             || self.curves.iter().any(|c| c.contains(&loc))
-            || self.planar.iter().any(|q| same_level(q, &loc))
         {
             return;
         }
-        let eigs = sym2_eigen(&loc.hess);
-        let zero = |k: f64| k.abs() <= loc.zero_rel * loc.scale;
-        if zero(eigs.values[0]) && zero(eigs.values[1]) {
-            // The whole neighbourhood is critical (e.g. U_r constant): one representative per
-            // level.
-            self.planar.push(loc);
-        } else if zero(eigs.values[0]) || zero(eigs.values[1]) {
-            match search.trace(&loc) {
+        match loc.zeros() {
+            0 => self.isolated.push(loc),
+            1 => match search.trace(&loc) {
                 Some(curve) => self.curves.push(curve),
                 None => self.isolated.push(loc),
+            },
+            _ => {
+                if self.planar.iter().any(|q| same_level(q, &loc)) {
+                    return;
+                }
+                if search.is_planar(&loc) {
+                    // The whole neighbourhood is critical (e.g. U_r constant): one representative
+                    // per level.
+                    self.planar.push(loc);
+                } else {
+                    // A higher-order isolated critical point (e.g. x⁴ + y⁴ at its minimum).
+                    self.isolated.push(loc);
+                }
             }
-        } else {
-            self.isolated.push(loc);
         }
     }
 
     /// Starting points on rings of radii `{1/2, 1/5, 1/20} · spacing` around every isolated
-    /// point and around up to 16 vertices of every curve.
+    /// point and around up to 16 vertices of every curve, and the axes of closed curves.
     fn probes(&self, spacing: f64) -> Vec<Vector3<f64>> {
         let mut centres: Vec<Vector3<f64>> = self.isolated.iter().map(|l| l.gamma).collect();
         let mut out = Vec::new();
@@ -301,20 +376,40 @@ impl Found {
         out
     }
 
-    /// `#minima − #saddles + #maxima` over the isolated critical points, or `None` when one of
-    /// them is degenerate or a two-dimensional critical set was found (indices unknown).
-    fn euler_characteristic(&self) -> Option<i64> {
-        if !self.planar.is_empty() {
+    /// The sum of the indices of the isolated critical points (`+1` at a minimum or maximum,
+    /// `−1` at a saddle; for a degenerate point the winding number of the gradient on a small
+    /// circle around it), closed curves counting 0 (Morse–Bott). `None` when a two-dimensional
+    /// critical set was found, a curve is not closed, or an index could not be computed.
+    fn euler_characteristic<M: Routhian>(&self, search: &Search<'_, M>) -> Option<i64> {
+        if !self.planar.is_empty() || self.curves.iter().any(|c| !c.closed) {
             return None;
         }
         let mut chi = 0;
-        for loc in &self.isolated {
-            let e = sym2_eigen(&loc.hess).values;
-            let tol = loc.zero_rel * loc.scale;
-            if e.iter().any(|k| k.abs() <= tol) {
-                return None;
-            }
-            chi += if (e[0] < 0.0) != (e[1] < 0.0) { -1 } else { 1 };
+        for (i, loc) in self.isolated.iter().enumerate() {
+            chi += match loc.zeros() {
+                0 => {
+                    if (loc.t.values[0] < 0.0) != (loc.t.values[1] < 0.0) {
+                        -1
+                    } else {
+                        1
+                    }
+                }
+                _ => {
+                    // The circle must enclose no other critical point.
+                    let mut nearest = INDEX_RADIUS * 4.0;
+                    for (j, q) in self.isolated.iter().enumerate() {
+                        if j != i {
+                            nearest = nearest.min((q.gamma - loc.gamma).norm());
+                        }
+                    }
+                    for c in &self.curves {
+                        for v in &c.vertices {
+                            nearest = nearest.min((v - loc.gamma).norm());
+                        }
+                    }
+                    search.index(loc, 0.25 * nearest)?
+                }
+            };
         }
         Some(chi)
     }
@@ -353,7 +448,7 @@ impl Curve {
     fn contains(&self, loc: &Local) -> bool {
         // A point of a curve of critical points has a zero eigenvalue; a non-degenerate point
         // close to a small curve (the pole inside a small circle) is not on it.
-        if !same_level(&self.start, loc) || !is_degenerate(loc) {
+        if !same_level(&self.start, loc) || !loc.degenerate() {
             return false;
         }
         let n = self.vertices.len();
@@ -373,10 +468,20 @@ impl Curve {
     }
 }
 
+/// The end of one Newton iteration.
+enum Refined {
+    /// A critical point.
+    Converged(Local),
+    /// The iteration joined a known critical point (early de-duplication of a basin).
+    Captured,
+    /// The iteration stopped at a point that is not critical (budget spent, or a local minimum
+    /// of `|g|`).
+    Stalled(Local),
+}
+
 struct Search<'a, M> {
     model: &'a M,
     p_psi: f64,
-    scale: f64,
     max_iterations: usize,
     gradient_tol: f64,
     zero_rel: f64,
@@ -387,56 +492,90 @@ impl<M: Routhian> Search<'_, M> {
         Local::at(self.model, gamma, self.p_psi, self.zero_rel)
     }
 
-    fn tol_scale(&self, loc: &Local) -> f64 {
-        self.scale.max(loc.scale)
-    }
-
-    /// Safeguarded Newton (Levenberg–Marquardt) on the sphere from `gamma0`. Returns the last
-    /// point and whether it is critical; `None` if the model is not finite at `gamma0`.
-    fn refine(&self, gamma0: &Vector3<f64>) -> Option<(Local, bool)> {
+    /// Safeguarded Newton (Levenberg–Marquardt) on the sphere from `gamma0`; `None` if the model
+    /// is not finite at `gamma0`. With `capture = Some((known, ratio))` the iteration stops as
+    /// soon as its Newton step heads into a known non-degenerate critical point (lands within
+    /// `ratio` times its distance to it). No allocation.
+    fn refine(&self, gamma0: &Vector3<f64>, capture: Option<(&[Local], f64)>) -> Option<Refined> {
         let mut cur = self.local(gamma0)?;
         let mut lambda = 0.0f64;
+        let mut prev = f64::INFINITY;
         for _ in 0..self.max_iterations {
-            let gn = cur.grad.norm();
-            if gn <= STOP_TOL * self.tol_scale(&cur) {
+            // Iterate down to round-off, past the acceptance floor of `residual`, so that copies
+            // of one critical point coincide to a few ulps.
+            let d = cur.step_len();
+            // Converged: to round-off (quadratic convergence overshoots the tolerance), or to
+            // the tolerance when convergence is only linear (a degenerate critical point).
+            if d <= STOP_FACTOR * self.gradient_tol || (d <= self.gradient_tol && d > 0.1 * prev) {
                 break;
             }
-            let k = cur.hess;
-            let k2 = k * k;
-            let rhs = -(k * cur.grad);
-            let kn2 = k2.norm();
-            let lambda_min = (STOP_TOL * self.tol_scale(&cur)).powi(2);
+            if let Some((known, ratio)) = capture {
+                let target = cur.gamma + cur.t.basis * cur.t.step;
+                let joined = known.iter().any(|p| {
+                    let dp = (cur.gamma - p.gamma).norm();
+                    !p.degenerate()
+                        && dp <= CAPTURE_RADIUS
+                        && (target - p.gamma).norm() <= ratio * dp
+                });
+                if joined {
+                    return Some(Refined::Captured);
+                }
+            }
+            prev = d;
+            let gn = cur.t.grad_norm;
+            // Within round-off already: one plain Newton try, no Levenberg–Marquardt retries.
+            let retries = if gn <= cur.t.grad_floor() {
+                1
+            } else {
+                MAX_LM_RETRIES
+            };
+            let kmax2 = cur.t.values[0].powi(2).max(cur.t.values[1].powi(2));
+            let lambda_min = (ROUND * cur.t.raw).powi(2);
             let mut accepted = None;
-            for _ in 0..MAX_LM_RETRIES {
-                let m = k2 + Matrix2::from_diagonal_element(lambda);
-                let step = m.try_inverse().map(|mi| mi * rhs);
-                match step {
-                    Some(mut xi) if xi.iter().all(|v| v.is_finite()) => {
-                        let len = xi.norm();
-                        if len > MAX_STEP {
-                            xi *= MAX_STEP / len;
-                        }
-                        let moved = cur.gamma + cur.basis * xi;
-                        let next = moved.normalize();
-                        if let Some(n) = self.local(&next) {
-                            if n.grad.norm() < gn {
-                                accepted = Some(n);
-                                break;
-                            }
+            for _ in 0..retries {
+                // (K² + λE) ξ = −K g in the eigenbasis of K.
+                let mut xi = Vector2::zeros();
+                for i in 0..2 {
+                    let (k, v) = (cur.t.values[i], cur.t.vectors[i]);
+                    let gi = cur.t.grad.dot(&v);
+                    // Along a zero eigenvalue with a gradient component within round-off (the
+                    // tangent of a curve of critical points) there is nothing to correct: a step
+                    // of noise/noise would slide along the curve.
+                    if k.abs() <= cur.t.zero_tol && gi.abs() <= cur.t.grad_floor() {
+                        continue;
+                    }
+                    let den = k * k + lambda;
+                    if den > 0.0 {
+                        xi -= (k * gi / den) * v;
+                    }
+                }
+                let len = xi.norm();
+                if len.is_finite() && len > 0.0 {
+                    if len > MAX_STEP {
+                        xi *= MAX_STEP / len;
+                    }
+                    let next = (cur.gamma + cur.t.basis * xi).normalize();
+                    if let Some(n) = self.local(&next) {
+                        if n.t.grad_norm < gn {
+                            accepted = Some(n);
+                            break;
                         }
                     }
-                    _ => {}
                 }
-                lambda = if lambda == 0.0 {
-                    (1e-6 * kn2).max(lambda_min)
+                let grown = if lambda == 0.0 {
+                    (1e-6 * kmax2).max(lambda_min)
                 } else {
                     lambda * 10.0
                 };
+                if grown <= lambda || !grown.is_finite() {
+                    break;
+                }
+                lambda = grown;
             }
             match accepted {
                 Some(n) => {
                     cur = n;
-                    lambda = if lambda <= 1e-6 * kn2 {
+                    lambda = if lambda <= 1e-6 * kmax2 {
                         0.0
                     } else {
                         lambda / 10.0
@@ -445,44 +584,108 @@ impl<M: Routhian> Search<'_, M> {
                 None => break,
             }
         }
-        let converged = cur.grad.norm() <= self.gradient_tol * self.tol_scale(&cur);
-        Some((cur, converged))
+        Some(if cur.residual() <= self.gradient_tol {
+            Refined::Converged(cur)
+        } else {
+            Refined::Stalled(cur)
+        })
     }
 
-    /// A converged continuation point from `from` along the direction `dir` with step `h`:
-    /// critical, on the level of `level`, and at a distance in `[h/4, 3h]` from `from`.
+    /// Whether the degenerate critical point `loc` (both eigenvalues of `K` zero) lies in a
+    /// two-dimensional set of critical points: the gradient vanishes within round-off at four
+    /// neighbours at [`PLANAR_PROBE`]. At a higher-order isolated point (x⁴ + y⁴) it does not.
+    fn is_planar(&self, loc: &Local) -> bool {
+        (0..4).all(|k| {
+            let a = std::f64::consts::FRAC_PI_2 * k as f64 + 0.3;
+            let t = loc.t.basis * Vector2::new(a.cos(), a.sin());
+            let g = (loc.gamma * PLANAR_PROBE.cos() + t * PLANAR_PROBE.sin()).normalize();
+            self.local(&g)
+                .is_some_and(|n| n.t.grad.norm() <= n.t.grad_floor() && same_level(&n, loc))
+        })
+    }
+
+    /// The index of the degenerate isolated critical point `loc`: the winding number of the
+    /// gradient on the circle of radius `min(r, INDEX_RADIUS)` around it. `None` when the gradient
+    /// vanishes (within round-off) somewhere on the circle or turns too fast to be followed.
+    fn index(&self, loc: &Local, r: f64) -> Option<i64> {
+        let r = r.min(INDEX_RADIUS);
+        if r.is_nan() || r <= 0.0 {
+            return None;
+        }
+        let mut total = 0.0;
+        let mut first = None;
+        let mut last: Option<f64> = None;
+        for k in 0..=INDEX_SAMPLES {
+            let a = 2.0 * std::f64::consts::PI * (k % INDEX_SAMPLES) as f64 / INDEX_SAMPLES as f64;
+            let t = loc.t.basis * Vector2::new(a.cos(), a.sin());
+            let g = (loc.gamma * r.cos() + t * r.sin()).normalize();
+            let n = self.local(&g)?;
+            if n.t.grad.norm() <= 4.0 * n.t.grad_floor() {
+                return None;
+            }
+            let w = loc.t.basis.transpose() * n.grad3();
+            let angle = w.y.atan2(w.x);
+            if let Some(prev) = last {
+                let mut d = angle - prev;
+                d -= 2.0 * std::f64::consts::PI * (d / (2.0 * std::f64::consts::PI)).round();
+                if d.abs() > 0.5 * std::f64::consts::PI {
+                    return None;
+                }
+                total += d;
+            } else {
+                first = Some(angle);
+            }
+            last = Some(angle);
+        }
+        first?;
+        let idx = total / (2.0 * std::f64::consts::PI);
+        ((idx - idx.round()).abs() < 0.1).then_some(idx.round() as i64)
+    }
+
+    /// A converged, degenerate continuation point from `from` along the direction `dir` with step
+    /// `h`: on the level of `level` and at a distance in `[h/4, 3h]` from `from`. `Err(true)` when
+    /// the iteration came back to `from` itself.
     fn continue_from(
         &self,
         from: &Local,
         dir: &Vector3<f64>,
         h: f64,
         level: &Local,
-    ) -> Option<Local> {
+    ) -> Result<Local, bool> {
         let guess = (from.gamma + h * dir).normalize();
-        let (loc, converged) = self.refine(&guess)?;
+        let Some(Refined::Converged(loc)) = self.refine(&guess, None) else {
+            return Err(false);
+        };
+        if same_point(&loc, from) {
+            return Err(true);
+        }
         let d = (loc.gamma - from.gamma).norm();
-        (converged && same_level(&loc, level) && d >= 0.25 * h && d <= 3.0 * h).then_some(loc)
+        if same_level(&loc, level) && loc.degenerate() && d >= 0.25 * h && d <= 3.0 * h {
+            Ok(loc)
+        } else {
+            Err(false)
+        }
     }
 
-    /// Traces the curve of critical points through the degenerate critical point `start`;
-    /// `None` when there is no such curve (a degenerate isolated point).
+    /// Traces the curve of critical points through the degenerate critical point `start` along
+    /// the kernel of `K`; `None` when there is no such curve (a degenerate isolated point).
     fn trace(&self, start: &Local) -> Option<Curve> {
         let t0 = start.null_direction();
-        let steps = [
-            TRACE_STEP,
-            TRACE_STEP / 4.0,
-            TRACE_STEP / 16.0,
-            TRACE_STEP / 64.0,
-        ];
-        for (level, h) in steps.into_iter().enumerate() {
+        let mut h = TRACE_STEP;
+        for level in 0..TRACE_LEVELS {
             let mut branches: Vec<Vec<Vector3<f64>>> = Vec::new();
             let mut closed = false;
+            let mut returned = 0;
             for sign in [1.0, -1.0] {
                 if closed {
                     break;
                 }
-                let Some(first) = self.continue_from(start, &(sign * t0), h, start) else {
-                    continue;
+                let first = match self.continue_from(start, &(sign * t0), h, start) {
+                    Ok(first) => first,
+                    Err(back) => {
+                        returned += usize::from(back);
+                        continue;
+                    }
                 };
                 let mut branch = vec![first.gamma];
                 let mut prev = start.gamma;
@@ -492,7 +695,7 @@ impl<M: Routhian> Search<'_, M> {
                     if t.dot(&(cur.gamma - prev)) < 0.0 {
                         t = -t;
                     }
-                    let Some(next) = self.continue_from(&cur, &t, h, start) else {
+                    let Ok(next) = self.continue_from(&cur, &t, h, start) else {
                         break;
                     };
                     branch.push(next.gamma);
@@ -506,12 +709,18 @@ impl<M: Routhian> Search<'_, M> {
                 branches.push(branch);
             }
             if branches.is_empty() {
+                if returned == 2 {
+                    // Newton brought both neighbours back to the start: an isolated point.
+                    return None;
+                }
+                h /= 4.0;
                 continue;
             }
             // A closed curve resolved by too few vertices (small compared with h): trace it again
             // with a shorter step.
             let count: usize = branches.iter().map(Vec::len).sum();
-            if closed && count < MIN_CLOSED_VERTICES && level + 1 < steps.len() {
+            if closed && count < MIN_CLOSED_VERTICES && level + 1 < TRACE_LEVELS {
+                h /= 4.0;
                 continue;
             }
             // Order the vertices along the curve: second branch reversed, start, first branch.
@@ -522,7 +731,7 @@ impl<M: Routhian> Search<'_, M> {
             vertices.push(start.gamma);
             vertices.extend(branches[0].iter().copied());
             return Some(Curve {
-                start: start.clone(),
+                start: *start,
                 vertices,
                 closed,
                 step: h,

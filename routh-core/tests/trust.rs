@@ -1,0 +1,582 @@
+//! Issue 13, items 1–3: cases where the steady-motion search and `classify` used to give wrong
+//! answers. Every expected value comes from a closed form or from a computation in this file
+//! (analysis of the Lagrange conditions, one-dimensional root finding), never from routh's output.
+//!
+//! The models are written by hand: J constant, a(γ) = 0 and a potential U(γ) given by a closure
+//! with its gradient and Hessian, so R(Ω, γ, p) = ½ΩᵀJΩ − U − ½(p − (JΩ)·γ)²/(γᵀJγ) with every
+//! derivative in closed form.
+
+use routh_core::steady::{steady_motions_checked, steady_motions_checked_with, SearchResult};
+use routh_core::{
+    classify, stability::ClassifyOptions, Lagrangian, Matrix3, RouthError, Routhian, SearchOptions,
+    Stability, SteadyMotion, Vector3,
+};
+
+// ---------------------------------------------------------------------------------------------
+// The hand-written model.
+
+type Potential = Box<dyn Fn(&Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>)>;
+
+/// `L = ½ωᵀJω − U(γ)` with `U` returning (value, gradient, Hessian) in ℝ³.
+struct Body {
+    j: Matrix3<f64>,
+    u: Potential,
+}
+
+impl Body {
+    fn new(j: Matrix3<f64>, u: Potential) -> Self {
+        Body { j, u }
+    }
+    fn diag(a: f64, b: f64, c: f64, u: Potential) -> Self {
+        Body::new(Matrix3::from_diagonal(&Vector3::new(a, b, c)), u)
+    }
+    fn n(&self, g: &Vector3<f64>) -> f64 {
+        g.dot(&(self.j * g))
+    }
+    fn q(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+        p - (self.j * w).dot(g)
+    }
+    /// ∂(q/n)/∂γ.
+    fn dqn(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        -(self.j * w) / n - (2.0 * q / (n * n)) * (self.j * g)
+    }
+}
+
+impl Lagrangian for Body {
+    fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+        0.5 * w.dot(&(self.j * w)) - (self.u)(g).0
+    }
+    fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+        self.j * w
+    }
+    fn dl_dgamma(&self, _: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
+        -(self.u)(g).1
+    }
+    fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> {
+        self.j
+    }
+    fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+        Matrix3::zeros()
+    }
+}
+
+impl Routhian for Body {
+    fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        0.5 * w.dot(&(self.j * w)) - (self.u)(g).0 - 0.5 * q * q / n
+    }
+    fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        self.j * w + (q / n) * (self.j * g)
+    }
+    fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        -(self.u)(g).1 + (q / n) * (self.j * w) + (q * q / (n * n)) * (self.j * g)
+    }
+    fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
+        let jg = self.j * g;
+        self.j - jg * jg.transpose() / self.n(g)
+    }
+    fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        (self.j * g) * self.dqn(w, g, p).transpose() + (q / n) * self.j
+    }
+    fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        let (n, q) = (self.n(g), self.q(w, g, p));
+        let dqn = self.dqn(w, g, p);
+        (self.j * w) * dqn.transpose()
+            + (q * q / (n * n)) * self.j
+            + (2.0 * q / n) * (self.j * g) * dqn.transpose()
+            - (self.u)(g).2
+    }
+}
+
+/// U = k·γ (gravity: k = m g r).
+fn linear(k: Vector3<f64>) -> Potential {
+    Box::new(move |g| (k.dot(g), k, Matrix3::zeros()))
+}
+
+/// U = e^{aγ₃}.
+fn exponential(a: f64) -> Potential {
+    Box::new(move |g| {
+        let e = (a * g.z).exp();
+        let mut h = Matrix3::zeros();
+        h[(2, 2)] = a * a * e;
+        (e, Vector3::new(0.0, 0.0, a * e), h)
+    })
+}
+
+/// U = γ₁⁴ + γ₂⁴.
+fn quartic() -> Potential {
+    Box::new(|g| {
+        let v = g.x.powi(4) + g.y.powi(4);
+        let d = Vector3::new(4.0 * g.x.powi(3), 4.0 * g.y.powi(3), 0.0);
+        let h = Matrix3::from_diagonal(&Vector3::new(12.0 * g.x * g.x, 12.0 * g.y * g.y, 0.0));
+        (v, d, h)
+    })
+}
+
+/// `s · U + c|γ|²`.
+fn scaled_shifted(u: Potential, s: f64, c: f64) -> Potential {
+    Box::new(move |g| {
+        let (v, d, h) = u(g);
+        (
+            s * v + c * g.norm_squared(),
+            s * d + 2.0 * c * g,
+            s * h + Matrix3::from_diagonal_element(2.0 * c),
+        )
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Helpers.
+
+/// The roots of `f` in `(lo, hi)` by sign changes on a grid in `x` (uniform or geometric) and
+/// bisection to full precision.
+fn roots(f: impl Fn(f64) -> f64, grid: &[f64]) -> Vec<f64> {
+    let mut out = Vec::new();
+    for w in grid.windows(2) {
+        let (mut a, mut b) = (w[0], w[1]);
+        if f(a) * f(b) > 0.0 {
+            continue;
+        }
+        for _ in 0..200 {
+            let m = 0.5 * (a + b);
+            if f(a) * f(m) <= 0.0 {
+                b = m;
+            } else {
+                a = m;
+            }
+        }
+        out.push(0.5 * (a + b));
+    }
+    out.dedup_by(|x, y| (*x - *y).abs() <= 1e-12 * x.abs().max(1e-300));
+    out
+}
+
+/// A grid of θ ∈ (0, π): geometric from 1e−9 to 1e−2, then uniform.
+fn theta_grid() -> Vec<f64> {
+    let mut g: Vec<f64> = (0..=700)
+        .map(|i| 1e-9 * 10f64.powf(i as f64 / 100.0))
+        .collect();
+    g.extend((1..20_000).map(|i| 1e-2 + (std::f64::consts::PI - 2e-2) * i as f64 / 20_000.0));
+    g
+}
+
+fn checked(model: &Body, p: f64) -> SearchResult {
+    let r = steady_motions_checked(model, p).unwrap();
+    for s in &r.motions {
+        eprintln!("  {s}");
+    }
+    eprintln!(
+        "  χ = {:?}, consistent = {}, {} motions",
+        r.euler_characteristic,
+        r.consistent,
+        r.motions.len()
+    );
+    r
+}
+
+fn verdict(model: &Body, s: &SteadyMotion) -> Stability {
+    classify(model, s).unwrap().verdict
+}
+
+fn find(r: &SearchResult, gamma: Vector3<f64>, tol: f64) -> &SteadyMotion {
+    let hits: Vec<_> = r
+        .motions
+        .iter()
+        .filter(|s| (s.gamma - gamma).norm() <= tol)
+        .collect();
+    assert_eq!(hits.len(), 1, "expected one steady motion at {gamma:?}");
+    hits[0]
+}
+
+/// The tilt θ = ∠(γ, e₃), accurate also near the pole.
+fn tilt(g: &Vector3<f64>) -> f64 {
+    g.x.hypot(g.y).atan2(g.z)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Item 1: counts.
+
+#[test]
+fn exponential_potential_has_exactly_the_two_poles() {
+    // U_r = e^{aγ₃} on the sphere (J = E, p = 0): its tangential gradient a e^{aγ₃}(e₃ − γ₃γ)
+    // vanishes only at ±e₃; the north pole is a maximum, the south pole a minimum (restricted
+    // Hessian ∓a e^{±a}).
+    for a in [1.0, 10.0, 15.0, 30.0] {
+        eprintln!("e^(a z), a = {a}");
+        let body = Body::diag(1.0, 1.0, 1.0, exponential(a));
+        let r = checked(&body, 0.0);
+        assert_eq!(r.motions.len(), 2, "a = {a}");
+        assert!(r.consistent && r.euler_characteristic == Some(2));
+        for (pole, k) in [
+            (Vector3::z(), -a * a.exp()),
+            (-Vector3::z(), a * (-a).exp()),
+        ] {
+            let s = find(&r, pole, 1e-12);
+            assert!(s.isolated);
+            let rep = classify(&body, s).unwrap();
+            for e in rep.restricted_hessian_eigenvalues {
+                assert!((e - k).abs() <= 1e-9 * k.abs(), "a = {a}: {e} vs {k}");
+            }
+        }
+        // p = 0, no gyroscopic forces: the maximum is unstable, the minimum secularly stable.
+        assert_eq!(
+            verdict(&body, find(&r, Vector3::z(), 1e-12)),
+            Stability::Unstable
+        );
+        assert_eq!(
+            verdict(&body, find(&r, -Vector3::z(), 1e-12)),
+            Stability::SecularlyStable
+        );
+    }
+}
+
+/// The critical points of γ₁⁴ + γ₂⁴ on the sphere, from the Lagrange conditions
+/// 4γ₁³ = 2λγ₁, 4γ₂³ = 2λγ₂, 0 = 2λγ₃: if γ₃ ≠ 0 then λ = 0, so γ₁ = γ₂ = 0 (±e₃, U = 0, the
+/// minima, degenerate: U = O(|γ − e₃|⁴)); if γ₃ = 0, each of γ₁, γ₂ is 0 or ±√(λ/2): ±e₁, ±e₂
+/// (U = 1, maxima) and (±1, ±1, 0)/√2 (U = ½, saddles: minimum along the equator, maximum
+/// across). Ten points; indices 2·(+1) + 4·(+1) + 4·(−1) = 2 = χ(S²).
+fn quartic_critical_points() -> Vec<(Vector3<f64>, f64, i64)> {
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let mut out = vec![(Vector3::z(), 0.0, 1), (-Vector3::z(), 0.0, 1)];
+    for v in [Vector3::x(), -Vector3::x(), Vector3::y(), -Vector3::y()] {
+        out.push((v, 1.0, 1));
+    }
+    for (sx, sy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+        out.push((Vector3::new(sx * h, sy * h, 0.0), 0.5, -1));
+    }
+    out
+}
+
+#[test]
+fn quartic_potential_has_ten_critical_points() {
+    let expected = quartic_critical_points();
+    assert_eq!(expected.iter().map(|e| e.2).sum::<i64>(), 2);
+    let body = Body::diag(1.0, 1.0, 1.0, quartic());
+    let r = checked(&body, 0.0);
+    assert_eq!(r.motions.len(), expected.len());
+    assert!(r.consistent);
+    assert_eq!(r.euler_characteristic, Some(2));
+    for (g, u, _) in &expected {
+        let s = find(&r, *g, 1e-8);
+        assert!(s.isolated, "{s}");
+        assert!((s.amended_potential - u).abs() < 1e-12, "{s}");
+    }
+    // The degenerate minima: restricted Hessian 0 (test inconclusive); the maxima are unstable
+    // at p = 0 (degree 2, no gyroscopic forces), the saddles unstable (degree 1).
+    assert_eq!(
+        verdict(&body, find(&r, Vector3::z(), 1e-8)),
+        Stability::Degenerate
+    );
+    assert_eq!(
+        verdict(&body, find(&r, Vector3::x(), 1e-8)),
+        Stability::Unstable
+    );
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    assert_eq!(
+        verdict(&body, find(&r, Vector3::new(h, -h, 0.0), 1e-8)),
+        Stability::Unstable
+    );
+}
+
+#[test]
+fn heavy_top_at_a_vanishing_momentum_has_two_poles() {
+    // U_r = mgl γ₃ + ½p²/(γᵀJγ) with p² = 1e−200: the centrifugal term is far below round-off of
+    // the potential, so the critical points are those of mgl γ₃: ±e₃ (for an asymmetric J too).
+    for j in [Vector3::new(1.0, 1.0, 1.5), Vector3::new(1.0, 2.0, 3.0)] {
+        for p in [0.0, 1e-100] {
+            let body = Body::diag(j.x, j.y, j.z, linear(Vector3::z()));
+            let r = checked(&body, p);
+            assert_eq!(r.motions.len(), 2, "J = {j:?}, p = {p}");
+            assert!(r.consistent);
+            assert!(find(&r, Vector3::z(), 1e-12).isolated);
+            assert!(find(&r, -Vector3::z(), 1e-12).isolated);
+        }
+    }
+}
+
+#[test]
+fn lagrange_top_just_below_the_secular_bound() {
+    // J = diag(1, 1, 1.5), U = mgl γ₃, p² = 4.5(1 − 1e−8), just below mgl C²/(C − A₁) = 4.5.
+    let (a1, c, mgl) = (1.0, 1.5, 1.0);
+    let p2 = mgl * c * c / (c - a1) * (1.0 - 1e-8);
+    let body = Body::diag(a1, a1, c, linear(Vector3::new(0.0, 0.0, mgl)));
+    // Circles γ₃ = z: p²(C − A₁)z = mgl(A₁ + (C − A₁)z²)², solved in θ (z = cos θ) so that the
+    // circle of tilt ≈ 2.4e−4 next to the pole is resolved.
+    let f = |t: f64| {
+        let z = t.cos();
+        p2 * (c - a1) * z - mgl * (a1 + (c - a1) * z * z).powi(2)
+    };
+    let expected = roots(f, &theta_grid());
+    eprintln!("expected circles at θ = {expected:?}");
+    assert_eq!(expected.len(), 2);
+    assert!(expected[0] > 1e-4 && expected[0] < 1e-3);
+    let r = checked(&body, p2.sqrt());
+    assert!(r.consistent);
+    // The poles are isolated; the sleeping top is a (non-degenerate) maximum of U_r with
+    // restricted Hessian κ = p²(C − A₁)/C² − mgl = −1e−8 (twice), gyroscopically stabilised
+    // (Maievskii: p² > 4A₁mgl).
+    let up = find(&r, Vector3::z(), 1e-12);
+    assert!(up.isolated);
+    let rep = classify(&body, up).unwrap();
+    let kappa = p2 * (c - a1) / (c * c) - mgl;
+    for e in rep.restricted_hessian_eigenvalues {
+        assert!((e - kappa).abs() <= 1e-5 * kappa.abs(), "{e} vs {kappa}");
+    }
+    assert_eq!(rep.verdict, Stability::GyroscopicallyStabilized);
+    assert!(find(&r, -Vector3::z(), 1e-12).isolated);
+    let mut circles: Vec<f64> = r
+        .motions
+        .iter()
+        .filter(|s| !s.isolated)
+        .map(|s| tilt(&s.gamma))
+        .collect();
+    circles.sort_by(f64::total_cmp);
+    assert_eq!(circles.len(), 2, "{circles:?} vs {expected:?}");
+    for (t, e) in circles.iter().zip(&expected) {
+        assert!((t - e).abs() <= 1e-6 * e, "circle at θ = {t}, expected {e}");
+    }
+    assert_eq!(r.motions.len(), 4);
+}
+
+#[test]
+fn fast_spherical_top_has_two_nondegenerate_poles() {
+    // J = E: ½p²/(γᵀJγ) is constant on the sphere, U_r = mgl γ₃ + const: two non-degenerate
+    // poles with restricted Hessian ∓mgl. The top is a maximum, gyroscopically stabilised
+    // (p² > 4 A₁ mgl), the bottom a minimum.
+    let mgl = 1.0;
+    for p in [10.0, 1e4, 1e5] {
+        let body = Body::diag(1.0, 1.0, 1.0, linear(Vector3::new(0.0, 0.0, mgl)));
+        let r = checked(&body, p);
+        assert_eq!(r.motions.len(), 2, "p = {p}");
+        assert!(r.consistent);
+        for (pole, k, v) in [
+            (Vector3::z(), -mgl, Stability::GyroscopicallyStabilized),
+            (-Vector3::z(), mgl, Stability::SecularlyStable),
+        ] {
+            let s = find(&r, pole, 1e-4);
+            assert!(s.isolated, "p = {p}: {s}");
+            let rep = classify(&body, s).unwrap();
+            for e in rep.restricted_hessian_eigenvalues {
+                assert!((e - k).abs() <= 1e-3, "p = {p}: {e} vs {k}");
+            }
+            assert_eq!(rep.verdict, v, "p = {p}: {rep}");
+        }
+    }
+}
+
+#[test]
+fn a_constant_on_the_sphere_changes_nothing() {
+    // Lagrange top J = diag(2, 2, 1), mgl = 1, p = 3.5, with c|γ|² added to U (a constant on the
+    // sphere). Circles γ₃ = z: dU_r/dz = p²(A₁ − C)z/n² + mgl = 0, n = C + (A₁ − C)(1 − z²).
+    let (a1, c, mgl, p) = (2.0, 1.0, 1.0, 3.5);
+    let du = |t: f64| {
+        let z = t.cos();
+        let n = c + (a1 - c) * (1.0 - z * z);
+        p * p * (a1 - c) * z / (n * n) + mgl
+    };
+    let expected = roots(du, &theta_grid());
+    assert!(!expected.is_empty());
+    for shift in [0.0, 1e8, -0.4, 1e4] {
+        eprintln!("shift {shift}");
+        let body = Body::diag(
+            a1,
+            a1,
+            c,
+            scaled_shifted(linear(Vector3::new(0.0, 0.0, mgl)), 1.0, shift),
+        );
+        let r = checked(&body, p);
+        assert!(r.consistent, "shift {shift}");
+        let poles: Vec<_> = r.motions.iter().filter(|s| s.isolated).collect();
+        assert_eq!(poles.len(), 2, "shift {shift}");
+        let mut circles: Vec<f64> = r
+            .motions
+            .iter()
+            .filter(|s| !s.isolated)
+            .map(|s| tilt(&s.gamma))
+            .collect();
+        circles.sort_by(f64::total_cmp);
+        assert_eq!(circles.len(), expected.len(), "shift {shift}: {circles:?}");
+        for (t, e) in circles.iter().zip(&expected) {
+            assert!((t - e).abs() <= 1e-6, "shift {shift}: θ = {t} vs {e}");
+        }
+        for s in &r.motions {
+            let v = verdict(&body, s);
+            if !s.isolated {
+                assert_eq!(v, Stability::Degenerate, "shift {shift}: {s}");
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Item 3: classify.
+
+#[test]
+fn a_zero_eigenvalue_does_not_hide_a_proven_instability() {
+    // J = diag(1, 2, 3), U = −γ₃², p = 0, at γ = e₁ (rest). Tilting by θ about e₂ gives
+    // γ₃ = θ, U = −θ², so J₂θ̈ = 2θ: λ = ±√(2/J₂) = ±1. About e₃ nothing changes (U does not
+    // depend on γ₂ to second order): a zero eigenvalue. The restricted form is (−2, 0).
+    let body = Body::new(
+        Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+        Box::new(|g| {
+            let mut h = Matrix3::zeros();
+            h[(2, 2)] = -2.0;
+            (-g.z * g.z, Vector3::new(0.0, 0.0, -2.0 * g.z), h)
+        }),
+    );
+    let s = SteadyMotion::at(&body, Vector3::x(), 0.0, true).unwrap();
+    let rep = classify(&body, &s).unwrap();
+    assert_eq!(rep.restricted_hessian_eigenvalues, [-2.0, 0.0]);
+    let lambda = (2.0f64 / 2.0).sqrt();
+    assert!(rep
+        .f2_roots
+        .iter()
+        .any(|r| (r.re - lambda).abs() < 1e-12 && r.im.abs() < 1e-12));
+    assert_eq!(rep.verdict, Stability::Unstable, "{rep}");
+}
+
+#[test]
+fn classify_rejects_a_point_that_is_not_a_steady_motion() {
+    // J = E, U = γ₃, p = 0: U_r = γ₃, whose tangential gradient at tilt θ has norm sin θ = 0.2.
+    let body = Body::diag(1.0, 1.0, 1.0, linear(Vector3::z()));
+    let t = 0.2f64.asin();
+    let g = Vector3::new(t.sin(), 0.0, t.cos());
+    let s = SteadyMotion::at(&body, g, 0.0, true).unwrap();
+    match classify(&body, &s) {
+        Err(RouthError::NotASteadyMotion { residual, tol, .. }) => {
+            // The residual is the Newton step |K⁻¹g| = sin θ / cos θ.
+            assert!((residual - t.tan()).abs() < 1e-9, "{residual}");
+            assert_eq!(tol, ClassifyOptions::default().steady_tol);
+        }
+        other => panic!("expected NotASteadyMotion, got {other:?}"),
+    }
+    // A point of a circle of the Lagrange top typed with 9 digits is accepted.
+    let (a1, c, mgl, p) = (2.0, 1.0, 1.0, 3.5);
+    let top = Body::diag(a1, a1, c, linear(Vector3::new(0.0, 0.0, mgl)));
+    let du = |t: f64| {
+        let z = t.cos();
+        let n = c + (a1 - c) * (1.0 - z * z);
+        p * p * (a1 - c) * z / (n * n) + mgl
+    };
+    let th = roots(du, &theta_grid())[0];
+    let typed = |x: f64| (x * 1e9).round() / 1e9;
+    let g = Vector3::new(typed(th.sin()), 0.0, typed(th.cos()));
+    let s = SteadyMotion::at(&top, g, p, false).unwrap();
+    assert_eq!(classify(&top, &s).unwrap().verdict, Stability::Degenerate);
+    // ... and one typed with 3 digits is not.
+    let g = Vector3::new(th.sin(), 0.0, th.cos()) + Vector3::new(1e-3, 0.0, 0.0);
+    let s = SteadyMotion::at(&top, g.normalize(), p, false).unwrap();
+    assert!(matches!(
+        classify(&top, &s),
+        Err(RouthError::NotASteadyMotion { .. })
+    ));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scale invariance and the self-check.
+
+#[test]
+fn scaling_the_model_changes_nothing() {
+    // J → sJ, U → sU, p_ψ → s p_ψ (p_ψ² → s²p_ψ²) multiplies U_r by s: same γ, counts, verdicts.
+    type Make = fn(f64) -> (Body, f64);
+    let cases: [(&str, Make); 4] = [
+        ("asymmetric heavy top", |s| {
+            let j = Matrix3::new(2.0, 0.3, 0.1, 0.3, 1.5, -0.2, 0.1, -0.2, 1.0);
+            (
+                Body::new(
+                    s * j,
+                    scaled_shifted(linear(Vector3::new(0.3, -0.2, 1.0)), s, 0.0),
+                ),
+                2.5 * s,
+            )
+        }),
+        ("Lagrange top", |s| {
+            (
+                Body::diag(
+                    2.0 * s,
+                    2.0 * s,
+                    s,
+                    scaled_shifted(linear(Vector3::z()), s, 0.0),
+                ),
+                3.5 * s,
+            )
+        }),
+        ("Lagrange top near the secular bound", |s| {
+            (
+                Body::diag(s, s, 1.5 * s, scaled_shifted(linear(Vector3::z()), s, 0.0)),
+                (4.5f64 * (1.0 - 1e-8)).sqrt() * s,
+            )
+        }),
+        ("quartic", |s| {
+            (Body::diag(s, s, s, scaled_shifted(quartic(), s, 0.0)), 0.0)
+        }),
+    ];
+    for (what, make) in cases {
+        let (b1, p1) = make(1.0);
+        let base = steady_motions_checked(&b1, p1).unwrap();
+
+        for s in [1e9, 1e-9] {
+            let (bs, ps) = make(s);
+            let r = steady_motions_checked(&bs, ps).unwrap();
+            assert_eq!(r.motions.len(), base.motions.len(), "{what}, s = {s}");
+            assert_eq!(r.consistent, base.consistent);
+            assert_eq!(r.euler_characteristic, base.euler_characteristic);
+            // U_r can tie (the sleeping top and the tiny circle next to it): match by position.
+            for x in &r.motions {
+                let same = |y: &&SteadyMotion| {
+                    y.isolated == x.isolated
+                        && if x.isolated {
+                            (x.gamma - y.gamma).norm() < 1e-9
+                        } else {
+                            (tilt(&x.gamma) - tilt(&y.gamma)).abs() < 1e-8
+                        }
+                };
+                let ys: Vec<_> = base.motions.iter().filter(same).collect();
+                assert_eq!(ys.len(), 1, "{what}, s = {s}: {x}");
+                let y = ys[0];
+                assert!(
+                    (x.amended_potential - s * y.amended_potential).abs()
+                        <= 1e-12 * (s * y.amended_potential).abs().max(s)
+                );
+                assert_eq!(verdict(&bs, x), verdict(&b1, y), "{what}, s = {s}: {x}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_self_check_flags_incomplete_counts() {
+    // The minima ±e₃ of γ₁⁴ + γ₂⁴ are degenerate: Newton approaches them only linearly (ratio
+    // 2/3), so an iteration budget of 8 cannot reach them. They are missed, the indices of the
+    // other eight points sum to 4·(+1) + 4·(−1) = 0 ≠ 2, and the count must be flagged.
+    let body = Body::diag(1.0, 1.0, 1.0, quartic());
+    let opts = SearchOptions {
+        max_iterations: 8,
+        ..SearchOptions::default()
+    };
+    let r = steady_motions_checked_with(&body, 0.0, &opts).unwrap();
+    assert_eq!(r.motions.len(), 8, "{:#?}", r.motions);
+    assert_eq!(r.euler_characteristic, Some(0));
+    assert!(!r.consistent);
+    // With the default budget everything is found and reconciled (see
+    // `quartic_potential_has_ten_critical_points`). A pair of critical points whose indices
+    // cancel (a maximum and a saddle) can still be missed without a flag: with very few starts,
+    // either all ten are found or the flag is down, or exactly such a pair is missing.
+    for starts in 1..=8 {
+        let opts = SearchOptions {
+            starts,
+            ..SearchOptions::default()
+        };
+        let r = steady_motions_checked_with(&body, 0.0, &opts).unwrap();
+        let complete = r.motions.len() == 10;
+        assert!(
+            complete || !r.consistent || r.motions.len() % 2 == 0,
+            "starts = {starts}"
+        );
+        assert!(r.motions.len() <= 10, "starts = {starts}: duplicates");
+    }
+}
