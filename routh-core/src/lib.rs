@@ -17,6 +17,7 @@ pub use nalgebra::{Complex, Matrix3, Vector3};
 
 mod error;
 pub mod families;
+mod krein;
 mod model;
 pub mod sim;
 mod sphere;

@@ -67,8 +67,10 @@ pub(crate) struct Tangential {
     /// `|step|` (`+∞` if it is not finite).
     pub step_len: f64,
     /// The residual of (33) as a distance on the sphere: 0 when `|g|` is within round-off
-    /// ([`Self::grad_floor`]), otherwise `step_len`. Invariant under adding `c|γ|²` to `U` and
-    /// under multiplying the model by a constant.
+    /// ([`Self::grad_floor`]), otherwise the smaller of `step_len` and the second-order estimate
+    /// `√(2|g|/raw)` (which matters only at degenerate points, where `K` vanishes). Invariant
+    /// under multiplying the model by a constant; `step_len` is also invariant under adding
+    /// `c|γ|²` to `U`.
     pub residual: f64,
 }
 
@@ -119,7 +121,20 @@ impl Tangential {
             l if l.is_finite() => l,
             _ => f64::INFINITY,
         };
-        let residual = if grad_norm <= gf { 0.0 } else { step_len };
+        // At a degenerate critical point (K → 0, e.g. a branch point located exactly) the
+        // Newton step overestimates the distance: there |g| grows quadratically with it, with a
+        // coefficient of the size of the third derivatives, bounded by `raw`. The smaller of the
+        // two estimates is the distance.
+        let quadratic = if raw > 0.0 {
+            (2.0 * grad_norm / raw).sqrt()
+        } else {
+            f64::INFINITY
+        };
+        let residual = if grad_norm <= gf {
+            0.0
+        } else {
+            step_len.min(quadratic)
+        };
         Tangential {
             basis,
             grad,

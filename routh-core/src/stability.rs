@@ -5,9 +5,10 @@
 
 use std::fmt;
 
-use nalgebra::{Complex, Vector3};
+use nalgebra::{Complex, Matrix2, Vector3};
 
 use crate::error::RouthError;
+use crate::krein::krein_signatures;
 use crate::model::Routhian;
 use crate::sphere::{tangent_basis, Tangential};
 use crate::steady::SteadyMotion;
@@ -24,11 +25,13 @@ pub struct ClassifyOptions {
     /// Tolerance on the residual of (33) for `steady.gamma` to count as a steady motion, as a
     /// distance on the sphere (radians): the length of the Newton step `K⁻¹g` to the nearest
     /// critical point of `U_r` (`g` the tangential gradient, `K` the restricted form, see
-    /// [`classify`]). It is relative in the sense that it compares `g` with `K`, so it does not
-    /// change when the model is multiplied by a constant or `c|γ|²` is added to `U`. Beyond it,
-    /// [`classify`] fails with [`RouthError::NotASteadyMotion`]. Default `1e−6`: loose enough for a
-    /// point found by [`steady_motions`](crate::steady_motions) (`≤ 1e−10`) or typed with 9
-    /// digits, far below any distance between distinct steady motions that the analysis can
+    /// [`classify`]), or where `K` nearly vanishes (a branch point) the second-order estimate
+    /// `√(2|g|/s)` with `s` the size of the derivatives. It compares `g` with `K`, so it does not
+    /// change when the model is multiplied by a constant. Beyond it, [`classify`] fails with
+    /// [`RouthError::NotASteadyMotion`]. Default `1e−5`: loose enough for a point found by
+    /// [`steady_motions`](crate::steady_motions) (`≤ 1e−10`), typed with 9 digits, or converged
+    /// next to a branch point (where a gradient at round-off level still means a distance of
+    /// order `√ε`), far below any distance between distinct steady motions that the analysis can
     /// resolve.
     pub steady_tol: f64,
     /// Relative tolerance on the discriminant of `f₂` in `λ²` under which its two roots in `λ²`
@@ -44,7 +47,7 @@ impl Default for ClassifyOptions {
         ClassifyOptions {
             zero_eigenvalue_tol: 1e-8,
             double_root_tol: 1e-10,
-            steady_tol: 1e-6,
+            steady_tol: 1e-5,
         }
     }
 }
@@ -106,6 +109,12 @@ pub struct StabilityReport {
     /// The four roots of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` (ERRATA E5), sorted by real part, then
     /// imaginary part. They are the non-zero eigenvalues of the linearised full system (8).
     pub f2_roots: [Complex<f64>; 4],
+    /// The Krein signature of each root in [`f2_roots`](Self::f2_roots): `+1` or `−1` for a root
+    /// on the imaginary axis (the sign of the energy of its mode), `0` for a root off the axis.
+    /// Gyroscopic stabilisation has two pairs of opposite signature; gyroscopic stability is lost
+    /// where two of opposite signature collide (a Hamiltonian–Hopf bifurcation), while roots of
+    /// equal signature pass each other harmlessly.
+    pub krein_signatures: [i8; 4],
     /// The verdict.
     pub verdict: Stability,
 }
@@ -119,9 +128,14 @@ impl fmt::Display for StabilityReport {
              instability {}, roots of f₂:",
             self.verdict, k1, k2, self.degree_of_instability
         )?;
-        for (i, r) in self.f2_roots.iter().enumerate() {
+        for (i, (r, k)) in self.f2_roots.iter().zip(self.krein_signatures).enumerate() {
             let sep = if i == 0 { " " } else { ", " };
-            write!(f, "{sep}{:+.6e}{:+.6e}i", r.re, r.im)?;
+            let krein = match k {
+                1 => " (Krein +)",
+                -1 => " (Krein −)",
+                _ => "",
+            };
+            write!(f, "{sep}{:+.6e}{:+.6e}i{krein}", r.re, r.im)?;
         }
         Ok(())
     }
@@ -154,7 +168,7 @@ impl fmt::Display for StabilityReport {
 ///
 /// - `γ` must be a steady motion: the Newton step `|K⁻¹g|` to the nearest critical point (`g` the
 ///   tangential gradient of `U_r`; 0 when `|g| ≤ 1024 ε |∂R/∂γ|`, round-off) must not exceed
-///   [`ClassifyOptions::steady_tol`] (radians, default `1e−6`), otherwise
+///   [`ClassifyOptions::steady_tol`] (radians, default `1e−5`), otherwise
 ///   [`RouthError::NotASteadyMotion`].
 /// - An eigenvalue κ of `K` is zero when `|κ| ≤ max(`[`ClassifyOptions::zero_eigenvalue_tol`]` ·
 ///   ‖K‖_F, 1024 ε · s_raw)`, `s_raw = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`: relative to the restricted form
@@ -290,9 +304,11 @@ pub fn classify_with<M: Routhian>(
     let degree = eigs.iter().filter(|&&e| e < -zero_tol).count();
 
     // (64) on the tangent plane (ERRATA E5).
-    let (coeffs, a_norm) = f2_parts(model, &gamma, p_psi)?;
-    let [c4, c2, c0] = coeffs;
+    let parts = f2_parts(model, &gamma, p_psi)?;
+    let [c4, c2, c0] = parts.coefficients;
+    let a_norm = parts.a.norm();
     let roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
+    let krein_signatures = krein_signatures(&parts.a, parts.g, &parts.c, &roots.lambda);
 
     let verdict = if any_zero {
         // det K = c₀ is zero within the tolerance, so f₂ ≈ λ²(c₄λ² + c₂): a real root pair
@@ -320,6 +336,7 @@ pub fn classify_with<M: Routhian>(
         restricted_hessian_eigenvalues: eigs,
         degree_of_instability: degree,
         f2_roots: roots.lambda,
+        krein_signatures,
         verdict,
     })
 }
@@ -334,16 +351,24 @@ pub fn f2_coefficients<M: Routhian>(
     gamma: &Vector3<f64>,
     p_psi: f64,
 ) -> Result<[f64; 3], RouthError> {
-    Ok(f2_parts(model, gamma, p_psi)?.0)
+    Ok(f2_parts(model, gamma, p_psi)?.coefficients)
 }
 
-/// [`f2_coefficients`] and the Frobenius norm of `PᵀAP` (which bounds how much an error in `PᵀCP`
-/// moves `c₂`).
+/// The linearisation on the tangent plane, `a ẍ + 2g J ẋ + c x = 0` (`a = PᵀAP`, `c = PᵀCP`,
+/// `J = [[0, 1], [−1, 0]]`), with the coefficients of its characteristic polynomial `f₂`.
+struct F2Parts {
+    coefficients: [f64; 3],
+    a: Matrix2<f64>,
+    g: f64,
+    c: Matrix2<f64>,
+}
+
+/// [`f2_coefficients`] with the restricted matrices they come from.
 fn f2_parts<M: Routhian>(
     model: &M,
     gamma: &Vector3<f64>,
     p_psi: f64,
-) -> Result<([f64; 3], f64), RouthError> {
+) -> Result<F2Parts, RouthError> {
     check_finite("p_psi", &[p_psi])?;
     let gamma = unit_gamma("gamma", gamma)?;
     check_kinetic(model, &gamma)?;
@@ -369,7 +394,12 @@ fn f2_parts<M: Routhian>(
             min_eigenvalue: c4,
         });
     }
-    Ok(([c4, c2, c0], a.norm()))
+    Ok(F2Parts {
+        coefficients: [c4, c2, c0],
+        a,
+        g,
+        c,
+    })
 }
 
 /// How the roots in `s = λ²` of `c₄s² + c₂s + c₀` lie.

@@ -551,3 +551,26 @@ fn display_is_readable() {
         "degenerate (test inconclusive)"
     );
 }
+
+/// Krein signatures: a secularly stable motion (energy positive definite on the tangent plane)
+/// has only modes of positive energy; a gyroscopically stabilised one (degree 2) has, for each
+/// sign of the frequency, one mode of each energy sign — the pair that collides at Maievskii's
+/// bound.
+#[test]
+fn krein_signatures_of_the_sleeping_top() {
+    let top = HeavyTop::lagrange(1.0, 1.25, 1.0);
+    // Maievskii p = 2, secular bound p = 2.5.
+    let gyro = classify(&top, &sleeping(&top, 2.2)).unwrap();
+    assert_eq!(gyro.verdict, Stability::GyroscopicallyStabilized);
+    let upper: Vec<i8> = (0..4)
+        .filter(|&k| gyro.f2_roots[k].im > 0.0)
+        .map(|k| gyro.krein_signatures[k])
+        .collect();
+    assert_eq!(upper.len(), 2);
+    assert_eq!(upper[0], -upper[1], "{gyro}");
+    let secular = classify(&top, &sleeping(&top, 3.0)).unwrap();
+    assert_eq!(secular.verdict, Stability::SecularlyStable);
+    assert_eq!(secular.krein_signatures, [1, 1, 1, 1], "{secular}");
+    let unstable = classify(&top, &sleeping(&top, 1.0)).unwrap();
+    assert_eq!(unstable.krein_signatures, [0, 0, 0, 0], "{unstable}");
+}

@@ -123,6 +123,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         let mut xi = Vector2::zeros();
         let mut sigma = sigma_p;
         let rows = if circle.is_some() { 4 } else { 3 };
+        let mut last_step = f64::INFINITY;
         for it in 0..16 {
             let e = chart_eval(
                 self.family,
@@ -136,7 +137,14 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             let f = e.f / sc;
             let cres = a_xi.dot(&xi) + constraint.a_s * (sigma - sigma_p) - c0;
             let cir = circle.map_or(0.0, |c| c.dot(&xi));
-            if f.norm() <= self.opts.newton_tol && cres.abs() <= 1e-13 && cir.abs() <= 1e-13 {
+            // Converged: the residual within tolerance, or within a hundred times it once the
+            // Newton steps have reached round-off.
+            let tol = if last_step <= 1e-13 {
+                100.0 * self.opts.newton_tol
+            } else {
+                self.opts.newton_tol
+            };
+            if f.norm() <= tol && cres.abs() <= 1e-13 && cir.abs() <= 1e-13 {
                 return Ok(Some((e.gamma, sigma * self.len, it)));
             }
             let mut a = DMatrix::zeros(rows, 3);
@@ -163,6 +171,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             if !step.iter().all(|v| v.is_finite()) {
                 return Ok(None);
             }
+            last_step = step.norm();
             xi -= Vector2::new(step[0], step[1]);
             sigma -= step[2];
             if xi.norm() > 0.5 || !sigma.is_finite() {

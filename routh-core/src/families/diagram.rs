@@ -296,6 +296,13 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         let Some(start) = ctx.node(&g, s1, None, it)? else {
             return Ok(());
         };
+        // A seed at a degenerate point (a bifurcation point hit by a seed value) is not a
+        // regular point of an isolated branch, and a circle needs its zero eigenvalue: the
+        // branches through such a seed are found from their regular points.
+        let zero = start.eig.iter().any(|e| e.abs() <= 1e-6);
+        if isolated == zero {
+            return Ok(());
+        }
         self.follow(&ctx, start)
     }
 
@@ -503,11 +510,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             let mut candidates: Vec<(Vector3<f64>, f64, bool)> = Vec::new();
             if both_zero && sw.isolated {
                 // The birth of a circle of steady motions (a symmetric body): any direction.
-                let u = basis * Vector2::new(1.0, 0.0);
-                candidates.push((u, 0.0, false));
-                // Without the symmetry both directions may start isolated branches.
-                candidates.push((u, 0.0, true));
-                candidates.push((basis * Vector2::new(0.0, 1.0), 0.0, true));
+                // (A double zero without a symmetry is of codimension two in a one-parameter
+                // family: not looked for.)
+                candidates.push((basis * Vector2::new(1.0, 0.0), 0.0, false));
             } else {
                 // At a branch point [K | F_σ] has rank one: its null space is the plane
                 // orthogonal to its dominant row r, spanned by the branch's tangent t and r × t.
@@ -645,7 +650,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 .map(|(nodes, _)| {
                     nodes
                         .windows(2)
-                        .filter(|p| (p[0].s - s) * (p[1].s - s) < 0.0)
+                        .filter(|p| (p[0].s < s) != (p[1].s < s))
                         .count()
                 })
                 .sum();

@@ -59,7 +59,7 @@ pub struct ContinuationOptions {
     pub max_steps: usize,
     /// Budget of branches (default `64`).
     pub max_branches: usize,
-    /// Relative tolerance of the Newton corrector on the Riemannian gradient (default `1e−11`).
+    /// Relative tolerance of the Newton corrector on the Riemannian gradient (default `1e−12`).
     pub newton_tol: f64,
     /// Events are located to `|Δs| ≤ event_tol · max(1, |s|)` (default `1e−10`, inside the
     /// `1e−9` of the contract).
@@ -85,7 +85,7 @@ impl Default for ContinuationOptions {
             min_step: 1e-7,
             max_steps: 20_000,
             max_branches: 64,
-            newton_tol: 1e-11,
+            newton_tol: 1e-12,
             event_tol: 1e-10,
             seeds: 5,
             verify_counts: true,
