@@ -1,5 +1,6 @@
-//! The heavy symmetric (Lagrange) top: its steady motions, their stability, and Maievskii's bound
-//! `p_ψ² > 4A₁mgl` for the sleeping top found numerically.
+//! The heavy symmetric (Lagrange) top: its steady motions, their stability, and its bifurcation
+//! diagram over the cyclic momentum, whose events sit on Maievskii's bound `p_ψ² = 4A₁mgl` and the
+//! secular bound `p_ψ² = mglC²/(C − A₁)`.
 //!
 //! Run with `cargo run --release --example heavy_top`. Figures go to `out/heavy_top/`.
 
@@ -12,9 +13,10 @@ use std::time::Instant;
 use common::plot::{verdict_series, Figure, Series, Style};
 use common::{linspace, verdict_label};
 use derived_models::LagrangeTop;
-use derived_models::{classified_steady_motions, instability_threshold, report_at};
+use derived_models::{classified_steady_motions, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition, BLACK};
-use routh::{simulate_full, Routhian, SimOptions, Vector3};
+use routh::families::bifurcation_diagram_checked;
+use routh::{simulate_full, ContinuationOptions, EventKind, Routhian, SimOptions, Vector3};
 
 fn main() -> Result<(), Box<dyn Error>> {
     let start = Instant::now();
@@ -39,34 +41,67 @@ fn main() -> Result<(), Box<dyn Error>> {
         common::print_steady_table(&rows, &e3, "tilt");
     }
 
-    // --- Maievskii's bound --------------------------------------------------------------------
+    // --- The bifurcation diagram over p_ψ ---------------------------------------------------------
     let formula = top.maievskii_p();
-    let found = instability_threshold(&top, e3, 0.5 * formula, 1.5 * formula, 1e-13)?
-        .ok_or("the verdict of the sleeping top does not change in the bracket")?;
-    println!("\nSleeping top γ = e₃ (ω = ψ̇γ, ψ̇ = p_ψ/C)");
-    println!("------------------------------------------");
+    let range = (0.0, 5.0);
+    let checked =
+        bifurcation_diagram_checked(|p| (top.clone(), p), range, &ContinuationOptions::default())?;
+    let diagram = &checked.diagram;
     println!(
-        "Maievskii threshold, bisection on the verdict:  p_ψ = {found:.12}   (p_ψ² = {:.12})",
-        found * found
+        "\nBifurcation diagram over p_ψ ∈ [{}, {}] (pseudo-arclength continuation, events located \
+         by their defining equations)",
+        range.0, range.1
     );
-    println!(
-        "Formula p_ψ² = 4A₁mgl:                          p_ψ = {formula:.12}   (p_ψ² = {:.12})",
-        formula * formula
-    );
-    println!(
-        "Relative difference in p_ψ: {:.2e}",
-        (found - formula).abs() / formula
-    );
-    if let Some(ps) = top.secular_p() {
-        // Where the restricted second variation changes sign: there the verdict goes from
-        // gyroscopically stabilised to secularly stable (through `Degenerate` exactly at the
-        // boundary, within classify's zero-eigenvalue tolerance).
-        let found_s = derived_models::bisect(formula * 1.001, 3.0 * ps, 1e-13, |p| {
-            Ok(report_at(&top, e3, p)?.restricted_hessian_eigenvalues[0] > 0.0)
-        })?
-        .ok_or("no secular-stability boundary found")?;
+    for (i, b) in diagram.branches.iter().enumerate() {
+        let first = &b.points[0];
+        let last = &b.points[b.points.len() - 1];
         println!(
-            "Secular stability (U_r minimal) from:          p_ψ = {found_s:.12}   (formula p_ψ² = mglC²/(C − A₁): p_ψ = {ps:.12})"
+            "  branch {i}: {} points, {}, p_ψ from {:.6} to {:.6}, tilt from {:.2}° to {:.2}°",
+            b.points.len(),
+            if b.isolated {
+                "isolated steady motions"
+            } else {
+                "circles of tilted steady motions"
+            },
+            first.s,
+            last.s,
+            first.steady.gamma.z.clamp(-1.0, 1.0).acos().to_degrees(),
+            last.steady.gamma.z.clamp(-1.0, 1.0).acos().to_degrees(),
+        );
+    }
+    println!(
+        "\n  {:<18}  {:>16}  {:<38}  {:>16}  {:>8}",
+        "event", "p_ψ found", "closed form", "p_ψ closed form", "|Δp_ψ|"
+    );
+    for e in &diagram.events {
+        let (name, exact) = match e.kind {
+            EventKind::HamiltonianHopf => ("Maievskii p² = 4A₁mgl", Some(formula)),
+            EventKind::BranchPoint => ("secular p² = mglC²/(C − A₁)", top.secular_p()),
+            EventKind::Fold => ("fold of the tilted circles", None),
+        };
+        let exact = exact.unwrap_or(f64::NAN);
+        println!(
+            "  {:<18}  {:>16.12}  {:<38}  {:>16.12}  {:>8.1e}",
+            e.kind.to_string(),
+            e.s,
+            name,
+            exact,
+            (e.s - exact).abs()
+        );
+        println!("      on branch {}: {} → {}", e.branch, e.before, e.after);
+    }
+    println!(
+        "  count checks against global searches between events: {}",
+        if checked.consistent() {
+            "all agree"
+        } else {
+            "MISMATCH"
+        }
+    );
+    for c in &checked.checks {
+        println!(
+            "    p_ψ = {:.4}: {} steady motions on the branches, {} found by steady_motions",
+            c.s, c.on_branches, c.searched
         );
     }
     println!(
