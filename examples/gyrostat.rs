@@ -16,7 +16,7 @@ use common::{linspace, verdict_label};
 use derived_models::Gyrostat;
 use derived_models::{classified_steady_motions, report_at};
 use plotters::prelude::SeriesLabelPosition;
-use routh::{DerivedFormulas, Routhian, Vector3};
+use routh::{continue_branch, ContinuationOptions, DerivedFormulas, EventKind, Routhian, Vector3};
 
 /// Unit vectors spread over the sphere (deterministic), for the formula check.
 fn sample_directions(n: usize) -> Vec<Vector3<f64>> {
@@ -156,15 +156,27 @@ fn main() -> Result<(), Box<dyn Error>> {
         common::print_steady_table(&classified_steady_motions(&kelvin, p)?, &e3, "∠(γ,e₃)");
     }
     let k_formula = kelvin.rest_rotor_threshold();
-    // The gyrostat at rest upright: γ = e₃, ω = 0, hence p_ψ = K₃; bisect on the rotor's K₃.
-    let k_found = derived_models::bisect(0.2 * k_formula, 3.0 * k_formula, 1e-13, |k3| {
-        let body = Gyrostat {
-            rotor: Vector3::new(0.0, 0.0, k3),
-            ..kelvin.clone()
-        };
-        Ok(report_at(&body, e3, k3)?.verdict == routh::Stability::Unstable)
-    })?
-    .ok_or("no change of verdict for the gyrostat at rest")?;
+    // The gyrostat at rest upright: γ = e₃, ω = 0, hence p_ψ = K₃. Follow that steady motion
+    // over the rotor's K₃: it is gyroscopically stabilised from a Hamiltonian–Hopf point on.
+    let along_rotor = continue_branch(
+        |k3| {
+            let body = Gyrostat {
+                rotor: Vector3::new(0.0, 0.0, k3),
+                ..kelvin.clone()
+            };
+            (body, k3)
+        },
+        e3,
+        0.5 * k_formula,
+        (0.2 * k_formula, 3.0 * k_formula),
+        &ContinuationOptions::default(),
+    )?;
+    let k_found = along_rotor
+        .events
+        .iter()
+        .find(|e| e.kind == EventKind::HamiltonianHopf && (e.gamma - e3).norm() < 1e-9)
+        .map(|e| e.s)
+        .ok_or("no Hamiltonian–Hopf point on the upright gyrostat at rest")?;
     let rest = report_at(&kelvin, e3, kelvin.rotor.z)?;
     println!(
         "\nAt rest upright (γ = e₃, ω = 0, p_ψ = K₃ = {}, ψ̇ = {:.1e}): {} (degree of instability {}).",
@@ -174,7 +186,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         rest.degree_of_instability
     );
     println!("Smallest rotor momentum that stabilises the upright body at rest:");
-    println!("  bisection on K₃ of the verdict at (γ = e₃, p_ψ = K₃):  K₃ = {k_found:.12}");
+    println!("  continuation in K₃, Hamiltonian–Hopf point:            K₃ = {k_found:.12}");
     println!("  formula √(mgl)(√I₁ + √I₂):                           K₃ = {k_formula:.12}");
     println!(
         "  relative difference {:.1e}",
