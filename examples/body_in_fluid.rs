@@ -13,7 +13,7 @@ use std::time::Instant;
 use common::plot::{verdict_series, Figure, Series, Style};
 use common::{linspace, lpad, rpad, verdict_label};
 use derived_models::fluid_body::{perturbed_axial, FluidBody, Kirchhoff};
-use derived_models::{classified_steady_motions, instability_threshold, report_at};
+use derived_models::{classified_steady_motions, report_at, stability_threshold};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::fluid::FluidParameters;
 use routh::{simulate_full, Lagrangian, Matrix3, SimOptions, Vector3};
@@ -118,10 +118,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         table(&model, &f, p)?;
     }
     let formula = rev.axial_threshold(k);
-    let found = instability_threshold(&model, e3, 0.2 * formula, 3.0 * formula, 1e-13)?
+    let found = stability_threshold(&model, e3, 0.2 * formula, 3.0 * formula)?
         .ok_or("no change of verdict for the axial motion")?;
     println!("\nMotion along the axis (γ = e₃) spinning about it: stability threshold");
-    println!("  bisection on the verdict:         p_ψ = {found:.12}");
+    println!("  continuation, event on the branch: p_ψ = {found:.12}");
     println!("  formula p_ψ² = 4A₁k²(1/c₃ − 1/c₁): p_ψ = {formula:.12}");
     println!(
         "  relative difference {:.1e};  Kirchhoff's constant k·p_ψ = {:.6}, spin ω₃ = p_ψ/A₃ = {:.6}",

@@ -16,7 +16,7 @@ use std::time::Instant;
 use common::plot::{verdict_series, Figure};
 use common::{linspace, verdict_label};
 use derived_models::Ellipsoid;
-use derived_models::{classified_steady_motions, instability_threshold, report_at};
+use derived_models::{classified_steady_motions, report_at, stability_threshold};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::{Routhian, Stability, Vector3};
 
@@ -76,7 +76,7 @@ fn study(
     };
     for &sigma in sigmas {
         let gamma = sigma * e3;
-        let found = instability_threshold(body, gamma, 0.5, 40.0, 1e-13)?
+        let found = stability_threshold(body, gamma, 0.5, 40.0)?
             .ok_or("the verdict of the spin does not change in [0.5, 40]")?;
         let formula = if spheroid {
             body.spheroid_threshold(sigma)
@@ -90,7 +90,7 @@ fn study(
             "largest root of Δ(p²)"
         };
         println!(
-            "  σ = {:+}: C₃ = {:.3}; bisection on the verdict: p_ψ = {found:.12}; hand formula \
+            "  σ = {:+}: C₃ = {:.3}; continuation: p_ψ = {found:.12}; hand formula \
              ({which}): p_ψ = {formula:.12}; rel. diff {:.1e}",
             sigma,
             body.height(&gamma),

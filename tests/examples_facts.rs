@@ -4,8 +4,8 @@
 //! the `derived-models` crate.
 
 use derived_models::{
-    bisect, classified_steady_motions, instability_threshold, report_at, verdict_at, Ellipsoid,
-    FluidBody, Gyrostat, Kirchhoff, LagrangeTop,
+    bisect, classified_steady_motions, instability_threshold, report_at, stability_threshold,
+    verdict_at, Ellipsoid, FluidBody, Gyrostat, Kirchhoff, LagrangeTop,
 };
 use routh::{simulate_full, Lagrangian, Matrix3, Routhian, SimOptions, Stability, Vector3};
 
@@ -222,6 +222,14 @@ fn spheroid_spin_thresholds_match_4_i_mg_l() {
         let found = instability_threshold(&body, gamma, 0.5, 40.0, 1e-13)
             .unwrap()
             .unwrap();
+        // The same threshold as an event of the branch, located by continuation.
+        let event = stability_threshold(&body, gamma, 0.5, 40.0)
+            .unwrap()
+            .unwrap();
+        assert!(
+            rel(event, formula) < 1e-9,
+            "σ = {sigma}: {event} vs {formula}"
+        );
         assert!(
             rel(found, formula) < 2e-9,
             "σ = {sigma}: {found} vs {formula}"
@@ -244,6 +252,10 @@ fn triaxial_spin_threshold_matches_the_hand_quartic() {
     let found = instability_threshold(&body, Vector3::z(), 0.5, 40.0, 1e-13)
         .unwrap()
         .unwrap();
+    let event = stability_threshold(&body, Vector3::z(), 0.5, 40.0)
+        .unwrap()
+        .unwrap();
+    assert!(rel(event, formula) < 1e-9, "{event} vs {formula}");
     assert!(rel(found, formula) < 2e-9, "{found} vs {formula}");
     // The hand second variation kᵢ matches classify's restricted Hessian.
     for sigma in [1.0, -1.0] {
@@ -342,6 +354,10 @@ fn spinning_body_of_revolution_threshold_matches_the_formula() {
         let found = instability_threshold(&model, e3, 0.2 * formula, 3.0 * formula, 1e-13)
             .unwrap()
             .unwrap();
+        let event = stability_threshold(&model, e3, 0.2 * formula, 3.0 * formula)
+            .unwrap()
+            .unwrap();
+        assert!(rel(event, formula) < 1e-9, "k = {k}: {event} vs {formula}");
         assert!(rel(found, formula) < 2e-9, "k = {k}: {found} vs {formula}");
         assert_eq!(
             verdict_at(&model, e3, 0.99 * formula).unwrap(),

@@ -29,7 +29,8 @@ pub mod gyrostat;
 pub mod top;
 
 pub use analysis::{
-    bisect, classified_steady_motions, instability_threshold, report_at, verdict_at, Classified,
+    bisect, classified_steady_motions, instability_threshold, report_at, stability_threshold,
+    verdict_at, Classified,
 };
 pub use ellipsoid::{DiagonalEllipsoid, Ellipsoid, DIAGONAL_ELLIPSOID_SRC};
 pub use fluid_body::{FluidBody, Kirchhoff};
