@@ -1,5 +1,5 @@
 //! Stability of a steady motion: sufficient conditions (62)–(63), the degree of instability and
-//! gyroscopic stabilisation (64), with the corrections of ERRATA E4, E5 and E8.
+//! gyroscopic stabilisation (64), with the corrections of errata E4, E5 and E8.
 //!
 //! The method, the verdict rules and their tolerances are documented on [`classify`].
 
@@ -77,12 +77,12 @@ pub enum Stability {
     /// a strict minimum, stable in the secular sense (section 4).
     SecularlyStable,
     /// Degree of instability 2 and every root of `f₂` simple and on the imaginary axis: linear
-    /// stability by gyroscopic forces (section 5, ERRATA E5).
+    /// stability by gyroscopic forces (section 5, errata E5).
     GyroscopicallyStabilized,
     /// Odd degree of instability, or a root of `f₂` with positive real part.
     Unstable,
     /// The test is inconclusive: a zero eigenvalue of the restricted second variation
-    /// (ERRATA E8), or degree 2 exactly on the boundary of gyroscopic stabilisation (a double
+    /// (errata E8), or degree 2 exactly on the boundary of gyroscopic stabilisation (a double
     /// imaginary pair of roots of `f₂`).
     Degenerate,
 }
@@ -98,7 +98,7 @@ impl fmt::Display for Stability {
     }
 }
 
-/// The stability analysis of one steady motion (sections 4–5 with ERRATA E5, E8).
+/// The stability analysis of one steady motion (sections 4–5 with errata E5, E8).
 #[derive(Debug, Clone, PartialEq)]
 pub struct StabilityReport {
     /// Eigenvalues, ascending, of the restricted second variation `Pᵀ(μE − ∂²R/∂γ²)P` of the
@@ -106,7 +106,7 @@ pub struct StabilityReport {
     pub restricted_hessian_eigenvalues: [f64; 2],
     /// Number of negative eigenvalues among those not counted as zero (section 5).
     pub degree_of_instability: usize,
-    /// The four roots of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` (ERRATA E5), sorted by real part, then
+    /// The four roots of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` (errata E5), sorted by real part, then
     /// imaginary part. They are the non-zero eigenvalues of the linearised full system (8).
     pub f2_roots: [Complex<f64>; 4],
     /// The Krein signature of each root in [`f2_roots`](Self::f2_roots): `+1` or `−1` for a root
@@ -143,7 +143,7 @@ impl fmt::Display for StabilityReport {
 
 /// Classifies the steady motion `steady` at its cyclic momentum `steady.p_psi` (sections 4–5): the
 /// eigenvalues of the restricted second variation (62)–(63), the degree of instability, the roots
-/// of `f₂` (ERRATA E5) and the verdict (rules and tolerances below). `steady.gamma` must be a
+/// of `f₂` (errata E5) and the verdict (rules and tolerances below). `steady.gamma` must be a
 /// critical point of the amended potential, as returned by
 /// [`steady_motions`](crate::steady_motions) or built by [`SteadyMotion::at`]; the other fields
 /// of `steady` are not used.
@@ -157,11 +157,11 @@ impl fmt::Display for StabilityReport {
 ///    degree of instability (section 5).
 /// 2. The characteristic polynomial of the linearised reduced system (65) on the tangent plane is
 ///    `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` with `A`, `G`, `C` of [`Routhian::gyroscopic_system`]
-///    (ERRATA E5: the printed 3×3 `f(λ)` of (64) vanishes identically). With `a = PᵀAP`,
+///    (errata E5: the printed 3×3 `f(λ)` of (64) vanishes identically). With `a = PᵀAP`,
 ///    `c = PᵀCP` symmetric and `PᵀGP = [[0, g], [−g, 0]]`, it is the even quartic
 ///    `f₂(λ) = c₄λ⁴ + c₂λ² + c₀`, `c₄ = det a`, `c₂ = a₁₁c₂₂ + a₂₂c₁₁ − 2a₁₂c₁₂ + 4g²`,
 ///    `c₀ = det c`, solved exactly as a quadratic in `s = λ²` and then `λ = ±√s` (complex square
-///    root). `c = PᵀCP` is `K` up to a rotation of the plane by a right angle (ERRATA E6), so
+///    root). `c = PᵀCP` is `K` up to a rotation of the plane by a right angle (errata E6), so
 ///    `c₀ = det K`.
 ///
 /// # Verdict
@@ -177,7 +177,7 @@ impl fmt::Display for StabilityReport {
 /// - With a zero eigenvalue, `det K = c₀ ≈ 0` and `f₂ ≈ λ²(c₄λ² + c₂)`: if `c₂ < 0` beyond its
 ///   perturbation by the tolerance on `K`, `f₂` has the real root `√(−c₂/c₄) > 0` whatever the
 ///   sign of the zero eigenvalue, a proven instability: [`Stability::Unstable`]. Otherwise
-///   [`Stability::Degenerate`] (ERRATA E8: the parity argument then says nothing; circles of
+///   [`Stability::Degenerate`] (errata E8: the parity argument then says nothing; circles of
 ///   steady motions of a symmetric body are in this case unless `f₂` proves an instability).
 /// - Otherwise, with `d` the degree of instability: `d = 0` ⇒ [`Stability::SecularlyStable`]
 ///   (section 4); `d = 1` ⇒ [`Stability::Unstable`] (odd degree, section 5); `d = 2` ⇒
@@ -303,7 +303,7 @@ pub fn classify_with<M: Routhian>(
     let any_zero = eigs.iter().any(|e| e.abs() <= zero_tol);
     let degree = eigs.iter().filter(|&&e| e < -zero_tol).count();
 
-    // (64) on the tangent plane (ERRATA E5).
+    // (64) on the tangent plane (errata E5).
     let parts = f2_parts(model, &gamma, p_psi)?;
     let [c4, c2, c0] = parts.coefficients;
     let a_norm = parts.a.norm();
@@ -314,7 +314,7 @@ pub fn classify_with<M: Routhian>(
         // det K = c₀ is zero within the tolerance, so f₂ ≈ λ²(c₄λ² + c₂): a real root pair
         // ±√(−c₂/c₄) persists whatever the sign of the zero eigenvalue when c₂ < 0 beyond the
         // perturbation of c₂ by the tolerance on K (|Δc₂| ≤ 2‖PᵀAP‖·tol). That is a proven
-        // instability; otherwise the test is inconclusive (ERRATA E8).
+        // instability; otherwise the test is inconclusive (errata E8).
         let c2_scale = 2.0 * a_norm * zero_tol;
         if c2 < -(c2_scale + 1e-12 * c2.abs()) {
             Stability::Unstable
@@ -342,7 +342,7 @@ pub fn classify_with<M: Routhian>(
 }
 
 /// The coefficients `[c₄, c₂, c₀]` of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P) = c₄λ⁴ + c₂λ² + c₀`
-/// (ERRATA E5) at the unit vector γ, from [`Routhian::gyroscopic_system`]. They do not depend on
+/// (errata E5) at the unit vector γ, from [`Routhian::gyroscopic_system`]. They do not depend on
 /// the choice of the orthonormal basis `P` of γ^⊥.
 ///
 /// Errors: as [`classify`].

@@ -298,7 +298,7 @@ fn reduced_matches_full<M: Routhian>(name: &str, model: &M, seed: u64) {
     let omega_diff = (0..=n)
         .map(|i| (full.omega[i] - red.omega[i]).amax())
         .fold(0.0, f64::max);
-    // E' (16) = E (3), (∂R/∂Ω, γ) (17) = p_ψ, Ω·γ stays 0 (gauge, ERRATA E4).
+    // E' (16) = E (3), (∂R/∂Ω, γ) (17) = p_ψ, Ω·γ stays 0 (gauge, errata E4).
     let e_scale = full.energy[0].abs() + full.omega[0].norm_squared();
     let energy_diff = (0..=n)
         .map(|i| (full.energy[i] - red.energy[i]).abs())

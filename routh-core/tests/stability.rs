@@ -1,5 +1,5 @@
 //! Validation of `classify` against things it did not produce: the closed forms of the sleeping
-//! Lagrange top (Maievskii's bound, ERRATA "classical checks"), the eigenvalues of a
+//! Lagrange top (Maievskii's bound, docs/errata.md "classical checks"), the eigenvalues of a
 //! finite-difference Jacobian of the full equations (8), and the error contract.
 
 use rand::{Rng, SeedableRng};
@@ -132,7 +132,7 @@ fn heavy_top_derivatives_match_finite_differences() {
 // a. The sleeping Lagrange top.
 
 /// Checks the verdict, the degree, the restricted eigenvalues h = −p²(A₁ − C)/C² − mgl (double),
-/// the discriminant p²(2A₁ − C)²(p² − 4A₁mgl)/C² of f₂ in λ² (ERRATA), and the roots of f₂
+/// the discriminant p²(2A₁ − C)²(p² − 4A₁mgl)/C² of f₂ in λ² (docs/errata.md), and the roots of f₂
 /// against their closed form.
 fn check_sleeping(a1: f64, c: f64, mgl: f64, p2: f64, expected: Stability) {
     let top = HeavyTop::lagrange(a1, c, mgl);
@@ -244,7 +244,7 @@ fn exactly_on_the_maievskii_bound_is_inconclusive() {
 
 #[test]
 fn tilted_precessions_of_a_symmetric_top_are_degenerate() {
-    // ERRATA E8: a circle of relative equilibria has a zero eigenvalue in the restricted form.
+    // errata E8: a circle of relative equilibria has a zero eigenvalue in the restricted form.
     let top = HeavyTop::lagrange(2.0, 1.0, 1.0);
     let p = 5.0;
     let motions = steady_motions(&top, p).unwrap();
@@ -261,7 +261,7 @@ fn tilted_precessions_of_a_symmetric_top_are_degenerate() {
 // ---------------------------------------------------------------------------------------------
 // d. Roots of f₂ vs the eigenvalues of a finite-difference Jacobian of the full system (8).
 
-/// The 6×6 Jacobian of (8) at ω = ψ̇γ has the four roots of f₂ and a double zero (ERRATA E5).
+/// The 6×6 Jacobian of (8) at ω = ψ̇γ has the four roots of f₂ and a double zero (errata E5).
 fn check_jacobian<M: Routhian>(model: &M, steady: &SteadyMotion, what: &str) -> usize {
     let report = classify(model, steady).unwrap();
     let w = steady.psi_dot * steady.gamma;

@@ -33,7 +33,7 @@ pub fn full_vector_field<M: Lagrangian + ?Sized>(
     Ok((omega_dot, gamma_dot))
 }
 
-/// The vector field of the reduced equations (13) in the gauge of ERRATA E4, with (15):
+/// The vector field of the reduced equations (13) in the gauge of errata E4, with (15):
 /// `(A + c γγᵀ) Ω̇ = ∂R/∂Ω × Ω + ∂R/∂γ × γ − M γ̇`, `γ̇ = γ × Ω`, `ψ̇ = −∂R/∂p_ψ`, where
 /// `A = ∂²R/∂Ω²`, `M = ∂²R/∂Ω∂γ`, all from one [`Routhian::bundle`], and `c = tr(A)/2`.
 /// Returns `(Ω̇, γ̇, ψ̇)`.

@@ -2,7 +2,7 @@
 //!
 //! - [`simulate_full`] integrates (8) for `(ω, γ)` and records the energy (3), the cyclic
 //!   momentum (9) and `|γ|²` along the way.
-//! - [`simulate_reduced`] integrates (13) for `(Ω, γ)` in the gauge of ERRATA E4, reconstructs
+//! - [`simulate_reduced`] integrates (13) for `(Ω, γ)` in the gauge of errata E4, reconstructs
 //!   the rotation angle ψ of the rotating frame by (15), and records E' (16), `(∂R/∂Ω, γ)` (17)
 //!   and `|γ|²`.
 //!
@@ -478,7 +478,7 @@ pub fn simulate_full<M: Lagrangian>(
 /// `p_ψ` of the cyclic momentum (9), and reconstructs the rotation angle ψ of the rotating frame
 /// by (15), `ψ̇ = −∂R/∂p_ψ`, with `ψ(0) = 0`.
 ///
-/// The equations are solved in the gauge of ERRATA E4 (see [`reduced_vector_field`]):
+/// The equations are solved in the gauge of errata E4 (see [`reduced_vector_field`]):
 /// `∂²R/∂Ω²` is singular along γ, the component of Ω along γ is a gauge, and the integration
 /// keeps `Ω·γ` at its initial value. Ω₀ is used as given: the usual choice is `Ω₀·γ₀ = 0`, for
 /// which `ψ̇` is the whole rotation rate about the vertical. With `Ω₀·γ₀ = s ≠ 0` the body motion

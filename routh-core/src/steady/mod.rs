@@ -1,7 +1,7 @@
 //! Steady motions (31)–(34): the critical points of the amended potential on the unit sphere.
 //!
 //! A steady motion of (8) is a uniform rotation about the vertical with the body at rest in the
-//! rotating frame: `Ω = 0` (31) (in the gauge `Ω·γ = 0` of ERRATA E4) and the tangential part of
+//! rotating frame: `Ω = 0` (31) (in the gauge `Ω·γ = 0` of errata E4) and the tangential part of
 //! `∂R(0, γ, p_ψ)/∂γ` vanishes (33). Equivalently γ is a critical point of the amended potential
 //! `U_r(γ) = −R(0, γ, p_ψ)` (34) restricted to the sphere `|γ| = 1`.
 //!
@@ -138,16 +138,16 @@ impl SearchOptions {
 /// amended potential `U_r = −R(0, γ, p_ψ)` (34) on the unit sphere, found by a global search with
 /// the default [`SearchOptions`] (method and tolerances below). Sorted by increasing `U_r`.
 /// Curves of steady motions (bodies with a symmetry) are reported once, with `isolated: false`
-/// (ERRATA E8).
+/// (errata E8).
 ///
 /// # Geometry on the sphere
 ///
-/// γ is an unconstrained vector of ℝ³ when the model differentiates (ERRATA, convention), so the
+/// γ is an unconstrained vector of ℝ³ when the model differentiates (docs/errata.md, convention), so the
 /// Euclidean gradient and Hessian of `U_r` are `−∂R/∂γ` and `−∂²R/∂γ²`. On the sphere, with `P` a
 /// 3×2 orthonormal basis of the tangent plane γ^⊥ and `μ = (∂R/∂γ, γ)`:
 /// - Riemannian gradient: `g = Pᵀ(−∂R/∂γ)`; it vanishes exactly when (33) holds;
 /// - Riemannian Hessian: `K = Pᵀ(μE − ∂²R/∂γ²)P`, the restricted second variation (62)–(63); it
-///   equals `PᵀCP` with `C` of section 5 up to a rotation of the plane (ERRATA E5, E6).
+///   equals `PᵀCP` with `C` of section 5 up to a rotation of the plane (errata E5, E6).
 ///
 /// # Search
 ///
