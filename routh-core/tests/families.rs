@@ -8,12 +8,12 @@ mod common;
 
 use common::HeavyTop;
 use routh_core::families::bifurcation_diagram_checked;
-use routh_core::nalgebra::{Matrix4, Matrix6, Vector6};
-use routh_core::sim::full_vector_field;
+use routh_core::nalgebra::{Matrix4, Vector6};
 use routh_core::{
     bifurcation_diagram, continue_branch, BifurcationDiagram, ContinuationOptions, EventKind,
     Matrix3, RouthError, Stability, Vector3,
 };
+use test_models::jacobian::fd_jacobian;
 
 fn asymmetric(a: f64, b: f64, c: f64, mgl: f64) -> HeavyTop {
     HeavyTop {
@@ -227,28 +227,6 @@ fn hamiltonian_hopf_of_a_prolate_asymmetric_top_matches_the_hand_written_discrim
     assert_eq!(hh[0].after, Stability::GyroscopicallyStabilized);
 }
 
-/// The 6×6 Jacobian of the full equations (8) by central differences.
-fn fd_jacobian(top: &HeavyTop, x: &Vector6<f64>) -> Matrix6<f64> {
-    let f = |x: &Vector6<f64>| {
-        let (wd, gd) = full_vector_field(
-            top,
-            &Vector3::new(x[0], x[1], x[2]),
-            &Vector3::new(x[3], x[4], x[5]),
-        )
-        .unwrap();
-        Vector6::new(wd.x, wd.y, wd.z, gd.x, gd.y, gd.z)
-    };
-    let mut j = Matrix6::zeros();
-    for k in 0..6 {
-        let mut xp = *x;
-        let mut xm = *x;
-        xp[k] += 1e-6;
-        xm[k] -= 1e-6;
-        j.set_column(k, &((f(&xp) - f(&xm)) / 2e-6));
-    }
-    j
-}
-
 #[test]
 fn jacobian_eigenvalues_agree_with_verdicts_on_each_side_of_every_event() {
     let mut checked = 0;
@@ -282,7 +260,7 @@ fn jacobian_eigenvalues_agree_with_verdicts_on_each_side_of_every_event() {
                 let w = pt.steady.psi_dot * pt.steady.gamma;
                 let g = pt.steady.gamma;
                 let x = Vector6::new(w.x, w.y, w.z, g.x, g.y, g.z);
-                let eig = fd_jacobian(&top, &x).complex_eigenvalues();
+                let eig = fd_jacobian(&top, &x, 1e-4).complex_eigenvalues();
                 let max_re = eig.iter().map(|l| l.re).fold(f64::MIN, f64::max);
                 let size = eig.iter().map(|l| l.norm()).fold(0.0, f64::max);
                 if verdict == Stability::Unstable {

@@ -4,11 +4,12 @@
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use routh_core::nalgebra::{Matrix6, Vector6};
+use routh_core::nalgebra::Vector6;
 use routh_core::{
-    classify, simulate_full, stability::f2_coefficients, steady_motions, Complex, Lagrangian,
-    Matrix3, RouthError, Routhian, SimOptions, Stability, SteadyMotion, Vector3,
+    classify, simulate_full, stability::f2_coefficients, steady_motions, Complex, Matrix3,
+    RouthError, Routhian, SimOptions, Stability, SteadyMotion, Vector3,
 };
+use test_models::jacobian::fd_jacobian;
 use test_models::{Ellipsoid, Gyrostat};
 
 mod common;
@@ -16,36 +17,6 @@ use common::HeavyTop;
 
 // ---------------------------------------------------------------------------------------------
 // Helpers.
-
-/// The full equations (8) solved for ω̇: J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω),
-/// γ̇ = γ × ω, written from the Lagrangian trait methods only.
-fn full_field<M: Lagrangian>(m: &M, x: &Vector6<f64>) -> Vector6<f64> {
-    let w = Vector3::new(x[0], x[1], x[2]);
-    let g = Vector3::new(x[3], x[4], x[5]);
-    let gdot = g.cross(&w);
-    let rhs = m.dl_domega(&w, &g).cross(&w) + m.dl_dgamma(&w, &g).cross(&g)
-        - m.d2l_domega_dgamma(&w, &g) * gdot;
-    let wdot = m.d2l_domega2(&g).lu().solve(&rhs).expect("J invertible");
-    Vector6::new(wdot.x, wdot.y, wdot.z, gdot.x, gdot.y, gdot.z)
-}
-
-/// Central finite-difference Jacobian of the full vector field (8) at `x`, with one Richardson
-/// extrapolation (error O(h⁴)).
-fn fd_jacobian<M: Lagrangian>(m: &M, x: &Vector6<f64>, h: f64) -> Matrix6<f64> {
-    let mut jac = Matrix6::zeros();
-    for k in 0..6 {
-        let d = |h: f64| {
-            let mut xp = *x;
-            let mut xm = *x;
-            xp[k] += h;
-            xm[k] -= h;
-            (full_field(m, &xp) - full_field(m, &xm)) / (2.0 * h)
-        };
-        let col = (4.0 * d(h / 2.0) - d(h)) / 3.0;
-        jac.set_column(k, &col);
-    }
-    jac
-}
 
 fn random_spd(rng: &mut ChaCha8Rng) -> Matrix3<f64> {
     let b = Matrix3::from_fn(|_, _| rng.gen_range(-1.0..1.0));
