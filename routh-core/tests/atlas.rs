@@ -357,3 +357,87 @@ fn invalid_options_are_errors() {
     assert!(stability_atlas(family, Vector3::z(), (2.0, 0.5), (0.5, 5.0), &opts).is_err());
     assert!(stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, f64::NAN), &opts).is_err());
 }
+
+/// A top J = diag(1, 1.2, 1.6) with its centre of mass off the axis, r = (ε, 0, 1) (mgl = 1),
+/// over (p_ψ, ε): the pitchfork of the sleeping top unfolds and the near-upright motion, followed
+/// from slow spin, ends at a fold.
+fn imperfect(p: f64, eps: f64) -> (HeavyTop, f64) {
+    (
+        HeavyTop {
+            j: Matrix3::from_diagonal(&Vector3::new(1.0, 1.2, 1.6)),
+            mgr: Vector3::new(eps, 0.0, 1.0),
+        },
+        p,
+    )
+}
+
+/// The folds of the motions in the plane γ = (sin θ, 0, cos θ), by hand: with
+/// U_r(θ) = ½p²/n + ε sin θ + cos θ, n = A sin²θ + C cos²θ, U_r′ = p²a − sin θ + ε cos θ and
+/// U_r″ = p²a′ − cos θ − ε sin θ with a = (C − A) sin θ cos θ / n². Both vanish — linear in
+/// (p², ε) — at p² = 1/(a sin θ + a′ cos θ), ε = (a′ sin θ − a cos θ)/(a sin θ + a′ cos θ).
+fn in_plane_fold(theta: f64) -> (f64, f64) {
+    let (a_, c_) = (1.0, 1.6);
+    let (s, c) = theta.sin_cos();
+    let n = a_ * s * s + c_ * c * c;
+    let dn = 2.0 * (a_ - c_) * s * c;
+    let a = (c_ - a_) * s * c / (n * n);
+    let da = (c_ - a_) * ((c * c - s * s) / (n * n) - 2.0 * s * c * dn / (n * n * n));
+    let d = a * s + da * c;
+    (1.0 / d, (da * s - a * c) / d)
+}
+
+#[test]
+fn imperfect_top_fold_curve_matches_the_in_plane_closed_form() {
+    let opts = AtlasOptions {
+        nx: 31,
+        ny: 31,
+        ..AtlasOptions::default()
+    };
+    let atlas = stability_atlas(imperfect, Vector3::z(), (1.0, 3.0), (0.0, 0.2), &opts).unwrap();
+    // The motion is lost beyond the fold for small ε > 0.
+    assert!(atlas.verdicts[1].iter().any(|v| v.is_none()));
+    assert!(atlas.verdicts[0].iter().all(|v| v.is_some()));
+    let folds: Vec<_> = atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind == EventKind::Fold)
+        .collect();
+    assert_eq!(folds.len(), 1, "{:?}", atlas.boundaries);
+    let mut worst: f64 = 0.0;
+    for &(p, eps) in &folds[0].points {
+        // θ with ε(θ) = ε by a scan and bisection; the fold is there if p²(θ) = p².
+        let f = |t: f64| in_plane_fold(t).1 - eps;
+        let mut best = f64::INFINITY;
+        let n = 4000;
+        for k in 0..n {
+            let (mut lo, mut hi) = (
+                -1.2 + 2.4 * k as f64 / n as f64,
+                -1.2 + 2.4 * (k + 1) as f64 / n as f64,
+            );
+            if f(lo) * f(hi) > 0.0 {
+                continue;
+            }
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                if f(lo) * f(mid) <= 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            let p2 = in_plane_fold(0.5 * (lo + hi)).0;
+            best = best.min((p2 - p * p).abs() / (p * p));
+        }
+        worst = worst.max(best);
+    }
+    println!(
+        "fold curve: {} points, max |p² − p²_fold(θ)|/p² = {worst:.3e}",
+        folds[0].points.len()
+    );
+    assert!(worst <= 1e-8);
+    // The out-of-plane pitchfork (γ₂ → −γ₂ is still a symmetry) is a branch point.
+    assert!(atlas
+        .boundaries
+        .iter()
+        .any(|b| b.kind == EventKind::BranchPoint));
+}

@@ -47,9 +47,14 @@
 //! halved, and below `10⁻⁴` of [`AtlasOptions::curve_step`] the curve ends (a cusp, a crossing,
 //! or the end of the motion). A curve also ends where it leaves the rectangle (the exit point is
 //! solved on the edge) or when it closes. A located start within `2·10⁻³` of the unit square of a
-//! curve of the same class already traced is skipped. Zero-eigenvalue curves are
-//! [`EventKind::Fold`] when they pass through a grid cell with a node where the motion is lost,
-//! [`EventKind::BranchPoint`] otherwise.
+//! curve of the same class already traced is skipped.
+//!
+//! A zero-eigenvalue curve is a [`EventKind::Fold`] where the motion ceases to exist on one side:
+//! with `ℓ` the null vector of `∂F/∂ξ`, the parameters move the equations out of its range,
+//! `ℓᵀ∂F/∂(x, y) ≠ 0` (relative to the local scale, above `10⁻⁶` in unit-square units). Where
+//! `ℓᵀ∂F/∂(x, y) = 0` other branches cross the motion instead (a pitchfork of a symmetric body,
+//! where the motion exists on both sides): [`EventKind::BranchPoint`]. The kind of a curve is
+//! that of the majority of its points.
 
 use std::marker::PhantomData;
 
@@ -92,6 +97,8 @@ const CURVE_MIN_STEP: f64 = 1e-4;
 const CURVE_MAX_ITER: usize = 10;
 /// Largest Gauss–Newton step on a curve (unit-square units and rad).
 const CURVE_MAX_CORRECTION: f64 = 0.25;
+/// A zero-eigenvalue curve is a fold where [`fold_indicator`] exceeds this.
+const FOLD_INDICATOR: f64 = 1e-6;
 /// Smallest cosine between consecutive tangents of a curve.
 const CURVE_MIN_COS: f64 = 0.8;
 /// Starts closer than this (unit square) to a traced curve of the same class are skipped.
@@ -425,6 +432,22 @@ fn null_tangent(jac: &Matrix3x4<f64>, r: &Vector4<f64>) -> Option<Vector4<f64>> 
     }
     let n = t.norm();
     (n > 0.0 && n.is_finite()).then(|| t / n)
+}
+
+/// The fold indicator of a zero-eigenvalue curve at a point: `|ℓᵀ ∂F/∂(u, v)|` with `ℓ` the left
+/// null vector of `∂F/∂ξ` (both relative to the local scale). Non-zero at a fold (the parameters
+/// push the motion out of the null direction: it ceases to exist on one side), zero at a branch
+/// point (where `∂F/∂(u, v)` lies in the range of `∂F/∂ξ`).
+fn fold_indicator(e: &Ext) -> f64 {
+    let fxi = e.jac.fixed_view::<2, 2>(0, 0).into_owned();
+    let fp = e.jac.fixed_view::<2, 2>(0, 2).into_owned();
+    if !fxi.iter().chain(fp.iter()).all(|v| v.is_finite()) {
+        return 0.0;
+    }
+    let svd = fxi.svd(true, false);
+    let Some(u) = svd.u else { return 0.0 };
+    let k = usize::from(svd.singular_values[1] < svd.singular_values[0]);
+    (fp.transpose() * u.column(k)).norm()
 }
 
 /// Distance from `p` to the segment `[a, b]` of the plane.
@@ -885,7 +908,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
         start: CurvePoint,
         t0: Vector4<f64>,
         budget: usize,
-    ) -> (Vec<CurvePoint>, bool) {
+    ) -> (Vec<(CurvePoint, f64)>, bool) {
         let h_max = self.opts.curve_step * std::f64::consts::SQRT_2;
         let h_min = CURVE_MIN_STEP * h_max;
         let mut test = test0;
@@ -944,11 +967,12 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
                             v = bound;
                         }
                         if inside(u, v) {
-                            pts.push(CurvePoint {
+                            let point = CurvePoint {
                                 gamma: ee.gamma,
                                 u,
                                 v,
-                            });
+                            };
+                            pts.push((point, fold_indicator(&ee)));
                         }
                     }
                 }
@@ -970,13 +994,14 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
             if let Test::Zero(_) = test {
                 test = Test::Zero(e.pick);
             }
-            pts.push(cur);
+            pts.push((cur, fold_indicator(&e)));
             if it <= 3 {
                 h = (1.5 * h).min(h_max);
             }
             let back = (cur.u - start.u).hypot(cur.v - start.v);
             if travelled > 4.0 * h_max && back < h && (cur.gamma - start.gamma).norm() < 0.1 {
-                pts.push(start);
+                let beta = pts[0].1;
+                pts.push((start, beta));
                 return (pts, true);
             }
         }
@@ -998,7 +1023,8 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
             }
         }
         // (kind is Hopf, scaled points, started at a fold).
-        let mut curves: Vec<(bool, Vec<(f64, f64)>, bool)> = Vec::new();
+        // (kind is Hopf, scaled points, number of points where the fold indicator is non-zero).
+        let mut curves: Vec<(bool, Vec<(f64, f64)>, usize)> = Vec::new();
         let budget = self.opts.max_curve_points;
         for (a, b) in edges {
             let na = rows[a.1][a.0].as_ref();
@@ -1062,25 +1088,20 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
                 } else {
                     self.trace(test, start, -t0, budget - 1 - fwd.len()).0
                 };
-                let mut pts: Vec<(f64, f64)> = back.iter().rev().map(|p| (p.u, p.v)).collect();
-                pts.push((start.u, start.v));
-                pts.extend(fwd.iter().map(|p| (p.u, p.v)));
-                curves.push((hopf, pts, matches!(seed, Seed::Fold)));
+                let mut all: Vec<(CurvePoint, f64)> = back.into_iter().rev().collect();
+                all.push((start, fold_indicator(&e)));
+                all.extend(fwd);
+                let folds = all.iter().filter(|p| p.1 > FOLD_INDICATOR).count();
+                let pts = all.iter().map(|(p, _)| (p.u, p.v)).collect();
+                curves.push((hopf, pts, folds));
             }
         }
-        let lost_cell = |u: f64, v: f64| {
-            let i = ((u * (nx - 1) as f64).floor().max(0.0) as usize).min(nx - 2);
-            let j = ((v * (ny - 1) as f64).floor().max(0.0) as usize).min(ny - 2);
-            let corners = [(i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)];
-            let some = corners.iter().filter(|c| rows[c.1][c.0].is_some()).count();
-            some > 0 && some < 4
-        };
         curves
             .into_iter()
-            .map(|(hopf, pts, fold_seed)| {
+            .map(|(hopf, pts, folds)| {
                 let kind = if hopf {
                     EventKind::HamiltonianHopf
-                } else if fold_seed || pts.iter().any(|&(u, v)| lost_cell(u, v)) {
+                } else if 2 * folds > pts.len() {
                     EventKind::Fold
                 } else {
                     EventKind::BranchPoint
