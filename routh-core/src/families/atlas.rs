@@ -197,7 +197,7 @@ const LOCATE_MAX_ITER: usize = 80;
 /// // Slow: unstable; fast: secularly stable; in between gyroscopically stabilised.
 /// assert_eq!(atlas.verdicts[0][0], Some(Stability::Unstable));
 /// assert_eq!(atlas.verdicts[20][0], Some(Stability::SecularlyStable));
-/// assert_eq!(atlas.verdicts[6][10], Some(Stability::GyroscopicallyStabilized));
+/// assert_eq!(atlas.verdicts[9][10], Some(Stability::GyroscopicallyStabilized)); // mgl = 1.25, p = 2.525
 /// // Maievskii's bound p² = 4A₁·mgl is the Hamiltonian–Hopf curve.
 /// let hopf = atlas.boundaries.iter().find(|b| b.kind == EventKind::HamiltonianHopf).unwrap();
 /// for &(mgl, p) in &hopf.points {
@@ -384,6 +384,10 @@ struct Ext {
     /// The eigenvector picked by a [`Test::Zero`] (zero for [`Test::Hopf`]).
     pick: Vector3<f64>,
 }
+
+/// A traced curve: whether it is a Hamiltonian–Hopf curve, its points in the unit square, and
+/// the number of them where the fold indicator is non-zero.
+type Traced = (bool, Vec<(f64, f64)>, usize);
 
 struct Ctx<'a, M, F> {
     family: &'a F,
@@ -784,7 +788,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
                 }
             };
             last_step = d.norm();
-            if !(last_step <= CURVE_MAX_CORRECTION) {
+            if last_step.is_nan() || last_step > CURVE_MAX_CORRECTION {
                 return None;
             }
             w += d;
@@ -1024,7 +1028,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
         }
         // (kind is Hopf, scaled points, started at a fold).
         // (kind is Hopf, scaled points, number of points where the fold indicator is non-zero).
-        let mut curves: Vec<(bool, Vec<(f64, f64)>, usize)> = Vec::new();
+        let mut curves: Vec<Traced> = Vec::new();
         let budget = self.opts.max_curve_points;
         for (a, b) in edges {
             let na = rows[a.1][a.0].as_ref();
