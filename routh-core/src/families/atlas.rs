@@ -109,7 +109,7 @@ const LOCATE_MAX_ITER: usize = 80;
 /// ([`classify_with`] with [`AtlasOptions::classify`]) at every node of an `nx × ny` grid of the
 /// rectangle `[x.0, x.1] × [y.0, y.1]` (ends included), following the motion by continuation from
 /// node to node, and the boundary curves of its stability regions traced by continuation of their
-/// defining equations. The algorithm is described in the [module docs](self); in short:
+/// defining equations (the algorithm in full is in the docs of the source module, `atlas.rs`):
 ///
 /// - `verdicts[j][i]` is the verdict at `(x[i], y[j])`, `None` where the followed motion no longer
 ///   exists (beyond a fold) or could not be followed. The first column is followed upwards from
