@@ -1,0 +1,443 @@
+//! `stability_atlas` against closed forms that the code does not produce: Maievskii's bound and
+//! the secular bound of the sleeping Lagrange top, the discriminant of `f₂` of the sleeping
+//! asymmetric top derived by hand from the linearised Euler–Poisson equations, `classify` at
+//! random nodes, and the eigenvalues of a finite-difference Jacobian of the full equations (8).
+
+mod common;
+
+use common::HeavyTop;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use routh_core::nalgebra::{Matrix6, Vector6};
+use routh_core::sim::full_vector_field;
+use routh_core::{
+    classify, stability_atlas, AtlasOptions, EventKind, Matrix3, Stability, StabilityAtlas,
+    SteadyMotion, Vector3,
+};
+
+const A1: f64 = 1.0;
+const C_LAGRANGE: f64 = 1.2;
+
+/// The sleeping Lagrange top J = diag(1, 1, 1.2) over (mgl, p_ψ) ∈ [0.5, 2] × [0.5, 5].
+fn lagrange_atlas(n: usize, threads: usize) -> StabilityAtlas {
+    let opts = AtlasOptions {
+        nx: n,
+        ny: n,
+        threads,
+        ..AtlasOptions::default()
+    };
+    stability_atlas(
+        |mgl: f64, p: f64| (HeavyTop::lagrange(A1, C_LAGRANGE, mgl), p),
+        Vector3::z(),
+        (0.5, 2.0),
+        (0.5, 5.0),
+        &opts,
+    )
+    .expect("atlas")
+}
+
+/// The sleeping asymmetric top J = diag(A, B, C), com on e₃ at mgl = 1.
+const A: f64 = 1.0;
+const C: f64 = 1.5;
+const MGL: f64 = 1.0;
+
+fn asymmetric(b: f64) -> HeavyTop {
+    HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(A, b, C)),
+        mgr: Vector3::new(0.0, 0.0, MGL),
+    }
+}
+
+/// `f₂(λ) = c₄λ⁴ + c₂λ² + c₀` of the sleeping asymmetric top, by hand: linearising the
+/// Euler–Poisson equations at ω = Ω e₃, γ = e₃ (Ω = p/C) in (w₁, w₂, g₁, g₂):
+/// `A ẇ₁ = (B − C)Ω w₂ + mgl g₂`, `B ẇ₂ = (C − A)Ω w₁ − mgl g₁`, `ġ₁ = −w₂ + Ω g₂`,
+/// `ġ₂ = w₁ − Ω g₁`, whose characteristic polynomial times AB is
+/// `AB λ⁴ + [Ω²(2AB − AC − BC + C²) − mgl(A + B)] λ² + (mgl − (C − A)Ω²)(mgl − (C − B)Ω²)`.
+fn hand_f2(b: f64, p: f64) -> [f64; 3] {
+    let w2 = (p / C) * (p / C);
+    [
+        A * b,
+        w2 * (2.0 * A * b - A * C - b * C + C * C) - MGL * (A + b),
+        (MGL - (C - A) * w2) * (MGL - (C - b) * w2),
+    ]
+}
+
+fn asymmetric_atlas(threads: usize) -> StabilityAtlas {
+    let opts = AtlasOptions {
+        nx: 41,
+        ny: 61,
+        threads,
+        ..AtlasOptions::default()
+    };
+    stability_atlas(
+        |b: f64, p: f64| (asymmetric(b), p),
+        Vector3::z(),
+        (1.05, 1.45),
+        (1.5, 3.0),
+        &opts,
+    )
+    .expect("atlas")
+}
+
+/// The verdict of the sleeping Lagrange top from Maievskii's and the secular bound.
+fn lagrange_closed_form(mgl: f64, p: f64) -> Option<Stability> {
+    let p2 = p * p;
+    let maievskii = 4.0 * A1 * mgl;
+    let secular = mgl * C_LAGRANGE * C_LAGRANGE / (C_LAGRANGE - A1);
+    let margin = 1e-6;
+    if p2 < maievskii * (1.0 - margin) {
+        Some(Stability::Unstable)
+    } else if p2 > maievskii * (1.0 + margin) && p2 < secular * (1.0 - margin) {
+        Some(Stability::GyroscopicallyStabilized)
+    } else if p2 > secular * (1.0 + margin) {
+        Some(Stability::SecularlyStable)
+    } else {
+        None
+    }
+}
+
+#[test]
+fn lagrange_top_curves_are_maievskii_and_secular_bounds() {
+    let atlas = lagrange_atlas(41, 0);
+    // Every node against the closed forms (the motion γ = e₃ exists everywhere).
+    for (j, row) in atlas.verdicts.iter().enumerate() {
+        for (i, v) in row.iter().enumerate() {
+            let (mgl, p) = (atlas.x[i], atlas.y[j]);
+            assert!(v.is_some(), "lost at ({mgl}, {p})");
+            if let Some(expected) = lagrange_closed_form(mgl, p) {
+                assert_eq!(*v, Some(expected), "at mgl = {mgl}, p = {p}");
+            }
+        }
+    }
+    let hopf: Vec<_> = atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind == EventKind::HamiltonianHopf)
+        .collect();
+    let zero: Vec<_> = atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind != EventKind::HamiltonianHopf)
+        .collect();
+    assert_eq!(hopf.len(), 1, "{:?}", atlas.boundaries);
+    assert_eq!(zero.len(), 1, "{:?}", atlas.boundaries);
+    assert_eq!(zero[0].kind, EventKind::BranchPoint);
+
+    let mut worst_hopf: f64 = 0.0;
+    for &(mgl, p) in &hopf[0].points {
+        worst_hopf = worst_hopf.max((p * p - 4.0 * A1 * mgl).abs() / (4.0 * A1 * mgl));
+    }
+    let mut worst_secular: f64 = 0.0;
+    for &(mgl, p) in &zero[0].points {
+        let h = p * p * (C_LAGRANGE - A1) / (C_LAGRANGE * C_LAGRANGE) - mgl;
+        worst_secular = worst_secular.max(h.abs() / mgl);
+    }
+    println!(
+        "Maievskii curve: {} points, max |p² − 4A₁mgl|/(4A₁mgl) = {worst_hopf:.3e}",
+        hopf[0].points.len()
+    );
+    println!(
+        "secular curve: {} points, max |p²(C − A₁)/C² − mgl|/mgl = {worst_secular:.3e}",
+        zero[0].points.len()
+    );
+    assert!(worst_hopf <= 1e-8);
+    assert!(worst_secular <= 1e-8);
+    // Both curves cross the whole rectangle, from mgl = 0.5 to mgl = 2.
+    for b in [hopf[0], zero[0]] {
+        let xs: Vec<f64> = b.points.iter().map(|q| q.0).collect();
+        let lo = xs.iter().cloned().fold(f64::INFINITY, f64::min);
+        let hi = xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+        assert!(
+            (lo - 0.5).abs() < 1e-9 && (hi - 2.0).abs() < 1e-9,
+            "{lo} {hi}"
+        );
+        assert!(b.points.len() > 50);
+        // In order along the curve: consecutive points are close.
+        for w in b.points.windows(2) {
+            assert!((w[1].0 - w[0].0).hypot((w[1].1 - w[0].1) / 3.0) < 0.05);
+        }
+    }
+}
+
+#[test]
+fn no_hopf_curve_when_c_is_twice_a1() {
+    // C = 2A₁: the discriminant of f₂ vanishes identically on γ = e₃ (no Krein collision), and
+    // Maievskii's bound coincides with the secular one.
+    let opts = AtlasOptions {
+        nx: 15,
+        ny: 15,
+        ..AtlasOptions::default()
+    };
+    let atlas = stability_atlas(
+        |mgl: f64, p: f64| (HeavyTop::lagrange(1.0, 2.0, mgl), p),
+        Vector3::z(),
+        (0.5, 2.0),
+        (0.5, 5.0),
+        &opts,
+    )
+    .unwrap();
+    assert!(atlas
+        .boundaries
+        .iter()
+        .all(|b| b.kind != EventKind::HamiltonianHopf));
+    let zero: Vec<_> = atlas.boundaries.iter().collect();
+    assert_eq!(zero.len(), 1);
+    for &(mgl, p) in &zero[0].points {
+        assert!((p * p / (4.0 * mgl) - 1.0).abs() < 1e-8);
+    }
+}
+
+#[test]
+fn asymmetric_top_hopf_curve_satisfies_the_hand_discriminant() {
+    let atlas = asymmetric_atlas(0);
+    let hopf: Vec<_> = atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind == EventKind::HamiltonianHopf)
+        .collect();
+    assert_eq!(hopf.len(), 1, "{:?}", atlas.boundaries);
+    let mut worst: f64 = 0.0;
+    for &(b, p) in &hopf[0].points {
+        let [c4, c2, c0] = hand_f2(b, p);
+        worst = worst.max((c2 * c2 - 4.0 * c4 * c0).abs() / (c2 * c2 + 4.0 * (c4 * c0).abs()));
+        // Degree 2 and c₂ > 0: the collision is on the imaginary axis.
+        assert!(c0 > 0.0 && c2 > 0.0);
+    }
+    println!(
+        "asymmetric Hamiltonian–Hopf curve: {} points, max relative |c₂² − 4c₄c₀| = {worst:.3e}",
+        hopf[0].points.len()
+    );
+    assert!(worst <= 1e-8);
+    // The branch points: κ_A = 0 (p² = mgl C²/(C − A)) and κ_B = 0 (p² = mgl C²/(C − B)).
+    let zero: Vec<_> = atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind != EventKind::HamiltonianHopf)
+        .collect();
+    assert!(zero.len() >= 2, "{:?}", atlas.boundaries);
+    let mut worst_zero: f64 = 0.0;
+    for z in &zero {
+        assert_eq!(z.kind, EventKind::BranchPoint);
+        for &(b, p) in &z.points {
+            let ka = p * p * (C - A) / (C * C) - MGL;
+            let kb = p * p * (C - b) / (C * C) - MGL;
+            worst_zero = worst_zero.max(ka.abs().min(kb.abs()) / MGL);
+        }
+    }
+    println!("asymmetric branch-point curves: max |κ|/mgl = {worst_zero:.3e}");
+    assert!(worst_zero <= 1e-8);
+}
+
+/// The 6×6 Jacobian of the full equations (8) at (ω, γ), by central differences.
+fn full_jacobian(model: &HeavyTop, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Matrix6<f64> {
+    let h = 1e-6;
+    let mut jac = Matrix6::zeros();
+    let f = |w: &Vector3<f64>, g: &Vector3<f64>| {
+        let (wd, gd) = full_vector_field(model, w, g).unwrap();
+        Vector6::new(wd.x, wd.y, wd.z, gd.x, gd.y, gd.z)
+    };
+    for k in 0..6 {
+        let (mut wp, mut gp, mut wm, mut gm) = (*omega, *gamma, *omega, *gamma);
+        if k < 3 {
+            wp[k] += h;
+            wm[k] -= h;
+        } else {
+            gp[k - 3] += h;
+            gm[k - 3] -= h;
+        }
+        jac.set_column(k, &((f(&wp, &gp) - f(&wm, &gm)) / (2.0 * h)));
+    }
+    jac
+}
+
+/// Whether the node is far enough from every boundary for a finite-difference check: every
+/// root of f₂ (as `classify` finds it) is far from zero and either on the imaginary axis or
+/// clearly off it.
+fn well_separated(model: &HeavyTop, p: f64) -> bool {
+    let steady = SteadyMotion::at(model, Vector3::z(), p, true).unwrap();
+    let roots = classify(model, &steady).unwrap().f2_roots;
+    let big = roots.iter().map(|l| l.norm()).fold(0.0, f64::max);
+    roots
+        .iter()
+        .all(|l| l.norm() >= 1e-2 * big && (l.re == 0.0 || l.re.abs() >= 1e-3 * big))
+}
+
+/// Checks the verdict at node (i, j) against `classify` and (if `fd`) against the FD Jacobian.
+fn check_node(atlas: &StabilityAtlas, model: &HeavyTop, p: f64, i: usize, j: usize, fd: bool) {
+    let steady = SteadyMotion::at(model, Vector3::z(), p, true).unwrap();
+    let report = classify(model, &steady).unwrap();
+    let verdict = atlas.verdicts[j][i].expect("the sleeping top exists");
+    assert_eq!(verdict, report.verdict, "node ({i}, {j})");
+    if !fd || !well_separated(model, p) {
+        return;
+    }
+    let omega = steady.psi_dot * Vector3::z();
+    let eig = full_jacobian(model, &omega, &Vector3::z()).complex_eigenvalues();
+    let big = eig.iter().map(|l| l.norm()).fold(0.0, f64::max);
+    // The four roots of f₂ are eigenvalues; the other two are zeros (the integrals).
+    let mut rest: Vec<_> = eig.iter().collect();
+    for r in &report.f2_roots {
+        let (k, d) = rest
+            .iter()
+            .enumerate()
+            .map(|(k, l)| (k, (*l - r).norm()))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .unwrap();
+        assert!(d <= 1e-6 * big, "root {r} of f₂ not an eigenvalue: {eig:?}");
+        rest.remove(k);
+    }
+    assert!(rest.iter().all(|l| l.norm() <= 1e-6 * big), "{eig:?}");
+    let stable = eig.iter().all(|l| l.re.abs() <= 1e-6 * big);
+    match verdict {
+        Stability::SecularlyStable | Stability::GyroscopicallyStabilized => {
+            assert!(stable, "{verdict} but {eig:?}")
+        }
+        Stability::Unstable => assert!(!stable, "unstable but {eig:?}"),
+        Stability::Degenerate => {}
+    }
+}
+
+#[test]
+fn grid_verdicts_agree_with_classify_and_the_full_jacobian() {
+    let mut rng = ChaCha8Rng::seed_from_u64(0xA71A5);
+    let atlas = lagrange_atlas(41, 0);
+    for k in 0..60 {
+        let (i, j) = (rng.gen_range(0..41), rng.gen_range(0..41));
+        let model = HeavyTop::lagrange(A1, C_LAGRANGE, atlas.x[i]);
+        check_node(&atlas, &model, atlas.y[j], i, j, k < 12);
+    }
+    let atlas = asymmetric_atlas(0);
+    for k in 0..60 {
+        let (i, j) = (rng.gen_range(0..41), rng.gen_range(0..61));
+        check_node(&atlas, &asymmetric(atlas.x[i]), atlas.y[j], i, j, k < 12);
+    }
+    // One node in each region of the asymmetric top, checked against the FD Jacobian.
+    let mut seen = std::collections::HashSet::new();
+    for j in 0..61 {
+        for i in 0..41 {
+            if let Some(v) = atlas.verdicts[j][i] {
+                if !seen.contains(&v) && well_separated(&asymmetric(atlas.x[i]), atlas.y[j]) {
+                    seen.insert(v);
+                    check_node(&atlas, &asymmetric(atlas.x[i]), atlas.y[j], i, j, true);
+                }
+            }
+        }
+    }
+    assert!(seen.contains(&Stability::GyroscopicallyStabilized));
+    assert!(seen.contains(&Stability::SecularlyStable));
+    assert!(seen.contains(&Stability::Unstable));
+}
+
+#[test]
+fn atlas_does_not_depend_on_the_number_of_threads() {
+    let one = lagrange_atlas(31, 1);
+    let four = lagrange_atlas(31, 4);
+    assert_eq!(one, four);
+    let one = asymmetric_atlas(1);
+    let four = asymmetric_atlas(4);
+    assert_eq!(one, four);
+}
+
+#[test]
+fn invalid_options_are_errors() {
+    let family = |mgl: f64, p: f64| (HeavyTop::lagrange(A1, C_LAGRANGE, mgl), p);
+    for opts in [
+        AtlasOptions {
+            nx: 1,
+            ..AtlasOptions::default()
+        },
+        AtlasOptions {
+            curve_tol: 0.0,
+            ..AtlasOptions::default()
+        },
+    ] {
+        assert!(stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts).is_err());
+    }
+    let opts = AtlasOptions::default();
+    assert!(stability_atlas(family, Vector3::z(), (2.0, 0.5), (0.5, 5.0), &opts).is_err());
+    assert!(stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, f64::NAN), &opts).is_err());
+}
+
+/// A top J = diag(1, 1.2, 1.6) with its centre of mass off the axis, r = (ε, 0, 1) (mgl = 1),
+/// over (p_ψ, ε): the pitchfork of the sleeping top unfolds and the near-upright motion, followed
+/// from slow spin, ends at a fold.
+fn imperfect(p: f64, eps: f64) -> (HeavyTop, f64) {
+    (
+        HeavyTop {
+            j: Matrix3::from_diagonal(&Vector3::new(1.0, 1.2, 1.6)),
+            mgr: Vector3::new(eps, 0.0, 1.0),
+        },
+        p,
+    )
+}
+
+/// The folds of the motions in the plane γ = (sin θ, 0, cos θ), by hand: with
+/// U_r(θ) = ½p²/n + ε sin θ + cos θ, n = A sin²θ + C cos²θ, U_r′ = p²a − sin θ + ε cos θ and
+/// U_r″ = p²a′ − cos θ − ε sin θ with a = (C − A) sin θ cos θ / n². Both vanish — linear in
+/// (p², ε) — at p² = 1/(a sin θ + a′ cos θ), ε = (a′ sin θ − a cos θ)/(a sin θ + a′ cos θ).
+fn in_plane_fold(theta: f64) -> (f64, f64) {
+    let (a_, c_) = (1.0, 1.6);
+    let (s, c) = theta.sin_cos();
+    let n = a_ * s * s + c_ * c * c;
+    let dn = 2.0 * (a_ - c_) * s * c;
+    let a = (c_ - a_) * s * c / (n * n);
+    let da = (c_ - a_) * ((c * c - s * s) / (n * n) - 2.0 * s * c * dn / (n * n * n));
+    let d = a * s + da * c;
+    (1.0 / d, (da * s - a * c) / d)
+}
+
+#[test]
+fn imperfect_top_fold_curve_matches_the_in_plane_closed_form() {
+    let opts = AtlasOptions {
+        nx: 31,
+        ny: 31,
+        ..AtlasOptions::default()
+    };
+    let atlas = stability_atlas(imperfect, Vector3::z(), (1.0, 3.0), (0.0, 0.2), &opts).unwrap();
+    // The motion is lost beyond the fold for small ε > 0.
+    assert!(atlas.verdicts[1].iter().any(|v| v.is_none()));
+    assert!(atlas.verdicts[0].iter().all(|v| v.is_some()));
+    let folds: Vec<_> = atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind == EventKind::Fold)
+        .collect();
+    assert_eq!(folds.len(), 1, "{:?}", atlas.boundaries);
+    let mut worst: f64 = 0.0;
+    for &(p, eps) in &folds[0].points {
+        // θ with ε(θ) = ε by a scan and bisection; the fold is there if p²(θ) = p².
+        let f = |t: f64| in_plane_fold(t).1 - eps;
+        let mut best = f64::INFINITY;
+        let n = 4000;
+        for k in 0..n {
+            let (mut lo, mut hi) = (
+                -1.2 + 2.4 * k as f64 / n as f64,
+                -1.2 + 2.4 * (k + 1) as f64 / n as f64,
+            );
+            if f(lo) * f(hi) > 0.0 {
+                continue;
+            }
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                if f(lo) * f(mid) <= 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            let p2 = in_plane_fold(0.5 * (lo + hi)).0;
+            best = best.min((p2 - p * p).abs() / (p * p));
+        }
+        worst = worst.max(best);
+    }
+    println!(
+        "fold curve: {} points, max |p² − p²_fold(θ)|/p² = {worst:.3e}",
+        folds[0].points.len()
+    );
+    assert!(worst <= 1e-8);
+    // The out-of-plane pitchfork (γ₂ → −γ₂ is still a symmetry) is a branch point.
+    assert!(atlas
+        .boundaries
+        .iter()
+        .any(|b| b.kind == EventKind::BranchPoint));
+}
