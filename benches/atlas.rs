@@ -1,9 +1,7 @@
 //! `routh::stability_atlas`: the 101 × 101 atlas of the sleeping Lagrange top (A₁ = 1, C = 1.2,
-//! the derived model M1 of `benches/common` with J = diag(1, 1, 1.2), r = e₃) over
+//! the derived gyrostat of `derived-models` with J = diag(1, 1, 1.2), r = e₃) over
 //! (mgl, p_ψ) ∈ [0.5, 2] × [0.5, 5], with its two boundary curves (Maievskii's bound and the
 //! secular bound), on one thread and on all cores.
-
-mod common;
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -20,7 +18,7 @@ fn atlas(threads: usize) -> StabilityAtlas {
     };
     let family = |mgl: f64, p: f64| {
         let top = test_models::Gyrostat::lagrange_top(1.0, 1.2, mgl);
-        (common::Gyrostat::from(&top), p)
+        (derived_models::Gyrostat::from(&top), p)
     };
     stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts).expect("atlas")
 }

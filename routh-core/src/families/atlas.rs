@@ -65,7 +65,7 @@ use super::equations::{chart, chart_eval, relative_discriminant, restricted_eige
 use super::{AtlasOptions, BoundaryCurve, EventKind, StabilityAtlas};
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::sphere::{local_scale, sym2_eigen, tangent_basis};
+use crate::sphere::{sym2_eigen, tangent_basis};
 use crate::stability::{classify_with, StabilityReport};
 use crate::steady::{steady_motion_near, SteadyMotion};
 
@@ -527,7 +527,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
             let (g, dg) = chart(base, basis, &xi);
             let l = Local::at(m, &g, p).ok()?;
             let f = basis.transpose() * l.tangential();
-            let scale = local_scale(&l.grad, &l.hess);
+            let scale = l.raw_scale();
             if !(scale > 0.0 && scale.is_finite()) {
                 return None;
             }
@@ -567,7 +567,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
             let Ok(ce) = chart_eval(&seg, &gamma, &basis, &Vector2::zeros(), s, SEGMENT_DS) else {
                 return lost(s, gamma);
             };
-            let scale = local_scale(&ce.local.grad, &ce.local.hess);
+            let scale = ce.local.raw_scale();
             let kappa0 = sym2_eigen(&ce.local.restricted()).values;
             let jxi = ce.jac.fixed_view::<2, 2>(0, 0).into_owned();
             let js = ce.jac.column(2).into_owned();
@@ -583,7 +583,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
                 let ok = p.is_finite()
                     && match Self::newton(&m, p, &gamma, &basis, pred) {
                         Some((xi, l)) => {
-                            let scale1 = local_scale(&l.grad, &l.hess);
+                            let scale1 = l.raw_scale();
                             let kappa1 = sym2_eigen(&l.restricted()).values;
                             let near = (xi - pred).norm() <= JUMP_RATIO * pred.norm() + JUMP_FLOOR;
                             let smooth = (0..2).all(|i| {
@@ -668,7 +668,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
                 let pb = tangent_basis(gamma);
                 let v = [pb * e.vectors[0], pb * e.vectors[1]];
                 let i = usize::from(v[1].dot(r).abs() > v[0].dot(r).abs());
-                let scale = local_scale(&l.grad, &l.hess);
+                let scale = l.raw_scale();
                 Ok((e.values[i] / scale, v[i]))
             }
             Test::Hopf => Ok((relative_discriminant(&m, gamma, p)?, Vector3::zeros())),
@@ -686,7 +686,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
         let xi = Vector2::new(w[0], w[1]);
         let (x, y) = self.unscale(w[2], w[3]);
         let ce = chart_eval(&|s| (self.family)(s, y), base, basis, &xi, x, self.hx)?;
-        let scale = local_scale(&ce.local.grad, &ce.local.hess);
+        let scale = ce.local.raw_scale();
         if !(scale > 0.0 && scale.is_finite()) {
             return Err(RouthError::NoConvergence {
                 what: "boundary curve (zero local scale)",

@@ -90,6 +90,12 @@ impl Local {
         restricted_hessian(&p, -self.grad.dot(&self.gamma), &(-self.hess))
     }
 
+    /// The size of the derivatives, `max(|∇U_r|, ‖H‖_F)` (radial parts included): the terms whose
+    /// differences form the tangential gradient and `K`, hence the scale of their round-off.
+    pub fn raw_scale(&self) -> f64 {
+        self.grad.norm().max(self.hess.norm())
+    }
+
     /// A scale of the tangential quantities: `‖K‖` plus the tangential gradient's norm, or the
     /// size of `H` where both vanish.
     pub fn scale(&self) -> f64 {
