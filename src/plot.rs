@@ -782,8 +782,11 @@ fn branch_figure(
     write_svg(path, opts, |root| {
         let (left, _) = root.split_horizontally(opts.width - legend_w);
         let chart = axes(&left, opts, xr, yr, x_label, y_label, true)?;
+        // In pixels, without repeats (a dense branch has many points per pixel).
         let px = |pts: &[(f64, f64)]| -> Vec<Px> {
-            pts.iter().map(|p| chart.backend_coord(p)).collect()
+            let mut v: Vec<Px> = pts.iter().map(|p| chart.backend_coord(p)).collect();
+            v.dedup();
+            v
         };
         // Stable runs last, so that they stay on top where branches cross.
         for &v in VERDICTS.iter().rev() {
