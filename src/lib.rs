@@ -33,6 +33,8 @@ pub use routh_core::*;
 pub use routh_macros::Lagrangian;
 
 pub mod fluid;
+#[cfg(feature = "plot")]
+pub mod plot;
 
 /// Paths used by the code that `#[derive(Lagrangian)]` generates. Not a public API.
 #[doc(hidden)]
