@@ -109,12 +109,6 @@ pub struct StabilityReport {
     /// The four roots of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` (errata E5), sorted by real part, then
     /// imaginary part. They are the non-zero eigenvalues of the linearised full system (8).
     pub f2_roots: [Complex<f64>; 4],
-    /// The Krein signature of each root in [`f2_roots`](Self::f2_roots): `+1` or `−1` for a root
-    /// on the imaginary axis (the sign of the energy of its mode), `0` for a root off the axis.
-    /// Gyroscopic stabilisation has two pairs of opposite signature; gyroscopic stability is lost
-    /// where two of opposite signature collide (a Hamiltonian–Hopf bifurcation), while roots of
-    /// equal signature pass each other harmlessly.
-    pub krein_signatures: [i8; 4],
     /// The verdict.
     pub verdict: Stability,
 }
@@ -128,14 +122,9 @@ impl fmt::Display for StabilityReport {
              instability {}, roots of f₂:",
             self.verdict, k1, k2, self.degree_of_instability
         )?;
-        for (i, (r, k)) in self.f2_roots.iter().zip(self.krein_signatures).enumerate() {
+        for (i, r) in self.f2_roots.iter().enumerate() {
             let sep = if i == 0 { " " } else { ", " };
-            let krein = match k {
-                1 => " (Krein +)",
-                -1 => " (Krein −)",
-                _ => "",
-            };
-            write!(f, "{sep}{:+.6e}{:+.6e}i{krein}", r.re, r.im)?;
+            write!(f, "{sep}{:+.6e}{:+.6e}i", r.re, r.im)?;
         }
         Ok(())
     }
@@ -308,7 +297,6 @@ pub fn classify_with<M: Routhian>(
     let [c4, c2, c0] = parts.coefficients;
     let a_norm = parts.a.norm();
     let roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
-    let krein_signatures = krein_signatures(&parts.a, parts.g, &parts.c, &roots.lambda);
 
     let verdict = if any_zero {
         // det K = c₀ is zero within the tolerance, so f₂ ≈ λ²(c₄λ² + c₂): a real root pair
@@ -336,8 +324,65 @@ pub fn classify_with<M: Routhian>(
         restricted_hessian_eigenvalues: eigs,
         degree_of_instability: degree,
         f2_roots: roots.lambda,
-        krein_signatures,
         verdict,
+    })
+}
+
+/// A [`StabilityReport`] with the Krein signatures of the roots of `f₂`, from
+/// [`classify_with_krein`]. Its `Display` shows them next to the roots.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KreinReport {
+    /// The stability analysis.
+    pub report: StabilityReport,
+    /// The Krein signature of each root in `report.f2_roots`: `+1` or `−1` for a root on the
+    /// imaginary axis (the sign of the energy of its mode), `0` for a root off the axis.
+    /// Gyroscopic stabilisation has, for each sign of the frequency, one mode of each signature;
+    /// gyroscopic stability is lost where two roots of opposite signature collide (a
+    /// Hamiltonian–Hopf bifurcation), while roots of equal signature pass each other harmlessly.
+    pub krein_signatures: [i8; 4],
+}
+
+impl fmt::Display for KreinReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let r = &self.report;
+        let [k1, k2] = r.restricted_hessian_eigenvalues;
+        write!(
+            f,
+            "{}: restricted second variation eigenvalues [{:+.6e}, {:+.6e}], degree of \
+             instability {}, roots of f₂ (with Krein signatures):",
+            r.verdict, k1, k2, r.degree_of_instability
+        )?;
+        for (i, (z, k)) in r.f2_roots.iter().zip(self.krein_signatures).enumerate() {
+            let sep = if i == 0 { " " } else { ", " };
+            let krein = match k {
+                1 => " (+)",
+                -1 => " (−)",
+                _ => "",
+            };
+            write!(f, "{sep}{:+.6e}{:+.6e}i{krein}", z.re, z.im)?;
+        }
+        Ok(())
+    }
+}
+
+/// [`classify_with`] and the Krein signatures of the roots of `f₂` (see [`KreinReport`]): on the
+/// tangent plane the linearisation is `a ẍ + 2gJẋ + cx = 0` with conserved energy
+/// `½ẋᵀaẋ + ½xᵀcx`; on the mode `u` of a root `λ = iω` it is proportional to `ω²uᴴau + uᴴcu`, and
+/// its sign is the root's signature. They explain a verdict: a secularly stable motion has only
+/// `+1`; a gyroscopically stabilised one has one mode of each sign per sign of ω.
+///
+/// Errors: as [`classify_with`].
+pub fn classify_with_krein<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    opts: &ClassifyOptions,
+) -> Result<KreinReport, RouthError> {
+    let report = classify_with(model, steady, opts)?;
+    let parts = f2_parts(model, &steady.gamma, steady.p_psi)?;
+    let krein_signatures = krein_signatures(&parts.a, parts.g, &parts.c, &report.f2_roots);
+    Ok(KreinReport {
+        report,
+        krein_signatures,
     })
 }
 

@@ -531,17 +531,26 @@ fn display_is_readable() {
 fn krein_signatures_of_the_sleeping_top() {
     let top = HeavyTop::lagrange(1.0, 1.25, 1.0);
     // Maievskii p = 2, secular bound p = 2.5.
-    let gyro = classify(&top, &sleeping(&top, 2.2)).unwrap();
+    let krein = |p: f64| {
+        routh_core::stability::classify_with_krein(
+            &top,
+            &sleeping(&top, p),
+            &routh_core::ClassifyOptions::default(),
+        )
+        .unwrap()
+    };
+    let k = krein(2.2);
+    let gyro = &k.report;
     assert_eq!(gyro.verdict, Stability::GyroscopicallyStabilized);
     let upper: Vec<i8> = (0..4)
         .filter(|&k| gyro.f2_roots[k].im > 0.0)
-        .map(|k| gyro.krein_signatures[k])
+        .map(|i| k.krein_signatures[i])
         .collect();
     assert_eq!(upper.len(), 2);
-    assert_eq!(upper[0], -upper[1], "{gyro}");
-    let secular = classify(&top, &sleeping(&top, 3.0)).unwrap();
-    assert_eq!(secular.verdict, Stability::SecularlyStable);
+    assert_eq!(upper[0], -upper[1], "{k}");
+    let secular = krein(3.0);
+    assert_eq!(secular.report.verdict, Stability::SecularlyStable);
     assert_eq!(secular.krein_signatures, [1, 1, 1, 1], "{secular}");
-    let unstable = classify(&top, &sleeping(&top, 1.0)).unwrap();
+    let unstable = krein(1.0);
     assert_eq!(unstable.krein_signatures, [0, 0, 0, 0], "{unstable}");
 }
