@@ -10,13 +10,17 @@ mod common;
 use std::error::Error;
 use std::time::Instant;
 
-use common::plot::{verdict_series, Figure, Series, Style};
+use common::plot::{Figure, Series, Style};
 use common::{linspace, verdict_label};
 use derived_models::LagrangeTop;
 use derived_models::{classified_steady_motions, report_at};
-use plotters::prelude::{RGBColor, SeriesLabelPosition, BLACK};
+use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::families::bifurcation_diagram_checked;
-use routh::{simulate_full, ContinuationOptions, EventKind, Routhian, SimOptions, Vector3};
+use routh::plot::{self, DiagramAxis, Overlay, PlotOptions};
+use routh::{
+    simulate_full, stability_atlas, AtlasOptions, ContinuationOptions, EventKind, Routhian,
+    SimOptions, Vector3,
+};
 
 fn main() -> Result<(), Box<dyn Error>> {
     let start = Instant::now();
@@ -130,63 +134,102 @@ fn main() -> Result<(), Box<dyn Error>> {
         );
     }
 
-    // --- Figure 1: families of steady motions --------------------------------------------------
-    let ps = linspace(0.0, 5.0, 101);
-    let mut pts = Vec::new();
-    let mut counts = [0usize; 4];
-    for &p in &ps {
-        for r in classified_steady_motions(&top, p)? {
-            let tilt = r.motion.gamma.z.clamp(-1.0, 1.0).acos().to_degrees();
-            pts.push((r.report.verdict, p, tilt));
-            counts[common::VERDICTS
-                .iter()
-                .position(|&v| v == r.report.verdict)
-                .unwrap_or(0)] += 1;
-        }
-    }
-    let mut fig = Figure::new(
-        "Lagrange top: steady motions (A₁ = 1, C = 1.25, mgl = 1)",
-        "cyclic momentum p_ψ",
-        "tilt of the symmetry axis arccos γ₃ (degrees)",
-    );
-    fig.x_range = Some(0.0..5.0);
-    fig.y_range = Some(-5.0..185.0);
-    let analytic: Vec<(f64, f64)> = linspace(0.02, 1.0, 200)
+    // --- Figure 1: the bifurcation diagram ------------------------------------------------------
+    let tilted: Vec<(f64, f64)> = linspace(0.02, 1.0, 200)
         .into_iter()
         .filter_map(|z| top.tilted_family_p(z).map(|p| (p, z.acos().to_degrees())))
-        .filter(|&(p, _)| p <= 5.0)
+        .filter(|&(p, _)| p <= range.1)
         .collect();
-    fig.series.push(Series::new(
-        "tilted family, closed form",
-        BLACK,
-        Style::Line(1),
-        analytic,
-    ));
-    fig.series.extend(verdict_series(&pts, 3));
-    fig.vlines.push((
-        formula,
-        format!("Maievskii p² = 4A₁mgl ({formula:.3})"),
-        RGBColor(30, 90, 220),
-    ));
-    if let Some(p) = top.secular_p() {
-        fig.vlines.push((
-            p,
-            format!("p² = mglC²/(C − A₁) ({p:.3})"),
-            RGBColor(0, 140, 60),
-        ));
-    }
-    fig.legend = SeriesLabelPosition::Coordinate(470, 45);
-    let path1 = out.join("steady_motions.svg");
-    fig.save(&path1, 900, 560)?;
+    let path1 = out.join("bifurcation_diagram.svg");
+    plot::bifurcation_diagram_svg(
+        diagram,
+        &path1,
+        &PlotOptions {
+            title: format!(
+                "Lagrange top (A₁ = {}, C = {}, mgl = {}): steady motions against p_ψ",
+                top.a1,
+                top.c,
+                top.mgl()
+            ),
+            x_label: "cyclic momentum p_ψ".into(),
+            y: DiagramAxis::Tilt,
+            overlays: vec![Overlay {
+                label: "tilted circles, closed form".into(),
+                points: tilted,
+            }],
+            ..PlotOptions::default()
+        },
+    )?;
+
+    // --- Figure 2: the stability atlas of the sleeping top over (mgl, p_ψ) ----------------------
+    let (mgl_range, p_range) = ((0.25, 2.0), (0.0, 5.0));
+    let (a1, c) = (top.a1, top.c);
+    let atlas = stability_atlas(
+        |mgl, p| (LagrangeTop::with_mgl(a1, c, mgl), p),
+        e3,
+        mgl_range,
+        p_range,
+        &AtlasOptions {
+            nx: 61,
+            ny: 61,
+            ..AtlasOptions::default()
+        },
+    )?;
+    // The traced curves against the closed forms, in p_ψ at the traced mgl.
+    let maievskii = |mgl: f64| (4.0 * a1 * mgl).sqrt();
+    let secular = |mgl: f64| (mgl * c * c / (c - a1)).sqrt();
     println!(
-        "\nFamilies of steady motions over p_ψ ∈ [0, 5] ({} values): {} secularly stable, {} \
-         gyroscopically stabilised, {} unstable, {} degenerate (the circles of tilted steady motions, and the sleeping top exactly on a boundary).",
-        ps.len(),
-        counts[0],
-        counts[1],
-        counts[2],
-        counts[3]
+        "\nStability atlas of the sleeping top over (mgl, p_ψ) ∈ [{}, {}] × [{}, {}], {} × {} grid",
+        mgl_range.0,
+        mgl_range.1,
+        p_range.0,
+        p_range.1,
+        atlas.x.len(),
+        atlas.y.len()
     );
+    for b in &atlas.boundaries {
+        let (name, exact): (&str, &dyn Fn(f64) -> f64) = match b.kind {
+            EventKind::HamiltonianHopf => ("Maievskii p² = 4A₁mgl", &maievskii),
+            _ => ("secular p² = mglC²/(C − A₁)", &secular),
+        };
+        let worst = b
+            .points
+            .iter()
+            .map(|&(mgl, p)| (p - exact(mgl)).abs() / exact(mgl).max(1e-300))
+            .fold(0.0f64, f64::max);
+        println!(
+            "  {} boundary: {} traced points, largest relative distance to {name}: {worst:.1e}",
+            b.kind,
+            b.points.len()
+        );
+    }
+    let curve = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
+        linspace(mgl_range.0, mgl_range.1, 100)
+            .into_iter()
+            .map(|m| (m, f(m)))
+            .collect()
+    };
+    let path3 = out.join("sleeping_top_atlas.svg");
+    plot::stability_atlas_svg(
+        &atlas,
+        &path3,
+        &PlotOptions {
+            title: "Sleeping Lagrange top: verdict over (mgl, p_ψ)".into(),
+            x_label: "weight × distance mgl".into(),
+            y_label: "cyclic momentum p_ψ".into(),
+            overlays: vec![
+                Overlay {
+                    label: "closed form p² = 4A₁mgl".into(),
+                    points: curve(&maievskii),
+                },
+                Overlay {
+                    label: "closed form p² = mglC²/(C − A₁)".into(),
+                    points: curve(&secular),
+                },
+            ],
+            ..PlotOptions::default()
+        },
+    )?;
 
     // --- Figure 2: perturbed sleeping top below and above the bound -----------------------------
     let t_end = 60.0;
@@ -252,6 +295,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!("\nFigures:");
     println!("  {}", path1.display());
     println!("  {}", path2.display());
+    println!("  {}", path3.display());
     println!("Done in {:.2} s.", start.elapsed().as_secs_f64());
     Ok(())
 }

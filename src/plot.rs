@@ -162,6 +162,19 @@ pub struct PlotOptions {
     /// Black, white and greys only (default `false`: the line styles, markers and patterns are
     /// the same, colour is added on top).
     pub monochrome: bool,
+    /// Reference curves drawn on top of a bifurcation diagram or an atlas, in the data's
+    /// coordinates, each named in the legend — e.g. a closed form to compare with (default none).
+    pub overlays: Vec<Overlay>,
+}
+
+/// A named reference curve of [`PlotOptions::overlays`], drawn as a thin black line of dots and
+/// dashes over the data.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Overlay {
+    /// The legend text.
+    pub label: String,
+    /// The points `(x, y)` in order; non-finite points break the line.
+    pub points: Vec<(f64, f64)>,
 }
 
 impl Default for PlotOptions {
@@ -174,6 +187,7 @@ impl Default for PlotOptions {
             height: 600,
             y: DiagramAxis::GammaZ,
             monochrome: false,
+            overlays: Vec::new(),
         }
     }
 }
@@ -191,6 +205,22 @@ impl PlotOptions {
 }
 
 // --- styles ------------------------------------------------------------------------------------
+
+/// The stroke of [`Overlay`] curves.
+const OVERLAY_STROKE: Stroke = Stroke::Dashed(2, 12, 4);
+
+/// The overlays of `opts` clipped to the rectangle `xr × yr`, by label.
+fn overlay_parts(
+    opts: &PlotOptions,
+    xr: (f64, f64),
+    yr: (f64, f64),
+) -> Vec<(String, Vec<Polyline>)> {
+    opts.overlays
+        .iter()
+        .map(|o| (o.label.clone(), clip_polyline(&o.points, xr, yr)))
+        .filter(|(_, parts)| !parts.is_empty())
+        .collect()
+}
 
 const VERDICTS: [Stability; 4] = [
     Stability::SecularlyStable,
@@ -777,6 +807,12 @@ fn branch_figure(
             .filter(|&&k| events.iter().any(|e| e.0 == k))
             .map(|&k| (Swatch::Event(k), k.to_string())),
     );
+    let overlays = overlay_parts(opts, xr, yr);
+    legend.extend(
+        overlays
+            .iter()
+            .map(|(label, _)| (Swatch::Line(BLACK, OVERLAY_STROKE), label.clone())),
+    );
 
     let legend_w = legend_width(&legend, opts.width);
     write_svg(path, opts, |root| {
@@ -802,6 +838,11 @@ fn branch_figure(
                 if !run.isolated {
                     draw_rings(root, &pts, color)?;
                 }
+            }
+        }
+        for (_, parts) in &overlays {
+            for part in parts {
+                stroke_path(root, &px(part), BLACK, OVERLAY_STROKE)?;
             }
         }
         for &(kind, q) in &events {
@@ -1124,6 +1165,12 @@ pub fn stability_atlas_svg<P: AsRef<Path>>(
             .filter(|&&k| curves.iter().any(|c| c.0.kind == k))
             .map(|&k| (Swatch::Boundary(k), format!("{k} boundary"))),
     );
+    let overlays = overlay_parts(opts, xr, yr);
+    legend.extend(
+        overlays
+            .iter()
+            .map(|(label, _)| (Swatch::Line(BLACK, OVERLAY_STROKE), label.clone())),
+    );
 
     let legend_w = legend_width(&legend, opts.width);
     write_svg(path.as_ref(), opts, |root| {
@@ -1173,6 +1220,12 @@ pub fn stability_atlas_svg<P: AsRef<Path>>(
                     boundary_color(curve.kind, mono),
                     boundary_stroke(curve.kind),
                 )?;
+            }
+        }
+        for (_, parts) in &overlays {
+            for part in parts {
+                let pts: Vec<Px> = part.iter().map(|p| chart.backend_coord(p)).collect();
+                stroke_path(root, &pts, BLACK, OVERLAY_STROKE)?;
             }
         }
         let (a, b) = (

@@ -477,3 +477,35 @@ fn errors() {
         Err(PlotError::Io(_))
     ));
 }
+
+#[test]
+fn overlays_are_drawn_and_named() {
+    let overlays = vec![routh::plot::Overlay {
+        label: "closed form p² = 4A₁mgl".into(),
+        points: (0..50)
+            .map(|k| (0.5 + 0.03 * k as f64, 1.0 + 0.05 * k as f64))
+            .collect(),
+    }];
+    let opts = PlotOptions {
+        overlays,
+        ..PlotOptions::default()
+    };
+    let path = out("overlay_atlas.svg");
+    routh::plot::stability_atlas_svg(&all_verdicts_atlas(), &path, &opts).unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(&svg, "closed form p² = 4A₁mgl"));
+    let path = out("overlay_diagram.svg");
+    routh::plot::bifurcation_diagram_svg(&full_diagram(), &path, &opts).unwrap();
+    assert!(has_text(&read_svg(&path), "closed form p² = 4A₁mgl"));
+    // Outside the axes it is clipped away, and so is its legend entry.
+    let far = PlotOptions {
+        overlays: vec![routh::plot::Overlay {
+            label: "far away".into(),
+            points: vec![(1e6, 1e6), (2e6, 2e6)],
+        }],
+        ..PlotOptions::default()
+    };
+    let path = out("overlay_far.svg");
+    routh::plot::stability_atlas_svg(&all_verdicts_atlas(), &path, &far).unwrap();
+    assert!(!has_text(&read_svg(&path), "far away"));
+}
