@@ -7,7 +7,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use routh::{stability_atlas, AtlasOptions, StabilityAtlas, Vector3};
+use routh::{stability_atlas, stability_atlas_parallel, AtlasOptions, StabilityAtlas, Vector3};
 
 fn atlas(threads: usize) -> StabilityAtlas {
     let opts = AtlasOptions {
@@ -20,7 +20,12 @@ fn atlas(threads: usize) -> StabilityAtlas {
         let top = test_models::Gyrostat::lagrange_top(1.0, 1.2, mgl);
         (derived_models::Gyrostat::from(&top), p)
     };
-    stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts).expect("atlas")
+    if threads == 1 {
+        stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts).expect("atlas")
+    } else {
+        stability_atlas_parallel(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts)
+            .expect("atlas")
+    }
 }
 
 fn bench_atlas(c: &mut Criterion) {

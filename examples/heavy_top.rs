@@ -18,8 +18,8 @@ use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::families::bifurcation_diagram_checked;
 use routh::plot::{self, DiagramAxis, Overlay, PlotOptions};
 use routh::{
-    simulate_full, stability_atlas, AtlasOptions, ContinuationOptions, EventKind, Routhian,
-    SimOptions, Vector3,
+    simulate_full, stability_atlas_parallel, AtlasOptions, ContinuationOptions, EventKind,
+    Routhian, SimOptions, Vector3,
 };
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -164,7 +164,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     // --- Figure 2: the stability atlas of the sleeping top over (mgl, p_ψ) ----------------------
     let (mgl_range, p_range) = ((0.25, 2.0), (0.0, 5.0));
     let (a1, c) = (top.a1, top.c);
-    let atlas = stability_atlas(
+    let atlas = stability_atlas_parallel(
         |mgl, p| (LagrangeTop::with_mgl(a1, c, mgl), p),
         e3,
         mgl_range,

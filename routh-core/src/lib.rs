@@ -27,9 +27,9 @@ pub mod validate;
 
 pub use error::RouthError;
 pub use families::{
-    bifurcation_diagram, continue_branch, stability_atlas, AtlasOptions, BifurcationDiagram,
-    BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions, EventKind,
-    StabilityAtlas,
+    bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,
+    BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions,
+    EventKind, StabilityAtlas,
 };
 pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};

@@ -297,6 +297,11 @@ pub fn classify_with<M: Routhian>(
     let [c4, c2, c0] = parts.coefficients;
     let a_norm = parts.a.norm();
     let roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
+    // Finite coefficients can still give roots beyond f64 (c₄ subnormal: a kinetic form with a
+    // moment of 1e−310 is positive definite but λ² = O(c₂/c₄) overflows). Found by
+    // tests/runtime_properties.rs.
+    let root_parts: Vec<f64> = roots.lambda.iter().flat_map(|l| [l.re, l.im]).collect();
+    check_model_finite("roots of f2 (overflow)", &root_parts, &gamma)?;
 
     let verdict = if any_zero {
         // det K = c₀ is zero within the tolerance, so f₂ ≈ λ²(c₄λ² + c₂): a real root pair

@@ -11,8 +11,8 @@ use rand_chacha::ChaCha8Rng;
 use routh_core::nalgebra::{Matrix6, Vector6};
 use routh_core::sim::full_vector_field;
 use routh_core::{
-    classify, stability_atlas, AtlasOptions, EventKind, Matrix3, Stability, StabilityAtlas,
-    SteadyMotion, Vector3,
+    classify, stability_atlas, stability_atlas_parallel, AtlasOptions, EventKind, Matrix3,
+    Stability, StabilityAtlas, SteadyMotion, Vector3,
 };
 
 const A1: f64 = 1.0;
@@ -26,7 +26,7 @@ fn lagrange_atlas(n: usize, threads: usize) -> StabilityAtlas {
         threads,
         ..AtlasOptions::default()
     };
-    stability_atlas(
+    stability_atlas_parallel(
         |mgl: f64, p: f64| (HeavyTop::lagrange(A1, C_LAGRANGE, mgl), p),
         Vector3::z(),
         (0.5, 2.0),
@@ -69,7 +69,7 @@ fn asymmetric_atlas(threads: usize) -> StabilityAtlas {
         threads,
         ..AtlasOptions::default()
     };
-    stability_atlas(
+    stability_atlas_parallel(
         |b: f64, p: f64| (asymmetric(b), p),
         Vector3::z(),
         (1.05, 1.45),
@@ -333,6 +333,20 @@ fn atlas_does_not_depend_on_the_number_of_threads() {
     let one = lagrange_atlas(31, 1);
     let four = lagrange_atlas(31, 4);
     assert_eq!(one, four);
+    // The sequential entry point gives the same atlas.
+    let sequential = stability_atlas(
+        |mgl: f64, p: f64| (HeavyTop::lagrange(A1, C_LAGRANGE, mgl), p),
+        Vector3::z(),
+        (0.5, 2.0),
+        (0.5, 5.0),
+        &AtlasOptions {
+            nx: 31,
+            ny: 31,
+            ..AtlasOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(one, sequential);
     let one = asymmetric_atlas(1);
     let four = asymmetric_atlas(4);
     assert_eq!(one, four);

@@ -17,8 +17,8 @@
 //! `None` — continuing further along the same line would cross the same fold.
 //!
 //! Rows are independent once the first column is known, so they run in parallel on a pool of
-//! [`AtlasOptions::threads`] threads; the traversal inside a row is fixed, so the result does
-//! not depend on the number of threads (bit for bit).
+//! [`AtlasOptions::threads`] threads by [`stability_atlas_parallel`]; the traversal inside a row
+//! is fixed, so the result does not depend on the number of threads (bit for bit).
 //!
 //! # The boundary curves
 //!
@@ -122,10 +122,9 @@ const LOCATE_MAX_ITER: usize = 80;
 ///   function to [`AtlasOptions::curve_tol`] relative to the local scale (the discriminant
 ///   relative to `c₂² + 4|c₄c₀|`). Curves end at the edges of the rectangle, where they close,
 ///   or at cusps and crossings.
-/// - The rows run in parallel on [`AtlasOptions::threads`] threads (`0`: all cores); the result
-///   is the same for any number of threads.
-///
-/// The family must be `Sync` (it is called from several threads).
+/// - The rows run one after the other; [`stability_atlas_parallel`] runs them on all cores (or
+///   [`AtlasOptions::threads`]) for a family that can be shared between threads, with the same
+///   result bit for bit.
 ///
 /// Errors: [`RouthError::InvalidOption`] for `nx < 2`, `ny < 2`, an empty or non-finite range,
 /// or options out of range; the errors of [`steady_motion_near`](crate::steady_motion_near) at the
@@ -205,15 +204,66 @@ const LOCATE_MAX_ITER: usize = 80;
 /// }
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
-pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>(
+pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     family: F,
     gamma_guess: Vector3<f64>,
     x: (f64, f64),
     y: (f64, f64),
     opts: &AtlasOptions,
 ) -> Result<StabilityAtlas, RouthError> {
+    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, column| {
+        (0..ys.len())
+            .map(|j| ctx.row(xs, ys[j], column[j]))
+            .collect()
+    })
+}
+
+/// [`stability_atlas`] with the rows of the grid on [`AtlasOptions::threads`] threads (`0`: all
+/// cores), for a family that can be shared between threads (`Sync`: any closure over plain
+/// data). The result is the same, bit for bit, for any number of threads and equal to that of
+/// [`stability_atlas`].
+///
+/// Errors: as [`stability_atlas`], plus [`RouthError::InvalidOption`] when the thread pool cannot
+/// be built.
+pub fn stability_atlas_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>(
+    family: F,
+    gamma_guess: Vector3<f64>,
+    x: (f64, f64),
+    y: (f64, f64),
+    opts: &AtlasOptions,
+) -> Result<StabilityAtlas, RouthError> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(opts.threads)
+        .build()
+        .map_err(|e| RouthError::InvalidOption {
+            what: "threads",
+            reason: e.to_string(),
+        })?;
+    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, column| {
+        pool.install(|| {
+            (0..ys.len())
+                .into_par_iter()
+                .map(|j| ctx.row(xs, ys[j], column[j]))
+                .collect()
+        })
+    })
+}
+
+/// Rows of nodes of the grid, or an error.
+type Rows = Result<Vec<Vec<Option<Node>>>, RouthError>;
+
+/// The atlas, with the rows computed by `rows` (sequentially or in parallel) from the first
+/// column.
+fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
+    family: &'a F,
+    gamma_guess: Vector3<f64>,
+    x: (f64, f64),
+    y: (f64, f64),
+    opts: &'a AtlasOptions,
+    rows: impl FnOnce(&Ctx<'a, M, F>, &[f64], &[f64], &[Option<Vector3<f64>>]) -> Rows,
+) -> Result<StabilityAtlas, RouthError> {
     validate(x, y, opts)?;
-    let ctx = Ctx::new(&family, x, y, opts);
+    let ctx = Ctx::new(family, x, y, opts);
     let xs = linspace(x, opts.nx);
     let ys = linspace(y, opts.ny);
 
@@ -230,20 +280,8 @@ pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>(
         column[j] = ctx.follow((xs[0], ys[j - 1]), &g, (xs[0], ys[j])).reached;
     }
 
-    // The rows, in parallel; each from its first node in a fixed order.
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(opts.threads)
-        .build()
-        .map_err(|e| RouthError::InvalidOption {
-            what: "threads",
-            reason: e.to_string(),
-        })?;
-    let rows: Vec<Vec<Option<Node>>> = pool.install(|| {
-        (0..opts.ny)
-            .into_par_iter()
-            .map(|j| ctx.row(&xs, ys[j], column[j]))
-            .collect::<Result<Vec<_>, RouthError>>()
-    })?;
+    // The rows, each from its first node in a fixed order.
+    let rows = rows(&ctx, &xs, &ys, &column)?;
 
     let boundaries = ctx.boundaries(&xs, &ys, &rows);
     let verdicts = rows

@@ -37,7 +37,7 @@ use nalgebra::Vector3;
 use crate::stability::{ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{SearchOptions, SteadyMotion};
 
-pub use atlas::stability_atlas;
+pub use atlas::{stability_atlas, stability_atlas_parallel};
 pub use diagram::{
     bifurcation_diagram, bifurcation_diagram_checked, continue_branch, CheckedDiagram, CountCheck,
 };
@@ -201,8 +201,9 @@ pub struct AtlasOptions {
     pub curve_step: f64,
     /// Budget of points per boundary curve (default `20_000`).
     pub max_curve_points: usize,
-    /// Number of worker threads for the grid (`0`: all cores; default `0`). The result does not
-    /// depend on it.
+    /// Number of worker threads for the grid of
+    /// [`stability_atlas_parallel`](super::stability_atlas_parallel) (`0`: all cores; default
+    /// `0`). The result does not depend on it.
     pub threads: usize,
     /// Tolerances of the verdicts at each node.
     pub classify: ClassifyOptions,

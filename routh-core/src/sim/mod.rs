@@ -433,8 +433,15 @@ pub fn simulate_full<M: Lagrangian>(
     validate(opts, t_end)?;
     check_unit_gamma(&gamma0)?;
     // A finite input for which the vector field overflows: say which input is too large.
+    // The recorded integrals count too: an ω₀ for which the energy (3) overflows (|ω₀| = 1e300)
+    // is too large even where the field is finite (found by tests/runtime_properties.rs).
     let finite_at = |w: &Vector3<f64>| {
-        full_vector_field(model, w, &gamma0).map(|(a, b)| all_finite(&a) && all_finite(&b))
+        full_vector_field(model, w, &gamma0).map(|(a, b)| {
+            all_finite(&a)
+                && all_finite(&b)
+                && model.energy(w, &gamma0).is_finite()
+                && model.cyclic_momentum(w, &gamma0).is_finite()
+        })
     };
     if !finite_at(&omega0)? {
         return Err(if finite_at(&Vector3::zeros())? {
@@ -470,8 +477,22 @@ pub fn simulate_full<M: Lagrangian>(
         traj.gamma_norm_sq.push(g.norm_squared());
     };
     let stats = drive(field, y0, t_end, opts, record)?;
+    // A finite state can still overflow the recorded integrals (a fixed-step run gone unstable).
+    non_finite_record(&traj.t, &[&traj.energy, &traj.p_psi])?;
     traj.stats = stats;
     Ok(traj)
+}
+
+/// `Err(NonFiniteState)` at the first recorded time where one of `columns` is not finite: the
+/// integrators check the state, not the quantities recorded from it (energy, ψ̇, …), which can
+/// overflow for a finite state (e.g. ω ≈ 1e200 after a fixed-step run went unstable). Found by
+/// tests/runtime_properties.rs.
+fn non_finite_record(t: &[f64], columns: &[&[f64]]) -> Result<(), RouthError> {
+    let bad = (0..t.len()).find(|&i| columns.iter().any(|c| !c[i].is_finite()));
+    match bad {
+        Some(i) => Err(RouthError::NonFiniteState { t: t[i] }),
+        None => Ok(()),
+    }
 }
 
 /// Simulates the reduced equations (13) from `(Ω₀, γ₀)` at `t = 0` to `t_end` on the level
@@ -516,9 +537,16 @@ pub fn simulate_reduced<M: Routhian>(
             value: vertical_inertia,
         });
     }
+    // As in `simulate_full`, the recorded E' (16) and (17) must be finite at the start too.
     let finite_at = |w: &Vector3<f64>, p: f64| {
-        reduced_vector_field(model, w, &gamma0, p)
-            .map(|(a, b, c)| all_finite(&a) && all_finite(&b) && c.is_finite())
+        reduced_vector_field(model, w, &gamma0, p).map(|(a, b, c)| {
+            let r = model.bundle(w, &gamma0, p);
+            let recorded = [r.dr_domega.dot(w) - r.routhian, r.dr_domega.dot(&gamma0)];
+            all_finite(&a)
+                && all_finite(&b)
+                && c.is_finite()
+                && recorded.iter().all(|x| x.is_finite())
+        })
     };
     if !finite_at(&big_omega0, p_psi)? {
         let zero = Vector3::zeros();
@@ -562,6 +590,17 @@ pub fn simulate_reduced<M: Routhian>(
         traj.gamma_norm_sq.push(g.norm_squared());
     };
     let stats = drive(field, y0, t_end, opts, record)?;
+    let omega: Vec<f64> = (traj.omega.iter())
+        .map(|w| if all_finite(w) { 0.0 } else { f64::NAN })
+        .collect();
+    let columns = [
+        &traj.psi[..],
+        &traj.psi_dot,
+        &omega,
+        &traj.energy,
+        &traj.p_psi,
+    ];
+    non_finite_record(&traj.t, &columns)?;
     traj.stats = stats;
     Ok(traj)
 }

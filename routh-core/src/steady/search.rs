@@ -51,6 +51,9 @@ const PROBE_CAPTURE: f64 = 1e-3;
 /// Distance (radians) of the neighbours tested to tell a two-dimensional critical set from a
 /// higher-order isolated critical point.
 const PLANAR_PROBE: f64 = 1e-2;
+/// Largest number of points (critical points and curve vertices) probed around by
+/// [`Found::probes`].
+const MAX_PROBE_CENTRES: usize = 64;
 /// Samples on the small circle around a degenerate isolated critical point for its index.
 const INDEX_SAMPLES: usize = 48;
 /// Largest radius of that circle (radians).
@@ -363,6 +366,12 @@ impl Found {
                 out.extend(curve_axis(&c.vertices).into_iter().flat_map(|n| [n, -n]));
             }
         }
+        // At most MAX_PROBE_CENTRES centres. Probes resolve a few critical points hidden next to
+        // known ones; far more points than that means a degenerate landscape (e.g. a curve of
+        // critical points not recognised as one, every start landing on a different point of it),
+        // where probing every point multiplied the points by 19 and the quadratic de-duplication
+        // took seconds to minutes (found by tests/runtime_properties.rs).
+        centres.truncate(MAX_PROBE_CENTRES);
         for c in centres {
             let basis = tangent_basis(&c);
             for (ring, r) in [0.5, 0.2, 0.05].into_iter().enumerate() {
