@@ -167,8 +167,8 @@ pub struct PlotOptions {
     pub overlays: Vec<Overlay>,
 }
 
-/// A named reference curve of [`PlotOptions::overlays`], drawn as a thin black line of dots and
-/// dashes over the data.
+/// A named reference curve of [`PlotOptions::overlays`], drawn in black over the data (long
+/// dashes, short dashes, a thin line, in turn).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Overlay {
     /// The legend text.
@@ -206,8 +206,17 @@ impl PlotOptions {
 
 // --- styles ------------------------------------------------------------------------------------
 
-/// The stroke of [`Overlay`] curves.
-const OVERLAY_STROKE: Stroke = Stroke::Dashed(2, 12, 4);
+/// The strokes of [`Overlay`] curves, in turn: long dashes, short dashes, a thin line.
+const OVERLAY_STROKES: [Stroke; 3] = [
+    Stroke::Dashed(2, 12, 4),
+    Stroke::Dashed(2, 4, 6),
+    Stroke::Solid(1),
+];
+
+/// The stroke of the `k`-th overlay.
+fn overlay_stroke(k: usize) -> Stroke {
+    OVERLAY_STROKES[k % OVERLAY_STROKES.len()]
+}
 
 /// The overlays of `opts` clipped to the rectangle `xr × yr`, by label.
 fn overlay_parts(
@@ -588,7 +597,12 @@ fn axes<'a, 'b>(
 ) -> Result<Chart<'a, 'b>, PlotError> {
     let mut builder = ChartBuilder::on(area);
     if !opts.title.is_empty() {
-        builder.caption(&opts.title, ("sans-serif", 24));
+        // Centred over the axes: shrink a long title so that it fits their width (about 0.55 em
+        // a character).
+        let width = area.dim_in_pixel().0 as f64;
+        let chars = opts.title.chars().count().max(1) as f64;
+        let size = (width / (0.55 * chars)).clamp(10.0, 24.0);
+        builder.caption(&opts.title, ("sans-serif", size));
     }
     let mut chart = builder
         .margin(15)
@@ -811,7 +825,8 @@ fn branch_figure(
     legend.extend(
         overlays
             .iter()
-            .map(|(label, _)| (Swatch::Line(BLACK, OVERLAY_STROKE), label.clone())),
+            .enumerate()
+            .map(|(k, (label, _))| (Swatch::Line(BLACK, overlay_stroke(k)), label.clone())),
     );
 
     let legend_w = legend_width(&legend, opts.width);
@@ -840,9 +855,9 @@ fn branch_figure(
                 }
             }
         }
-        for (_, parts) in &overlays {
+        for (k, (_, parts)) in overlays.iter().enumerate() {
             for part in parts {
-                stroke_path(root, &px(part), BLACK, OVERLAY_STROKE)?;
+                stroke_path(root, &px(part), BLACK, overlay_stroke(k))?;
             }
         }
         for &(kind, q) in &events {
@@ -1169,7 +1184,8 @@ pub fn stability_atlas_svg<P: AsRef<Path>>(
     legend.extend(
         overlays
             .iter()
-            .map(|(label, _)| (Swatch::Line(BLACK, OVERLAY_STROKE), label.clone())),
+            .enumerate()
+            .map(|(k, (label, _))| (Swatch::Line(BLACK, overlay_stroke(k)), label.clone())),
     );
 
     let legend_w = legend_width(&legend, opts.width);
@@ -1222,10 +1238,10 @@ pub fn stability_atlas_svg<P: AsRef<Path>>(
                 )?;
             }
         }
-        for (_, parts) in &overlays {
+        for (k, (_, parts)) in overlays.iter().enumerate() {
             for part in parts {
                 let pts: Vec<Px> = part.iter().map(|p| chart.backend_coord(p)).collect();
-                stroke_path(root, &pts, BLACK, OVERLAY_STROKE)?;
+                stroke_path(root, &pts, BLACK, overlay_stroke(k))?;
             }
         }
         let (a, b) = (
