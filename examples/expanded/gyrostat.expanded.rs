@@ -773,13 +773,13 @@ const _: () = {
             let __t155: ::routh::__private::f64 = __t153 + __t154;
             let __t158: ::routh::__private::f64 = __v6 - __t135;
             let __t160: ::routh::__private::f64 = __t158 / __t155;
-            let __t343: ::routh::__private::f64 = __t140 * __t160;
-            let __t344: ::routh::__private::f64 = __t91 + __t343;
-            let __t345: ::routh::__private::f64 = __t145 * __t160;
-            let __t346: ::routh::__private::f64 = __t95 + __t345;
-            let __t347: ::routh::__private::f64 = __t150 * __t160;
-            let __t348: ::routh::__private::f64 = __t99 + __t347;
-            ::routh::__private::Vector3::new(__t344, __t346, __t348)
+            let __t191: ::routh::__private::f64 = __t140 * __t160;
+            let __t192: ::routh::__private::f64 = __t145 * __t160;
+            let __t193: ::routh::__private::f64 = __t150 * __t160;
+            let __t197: ::routh::__private::f64 = __t91 + __t191;
+            let __t198: ::routh::__private::f64 = __t95 + __t192;
+            let __t199: ::routh::__private::f64 = __t99 + __t193;
+            ::routh::__private::Vector3::new(__t197, __t198, __t199)
         }
         #[inline]
         fn dr_dgamma(
@@ -903,35 +903,34 @@ const _: () = {
             let __t155: ::routh::__private::f64 = __t153 + __t154;
             let __t158: ::routh::__private::f64 = __v6 - __t135;
             let __t160: ::routh::__private::f64 = __t158 / __t155;
-            let __t180: ::routh::__private::f64 = __v4 * __v19;
-            let __t181: ::routh::__private::f64 = __t53 + __t91;
-            let __t182: ::routh::__private::f64 = __t180 + __t181;
-            let __t183: ::routh::__private::f64 = __v5 * __v22;
-            let __t184: ::routh::__private::f64 = __t182 + __t183;
-            let __t193: ::routh::__private::f64 = __t59 + __t95;
-            let __t194: ::routh::__private::f64 = __v3 * __v17;
-            let __t195: ::routh::__private::f64 = __t193 + __t194;
-            let __t196: ::routh::__private::f64 = __v5 * __v23;
-            let __t197: ::routh::__private::f64 = __t195 + __t196;
-            let __t206: ::routh::__private::f64 = __v4 * __v21;
-            let __t207: ::routh::__private::f64 = __v3 * __v18;
-            let __t208: ::routh::__private::f64 = __t206 + __t207;
-            let __t209: ::routh::__private::f64 = __t65 + __t99;
-            let __t210: ::routh::__private::f64 = __t208 + __t209;
-            let __t337: ::routh::__private::f64 = __t160 * __t160;
-            let __t349: ::routh::__private::f64 = __t160 * __t184;
-            let __t350: ::routh::__private::f64 = __t107 + __t349;
-            let __t351: ::routh::__private::f64 = __t140 * __t337;
-            let __t353: ::routh::__private::f64 = __t350 + __t351;
-            let __t354: ::routh::__private::f64 = __t160 * __t197;
-            let __t355: ::routh::__private::f64 = __t115 + __t354;
-            let __t356: ::routh::__private::f64 = __t145 * __t337;
-            let __t358: ::routh::__private::f64 = __t355 + __t356;
-            let __t359: ::routh::__private::f64 = __t160 * __t210;
-            let __t360: ::routh::__private::f64 = __t123 + __t359;
-            let __t361: ::routh::__private::f64 = __t150 * __t337;
-            let __t363: ::routh::__private::f64 = __t360 + __t361;
-            ::routh::__private::Vector3::new(__t353, __t358, __t363)
+            let __t167: ::routh::__private::f64 = __v4 * __v19;
+            let __t168: ::routh::__private::f64 = __t53 + __t91;
+            let __t169: ::routh::__private::f64 = __t167 + __t168;
+            let __t170: ::routh::__private::f64 = __v5 * __v22;
+            let __t171: ::routh::__private::f64 = __t169 + __t170;
+            let __t172: ::routh::__private::f64 = __t59 + __t95;
+            let __t173: ::routh::__private::f64 = __v3 * __v17;
+            let __t174: ::routh::__private::f64 = __t172 + __t173;
+            let __t175: ::routh::__private::f64 = __v5 * __v23;
+            let __t176: ::routh::__private::f64 = __t174 + __t175;
+            let __t177: ::routh::__private::f64 = __v4 * __v21;
+            let __t178: ::routh::__private::f64 = __v3 * __v18;
+            let __t179: ::routh::__private::f64 = __t177 + __t178;
+            let __t180: ::routh::__private::f64 = __t65 + __t99;
+            let __t181: ::routh::__private::f64 = __t179 + __t180;
+            let __t191: ::routh::__private::f64 = __t140 * __t160;
+            let __t192: ::routh::__private::f64 = __t145 * __t160;
+            let __t193: ::routh::__private::f64 = __t150 * __t160;
+            let __t194: ::routh::__private::f64 = __t171 + __t191;
+            let __t195: ::routh::__private::f64 = __t176 + __t192;
+            let __t196: ::routh::__private::f64 = __t181 + __t193;
+            let __t200: ::routh::__private::f64 = __t160 * __t194;
+            let __t201: ::routh::__private::f64 = __t107 + __t200;
+            let __t202: ::routh::__private::f64 = __t160 * __t195;
+            let __t203: ::routh::__private::f64 = __t115 + __t202;
+            let __t204: ::routh::__private::f64 = __t160 * __t196;
+            let __t205: ::routh::__private::f64 = __t123 + __t204;
+            ::routh::__private::Vector3::new(__t201, __t203, __t205)
         }
         #[inline]
         fn dr_dp(
@@ -1028,8 +1027,8 @@ const _: () = {
             let __t155: ::routh::__private::f64 = __t153 + __t154;
             let __t158: ::routh::__private::f64 = __v6 - __t135;
             let __t160: ::routh::__private::f64 = __t158 / __t155;
-            let __t455: ::routh::__private::f64 = -__t160;
-            __t455
+            let __t311: ::routh::__private::f64 = -__t160;
+            __t311
         }
         #[inline]
         fn d2r_domega2(
@@ -1068,31 +1067,31 @@ const _: () = {
             let __t154: ::routh::__private::f64 = __t151 + __t152;
             let __t155: ::routh::__private::f64 = __t153 + __t154;
             let __t159: ::routh::__private::f64 = 1.0f64 / __t155;
-            let __t226: ::routh::__private::f64 = __t140 * __t159;
-            let __t227: ::routh::__private::f64 = __t145 * __t159;
-            let __t228: ::routh::__private::f64 = __t150 * __t159;
-            let __t232: ::routh::__private::f64 = __t140 * __t226;
-            let __t234: ::routh::__private::f64 = __v7 - __t232;
-            let __t235: ::routh::__private::f64 = __t145 * __t226;
-            let __t237: ::routh::__private::f64 = __v8 - __t235;
-            let __t238: ::routh::__private::f64 = __t150 * __t226;
-            let __t240: ::routh::__private::f64 = __v9 - __t238;
-            let __t256: ::routh::__private::f64 = __t145 * __t227;
-            let __t258: ::routh::__private::f64 = __v10 - __t256;
-            let __t259: ::routh::__private::f64 = __t150 * __t227;
-            let __t261: ::routh::__private::f64 = __v11 - __t259;
-            let __t276: ::routh::__private::f64 = __t150 * __t228;
-            let __t278: ::routh::__private::f64 = __v12 - __t276;
+            let __t209: ::routh::__private::f64 = __t140 * __t159;
+            let __t210: ::routh::__private::f64 = __t145 * __t159;
+            let __t211: ::routh::__private::f64 = __t150 * __t159;
+            let __t215: ::routh::__private::f64 = __t140 * __t209;
+            let __t217: ::routh::__private::f64 = __v7 - __t215;
+            let __t218: ::routh::__private::f64 = __t145 * __t209;
+            let __t220: ::routh::__private::f64 = __v8 - __t218;
+            let __t221: ::routh::__private::f64 = __t150 * __t209;
+            let __t223: ::routh::__private::f64 = __v9 - __t221;
+            let __t239: ::routh::__private::f64 = __t145 * __t210;
+            let __t241: ::routh::__private::f64 = __v10 - __t239;
+            let __t242: ::routh::__private::f64 = __t150 * __t210;
+            let __t244: ::routh::__private::f64 = __v11 - __t242;
+            let __t259: ::routh::__private::f64 = __t150 * __t211;
+            let __t261: ::routh::__private::f64 = __v12 - __t259;
             ::routh::__private::Matrix3::new(
-                __t234,
-                __t237,
-                __t240,
-                __t237,
-                __t258,
+                __t217,
+                __t220,
+                __t223,
+                __t220,
+                __t241,
+                __t244,
+                __t223,
+                __t244,
                 __t261,
-                __t240,
-                __t261,
-                __t278,
             )
         }
         #[inline]
@@ -1191,76 +1190,76 @@ const _: () = {
             let __t158: ::routh::__private::f64 = __v6 - __t135;
             let __t159: ::routh::__private::f64 = 1.0f64 / __t155;
             let __t160: ::routh::__private::f64 = __t158 * __t159;
-            let __t180: ::routh::__private::f64 = __v4 * __v19;
-            let __t181: ::routh::__private::f64 = __t53 + __t91;
-            let __t182: ::routh::__private::f64 = __t180 + __t181;
-            let __t183: ::routh::__private::f64 = __v5 * __v22;
-            let __t184: ::routh::__private::f64 = __t182 + __t183;
-            let __t193: ::routh::__private::f64 = __t59 + __t95;
-            let __t194: ::routh::__private::f64 = __v3 * __v17;
-            let __t195: ::routh::__private::f64 = __t193 + __t194;
-            let __t196: ::routh::__private::f64 = __v5 * __v23;
-            let __t197: ::routh::__private::f64 = __t195 + __t196;
-            let __t206: ::routh::__private::f64 = __v4 * __v21;
-            let __t207: ::routh::__private::f64 = __v3 * __v18;
-            let __t208: ::routh::__private::f64 = __t206 + __t207;
-            let __t209: ::routh::__private::f64 = __t65 + __t99;
-            let __t210: ::routh::__private::f64 = __t208 + __t209;
-            let __t226: ::routh::__private::f64 = __t140 * __t159;
-            let __t227: ::routh::__private::f64 = __t145 * __t159;
-            let __t228: ::routh::__private::f64 = __t150 * __t159;
-            let __t343: ::routh::__private::f64 = __t140 * __t160;
-            let __t345: ::routh::__private::f64 = __t145 * __t160;
-            let __t347: ::routh::__private::f64 = __t150 * __t160;
-            let __t365: ::routh::__private::f64 = 2f64 * __t343;
-            let __t366: ::routh::__private::f64 = __t184 + __t365;
-            let __t367: ::routh::__private::f64 = 2f64 * __t345;
-            let __t368: ::routh::__private::f64 = __t197 + __t367;
-            let __t369: ::routh::__private::f64 = 2f64 * __t347;
-            let __t370: ::routh::__private::f64 = __t210 + __t369;
-            let __t374: ::routh::__private::f64 = __v7 * __t160;
-            let __t375: ::routh::__private::f64 = __v16 + __t374;
-            let __t376: ::routh::__private::f64 = __t226 * __t366;
-            let __t378: ::routh::__private::f64 = __t375 - __t376;
-            let __t379: ::routh::__private::f64 = __v8 * __t160;
-            let __t380: ::routh::__private::f64 = __v17 + __t379;
-            let __t381: ::routh::__private::f64 = __t226 * __t368;
-            let __t383: ::routh::__private::f64 = __t380 - __t381;
-            let __t384: ::routh::__private::f64 = __v9 * __t160;
-            let __t385: ::routh::__private::f64 = __v18 + __t384;
-            let __t386: ::routh::__private::f64 = __t226 * __t370;
-            let __t388: ::routh::__private::f64 = __t385 - __t386;
-            let __t389: ::routh::__private::f64 = __v19 + __t379;
-            let __t390: ::routh::__private::f64 = __t227 * __t366;
-            let __t392: ::routh::__private::f64 = __t389 - __t390;
-            let __t393: ::routh::__private::f64 = __v10 * __t160;
-            let __t394: ::routh::__private::f64 = __v20 + __t393;
-            let __t395: ::routh::__private::f64 = __t227 * __t368;
-            let __t397: ::routh::__private::f64 = __t394 - __t395;
-            let __t398: ::routh::__private::f64 = __v11 * __t160;
-            let __t399: ::routh::__private::f64 = __v21 + __t398;
-            let __t400: ::routh::__private::f64 = __t227 * __t370;
-            let __t402: ::routh::__private::f64 = __t399 - __t400;
-            let __t403: ::routh::__private::f64 = __v22 + __t384;
-            let __t404: ::routh::__private::f64 = __t228 * __t366;
-            let __t406: ::routh::__private::f64 = __t403 - __t404;
-            let __t407: ::routh::__private::f64 = __v23 + __t398;
-            let __t408: ::routh::__private::f64 = __t228 * __t368;
-            let __t410: ::routh::__private::f64 = __t407 - __t408;
-            let __t411: ::routh::__private::f64 = __v12 * __t160;
-            let __t412: ::routh::__private::f64 = __v24 + __t411;
-            let __t413: ::routh::__private::f64 = __t228 * __t370;
-            let __t415: ::routh::__private::f64 = __t412 - __t413;
+            let __t167: ::routh::__private::f64 = __v4 * __v19;
+            let __t168: ::routh::__private::f64 = __t53 + __t91;
+            let __t169: ::routh::__private::f64 = __t167 + __t168;
+            let __t170: ::routh::__private::f64 = __v5 * __v22;
+            let __t171: ::routh::__private::f64 = __t169 + __t170;
+            let __t172: ::routh::__private::f64 = __t59 + __t95;
+            let __t173: ::routh::__private::f64 = __v3 * __v17;
+            let __t174: ::routh::__private::f64 = __t172 + __t173;
+            let __t175: ::routh::__private::f64 = __v5 * __v23;
+            let __t176: ::routh::__private::f64 = __t174 + __t175;
+            let __t177: ::routh::__private::f64 = __v4 * __v21;
+            let __t178: ::routh::__private::f64 = __v3 * __v18;
+            let __t179: ::routh::__private::f64 = __t177 + __t178;
+            let __t180: ::routh::__private::f64 = __t65 + __t99;
+            let __t181: ::routh::__private::f64 = __t179 + __t180;
+            let __t191: ::routh::__private::f64 = __t140 * __t160;
+            let __t192: ::routh::__private::f64 = __t145 * __t160;
+            let __t193: ::routh::__private::f64 = __t150 * __t160;
+            let __t194: ::routh::__private::f64 = __t171 + __t191;
+            let __t195: ::routh::__private::f64 = __t176 + __t192;
+            let __t196: ::routh::__private::f64 = __t181 + __t193;
+            let __t206: ::routh::__private::f64 = __t191 + __t194;
+            let __t207: ::routh::__private::f64 = __t192 + __t195;
+            let __t208: ::routh::__private::f64 = __t193 + __t196;
+            let __t209: ::routh::__private::f64 = __t140 * __t159;
+            let __t210: ::routh::__private::f64 = __t145 * __t159;
+            let __t211: ::routh::__private::f64 = __t150 * __t159;
+            let __t224: ::routh::__private::f64 = __v7 * __t160;
+            let __t225: ::routh::__private::f64 = __v16 + __t224;
+            let __t226: ::routh::__private::f64 = __t206 * __t209;
+            let __t228: ::routh::__private::f64 = __t225 - __t226;
+            let __t229: ::routh::__private::f64 = __v8 * __t160;
+            let __t230: ::routh::__private::f64 = __v17 + __t229;
+            let __t231: ::routh::__private::f64 = __t207 * __t209;
+            let __t233: ::routh::__private::f64 = __t230 - __t231;
+            let __t234: ::routh::__private::f64 = __v9 * __t160;
+            let __t235: ::routh::__private::f64 = __v18 + __t234;
+            let __t236: ::routh::__private::f64 = __t208 * __t209;
+            let __t238: ::routh::__private::f64 = __t235 - __t236;
+            let __t245: ::routh::__private::f64 = __v19 + __t229;
+            let __t246: ::routh::__private::f64 = __t206 * __t210;
+            let __t248: ::routh::__private::f64 = __t245 - __t246;
+            let __t249: ::routh::__private::f64 = __v10 * __t160;
+            let __t250: ::routh::__private::f64 = __v20 + __t249;
+            let __t251: ::routh::__private::f64 = __t207 * __t210;
+            let __t253: ::routh::__private::f64 = __t250 - __t251;
+            let __t254: ::routh::__private::f64 = __v11 * __t160;
+            let __t255: ::routh::__private::f64 = __v21 + __t254;
+            let __t256: ::routh::__private::f64 = __t208 * __t210;
+            let __t258: ::routh::__private::f64 = __t255 - __t256;
+            let __t262: ::routh::__private::f64 = __v22 + __t234;
+            let __t263: ::routh::__private::f64 = __t206 * __t211;
+            let __t265: ::routh::__private::f64 = __t262 - __t263;
+            let __t266: ::routh::__private::f64 = __v23 + __t254;
+            let __t267: ::routh::__private::f64 = __t207 * __t211;
+            let __t269: ::routh::__private::f64 = __t266 - __t267;
+            let __t270: ::routh::__private::f64 = __v12 * __t160;
+            let __t271: ::routh::__private::f64 = __v24 + __t270;
+            let __t272: ::routh::__private::f64 = __t208 * __t211;
+            let __t274: ::routh::__private::f64 = __t271 - __t272;
             ::routh::__private::Matrix3::new(
-                __t378,
-                __t383,
-                __t388,
-                __t392,
-                __t397,
-                __t402,
-                __t406,
-                __t410,
-                __t415,
+                __t228,
+                __t233,
+                __t238,
+                __t248,
+                __t253,
+                __t258,
+                __t265,
+                __t269,
+                __t274,
             )
         }
         #[inline]
@@ -1359,80 +1358,79 @@ const _: () = {
             let __t158: ::routh::__private::f64 = __v6 - __t135;
             let __t159: ::routh::__private::f64 = 1.0f64 / __t155;
             let __t160: ::routh::__private::f64 = __t158 * __t159;
-            let __t180: ::routh::__private::f64 = __v4 * __v19;
-            let __t181: ::routh::__private::f64 = __t53 + __t91;
-            let __t182: ::routh::__private::f64 = __t180 + __t181;
-            let __t183: ::routh::__private::f64 = __v5 * __v22;
-            let __t184: ::routh::__private::f64 = __t182 + __t183;
-            let __t193: ::routh::__private::f64 = __t59 + __t95;
-            let __t194: ::routh::__private::f64 = __v3 * __v17;
-            let __t195: ::routh::__private::f64 = __t193 + __t194;
-            let __t196: ::routh::__private::f64 = __v5 * __v23;
-            let __t197: ::routh::__private::f64 = __t195 + __t196;
-            let __t206: ::routh::__private::f64 = __v4 * __v21;
-            let __t207: ::routh::__private::f64 = __v3 * __v18;
-            let __t208: ::routh::__private::f64 = __t206 + __t207;
-            let __t209: ::routh::__private::f64 = __t65 + __t99;
-            let __t210: ::routh::__private::f64 = __t208 + __t209;
-            let __t301: ::routh::__private::f64 = __v17 + __v19;
-            let __t308: ::routh::__private::f64 = __v18 + __v22;
-            let __t323: ::routh::__private::f64 = __v21 + __v23;
-            let __t337: ::routh::__private::f64 = __t160 * __t160;
-            let __t343: ::routh::__private::f64 = __t140 * __t160;
-            let __t345: ::routh::__private::f64 = __t145 * __t160;
-            let __t347: ::routh::__private::f64 = __t150 * __t160;
-            let __t365: ::routh::__private::f64 = 2f64 * __t343;
-            let __t366: ::routh::__private::f64 = __t184 + __t365;
-            let __t367: ::routh::__private::f64 = 2f64 * __t345;
-            let __t368: ::routh::__private::f64 = __t197 + __t367;
-            let __t369: ::routh::__private::f64 = 2f64 * __t347;
-            let __t370: ::routh::__private::f64 = __t210 + __t369;
-            let __t371: ::routh::__private::f64 = __t159 * __t366;
-            let __t372: ::routh::__private::f64 = __t159 * __t368;
-            let __t373: ::routh::__private::f64 = __t159 * __t370;
-            let __t416: ::routh::__private::f64 = __v7 * __t337;
-            let __t417: ::routh::__private::f64 = __v16 * __t160;
-            let __t418: ::routh::__private::f64 = 2f64 * __t417;
-            let __t419: ::routh::__private::f64 = __t416 + __t418;
-            let __t420: ::routh::__private::f64 = __t366 * __t371;
-            let __t422: ::routh::__private::f64 = __t419 - __t420;
-            let __t423: ::routh::__private::f64 = __v8 * __t337;
-            let __t424: ::routh::__private::f64 = __t160 * __t301;
-            let __t425: ::routh::__private::f64 = __t423 + __t424;
-            let __t426: ::routh::__private::f64 = __t368 * __t371;
-            let __t428: ::routh::__private::f64 = __t425 - __t426;
-            let __t429: ::routh::__private::f64 = __v9 * __t337;
-            let __t430: ::routh::__private::f64 = __t160 * __t308;
-            let __t431: ::routh::__private::f64 = __t429 + __t430;
-            let __t432: ::routh::__private::f64 = __t370 * __t371;
-            let __t434: ::routh::__private::f64 = __t431 - __t432;
-            let __t435: ::routh::__private::f64 = __v10 * __t337;
-            let __t436: ::routh::__private::f64 = __v20 * __t160;
-            let __t437: ::routh::__private::f64 = 2f64 * __t436;
-            let __t438: ::routh::__private::f64 = __t435 + __t437;
-            let __t439: ::routh::__private::f64 = __t368 * __t372;
-            let __t441: ::routh::__private::f64 = __t438 - __t439;
-            let __t442: ::routh::__private::f64 = __v11 * __t337;
-            let __t443: ::routh::__private::f64 = __t160 * __t323;
-            let __t444: ::routh::__private::f64 = __t442 + __t443;
-            let __t445: ::routh::__private::f64 = __t370 * __t372;
-            let __t447: ::routh::__private::f64 = __t444 - __t445;
-            let __t448: ::routh::__private::f64 = __v12 * __t337;
-            let __t449: ::routh::__private::f64 = __v24 * __t160;
-            let __t450: ::routh::__private::f64 = 2f64 * __t449;
-            let __t451: ::routh::__private::f64 = __t448 + __t450;
-            let __t452: ::routh::__private::f64 = __t370 * __t373;
-            let __t454: ::routh::__private::f64 = __t451 - __t452;
+            let __t167: ::routh::__private::f64 = __v4 * __v19;
+            let __t168: ::routh::__private::f64 = __t53 + __t91;
+            let __t169: ::routh::__private::f64 = __t167 + __t168;
+            let __t170: ::routh::__private::f64 = __v5 * __v22;
+            let __t171: ::routh::__private::f64 = __t169 + __t170;
+            let __t172: ::routh::__private::f64 = __t59 + __t95;
+            let __t173: ::routh::__private::f64 = __v3 * __v17;
+            let __t174: ::routh::__private::f64 = __t172 + __t173;
+            let __t175: ::routh::__private::f64 = __v5 * __v23;
+            let __t176: ::routh::__private::f64 = __t174 + __t175;
+            let __t177: ::routh::__private::f64 = __v4 * __v21;
+            let __t178: ::routh::__private::f64 = __v3 * __v18;
+            let __t179: ::routh::__private::f64 = __t177 + __t178;
+            let __t180: ::routh::__private::f64 = __t65 + __t99;
+            let __t181: ::routh::__private::f64 = __t179 + __t180;
+            let __t191: ::routh::__private::f64 = __t140 * __t160;
+            let __t192: ::routh::__private::f64 = __t145 * __t160;
+            let __t193: ::routh::__private::f64 = __t150 * __t160;
+            let __t194: ::routh::__private::f64 = __t171 + __t191;
+            let __t195: ::routh::__private::f64 = __t176 + __t192;
+            let __t196: ::routh::__private::f64 = __t181 + __t193;
+            let __t206: ::routh::__private::f64 = __t191 + __t194;
+            let __t207: ::routh::__private::f64 = __t192 + __t195;
+            let __t208: ::routh::__private::f64 = __t193 + __t196;
+            let __t212: ::routh::__private::f64 = __t159 * __t206;
+            let __t213: ::routh::__private::f64 = __t159 * __t207;
+            let __t214: ::routh::__private::f64 = __t159 * __t208;
+            let __t224: ::routh::__private::f64 = __v7 * __t160;
+            let __t225: ::routh::__private::f64 = __v16 + __t224;
+            let __t229: ::routh::__private::f64 = __v8 * __t160;
+            let __t230: ::routh::__private::f64 = __v17 + __t229;
+            let __t234: ::routh::__private::f64 = __v9 * __t160;
+            let __t235: ::routh::__private::f64 = __v18 + __t234;
+            let __t249: ::routh::__private::f64 = __v10 * __t160;
+            let __t250: ::routh::__private::f64 = __v20 + __t249;
+            let __t254: ::routh::__private::f64 = __v11 * __t160;
+            let __t255: ::routh::__private::f64 = __v21 + __t254;
+            let __t270: ::routh::__private::f64 = __v12 * __t160;
+            let __t271: ::routh::__private::f64 = __v24 + __t270;
+            let __t276: ::routh::__private::f64 = __v16 + __t225;
+            let __t277: ::routh::__private::f64 = __t160 * __t276;
+            let __t278: ::routh::__private::f64 = __t206 * __t212;
+            let __t280: ::routh::__private::f64 = __t277 - __t278;
+            let __t282: ::routh::__private::f64 = __v19 + __t230;
+            let __t283: ::routh::__private::f64 = __t160 * __t282;
+            let __t284: ::routh::__private::f64 = __t207 * __t212;
+            let __t286: ::routh::__private::f64 = __t283 - __t284;
+            let __t288: ::routh::__private::f64 = __v22 + __t235;
+            let __t289: ::routh::__private::f64 = __t160 * __t288;
+            let __t290: ::routh::__private::f64 = __t208 * __t212;
+            let __t292: ::routh::__private::f64 = __t289 - __t290;
+            let __t294: ::routh::__private::f64 = __v20 + __t250;
+            let __t295: ::routh::__private::f64 = __t160 * __t294;
+            let __t296: ::routh::__private::f64 = __t207 * __t213;
+            let __t298: ::routh::__private::f64 = __t295 - __t296;
+            let __t300: ::routh::__private::f64 = __v23 + __t255;
+            let __t301: ::routh::__private::f64 = __t160 * __t300;
+            let __t302: ::routh::__private::f64 = __t208 * __t213;
+            let __t304: ::routh::__private::f64 = __t301 - __t302;
+            let __t306: ::routh::__private::f64 = __v24 + __t271;
+            let __t307: ::routh::__private::f64 = __t160 * __t306;
+            let __t308: ::routh::__private::f64 = __t208 * __t214;
+            let __t310: ::routh::__private::f64 = __t307 - __t308;
             ::routh::__private::Matrix3::new(
-                __t422,
-                __t428,
-                __t434,
-                __t428,
-                __t441,
-                __t447,
-                __t434,
-                __t447,
-                __t454,
+                __t280,
+                __t286,
+                __t292,
+                __t286,
+                __t298,
+                __t304,
+                __t292,
+                __t304,
+                __t310,
             )
         }
         #[inline]
@@ -1513,18 +1511,18 @@ const _: () = {
             let __t153: ::routh::__private::f64 = __v5 * __t150;
             let __t154: ::routh::__private::f64 = __t151 + __t152;
             let __t155: ::routh::__private::f64 = __t153 + __t154;
-            let __t456: ::routh::__private::f64 = __v3 * __t68;
-            let __t457: ::routh::__private::f64 = __v4 * __t69;
-            let __t458: ::routh::__private::f64 = __v5 * __t70;
-            let __t459: ::routh::__private::f64 = __t456 + __t457;
-            let __t460: ::routh::__private::f64 = __t458 + __t459;
-            let __t462: ::routh::__private::f64 = __v6 - __t460;
-            let __t463: ::routh::__private::f64 = __t462 / __t155;
-            let __t465: ::routh::__private::f64 = __t462 * __t463;
-            let __t467: ::routh::__private::f64 = (-0.5f64) * __t465;
-            let __t468: ::routh::__private::f64 = __t467 - __t82;
-            let __t661: ::routh::__private::f64 = -__t468;
-            __t661
+            let __t312: ::routh::__private::f64 = __v3 * __t68;
+            let __t313: ::routh::__private::f64 = __v4 * __t69;
+            let __t314: ::routh::__private::f64 = __v5 * __t70;
+            let __t315: ::routh::__private::f64 = __t312 + __t313;
+            let __t316: ::routh::__private::f64 = __t314 + __t315;
+            let __t318: ::routh::__private::f64 = __v6 - __t316;
+            let __t319: ::routh::__private::f64 = __t318 / __t155;
+            let __t321: ::routh::__private::f64 = __t318 * __t319;
+            let __t323: ::routh::__private::f64 = (-0.5f64) * __t321;
+            let __t324: ::routh::__private::f64 = __t323 - __t82;
+            let __t429: ::routh::__private::f64 = -__t324;
+            __t429
         }
         #[inline]
         fn bundle(
@@ -1671,172 +1669,153 @@ const _: () = {
             let __t162: ::routh::__private::f64 = __t158 * __t160;
             let __t165: ::routh::__private::f64 = (-0.5f64) * __t162;
             let __t166: ::routh::__private::f64 = __t85 + __t165;
-            let __t180: ::routh::__private::f64 = __v4 * __v19;
-            let __t181: ::routh::__private::f64 = __t53 + __t91;
-            let __t182: ::routh::__private::f64 = __t180 + __t181;
-            let __t183: ::routh::__private::f64 = __v5 * __v22;
-            let __t184: ::routh::__private::f64 = __t182 + __t183;
-            let __t193: ::routh::__private::f64 = __t59 + __t95;
-            let __t194: ::routh::__private::f64 = __v3 * __v17;
-            let __t195: ::routh::__private::f64 = __t193 + __t194;
-            let __t196: ::routh::__private::f64 = __v5 * __v23;
-            let __t197: ::routh::__private::f64 = __t195 + __t196;
-            let __t206: ::routh::__private::f64 = __v4 * __v21;
-            let __t207: ::routh::__private::f64 = __v3 * __v18;
-            let __t208: ::routh::__private::f64 = __t206 + __t207;
-            let __t209: ::routh::__private::f64 = __t65 + __t99;
-            let __t210: ::routh::__private::f64 = __t208 + __t209;
-            let __t226: ::routh::__private::f64 = __t140 * __t159;
-            let __t227: ::routh::__private::f64 = __t145 * __t159;
-            let __t228: ::routh::__private::f64 = __t150 * __t159;
-            let __t232: ::routh::__private::f64 = __t140 * __t226;
-            let __t234: ::routh::__private::f64 = __v7 - __t232;
-            let __t235: ::routh::__private::f64 = __t145 * __t226;
-            let __t237: ::routh::__private::f64 = __v8 - __t235;
-            let __t238: ::routh::__private::f64 = __t150 * __t226;
-            let __t240: ::routh::__private::f64 = __v9 - __t238;
-            let __t256: ::routh::__private::f64 = __t145 * __t227;
-            let __t258: ::routh::__private::f64 = __v10 - __t256;
-            let __t259: ::routh::__private::f64 = __t150 * __t227;
-            let __t261: ::routh::__private::f64 = __v11 - __t259;
-            let __t276: ::routh::__private::f64 = __t150 * __t228;
-            let __t278: ::routh::__private::f64 = __v12 - __t276;
-            let __t301: ::routh::__private::f64 = __v17 + __v19;
-            let __t308: ::routh::__private::f64 = __v18 + __v22;
-            let __t323: ::routh::__private::f64 = __v21 + __v23;
-            let __t337: ::routh::__private::f64 = __t160 * __t160;
-            let __t343: ::routh::__private::f64 = __t140 * __t160;
-            let __t344: ::routh::__private::f64 = __t91 + __t343;
-            let __t345: ::routh::__private::f64 = __t145 * __t160;
-            let __t346: ::routh::__private::f64 = __t95 + __t345;
-            let __t347: ::routh::__private::f64 = __t150 * __t160;
-            let __t348: ::routh::__private::f64 = __t99 + __t347;
-            let __t349: ::routh::__private::f64 = __t160 * __t184;
-            let __t350: ::routh::__private::f64 = __t107 + __t349;
-            let __t351: ::routh::__private::f64 = __t140 * __t337;
-            let __t353: ::routh::__private::f64 = __t350 + __t351;
-            let __t354: ::routh::__private::f64 = __t160 * __t197;
-            let __t355: ::routh::__private::f64 = __t115 + __t354;
-            let __t356: ::routh::__private::f64 = __t145 * __t337;
-            let __t358: ::routh::__private::f64 = __t355 + __t356;
-            let __t359: ::routh::__private::f64 = __t160 * __t210;
-            let __t360: ::routh::__private::f64 = __t123 + __t359;
-            let __t361: ::routh::__private::f64 = __t150 * __t337;
-            let __t363: ::routh::__private::f64 = __t360 + __t361;
-            let __t365: ::routh::__private::f64 = 2f64 * __t343;
-            let __t366: ::routh::__private::f64 = __t184 + __t365;
-            let __t367: ::routh::__private::f64 = 2f64 * __t345;
-            let __t368: ::routh::__private::f64 = __t197 + __t367;
-            let __t369: ::routh::__private::f64 = 2f64 * __t347;
-            let __t370: ::routh::__private::f64 = __t210 + __t369;
-            let __t371: ::routh::__private::f64 = __t159 * __t366;
-            let __t372: ::routh::__private::f64 = __t159 * __t368;
-            let __t373: ::routh::__private::f64 = __t159 * __t370;
-            let __t374: ::routh::__private::f64 = __v7 * __t160;
-            let __t375: ::routh::__private::f64 = __v16 + __t374;
-            let __t376: ::routh::__private::f64 = __t226 * __t366;
-            let __t378: ::routh::__private::f64 = __t375 - __t376;
-            let __t379: ::routh::__private::f64 = __v8 * __t160;
-            let __t380: ::routh::__private::f64 = __v17 + __t379;
-            let __t381: ::routh::__private::f64 = __t226 * __t368;
-            let __t383: ::routh::__private::f64 = __t380 - __t381;
-            let __t384: ::routh::__private::f64 = __v9 * __t160;
-            let __t385: ::routh::__private::f64 = __v18 + __t384;
-            let __t386: ::routh::__private::f64 = __t226 * __t370;
-            let __t388: ::routh::__private::f64 = __t385 - __t386;
-            let __t389: ::routh::__private::f64 = __v19 + __t379;
-            let __t390: ::routh::__private::f64 = __t227 * __t366;
-            let __t392: ::routh::__private::f64 = __t389 - __t390;
-            let __t393: ::routh::__private::f64 = __v10 * __t160;
-            let __t394: ::routh::__private::f64 = __v20 + __t393;
-            let __t395: ::routh::__private::f64 = __t227 * __t368;
-            let __t397: ::routh::__private::f64 = __t394 - __t395;
-            let __t398: ::routh::__private::f64 = __v11 * __t160;
-            let __t399: ::routh::__private::f64 = __v21 + __t398;
-            let __t400: ::routh::__private::f64 = __t227 * __t370;
-            let __t402: ::routh::__private::f64 = __t399 - __t400;
-            let __t403: ::routh::__private::f64 = __v22 + __t384;
-            let __t404: ::routh::__private::f64 = __t228 * __t366;
-            let __t406: ::routh::__private::f64 = __t403 - __t404;
-            let __t407: ::routh::__private::f64 = __v23 + __t398;
-            let __t408: ::routh::__private::f64 = __t228 * __t368;
-            let __t410: ::routh::__private::f64 = __t407 - __t408;
-            let __t411: ::routh::__private::f64 = __v12 * __t160;
-            let __t412: ::routh::__private::f64 = __v24 + __t411;
-            let __t413: ::routh::__private::f64 = __t228 * __t370;
-            let __t415: ::routh::__private::f64 = __t412 - __t413;
-            let __t416: ::routh::__private::f64 = __v7 * __t337;
-            let __t417: ::routh::__private::f64 = __v16 * __t160;
-            let __t418: ::routh::__private::f64 = 2f64 * __t417;
-            let __t419: ::routh::__private::f64 = __t416 + __t418;
-            let __t420: ::routh::__private::f64 = __t366 * __t371;
-            let __t422: ::routh::__private::f64 = __t419 - __t420;
-            let __t423: ::routh::__private::f64 = __v8 * __t337;
-            let __t424: ::routh::__private::f64 = __t160 * __t301;
-            let __t425: ::routh::__private::f64 = __t423 + __t424;
-            let __t426: ::routh::__private::f64 = __t368 * __t371;
-            let __t428: ::routh::__private::f64 = __t425 - __t426;
-            let __t429: ::routh::__private::f64 = __v9 * __t337;
-            let __t430: ::routh::__private::f64 = __t160 * __t308;
-            let __t431: ::routh::__private::f64 = __t429 + __t430;
-            let __t432: ::routh::__private::f64 = __t370 * __t371;
-            let __t434: ::routh::__private::f64 = __t431 - __t432;
-            let __t435: ::routh::__private::f64 = __v10 * __t337;
-            let __t436: ::routh::__private::f64 = __v20 * __t160;
-            let __t437: ::routh::__private::f64 = 2f64 * __t436;
-            let __t438: ::routh::__private::f64 = __t435 + __t437;
-            let __t439: ::routh::__private::f64 = __t368 * __t372;
-            let __t441: ::routh::__private::f64 = __t438 - __t439;
-            let __t442: ::routh::__private::f64 = __v11 * __t337;
-            let __t443: ::routh::__private::f64 = __t160 * __t323;
-            let __t444: ::routh::__private::f64 = __t442 + __t443;
-            let __t445: ::routh::__private::f64 = __t370 * __t372;
-            let __t447: ::routh::__private::f64 = __t444 - __t445;
-            let __t448: ::routh::__private::f64 = __v12 * __t337;
-            let __t449: ::routh::__private::f64 = __v24 * __t160;
-            let __t450: ::routh::__private::f64 = 2f64 * __t449;
-            let __t451: ::routh::__private::f64 = __t448 + __t450;
-            let __t452: ::routh::__private::f64 = __t370 * __t373;
-            let __t454: ::routh::__private::f64 = __t451 - __t452;
-            let __t455: ::routh::__private::f64 = -__t160;
+            let __t167: ::routh::__private::f64 = __v4 * __v19;
+            let __t168: ::routh::__private::f64 = __t53 + __t91;
+            let __t169: ::routh::__private::f64 = __t167 + __t168;
+            let __t170: ::routh::__private::f64 = __v5 * __v22;
+            let __t171: ::routh::__private::f64 = __t169 + __t170;
+            let __t172: ::routh::__private::f64 = __t59 + __t95;
+            let __t173: ::routh::__private::f64 = __v3 * __v17;
+            let __t174: ::routh::__private::f64 = __t172 + __t173;
+            let __t175: ::routh::__private::f64 = __v5 * __v23;
+            let __t176: ::routh::__private::f64 = __t174 + __t175;
+            let __t177: ::routh::__private::f64 = __v4 * __v21;
+            let __t178: ::routh::__private::f64 = __v3 * __v18;
+            let __t179: ::routh::__private::f64 = __t177 + __t178;
+            let __t180: ::routh::__private::f64 = __t65 + __t99;
+            let __t181: ::routh::__private::f64 = __t179 + __t180;
+            let __t191: ::routh::__private::f64 = __t140 * __t160;
+            let __t192: ::routh::__private::f64 = __t145 * __t160;
+            let __t193: ::routh::__private::f64 = __t150 * __t160;
+            let __t194: ::routh::__private::f64 = __t171 + __t191;
+            let __t195: ::routh::__private::f64 = __t176 + __t192;
+            let __t196: ::routh::__private::f64 = __t181 + __t193;
+            let __t197: ::routh::__private::f64 = __t91 + __t191;
+            let __t198: ::routh::__private::f64 = __t95 + __t192;
+            let __t199: ::routh::__private::f64 = __t99 + __t193;
+            let __t200: ::routh::__private::f64 = __t160 * __t194;
+            let __t201: ::routh::__private::f64 = __t107 + __t200;
+            let __t202: ::routh::__private::f64 = __t160 * __t195;
+            let __t203: ::routh::__private::f64 = __t115 + __t202;
+            let __t204: ::routh::__private::f64 = __t160 * __t196;
+            let __t205: ::routh::__private::f64 = __t123 + __t204;
+            let __t206: ::routh::__private::f64 = __t191 + __t194;
+            let __t207: ::routh::__private::f64 = __t192 + __t195;
+            let __t208: ::routh::__private::f64 = __t193 + __t196;
+            let __t209: ::routh::__private::f64 = __t140 * __t159;
+            let __t210: ::routh::__private::f64 = __t145 * __t159;
+            let __t211: ::routh::__private::f64 = __t150 * __t159;
+            let __t212: ::routh::__private::f64 = __t159 * __t206;
+            let __t213: ::routh::__private::f64 = __t159 * __t207;
+            let __t214: ::routh::__private::f64 = __t159 * __t208;
+            let __t215: ::routh::__private::f64 = __t140 * __t209;
+            let __t217: ::routh::__private::f64 = __v7 - __t215;
+            let __t218: ::routh::__private::f64 = __t145 * __t209;
+            let __t220: ::routh::__private::f64 = __v8 - __t218;
+            let __t221: ::routh::__private::f64 = __t150 * __t209;
+            let __t223: ::routh::__private::f64 = __v9 - __t221;
+            let __t224: ::routh::__private::f64 = __v7 * __t160;
+            let __t225: ::routh::__private::f64 = __v16 + __t224;
+            let __t226: ::routh::__private::f64 = __t206 * __t209;
+            let __t228: ::routh::__private::f64 = __t225 - __t226;
+            let __t229: ::routh::__private::f64 = __v8 * __t160;
+            let __t230: ::routh::__private::f64 = __v17 + __t229;
+            let __t231: ::routh::__private::f64 = __t207 * __t209;
+            let __t233: ::routh::__private::f64 = __t230 - __t231;
+            let __t234: ::routh::__private::f64 = __v9 * __t160;
+            let __t235: ::routh::__private::f64 = __v18 + __t234;
+            let __t236: ::routh::__private::f64 = __t208 * __t209;
+            let __t238: ::routh::__private::f64 = __t235 - __t236;
+            let __t239: ::routh::__private::f64 = __t145 * __t210;
+            let __t241: ::routh::__private::f64 = __v10 - __t239;
+            let __t242: ::routh::__private::f64 = __t150 * __t210;
+            let __t244: ::routh::__private::f64 = __v11 - __t242;
+            let __t245: ::routh::__private::f64 = __v19 + __t229;
+            let __t246: ::routh::__private::f64 = __t206 * __t210;
+            let __t248: ::routh::__private::f64 = __t245 - __t246;
+            let __t249: ::routh::__private::f64 = __v10 * __t160;
+            let __t250: ::routh::__private::f64 = __v20 + __t249;
+            let __t251: ::routh::__private::f64 = __t207 * __t210;
+            let __t253: ::routh::__private::f64 = __t250 - __t251;
+            let __t254: ::routh::__private::f64 = __v11 * __t160;
+            let __t255: ::routh::__private::f64 = __v21 + __t254;
+            let __t256: ::routh::__private::f64 = __t208 * __t210;
+            let __t258: ::routh::__private::f64 = __t255 - __t256;
+            let __t259: ::routh::__private::f64 = __t150 * __t211;
+            let __t261: ::routh::__private::f64 = __v12 - __t259;
+            let __t262: ::routh::__private::f64 = __v22 + __t234;
+            let __t263: ::routh::__private::f64 = __t206 * __t211;
+            let __t265: ::routh::__private::f64 = __t262 - __t263;
+            let __t266: ::routh::__private::f64 = __v23 + __t254;
+            let __t267: ::routh::__private::f64 = __t207 * __t211;
+            let __t269: ::routh::__private::f64 = __t266 - __t267;
+            let __t270: ::routh::__private::f64 = __v12 * __t160;
+            let __t271: ::routh::__private::f64 = __v24 + __t270;
+            let __t272: ::routh::__private::f64 = __t208 * __t211;
+            let __t274: ::routh::__private::f64 = __t271 - __t272;
+            let __t276: ::routh::__private::f64 = __v16 + __t225;
+            let __t277: ::routh::__private::f64 = __t160 * __t276;
+            let __t278: ::routh::__private::f64 = __t206 * __t212;
+            let __t280: ::routh::__private::f64 = __t277 - __t278;
+            let __t282: ::routh::__private::f64 = __v19 + __t230;
+            let __t283: ::routh::__private::f64 = __t160 * __t282;
+            let __t284: ::routh::__private::f64 = __t207 * __t212;
+            let __t286: ::routh::__private::f64 = __t283 - __t284;
+            let __t288: ::routh::__private::f64 = __v22 + __t235;
+            let __t289: ::routh::__private::f64 = __t160 * __t288;
+            let __t290: ::routh::__private::f64 = __t208 * __t212;
+            let __t292: ::routh::__private::f64 = __t289 - __t290;
+            let __t294: ::routh::__private::f64 = __v20 + __t250;
+            let __t295: ::routh::__private::f64 = __t160 * __t294;
+            let __t296: ::routh::__private::f64 = __t207 * __t213;
+            let __t298: ::routh::__private::f64 = __t295 - __t296;
+            let __t300: ::routh::__private::f64 = __v23 + __t255;
+            let __t301: ::routh::__private::f64 = __t160 * __t300;
+            let __t302: ::routh::__private::f64 = __t208 * __t213;
+            let __t304: ::routh::__private::f64 = __t301 - __t302;
+            let __t306: ::routh::__private::f64 = __v24 + __t271;
+            let __t307: ::routh::__private::f64 = __t160 * __t306;
+            let __t308: ::routh::__private::f64 = __t208 * __t214;
+            let __t310: ::routh::__private::f64 = __t307 - __t308;
+            let __t311: ::routh::__private::f64 = -__t160;
             ::routh::__private::RouthBundle {
                 routhian: __t166,
                 psi_dot: __t160,
-                dr_domega: ::routh::__private::Vector3::new(__t344, __t346, __t348),
-                dr_dgamma: ::routh::__private::Vector3::new(__t353, __t358, __t363),
-                dr_dp: __t455,
+                dr_domega: ::routh::__private::Vector3::new(__t197, __t198, __t199),
+                dr_dgamma: ::routh::__private::Vector3::new(__t201, __t203, __t205),
+                dr_dp: __t311,
                 d2r_domega2: ::routh::__private::Matrix3::new(
-                    __t234,
-                    __t237,
-                    __t240,
-                    __t237,
-                    __t258,
+                    __t217,
+                    __t220,
+                    __t223,
+                    __t220,
+                    __t241,
+                    __t244,
+                    __t223,
+                    __t244,
                     __t261,
-                    __t240,
-                    __t261,
-                    __t278,
                 ),
                 d2r_domega_dgamma: ::routh::__private::Matrix3::new(
-                    __t378,
-                    __t383,
-                    __t388,
-                    __t392,
-                    __t397,
-                    __t402,
-                    __t406,
-                    __t410,
-                    __t415,
+                    __t228,
+                    __t233,
+                    __t238,
+                    __t248,
+                    __t253,
+                    __t258,
+                    __t265,
+                    __t269,
+                    __t274,
                 ),
                 d2r_dgamma2: ::routh::__private::Matrix3::new(
-                    __t422,
-                    __t428,
-                    __t434,
-                    __t428,
-                    __t441,
-                    __t447,
-                    __t434,
-                    __t447,
-                    __t454,
+                    __t280,
+                    __t286,
+                    __t292,
+                    __t286,
+                    __t298,
+                    __t304,
+                    __t292,
+                    __t304,
+                    __t310,
                 ),
             }
         }
@@ -1916,277 +1895,201 @@ const _: () = {
             let __t154: ::routh::__private::f64 = __t151 + __t152;
             let __t155: ::routh::__private::f64 = __t153 + __t154;
             let __t159: ::routh::__private::f64 = 1.0f64 / __t155;
-            let __t180: ::routh::__private::f64 = __v4 * __v19;
-            let __t183: ::routh::__private::f64 = __v5 * __v22;
-            let __t194: ::routh::__private::f64 = __v3 * __v17;
-            let __t196: ::routh::__private::f64 = __v5 * __v23;
-            let __t206: ::routh::__private::f64 = __v4 * __v21;
-            let __t207: ::routh::__private::f64 = __v3 * __v18;
-            let __t208: ::routh::__private::f64 = __t206 + __t207;
-            let __t226: ::routh::__private::f64 = __t140 * __t159;
-            let __t227: ::routh::__private::f64 = __t145 * __t159;
-            let __t228: ::routh::__private::f64 = __t150 * __t159;
-            let __t232: ::routh::__private::f64 = __t140 * __t226;
-            let __t234: ::routh::__private::f64 = __v7 - __t232;
-            let __t235: ::routh::__private::f64 = __t145 * __t226;
-            let __t237: ::routh::__private::f64 = __v8 - __t235;
-            let __t238: ::routh::__private::f64 = __t150 * __t226;
-            let __t240: ::routh::__private::f64 = __v9 - __t238;
-            let __t256: ::routh::__private::f64 = __t145 * __t227;
-            let __t258: ::routh::__private::f64 = __v10 - __t256;
-            let __t259: ::routh::__private::f64 = __t150 * __t227;
-            let __t261: ::routh::__private::f64 = __v11 - __t259;
-            let __t276: ::routh::__private::f64 = __t150 * __t228;
-            let __t278: ::routh::__private::f64 = __v12 - __t276;
-            let __t301: ::routh::__private::f64 = __v17 + __v19;
-            let __t308: ::routh::__private::f64 = __v18 + __v22;
-            let __t323: ::routh::__private::f64 = __v21 + __v23;
-            let __t456: ::routh::__private::f64 = __v3 * __t68;
-            let __t457: ::routh::__private::f64 = __v4 * __t69;
-            let __t458: ::routh::__private::f64 = __v5 * __t70;
-            let __t459: ::routh::__private::f64 = __t456 + __t457;
-            let __t460: ::routh::__private::f64 = __t458 + __t459;
-            let __t462: ::routh::__private::f64 = __v6 - __t460;
-            let __t463: ::routh::__private::f64 = __t159 * __t462;
-            let __t475: ::routh::__private::f64 = __t53 + __t68;
-            let __t476: ::routh::__private::f64 = __t180 + __t475;
-            let __t477: ::routh::__private::f64 = __t183 + __t476;
-            let __t481: ::routh::__private::f64 = __t59 + __t69;
-            let __t482: ::routh::__private::f64 = __t194 + __t481;
-            let __t483: ::routh::__private::f64 = __t196 + __t482;
-            let __t487: ::routh::__private::f64 = __t65 + __t70;
-            let __t488: ::routh::__private::f64 = __t208 + __t487;
-            let __t543: ::routh::__private::f64 = __t463 * __t463;
-            let __t549: ::routh::__private::f64 = __t140 * __t463;
-            let __t550: ::routh::__private::f64 = __t68 + __t549;
-            let __t551: ::routh::__private::f64 = __t145 * __t463;
-            let __t552: ::routh::__private::f64 = __t69 + __t551;
-            let __t553: ::routh::__private::f64 = __t150 * __t463;
-            let __t554: ::routh::__private::f64 = __t70 + __t553;
-            let __t555: ::routh::__private::f64 = __t463 * __t477;
-            let __t556: ::routh::__private::f64 = __t555 - __t100;
-            let __t557: ::routh::__private::f64 = __t140 * __t543;
-            let __t559: ::routh::__private::f64 = __t556 + __t557;
-            let __t560: ::routh::__private::f64 = __t463 * __t483;
-            let __t561: ::routh::__private::f64 = __t560 - __t108;
-            let __t562: ::routh::__private::f64 = __t145 * __t543;
-            let __t564: ::routh::__private::f64 = __t561 + __t562;
-            let __t565: ::routh::__private::f64 = __t463 * __t488;
-            let __t566: ::routh::__private::f64 = __t565 - __t116;
-            let __t567: ::routh::__private::f64 = __t150 * __t543;
-            let __t569: ::routh::__private::f64 = __t566 + __t567;
-            let __t571: ::routh::__private::f64 = 2f64 * __t549;
-            let __t572: ::routh::__private::f64 = __t477 + __t571;
-            let __t573: ::routh::__private::f64 = 2f64 * __t551;
-            let __t574: ::routh::__private::f64 = __t483 + __t573;
-            let __t575: ::routh::__private::f64 = 2f64 * __t553;
-            let __t576: ::routh::__private::f64 = __t488 + __t575;
-            let __t577: ::routh::__private::f64 = __t159 * __t572;
-            let __t578: ::routh::__private::f64 = __t159 * __t574;
-            let __t579: ::routh::__private::f64 = __t159 * __t576;
-            let __t580: ::routh::__private::f64 = __v7 * __t463;
-            let __t581: ::routh::__private::f64 = __v16 + __t580;
-            let __t582: ::routh::__private::f64 = __t226 * __t572;
-            let __t584: ::routh::__private::f64 = __t581 - __t582;
-            let __t585: ::routh::__private::f64 = __v8 * __t463;
-            let __t586: ::routh::__private::f64 = __v17 + __t585;
-            let __t587: ::routh::__private::f64 = __t226 * __t574;
-            let __t589: ::routh::__private::f64 = __t586 - __t587;
-            let __t590: ::routh::__private::f64 = __v9 * __t463;
-            let __t591: ::routh::__private::f64 = __v18 + __t590;
-            let __t592: ::routh::__private::f64 = __t226 * __t576;
-            let __t594: ::routh::__private::f64 = __t591 - __t592;
-            let __t595: ::routh::__private::f64 = __v19 + __t585;
-            let __t596: ::routh::__private::f64 = __t227 * __t572;
-            let __t598: ::routh::__private::f64 = __t595 - __t596;
-            let __t599: ::routh::__private::f64 = __v10 * __t463;
-            let __t600: ::routh::__private::f64 = __v20 + __t599;
-            let __t601: ::routh::__private::f64 = __t227 * __t574;
-            let __t603: ::routh::__private::f64 = __t600 - __t601;
-            let __t604: ::routh::__private::f64 = __v11 * __t463;
-            let __t605: ::routh::__private::f64 = __v21 + __t604;
-            let __t606: ::routh::__private::f64 = __t227 * __t576;
-            let __t608: ::routh::__private::f64 = __t605 - __t606;
-            let __t609: ::routh::__private::f64 = __v22 + __t590;
-            let __t610: ::routh::__private::f64 = __t228 * __t572;
-            let __t612: ::routh::__private::f64 = __t609 - __t610;
-            let __t613: ::routh::__private::f64 = __v23 + __t604;
-            let __t614: ::routh::__private::f64 = __t228 * __t574;
-            let __t616: ::routh::__private::f64 = __t613 - __t614;
-            let __t617: ::routh::__private::f64 = __v12 * __t463;
-            let __t618: ::routh::__private::f64 = __v24 + __t617;
-            let __t619: ::routh::__private::f64 = __t228 * __t576;
-            let __t621: ::routh::__private::f64 = __t618 - __t619;
-            let __t622: ::routh::__private::f64 = __v7 * __t543;
-            let __t623: ::routh::__private::f64 = __v16 * __t463;
-            let __t624: ::routh::__private::f64 = 2f64 * __t623;
-            let __t625: ::routh::__private::f64 = __t622 + __t624;
-            let __t626: ::routh::__private::f64 = __t572 * __t577;
-            let __t628: ::routh::__private::f64 = __t625 - __t626;
-            let __t629: ::routh::__private::f64 = __v8 * __t543;
-            let __t630: ::routh::__private::f64 = __t301 * __t463;
-            let __t631: ::routh::__private::f64 = __t629 + __t630;
-            let __t632: ::routh::__private::f64 = __t574 * __t577;
-            let __t634: ::routh::__private::f64 = __t631 - __t632;
-            let __t635: ::routh::__private::f64 = __v9 * __t543;
-            let __t636: ::routh::__private::f64 = __t308 * __t463;
-            let __t637: ::routh::__private::f64 = __t635 + __t636;
-            let __t638: ::routh::__private::f64 = __t576 * __t577;
-            let __t640: ::routh::__private::f64 = __t637 - __t638;
-            let __t641: ::routh::__private::f64 = __v10 * __t543;
-            let __t642: ::routh::__private::f64 = __v20 * __t463;
-            let __t643: ::routh::__private::f64 = 2f64 * __t642;
-            let __t644: ::routh::__private::f64 = __t641 + __t643;
-            let __t645: ::routh::__private::f64 = __t574 * __t578;
-            let __t647: ::routh::__private::f64 = __t644 - __t645;
-            let __t648: ::routh::__private::f64 = __v11 * __t543;
-            let __t649: ::routh::__private::f64 = __t323 * __t463;
-            let __t650: ::routh::__private::f64 = __t648 + __t649;
-            let __t651: ::routh::__private::f64 = __t576 * __t578;
-            let __t653: ::routh::__private::f64 = __t650 - __t651;
-            let __t654: ::routh::__private::f64 = __v12 * __t543;
-            let __t655: ::routh::__private::f64 = __v24 * __t463;
-            let __t656: ::routh::__private::f64 = 2f64 * __t655;
-            let __t657: ::routh::__private::f64 = __t654 + __t656;
-            let __t658: ::routh::__private::f64 = __t576 * __t579;
-            let __t660: ::routh::__private::f64 = __t657 - __t658;
-            let __t672: ::routh::__private::f64 = __v5 * __t584;
-            let __t674: ::routh::__private::f64 = __v3 * __t594;
-            let __t675: ::routh::__private::f64 = __t674 - __t672;
-            let __t676: ::routh::__private::f64 = __v4 * __t584;
-            let __t677: ::routh::__private::f64 = __v3 * __t589;
-            let __t679: ::routh::__private::f64 = __t676 - __t677;
-            let __t680: ::routh::__private::f64 = __v5 * __t603;
-            let __t681: ::routh::__private::f64 = __v4 * __t608;
-            let __t683: ::routh::__private::f64 = __t680 - __t681;
-            let __t688: ::routh::__private::f64 = __v4 * __t598;
-            let __t689: ::routh::__private::f64 = __v3 * __t603;
-            let __t691: ::routh::__private::f64 = __t688 - __t689;
-            let __t692: ::routh::__private::f64 = __v5 * __t616;
-            let __t693: ::routh::__private::f64 = __v4 * __t621;
-            let __t695: ::routh::__private::f64 = __t692 - __t693;
-            let __t696: ::routh::__private::f64 = __v5 * __t612;
-            let __t698: ::routh::__private::f64 = __v3 * __t621;
-            let __t699: ::routh::__private::f64 = __t698 - __t696;
-            let __t707: ::routh::__private::f64 = __t681 - __t680;
-            let __t709: ::routh::__private::f64 = __t693 - __t692;
-            let __t711: ::routh::__private::f64 = __t672 - __t674;
-            let __t715: ::routh::__private::f64 = __t696 - __t698;
-            let __t717: ::routh::__private::f64 = __t677 - __t676;
-            let __t719: ::routh::__private::f64 = __t689 - __t688;
-            let __t722: ::routh::__private::f64 = __t675 + __t707;
-            let __t723: ::routh::__private::f64 = __t554 + __t722;
-            let __t724: ::routh::__private::f64 = 0.5f64 * __t723;
-            let __t725: ::routh::__private::f64 = __t679 + __t709;
-            let __t726: ::routh::__private::f64 = __t725 - __t552;
-            let __t727: ::routh::__private::f64 = 0.5f64 * __t726;
-            let __t728: ::routh::__private::f64 = __t683 + __t711;
-            let __t729: ::routh::__private::f64 = __t728 - __t554;
-            let __t730: ::routh::__private::f64 = 0.5f64 * __t729;
-            let __t731: ::routh::__private::f64 = __t691 + __t715;
-            let __t732: ::routh::__private::f64 = __t550 + __t731;
-            let __t733: ::routh::__private::f64 = 0.5f64 * __t732;
-            let __t734: ::routh::__private::f64 = __t695 + __t717;
-            let __t735: ::routh::__private::f64 = __t552 + __t734;
-            let __t736: ::routh::__private::f64 = 0.5f64 * __t735;
-            let __t737: ::routh::__private::f64 = __t699 + __t719;
-            let __t738: ::routh::__private::f64 = __t737 - __t550;
-            let __t739: ::routh::__private::f64 = 0.5f64 * __t738;
-            let __t740: ::routh::__private::f64 = __v3 * __t559;
-            let __t741: ::routh::__private::f64 = __v4 * __t564;
-            let __t742: ::routh::__private::f64 = __v5 * __t569;
-            let __t743: ::routh::__private::f64 = __t740 + __t741;
-            let __t744: ::routh::__private::f64 = __t742 + __t743;
-            let __t746: ::routh::__private::f64 = __t744 - __t628;
-            let __t750: ::routh::__private::f64 = __t744 - __t647;
-            let __t753: ::routh::__private::f64 = __t744 - __t660;
-            let __t754: ::routh::__private::f64 = __v5 * __t634;
-            let __t756: ::routh::__private::f64 = __v4 * __t640;
-            let __t758: ::routh::__private::f64 = __t756 - __t754;
-            let __t759: ::routh::__private::f64 = __v5 * __t750;
-            let __t760: ::routh::__private::f64 = __v4 * __t653;
-            let __t762: ::routh::__private::f64 = __t759 + __t760;
-            let __t763: ::routh::__private::f64 = __v5 * __t653;
-            let __t765: ::routh::__private::f64 = __v4 * __t753;
-            let __t767: ::routh::__private::f64 = __t763 + __t765;
-            let __t769: ::routh::__private::f64 = __v5 * __t746;
-            let __t771: ::routh::__private::f64 = __v3 * __t640;
-            let __t773: ::routh::__private::f64 = __t769 + __t771;
-            let __t775: ::routh::__private::f64 = __v3 * __t653;
-            let __t777: ::routh::__private::f64 = __t754 - __t775;
-            let __t778: ::routh::__private::f64 = __v5 * __t640;
-            let __t780: ::routh::__private::f64 = __v3 * __t753;
-            let __t781: ::routh::__private::f64 = __t778 + __t780;
-            let __t782: ::routh::__private::f64 = __v4 * __t746;
-            let __t783: ::routh::__private::f64 = __v3 * __t634;
-            let __t785: ::routh::__private::f64 = __t782 + __t783;
-            let __t786: ::routh::__private::f64 = __v4 * __t634;
-            let __t788: ::routh::__private::f64 = __v3 * __t750;
-            let __t790: ::routh::__private::f64 = __t786 + __t788;
-            let __t792: ::routh::__private::f64 = __t775 - __t756;
-            let __t793: ::routh::__private::f64 = __v5 * __t762;
-            let __t794: ::routh::__private::f64 = __v4 * __t767;
-            let __t796: ::routh::__private::f64 = __t793 + __t794;
-            let __t797: ::routh::__private::f64 = __v5 * __t758;
-            let __t799: ::routh::__private::f64 = __v3 * __t767;
-            let __t801: ::routh::__private::f64 = __t797 + __t799;
-            let __t802: ::routh::__private::f64 = -__t801;
-            let __t803: ::routh::__private::f64 = __v4 * __t758;
-            let __t804: ::routh::__private::f64 = __v3 * __t762;
-            let __t806: ::routh::__private::f64 = __t803 - __t804;
-            let __t807: ::routh::__private::f64 = __v5 * __t777;
-            let __t808: ::routh::__private::f64 = __v4 * __t781;
-            let __t810: ::routh::__private::f64 = __t807 - __t808;
-            let __t811: ::routh::__private::f64 = __v5 * __t773;
-            let __t813: ::routh::__private::f64 = __v3 * __t781;
-            let __t814: ::routh::__private::f64 = __t811 + __t813;
-            let __t815: ::routh::__private::f64 = __v4 * __t773;
-            let __t817: ::routh::__private::f64 = __v3 * __t777;
-            let __t819: ::routh::__private::f64 = __t815 + __t817;
-            let __t820: ::routh::__private::f64 = -__t819;
-            let __t821: ::routh::__private::f64 = __v5 * __t790;
-            let __t823: ::routh::__private::f64 = __v4 * __t792;
-            let __t825: ::routh::__private::f64 = __t821 + __t823;
-            let __t826: ::routh::__private::f64 = -__t825;
-            let __t827: ::routh::__private::f64 = __v5 * __t785;
-            let __t829: ::routh::__private::f64 = __v3 * __t792;
-            let __t830: ::routh::__private::f64 = __t829 - __t827;
-            let __t831: ::routh::__private::f64 = __v4 * __t785;
-            let __t832: ::routh::__private::f64 = __v3 * __t790;
-            let __t834: ::routh::__private::f64 = __t831 + __t832;
+            let __t167: ::routh::__private::f64 = __v4 * __v19;
+            let __t170: ::routh::__private::f64 = __v5 * __v22;
+            let __t173: ::routh::__private::f64 = __v3 * __v17;
+            let __t175: ::routh::__private::f64 = __v5 * __v23;
+            let __t177: ::routh::__private::f64 = __v4 * __v21;
+            let __t178: ::routh::__private::f64 = __v3 * __v18;
+            let __t179: ::routh::__private::f64 = __t177 + __t178;
+            let __t209: ::routh::__private::f64 = __t140 * __t159;
+            let __t210: ::routh::__private::f64 = __t145 * __t159;
+            let __t211: ::routh::__private::f64 = __t150 * __t159;
+            let __t215: ::routh::__private::f64 = __t140 * __t209;
+            let __t217: ::routh::__private::f64 = __v7 - __t215;
+            let __t218: ::routh::__private::f64 = __t145 * __t209;
+            let __t220: ::routh::__private::f64 = __v8 - __t218;
+            let __t221: ::routh::__private::f64 = __t150 * __t209;
+            let __t223: ::routh::__private::f64 = __v9 - __t221;
+            let __t239: ::routh::__private::f64 = __t145 * __t210;
+            let __t241: ::routh::__private::f64 = __v10 - __t239;
+            let __t242: ::routh::__private::f64 = __t150 * __t210;
+            let __t244: ::routh::__private::f64 = __v11 - __t242;
+            let __t259: ::routh::__private::f64 = __t150 * __t211;
+            let __t261: ::routh::__private::f64 = __v12 - __t259;
+            let __t275: ::routh::__private::f64 = 2f64 * __v16;
+            let __t281: ::routh::__private::f64 = __v17 + __v19;
+            let __t287: ::routh::__private::f64 = __v18 + __v22;
+            let __t293: ::routh::__private::f64 = 2f64 * __v20;
+            let __t299: ::routh::__private::f64 = __v21 + __v23;
+            let __t305: ::routh::__private::f64 = 2f64 * __v24;
+            let __t312: ::routh::__private::f64 = __v3 * __t68;
+            let __t313: ::routh::__private::f64 = __v4 * __t69;
+            let __t314: ::routh::__private::f64 = __v5 * __t70;
+            let __t315: ::routh::__private::f64 = __t312 + __t313;
+            let __t316: ::routh::__private::f64 = __t314 + __t315;
+            let __t318: ::routh::__private::f64 = __v6 - __t316;
+            let __t319: ::routh::__private::f64 = __t159 * __t318;
+            let __t325: ::routh::__private::f64 = __t53 + __t68;
+            let __t326: ::routh::__private::f64 = __t167 + __t325;
+            let __t327: ::routh::__private::f64 = __t170 + __t326;
+            let __t328: ::routh::__private::f64 = __t59 + __t69;
+            let __t329: ::routh::__private::f64 = __t173 + __t328;
+            let __t330: ::routh::__private::f64 = __t175 + __t329;
+            let __t331: ::routh::__private::f64 = __t65 + __t70;
+            let __t332: ::routh::__private::f64 = __t179 + __t331;
+            let __t336: ::routh::__private::f64 = __t140 * __t319;
+            let __t337: ::routh::__private::f64 = __t145 * __t319;
+            let __t338: ::routh::__private::f64 = __t150 * __t319;
+            let __t339: ::routh::__private::f64 = __t327 + __t336;
+            let __t340: ::routh::__private::f64 = __t330 + __t337;
+            let __t341: ::routh::__private::f64 = __t332 + __t338;
+            let __t345: ::routh::__private::f64 = __t319 * __t339;
+            let __t346: ::routh::__private::f64 = __t345 - __t100;
+            let __t347: ::routh::__private::f64 = __t319 * __t340;
+            let __t348: ::routh::__private::f64 = __t347 - __t108;
+            let __t349: ::routh::__private::f64 = __t319 * __t341;
+            let __t350: ::routh::__private::f64 = __t349 - __t116;
+            let __t351: ::routh::__private::f64 = __t336 + __t339;
+            let __t352: ::routh::__private::f64 = __t337 + __t340;
+            let __t353: ::routh::__private::f64 = __t338 + __t341;
+            let __t354: ::routh::__private::f64 = __t159 * __t351;
+            let __t355: ::routh::__private::f64 = __t159 * __t352;
+            let __t356: ::routh::__private::f64 = __t159 * __t353;
+            let __t357: ::routh::__private::f64 = __v7 * __t319;
+            let __t358: ::routh::__private::f64 = __v16 + __t357;
+            let __t359: ::routh::__private::f64 = __t209 * __t351;
+            let __t361: ::routh::__private::f64 = __t358 - __t359;
+            let __t362: ::routh::__private::f64 = __v8 * __t319;
+            let __t367: ::routh::__private::f64 = __v9 * __t319;
+            let __t376: ::routh::__private::f64 = __v10 * __t319;
+            let __t377: ::routh::__private::f64 = __v20 + __t376;
+            let __t378: ::routh::__private::f64 = __t210 * __t352;
+            let __t380: ::routh::__private::f64 = __t377 - __t378;
+            let __t381: ::routh::__private::f64 = __v11 * __t319;
+            let __t394: ::routh::__private::f64 = __v12 * __t319;
+            let __t395: ::routh::__private::f64 = __v24 + __t394;
+            let __t396: ::routh::__private::f64 = __t211 * __t353;
+            let __t398: ::routh::__private::f64 = __t395 - __t396;
+            let __t399: ::routh::__private::f64 = __t275 + __t357;
+            let __t400: ::routh::__private::f64 = __t319 * __t399;
+            let __t401: ::routh::__private::f64 = __t351 * __t354;
+            let __t403: ::routh::__private::f64 = __t400 - __t401;
+            let __t404: ::routh::__private::f64 = __t281 + __t362;
+            let __t405: ::routh::__private::f64 = __t319 * __t404;
+            let __t406: ::routh::__private::f64 = __t352 * __t354;
+            let __t408: ::routh::__private::f64 = __t405 - __t406;
+            let __t409: ::routh::__private::f64 = __t287 + __t367;
+            let __t410: ::routh::__private::f64 = __t319 * __t409;
+            let __t411: ::routh::__private::f64 = __t353 * __t354;
+            let __t413: ::routh::__private::f64 = __t410 - __t411;
+            let __t414: ::routh::__private::f64 = __t293 + __t376;
+            let __t415: ::routh::__private::f64 = __t319 * __t414;
+            let __t416: ::routh::__private::f64 = __t352 * __t355;
+            let __t418: ::routh::__private::f64 = __t415 - __t416;
+            let __t419: ::routh::__private::f64 = __t299 + __t381;
+            let __t420: ::routh::__private::f64 = __t319 * __t419;
+            let __t421: ::routh::__private::f64 = __t353 * __t355;
+            let __t423: ::routh::__private::f64 = __t420 - __t421;
+            let __t424: ::routh::__private::f64 = __t305 + __t394;
+            let __t425: ::routh::__private::f64 = __t319 * __t424;
+            let __t426: ::routh::__private::f64 = __t353 * __t356;
+            let __t428: ::routh::__private::f64 = __t425 - __t426;
+            let __t433: ::routh::__private::f64 = __t361 + __t380;
+            let __t434: ::routh::__private::f64 = __t398 + __t433;
+            let __t436: ::routh::__private::f64 = __v5 * __t434;
+            let __t437: ::routh::__private::f64 = 0.5f64 * __t436;
+            let __t438: ::routh::__private::f64 = (-0.5f64) * __t436;
+            let __t439: ::routh::__private::f64 = __v4 * __t434;
+            let __t440: ::routh::__private::f64 = 0.5f64 * __t439;
+            let __t441: ::routh::__private::f64 = __v3 * __t434;
+            let __t442: ::routh::__private::f64 = 0.5f64 * __t441;
+            let __t443: ::routh::__private::f64 = (-0.5f64) * __t441;
+            let __t444: ::routh::__private::f64 = (-0.5f64) * __t439;
+            let __t445: ::routh::__private::f64 = __v3 * __t346;
+            let __t446: ::routh::__private::f64 = __v4 * __t348;
+            let __t447: ::routh::__private::f64 = __v5 * __t350;
+            let __t448: ::routh::__private::f64 = __t445 + __t446;
+            let __t449: ::routh::__private::f64 = __t447 + __t448;
+            let __t451: ::routh::__private::f64 = __t449 - __t403;
+            let __t455: ::routh::__private::f64 = __t449 - __t418;
+            let __t458: ::routh::__private::f64 = __t449 - __t428;
+            let __t459: ::routh::__private::f64 = __v5 * __t408;
+            let __t461: ::routh::__private::f64 = __v4 * __t413;
+            let __t463: ::routh::__private::f64 = __t461 - __t459;
+            let __t464: ::routh::__private::f64 = __v5 * __t455;
+            let __t465: ::routh::__private::f64 = __v4 * __t423;
+            let __t467: ::routh::__private::f64 = __t464 + __t465;
+            let __t468: ::routh::__private::f64 = __v5 * __t423;
+            let __t470: ::routh::__private::f64 = __v4 * __t458;
+            let __t472: ::routh::__private::f64 = __t468 + __t470;
+            let __t474: ::routh::__private::f64 = __v5 * __t451;
+            let __t476: ::routh::__private::f64 = __v3 * __t413;
+            let __t478: ::routh::__private::f64 = __t474 + __t476;
+            let __t480: ::routh::__private::f64 = __v3 * __t423;
+            let __t482: ::routh::__private::f64 = __t459 - __t480;
+            let __t483: ::routh::__private::f64 = __v5 * __t413;
+            let __t485: ::routh::__private::f64 = __v3 * __t458;
+            let __t486: ::routh::__private::f64 = __t483 + __t485;
+            let __t487: ::routh::__private::f64 = __v4 * __t451;
+            let __t488: ::routh::__private::f64 = __v3 * __t408;
+            let __t490: ::routh::__private::f64 = __t487 + __t488;
+            let __t491: ::routh::__private::f64 = __v4 * __t408;
+            let __t493: ::routh::__private::f64 = __v3 * __t455;
+            let __t495: ::routh::__private::f64 = __t491 + __t493;
+            let __t498: ::routh::__private::f64 = __v5 * __t467;
+            let __t499: ::routh::__private::f64 = __v4 * __t472;
+            let __t501: ::routh::__private::f64 = __t498 + __t499;
+            let __t502: ::routh::__private::f64 = __v5 * __t463;
+            let __t504: ::routh::__private::f64 = __v3 * __t472;
+            let __t506: ::routh::__private::f64 = __t502 + __t504;
+            let __t507: ::routh::__private::f64 = -__t506;
+            let __t508: ::routh::__private::f64 = __v4 * __t463;
+            let __t509: ::routh::__private::f64 = __v3 * __t467;
+            let __t511: ::routh::__private::f64 = __t508 - __t509;
+            let __t512: ::routh::__private::f64 = __v5 * __t478;
+            let __t514: ::routh::__private::f64 = __v3 * __t486;
+            let __t515: ::routh::__private::f64 = __t512 + __t514;
+            let __t516: ::routh::__private::f64 = __v4 * __t478;
+            let __t518: ::routh::__private::f64 = __v3 * __t482;
+            let __t520: ::routh::__private::f64 = __t516 + __t518;
+            let __t521: ::routh::__private::f64 = -__t520;
+            let __t522: ::routh::__private::f64 = __v4 * __t490;
+            let __t523: ::routh::__private::f64 = __v3 * __t495;
+            let __t525: ::routh::__private::f64 = __t522 + __t523;
             ::routh::__private::GyroscopicSystem {
                 a: ::routh::__private::Matrix3::new(
-                    __t234,
-                    __t237,
-                    __t240,
-                    __t237,
-                    __t258,
+                    __t217,
+                    __t220,
+                    __t223,
+                    __t220,
+                    __t241,
+                    __t244,
+                    __t223,
+                    __t244,
                     __t261,
-                    __t240,
-                    __t261,
-                    __t278,
                 ),
                 g: ::routh::__private::Matrix3::new(
                     0f64,
-                    __t724,
-                    __t727,
-                    __t730,
+                    __t438,
+                    __t440,
+                    __t437,
                     0f64,
-                    __t733,
-                    __t736,
-                    __t739,
+                    __t443,
+                    __t444,
+                    __t442,
                     0f64,
                 ),
                 c: ::routh::__private::Matrix3::new(
-                    __t796,
-                    __t802,
-                    __t806,
-                    __t810,
-                    __t814,
-                    __t820,
-                    __t826,
-                    __t830,
-                    __t834,
+                    __t501,
+                    __t507,
+                    __t511,
+                    __t507,
+                    __t515,
+                    __t521,
+                    __t511,
+                    __t521,
+                    __t525,
                 ),
             }
         }

@@ -286,15 +286,15 @@ const _: () = {
             let __t50: ::routh::__private::f64 = __t47 + __t49;
             let __t53: ::routh::__private::f64 = __v6 - __t43;
             let __t55: ::routh::__private::f64 = __t53 / __t50;
-            let __t69: ::routh::__private::f64 = __v3 * __v7;
-            let __t72: ::routh::__private::f64 = __v4 * __v7;
-            let __t169: ::routh::__private::f64 = __t55 * __t69;
-            let __t170: ::routh::__private::f64 = __t26 + __t169;
-            let __t171: ::routh::__private::f64 = __t55 * __t72;
-            let __t172: ::routh::__private::f64 = __t29 + __t171;
-            let __t173: ::routh::__private::f64 = __t48 * __t55;
-            let __t174: ::routh::__private::f64 = __t15 + __t173;
-            ::routh::__private::Vector3::new(__t170, __t172, __t174)
+            let __t62: ::routh::__private::f64 = __v3 * __v7;
+            let __t63: ::routh::__private::f64 = __v4 * __v7;
+            let __t69: ::routh::__private::f64 = __t55 * __t62;
+            let __t70: ::routh::__private::f64 = __t55 * __t63;
+            let __t71: ::routh::__private::f64 = __t48 * __t55;
+            let __t72: ::routh::__private::f64 = __t26 + __t69;
+            let __t73: ::routh::__private::f64 = __t29 + __t70;
+            let __t74: ::routh::__private::f64 = __t15 + __t71;
+            ::routh::__private::Vector3::new(__t72, __t73, __t74)
         }
         #[inline]
         fn dr_dgamma(
@@ -330,20 +330,19 @@ const _: () = {
             let __t50: ::routh::__private::f64 = __t47 + __t49;
             let __t53: ::routh::__private::f64 = __v6 - __t43;
             let __t55: ::routh::__private::f64 = __t53 / __t50;
-            let __t69: ::routh::__private::f64 = __v3 * __v7;
-            let __t72: ::routh::__private::f64 = __v4 * __v7;
-            let __t163: ::routh::__private::f64 = __t55 * __t55;
-            let __t175: ::routh::__private::f64 = __t26 * __t55;
-            let __t176: ::routh::__private::f64 = __t69 * __t163;
-            let __t178: ::routh::__private::f64 = __t175 + __t176;
-            let __t179: ::routh::__private::f64 = __t29 * __t55;
-            let __t180: ::routh::__private::f64 = __t72 * __t163;
-            let __t182: ::routh::__private::f64 = __t179 + __t180;
-            let __t183: ::routh::__private::f64 = __t15 * __t55;
-            let __t184: ::routh::__private::f64 = __t183 - __v9;
-            let __t185: ::routh::__private::f64 = __t48 * __t163;
-            let __t187: ::routh::__private::f64 = __t184 + __t185;
-            ::routh::__private::Vector3::new(__t178, __t182, __t187)
+            let __t62: ::routh::__private::f64 = __v3 * __v7;
+            let __t63: ::routh::__private::f64 = __v4 * __v7;
+            let __t69: ::routh::__private::f64 = __t55 * __t62;
+            let __t70: ::routh::__private::f64 = __t55 * __t63;
+            let __t71: ::routh::__private::f64 = __t48 * __t55;
+            let __t72: ::routh::__private::f64 = __t26 + __t69;
+            let __t73: ::routh::__private::f64 = __t29 + __t70;
+            let __t74: ::routh::__private::f64 = __t15 + __t71;
+            let __t75: ::routh::__private::f64 = __t55 * __t72;
+            let __t76: ::routh::__private::f64 = __t55 * __t73;
+            let __t77: ::routh::__private::f64 = __t55 * __t74;
+            let __t78: ::routh::__private::f64 = __t77 - __v9;
+            ::routh::__private::Vector3::new(__t75, __t76, __t78)
         }
         #[inline]
         fn dr_dp(
@@ -378,8 +377,8 @@ const _: () = {
             let __t50: ::routh::__private::f64 = __t47 + __t49;
             let __t53: ::routh::__private::f64 = __v6 - __t43;
             let __t55: ::routh::__private::f64 = __t53 / __t50;
-            let __t238: ::routh::__private::f64 = -__t55;
-            __t238
+            let __t146: ::routh::__private::f64 = -__t55;
+            __t146
         }
         #[inline]
         fn d2r_domega2(
@@ -401,33 +400,33 @@ const _: () = {
             let __t49: ::routh::__private::f64 = __v5 * __t48;
             let __t50: ::routh::__private::f64 = __t47 + __t49;
             let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
-            let __t69: ::routh::__private::f64 = __v3 * __v7;
-            let __t72: ::routh::__private::f64 = __v4 * __v7;
-            let __t102: ::routh::__private::f64 = __t54 * __t69;
-            let __t103: ::routh::__private::f64 = __t54 * __t72;
-            let __t104: ::routh::__private::f64 = __t48 * __t54;
-            let __t108: ::routh::__private::f64 = __t69 * __t102;
-            let __t110: ::routh::__private::f64 = __v7 - __t108;
-            let __t111: ::routh::__private::f64 = __t72 * __t102;
-            let __t112: ::routh::__private::f64 = -__t111;
-            let __t113: ::routh::__private::f64 = __t48 * __t102;
-            let __t114: ::routh::__private::f64 = -__t113;
-            let __t123: ::routh::__private::f64 = __t72 * __t103;
-            let __t125: ::routh::__private::f64 = __v7 - __t123;
-            let __t126: ::routh::__private::f64 = __t48 * __t103;
-            let __t127: ::routh::__private::f64 = -__t126;
-            let __t135: ::routh::__private::f64 = __t48 * __t104;
-            let __t137: ::routh::__private::f64 = __v8 - __t135;
+            let __t62: ::routh::__private::f64 = __v3 * __v7;
+            let __t63: ::routh::__private::f64 = __v4 * __v7;
+            let __t85: ::routh::__private::f64 = __t54 * __t62;
+            let __t86: ::routh::__private::f64 = __t54 * __t63;
+            let __t87: ::routh::__private::f64 = __t48 * __t54;
+            let __t91: ::routh::__private::f64 = __t62 * __t85;
+            let __t93: ::routh::__private::f64 = __v7 - __t91;
+            let __t94: ::routh::__private::f64 = __t63 * __t85;
+            let __t95: ::routh::__private::f64 = -__t94;
+            let __t96: ::routh::__private::f64 = __t48 * __t85;
+            let __t97: ::routh::__private::f64 = -__t96;
+            let __t106: ::routh::__private::f64 = __t63 * __t86;
+            let __t108: ::routh::__private::f64 = __v7 - __t106;
+            let __t109: ::routh::__private::f64 = __t48 * __t86;
+            let __t110: ::routh::__private::f64 = -__t109;
+            let __t118: ::routh::__private::f64 = __t48 * __t87;
+            let __t120: ::routh::__private::f64 = __v8 - __t118;
             ::routh::__private::Matrix3::new(
+                __t93,
+                __t95,
+                __t97,
+                __t95,
+                __t108,
                 __t110,
-                __t112,
-                __t114,
-                __t112,
-                __t125,
-                __t127,
-                __t114,
-                __t127,
-                __t137,
+                __t97,
+                __t110,
+                __t120,
             )
         }
         #[inline]
@@ -464,50 +463,50 @@ const _: () = {
             let __t53: ::routh::__private::f64 = __v6 - __t43;
             let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
             let __t55: ::routh::__private::f64 = __t53 * __t54;
-            let __t69: ::routh::__private::f64 = __v3 * __v7;
-            let __t72: ::routh::__private::f64 = __v4 * __v7;
-            let __t102: ::routh::__private::f64 = __t54 * __t69;
-            let __t103: ::routh::__private::f64 = __t54 * __t72;
-            let __t104: ::routh::__private::f64 = __t48 * __t54;
-            let __t169: ::routh::__private::f64 = __t55 * __t69;
-            let __t171: ::routh::__private::f64 = __t55 * __t72;
-            let __t173: ::routh::__private::f64 = __t48 * __t55;
-            let __t189: ::routh::__private::f64 = 2f64 * __t169;
-            let __t190: ::routh::__private::f64 = __t26 + __t189;
-            let __t191: ::routh::__private::f64 = 2f64 * __t171;
-            let __t192: ::routh::__private::f64 = __t29 + __t191;
-            let __t193: ::routh::__private::f64 = 2f64 * __t173;
-            let __t194: ::routh::__private::f64 = __t15 + __t193;
-            let __t198: ::routh::__private::f64 = __v7 * __t55;
-            let __t199: ::routh::__private::f64 = __t102 * __t190;
-            let __t201: ::routh::__private::f64 = __t198 - __t199;
-            let __t202: ::routh::__private::f64 = __t102 * __t192;
-            let __t203: ::routh::__private::f64 = -__t202;
-            let __t204: ::routh::__private::f64 = __t102 * __t194;
-            let __t205: ::routh::__private::f64 = -__t204;
-            let __t206: ::routh::__private::f64 = __t103 * __t190;
-            let __t207: ::routh::__private::f64 = -__t206;
-            let __t208: ::routh::__private::f64 = __t103 * __t192;
-            let __t210: ::routh::__private::f64 = __t198 - __t208;
-            let __t211: ::routh::__private::f64 = __t103 * __t194;
-            let __t212: ::routh::__private::f64 = -__t211;
-            let __t213: ::routh::__private::f64 = __t104 * __t190;
-            let __t214: ::routh::__private::f64 = -__t213;
-            let __t215: ::routh::__private::f64 = __t104 * __t192;
-            let __t216: ::routh::__private::f64 = -__t215;
-            let __t217: ::routh::__private::f64 = __v8 * __t55;
-            let __t218: ::routh::__private::f64 = __t104 * __t194;
-            let __t220: ::routh::__private::f64 = __t217 - __t218;
+            let __t62: ::routh::__private::f64 = __v3 * __v7;
+            let __t63: ::routh::__private::f64 = __v4 * __v7;
+            let __t69: ::routh::__private::f64 = __t55 * __t62;
+            let __t70: ::routh::__private::f64 = __t55 * __t63;
+            let __t71: ::routh::__private::f64 = __t48 * __t55;
+            let __t79: ::routh::__private::f64 = 2f64 * __t69;
+            let __t80: ::routh::__private::f64 = __t26 + __t79;
+            let __t81: ::routh::__private::f64 = 2f64 * __t70;
+            let __t82: ::routh::__private::f64 = __t29 + __t81;
+            let __t83: ::routh::__private::f64 = 2f64 * __t71;
+            let __t84: ::routh::__private::f64 = __t15 + __t83;
+            let __t85: ::routh::__private::f64 = __t54 * __t62;
+            let __t86: ::routh::__private::f64 = __t54 * __t63;
+            let __t87: ::routh::__private::f64 = __t48 * __t54;
+            let __t98: ::routh::__private::f64 = __v7 * __t55;
+            let __t99: ::routh::__private::f64 = __t80 * __t85;
+            let __t101: ::routh::__private::f64 = __t98 - __t99;
+            let __t102: ::routh::__private::f64 = __t82 * __t85;
+            let __t103: ::routh::__private::f64 = -__t102;
+            let __t104: ::routh::__private::f64 = __t84 * __t85;
+            let __t105: ::routh::__private::f64 = -__t104;
+            let __t111: ::routh::__private::f64 = __t80 * __t86;
+            let __t112: ::routh::__private::f64 = -__t111;
+            let __t113: ::routh::__private::f64 = __t82 * __t86;
+            let __t115: ::routh::__private::f64 = __t98 - __t113;
+            let __t116: ::routh::__private::f64 = __t84 * __t86;
+            let __t117: ::routh::__private::f64 = -__t116;
+            let __t121: ::routh::__private::f64 = __t80 * __t87;
+            let __t122: ::routh::__private::f64 = -__t121;
+            let __t123: ::routh::__private::f64 = __t82 * __t87;
+            let __t124: ::routh::__private::f64 = -__t123;
+            let __t125: ::routh::__private::f64 = __v8 * __t55;
+            let __t126: ::routh::__private::f64 = __t84 * __t87;
+            let __t128: ::routh::__private::f64 = __t125 - __t126;
             ::routh::__private::Matrix3::new(
-                __t201,
-                __t203,
-                __t205,
-                __t207,
-                __t210,
-                __t212,
-                __t214,
-                __t216,
-                __t220,
+                __t101,
+                __t103,
+                __t105,
+                __t112,
+                __t115,
+                __t117,
+                __t122,
+                __t124,
+                __t128,
             )
         }
         #[inline]
@@ -544,45 +543,46 @@ const _: () = {
             let __t53: ::routh::__private::f64 = __v6 - __t43;
             let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
             let __t55: ::routh::__private::f64 = __t53 * __t54;
-            let __t69: ::routh::__private::f64 = __v3 * __v7;
-            let __t72: ::routh::__private::f64 = __v4 * __v7;
-            let __t163: ::routh::__private::f64 = __t55 * __t55;
-            let __t169: ::routh::__private::f64 = __t55 * __t69;
-            let __t171: ::routh::__private::f64 = __t55 * __t72;
-            let __t173: ::routh::__private::f64 = __t48 * __t55;
-            let __t189: ::routh::__private::f64 = 2f64 * __t169;
-            let __t190: ::routh::__private::f64 = __t26 + __t189;
-            let __t191: ::routh::__private::f64 = 2f64 * __t171;
-            let __t192: ::routh::__private::f64 = __t29 + __t191;
-            let __t193: ::routh::__private::f64 = 2f64 * __t173;
-            let __t194: ::routh::__private::f64 = __t15 + __t193;
-            let __t195: ::routh::__private::f64 = __t54 * __t190;
-            let __t196: ::routh::__private::f64 = __t54 * __t192;
-            let __t197: ::routh::__private::f64 = __t54 * __t194;
-            let __t221: ::routh::__private::f64 = __v7 * __t163;
-            let __t222: ::routh::__private::f64 = __t190 * __t195;
-            let __t224: ::routh::__private::f64 = __t221 - __t222;
-            let __t225: ::routh::__private::f64 = __t192 * __t195;
-            let __t226: ::routh::__private::f64 = -__t225;
-            let __t227: ::routh::__private::f64 = __t194 * __t195;
-            let __t228: ::routh::__private::f64 = -__t227;
-            let __t229: ::routh::__private::f64 = __t192 * __t196;
-            let __t231: ::routh::__private::f64 = __t221 - __t229;
-            let __t232: ::routh::__private::f64 = __t194 * __t196;
-            let __t233: ::routh::__private::f64 = -__t232;
-            let __t234: ::routh::__private::f64 = __v8 * __t163;
-            let __t235: ::routh::__private::f64 = __t194 * __t197;
-            let __t237: ::routh::__private::f64 = __t234 - __t235;
+            let __t62: ::routh::__private::f64 = __v3 * __v7;
+            let __t63: ::routh::__private::f64 = __v4 * __v7;
+            let __t69: ::routh::__private::f64 = __t55 * __t62;
+            let __t70: ::routh::__private::f64 = __t55 * __t63;
+            let __t71: ::routh::__private::f64 = __t48 * __t55;
+            let __t79: ::routh::__private::f64 = 2f64 * __t69;
+            let __t80: ::routh::__private::f64 = __t26 + __t79;
+            let __t81: ::routh::__private::f64 = 2f64 * __t70;
+            let __t82: ::routh::__private::f64 = __t29 + __t81;
+            let __t83: ::routh::__private::f64 = 2f64 * __t71;
+            let __t84: ::routh::__private::f64 = __t15 + __t83;
+            let __t88: ::routh::__private::f64 = __t54 * __t80;
+            let __t89: ::routh::__private::f64 = __t54 * __t82;
+            let __t90: ::routh::__private::f64 = __t54 * __t84;
+            let __t98: ::routh::__private::f64 = __v7 * __t55;
+            let __t125: ::routh::__private::f64 = __v8 * __t55;
+            let __t129: ::routh::__private::f64 = __t55 * __t98;
+            let __t130: ::routh::__private::f64 = __t80 * __t88;
+            let __t132: ::routh::__private::f64 = __t129 - __t130;
+            let __t133: ::routh::__private::f64 = __t82 * __t88;
+            let __t134: ::routh::__private::f64 = -__t133;
+            let __t135: ::routh::__private::f64 = __t84 * __t88;
+            let __t136: ::routh::__private::f64 = -__t135;
+            let __t137: ::routh::__private::f64 = __t82 * __t89;
+            let __t139: ::routh::__private::f64 = __t129 - __t137;
+            let __t140: ::routh::__private::f64 = __t84 * __t89;
+            let __t141: ::routh::__private::f64 = -__t140;
+            let __t142: ::routh::__private::f64 = __t55 * __t125;
+            let __t143: ::routh::__private::f64 = __t84 * __t90;
+            let __t145: ::routh::__private::f64 = __t142 - __t143;
             ::routh::__private::Matrix3::new(
-                __t224,
-                __t226,
-                __t228,
-                __t226,
-                __t231,
-                __t233,
-                __t228,
-                __t233,
-                __t237,
+                __t132,
+                __t134,
+                __t136,
+                __t134,
+                __t139,
+                __t141,
+                __t136,
+                __t141,
+                __t145,
             )
         }
         #[inline]
@@ -606,12 +606,12 @@ const _: () = {
             let __t48: ::routh::__private::f64 = __v5 * __v8;
             let __t49: ::routh::__private::f64 = __v5 * __t48;
             let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t239: ::routh::__private::f64 = __v6 / __t50;
-            let __t241: ::routh::__private::f64 = __v6 * __t239;
-            let __t243: ::routh::__private::f64 = (-0.5f64) * __t241;
-            let __t244: ::routh::__private::f64 = __t243 - __t19;
-            let __t398: ::routh::__private::f64 = -__t244;
-            __t398
+            let __t147: ::routh::__private::f64 = __v6 / __t50;
+            let __t149: ::routh::__private::f64 = __v6 * __t147;
+            let __t151: ::routh::__private::f64 = (-0.5f64) * __t149;
+            let __t152: ::routh::__private::f64 = __t151 - __t19;
+            let __t233: ::routh::__private::f64 = -__t152;
+            __t233
         }
         #[inline]
         fn bundle(
@@ -660,122 +660,115 @@ const _: () = {
             let __t57: ::routh::__private::f64 = __t53 * __t55;
             let __t60: ::routh::__private::f64 = (-0.5f64) * __t57;
             let __t61: ::routh::__private::f64 = __t22 + __t60;
-            let __t69: ::routh::__private::f64 = __v3 * __v7;
-            let __t72: ::routh::__private::f64 = __v4 * __v7;
-            let __t102: ::routh::__private::f64 = __t54 * __t69;
-            let __t103: ::routh::__private::f64 = __t54 * __t72;
-            let __t104: ::routh::__private::f64 = __t48 * __t54;
-            let __t108: ::routh::__private::f64 = __t69 * __t102;
-            let __t110: ::routh::__private::f64 = __v7 - __t108;
-            let __t111: ::routh::__private::f64 = __t72 * __t102;
+            let __t62: ::routh::__private::f64 = __v3 * __v7;
+            let __t63: ::routh::__private::f64 = __v4 * __v7;
+            let __t69: ::routh::__private::f64 = __t55 * __t62;
+            let __t70: ::routh::__private::f64 = __t55 * __t63;
+            let __t71: ::routh::__private::f64 = __t48 * __t55;
+            let __t72: ::routh::__private::f64 = __t26 + __t69;
+            let __t73: ::routh::__private::f64 = __t29 + __t70;
+            let __t74: ::routh::__private::f64 = __t15 + __t71;
+            let __t75: ::routh::__private::f64 = __t55 * __t72;
+            let __t76: ::routh::__private::f64 = __t55 * __t73;
+            let __t77: ::routh::__private::f64 = __t55 * __t74;
+            let __t78: ::routh::__private::f64 = __t77 - __v9;
+            let __t79: ::routh::__private::f64 = 2f64 * __t69;
+            let __t80: ::routh::__private::f64 = __t26 + __t79;
+            let __t81: ::routh::__private::f64 = 2f64 * __t70;
+            let __t82: ::routh::__private::f64 = __t29 + __t81;
+            let __t83: ::routh::__private::f64 = 2f64 * __t71;
+            let __t84: ::routh::__private::f64 = __t15 + __t83;
+            let __t85: ::routh::__private::f64 = __t54 * __t62;
+            let __t86: ::routh::__private::f64 = __t54 * __t63;
+            let __t87: ::routh::__private::f64 = __t48 * __t54;
+            let __t88: ::routh::__private::f64 = __t54 * __t80;
+            let __t89: ::routh::__private::f64 = __t54 * __t82;
+            let __t90: ::routh::__private::f64 = __t54 * __t84;
+            let __t91: ::routh::__private::f64 = __t62 * __t85;
+            let __t93: ::routh::__private::f64 = __v7 - __t91;
+            let __t94: ::routh::__private::f64 = __t63 * __t85;
+            let __t95: ::routh::__private::f64 = -__t94;
+            let __t96: ::routh::__private::f64 = __t48 * __t85;
+            let __t97: ::routh::__private::f64 = -__t96;
+            let __t98: ::routh::__private::f64 = __v7 * __t55;
+            let __t99: ::routh::__private::f64 = __t80 * __t85;
+            let __t101: ::routh::__private::f64 = __t98 - __t99;
+            let __t102: ::routh::__private::f64 = __t82 * __t85;
+            let __t103: ::routh::__private::f64 = -__t102;
+            let __t104: ::routh::__private::f64 = __t84 * __t85;
+            let __t105: ::routh::__private::f64 = -__t104;
+            let __t106: ::routh::__private::f64 = __t63 * __t86;
+            let __t108: ::routh::__private::f64 = __v7 - __t106;
+            let __t109: ::routh::__private::f64 = __t48 * __t86;
+            let __t110: ::routh::__private::f64 = -__t109;
+            let __t111: ::routh::__private::f64 = __t80 * __t86;
             let __t112: ::routh::__private::f64 = -__t111;
-            let __t113: ::routh::__private::f64 = __t48 * __t102;
-            let __t114: ::routh::__private::f64 = -__t113;
-            let __t123: ::routh::__private::f64 = __t72 * __t103;
-            let __t125: ::routh::__private::f64 = __v7 - __t123;
-            let __t126: ::routh::__private::f64 = __t48 * __t103;
-            let __t127: ::routh::__private::f64 = -__t126;
-            let __t135: ::routh::__private::f64 = __t48 * __t104;
-            let __t137: ::routh::__private::f64 = __v8 - __t135;
-            let __t163: ::routh::__private::f64 = __t55 * __t55;
-            let __t169: ::routh::__private::f64 = __t55 * __t69;
-            let __t170: ::routh::__private::f64 = __t26 + __t169;
-            let __t171: ::routh::__private::f64 = __t55 * __t72;
-            let __t172: ::routh::__private::f64 = __t29 + __t171;
-            let __t173: ::routh::__private::f64 = __t48 * __t55;
-            let __t174: ::routh::__private::f64 = __t15 + __t173;
-            let __t175: ::routh::__private::f64 = __t26 * __t55;
-            let __t176: ::routh::__private::f64 = __t69 * __t163;
-            let __t178: ::routh::__private::f64 = __t175 + __t176;
-            let __t179: ::routh::__private::f64 = __t29 * __t55;
-            let __t180: ::routh::__private::f64 = __t72 * __t163;
-            let __t182: ::routh::__private::f64 = __t179 + __t180;
-            let __t183: ::routh::__private::f64 = __t15 * __t55;
-            let __t184: ::routh::__private::f64 = __t183 - __v9;
-            let __t185: ::routh::__private::f64 = __t48 * __t163;
-            let __t187: ::routh::__private::f64 = __t184 + __t185;
-            let __t189: ::routh::__private::f64 = 2f64 * __t169;
-            let __t190: ::routh::__private::f64 = __t26 + __t189;
-            let __t191: ::routh::__private::f64 = 2f64 * __t171;
-            let __t192: ::routh::__private::f64 = __t29 + __t191;
-            let __t193: ::routh::__private::f64 = 2f64 * __t173;
-            let __t194: ::routh::__private::f64 = __t15 + __t193;
-            let __t195: ::routh::__private::f64 = __t54 * __t190;
-            let __t196: ::routh::__private::f64 = __t54 * __t192;
-            let __t197: ::routh::__private::f64 = __t54 * __t194;
-            let __t198: ::routh::__private::f64 = __v7 * __t55;
-            let __t199: ::routh::__private::f64 = __t102 * __t190;
-            let __t201: ::routh::__private::f64 = __t198 - __t199;
-            let __t202: ::routh::__private::f64 = __t102 * __t192;
-            let __t203: ::routh::__private::f64 = -__t202;
-            let __t204: ::routh::__private::f64 = __t102 * __t194;
-            let __t205: ::routh::__private::f64 = -__t204;
-            let __t206: ::routh::__private::f64 = __t103 * __t190;
-            let __t207: ::routh::__private::f64 = -__t206;
-            let __t208: ::routh::__private::f64 = __t103 * __t192;
-            let __t210: ::routh::__private::f64 = __t198 - __t208;
-            let __t211: ::routh::__private::f64 = __t103 * __t194;
-            let __t212: ::routh::__private::f64 = -__t211;
-            let __t213: ::routh::__private::f64 = __t104 * __t190;
-            let __t214: ::routh::__private::f64 = -__t213;
-            let __t215: ::routh::__private::f64 = __t104 * __t192;
-            let __t216: ::routh::__private::f64 = -__t215;
-            let __t217: ::routh::__private::f64 = __v8 * __t55;
-            let __t218: ::routh::__private::f64 = __t104 * __t194;
-            let __t220: ::routh::__private::f64 = __t217 - __t218;
-            let __t221: ::routh::__private::f64 = __v7 * __t163;
-            let __t222: ::routh::__private::f64 = __t190 * __t195;
-            let __t224: ::routh::__private::f64 = __t221 - __t222;
-            let __t225: ::routh::__private::f64 = __t192 * __t195;
-            let __t226: ::routh::__private::f64 = -__t225;
-            let __t227: ::routh::__private::f64 = __t194 * __t195;
-            let __t228: ::routh::__private::f64 = -__t227;
-            let __t229: ::routh::__private::f64 = __t192 * __t196;
-            let __t231: ::routh::__private::f64 = __t221 - __t229;
-            let __t232: ::routh::__private::f64 = __t194 * __t196;
-            let __t233: ::routh::__private::f64 = -__t232;
-            let __t234: ::routh::__private::f64 = __v8 * __t163;
-            let __t235: ::routh::__private::f64 = __t194 * __t197;
-            let __t237: ::routh::__private::f64 = __t234 - __t235;
-            let __t238: ::routh::__private::f64 = -__t55;
+            let __t113: ::routh::__private::f64 = __t82 * __t86;
+            let __t115: ::routh::__private::f64 = __t98 - __t113;
+            let __t116: ::routh::__private::f64 = __t84 * __t86;
+            let __t117: ::routh::__private::f64 = -__t116;
+            let __t118: ::routh::__private::f64 = __t48 * __t87;
+            let __t120: ::routh::__private::f64 = __v8 - __t118;
+            let __t121: ::routh::__private::f64 = __t80 * __t87;
+            let __t122: ::routh::__private::f64 = -__t121;
+            let __t123: ::routh::__private::f64 = __t82 * __t87;
+            let __t124: ::routh::__private::f64 = -__t123;
+            let __t125: ::routh::__private::f64 = __v8 * __t55;
+            let __t126: ::routh::__private::f64 = __t84 * __t87;
+            let __t128: ::routh::__private::f64 = __t125 - __t126;
+            let __t129: ::routh::__private::f64 = __t55 * __t98;
+            let __t130: ::routh::__private::f64 = __t80 * __t88;
+            let __t132: ::routh::__private::f64 = __t129 - __t130;
+            let __t133: ::routh::__private::f64 = __t82 * __t88;
+            let __t134: ::routh::__private::f64 = -__t133;
+            let __t135: ::routh::__private::f64 = __t84 * __t88;
+            let __t136: ::routh::__private::f64 = -__t135;
+            let __t137: ::routh::__private::f64 = __t82 * __t89;
+            let __t139: ::routh::__private::f64 = __t129 - __t137;
+            let __t140: ::routh::__private::f64 = __t84 * __t89;
+            let __t141: ::routh::__private::f64 = -__t140;
+            let __t142: ::routh::__private::f64 = __t55 * __t125;
+            let __t143: ::routh::__private::f64 = __t84 * __t90;
+            let __t145: ::routh::__private::f64 = __t142 - __t143;
+            let __t146: ::routh::__private::f64 = -__t55;
             ::routh::__private::RouthBundle {
                 routhian: __t61,
                 psi_dot: __t55,
-                dr_domega: ::routh::__private::Vector3::new(__t170, __t172, __t174),
-                dr_dgamma: ::routh::__private::Vector3::new(__t178, __t182, __t187),
-                dr_dp: __t238,
+                dr_domega: ::routh::__private::Vector3::new(__t72, __t73, __t74),
+                dr_dgamma: ::routh::__private::Vector3::new(__t75, __t76, __t78),
+                dr_dp: __t146,
                 d2r_domega2: ::routh::__private::Matrix3::new(
+                    __t93,
+                    __t95,
+                    __t97,
+                    __t95,
+                    __t108,
                     __t110,
-                    __t112,
-                    __t114,
-                    __t112,
-                    __t125,
-                    __t127,
-                    __t114,
-                    __t127,
-                    __t137,
+                    __t97,
+                    __t110,
+                    __t120,
                 ),
                 d2r_domega_dgamma: ::routh::__private::Matrix3::new(
-                    __t201,
-                    __t203,
-                    __t205,
-                    __t207,
-                    __t210,
-                    __t212,
-                    __t214,
-                    __t216,
-                    __t220,
+                    __t101,
+                    __t103,
+                    __t105,
+                    __t112,
+                    __t115,
+                    __t117,
+                    __t122,
+                    __t124,
+                    __t128,
                 ),
                 d2r_dgamma2: ::routh::__private::Matrix3::new(
-                    __t224,
-                    __t226,
-                    __t228,
-                    __t226,
-                    __t231,
-                    __t233,
-                    __t228,
-                    __t233,
-                    __t237,
+                    __t132,
+                    __t134,
+                    __t136,
+                    __t134,
+                    __t139,
+                    __t141,
+                    __t136,
+                    __t141,
+                    __t145,
                 ),
             }
         }
@@ -800,224 +793,162 @@ const _: () = {
             let __t49: ::routh::__private::f64 = __v5 * __t48;
             let __t50: ::routh::__private::f64 = __t47 + __t49;
             let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
-            let __t69: ::routh::__private::f64 = __v3 * __v7;
-            let __t72: ::routh::__private::f64 = __v4 * __v7;
-            let __t102: ::routh::__private::f64 = __t54 * __t69;
-            let __t103: ::routh::__private::f64 = __t54 * __t72;
-            let __t104: ::routh::__private::f64 = __t48 * __t54;
-            let __t108: ::routh::__private::f64 = __t69 * __t102;
-            let __t110: ::routh::__private::f64 = __v7 - __t108;
-            let __t111: ::routh::__private::f64 = __t72 * __t102;
-            let __t112: ::routh::__private::f64 = -__t111;
-            let __t113: ::routh::__private::f64 = __t48 * __t102;
-            let __t114: ::routh::__private::f64 = -__t113;
-            let __t123: ::routh::__private::f64 = __t72 * __t103;
-            let __t125: ::routh::__private::f64 = __v7 - __t123;
-            let __t126: ::routh::__private::f64 = __t48 * __t103;
-            let __t127: ::routh::__private::f64 = -__t126;
-            let __t135: ::routh::__private::f64 = __t48 * __t104;
-            let __t137: ::routh::__private::f64 = __v8 - __t135;
-            let __t239: ::routh::__private::f64 = __v6 * __t54;
-            let __t313: ::routh::__private::f64 = __t239 * __t239;
-            let __t317: ::routh::__private::f64 = __t69 * __t239;
-            let __t318: ::routh::__private::f64 = __t72 * __t239;
-            let __t319: ::routh::__private::f64 = __t48 * __t239;
-            let __t320: ::routh::__private::f64 = __t69 * __t313;
-            let __t322: ::routh::__private::f64 = __t72 * __t313;
-            let __t324: ::routh::__private::f64 = __t48 * __t313;
-            let __t326: ::routh::__private::f64 = __t324 - __v9;
-            let __t331: ::routh::__private::f64 = __t54 * __t317;
-            let __t333: ::routh::__private::f64 = __t54 * __t318;
-            let __t335: ::routh::__private::f64 = __t54 * __t319;
-            let __t337: ::routh::__private::f64 = __v7 * __t239;
-            let __t338: ::routh::__private::f64 = __t102 * __t317;
-            let __t340: ::routh::__private::f64 = (-2f64) * __t338;
-            let __t341: ::routh::__private::f64 = __t337 + __t340;
-            let __t342: ::routh::__private::f64 = __t102 * __t318;
-            let __t345: ::routh::__private::f64 = __t102 * __t319;
-            let __t348: ::routh::__private::f64 = __t103 * __t317;
-            let __t351: ::routh::__private::f64 = __t103 * __t318;
-            let __t353: ::routh::__private::f64 = (-2f64) * __t351;
-            let __t354: ::routh::__private::f64 = __t337 + __t353;
-            let __t355: ::routh::__private::f64 = __t103 * __t319;
-            let __t358: ::routh::__private::f64 = __t104 * __t317;
-            let __t361: ::routh::__private::f64 = __t104 * __t318;
-            let __t364: ::routh::__private::f64 = __v8 * __t239;
-            let __t365: ::routh::__private::f64 = __t104 * __t319;
-            let __t367: ::routh::__private::f64 = (-2f64) * __t365;
-            let __t368: ::routh::__private::f64 = __t364 + __t367;
-            let __t369: ::routh::__private::f64 = __v7 * __t313;
-            let __t370: ::routh::__private::f64 = __t317 * __t331;
-            let __t373: ::routh::__private::f64 = (-4f64) * __t370;
-            let __t374: ::routh::__private::f64 = __t369 + __t373;
-            let __t375: ::routh::__private::f64 = __t318 * __t331;
-            let __t379: ::routh::__private::f64 = __t319 * __t331;
-            let __t383: ::routh::__private::f64 = __t318 * __t333;
-            let __t386: ::routh::__private::f64 = (-4f64) * __t383;
-            let __t387: ::routh::__private::f64 = __t369 + __t386;
-            let __t388: ::routh::__private::f64 = __t319 * __t333;
-            let __t392: ::routh::__private::f64 = __v8 * __t313;
-            let __t393: ::routh::__private::f64 = __t319 * __t335;
-            let __t396: ::routh::__private::f64 = (-4f64) * __t393;
-            let __t397: ::routh::__private::f64 = __t392 + __t396;
-            let __t411: ::routh::__private::f64 = __v5 * __t341;
-            let __t413: ::routh::__private::f64 = __v3 * __t345;
-            let __t414: ::routh::__private::f64 = (-2f64) * __t413;
-            let __t415: ::routh::__private::f64 = __t414 - __t411;
-            let __t416: ::routh::__private::f64 = __v4 * __t341;
-            let __t417: ::routh::__private::f64 = __v3 * __t342;
-            let __t418: ::routh::__private::f64 = (-2f64) * __t417;
-            let __t419: ::routh::__private::f64 = 2f64 * __t417;
-            let __t420: ::routh::__private::f64 = __t416 + __t419;
-            let __t421: ::routh::__private::f64 = __v5 * __t354;
-            let __t422: ::routh::__private::f64 = __v4 * __t355;
-            let __t423: ::routh::__private::f64 = (-2f64) * __t422;
-            let __t424: ::routh::__private::f64 = 2f64 * __t422;
-            let __t425: ::routh::__private::f64 = __t421 + __t424;
-            let __t432: ::routh::__private::f64 = __v4 * __t348;
-            let __t433: ::routh::__private::f64 = (-2f64) * __t432;
-            let __t434: ::routh::__private::f64 = __v3 * __t354;
-            let __t436: ::routh::__private::f64 = __t433 - __t434;
-            let __t437: ::routh::__private::f64 = __v5 * __t361;
-            let __t438: ::routh::__private::f64 = (-2f64) * __t437;
-            let __t439: ::routh::__private::f64 = __v4 * __t368;
-            let __t441: ::routh::__private::f64 = __t438 - __t439;
-            let __t442: ::routh::__private::f64 = __v5 * __t358;
-            let __t443: ::routh::__private::f64 = (-2f64) * __t442;
-            let __t444: ::routh::__private::f64 = 2f64 * __t442;
-            let __t445: ::routh::__private::f64 = __v3 * __t368;
-            let __t446: ::routh::__private::f64 = __t444 + __t445;
-            let __t456: ::routh::__private::f64 = __t423 - __t421;
-            let __t457: ::routh::__private::f64 = 2f64 * __t437;
-            let __t458: ::routh::__private::f64 = __t439 + __t457;
-            let __t459: ::routh::__private::f64 = 2f64 * __t413;
-            let __t460: ::routh::__private::f64 = __t411 + __t459;
-            let __t464: ::routh::__private::f64 = __t443 - __t445;
-            let __t466: ::routh::__private::f64 = __t418 - __t416;
-            let __t467: ::routh::__private::f64 = 2f64 * __t432;
-            let __t468: ::routh::__private::f64 = __t434 + __t467;
-            let __t471: ::routh::__private::f64 = __t415 + __t456;
-            let __t472: ::routh::__private::f64 = __t319 + __t471;
-            let __t473: ::routh::__private::f64 = 0.5f64 * __t472;
-            let __t474: ::routh::__private::f64 = __t420 + __t458;
-            let __t475: ::routh::__private::f64 = __t474 - __t318;
-            let __t476: ::routh::__private::f64 = 0.5f64 * __t475;
-            let __t477: ::routh::__private::f64 = __t425 + __t460;
-            let __t478: ::routh::__private::f64 = __t477 - __t319;
-            let __t479: ::routh::__private::f64 = 0.5f64 * __t478;
-            let __t480: ::routh::__private::f64 = __t436 + __t464;
-            let __t481: ::routh::__private::f64 = __t317 + __t480;
-            let __t482: ::routh::__private::f64 = 0.5f64 * __t481;
-            let __t483: ::routh::__private::f64 = __t441 + __t466;
-            let __t484: ::routh::__private::f64 = __t318 + __t483;
-            let __t485: ::routh::__private::f64 = 0.5f64 * __t484;
-            let __t486: ::routh::__private::f64 = __t446 + __t468;
-            let __t487: ::routh::__private::f64 = __t486 - __t317;
-            let __t488: ::routh::__private::f64 = 0.5f64 * __t487;
-            let __t489: ::routh::__private::f64 = __v3 * __t320;
-            let __t490: ::routh::__private::f64 = __v4 * __t322;
-            let __t491: ::routh::__private::f64 = __v5 * __t326;
-            let __t492: ::routh::__private::f64 = __t489 + __t490;
-            let __t493: ::routh::__private::f64 = __t491 + __t492;
-            let __t495: ::routh::__private::f64 = __t493 - __t374;
-            let __t497: ::routh::__private::f64 = __t493 - __t387;
-            let __t499: ::routh::__private::f64 = __t493 - __t397;
-            let __t500: ::routh::__private::f64 = __v5 * __t375;
-            let __t501: ::routh::__private::f64 = 4f64 * __t500;
-            let __t502: ::routh::__private::f64 = __v4 * __t379;
-            let __t503: ::routh::__private::f64 = 4f64 * __t502;
-            let __t504: ::routh::__private::f64 = (-4f64) * __t502;
-            let __t505: ::routh::__private::f64 = __t501 + __t504;
-            let __t506: ::routh::__private::f64 = __v5 * __t497;
-            let __t507: ::routh::__private::f64 = __v4 * __t388;
-            let __t509: ::routh::__private::f64 = (-4f64) * __t507;
-            let __t510: ::routh::__private::f64 = __t506 + __t509;
-            let __t511: ::routh::__private::f64 = __v5 * __t388;
-            let __t512: ::routh::__private::f64 = 4f64 * __t511;
-            let __t513: ::routh::__private::f64 = __v4 * __t499;
-            let __t515: ::routh::__private::f64 = __t512 - __t513;
-            let __t516: ::routh::__private::f64 = __v5 * __t495;
-            let __t518: ::routh::__private::f64 = __v3 * __t379;
-            let __t519: ::routh::__private::f64 = 4f64 * __t518;
-            let __t520: ::routh::__private::f64 = __t519 - __t516;
-            let __t521: ::routh::__private::f64 = (-4f64) * __t500;
-            let __t522: ::routh::__private::f64 = __v3 * __t388;
-            let __t523: ::routh::__private::f64 = 4f64 * __t522;
-            let __t524: ::routh::__private::f64 = __t521 + __t523;
-            let __t525: ::routh::__private::f64 = __v5 * __t379;
-            let __t527: ::routh::__private::f64 = (-4f64) * __t525;
-            let __t528: ::routh::__private::f64 = __v3 * __t499;
-            let __t529: ::routh::__private::f64 = __t527 + __t528;
-            let __t530: ::routh::__private::f64 = __v4 * __t495;
-            let __t531: ::routh::__private::f64 = __v3 * __t375;
-            let __t533: ::routh::__private::f64 = (-4f64) * __t531;
-            let __t534: ::routh::__private::f64 = __t530 + __t533;
-            let __t535: ::routh::__private::f64 = __v4 * __t375;
-            let __t536: ::routh::__private::f64 = 4f64 * __t535;
-            let __t537: ::routh::__private::f64 = __v3 * __t497;
-            let __t539: ::routh::__private::f64 = __t536 - __t537;
-            let __t540: ::routh::__private::f64 = (-4f64) * __t522;
-            let __t541: ::routh::__private::f64 = __t503 + __t540;
-            let __t542: ::routh::__private::f64 = __v5 * __t510;
-            let __t543: ::routh::__private::f64 = __v4 * __t515;
-            let __t545: ::routh::__private::f64 = __t542 - __t543;
-            let __t546: ::routh::__private::f64 = __v5 * __t505;
-            let __t548: ::routh::__private::f64 = __v3 * __t515;
-            let __t549: ::routh::__private::f64 = __t548 - __t546;
-            let __t550: ::routh::__private::f64 = __v4 * __t505;
-            let __t551: ::routh::__private::f64 = __v3 * __t510;
-            let __t553: ::routh::__private::f64 = __t550 - __t551;
-            let __t554: ::routh::__private::f64 = __v5 * __t524;
-            let __t555: ::routh::__private::f64 = __v4 * __t529;
-            let __t557: ::routh::__private::f64 = __t554 - __t555;
-            let __t558: ::routh::__private::f64 = __v5 * __t520;
-            let __t560: ::routh::__private::f64 = __v3 * __t529;
-            let __t561: ::routh::__private::f64 = __t560 - __t558;
-            let __t562: ::routh::__private::f64 = __v4 * __t520;
-            let __t563: ::routh::__private::f64 = __v3 * __t524;
-            let __t565: ::routh::__private::f64 = __t562 - __t563;
-            let __t566: ::routh::__private::f64 = __v5 * __t539;
-            let __t567: ::routh::__private::f64 = __v4 * __t541;
-            let __t569: ::routh::__private::f64 = __t566 - __t567;
-            let __t570: ::routh::__private::f64 = __v5 * __t534;
-            let __t572: ::routh::__private::f64 = __v3 * __t541;
-            let __t573: ::routh::__private::f64 = __t572 - __t570;
-            let __t574: ::routh::__private::f64 = __v4 * __t534;
-            let __t575: ::routh::__private::f64 = __v3 * __t539;
-            let __t577: ::routh::__private::f64 = __t574 - __t575;
+            let __t62: ::routh::__private::f64 = __v3 * __v7;
+            let __t63: ::routh::__private::f64 = __v4 * __v7;
+            let __t85: ::routh::__private::f64 = __t54 * __t62;
+            let __t86: ::routh::__private::f64 = __t54 * __t63;
+            let __t87: ::routh::__private::f64 = __t48 * __t54;
+            let __t91: ::routh::__private::f64 = __t62 * __t85;
+            let __t93: ::routh::__private::f64 = __v7 - __t91;
+            let __t94: ::routh::__private::f64 = __t63 * __t85;
+            let __t95: ::routh::__private::f64 = -__t94;
+            let __t96: ::routh::__private::f64 = __t48 * __t85;
+            let __t97: ::routh::__private::f64 = -__t96;
+            let __t106: ::routh::__private::f64 = __t63 * __t86;
+            let __t108: ::routh::__private::f64 = __v7 - __t106;
+            let __t109: ::routh::__private::f64 = __t48 * __t86;
+            let __t110: ::routh::__private::f64 = -__t109;
+            let __t118: ::routh::__private::f64 = __t48 * __t87;
+            let __t120: ::routh::__private::f64 = __v8 - __t118;
+            let __t147: ::routh::__private::f64 = __v6 * __t54;
+            let __t153: ::routh::__private::f64 = __t62 * __t147;
+            let __t154: ::routh::__private::f64 = __t63 * __t147;
+            let __t155: ::routh::__private::f64 = __t48 * __t147;
+            let __t156: ::routh::__private::f64 = __t147 * __t153;
+            let __t157: ::routh::__private::f64 = __t147 * __t154;
+            let __t158: ::routh::__private::f64 = __t147 * __t155;
+            let __t159: ::routh::__private::f64 = __t158 - __v9;
+            let __t163: ::routh::__private::f64 = __t54 * __t153;
+            let __t165: ::routh::__private::f64 = __t54 * __t154;
+            let __t167: ::routh::__private::f64 = __t54 * __t155;
+            let __t169: ::routh::__private::f64 = __v7 * __t147;
+            let __t170: ::routh::__private::f64 = __t85 * __t153;
+            let __t173: ::routh::__private::f64 = (-2f64) * __t170;
+            let __t174: ::routh::__private::f64 = __t169 + __t173;
+            let __t184: ::routh::__private::f64 = __t86 * __t154;
+            let __t186: ::routh::__private::f64 = (-2f64) * __t184;
+            let __t187: ::routh::__private::f64 = __t169 + __t186;
+            let __t197: ::routh::__private::f64 = __v8 * __t147;
+            let __t198: ::routh::__private::f64 = __t87 * __t155;
+            let __t200: ::routh::__private::f64 = (-2f64) * __t198;
+            let __t201: ::routh::__private::f64 = __t197 + __t200;
+            let __t202: ::routh::__private::f64 = __t147 * __t169;
+            let __t203: ::routh::__private::f64 = __t153 * __t163;
+            let __t208: ::routh::__private::f64 = (-4f64) * __t203;
+            let __t209: ::routh::__private::f64 = __t202 + __t208;
+            let __t210: ::routh::__private::f64 = __t154 * __t163;
+            let __t214: ::routh::__private::f64 = __t155 * __t163;
+            let __t218: ::routh::__private::f64 = __t154 * __t165;
+            let __t221: ::routh::__private::f64 = (-4f64) * __t218;
+            let __t222: ::routh::__private::f64 = __t202 + __t221;
+            let __t223: ::routh::__private::f64 = __t155 * __t165;
+            let __t227: ::routh::__private::f64 = __t147 * __t197;
+            let __t228: ::routh::__private::f64 = __t155 * __t167;
+            let __t231: ::routh::__private::f64 = (-4f64) * __t228;
+            let __t232: ::routh::__private::f64 = __t227 + __t231;
+            let __t237: ::routh::__private::f64 = __t174 + __t187;
+            let __t238: ::routh::__private::f64 = __t201 + __t237;
+            let __t240: ::routh::__private::f64 = __v5 * __t238;
+            let __t241: ::routh::__private::f64 = 0.5f64 * __t240;
+            let __t242: ::routh::__private::f64 = (-0.5f64) * __t240;
+            let __t243: ::routh::__private::f64 = __v4 * __t238;
+            let __t244: ::routh::__private::f64 = 0.5f64 * __t243;
+            let __t245: ::routh::__private::f64 = __v3 * __t238;
+            let __t246: ::routh::__private::f64 = 0.5f64 * __t245;
+            let __t247: ::routh::__private::f64 = (-0.5f64) * __t245;
+            let __t248: ::routh::__private::f64 = (-0.5f64) * __t243;
+            let __t249: ::routh::__private::f64 = __v3 * __t156;
+            let __t250: ::routh::__private::f64 = __v4 * __t157;
+            let __t251: ::routh::__private::f64 = __v5 * __t159;
+            let __t252: ::routh::__private::f64 = __t249 + __t250;
+            let __t253: ::routh::__private::f64 = __t251 + __t252;
+            let __t255: ::routh::__private::f64 = __t253 - __t209;
+            let __t257: ::routh::__private::f64 = __t253 - __t222;
+            let __t259: ::routh::__private::f64 = __t253 - __t232;
+            let __t260: ::routh::__private::f64 = __v5 * __t210;
+            let __t261: ::routh::__private::f64 = 4f64 * __t260;
+            let __t262: ::routh::__private::f64 = __v4 * __t214;
+            let __t264: ::routh::__private::f64 = (-4f64) * __t262;
+            let __t265: ::routh::__private::f64 = __t261 + __t264;
+            let __t266: ::routh::__private::f64 = __v5 * __t257;
+            let __t267: ::routh::__private::f64 = __v4 * __t223;
+            let __t269: ::routh::__private::f64 = (-4f64) * __t267;
+            let __t270: ::routh::__private::f64 = __t266 + __t269;
+            let __t271: ::routh::__private::f64 = __v5 * __t223;
+            let __t272: ::routh::__private::f64 = 4f64 * __t271;
+            let __t273: ::routh::__private::f64 = __v4 * __t259;
+            let __t275: ::routh::__private::f64 = __t272 - __t273;
+            let __t276: ::routh::__private::f64 = __v5 * __t255;
+            let __t278: ::routh::__private::f64 = __v3 * __t214;
+            let __t279: ::routh::__private::f64 = 4f64 * __t278;
+            let __t280: ::routh::__private::f64 = __t279 - __t276;
+            let __t281: ::routh::__private::f64 = (-4f64) * __t260;
+            let __t282: ::routh::__private::f64 = __v3 * __t223;
+            let __t283: ::routh::__private::f64 = 4f64 * __t282;
+            let __t284: ::routh::__private::f64 = __t281 + __t283;
+            let __t285: ::routh::__private::f64 = __v5 * __t214;
+            let __t287: ::routh::__private::f64 = (-4f64) * __t285;
+            let __t288: ::routh::__private::f64 = __v3 * __t259;
+            let __t289: ::routh::__private::f64 = __t287 + __t288;
+            let __t290: ::routh::__private::f64 = __v4 * __t255;
+            let __t291: ::routh::__private::f64 = __v3 * __t210;
+            let __t293: ::routh::__private::f64 = (-4f64) * __t291;
+            let __t294: ::routh::__private::f64 = __t290 + __t293;
+            let __t295: ::routh::__private::f64 = __v4 * __t210;
+            let __t296: ::routh::__private::f64 = 4f64 * __t295;
+            let __t297: ::routh::__private::f64 = __v3 * __t257;
+            let __t299: ::routh::__private::f64 = __t296 - __t297;
+            let __t302: ::routh::__private::f64 = __v5 * __t270;
+            let __t303: ::routh::__private::f64 = __v4 * __t275;
+            let __t305: ::routh::__private::f64 = __t302 - __t303;
+            let __t306: ::routh::__private::f64 = __v5 * __t265;
+            let __t308: ::routh::__private::f64 = __v3 * __t275;
+            let __t309: ::routh::__private::f64 = __t308 - __t306;
+            let __t310: ::routh::__private::f64 = __v4 * __t265;
+            let __t311: ::routh::__private::f64 = __v3 * __t270;
+            let __t313: ::routh::__private::f64 = __t310 - __t311;
+            let __t314: ::routh::__private::f64 = __v5 * __t280;
+            let __t316: ::routh::__private::f64 = __v3 * __t289;
+            let __t317: ::routh::__private::f64 = __t316 - __t314;
+            let __t318: ::routh::__private::f64 = __v4 * __t280;
+            let __t319: ::routh::__private::f64 = __v3 * __t284;
+            let __t321: ::routh::__private::f64 = __t318 - __t319;
+            let __t322: ::routh::__private::f64 = __v4 * __t294;
+            let __t323: ::routh::__private::f64 = __v3 * __t299;
+            let __t325: ::routh::__private::f64 = __t322 - __t323;
             ::routh::__private::GyroscopicSystem {
                 a: ::routh::__private::Matrix3::new(
+                    __t93,
+                    __t95,
+                    __t97,
+                    __t95,
+                    __t108,
                     __t110,
-                    __t112,
-                    __t114,
-                    __t112,
-                    __t125,
-                    __t127,
-                    __t114,
-                    __t127,
-                    __t137,
+                    __t97,
+                    __t110,
+                    __t120,
                 ),
                 g: ::routh::__private::Matrix3::new(
                     0f64,
-                    __t473,
-                    __t476,
-                    __t479,
+                    __t242,
+                    __t244,
+                    __t241,
                     0f64,
-                    __t482,
-                    __t485,
-                    __t488,
+                    __t247,
+                    __t248,
+                    __t246,
                     0f64,
                 ),
                 c: ::routh::__private::Matrix3::new(
-                    __t545,
-                    __t549,
-                    __t553,
-                    __t557,
-                    __t561,
-                    __t565,
-                    __t569,
-                    __t573,
-                    __t577,
+                    __t305,
+                    __t309,
+                    __t313,
+                    __t309,
+                    __t317,
+                    __t321,
+                    __t313,
+                    __t321,
+                    __t325,
                 ),
             }
         }

@@ -183,46 +183,51 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let hs = g.mul(half, slack);
     let corr = g.mul(psi_dot, hs);
     let routhian = g.sub(lagrangian, corr);
-    // The derivatives go through (10) and (36): with ψ̇ as an independent slot,
-    // 𝒜(Ω, γ, ψ̇) = L(Ω + ψ̇γ, γ) = L(Ω, γ) + ψ̇ q(Ω, γ) + ½ψ̇² D(γ), where q = (∂L/∂ω(Ω), γ) and
-    // D = γᵀJγ (L is quadratic in ω, so the expansion is exact). Because ∂𝒜/∂ψ̇ = p_ψ on the
+    // The derivatives go through (10) and (36): with ψ̇ an independent slot,
+    // 𝒜(Ω, γ, ψ̇) = L(Ω + ψ̇γ, γ) = L(Ω, γ) + ψ̇ q(Ω, γ) + ψ̇² d(γ), where q = (∂L/∂ω(Ω), γ) and
+    // d = ½γᵀJγ (L is quadratic in ω, so the expansion is exact). Because ∂𝒜/∂ψ̇ = p_ψ on the
     // level set (12), the first derivatives of R are those of 𝒜 ((18)–(19)), and the Hessian of R
     // is the Schur complement R_xy = 𝒜_xy − 𝒜_xψ̇ 𝒜_ψ̇y / D (differentiate (12) implicitly).
-    // Each piece stays as compact as L itself; ψ̇ is bound to (38) at the end.
-    let psi_var = g.new_var("ψ̇");
-    let psi = g.var_id(psi_var);
-    let psi2 = g.powi(psi, 2);
+    // Each piece stays as compact as L itself.
+    //
+    // 𝒜 is a quadratic polynomial in ψ̇ with coefficients L, q, d, so its derivatives are written
+    // straight from theirs, in Horner form and with ψ̇ bound to (38) from the start: with
+    // e_x = ψ̇ d_x and m_x = q_x + e_x,
+    //   𝒜_x = L_x + ψ̇ m_x,   𝒜_xψ̇ = q_x + 2ψ̇ d_x = m_x + e_x,   𝒜_xy = L_xy + ψ̇(q_xy + ψ̇ d_xy).
+    // The common factor ψ̇ is applied once per entry, the products ψ̇ d_x are shared by the
+    // gradient and the Schur vector, and ψ̇ d_xy is the same node as ψ̇ q_x'y' wherever the
+    // coefficients agree (ψ̇I in both the ΩΓ and the γγ block of a gyrostat).
     let hd = g.mul(half, vertical_inertia);
-    let quad = g.mul(psi2, hd);
-    let lin = g.mul(psi, cyclic_momentum);
-    let a1 = g.add(lagrangian, lin);
-    let big_a = g.add(a1, quad);
-    let a_w = grad(g, big_a, &w_vars);
-    let a_g = grad(g, big_a, &g_vars);
-    let a_wg: Vec<Id> = a_w.iter().chain(a_g.iter()).copied().collect();
-    // 𝒜_xψ̇ for x = (Ω, γ), and 𝒜_xψ̇ / D.
-    let k: Vec<Id> = a_wg.iter().map(|&f| g.diff(f, psi_var)).collect();
+    let vars: Vec<Var> = w_vars.iter().chain(g_vars.iter()).copied().collect();
+    let l_x: Vec<Id> = vars.iter().map(|&v| g.diff(lagrangian, v)).collect();
+    let q_x: Vec<Id> = vars.iter().map(|&v| g.diff(cyclic_momentum, v)).collect();
+    let d_x: Vec<Id> = vars.iter().map(|&v| g.diff(hd, v)).collect();
+    let e_x: Vec<Id> = d_x.iter().map(|&d| g.mul(psi_dot, d)).collect();
+    let m_x: Vec<Id> = q_x.iter().zip(&e_x).map(|(&q, &e)| g.add(q, e)).collect();
+    let grad_x: [Id; 6] = std::array::from_fn(|i| {
+        let t = g.mul(psi_dot, m_x[i]);
+        g.add(l_x[i], t)
+    });
+    // 𝒜_xψ̇ for x = (Ω, γ), and 𝒜_xψ̇ / D (one reciprocal of D for all of them).
+    let k: Vec<Id> = m_x.iter().zip(&e_x).map(|(&m, &e)| g.add(m, e)).collect();
     let r_d = g.recip(vertical_inertia);
     let kd: Vec<Id> = k.iter().map(|&x| g.mul(x, r_d)).collect();
-    let vars: Vec<Var> = w_vars.iter().chain(g_vars.iter()).copied().collect();
-    let mut hess = [[zero; 6]; 6];
+    let mut hess_x = [[zero; 6]; 6];
     for i in 0..6 {
         for j in i..6 {
-            let d = g.diff(a_wg[i], vars[j]);
+            let l_xy = g.diff(l_x[i], vars[j]);
+            let q_xy = g.diff(q_x[i], vars[j]);
+            let d_xy = g.diff(d_x[i], vars[j]);
+            let inner = g.mul(psi_dot, d_xy);
+            let inner = g.add(q_xy, inner);
+            let a2 = g.mul(psi_dot, inner);
+            let a_xy = g.add(l_xy, a2);
             let c = g.mul(kd[i], k[j]);
-            let h = g.sub(d, c);
-            hess[i][j] = h;
-            hess[j][i] = h;
+            let h = g.sub(a_xy, c);
+            hess_x[i][j] = h;
+            hess_x[j][i] = h;
         }
     }
-    // Bind ψ̇ in the gradient and the Hessian of 𝒜 in x = (Ω, γ).
-    let mut pre: Vec<Id> = a_wg.clone();
-    pre.extend(hess.iter().flatten());
-    let bind: HashMap<Var, Id> = [(psi_var, psi_dot)].into_iter().collect();
-    let post = subst_vec(g, &pre, &bind);
-    let (grad_x, hess_x) = post.split_at(6);
-    let grad_x: [Id; 6] = std::array::from_fn(|i| grad_x[i]);
-    let hess_x: [[Id; 6]; 6] = std::array::from_fn(|i| std::array::from_fn(|j| hess_x[6 * i + j]));
     let bundle = Bundle {
         routhian,
         psi_dot,
@@ -245,7 +250,7 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let Bundle {
         routhian: r0,
         psi_dot: psi_dot_at_rest,
-        dr_domega: dw0,
+        dr_domega: _,
         dr_dgamma: dg0,
         dr_dp: _,
         d2r_domega2: a0,
@@ -253,7 +258,7 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         d2r_dgamma2: h0,
     } = Bundle::from_flat(subst_vec(g, &rest.flatten(), &at_rest));
     let amended_potential = g.neg(r0);
-    let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dw0, &dg0, &mx0, &h0);
+    let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dg0, &mx0, &h0);
 
     Outputs {
         lagrangian,
@@ -297,19 +302,17 @@ fn block(h: &[[Id; 6]; 6], row: usize, col: usize) -> M3 {
 
 /// errata E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these
 /// are the entries printed in section 5 in matrix form.
-fn gyroscopic(g: &mut Graph, gm: &V3, dr_dw: &V3, dr_dg: &V3, mx: &M3, h: &M3) -> (M3, M3) {
+///
+/// G is written in closed form: `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` holds for every 3×3 `M`, and
+/// differentiating Theorem 2's identity (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω`
+/// for every Routh function (at every Ω, so at Ω = 0 too). Hence `2G = (tr M)[γ]×` exactly; the
+/// matrix products are not formed.
+fn gyroscopic(g: &mut Graph, gm: &V3, dr_dg: &V3, mx: &M3, h: &M3) -> (M3, M3) {
     let gx = skew3(g, gm);
-    let rw = skew3(g, dr_dw);
-    let p1 = matmul3(g, mx, &gx);
-    let p2 = matmul3(g, &gx, &transpose3(mx));
     let half = g.constant(0.5);
-    let gyro_g: M3 = std::array::from_fn(|i| {
-        std::array::from_fn(|k| {
-            let s = g.add(p1[i][k], p2[i][k]);
-            let s = g.sub(s, rw[i][k]);
-            g.mul(half, s)
-        })
-    });
+    let tr = g.sum([mx[0][0], mx[1][1], mx[2][2]]);
+    let half_tr = g.mul(half, tr);
+    let gyro_g: M3 = std::array::from_fn(|i| std::array::from_fn(|k| g.mul(half_tr, gx[i][k])));
     let mu = dot3(g, dr_dg, gm);
     let stiff: M3 = std::array::from_fn(|i| {
         std::array::from_fn(|k| {
@@ -321,7 +324,16 @@ fn gyroscopic(g: &mut Graph, gm: &V3, dr_dw: &V3, dr_dg: &V3, mx: &M3, h: &M3) -
             }
         })
     });
+    // C is symmetric (H is): its upper triangle, mirrored.
     let t = matmul3(g, &transpose3(&gx), &stiff);
-    let gyro_c = matmul3(g, &t, &gx);
+    let mut gyro_c = [[mu; 3]; 3];
+    for i in 0..3 {
+        for k in i..3 {
+            let col = [gx[0][k], gx[1][k], gx[2][k]];
+            let c = dot3(g, &t[i], &col);
+            gyro_c[i][k] = c;
+            gyro_c[k][i] = c;
+        }
+    }
     (gyro_g, gyro_c)
 }

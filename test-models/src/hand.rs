@@ -2,25 +2,42 @@
 //! "hand-written bundle" that the benches compare the generated code against (README, “Performance”).
 //!
 //! For `L = ½ωᵀIω + (K + Bγ)·ω − m g r·γ` with `I` symmetric, write
-//! `u = Iγ`, `D = γ·u`, `w = IΩ`, `a = K + Bγ`, `s = p_ψ − w·γ − a·γ`, `ψ̇ = s/D` (38),
-//! `v = w + a + Bᵀγ` (so that `∂s/∂γ = −v`, `∂s/∂Ω = −u`, `∂D/∂γ = 2u`) and
-//! `q = ∂ψ̇/∂γ = −(v + 2ψ̇u)/D` (while `∂ψ̇/∂Ω = −u/D`). Then, from (39)
-//! `R = ½Ω·w + a·Ω − m g r·γ − ½ s ψ̇`:
 //!
-//! - `∂R/∂Ω = w + a + ψ̇u`, `∂R/∂p_ψ = −ψ̇`,
-//! - `∂R/∂γ = BᵀΩ − m g r + ψ̇v + ψ̇²u`,
-//! - `∂²R/∂Ω² = I − uuᵀ/D`,
-//! - `∂²R/∂Ω_i∂γ_j = B + ψ̇I + uqᵀ`,
-//! - `∂²R/∂γ² = −D qqᵀ + ψ̇(B + Bᵀ) + ψ̇²I` (the first term is `−ttᵀ/D` with `t = v + 2ψ̇u`).
+//! - `w = Iγ`, `s = γᵀIγ = γ·w`, `ρ = 1/s` (the one division);
+//! - `c = IΩ + a` with `a = K + Bγ` (so `∂L/∂ω(Ω) = c`);
+//! - `q = p_ψ − c·γ` and `u = qρ = ψ̇` (38);
+//! - `h = c + Bᵀγ` (so `∂q/∂γ = −h`, `∂q/∂Ω = −w`, `∂s/∂γ = 2w`);
+//! - `t = h + 2uw` and `z = ρt` (so `∂u/∂γ = −z`, `∂u/∂Ω = −ρw`);
+//! - `P = B + uI`.
+//!
+//! Then, from (39) `R = ½Ω·IΩ + a·Ω − m g r·γ − ½ q²/s`:
+//!
+//! - `R = ½(Ω·(c + a) − q u) − m g r·γ`, `∂R/∂p_ψ = −u`;
+//! - `∂R/∂Ω = c + uw`;
+//! - `∂R/∂γ = BᵀΩ − m g r + u(h + uw)`;
+//! - `∂²R/∂Ω² = I − (ρw)wᵀ`;
+//! - `∂²R/∂Ω_i∂γ_j = P − w zᵀ` (`= B + uI − wtᵀ/s`);
+//! - `∂²R/∂γ² = u(P + Bᵀ) − t zᵀ` (`= u(B + Bᵀ) + u²I − ttᵀ/s`; symmetric, because
+//!   `P + Bᵀ = B + Bᵀ + uI`).
+//!
+//! Every block reuses `w`, `c`, `u`, `uw`, `t`, `z` and `P`; `t = (h + uw) + uw` reuses the sum
+//! `∂R/∂γ` needs; only the upper triangles of the symmetric `I`, `∂²R/∂Ω²` and `∂²R/∂γ²` are
+//! formed.
+//!
+//! [`hand_gyroscopic_system`] writes A, G, C of (64) in closed form from a bundle (any model):
+//! differentiating (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω` (`M = ∂²R/∂Ω∂γ`), and
+//! `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for any `M`, so `2G = (tr M)[γ]×`; `C` is the symmetric
+//! sandwich `[γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with the zeros of `[γ]×` skipped.
 
 use nalgebra::{Matrix3, Vector3};
-use routh_core::RouthBundle;
+use routh_core::{GyroscopicSystem, RouthBundle};
 
 use crate::Gyrostat;
 
 /// Every output of the gyrostat's Routh function at `(Ω, γ, p_ψ)`, written out by hand in
-/// plain `f64` arithmetic: one reciprocal of `D = γᵀIγ`, shared products, and only the upper
-/// triangles of the symmetric `I`, `∂²R/∂Ω²` and `∂²R/∂γ²`.
+/// plain `f64` arithmetic (see the module documentation for the formulas): one reciprocal of
+/// `s = γᵀIγ`, shared products across the blocks, and only the upper triangles of the symmetric
+/// `I`, `∂²R/∂Ω²` and `∂²R/∂γ²`.
 ///
 /// `m.inertia` must be symmetric (only its upper triangle is read). `γ` need not be a unit
 /// vector; `γᵀIγ` must be non-zero.
@@ -49,76 +66,58 @@ pub fn hand_gyrostat_bundle(
     let (b10, b11, b12) = (b[(1, 0)], b[(1, 1)], b[(1, 2)]);
     let (b20, b21, b22) = (b[(2, 0)], b[(2, 1)], b[(2, 2)]);
 
-    // u = Iγ, w = IΩ.
-    let u0 = i00 * g0 + i01 * g1 + i02 * g2;
-    let u1 = i01 * g0 + i11 * g1 + i12 * g2;
-    let u2 = i02 * g0 + i12 * g1 + i22 * g2;
-    let w0 = i00 * o0 + i01 * o1 + i02 * o2;
-    let w1 = i01 * o0 + i11 * o1 + i12 * o2;
-    let w2 = i02 * o0 + i12 * o1 + i22 * o2;
+    // w = Iγ, s = γ·w and its one reciprocal.
+    let w0 = i00 * g0 + i01 * g1 + i02 * g2;
+    let w1 = i01 * g0 + i11 * g1 + i12 * g2;
+    let w2 = i02 * g0 + i12 * g1 + i22 * g2;
+    let s = g0 * w0 + g1 * w1 + g2 * w2;
+    let rho = 1.0 / s;
 
-    // a = K + Bγ, Bᵀγ, BᵀΩ.
-    let a0 = m.rotor.x + b00 * g0 + b01 * g1 + b02 * g2;
-    let a1 = m.rotor.y + b10 * g0 + b11 * g1 + b12 * g2;
-    let a2 = m.rotor.z + b20 * g0 + b21 * g1 + b22 * g2;
-    let btg0 = b00 * g0 + b10 * g1 + b20 * g2;
-    let btg1 = b01 * g0 + b11 * g1 + b21 * g2;
-    let btg2 = b02 * g0 + b12 * g1 + b22 * g2;
-    let bto0 = b00 * o0 + b10 * o1 + b20 * o2;
-    let bto1 = b01 * o0 + b11 * o1 + b21 * o2;
-    let bto2 = b02 * o0 + b12 * o1 + b22 * o2;
+    // a = K + Bγ, c = IΩ + a.
+    let a0 = m.rotor.x + (b00 * g0 + b01 * g1 + b02 * g2);
+    let a1 = m.rotor.y + (b10 * g0 + b11 * g1 + b12 * g2);
+    let a2 = m.rotor.z + (b20 * g0 + b21 * g1 + b22 * g2);
+    let c0 = (i00 * o0 + i01 * o1 + i02 * o2) + a0;
+    let c1 = (i01 * o0 + i11 * o1 + i12 * o2) + a1;
+    let c2 = (i02 * o0 + i12 * o1 + i22 * o2) + a2;
 
-    // D = γᵀIγ and its one reciprocal; s and ψ̇.
-    let d = g0 * u0 + g1 * u1 + g2 * u2;
-    let inv_d = 1.0 / d;
-    let wa0 = w0 + a0;
-    let wa1 = w1 + a1;
-    let wa2 = w2 + a2;
-    let s = p_psi - (wa0 * g0 + wa1 * g1 + wa2 * g2);
-    let pd = s * inv_d;
-    let pd2 = pd * pd;
+    // q = p_ψ − c·γ, u = ψ̇ = q/s, uw.
+    let q = p_psi - (c0 * g0 + c1 * g1 + c2 * g2);
+    let u = q * rho;
+    let uw0 = u * w0;
+    let uw1 = u * w1;
+    let uw2 = u * w2;
 
     // m g r.
     let mg = m.mass * m.g;
     let (mr0, mr1, mr2) = (mg * m.com.x, mg * m.com.y, mg * m.com.z);
 
-    // R = Ω·(½w + a) − m g r·γ − ½ s ψ̇.
-    let routhian = o0 * (0.5 * w0 + a0) + o1 * (0.5 * w1 + a1) + o2 * (0.5 * w2 + a2)
-        - (mr0 * g0 + mr1 * g1 + mr2 * g2)
-        - 0.5 * s * pd;
+    // R = ½(Ω·(c + a) − q u) − m g r·γ.
+    let routhian = 0.5 * (o0 * (c0 + a0) + o1 * (c1 + a1) + o2 * (c2 + a2) - q * u)
+        - (mr0 * g0 + mr1 * g1 + mr2 * g2);
 
-    // v = w + a + Bᵀγ; t = v + 2ψ̇u; q = −t/D.
-    let v0 = wa0 + btg0;
-    let v1 = wa1 + btg1;
-    let v2 = wa2 + btg2;
-    let pd_u0 = pd * u0;
-    let pd_u1 = pd * u1;
-    let pd_u2 = pd * u2;
-    let t0 = v0 + 2.0 * pd_u0;
-    let t1 = v1 + 2.0 * pd_u1;
-    let t2 = v2 + 2.0 * pd_u2;
-    let q0 = -t0 * inv_d;
-    let q1 = -t1 * inv_d;
-    let q2 = -t2 * inv_d;
+    let dr_domega = Vector3::new(c0 + uw0, c1 + uw1, c2 + uw2);
 
-    let dr_domega = Vector3::new(wa0 + pd_u0, wa1 + pd_u1, wa2 + pd_u2);
-    // ψ̇v + ψ̇²u = ψ̇(v + ψ̇u).
+    // h + uw with h = c + Bᵀγ; ∂R/∂γ = BᵀΩ − m g r + u(h + uw).
+    let hu0 = dr_domega.x + (b00 * g0 + b10 * g1 + b20 * g2);
+    let hu1 = dr_domega.y + (b01 * g0 + b11 * g1 + b21 * g2);
+    let hu2 = dr_domega.z + (b02 * g0 + b12 * g1 + b22 * g2);
     let dr_dgamma = Vector3::new(
-        bto0 - mr0 + pd * (v0 + pd_u0),
-        bto1 - mr1 + pd * (v1 + pd_u1),
-        bto2 - mr2 + pd * (v2 + pd_u2),
+        (b00 * o0 + b10 * o1 + b20 * o2) - mr0 + u * hu0,
+        (b01 * o0 + b11 * o1 + b21 * o2) - mr1 + u * hu1,
+        (b02 * o0 + b12 * o1 + b22 * o2) - mr2 + u * hu2,
     );
 
-    // ∂²R/∂Ω² = I − (u/D)uᵀ, symmetric.
-    let hu0 = u0 * inv_d;
-    let hu1 = u1 * inv_d;
-    let hu2 = u2 * inv_d;
-    let aa00 = i00 - hu0 * u0;
-    let aa01 = i01 - hu0 * u1;
-    let aa02 = i02 - hu0 * u2;
-    let aa11 = i11 - hu1 * u1;
-    let aa12 = i12 - hu1 * u2;
-    let aa22 = i22 - hu2 * u2;
+    // ∂²R/∂Ω² = I − (ρw)wᵀ, symmetric.
+    let rw0 = rho * w0;
+    let rw1 = rho * w1;
+    let rw2 = rho * w2;
+    let aa00 = i00 - rw0 * w0;
+    let aa01 = i01 - rw0 * w1;
+    let aa02 = i02 - rw0 * w2;
+    let aa11 = i11 - rw1 * w1;
+    let aa12 = i12 - rw1 * w2;
+    let aa22 = i22 - rw2 * w2;
     #[rustfmt::skip]
     let d2r_domega2 = Matrix3::new(
         aa00, aa01, aa02,
@@ -126,27 +125,38 @@ pub fn hand_gyrostat_bundle(
         aa02, aa12, aa22,
     );
 
-    // ∂²R/∂Ω_i∂γ_j = B + ψ̇I + u qᵀ.
-    let pi00 = pd * i00;
-    let pi01 = pd * i01;
-    let pi02 = pd * i02;
-    let pi11 = pd * i11;
-    let pi12 = pd * i12;
-    let pi22 = pd * i22;
+    // t = h + 2uw = (h + uw) + uw, z = ρt.
+    let t0 = hu0 + uw0;
+    let t1 = hu1 + uw1;
+    let t2 = hu2 + uw2;
+    let z0 = rho * t0;
+    let z1 = rho * t1;
+    let z2 = rho * t2;
+
+    // P = B + uI; ∂²R/∂Ω_i∂γ_j = P − w zᵀ.
+    let ui00 = u * i00;
+    let ui01 = u * i01;
+    let ui02 = u * i02;
+    let ui11 = u * i11;
+    let ui12 = u * i12;
+    let ui22 = u * i22;
+    let (p00, p01, p02) = (b00 + ui00, b01 + ui01, b02 + ui02);
+    let (p10, p11, p12) = (b10 + ui01, b11 + ui11, b12 + ui12);
+    let (p20, p21, p22) = (b20 + ui02, b21 + ui12, b22 + ui22);
     #[rustfmt::skip]
     let d2r_domega_dgamma = Matrix3::new(
-        b00 + pi00 + u0 * q0, b01 + pi01 + u0 * q1, b02 + pi02 + u0 * q2,
-        b10 + pi01 + u1 * q0, b11 + pi11 + u1 * q1, b12 + pi12 + u1 * q2,
-        b20 + pi02 + u2 * q0, b21 + pi12 + u2 * q1, b22 + pi22 + u2 * q2,
+        p00 - w0 * z0, p01 - w0 * z1, p02 - w0 * z2,
+        p10 - w1 * z0, p11 - w1 * z1, p12 - w1 * z2,
+        p20 - w2 * z0, p21 - w2 * z1, p22 - w2 * z2,
     );
 
-    // ∂²R/∂γ² = t qᵀ + ψ̇(B + Bᵀ) + ψ̇²I (t qᵀ = −D q qᵀ), symmetric.
-    let cc00 = t0 * q0 + pd * (b00 + b00) + pd2 * i00;
-    let cc01 = t0 * q1 + pd * (b01 + b10) + pd2 * i01;
-    let cc02 = t0 * q2 + pd * (b02 + b20) + pd2 * i02;
-    let cc11 = t1 * q1 + pd * (b11 + b11) + pd2 * i11;
-    let cc12 = t1 * q2 + pd * (b12 + b21) + pd2 * i12;
-    let cc22 = t2 * q2 + pd * (b22 + b22) + pd2 * i22;
+    // ∂²R/∂γ² = u(P + Bᵀ) − t zᵀ, symmetric.
+    let cc00 = u * (p00 + b00) - t0 * z0;
+    let cc01 = u * (p01 + b10) - t0 * z1;
+    let cc02 = u * (p02 + b20) - t0 * z2;
+    let cc11 = u * (p11 + b11) - t1 * z1;
+    let cc12 = u * (p12 + b21) - t1 * z2;
+    let cc22 = u * (p22 + b22) - t2 * z2;
     #[rustfmt::skip]
     let d2r_dgamma2 = Matrix3::new(
         cc00, cc01, cc02,
@@ -156,14 +166,79 @@ pub fn hand_gyrostat_bundle(
 
     RouthBundle {
         routhian,
-        psi_dot: pd,
+        psi_dot: u,
         dr_domega,
         dr_dgamma,
-        dr_dp: -pd,
+        dr_dp: -u,
         d2r_domega2,
         d2r_domega_dgamma,
         d2r_dgamma2,
     }
+}
+
+/// A, G, C of (64) from a bundle at `γ`, in closed form (equal to
+/// [`GyroscopicSystem::from_bundle`] up to round-off, for any model): `A = ∂²R/∂Ω²`,
+/// `G = ½ tr(∂²R/∂Ω∂γ) [γ]×` (module documentation) and `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×`,
+/// `μ = (∂R/∂γ, γ)`, written entry by entry (upper triangle, no products with the zeros of
+/// `[γ]×`).
+#[inline]
+pub fn hand_gyroscopic_system(bundle: &RouthBundle, gamma: &Vector3<f64>) -> GyroscopicSystem {
+    let (g0, g1, g2) = (gamma.x, gamma.y, gamma.z);
+    let m = &bundle.d2r_domega_dgamma;
+    let half_tr = 0.5 * (m[(0, 0)] + m[(1, 1)] + m[(2, 2)]);
+    let (x0, x1, x2) = (half_tr * g0, half_tr * g1, half_tr * g2);
+    #[rustfmt::skip]
+    let g = Matrix3::new(
+        0.0, -x2, x1,
+        x2, 0.0, -x0,
+        -x1, x0, 0.0,
+    );
+    // K = μE − H (symmetric); Y = K[γ]× (Y₀₀ is never read); C = [γ]×ᵀY.
+    let h = &bundle.d2r_dgamma2;
+    let mu = bundle.dr_dgamma.x * g0 + bundle.dr_dgamma.y * g1 + bundle.dr_dgamma.z * g2;
+    let (k00, k01, k02) = (mu - h[(0, 0)], -h[(0, 1)], -h[(0, 2)]);
+    let (k11, k12, k22) = (mu - h[(1, 1)], -h[(1, 2)], mu - h[(2, 2)]);
+    // Columns of [γ]×: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0).
+    let y01 = k02 * g0 - k00 * g2;
+    let y02 = k00 * g1 - k01 * g0;
+    let y10 = k11 * g2 - k12 * g1;
+    let y11 = k12 * g0 - k01 * g2;
+    let y12 = k01 * g1 - k11 * g0;
+    let y20 = k12 * g2 - k22 * g1;
+    let y21 = k22 * g0 - k02 * g2;
+    let y22 = k02 * g1 - k12 * g0;
+    // Rows of [γ]×ᵀ: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0).
+    let c00 = g2 * y10 - g1 * y20;
+    let c01 = g2 * y11 - g1 * y21;
+    let c02 = g2 * y12 - g1 * y22;
+    let c11 = g0 * y21 - g2 * y01;
+    let c12 = g0 * y22 - g2 * y02;
+    let c22 = g1 * y02 - g0 * y12;
+    #[rustfmt::skip]
+    let c = Matrix3::new(
+        c00, c01, c02,
+        c01, c11, c12,
+        c02, c12, c22,
+    );
+    GyroscopicSystem {
+        a: bundle.d2r_domega2,
+        g,
+        c,
+    }
+}
+
+/// Every output of the gyrostat at `(Ω, γ, p_ψ)` and A, G, C of (64) there: the hand-written
+/// counterpart of `bundle` followed by [`GyroscopicSystem::from_bundle`].
+#[inline]
+pub fn hand_gyrostat_system(
+    m: &Gyrostat,
+    big_omega: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+) -> (RouthBundle, GyroscopicSystem) {
+    let bundle = hand_gyrostat_bundle(m, big_omega, gamma, p_psi);
+    let system = hand_gyroscopic_system(&bundle, gamma);
+    (bundle, system)
 }
 
 #[cfg(test)]
@@ -234,7 +309,16 @@ mod tests {
                     want.d2r_dgamma2.as_slice(),
                 ),
             ];
-            for (name, g, w) in outputs {
+            // A, G, C: the closed forms against `from_bundle` of the num-dual bundle.
+            let (bundle, sys) = hand_gyrostat_system(&model, &omega, &gamma, p);
+            assert_eq!(bundle, got);
+            let want_sys = GyroscopicSystem::from_bundle(&want, &gamma);
+            let systems: [(&str, &[f64], &[f64]); 3] = [
+                ("A", sys.a.as_slice(), want_sys.a.as_slice()),
+                ("G", sys.g.as_slice(), want_sys.g.as_slice()),
+                ("C", sys.c.as_slice(), want_sys.c.as_slice()),
+            ];
+            for (name, g, w) in outputs.into_iter().chain(systems) {
                 let e = rel_err(g, w);
                 assert!(
                     e <= 1e-12,
@@ -246,6 +330,8 @@ mod tests {
             assert_eq!(got.dr_dp, -got.psi_dot);
             assert_eq!(got.d2r_domega2, got.d2r_domega2.transpose());
             assert_eq!(got.d2r_dgamma2, got.d2r_dgamma2.transpose());
+            assert_eq!(sys.c, sys.c.transpose());
+            assert_eq!(sys.g, -sys.g.transpose());
         }
         assert!(worst <= 1e-12, "worst relative error {worst:e}");
     }

@@ -137,7 +137,7 @@ impl Graph {
     }
 
     /// `a + b` with only the canonical order and the identities that cannot recurse.
-    fn add_plain(&mut self, a: Id, b: Id) -> Id {
+    pub(super) fn add_plain(&mut self, a: Id, b: Id) -> Id {
         let (a, b) = self.order(a, b);
         if self.is_const(a, 0.0) {
             return b;

@@ -52,7 +52,37 @@ impl Graph {
         if let Some(s) = self.collect_like_terms(a, b) {
             return s;
         }
+        if let Some(s) = self.reassociate(a, b) {
+            return s;
+        }
         self.intern(Node::Add(a, b))
+    }
+
+    /// `(x + y) + b = (x + b) + y` (and `2x + b = (x + b) + x`) when the partial sum `x + b`
+    /// already exists: the sum then costs no more than before and reuses a node that other
+    /// expressions compute anyway, so the partial sum `x + y` may drop out of the generated
+    /// code (e.g. `(B + Bᵀ)ᵢⱼ + ψ̇Iᵢⱼ` becomes `(Bᵢⱼ + ψ̇Iᵢⱼ) + Bⱼᵢ`, reusing an entry of
+    /// `∂²R/∂Ω∂γ` in `∂²R/∂γ²`). Exact up to the rounding of a reordered sum.
+    fn reassociate(&mut self, a: Id, b: Id) -> Option<Id> {
+        for (s, other) in [(a, b), (b, a)] {
+            if self.as_const(other).is_some() {
+                continue;
+            }
+            let (x, y) = match self.node(s) {
+                Node::Add(x, y) if self.as_const(x).is_none() => (x, y),
+                Node::Mul(c, x) if self.is_const(c, 2.0) => (x, x),
+                _ => continue,
+            };
+            for (part, rest) in [(x, y), (y, x)] {
+                let (m, n) = self.order(part, other);
+                if let Some(&found) = self.memo.get(&Node::Add(m, n)) {
+                    // Written as is: like-term collection (which found nothing to cancel in
+                    // `a + b`) would only undo it.
+                    return Some(self.add_plain(found, rest));
+                }
+            }
+        }
+        None
     }
 
     /// `a - b`.
