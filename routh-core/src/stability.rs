@@ -335,6 +335,21 @@ pub fn classify_with<M: Routhian>(
 
 /// A [`StabilityReport`] with the Krein signatures of the roots of `f₂`, from
 /// [`classify_with_krein`]. Its `Display` shows them next to the roots.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// use routh_core::stability::{classify_with_krein, KreinReport};
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// // The sleeping top between Maievskii's bound (p = 2) and the secular bound (p = 2.5).
+/// let s = SteadyMotion::at(&top, Vector3::z(), 2.2, true)?;
+/// let k: KreinReport = classify_with_krein(&top, &s, &ClassifyOptions::default())?;
+/// assert_eq!(k.report.verdict, Stability::GyroscopicallyStabilized);
+/// // One mode of each energy sign for each sign of the frequency.
+/// assert_eq!(k.krein_signatures.iter().map(|&x| x as i32).sum::<i32>(), 0);
+/// println!("{k}");
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct KreinReport {
     /// The stability analysis.
@@ -377,6 +392,8 @@ impl fmt::Display for KreinReport {
 /// `+1`; a gyroscopically stabilised one has one mode of each sign per sign of ω.
 ///
 /// Errors: as [`classify_with`].
+///
+/// See the example on [`KreinReport`].
 pub fn classify_with_krein<M: Routhian>(
     model: &M,
     steady: &SteadyMotion,

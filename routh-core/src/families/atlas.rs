@@ -225,6 +225,17 @@ pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
 ///
 /// Errors: as [`stability_atlas`], plus [`RouthError::InvalidOption`] when the thread pool cannot
 /// be built.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let family = |mgl: f64, p: f64| (Gyrostat::lagrange_top(1.0, 1.25, mgl), p);
+/// let opts = AtlasOptions { nx: 11, ny: 11, threads: 2, ..Default::default() };
+/// let parallel = stability_atlas_parallel(family, Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts)?;
+/// let sequential = stability_atlas(family, Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts)?;
+/// assert_eq!(parallel, sequential);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 pub fn stability_atlas_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>(
     family: F,
     gamma_guess: Vector3<f64>,

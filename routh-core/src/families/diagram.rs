@@ -15,6 +15,17 @@ use crate::validate::check_finite;
 
 /// One comparison of [`bifurcation_diagram_checked`]: the number of steady motions that the
 /// branches give at `s` against the number that [`steady_motions`](crate::steady_motions) finds.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let c = families::bifurcation_diagram_checked(
+///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// let first: &families::CountCheck = &c.checks[0];
+/// assert_eq!(first.on_branches, first.searched); // the hanging and the sleeping top
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct CountCheck {
     /// The parameter value (the middle of an interval between consecutive events).
@@ -26,6 +37,17 @@ pub struct CountCheck {
 }
 
 /// A diagram with the count checks made while building it.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let c: families::CheckedDiagram = families::bifurcation_diagram_checked(
+///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// assert!(c.consistent());
+/// assert_eq!(c.checks.len(), c.diagram.events.len() + 1);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct CheckedDiagram {
     /// The diagram.
@@ -37,6 +59,8 @@ pub struct CheckedDiagram {
 
 impl CheckedDiagram {
     /// Whether every count check agreed.
+    ///
+    /// See the example on [`CheckedDiagram`].
     pub fn consistent(&self) -> bool {
         self.checks.iter().all(|c| c.on_branches == c.searched)
     }
@@ -82,6 +106,19 @@ pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
 /// [`bifurcation_diagram`] with the count checks it made.
 ///
 /// Errors: as [`bifurcation_diagram`].
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let c = families::bifurcation_diagram_checked(
+///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// for check in &c.checks {
+///     println!("s = {}: {} on branches, {} searched", check.s, check.on_branches, check.searched);
+/// }
+/// assert!(c.consistent());
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
     family: F,
     range: (f64, f64),

@@ -46,6 +46,17 @@ pub use diagram::{
 ///
 /// Steps are measured in the pseudo-arclength of the curve `(s, γ)`, with `s` scaled by the
 /// length of the range (so a step of `0.01` is about 1 % of the range where the branch is flat).
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// // Smaller steps and no count checks, the rest by default.
+/// let opts = ContinuationOptions { max_step: 0.02, verify_counts: false, ..Default::default() };
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (1.5, 3.0), &opts)?;
+/// assert_eq!(d.events.len(), 2);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContinuationOptions {
     /// First step, relative to the length of the range (default `0.01`).
@@ -96,6 +107,20 @@ impl Default for ContinuationOptions {
 }
 
 /// Every branch of steady motions over a range of the parameter, with its events.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// // The hanging top, the sleeping top and the circles of tilted precessions.
+/// assert_eq!(d.branches.len(), 3);
+/// for e in &d.events {
+///     let branch: &Branch = &d.branches[e.branch];
+///     assert!(branch.points.first().unwrap().s <= e.s);
+/// }
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BifurcationDiagram {
     /// The branches; [`BranchEvent::branch`] indexes this list.
@@ -105,6 +130,17 @@ pub struct BifurcationDiagram {
 }
 
 /// One branch: a curve of steady motions `s ↦ γ(s)`, possibly turning back in `s` at folds.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// let circles = d.branches.iter().find(|b| !b.isolated).unwrap();
+/// // Every point of a branch of circles is degenerate (errata E8).
+/// assert!(circles.points.iter().all(|q| q.report.verdict == Stability::Degenerate));
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Branch {
     /// The points, in arclength order along the branch.
@@ -115,6 +151,16 @@ pub struct Branch {
 }
 
 /// One point of a branch.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// let q: &BranchPoint = &d.branches[0].points[0];
+/// assert_eq!(q.steady.p_psi, q.s); // the family follows p_ψ itself
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct BranchPoint {
     /// The parameter.
@@ -126,6 +172,17 @@ pub struct BranchPoint {
 }
 
 /// An event on a branch, located by solving its defining equation.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// let hh = d.events.iter().find(|e| e.kind == EventKind::HamiltonianHopf).unwrap();
+/// assert_eq!((hh.before, hh.after), (Stability::Unstable, Stability::GyroscopicallyStabilized));
+/// println!("{hh}");
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct BranchEvent {
     /// What happens.
@@ -145,6 +202,11 @@ pub struct BranchEvent {
 }
 
 /// The kinds of [`BranchEvent`] and [`BoundaryCurve`].
+///
+/// ```
+/// use routh_core::EventKind;
+/// assert_eq!(EventKind::HamiltonianHopf.to_string(), "Hamiltonian–Hopf");
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum EventKind {
     /// A zero eigenvalue of the restricted second variation where the branch turns back in the
@@ -187,6 +249,17 @@ impl fmt::Display for BranchEvent {
 }
 
 /// Options of [`stability_atlas`].
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let opts = AtlasOptions { nx: 11, ny: 11, ..Default::default() };
+/// let atlas = stability_atlas(
+///     |mgl, p| (Gyrostat::lagrange_top(1.0, 1.25, mgl), p),
+///     Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts)?;
+/// assert_eq!((atlas.x.len(), atlas.y.len()), (11, 11));
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct AtlasOptions {
     /// Number of grid nodes along x (default `41`), at least 2.
@@ -225,6 +298,18 @@ impl Default for AtlasOptions {
 
 /// The verdict of one steady motion over a grid of two parameters, with the boundary curves of
 /// its stability regions.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let opts = AtlasOptions { nx: 11, ny: 11, ..Default::default() };
+/// let atlas: StabilityAtlas = stability_atlas(
+///     |mgl, p| (Gyrostat::lagrange_top(1.0, 1.25, mgl), p),
+///     Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts)?;
+/// // At mgl = 0.5, p = 4 the sleeping top is secularly stable (p² > mglC²/(C − A₁) = 3.125).
+/// assert_eq!(atlas.verdicts[10][0], Some(Stability::SecularlyStable));
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct StabilityAtlas {
     /// The grid abscissae, ascending.
@@ -239,6 +324,21 @@ pub struct StabilityAtlas {
 }
 
 /// A curve in the parameter plane where the verdict of the followed steady motion changes.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let opts = AtlasOptions { nx: 11, ny: 11, ..Default::default() };
+/// let atlas = stability_atlas(
+///     |mgl, p| (Gyrostat::lagrange_top(1.0, 1.25, mgl), p),
+///     Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts)?;
+/// let secular: &BoundaryCurve =
+///     atlas.boundaries.iter().find(|b| b.kind == EventKind::BranchPoint).unwrap();
+/// for &(mgl, p) in &secular.points {
+///     assert!((p * p * 0.25 / 1.5625 - mgl).abs() < 1e-8 * mgl); // p² = mglC²/(C − A₁)
+/// }
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct BoundaryCurve {
     /// Which defining equation: a zero eigenvalue of the restricted second variation
