@@ -21,150 +21,112 @@ pub struct LagrangeTop {
     clippy::nursery
 )]
 const _: () = {
+    type __F64 = ::routh::__private::f64;
+    type __Vector3 = ::routh::__private::Vector3<::routh::__private::f64>;
+    type __Matrix3 = ::routh::__private::Matrix3<::routh::__private::f64>;
+    type __RouthBundle = ::routh::__private::RouthBundle;
+    type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
     #[automatically_derived]
     impl ::routh::__private::Lagrangian for LagrangeTop {
         #[inline]
-        fn lagrangian(
-            &self,
-            __omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-        ) -> ::routh::__private::f64 {
-            let __v0: ::routh::__private::f64 = __omega[0usize];
-            let __v1: ::routh::__private::f64 = __omega[1usize];
-            let __v2: ::routh::__private::f64 = __omega[2usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t11: ::routh::__private::f64 = __v0 * __v0;
-            let __t12: ::routh::__private::f64 = __v1 * __v1;
-            let __t13: ::routh::__private::f64 = __t11 + __t12;
-            let __t14: ::routh::__private::f64 = __v7 * __t13;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t16: ::routh::__private::f64 = __v2 * __t15;
-            let __t17: ::routh::__private::f64 = __t14 + __t16;
-            let __t18: ::routh::__private::f64 = 0.5f64 * __t17;
-            let __t19: ::routh::__private::f64 = __v5 * __v9;
-            let __t22: ::routh::__private::f64 = __t18 - __t19;
+        fn lagrangian(&self, __omega: &__Vector3, __gamma: &__Vector3) -> __F64 {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t11: __F64 = __v0 * __v0;
+            let __t12: __F64 = __v1 * __v1;
+            let __t13: __F64 = __t11 + __t12;
+            let __t14: __F64 = __v7 * __t13;
+            let __t15: __F64 = __v2 * __v8;
+            let __t16: __F64 = __v2 * __t15;
+            let __t17: __F64 = __t14 + __t16;
+            let __t18: __F64 = 0.5f64 * __t17;
+            let __t19: __F64 = __v5 * __v9;
+            let __t22: __F64 = __t18 - __t19;
             __t22
         }
         #[inline]
-        fn dl_domega(
-            &self,
-            __omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-        ) -> ::routh::__private::Vector3<::routh::__private::f64> {
-            let __v0: ::routh::__private::f64 = __omega[0usize];
-            let __v1: ::routh::__private::f64 = __omega[1usize];
-            let __v2: ::routh::__private::f64 = __omega[2usize];
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            ::routh::__private::Vector3::new(__t26, __t29, __t15)
+        fn dl_domega(&self, __omega: &__Vector3, __gamma: &__Vector3) -> __Vector3 {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            __Vector3::new(__t26, __t29, __t15)
         }
         #[inline]
-        fn dl_dgamma(
-            &self,
-            __omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-        ) -> ::routh::__private::Vector3<::routh::__private::f64> {
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t32: ::routh::__private::f64 = -__v9;
-            ::routh::__private::Vector3::new(0f64, 0f64, __t32)
+        fn dl_dgamma(&self, __omega: &__Vector3, __gamma: &__Vector3) -> __Vector3 {
+            let __v9: __F64 = self.mgl;
+            let __t32: __F64 = -__v9;
+            __Vector3::new(0f64, 0f64, __t32)
         }
         #[inline]
-        fn d2l_domega2(
-            &self,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-        ) -> ::routh::__private::Matrix3<::routh::__private::f64> {
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            ::routh::__private::Matrix3::new(
-                __v7,
-                0f64,
-                0f64,
-                0f64,
-                __v7,
-                0f64,
-                0f64,
-                0f64,
-                __v8,
-            )
+        fn d2l_domega2(&self, __gamma: &__Vector3) -> __Matrix3 {
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            __Matrix3::new(__v7, 0f64, 0f64, 0f64, __v7, 0f64, 0f64, 0f64, __v8)
         }
         #[inline]
         fn d2l_domega_dgamma(
             &self,
-            __omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-        ) -> ::routh::__private::Matrix3<::routh::__private::f64> {
-            ::routh::__private::Matrix3::new(
-                0f64,
-                0f64,
-                0f64,
-                0f64,
-                0f64,
-                0f64,
-                0f64,
-                0f64,
-                0f64,
-            )
+            __omega: &__Vector3,
+            __gamma: &__Vector3,
+        ) -> __Matrix3 {
+            __Matrix3::new(0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64)
         }
         #[inline]
-        fn energy(
-            &self,
-            __omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-        ) -> ::routh::__private::f64 {
-            let __v0: ::routh::__private::f64 = __omega[0usize];
-            let __v1: ::routh::__private::f64 = __omega[1usize];
-            let __v2: ::routh::__private::f64 = __omega[2usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t11: ::routh::__private::f64 = __v0 * __v0;
-            let __t12: ::routh::__private::f64 = __v1 * __v1;
-            let __t13: ::routh::__private::f64 = __t11 + __t12;
-            let __t14: ::routh::__private::f64 = __v7 * __t13;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t16: ::routh::__private::f64 = __v2 * __t15;
-            let __t17: ::routh::__private::f64 = __t14 + __t16;
-            let __t18: ::routh::__private::f64 = 0.5f64 * __t17;
-            let __t19: ::routh::__private::f64 = __v5 * __v9;
-            let __t22: ::routh::__private::f64 = __t18 - __t19;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t33: ::routh::__private::f64 = __v0 * __t26;
-            let __t34: ::routh::__private::f64 = __v1 * __t29;
-            let __t35: ::routh::__private::f64 = __t33 + __t34;
-            let __t36: ::routh::__private::f64 = __t16 + __t35;
-            let __t38: ::routh::__private::f64 = __t36 - __t22;
+        fn energy(&self, __omega: &__Vector3, __gamma: &__Vector3) -> __F64 {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t11: __F64 = __v0 * __v0;
+            let __t12: __F64 = __v1 * __v1;
+            let __t13: __F64 = __t11 + __t12;
+            let __t14: __F64 = __v7 * __t13;
+            let __t15: __F64 = __v2 * __v8;
+            let __t16: __F64 = __v2 * __t15;
+            let __t17: __F64 = __t14 + __t16;
+            let __t18: __F64 = 0.5f64 * __t17;
+            let __t19: __F64 = __v5 * __v9;
+            let __t22: __F64 = __t18 - __t19;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t33: __F64 = __v0 * __t26;
+            let __t34: __F64 = __v1 * __t29;
+            let __t35: __F64 = __t33 + __t34;
+            let __t36: __F64 = __t16 + __t35;
+            let __t38: __F64 = __t36 - __t22;
             __t38
         }
         #[inline]
-        fn cyclic_momentum(
-            &self,
-            __omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-        ) -> ::routh::__private::f64 {
-            let __v0: ::routh::__private::f64 = __omega[0usize];
-            let __v1: ::routh::__private::f64 = __omega[1usize];
-            let __v2: ::routh::__private::f64 = __omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
+        fn cyclic_momentum(&self, __omega: &__Vector3, __gamma: &__Vector3) -> __F64 {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
             __t43
         }
     }
@@ -173,251 +135,251 @@ const _: () = {
         #[inline]
         fn psi_dot(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::f64 {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t55: ::routh::__private::f64 = __t53 / __t50;
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __F64 {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t55: __F64 = __t53 / __t50;
             __t55
         }
         #[inline]
         fn routhian(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::f64 {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t11: ::routh::__private::f64 = __v0 * __v0;
-            let __t12: ::routh::__private::f64 = __v1 * __v1;
-            let __t13: ::routh::__private::f64 = __t11 + __t12;
-            let __t14: ::routh::__private::f64 = __v7 * __t13;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t16: ::routh::__private::f64 = __v2 * __t15;
-            let __t17: ::routh::__private::f64 = __t14 + __t16;
-            let __t18: ::routh::__private::f64 = 0.5f64 * __t17;
-            let __t19: ::routh::__private::f64 = __v5 * __v9;
-            let __t22: ::routh::__private::f64 = __t18 - __t19;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t55: ::routh::__private::f64 = __t53 / __t50;
-            let __t57: ::routh::__private::f64 = __t53 * __t55;
-            let __t60: ::routh::__private::f64 = (-0.5f64) * __t57;
-            let __t61: ::routh::__private::f64 = __t22 + __t60;
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __F64 {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t11: __F64 = __v0 * __v0;
+            let __t12: __F64 = __v1 * __v1;
+            let __t13: __F64 = __t11 + __t12;
+            let __t14: __F64 = __v7 * __t13;
+            let __t15: __F64 = __v2 * __v8;
+            let __t16: __F64 = __v2 * __t15;
+            let __t17: __F64 = __t14 + __t16;
+            let __t18: __F64 = 0.5f64 * __t17;
+            let __t19: __F64 = __v5 * __v9;
+            let __t22: __F64 = __t18 - __t19;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t55: __F64 = __t53 / __t50;
+            let __t57: __F64 = __t53 * __t55;
+            let __t60: __F64 = (-0.5f64) * __t57;
+            let __t61: __F64 = __t22 + __t60;
             __t61
         }
         #[inline]
         fn dr_domega(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::Vector3<::routh::__private::f64> {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t55: ::routh::__private::f64 = __t53 / __t50;
-            let __t62: ::routh::__private::f64 = __v3 * __v7;
-            let __t63: ::routh::__private::f64 = __v4 * __v7;
-            let __t69: ::routh::__private::f64 = __t55 * __t62;
-            let __t70: ::routh::__private::f64 = __t55 * __t63;
-            let __t71: ::routh::__private::f64 = __t48 * __t55;
-            let __t72: ::routh::__private::f64 = __t26 + __t69;
-            let __t73: ::routh::__private::f64 = __t29 + __t70;
-            let __t74: ::routh::__private::f64 = __t15 + __t71;
-            ::routh::__private::Vector3::new(__t72, __t73, __t74)
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __Vector3 {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t55: __F64 = __t53 / __t50;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t69: __F64 = __t55 * __t62;
+            let __t70: __F64 = __t55 * __t63;
+            let __t71: __F64 = __t48 * __t55;
+            let __t72: __F64 = __t26 + __t69;
+            let __t73: __F64 = __t29 + __t70;
+            let __t74: __F64 = __t15 + __t71;
+            __Vector3::new(__t72, __t73, __t74)
         }
         #[inline]
         fn dr_dgamma(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::Vector3<::routh::__private::f64> {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t55: ::routh::__private::f64 = __t53 / __t50;
-            let __t62: ::routh::__private::f64 = __v3 * __v7;
-            let __t63: ::routh::__private::f64 = __v4 * __v7;
-            let __t69: ::routh::__private::f64 = __t55 * __t62;
-            let __t70: ::routh::__private::f64 = __t55 * __t63;
-            let __t71: ::routh::__private::f64 = __t48 * __t55;
-            let __t72: ::routh::__private::f64 = __t26 + __t69;
-            let __t73: ::routh::__private::f64 = __t29 + __t70;
-            let __t74: ::routh::__private::f64 = __t15 + __t71;
-            let __t75: ::routh::__private::f64 = __t55 * __t72;
-            let __t76: ::routh::__private::f64 = __t55 * __t73;
-            let __t77: ::routh::__private::f64 = __t55 * __t74;
-            let __t78: ::routh::__private::f64 = __t77 - __v9;
-            ::routh::__private::Vector3::new(__t75, __t76, __t78)
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __Vector3 {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t55: __F64 = __t53 / __t50;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t69: __F64 = __t55 * __t62;
+            let __t70: __F64 = __t55 * __t63;
+            let __t71: __F64 = __t48 * __t55;
+            let __t72: __F64 = __t26 + __t69;
+            let __t73: __F64 = __t29 + __t70;
+            let __t74: __F64 = __t15 + __t71;
+            let __t75: __F64 = __t55 * __t72;
+            let __t76: __F64 = __t55 * __t73;
+            let __t77: __F64 = __t55 * __t74;
+            let __t78: __F64 = __t77 - __v9;
+            __Vector3::new(__t75, __t76, __t78)
         }
         #[inline]
         fn dr_dp(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::f64 {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t55: ::routh::__private::f64 = __t53 / __t50;
-            let __t146: ::routh::__private::f64 = -__t55;
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __F64 {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t55: __F64 = __t53 / __t50;
+            let __t146: __F64 = -__t55;
             __t146
         }
         #[inline]
         fn d2r_domega2(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::Matrix3<::routh::__private::f64> {
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
-            let __t62: ::routh::__private::f64 = __v3 * __v7;
-            let __t63: ::routh::__private::f64 = __v4 * __v7;
-            let __t85: ::routh::__private::f64 = __t54 * __t62;
-            let __t86: ::routh::__private::f64 = __t54 * __t63;
-            let __t87: ::routh::__private::f64 = __t48 * __t54;
-            let __t91: ::routh::__private::f64 = __t62 * __t85;
-            let __t93: ::routh::__private::f64 = __v7 - __t91;
-            let __t94: ::routh::__private::f64 = __t63 * __t85;
-            let __t95: ::routh::__private::f64 = -__t94;
-            let __t96: ::routh::__private::f64 = __t48 * __t85;
-            let __t97: ::routh::__private::f64 = -__t96;
-            let __t106: ::routh::__private::f64 = __t63 * __t86;
-            let __t108: ::routh::__private::f64 = __v7 - __t106;
-            let __t109: ::routh::__private::f64 = __t48 * __t86;
-            let __t110: ::routh::__private::f64 = -__t109;
-            let __t118: ::routh::__private::f64 = __t48 * __t87;
-            let __t120: ::routh::__private::f64 = __v8 - __t118;
-            ::routh::__private::Matrix3::new(
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __Matrix3 {
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t54: __F64 = 1.0f64 / __t50;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t85: __F64 = __t54 * __t62;
+            let __t86: __F64 = __t54 * __t63;
+            let __t87: __F64 = __t48 * __t54;
+            let __t91: __F64 = __t62 * __t85;
+            let __t93: __F64 = __v7 - __t91;
+            let __t94: __F64 = __t63 * __t85;
+            let __t95: __F64 = -__t94;
+            let __t96: __F64 = __t48 * __t85;
+            let __t97: __F64 = -__t96;
+            let __t106: __F64 = __t63 * __t86;
+            let __t108: __F64 = __v7 - __t106;
+            let __t109: __F64 = __t48 * __t86;
+            let __t110: __F64 = -__t109;
+            let __t118: __F64 = __t48 * __t87;
+            let __t120: __F64 = __v8 - __t118;
+            __Matrix3::new(
                 __t93,
                 __t95,
                 __t97,
@@ -432,72 +394,72 @@ const _: () = {
         #[inline]
         fn d2r_domega_dgamma(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::Matrix3<::routh::__private::f64> {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
-            let __t55: ::routh::__private::f64 = __t53 * __t54;
-            let __t62: ::routh::__private::f64 = __v3 * __v7;
-            let __t63: ::routh::__private::f64 = __v4 * __v7;
-            let __t69: ::routh::__private::f64 = __t55 * __t62;
-            let __t70: ::routh::__private::f64 = __t55 * __t63;
-            let __t71: ::routh::__private::f64 = __t48 * __t55;
-            let __t79: ::routh::__private::f64 = 2f64 * __t69;
-            let __t80: ::routh::__private::f64 = __t26 + __t79;
-            let __t81: ::routh::__private::f64 = 2f64 * __t70;
-            let __t82: ::routh::__private::f64 = __t29 + __t81;
-            let __t83: ::routh::__private::f64 = 2f64 * __t71;
-            let __t84: ::routh::__private::f64 = __t15 + __t83;
-            let __t85: ::routh::__private::f64 = __t54 * __t62;
-            let __t86: ::routh::__private::f64 = __t54 * __t63;
-            let __t87: ::routh::__private::f64 = __t48 * __t54;
-            let __t98: ::routh::__private::f64 = __v7 * __t55;
-            let __t99: ::routh::__private::f64 = __t80 * __t85;
-            let __t101: ::routh::__private::f64 = __t98 - __t99;
-            let __t102: ::routh::__private::f64 = __t82 * __t85;
-            let __t103: ::routh::__private::f64 = -__t102;
-            let __t104: ::routh::__private::f64 = __t84 * __t85;
-            let __t105: ::routh::__private::f64 = -__t104;
-            let __t111: ::routh::__private::f64 = __t80 * __t86;
-            let __t112: ::routh::__private::f64 = -__t111;
-            let __t113: ::routh::__private::f64 = __t82 * __t86;
-            let __t115: ::routh::__private::f64 = __t98 - __t113;
-            let __t116: ::routh::__private::f64 = __t84 * __t86;
-            let __t117: ::routh::__private::f64 = -__t116;
-            let __t121: ::routh::__private::f64 = __t80 * __t87;
-            let __t122: ::routh::__private::f64 = -__t121;
-            let __t123: ::routh::__private::f64 = __t82 * __t87;
-            let __t124: ::routh::__private::f64 = -__t123;
-            let __t125: ::routh::__private::f64 = __v8 * __t55;
-            let __t126: ::routh::__private::f64 = __t84 * __t87;
-            let __t128: ::routh::__private::f64 = __t125 - __t126;
-            ::routh::__private::Matrix3::new(
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __Matrix3 {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t54: __F64 = 1.0f64 / __t50;
+            let __t55: __F64 = __t53 * __t54;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t69: __F64 = __t55 * __t62;
+            let __t70: __F64 = __t55 * __t63;
+            let __t71: __F64 = __t48 * __t55;
+            let __t79: __F64 = 2f64 * __t69;
+            let __t80: __F64 = __t26 + __t79;
+            let __t81: __F64 = 2f64 * __t70;
+            let __t82: __F64 = __t29 + __t81;
+            let __t83: __F64 = 2f64 * __t71;
+            let __t84: __F64 = __t15 + __t83;
+            let __t85: __F64 = __t54 * __t62;
+            let __t86: __F64 = __t54 * __t63;
+            let __t87: __F64 = __t48 * __t54;
+            let __t98: __F64 = __v7 * __t55;
+            let __t99: __F64 = __t80 * __t85;
+            let __t101: __F64 = __t98 - __t99;
+            let __t102: __F64 = __t82 * __t85;
+            let __t103: __F64 = -__t102;
+            let __t104: __F64 = __t84 * __t85;
+            let __t105: __F64 = -__t104;
+            let __t111: __F64 = __t80 * __t86;
+            let __t112: __F64 = -__t111;
+            let __t113: __F64 = __t82 * __t86;
+            let __t115: __F64 = __t98 - __t113;
+            let __t116: __F64 = __t84 * __t86;
+            let __t117: __F64 = -__t116;
+            let __t121: __F64 = __t80 * __t87;
+            let __t122: __F64 = -__t121;
+            let __t123: __F64 = __t82 * __t87;
+            let __t124: __F64 = -__t123;
+            let __t125: __F64 = __v8 * __t55;
+            let __t126: __F64 = __t84 * __t87;
+            let __t128: __F64 = __t125 - __t126;
+            __Matrix3::new(
                 __t101,
                 __t103,
                 __t105,
@@ -512,68 +474,68 @@ const _: () = {
         #[inline]
         fn d2r_dgamma2(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::Matrix3<::routh::__private::f64> {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
-            let __t55: ::routh::__private::f64 = __t53 * __t54;
-            let __t62: ::routh::__private::f64 = __v3 * __v7;
-            let __t63: ::routh::__private::f64 = __v4 * __v7;
-            let __t69: ::routh::__private::f64 = __t55 * __t62;
-            let __t70: ::routh::__private::f64 = __t55 * __t63;
-            let __t71: ::routh::__private::f64 = __t48 * __t55;
-            let __t79: ::routh::__private::f64 = 2f64 * __t69;
-            let __t80: ::routh::__private::f64 = __t26 + __t79;
-            let __t81: ::routh::__private::f64 = 2f64 * __t70;
-            let __t82: ::routh::__private::f64 = __t29 + __t81;
-            let __t83: ::routh::__private::f64 = 2f64 * __t71;
-            let __t84: ::routh::__private::f64 = __t15 + __t83;
-            let __t88: ::routh::__private::f64 = __t54 * __t80;
-            let __t89: ::routh::__private::f64 = __t54 * __t82;
-            let __t90: ::routh::__private::f64 = __t54 * __t84;
-            let __t98: ::routh::__private::f64 = __v7 * __t55;
-            let __t125: ::routh::__private::f64 = __v8 * __t55;
-            let __t129: ::routh::__private::f64 = __t55 * __t98;
-            let __t130: ::routh::__private::f64 = __t80 * __t88;
-            let __t132: ::routh::__private::f64 = __t129 - __t130;
-            let __t133: ::routh::__private::f64 = __t82 * __t88;
-            let __t134: ::routh::__private::f64 = -__t133;
-            let __t135: ::routh::__private::f64 = __t84 * __t88;
-            let __t136: ::routh::__private::f64 = -__t135;
-            let __t137: ::routh::__private::f64 = __t82 * __t89;
-            let __t139: ::routh::__private::f64 = __t129 - __t137;
-            let __t140: ::routh::__private::f64 = __t84 * __t89;
-            let __t141: ::routh::__private::f64 = -__t140;
-            let __t142: ::routh::__private::f64 = __t55 * __t125;
-            let __t143: ::routh::__private::f64 = __t84 * __t90;
-            let __t145: ::routh::__private::f64 = __t142 - __t143;
-            ::routh::__private::Matrix3::new(
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __Matrix3 {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t54: __F64 = 1.0f64 / __t50;
+            let __t55: __F64 = __t53 * __t54;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t69: __F64 = __t55 * __t62;
+            let __t70: __F64 = __t55 * __t63;
+            let __t71: __F64 = __t48 * __t55;
+            let __t79: __F64 = 2f64 * __t69;
+            let __t80: __F64 = __t26 + __t79;
+            let __t81: __F64 = 2f64 * __t70;
+            let __t82: __F64 = __t29 + __t81;
+            let __t83: __F64 = 2f64 * __t71;
+            let __t84: __F64 = __t15 + __t83;
+            let __t88: __F64 = __t54 * __t80;
+            let __t89: __F64 = __t54 * __t82;
+            let __t90: __F64 = __t54 * __t84;
+            let __t98: __F64 = __v7 * __t55;
+            let __t125: __F64 = __v8 * __t55;
+            let __t129: __F64 = __t55 * __t98;
+            let __t130: __F64 = __t80 * __t88;
+            let __t132: __F64 = __t129 - __t130;
+            let __t133: __F64 = __t82 * __t88;
+            let __t134: __F64 = -__t133;
+            let __t135: __F64 = __t84 * __t88;
+            let __t136: __F64 = -__t135;
+            let __t137: __F64 = __t82 * __t89;
+            let __t139: __F64 = __t129 - __t137;
+            let __t140: __F64 = __t84 * __t89;
+            let __t141: __F64 = -__t140;
+            let __t142: __F64 = __t55 * __t125;
+            let __t143: __F64 = __t84 * __t90;
+            let __t145: __F64 = __t142 - __t143;
+            __Matrix3::new(
                 __t132,
                 __t134,
                 __t136,
@@ -586,158 +548,154 @@ const _: () = {
             )
         }
         #[inline]
-        fn amended_potential(
-            &self,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::f64 {
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t19: ::routh::__private::f64 = __v5 * __v9;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t147: ::routh::__private::f64 = __v6 / __t50;
-            let __t149: ::routh::__private::f64 = __v6 * __t147;
-            let __t151: ::routh::__private::f64 = (-0.5f64) * __t149;
-            let __t152: ::routh::__private::f64 = __t151 - __t19;
-            let __t233: ::routh::__private::f64 = -__t152;
+        fn amended_potential(&self, __gamma: &__Vector3, __p_psi: __F64) -> __F64 {
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t19: __F64 = __v5 * __v9;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t147: __F64 = __v6 / __t50;
+            let __t149: __F64 = __v6 * __t147;
+            let __t151: __F64 = (-0.5f64) * __t149;
+            let __t152: __F64 = __t151 - __t19;
+            let __t233: __F64 = -__t152;
             __t233
         }
         #[inline]
         fn bundle(
             &self,
-            __big_omega: &::routh::__private::Vector3<::routh::__private::f64>,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::RouthBundle {
-            let __v0: ::routh::__private::f64 = __big_omega[0usize];
-            let __v1: ::routh::__private::f64 = __big_omega[1usize];
-            let __v2: ::routh::__private::f64 = __big_omega[2usize];
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t11: ::routh::__private::f64 = __v0 * __v0;
-            let __t12: ::routh::__private::f64 = __v1 * __v1;
-            let __t13: ::routh::__private::f64 = __t11 + __t12;
-            let __t14: ::routh::__private::f64 = __v7 * __t13;
-            let __t15: ::routh::__private::f64 = __v2 * __v8;
-            let __t16: ::routh::__private::f64 = __v2 * __t15;
-            let __t17: ::routh::__private::f64 = __t14 + __t16;
-            let __t18: ::routh::__private::f64 = 0.5f64 * __t17;
-            let __t19: ::routh::__private::f64 = __v5 * __v9;
-            let __t22: ::routh::__private::f64 = __t18 - __t19;
-            let __t26: ::routh::__private::f64 = __v0 * __v7;
-            let __t29: ::routh::__private::f64 = __v1 * __v7;
-            let __t39: ::routh::__private::f64 = __v3 * __t26;
-            let __t40: ::routh::__private::f64 = __v4 * __t29;
-            let __t41: ::routh::__private::f64 = __v5 * __t15;
-            let __t42: ::routh::__private::f64 = __t39 + __t40;
-            let __t43: ::routh::__private::f64 = __t41 + __t42;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t53: ::routh::__private::f64 = __v6 - __t43;
-            let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
-            let __t55: ::routh::__private::f64 = __t53 * __t54;
-            let __t57: ::routh::__private::f64 = __t53 * __t55;
-            let __t60: ::routh::__private::f64 = (-0.5f64) * __t57;
-            let __t61: ::routh::__private::f64 = __t22 + __t60;
-            let __t62: ::routh::__private::f64 = __v3 * __v7;
-            let __t63: ::routh::__private::f64 = __v4 * __v7;
-            let __t69: ::routh::__private::f64 = __t55 * __t62;
-            let __t70: ::routh::__private::f64 = __t55 * __t63;
-            let __t71: ::routh::__private::f64 = __t48 * __t55;
-            let __t72: ::routh::__private::f64 = __t26 + __t69;
-            let __t73: ::routh::__private::f64 = __t29 + __t70;
-            let __t74: ::routh::__private::f64 = __t15 + __t71;
-            let __t75: ::routh::__private::f64 = __t55 * __t72;
-            let __t76: ::routh::__private::f64 = __t55 * __t73;
-            let __t77: ::routh::__private::f64 = __t55 * __t74;
-            let __t78: ::routh::__private::f64 = __t77 - __v9;
-            let __t79: ::routh::__private::f64 = 2f64 * __t69;
-            let __t80: ::routh::__private::f64 = __t26 + __t79;
-            let __t81: ::routh::__private::f64 = 2f64 * __t70;
-            let __t82: ::routh::__private::f64 = __t29 + __t81;
-            let __t83: ::routh::__private::f64 = 2f64 * __t71;
-            let __t84: ::routh::__private::f64 = __t15 + __t83;
-            let __t85: ::routh::__private::f64 = __t54 * __t62;
-            let __t86: ::routh::__private::f64 = __t54 * __t63;
-            let __t87: ::routh::__private::f64 = __t48 * __t54;
-            let __t88: ::routh::__private::f64 = __t54 * __t80;
-            let __t89: ::routh::__private::f64 = __t54 * __t82;
-            let __t90: ::routh::__private::f64 = __t54 * __t84;
-            let __t91: ::routh::__private::f64 = __t62 * __t85;
-            let __t93: ::routh::__private::f64 = __v7 - __t91;
-            let __t94: ::routh::__private::f64 = __t63 * __t85;
-            let __t95: ::routh::__private::f64 = -__t94;
-            let __t96: ::routh::__private::f64 = __t48 * __t85;
-            let __t97: ::routh::__private::f64 = -__t96;
-            let __t98: ::routh::__private::f64 = __v7 * __t55;
-            let __t99: ::routh::__private::f64 = __t80 * __t85;
-            let __t101: ::routh::__private::f64 = __t98 - __t99;
-            let __t102: ::routh::__private::f64 = __t82 * __t85;
-            let __t103: ::routh::__private::f64 = -__t102;
-            let __t104: ::routh::__private::f64 = __t84 * __t85;
-            let __t105: ::routh::__private::f64 = -__t104;
-            let __t106: ::routh::__private::f64 = __t63 * __t86;
-            let __t108: ::routh::__private::f64 = __v7 - __t106;
-            let __t109: ::routh::__private::f64 = __t48 * __t86;
-            let __t110: ::routh::__private::f64 = -__t109;
-            let __t111: ::routh::__private::f64 = __t80 * __t86;
-            let __t112: ::routh::__private::f64 = -__t111;
-            let __t113: ::routh::__private::f64 = __t82 * __t86;
-            let __t115: ::routh::__private::f64 = __t98 - __t113;
-            let __t116: ::routh::__private::f64 = __t84 * __t86;
-            let __t117: ::routh::__private::f64 = -__t116;
-            let __t118: ::routh::__private::f64 = __t48 * __t87;
-            let __t120: ::routh::__private::f64 = __v8 - __t118;
-            let __t121: ::routh::__private::f64 = __t80 * __t87;
-            let __t122: ::routh::__private::f64 = -__t121;
-            let __t123: ::routh::__private::f64 = __t82 * __t87;
-            let __t124: ::routh::__private::f64 = -__t123;
-            let __t125: ::routh::__private::f64 = __v8 * __t55;
-            let __t126: ::routh::__private::f64 = __t84 * __t87;
-            let __t128: ::routh::__private::f64 = __t125 - __t126;
-            let __t129: ::routh::__private::f64 = __t55 * __t98;
-            let __t130: ::routh::__private::f64 = __t80 * __t88;
-            let __t132: ::routh::__private::f64 = __t129 - __t130;
-            let __t133: ::routh::__private::f64 = __t82 * __t88;
-            let __t134: ::routh::__private::f64 = -__t133;
-            let __t135: ::routh::__private::f64 = __t84 * __t88;
-            let __t136: ::routh::__private::f64 = -__t135;
-            let __t137: ::routh::__private::f64 = __t82 * __t89;
-            let __t139: ::routh::__private::f64 = __t129 - __t137;
-            let __t140: ::routh::__private::f64 = __t84 * __t89;
-            let __t141: ::routh::__private::f64 = -__t140;
-            let __t142: ::routh::__private::f64 = __t55 * __t125;
-            let __t143: ::routh::__private::f64 = __t84 * __t90;
-            let __t145: ::routh::__private::f64 = __t142 - __t143;
-            let __t146: ::routh::__private::f64 = -__t55;
-            ::routh::__private::RouthBundle {
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __RouthBundle {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t11: __F64 = __v0 * __v0;
+            let __t12: __F64 = __v1 * __v1;
+            let __t13: __F64 = __t11 + __t12;
+            let __t14: __F64 = __v7 * __t13;
+            let __t15: __F64 = __v2 * __v8;
+            let __t16: __F64 = __v2 * __t15;
+            let __t17: __F64 = __t14 + __t16;
+            let __t18: __F64 = 0.5f64 * __t17;
+            let __t19: __F64 = __v5 * __v9;
+            let __t22: __F64 = __t18 - __t19;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t54: __F64 = 1.0f64 / __t50;
+            let __t55: __F64 = __t53 * __t54;
+            let __t57: __F64 = __t53 * __t55;
+            let __t60: __F64 = (-0.5f64) * __t57;
+            let __t61: __F64 = __t22 + __t60;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t69: __F64 = __t55 * __t62;
+            let __t70: __F64 = __t55 * __t63;
+            let __t71: __F64 = __t48 * __t55;
+            let __t72: __F64 = __t26 + __t69;
+            let __t73: __F64 = __t29 + __t70;
+            let __t74: __F64 = __t15 + __t71;
+            let __t75: __F64 = __t55 * __t72;
+            let __t76: __F64 = __t55 * __t73;
+            let __t77: __F64 = __t55 * __t74;
+            let __t78: __F64 = __t77 - __v9;
+            let __t79: __F64 = 2f64 * __t69;
+            let __t80: __F64 = __t26 + __t79;
+            let __t81: __F64 = 2f64 * __t70;
+            let __t82: __F64 = __t29 + __t81;
+            let __t83: __F64 = 2f64 * __t71;
+            let __t84: __F64 = __t15 + __t83;
+            let __t85: __F64 = __t54 * __t62;
+            let __t86: __F64 = __t54 * __t63;
+            let __t87: __F64 = __t48 * __t54;
+            let __t88: __F64 = __t54 * __t80;
+            let __t89: __F64 = __t54 * __t82;
+            let __t90: __F64 = __t54 * __t84;
+            let __t91: __F64 = __t62 * __t85;
+            let __t93: __F64 = __v7 - __t91;
+            let __t94: __F64 = __t63 * __t85;
+            let __t95: __F64 = -__t94;
+            let __t96: __F64 = __t48 * __t85;
+            let __t97: __F64 = -__t96;
+            let __t98: __F64 = __v7 * __t55;
+            let __t99: __F64 = __t80 * __t85;
+            let __t101: __F64 = __t98 - __t99;
+            let __t102: __F64 = __t82 * __t85;
+            let __t103: __F64 = -__t102;
+            let __t104: __F64 = __t84 * __t85;
+            let __t105: __F64 = -__t104;
+            let __t106: __F64 = __t63 * __t86;
+            let __t108: __F64 = __v7 - __t106;
+            let __t109: __F64 = __t48 * __t86;
+            let __t110: __F64 = -__t109;
+            let __t111: __F64 = __t80 * __t86;
+            let __t112: __F64 = -__t111;
+            let __t113: __F64 = __t82 * __t86;
+            let __t115: __F64 = __t98 - __t113;
+            let __t116: __F64 = __t84 * __t86;
+            let __t117: __F64 = -__t116;
+            let __t118: __F64 = __t48 * __t87;
+            let __t120: __F64 = __v8 - __t118;
+            let __t121: __F64 = __t80 * __t87;
+            let __t122: __F64 = -__t121;
+            let __t123: __F64 = __t82 * __t87;
+            let __t124: __F64 = -__t123;
+            let __t125: __F64 = __v8 * __t55;
+            let __t126: __F64 = __t84 * __t87;
+            let __t128: __F64 = __t125 - __t126;
+            let __t129: __F64 = __t55 * __t98;
+            let __t130: __F64 = __t80 * __t88;
+            let __t132: __F64 = __t129 - __t130;
+            let __t133: __F64 = __t82 * __t88;
+            let __t134: __F64 = -__t133;
+            let __t135: __F64 = __t84 * __t88;
+            let __t136: __F64 = -__t135;
+            let __t137: __F64 = __t82 * __t89;
+            let __t139: __F64 = __t129 - __t137;
+            let __t140: __F64 = __t84 * __t89;
+            let __t141: __F64 = -__t140;
+            let __t142: __F64 = __t55 * __t125;
+            let __t143: __F64 = __t84 * __t90;
+            let __t145: __F64 = __t142 - __t143;
+            let __t146: __F64 = -__t55;
+            __RouthBundle {
                 routhian: __t61,
                 psi_dot: __t55,
-                dr_domega: ::routh::__private::Vector3::new(__t72, __t73, __t74),
-                dr_dgamma: ::routh::__private::Vector3::new(__t75, __t76, __t78),
+                dr_domega: __Vector3::new(__t72, __t73, __t74),
+                dr_dgamma: __Vector3::new(__t75, __t76, __t78),
                 dr_dp: __t146,
-                d2r_domega2: ::routh::__private::Matrix3::new(
+                d2r_domega2: __Matrix3::new(
                     __t93,
                     __t95,
                     __t97,
@@ -748,7 +706,7 @@ const _: () = {
                     __t110,
                     __t120,
                 ),
-                d2r_domega_dgamma: ::routh::__private::Matrix3::new(
+                d2r_domega_dgamma: __Matrix3::new(
                     __t101,
                     __t103,
                     __t105,
@@ -759,7 +717,7 @@ const _: () = {
                     __t124,
                     __t128,
                 ),
-                d2r_dgamma2: ::routh::__private::Matrix3::new(
+                d2r_dgamma2: __Matrix3::new(
                     __t132,
                     __t134,
                     __t136,
@@ -775,149 +733,149 @@ const _: () = {
         #[inline]
         fn gyroscopic_system(
             &self,
-            __gamma: &::routh::__private::Vector3<::routh::__private::f64>,
-            __p_psi: ::routh::__private::f64,
-        ) -> ::routh::__private::GyroscopicSystem {
-            let __v3: ::routh::__private::f64 = __gamma[0usize];
-            let __v4: ::routh::__private::f64 = __gamma[1usize];
-            let __v5: ::routh::__private::f64 = __gamma[2usize];
-            let __v6: ::routh::__private::f64 = __p_psi;
-            let __v7: ::routh::__private::f64 = self.a1;
-            let __v8: ::routh::__private::f64 = self.c;
-            let __v9: ::routh::__private::f64 = self.mgl;
-            let __t44: ::routh::__private::f64 = __v3 * __v3;
-            let __t45: ::routh::__private::f64 = __v4 * __v4;
-            let __t46: ::routh::__private::f64 = __t44 + __t45;
-            let __t47: ::routh::__private::f64 = __v7 * __t46;
-            let __t48: ::routh::__private::f64 = __v5 * __v8;
-            let __t49: ::routh::__private::f64 = __v5 * __t48;
-            let __t50: ::routh::__private::f64 = __t47 + __t49;
-            let __t54: ::routh::__private::f64 = 1.0f64 / __t50;
-            let __t62: ::routh::__private::f64 = __v3 * __v7;
-            let __t63: ::routh::__private::f64 = __v4 * __v7;
-            let __t85: ::routh::__private::f64 = __t54 * __t62;
-            let __t86: ::routh::__private::f64 = __t54 * __t63;
-            let __t87: ::routh::__private::f64 = __t48 * __t54;
-            let __t91: ::routh::__private::f64 = __t62 * __t85;
-            let __t93: ::routh::__private::f64 = __v7 - __t91;
-            let __t94: ::routh::__private::f64 = __t63 * __t85;
-            let __t95: ::routh::__private::f64 = -__t94;
-            let __t96: ::routh::__private::f64 = __t48 * __t85;
-            let __t97: ::routh::__private::f64 = -__t96;
-            let __t106: ::routh::__private::f64 = __t63 * __t86;
-            let __t108: ::routh::__private::f64 = __v7 - __t106;
-            let __t109: ::routh::__private::f64 = __t48 * __t86;
-            let __t110: ::routh::__private::f64 = -__t109;
-            let __t118: ::routh::__private::f64 = __t48 * __t87;
-            let __t120: ::routh::__private::f64 = __v8 - __t118;
-            let __t147: ::routh::__private::f64 = __v6 * __t54;
-            let __t153: ::routh::__private::f64 = __t62 * __t147;
-            let __t154: ::routh::__private::f64 = __t63 * __t147;
-            let __t155: ::routh::__private::f64 = __t48 * __t147;
-            let __t156: ::routh::__private::f64 = __t147 * __t153;
-            let __t157: ::routh::__private::f64 = __t147 * __t154;
-            let __t158: ::routh::__private::f64 = __t147 * __t155;
-            let __t159: ::routh::__private::f64 = __t158 - __v9;
-            let __t163: ::routh::__private::f64 = __t54 * __t153;
-            let __t165: ::routh::__private::f64 = __t54 * __t154;
-            let __t167: ::routh::__private::f64 = __t54 * __t155;
-            let __t169: ::routh::__private::f64 = __v7 * __t147;
-            let __t170: ::routh::__private::f64 = __t85 * __t153;
-            let __t173: ::routh::__private::f64 = (-2f64) * __t170;
-            let __t174: ::routh::__private::f64 = __t169 + __t173;
-            let __t184: ::routh::__private::f64 = __t86 * __t154;
-            let __t186: ::routh::__private::f64 = (-2f64) * __t184;
-            let __t187: ::routh::__private::f64 = __t169 + __t186;
-            let __t197: ::routh::__private::f64 = __v8 * __t147;
-            let __t198: ::routh::__private::f64 = __t87 * __t155;
-            let __t200: ::routh::__private::f64 = (-2f64) * __t198;
-            let __t201: ::routh::__private::f64 = __t197 + __t200;
-            let __t202: ::routh::__private::f64 = __t147 * __t169;
-            let __t203: ::routh::__private::f64 = __t153 * __t163;
-            let __t208: ::routh::__private::f64 = (-4f64) * __t203;
-            let __t209: ::routh::__private::f64 = __t202 + __t208;
-            let __t210: ::routh::__private::f64 = __t154 * __t163;
-            let __t214: ::routh::__private::f64 = __t155 * __t163;
-            let __t218: ::routh::__private::f64 = __t154 * __t165;
-            let __t221: ::routh::__private::f64 = (-4f64) * __t218;
-            let __t222: ::routh::__private::f64 = __t202 + __t221;
-            let __t223: ::routh::__private::f64 = __t155 * __t165;
-            let __t227: ::routh::__private::f64 = __t147 * __t197;
-            let __t228: ::routh::__private::f64 = __t155 * __t167;
-            let __t231: ::routh::__private::f64 = (-4f64) * __t228;
-            let __t232: ::routh::__private::f64 = __t227 + __t231;
-            let __t237: ::routh::__private::f64 = __t174 + __t187;
-            let __t238: ::routh::__private::f64 = __t201 + __t237;
-            let __t240: ::routh::__private::f64 = __v5 * __t238;
-            let __t241: ::routh::__private::f64 = 0.5f64 * __t240;
-            let __t242: ::routh::__private::f64 = (-0.5f64) * __t240;
-            let __t243: ::routh::__private::f64 = __v4 * __t238;
-            let __t244: ::routh::__private::f64 = 0.5f64 * __t243;
-            let __t245: ::routh::__private::f64 = __v3 * __t238;
-            let __t246: ::routh::__private::f64 = 0.5f64 * __t245;
-            let __t247: ::routh::__private::f64 = (-0.5f64) * __t245;
-            let __t248: ::routh::__private::f64 = (-0.5f64) * __t243;
-            let __t249: ::routh::__private::f64 = __v3 * __t156;
-            let __t250: ::routh::__private::f64 = __v4 * __t157;
-            let __t251: ::routh::__private::f64 = __v5 * __t159;
-            let __t252: ::routh::__private::f64 = __t249 + __t250;
-            let __t253: ::routh::__private::f64 = __t251 + __t252;
-            let __t255: ::routh::__private::f64 = __t253 - __t209;
-            let __t257: ::routh::__private::f64 = __t253 - __t222;
-            let __t259: ::routh::__private::f64 = __t253 - __t232;
-            let __t260: ::routh::__private::f64 = __v5 * __t210;
-            let __t261: ::routh::__private::f64 = 4f64 * __t260;
-            let __t262: ::routh::__private::f64 = __v4 * __t214;
-            let __t264: ::routh::__private::f64 = (-4f64) * __t262;
-            let __t265: ::routh::__private::f64 = __t261 + __t264;
-            let __t266: ::routh::__private::f64 = __v5 * __t257;
-            let __t267: ::routh::__private::f64 = __v4 * __t223;
-            let __t269: ::routh::__private::f64 = (-4f64) * __t267;
-            let __t270: ::routh::__private::f64 = __t266 + __t269;
-            let __t271: ::routh::__private::f64 = __v5 * __t223;
-            let __t272: ::routh::__private::f64 = 4f64 * __t271;
-            let __t273: ::routh::__private::f64 = __v4 * __t259;
-            let __t275: ::routh::__private::f64 = __t272 - __t273;
-            let __t276: ::routh::__private::f64 = __v5 * __t255;
-            let __t278: ::routh::__private::f64 = __v3 * __t214;
-            let __t279: ::routh::__private::f64 = 4f64 * __t278;
-            let __t280: ::routh::__private::f64 = __t279 - __t276;
-            let __t281: ::routh::__private::f64 = (-4f64) * __t260;
-            let __t282: ::routh::__private::f64 = __v3 * __t223;
-            let __t283: ::routh::__private::f64 = 4f64 * __t282;
-            let __t284: ::routh::__private::f64 = __t281 + __t283;
-            let __t285: ::routh::__private::f64 = __v5 * __t214;
-            let __t287: ::routh::__private::f64 = (-4f64) * __t285;
-            let __t288: ::routh::__private::f64 = __v3 * __t259;
-            let __t289: ::routh::__private::f64 = __t287 + __t288;
-            let __t290: ::routh::__private::f64 = __v4 * __t255;
-            let __t291: ::routh::__private::f64 = __v3 * __t210;
-            let __t293: ::routh::__private::f64 = (-4f64) * __t291;
-            let __t294: ::routh::__private::f64 = __t290 + __t293;
-            let __t295: ::routh::__private::f64 = __v4 * __t210;
-            let __t296: ::routh::__private::f64 = 4f64 * __t295;
-            let __t297: ::routh::__private::f64 = __v3 * __t257;
-            let __t299: ::routh::__private::f64 = __t296 - __t297;
-            let __t302: ::routh::__private::f64 = __v5 * __t270;
-            let __t303: ::routh::__private::f64 = __v4 * __t275;
-            let __t305: ::routh::__private::f64 = __t302 - __t303;
-            let __t306: ::routh::__private::f64 = __v5 * __t265;
-            let __t308: ::routh::__private::f64 = __v3 * __t275;
-            let __t309: ::routh::__private::f64 = __t308 - __t306;
-            let __t310: ::routh::__private::f64 = __v4 * __t265;
-            let __t311: ::routh::__private::f64 = __v3 * __t270;
-            let __t313: ::routh::__private::f64 = __t310 - __t311;
-            let __t314: ::routh::__private::f64 = __v5 * __t280;
-            let __t316: ::routh::__private::f64 = __v3 * __t289;
-            let __t317: ::routh::__private::f64 = __t316 - __t314;
-            let __t318: ::routh::__private::f64 = __v4 * __t280;
-            let __t319: ::routh::__private::f64 = __v3 * __t284;
-            let __t321: ::routh::__private::f64 = __t318 - __t319;
-            let __t322: ::routh::__private::f64 = __v4 * __t294;
-            let __t323: ::routh::__private::f64 = __v3 * __t299;
-            let __t325: ::routh::__private::f64 = __t322 - __t323;
-            ::routh::__private::GyroscopicSystem {
-                a: ::routh::__private::Matrix3::new(
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __GyroscopicSystem {
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t54: __F64 = 1.0f64 / __t50;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t85: __F64 = __t54 * __t62;
+            let __t86: __F64 = __t54 * __t63;
+            let __t87: __F64 = __t48 * __t54;
+            let __t91: __F64 = __t62 * __t85;
+            let __t93: __F64 = __v7 - __t91;
+            let __t94: __F64 = __t63 * __t85;
+            let __t95: __F64 = -__t94;
+            let __t96: __F64 = __t48 * __t85;
+            let __t97: __F64 = -__t96;
+            let __t106: __F64 = __t63 * __t86;
+            let __t108: __F64 = __v7 - __t106;
+            let __t109: __F64 = __t48 * __t86;
+            let __t110: __F64 = -__t109;
+            let __t118: __F64 = __t48 * __t87;
+            let __t120: __F64 = __v8 - __t118;
+            let __t147: __F64 = __v6 * __t54;
+            let __t153: __F64 = __t62 * __t147;
+            let __t154: __F64 = __t63 * __t147;
+            let __t155: __F64 = __t48 * __t147;
+            let __t156: __F64 = __t147 * __t153;
+            let __t157: __F64 = __t147 * __t154;
+            let __t158: __F64 = __t147 * __t155;
+            let __t159: __F64 = __t158 - __v9;
+            let __t163: __F64 = __t54 * __t153;
+            let __t165: __F64 = __t54 * __t154;
+            let __t167: __F64 = __t54 * __t155;
+            let __t169: __F64 = __v7 * __t147;
+            let __t170: __F64 = __t85 * __t153;
+            let __t173: __F64 = (-2f64) * __t170;
+            let __t174: __F64 = __t169 + __t173;
+            let __t184: __F64 = __t86 * __t154;
+            let __t186: __F64 = (-2f64) * __t184;
+            let __t187: __F64 = __t169 + __t186;
+            let __t197: __F64 = __v8 * __t147;
+            let __t198: __F64 = __t87 * __t155;
+            let __t200: __F64 = (-2f64) * __t198;
+            let __t201: __F64 = __t197 + __t200;
+            let __t202: __F64 = __t147 * __t169;
+            let __t203: __F64 = __t153 * __t163;
+            let __t208: __F64 = (-4f64) * __t203;
+            let __t209: __F64 = __t202 + __t208;
+            let __t210: __F64 = __t154 * __t163;
+            let __t214: __F64 = __t155 * __t163;
+            let __t218: __F64 = __t154 * __t165;
+            let __t221: __F64 = (-4f64) * __t218;
+            let __t222: __F64 = __t202 + __t221;
+            let __t223: __F64 = __t155 * __t165;
+            let __t227: __F64 = __t147 * __t197;
+            let __t228: __F64 = __t155 * __t167;
+            let __t231: __F64 = (-4f64) * __t228;
+            let __t232: __F64 = __t227 + __t231;
+            let __t237: __F64 = __t174 + __t187;
+            let __t238: __F64 = __t201 + __t237;
+            let __t240: __F64 = __v5 * __t238;
+            let __t241: __F64 = 0.5f64 * __t240;
+            let __t242: __F64 = (-0.5f64) * __t240;
+            let __t243: __F64 = __v4 * __t238;
+            let __t244: __F64 = 0.5f64 * __t243;
+            let __t245: __F64 = __v3 * __t238;
+            let __t246: __F64 = 0.5f64 * __t245;
+            let __t247: __F64 = (-0.5f64) * __t245;
+            let __t248: __F64 = (-0.5f64) * __t243;
+            let __t249: __F64 = __v3 * __t156;
+            let __t250: __F64 = __v4 * __t157;
+            let __t251: __F64 = __v5 * __t159;
+            let __t252: __F64 = __t249 + __t250;
+            let __t253: __F64 = __t251 + __t252;
+            let __t255: __F64 = __t253 - __t209;
+            let __t257: __F64 = __t253 - __t222;
+            let __t259: __F64 = __t253 - __t232;
+            let __t260: __F64 = __v5 * __t210;
+            let __t261: __F64 = 4f64 * __t260;
+            let __t262: __F64 = __v4 * __t214;
+            let __t264: __F64 = (-4f64) * __t262;
+            let __t265: __F64 = __t261 + __t264;
+            let __t266: __F64 = __v5 * __t257;
+            let __t267: __F64 = __v4 * __t223;
+            let __t269: __F64 = (-4f64) * __t267;
+            let __t270: __F64 = __t266 + __t269;
+            let __t271: __F64 = __v5 * __t223;
+            let __t272: __F64 = 4f64 * __t271;
+            let __t273: __F64 = __v4 * __t259;
+            let __t275: __F64 = __t272 - __t273;
+            let __t276: __F64 = __v5 * __t255;
+            let __t278: __F64 = __v3 * __t214;
+            let __t279: __F64 = 4f64 * __t278;
+            let __t280: __F64 = __t279 - __t276;
+            let __t281: __F64 = (-4f64) * __t260;
+            let __t282: __F64 = __v3 * __t223;
+            let __t283: __F64 = 4f64 * __t282;
+            let __t284: __F64 = __t281 + __t283;
+            let __t285: __F64 = __v5 * __t214;
+            let __t287: __F64 = (-4f64) * __t285;
+            let __t288: __F64 = __v3 * __t259;
+            let __t289: __F64 = __t287 + __t288;
+            let __t290: __F64 = __v4 * __t255;
+            let __t291: __F64 = __v3 * __t210;
+            let __t293: __F64 = (-4f64) * __t291;
+            let __t294: __F64 = __t290 + __t293;
+            let __t295: __F64 = __v4 * __t210;
+            let __t296: __F64 = 4f64 * __t295;
+            let __t297: __F64 = __v3 * __t257;
+            let __t299: __F64 = __t296 - __t297;
+            let __t302: __F64 = __v5 * __t270;
+            let __t303: __F64 = __v4 * __t275;
+            let __t305: __F64 = __t302 - __t303;
+            let __t306: __F64 = __v5 * __t265;
+            let __t308: __F64 = __v3 * __t275;
+            let __t309: __F64 = __t308 - __t306;
+            let __t310: __F64 = __v4 * __t265;
+            let __t311: __F64 = __v3 * __t270;
+            let __t313: __F64 = __t310 - __t311;
+            let __t314: __F64 = __v5 * __t280;
+            let __t316: __F64 = __v3 * __t289;
+            let __t317: __F64 = __t316 - __t314;
+            let __t318: __F64 = __v4 * __t280;
+            let __t319: __F64 = __v3 * __t284;
+            let __t321: __F64 = __t318 - __t319;
+            let __t322: __F64 = __v4 * __t294;
+            let __t323: __F64 = __v3 * __t299;
+            let __t325: __F64 = __t322 - __t323;
+            __GyroscopicSystem {
+                a: __Matrix3::new(
                     __t93,
                     __t95,
                     __t97,
@@ -928,7 +886,7 @@ const _: () = {
                     __t110,
                     __t120,
                 ),
-                g: ::routh::__private::Matrix3::new(
+                g: __Matrix3::new(
                     0f64,
                     __t242,
                     __t244,
@@ -939,7 +897,7 @@ const _: () = {
                     __t246,
                     0f64,
                 ),
-                c: ::routh::__private::Matrix3::new(
+                c: __Matrix3::new(
                     __t305,
                     __t309,
                     __t313,

@@ -1,17 +1,39 @@
-//! Emission of the generated impls with `quote!`.
+//! Emission of the generated methods, as Rust source text.
 //!
 //! Each method is straight-line code: the inputs it needs are read into `__v*` locals, then the
 //! nodes its outputs need are written in increasing id order (children before parents, so every
-//! shared subexpression is computed once) as `let __t* = ...;`. A negation feeding only a sum is
-//! written as a subtraction, a reciprocal used once as a division, and small integer powers as
-//! products. Paths go through `<crate>::__private`; no allocation, no `unsafe`.
+//! shared subexpression is computed once) as `let __t*: __F64 = ...;`. A negation feeding only a
+//! sum is written as a subtraction, a reciprocal used once as a division, and small integer
+//! powers as products. No allocation, no `unsafe`.
+//!
+//! The methods are written as text, not with `quote!`: a model's methods are tens of thousands
+//! of tokens, and building them one by one is most of what the derive costs a user, whose build
+//! runs the generator unoptimised (`crate::expand_with` lexes the text in one go, in the
+//! compiler when it runs as a proc macro). Nothing in the text comes from the user's tokens but
+//! field names, and every path in it is one of the aliases [`crate::expand_with`] declares
+//! next to the impls, through `<crate>::__private` ([`ALIASES`]), so that the text never names
+//! the crate path (whose tokens carry the user's span for errors).
 
 use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
-use proc_macro2::{Ident, Literal, Span, TokenStream};
-use quote::{format_ident, quote};
 use routh_symbolic::{Func, Graph, Id, Node, Plan, Var};
+use std::cell::Cell;
+use std::fmt::Write;
+
+/// The names the text uses for the types of `<crate>::__private`, declared as type aliases in
+/// the `const _` block around the impls: `(alias, item of __private)`.
+pub const ALIASES: [(&str, &str); 5] = [
+    ("__F64", "f64"),
+    ("__Vector3", "Vector3"),
+    ("__Matrix3", "Matrix3"),
+    ("__RouthBundle", "RouthBundle"),
+    ("__GyroscopicSystem", "GyroscopicSystem"),
+];
+
+/// The function the text calls for `sign(x)`, declared next to the aliases when used (see
+/// [`Emitter::uses_sign`]) as a wrapper of `<crate>::__private::sign`.
+pub const SIGN: &str = "__sign";
 
 /// How a variable is read in one method.
 #[derive(Clone, Copy)]
@@ -22,203 +44,203 @@ pub enum Inputs {
     Routhian,
 }
 
-/// Writes one method body computing `outputs` and returning `build(output tokens)`.
+/// Writes the methods of the impls.
 pub struct Emitter<'a> {
-    pub sym: &'a Symbols,
-    pub krate: &'a TokenStream,
+    sym: &'a Symbols,
+    /// How each variable is read from `self` (`self.field`, `self.field[i]`, ...), by
+    /// variable index; empty for ω, γ, p_ψ and the reduction's own variables.
+    params: Vec<String>,
+    /// Whether a method calls [`SIGN`].
+    sign: Cell<bool>,
 }
 
-fn lit(c: f64, krate: &TokenStream) -> TokenStream {
+/// A literal `c` as the derive writes it: `0.5f64`, `(-2f64)`, `__F64::NAN`.
+fn lit(out: &mut String, c: f64) {
     if c.is_nan() {
-        quote!(#krate::__private::f64::NAN)
+        out.push_str("__F64::NAN");
     } else if c.is_infinite() {
-        if c > 0.0 {
-            quote!(#krate::__private::f64::INFINITY)
+        out.push_str(if c > 0.0 {
+            "__F64::INFINITY"
         } else {
-            quote!((-#krate::__private::f64::INFINITY))
-        }
+            "(-__F64::INFINITY)"
+        });
     } else if c < 0.0 {
-        let l = Literal::f64_suffixed(-c);
-        quote!((-#l))
+        let _ = write!(out, "(-{}f64)", -c);
     } else {
-        let l = Literal::f64_suffixed(c);
-        quote!(#l)
+        let _ = write!(out, "{c}f64");
     }
 }
 
-impl Emitter<'_> {
+/// `__t<id>`.
+fn local(out: &mut String, id: Id) {
+    let _ = write!(out, "__t{}", id.index());
+}
+
+/// `__v<var>`: the local an input is read into.
+fn input_local(out: &mut String, v: Var) {
+    let _ = write!(out, "__v{}", v.index());
+}
+
+impl<'a> Emitter<'a> {
+    /// An emitter for the model's symbols.
+    pub fn new(sym: &'a Symbols) -> Self {
+        let mut params = vec![String::new(); sym.graph.num_vars()];
+        for p in &sym.params {
+            let f = &p.field;
+            params[p.var.index()] = match p.access {
+                Access::Scalar => format!("self.{f}"),
+                Access::Component(i) => format!("self.{f}[{i}usize]"),
+                Access::Entry(i, j) => format!("self.{f}[({i}usize, {j}usize)]"),
+            };
+        }
+        Emitter {
+            sym,
+            params,
+            sign: Cell::new(false),
+        }
+    }
+
+    /// Whether a method written so far calls [`SIGN`].
+    pub fn uses_sign(&self) -> bool {
+        self.sign.get()
+    }
+
     fn g(&self) -> &Graph {
         &self.sym.graph
     }
 
-    /// The tokens reading variable `var` from the method's arguments or from `self`.
-    fn input_tokens(&self, var: Var, inputs: Inputs) -> TokenStream {
+    /// Reads variable `var` from the method's arguments or from `self`.
+    fn input(&self, out: &mut String, var: Var, inputs: Inputs) {
         let s = self.sym;
         let idx = |vars: &[Var; 3]| vars.iter().position(|&x| x == var);
         if let Some(i) = idx(&s.omega) {
-            return match inputs {
-                Inputs::Lagrangian => quote!(__omega[#i]),
-                Inputs::Routhian => quote!(__big_omega[#i]),
+            let _ = match inputs {
+                Inputs::Lagrangian => write!(out, "__omega[{i}usize]"),
+                Inputs::Routhian => write!(out, "__big_omega[{i}usize]"),
             };
-        }
-        if let Some(i) = idx(&s.gamma) {
-            return quote!(__gamma[#i]);
-        }
-        if s.p_psi == var {
-            return quote!(__p_psi);
-        }
-        match s.params.iter().find(|p| p.var == var) {
-            Some(p) => {
-                let f = &p.field;
-                match p.access {
-                    Access::Scalar => quote!(self.#f),
-                    Access::Component(i) => quote!(self.#f[#i]),
-                    Access::Entry(i, j) => quote!(self.#f[(#i, #j)]),
-                }
+        } else if let Some(i) = idx(&s.gamma) {
+            let _ = write!(out, "__gamma[{i}usize]");
+        } else if s.p_psi == var {
+            out.push_str("__p_psi");
+        } else {
+            match self.params.get(var.index()).filter(|p| !p.is_empty()) {
+                Some(p) => out.push_str(p),
+                // Every variable is ω, γ, p_ψ or a parameter.
+                None => out.push_str("0.0f64"),
             }
-            // Every variable is ω, γ, p_ψ or a parameter.
-            None => quote!(0.0f64),
         }
     }
 
-    fn local(id: Id) -> Ident {
-        format_ident!("__t{}", id.index())
-    }
-
-    /// The local an input is read into.
-    fn input_local(v: Var) -> Ident {
-        format_ident!("__v{}", v.index())
-    }
-
-    /// The tokens naming the value of `id` (a literal, an input local or a node local).
-    fn operand(&self, id: Id) -> TokenStream {
+    /// Names the value of `id` (a literal, an input local or a node local).
+    fn operand(&self, out: &mut String, id: Id) {
         match self.g().node(id) {
-            Node::Const(b) => lit(f64::from_bits(b), self.krate),
-            Node::Var(v) => {
-                let n = Self::input_local(v);
-                quote!(#n)
-            }
-            _ => {
-                let n = Self::local(id);
-                quote!(#n)
-            }
+            Node::Const(b) => lit(out, f64::from_bits(b)),
+            Node::Var(v) => input_local(out, v),
+            _ => local(out, id),
         }
     }
 
-    fn expr(&self, id: Id, plan: &Plan) -> TokenStream {
+    /// `a <op> b`.
+    fn binary(&self, out: &mut String, a: Id, op: &str, b: Id) {
+        self.operand(out, a);
+        out.push_str(op);
+        self.operand(out, b);
+    }
+
+    fn expr(&self, out: &mut String, id: Id, plan: &Plan) {
         let g = self.g();
-        let o = |c: Id| self.operand(c);
         match g.node(id) {
             Node::Add(a, b) => match (plan.folds(g, id, a), plan.folds(g, id, b)) {
-                (_, Some(x)) => {
-                    let (a, x) = (o(a), o(x));
-                    quote!(#a - #x)
-                }
-                (Some(x), _) => {
-                    let (b, x) = (o(b), o(x));
-                    quote!(#b - #x)
-                }
-                _ => {
-                    let (a, b) = (o(a), o(b));
-                    quote!(#a + #b)
-                }
+                (_, Some(x)) => self.binary(out, a, " - ", x),
+                (Some(x), _) => self.binary(out, b, " - ", x),
+                _ => self.binary(out, a, " + ", b),
             },
             Node::Mul(a, b) => match (plan.folds(g, id, a), plan.folds(g, id, b)) {
-                (_, Some(x)) => {
-                    let (a, x) = (o(a), o(x));
-                    quote!(#a / #x)
-                }
-                (Some(x), _) => {
-                    let (b, x) = (o(b), o(x));
-                    quote!(#b / #x)
-                }
-                _ => {
-                    let (a, b) = (o(a), o(b));
-                    quote!(#a * #b)
-                }
+                (_, Some(x)) => self.binary(out, a, " / ", x),
+                (Some(x), _) => self.binary(out, b, " / ", x),
+                _ => self.binary(out, a, " * ", b),
             },
             Node::Neg(a) => {
-                let a = o(a);
-                quote!(-#a)
+                out.push('-');
+                self.operand(out, a);
             }
             Node::Recip(a) => {
-                let a = o(a);
-                quote!(1.0f64 / #a)
+                out.push_str("1.0f64 / ");
+                self.operand(out, a);
             }
-            Node::Powi(a, n) => self.power(o(a), n),
+            Node::Powi(a, n) => match n {
+                2 => self.binary(out, a, " * ", a),
+                3 => {
+                    self.binary(out, a, " * ", a);
+                    out.push_str(" * ");
+                    self.operand(out, a);
+                }
+                _ => {
+                    self.operand(out, a);
+                    let _ = write!(out, ".powi({n}i32)");
+                }
+            },
             Node::Powf(a, b) => {
-                let (a, b) = (o(a), o(b));
-                quote!(#a.powf(#b))
+                self.operand(out, a);
+                out.push_str(".powf(");
+                self.operand(out, b);
+                out.push(')');
             }
             Node::Func(Func::Sign, a) => {
-                let (a, k) = (o(a), self.krate);
-                quote!(#k::__private::sign(#a))
+                self.sign.set(true);
+                out.push_str(SIGN);
+                out.push('(');
+                self.operand(out, a);
+                out.push(')');
             }
             Node::Func(f, a) => {
-                let (a, m) = (o(a), Ident::new(f.name(), Span::call_site()));
-                quote!(#a.#m())
+                self.operand(out, a);
+                out.push('.');
+                out.push_str(f.name());
+                out.push_str("()");
             }
-            Node::Const(_) | Node::Var(_) => o(id),
+            Node::Const(_) | Node::Var(_) => self.operand(out, id),
         }
     }
 
-    fn power(&self, x: TokenStream, n: i32) -> TokenStream {
-        match n {
-            2 => quote!(#x * #x),
-            3 => quote!(#x * #x * #x),
-            _ => quote!(#x.powi(#n)),
-        }
-    }
-
-    /// Statements computing `outputs`, then the output tokens.
-    pub fn body(&self, outputs: &[Id], inputs: Inputs) -> (TokenStream, Vec<TokenStream>) {
+    /// Writes the statements computing `outputs`; returns the text naming each output.
+    pub fn body(&self, out: &mut String, outputs: &[Id], inputs: Inputs) -> Vec<String> {
         let g = self.g();
         let plan = Plan::new(g, outputs);
-        let k = self.krate;
-        let mut stmts = TokenStream::new();
         // Inputs first (only those read), then the nodes in order.
         for (i, _) in plan.emit.iter().enumerate().filter(|(_, &e)| e) {
             if let Node::Var(v) = g.node(Id::from_index(i)) {
-                let name = Self::input_local(v);
-                let src = self.input_tokens(v, inputs);
-                stmts.extend(quote!(let #name: #k::__private::f64 = #src;));
+                out.push_str("let ");
+                input_local(out, v);
+                out.push_str(": __F64 = ");
+                self.input(out, v, inputs);
+                out.push_str(";\n");
             }
         }
         for id in plan.statements(g) {
-            let name = Self::local(id);
-            let e = self.expr(id, &plan);
-            stmts.extend(quote!(let #name: #k::__private::f64 = #e;));
+            out.push_str("let ");
+            local(out, id);
+            out.push_str(": __F64 = ");
+            self.expr(out, id, &plan);
+            out.push_str(";\n");
         }
-        let outs = outputs.iter().map(|&o| self.operand(o)).collect();
-        (stmts, outs)
+        outputs
+            .iter()
+            .map(|&o| {
+                let mut s = String::new();
+                self.operand(&mut s, o);
+                s
+            })
+            .collect()
     }
 }
 
-/// Signature pieces shared by every generated method.
-pub struct Types {
-    pub v3: TokenStream,
-    pub m3: TokenStream,
-}
-
-impl Types {
-    pub fn new(k: &TokenStream) -> Self {
-        Types {
-            v3: quote!(#k::__private::Vector3<#k::__private::f64>),
-            m3: quote!(#k::__private::Matrix3<#k::__private::f64>),
-        }
-    }
-}
-
-fn vec_tokens(k: &TokenStream, t: &[TokenStream]) -> TokenStream {
-    quote!(#k::__private::Vector3::new(#(#t),*))
-}
-
-fn mat_tokens(k: &TokenStream, t: &[TokenStream]) -> TokenStream {
-    quote!(#k::__private::Matrix3::new(#(#t),*))
-}
-
-fn flat_v(v: &V3) -> Vec<Id> {
-    v.to_vec()
+/// `__Vector3::new(a, b, c)` / `__Matrix3::new(...)`.
+fn construct(out: &mut String, ty: &str, t: &[String]) {
+    out.push_str(ty);
+    out.push_str("::new(");
+    out.push_str(&t.join(", "));
+    out.push(')');
 }
 
 fn flat_m(m: &M3) -> Vec<Id> {
@@ -232,147 +254,100 @@ enum Ret {
     Matrix(M3),
 }
 
+/// The arguments of the Lagrangian methods.
+const WG: &str = "__omega: &__Vector3, __gamma: &__Vector3";
+/// The arguments of the Routhian methods.
+const ROUTH: &str = "__big_omega: &__Vector3, __gamma: &__Vector3, __p_psi: __F64";
+/// The arguments of the methods at rest.
+const REST: &str = "__gamma: &__Vector3, __p_psi: __F64";
+
 impl Emitter<'_> {
-    fn method(
-        &self,
-        name: &str,
-        args: TokenStream,
-        ret_ty: &TokenStream,
-        ret: Ret,
-        inputs: Inputs,
-    ) -> TokenStream {
-        let k = self.krate;
-        let ids = match &ret {
-            Ret::Scalar(s) => vec![*s],
-            Ret::Vector(v) => flat_v(v),
-            Ret::Matrix(m) => flat_m(m),
+    /// Writes `#[inline] fn name(&self, args) -> ret_ty { ... }`.
+    fn method(&self, out: &mut String, name: &str, args: &str, ret: Ret, inputs: Inputs) {
+        let (ids, ret_ty) = match &ret {
+            Ret::Scalar(s) => (vec![*s], "__F64"),
+            Ret::Vector(v) => (v.to_vec(), "__Vector3"),
+            Ret::Matrix(m) => (flat_m(m), "__Matrix3"),
         };
-        let (stmts, outs) = self.body(&ids, inputs);
-        let value = match ret {
-            Ret::Scalar(_) => outs[0].clone(),
-            Ret::Vector(_) => vec_tokens(k, &outs),
-            Ret::Matrix(_) => mat_tokens(k, &outs),
-        };
-        let name = Ident::new(name, Span::call_site());
-        quote! {
-            #[inline]
-            fn #name(&self, #args) -> #ret_ty {
-                #stmts
-                #value
-            }
+        let _ = writeln!(out, "#[inline]\nfn {name}(&self, {args}) -> {ret_ty} {{");
+        let outs = self.body(out, &ids, inputs);
+        match ret {
+            Ret::Scalar(_) => out.push_str(&outs[0]),
+            Ret::Vector(_) | Ret::Matrix(_) => construct(out, ret_ty, &outs),
         }
+        out.push_str("\n}\n");
     }
 
     /// The methods of `impl Lagrangian`.
-    pub fn lagrangian_methods(&self, o: &Outputs) -> TokenStream {
-        let k = self.krate;
-        let t = Types::new(k);
-        let (v3, m3) = (&t.v3, &t.m3);
-        let f64t = quote!(#k::__private::f64);
-        let wg = quote!(__omega: &#v3, __gamma: &#v3);
-        let gonly = quote!(__gamma: &#v3);
+    pub fn lagrangian_methods(&self, o: &Outputs) -> String {
+        let mut out = String::new();
         let l = Inputs::Lagrangian;
-        let ms = [
-            self.method(
-                "lagrangian",
-                wg.clone(),
-                &f64t,
-                Ret::Scalar(o.lagrangian),
-                l,
-            ),
-            self.method("dl_domega", wg.clone(), v3, Ret::Vector(o.dl_domega), l),
-            self.method("dl_dgamma", wg.clone(), v3, Ret::Vector(o.dl_dgamma), l),
-            self.method("d2l_domega2", gonly, m3, Ret::Matrix(o.d2l_domega2), l),
-            self.method(
-                "d2l_domega_dgamma",
-                wg.clone(),
-                m3,
-                Ret::Matrix(o.d2l_domega_dgamma),
-                l,
-            ),
-            self.method("energy", wg.clone(), &f64t, Ret::Scalar(o.energy), l),
-            self.method(
-                "cyclic_momentum",
-                wg,
-                &f64t,
-                Ret::Scalar(o.cyclic_momentum),
-                l,
-            ),
-        ];
-        quote!(#(#ms)*)
+        let s = &mut out;
+        self.method(s, "lagrangian", WG, Ret::Scalar(o.lagrangian), l);
+        self.method(s, "dl_domega", WG, Ret::Vector(o.dl_domega), l);
+        self.method(s, "dl_dgamma", WG, Ret::Vector(o.dl_dgamma), l);
+        let gonly = "__gamma: &__Vector3";
+        self.method(s, "d2l_domega2", gonly, Ret::Matrix(o.d2l_domega2), l);
+        let mx = Ret::Matrix(o.d2l_domega_dgamma);
+        self.method(s, "d2l_domega_dgamma", WG, mx, l);
+        self.method(s, "energy", WG, Ret::Scalar(o.energy), l);
+        self.method(s, "cyclic_momentum", WG, Ret::Scalar(o.cyclic_momentum), l);
+        out
     }
 
     /// The methods of `impl Routhian`.
-    pub fn routhian_methods(&self, o: &Outputs) -> TokenStream {
-        let k = self.krate;
-        let t = Types::new(k);
-        let (v3, m3) = (&t.v3, &t.m3);
-        let f64t = quote!(#k::__private::f64);
-        let a = quote!(__big_omega: &#v3, __gamma: &#v3, __p_psi: #f64t);
-        let ga = quote!(__gamma: &#v3, __p_psi: #f64t);
+    pub fn routhian_methods(&self, o: &Outputs) -> String {
+        let mut out = String::new();
         let r = Inputs::Routhian;
-        let mut ms = vec![
-            self.method("psi_dot", a.clone(), &f64t, Ret::Scalar(o.psi_dot), r),
-            self.method("routhian", a.clone(), &f64t, Ret::Scalar(o.routhian), r),
-            self.method("dr_domega", a.clone(), v3, Ret::Vector(o.dr_domega), r),
-            self.method("dr_dgamma", a.clone(), v3, Ret::Vector(o.dr_dgamma), r),
-            self.method("dr_dp", a.clone(), &f64t, Ret::Scalar(o.dr_dp), r),
-            self.method("d2r_domega2", a.clone(), m3, Ret::Matrix(o.d2r_domega2), r),
-            self.method(
-                "d2r_domega_dgamma",
-                a.clone(),
-                m3,
-                Ret::Matrix(o.d2r_domega_dgamma),
-                r,
-            ),
-            self.method("d2r_dgamma2", a.clone(), m3, Ret::Matrix(o.d2r_dgamma2), r),
-            self.method(
-                "amended_potential",
-                ga.clone(),
-                &f64t,
-                Ret::Scalar(o.amended_potential),
-                r,
-            ),
-        ];
+        let s = &mut out;
+        self.method(s, "psi_dot", ROUTH, Ret::Scalar(o.psi_dot), r);
+        self.method(s, "routhian", ROUTH, Ret::Scalar(o.routhian), r);
+        self.method(s, "dr_domega", ROUTH, Ret::Vector(o.dr_domega), r);
+        self.method(s, "dr_dgamma", ROUTH, Ret::Vector(o.dr_dgamma), r);
+        self.method(s, "dr_dp", ROUTH, Ret::Scalar(o.dr_dp), r);
+        self.method(s, "d2r_domega2", ROUTH, Ret::Matrix(o.d2r_domega2), r);
+        let mx = Ret::Matrix(o.d2r_domega_dgamma);
+        self.method(s, "d2r_domega_dgamma", ROUTH, mx, r);
+        self.method(s, "d2r_dgamma2", ROUTH, Ret::Matrix(o.d2r_dgamma2), r);
+        let ur = Ret::Scalar(o.amended_potential);
+        self.method(s, "amended_potential", REST, ur, r);
+
         // bundle: every output from one straight-line body.
-        let (stmts, outs) = self.body(&o.bundle().flatten(), r);
-        let b = Bundle::from_flat(outs);
-        let (rr, pd, dp) = (&b.routhian, &b.psi_dot, &b.dr_dp);
-        let dw = vec_tokens(k, &b.dr_domega);
-        let dg = vec_tokens(k, &b.dr_dgamma);
-        let hw = mat_tokens(k, b.d2r_domega2.as_flattened());
-        let hwg = mat_tokens(k, b.d2r_domega_dgamma.as_flattened());
-        let hg = mat_tokens(k, b.d2r_dgamma2.as_flattened());
-        ms.push(quote! {
-            #[inline]
-            fn bundle(&self, #a) -> #k::__private::RouthBundle {
-                #stmts
-                #k::__private::RouthBundle {
-                    routhian: #rr,
-                    psi_dot: #pd,
-                    dr_domega: #dw,
-                    dr_dgamma: #dg,
-                    dr_dp: #dp,
-                    d2r_domega2: #hw,
-                    d2r_domega_dgamma: #hwg,
-                    d2r_dgamma2: #hg,
-                }
-            }
-        });
-        let (stmts, outs) = self.body(&o.gyroscopic().flatten(), r);
-        let s = Gyroscopic::from_flat(outs);
-        let (ma, mg, mc) = (
-            mat_tokens(k, s.a.as_flattened()),
-            mat_tokens(k, s.g.as_flattened()),
-            mat_tokens(k, s.c.as_flattened()),
+        let _ = writeln!(
+            s,
+            "#[inline]\nfn bundle(&self, {ROUTH}) -> __RouthBundle {{"
         );
-        ms.push(quote! {
-            #[inline]
-            fn gyroscopic_system(&self, #ga) -> #k::__private::GyroscopicSystem {
-                #stmts
-                #k::__private::GyroscopicSystem { a: #ma, g: #mg, c: #mc }
-            }
-        });
-        quote!(#(#ms)*)
+        let outs = self.body(s, &o.bundle().flatten(), r);
+        let b = Bundle::from_flat(outs);
+        let _ = write!(
+            s,
+            "__RouthBundle {{\nrouthian: {},\npsi_dot: {},\ndr_domega: ",
+            b.routhian, b.psi_dot
+        );
+        construct(s, "__Vector3", &b.dr_domega);
+        s.push_str(",\ndr_dgamma: ");
+        construct(s, "__Vector3", &b.dr_dgamma);
+        let _ = write!(s, ",\ndr_dp: {},\nd2r_domega2: ", b.dr_dp);
+        construct(s, "__Matrix3", b.d2r_domega2.as_flattened());
+        s.push_str(",\nd2r_domega_dgamma: ");
+        construct(s, "__Matrix3", b.d2r_domega_dgamma.as_flattened());
+        s.push_str(",\nd2r_dgamma2: ");
+        construct(s, "__Matrix3", b.d2r_dgamma2.as_flattened());
+        s.push_str(",\n}\n}\n");
+
+        let _ = writeln!(
+            s,
+            "#[inline]\nfn gyroscopic_system(&self, {REST}) -> __GyroscopicSystem {{"
+        );
+        let outs = self.body(s, &o.gyroscopic().flatten(), r);
+        let m = Gyroscopic::from_flat(outs);
+        s.push_str("__GyroscopicSystem {\na: ");
+        construct(s, "__Matrix3", m.a.as_flattened());
+        s.push_str(",\ng: ");
+        construct(s, "__Matrix3", m.g.as_flattened());
+        s.push_str(",\nc: ");
+        construct(s, "__Matrix3", m.c.as_flattened());
+        s.push_str(",\n}\n}\n");
+        out
     }
 }

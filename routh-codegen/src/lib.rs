@@ -17,19 +17,31 @@ pub mod layout;
 pub mod lower;
 pub mod reduce;
 
-use proc_macro2::TokenStream;
+use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 
 /// Expands `#[derive(Lagrangian)]`. Never panics: every mistake becomes a `compile_error!`.
 pub fn derive(input: TokenStream) -> TokenStream {
+    derive_with(input, &lex)
+}
+
+/// [`derive`], with `lex` turning the generated methods' source text into tokens (see
+/// [`expand_with`]).
+pub fn derive_with(input: TokenStream, lex: &dyn Fn(&str) -> Option<TokenStream>) -> TokenStream {
     let di: syn::DeriveInput = match syn::parse2(input) {
         Ok(di) => di,
         Err(e) => return e.to_compile_error(),
     };
-    match expand(&di) {
+    match expand_with(&di, lex) {
         Ok(ts) => ts,
         Err(e) => fallback(&di, e),
     }
+}
+
+/// Lexes source text with `proc_macro2` (which, in a proc macro, lexes it twice: once unoptimised
+/// in `proc_macro2` to validate it, once in the compiler).
+fn lex(src: &str) -> Option<TokenStream> {
+    src.parse().ok()
 }
 
 /// A model that passed every check, lowered and reduced.
@@ -64,14 +76,53 @@ fn crate_path(m: &Model) -> TokenStream {
 
 /// The generated code for a valid input, or all its errors.
 pub fn expand(di: &syn::DeriveInput) -> Result<TokenStream, syn::Error> {
+    expand_with(di, &lex)
+}
+
+/// [`expand`], with `lex` turning source text into tokens. The methods are written as text (see
+/// [`emit`]) and lexed in one call: `routh-macros` passes the compiler's lexer
+/// (`proc_macro::TokenStream::from_str`), so that a user's debug build, which runs this crate
+/// unoptimised, neither builds nor lexes their tokens one by one. The tokens get
+/// `Span::call_site()`, like those `quote!` makes; what comes from the user's tokens (the
+/// struct's name and generics, the crate path) is interpolated with its own spans.
+pub fn expand_with(
+    di: &syn::DeriveInput,
+    lex: &dyn Fn(&str) -> Option<TokenStream>,
+) -> Result<TokenStream, syn::Error> {
     let model = analyse(di)?;
     let krate = crate_path(&model);
-    let e = emit::Emitter {
-        sym: &model.lowered.sym,
-        krate: &krate,
+    let e = emit::Emitter::new(&model.lowered.sym);
+    let lex = |src: String| {
+        lex(&src).ok_or_else(|| {
+            syn::Error::new_spanned(
+                &di.ident,
+                "internal error in #[derive(Lagrangian)]: the generated code does not lex",
+            )
+        })
     };
-    let lag = e.lagrangian_methods(&model.outputs);
-    let routh = e.routhian_methods(&model.outputs);
+    let lag = lex(e.lagrangian_methods(&model.outputs))?;
+    let routh = lex(e.routhian_methods(&model.outputs))?;
+    let aliases = emit::ALIASES.iter().map(|&(alias, item)| {
+        let generic = matches!(item, "Vector3" | "Matrix3");
+        let (alias, item) = (
+            Ident::new(alias, Span::call_site()),
+            Ident::new(item, Span::call_site()),
+        );
+        if generic {
+            quote!(type #alias = #krate::__private::#item<#krate::__private::f64>;)
+        } else {
+            quote!(type #alias = #krate::__private::#item;)
+        }
+    });
+    let sign = e.uses_sign().then(|| {
+        let sign = Ident::new(emit::SIGN, Span::call_site());
+        quote! {
+            #[inline(always)]
+            fn #sign(__x: __F64) -> __F64 {
+                #krate::__private::sign(__x)
+            }
+        }
+    });
     let ident = &di.ident;
     let (ig, tg, wc) = di.generics.split_for_impl();
     let graph = &model.lowered.sym.graph;
@@ -82,6 +133,8 @@ pub fn expand(di: &syn::DeriveInput) -> Result<TokenStream, syn::Error> {
         #[doc(hidden)]
         #[allow(non_upper_case_globals, unused_qualifications, clippy::all, clippy::pedantic, clippy::nursery)]
         const _: () = {
+            #(#aliases)*
+            #sign
             #[automatically_derived]
             impl #ig #krate::__private::Lagrangian for #ident #tg #wc {
                 #lag

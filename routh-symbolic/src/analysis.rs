@@ -83,6 +83,15 @@ pub fn schedule(g: &Graph, outputs: &[Id]) -> Vec<Id> {
         .collect()
 }
 
+/// The children of a node, as a pair.
+fn kids(node: Node) -> (Option<Id>, Option<Id>) {
+    match node {
+        Node::Const(_) | Node::Var(_) => (None, None),
+        Node::Add(a, b) | Node::Mul(a, b) | Node::Powf(a, b) => (Some(a), Some(b)),
+        Node::Neg(a) | Node::Recip(a) | Node::Powi(a, _) | Node::Func(_, a) => (Some(a), None),
+    }
+}
+
 /// What straight-line code for a set of outputs computes: the nodes to emit (children before
 /// parents) and how each is written. A negation feeding a sum is written as a subtraction, a
 /// reciprocal used once as a division; such folded nodes are not emitted on their own.
@@ -97,22 +106,22 @@ pub struct Plan {
 impl Plan {
     /// The plan for `outputs`.
     pub fn new(g: &Graph, outputs: &[Id]) -> Plan {
+        // Plain loops over `kids`: this runs once per generated method, unoptimised in a
+        // user's debug build.
+        let nodes = g.nodes();
         let n = outputs.iter().max().map_or(0, |m| m.index() + 1);
         let mut needed = vec![false; n];
         for o in outputs {
             needed[o.index()] = true;
         }
+        let mut uses = vec![0u32; n];
         for i in (0..n).rev() {
             if needed[i] {
-                for c in g.nodes()[i].children() {
+                let (a, b) = kids(nodes[i]);
+                for c in [a, b].into_iter().flatten() {
                     needed[c.index()] = true;
+                    uses[c.index()] += 1;
                 }
-            }
-        }
-        let mut uses = vec![0u32; n];
-        for i in (0..n).filter(|&i| needed[i]) {
-            for c in g.nodes()[i].children() {
-                uses[c.index()] += 1;
             }
         }
         for o in outputs {
@@ -127,7 +136,10 @@ impl Plan {
         }
         for i in (0..n).rev() {
             if plan.emit[i] {
-                for c in plan.operands(g, Id::from_index(i)) {
+                let id = Id::from_index(i);
+                let (a, b) = kids(nodes[i]);
+                for c in [a, b].into_iter().flatten() {
+                    let c = plan.folds(g, id, c).unwrap_or(c);
                     plan.emit[c.index()] = true;
                 }
             }

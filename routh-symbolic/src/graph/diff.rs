@@ -12,30 +12,48 @@ impl Graph {
     /// decided once, by [`Graph::as_var`], where the caller has to handle `None`; after that,
     /// differentiation cannot fail.
     pub fn diff(&mut self, f: Id, v: Var) -> Id {
+        if let Some(d) = self.diff_memoised(f, v) {
+            return d;
+        }
         // Iterative post-order so that deep expressions cannot overflow the stack.
         let mut stack = vec![(f, false)];
         while let Some((id, ready)) = stack.pop() {
-            if self.diff_memo.contains_key(&(id, v)) {
+            if self.diff_memoised(id, v).is_some() {
                 continue;
             }
             if !ready {
                 stack.push((id, true));
                 for c in self.node(id).children() {
-                    if !self.diff_memo.contains_key(&(c, v)) {
+                    if self.diff_memoised(c, v).is_none() {
                         stack.push((c, false));
                     }
                 }
                 continue;
             }
             let d = self.diff_node(id, v);
-            self.diff_memo.insert((id, v), d);
+            let memo = &mut self.diff_memo[v.index()];
+            if memo.len() <= id.index() {
+                memo.resize(id.index() + 1, Id::NONE);
+            }
+            memo[id.index()] = d;
         }
-        self.diff_memo[&(f, v)]
+        self.diff_memo[v.index()][f.index()]
+    }
+
+    /// `∂f/∂v` if already computed.
+    fn diff_memoised(&mut self, f: Id, v: Var) -> Option<Id> {
+        if self.diff_memo.len() <= v.index() {
+            self.diff_memo.resize_with(v.index() + 1, Vec::new);
+        }
+        match self.diff_memo[v.index()].get(f.index()) {
+            Some(&d) if d != Id::NONE => Some(d),
+            _ => None,
+        }
     }
 
     /// The derivative of node `id` by `v`, its children's derivatives being memoised already.
     fn diff_node(&mut self, id: Id, v: Var) -> Id {
-        let d = |g: &Self, c: Id| g.diff_memo[&(c, v)];
+        let d = |g: &Self, c: Id| g.diff_memo[v.index()][c.index()];
         match self.node(id) {
             Node::Const(_) => self.zero(),
             Node::Var(w) => self.constant(if w == v { 1.0 } else { 0.0 }),

@@ -21,6 +21,7 @@
 mod collect;
 mod diff;
 mod eval;
+mod fx;
 mod rewrite;
 
 use std::collections::HashMap;
@@ -31,6 +32,10 @@ use std::fmt;
 pub struct Id(pub(crate) u32);
 
 impl Id {
+    /// "No node": the empty slots of `Graph::diff_memo` (no graph can reach `u32::MAX` nodes,
+    /// as `intern` refuses the id after the last).
+    pub(crate) const NONE: Id = Id(u32::MAX);
+
     /// The index of the node (children have smaller indices than their parents).
     pub fn index(self) -> usize {
         self.0 as usize
@@ -166,11 +171,12 @@ pub struct Graph {
     /// Every node, children before parents; an [`Id`] is an index into it.
     nodes: Vec<Node>,
     /// The hash-cons table: the id of every node in `nodes`.
-    memo: HashMap<Node, Id>,
+    memo: HashMap<Node, Id, fx::FxBuild>,
     /// The variables, by slot.
     vars: Vec<VarSlot>,
-    /// `∂f/∂v` already computed, by `(f, v)` (see `diff`).
-    diff_memo: HashMap<(Id, Var), Id>,
+    /// `∂f/∂v` already computed: `diff_memo[v][f]`, [`Id::NONE`] where not yet (see `diff`).
+    /// Dense per variable, so that differentiating hashes nothing.
+    diff_memo: Vec<Vec<Id>>,
 }
 
 impl fmt::Debug for Graph {
@@ -240,7 +246,11 @@ impl Graph {
         if let Some(&id) = self.memo.get(&node) {
             return id;
         }
-        let id = Id(u32::try_from(self.nodes.len()).expect("expression graph exceeds u32 nodes"));
+        let id = u32::try_from(self.nodes.len())
+            .ok()
+            .filter(|&i| i != Id::NONE.0)
+            .map(Id)
+            .expect("expression graph exceeds u32 nodes");
         debug_assert!(node.children().all(|c| c < id));
         self.nodes.push(node);
         self.memo.insert(node, id);

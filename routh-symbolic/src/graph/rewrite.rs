@@ -306,8 +306,15 @@ impl Graph {
     /// too. Returns the images of `roots`.
     ///
     /// Every node up to the largest root is rebuilt, reachable or not (so which nodes this adds,
-    /// and in which order, depends only on the largest root).
+    /// and in which order, depends only on the largest root); a node that is provably its own
+    /// image is kept without calling its constructor, which would add nothing and return it.
     pub fn substitute(&mut self, roots: &[Id], map: &HashMap<Var, Id>) -> Vec<Id> {
+        self.substitute_impl(roots, map, true)
+    }
+
+    /// [`Graph::substitute`]; `skip` keeps a node that is provably its own image without calling
+    /// its constructor (`false`: the plain rebuild, which the tests compare it with).
+    fn substitute_impl(&mut self, roots: &[Id], map: &HashMap<Var, Id>, skip: bool) -> Vec<Id> {
         let Some(max) = roots.iter().max() else {
             return Vec::new();
         };
@@ -315,6 +322,23 @@ impl Graph {
         for i in 0..=max.index() {
             let node = self.nodes[i];
             let m = |c: Id| image[c.index()];
+            // A node other than a sum whose children are their own images is its own image:
+            // its constructor's rewrites depend only on the structure below it, none of them
+            // applied when it was made, and it would find the node in the table without adding
+            // any. (A sum is rebuilt regardless: whether like terms are collected also depends
+            // on the sums that exist, which may have changed since.)
+            let same = skip
+                && match node {
+                    Node::Const(_) | Node::Var(_) | Node::Add(..) => false,
+                    Node::Mul(a, b) | Node::Powf(a, b) => m(a) == a && m(b) == b,
+                    Node::Neg(a) | Node::Recip(a) | Node::Powi(a, _) | Node::Func(_, a) => {
+                        m(a) == a
+                    }
+                };
+            if same {
+                image.push(Id(i as u32));
+                continue;
+            }
             let new = match node {
                 Node::Const(_) => Id(i as u32),
                 Node::Var(v) => map.get(&v).copied().unwrap_or(Id(i as u32)),
@@ -350,5 +374,72 @@ impl Graph {
             image.push(new);
         }
         roots.iter().map(|r| image[r.index()]).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A small deterministic generator (no dependency needed).
+    struct Lcg(u64);
+
+    impl Lcg {
+        fn below(&mut self, n: usize) -> usize {
+            self.0 = self
+                .0
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            ((self.0 >> 33) as usize) % n
+        }
+    }
+
+    /// A random graph over `vars` built through the constructors, with sums that share terms
+    /// (so that like-term collection is exercised).
+    fn random_graph(rng: &mut Lcg, vars: usize, ops: usize) -> (Graph, Vec<Var>) {
+        let mut g = Graph::new();
+        let vs: Vec<Var> = (0..vars).map(|i| g.new_var(format!("x{i}"))).collect();
+        let mut pool: Vec<Id> = vs.iter().map(|&v| g.var_id(v)).collect();
+        for c in [0.5, 2.0, -1.0, 3.0] {
+            pool.push(g.constant(c));
+        }
+        for _ in 0..ops {
+            let a = pool[rng.below(pool.len())];
+            let b = pool[rng.below(pool.len())];
+            let id = match rng.below(10) {
+                0..=2 => g.add(a, b),
+                3 => g.sub(a, b),
+                4..=6 => g.mul(a, b),
+                7 => g.div(a, b),
+                8 => g.powi(a, [2, 3, -2][rng.below(3)]),
+                _ => g.func([Func::Sqrt, Func::Sin, Func::Abs][rng.below(3)], a),
+            };
+            pool.push(id);
+        }
+        (g, vs)
+    }
+
+    /// Skipping the nodes that are their own image changes nothing: same images, and the same
+    /// nodes added in the same order, as rebuilding every node.
+    #[test]
+    fn skipping_unchanged_nodes_is_exact() {
+        let mut rng = Lcg(0x5EED);
+        for _ in 0..200 {
+            let (mut g, vs) = random_graph(&mut rng, 4, 60);
+            let n = g.len();
+            // Roots anywhere in the graph, a map of one or two variables (to constants, other
+            // variables or expressions).
+            let roots: Vec<Id> = (0..4).map(|_| Id(rng.below(n) as u32)).collect();
+            let mut map = HashMap::new();
+            for _ in 0..1 + rng.below(2) {
+                let v = vs[rng.below(vs.len())];
+                map.insert(v, Id(rng.below(n) as u32));
+            }
+            let mut h = g.clone();
+            let fast = g.substitute_impl(&roots, &map, true);
+            let full = h.substitute_impl(&roots, &map, false);
+            assert_eq!(fast, full);
+            assert_eq!(g.nodes(), h.nodes());
+        }
     }
 }
