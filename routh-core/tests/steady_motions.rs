@@ -25,29 +25,7 @@ fn roots_in_z(f: impl Fn(f64) -> f64) -> Vec<f64> {
         .rev()
         .map(|i| (std::f64::consts::PI * i as f64 / n as f64).cos())
         .collect();
-    let mut out = Vec::new();
-    for w in zs.windows(2) {
-        let (mut a, mut b) = (w[0], w[1]);
-        let (fa, fb) = (f(a), f(b));
-        if fa == 0.0 {
-            out.push(a);
-            continue;
-        }
-        if fa * fb > 0.0 {
-            continue;
-        }
-        for _ in 0..200 {
-            let m = 0.5 * (a + b);
-            if f(a) * f(m) <= 0.0 {
-                b = m;
-            } else {
-                a = m;
-            }
-        }
-        out.push(0.5 * (a + b));
-    }
-    out.dedup_by(|x, y| (*x - *y).abs() < 1e-9);
-    out
+    test_models::roots::bracketed_roots(f, &zs, 1e-9)
 }
 
 /// Checks the general properties of every steady motion: unit γ, critical point of U_r (33),

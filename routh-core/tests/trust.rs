@@ -2,95 +2,20 @@
 //! answers. Every expected value comes from a closed form or from a computation in this file
 //! (analysis of the Lagrange conditions, one-dimensional root finding), never from routh's output.
 //!
-//! The models are written by hand: J constant, a(γ) = 0 and a potential U(γ) given by a closure
-//! with its gradient and Hessian, so R(Ω, γ, p) = ½ΩᵀJΩ − U − ½(p − (JΩ)·γ)²/(γᵀJγ) with every
-//! derivative in closed form.
+//! The models are written by hand (`test_models::PotentialBody`): J constant, a(γ) = 0 and a
+//! potential U(γ) given by a closure with its gradient and Hessian, so
+//! R(Ω, γ, p) = ½ΩᵀJΩ − U − ½(p − (JΩ)·γ)²/(γᵀJγ) with every derivative in closed form.
 
 use routh_core::steady::{steady_motions_checked, steady_motions_checked_with, SearchResult};
 use routh_core::{
-    classify, stability::ClassifyOptions, Lagrangian, Matrix3, RouthError, Routhian, SearchOptions,
-    Stability, SteadyMotion, Vector3,
+    classify, stability::ClassifyOptions, Matrix3, RouthError, SearchOptions, Stability,
+    SteadyMotion, Vector3,
 };
 
 // ---------------------------------------------------------------------------------------------
 // The hand-written model.
 
-type Potential = Box<dyn Fn(&Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>)>;
-
-/// `L = ½ωᵀJω − U(γ)` with `U` returning (value, gradient, Hessian) in ℝ³.
-struct Body {
-    j: Matrix3<f64>,
-    u: Potential,
-}
-
-impl Body {
-    fn new(j: Matrix3<f64>, u: Potential) -> Self {
-        Body { j, u }
-    }
-    fn diag(a: f64, b: f64, c: f64, u: Potential) -> Self {
-        Body::new(Matrix3::from_diagonal(&Vector3::new(a, b, c)), u)
-    }
-    fn n(&self, g: &Vector3<f64>) -> f64 {
-        g.dot(&(self.j * g))
-    }
-    fn q(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
-        p - (self.j * w).dot(g)
-    }
-    /// ∂(q/n)/∂γ.
-    fn dqn(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-        let (n, q) = (self.n(g), self.q(w, g, p));
-        -(self.j * w) / n - (2.0 * q / (n * n)) * (self.j * g)
-    }
-}
-
-impl Lagrangian for Body {
-    fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
-        0.5 * w.dot(&(self.j * w)) - (self.u)(g).0
-    }
-    fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
-        self.j * w
-    }
-    fn dl_dgamma(&self, _: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
-        -(self.u)(g).1
-    }
-    fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> {
-        self.j
-    }
-    fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
-        Matrix3::zeros()
-    }
-}
-
-impl Routhian for Body {
-    fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
-        let (n, q) = (self.n(g), self.q(w, g, p));
-        0.5 * w.dot(&(self.j * w)) - (self.u)(g).0 - 0.5 * q * q / n
-    }
-    fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-        let (n, q) = (self.n(g), self.q(w, g, p));
-        self.j * w + (q / n) * (self.j * g)
-    }
-    fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-        let (n, q) = (self.n(g), self.q(w, g, p));
-        -(self.u)(g).1 + (q / n) * (self.j * w) + (q * q / (n * n)) * (self.j * g)
-    }
-    fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
-        let jg = self.j * g;
-        self.j - jg * jg.transpose() / self.n(g)
-    }
-    fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-        let (n, q) = (self.n(g), self.q(w, g, p));
-        (self.j * g) * self.dqn(w, g, p).transpose() + (q / n) * self.j
-    }
-    fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-        let (n, q) = (self.n(g), self.q(w, g, p));
-        let dqn = self.dqn(w, g, p);
-        (self.j * w) * dqn.transpose()
-            + (q * q / (n * n)) * self.j
-            + (2.0 * q / n) * (self.j * g) * dqn.transpose()
-            - (self.u)(g).2
-    }
-}
+use test_models::{Potential, PotentialBody as Body};
 
 /// U = k·γ (gravity: k = m g r).
 fn linear(k: Vector3<f64>) -> Potential {
@@ -135,24 +60,7 @@ fn scaled_shifted(u: Potential, s: f64, c: f64) -> Potential {
 /// The roots of `f` in `(lo, hi)` by sign changes on a grid in `x` (uniform or geometric) and
 /// bisection to full precision.
 fn roots(f: impl Fn(f64) -> f64, grid: &[f64]) -> Vec<f64> {
-    let mut out = Vec::new();
-    for w in grid.windows(2) {
-        let (mut a, mut b) = (w[0], w[1]);
-        if f(a) * f(b) > 0.0 {
-            continue;
-        }
-        for _ in 0..200 {
-            let m = 0.5 * (a + b);
-            if f(a) * f(m) <= 0.0 {
-                b = m;
-            } else {
-                a = m;
-            }
-        }
-        out.push(0.5 * (a + b));
-    }
-    out.dedup_by(|x, y| (*x - *y).abs() <= 1e-12 * x.abs().max(1e-300));
-    out
+    test_models::roots::bracketed_roots(f, grid, 1e-12)
 }
 
 /// A grid of θ ∈ (0, π): geometric from 1e−9 to 1e−2, then uniform.

@@ -33,11 +33,12 @@ pub mod identities;
 pub mod jacobian;
 mod numdual;
 mod random;
+pub mod roots;
 pub mod vec3;
 
 pub use ellipsoid::Ellipsoid;
 pub use gyrostat::Gyrostat;
-pub use heavy_top::HeavyTop;
+pub use heavy_top::{HeavyTop, Potential, PotentialBody, PotentialTerms};
 pub use numdual::{
     numdual_bundle, numdual_dr_dp, numdual_lagrangian_gradient, numdual_lagrangian_hessian,
     numdual_routhian_gradient, numdual_routhian_hessian, GenericModel,
