@@ -11,11 +11,11 @@ use std::error::Error;
 use std::path::Path;
 use std::time::Instant;
 
-use common::plot::{verdict_series, Figure};
-use common::{linspace, verdict_label};
+use common::verdict_label;
 use derived_models::Gyrostat;
 use derived_models::{classified_steady_motions, report_at};
-use plotters::prelude::SeriesLabelPosition;
+use routh::families::bifurcation_diagram_checked;
+use routh::plot::{self, PlotOptions};
 use routh::{continue_branch, ContinuationOptions, DerivedFormulas, EventKind, Routhian, Vector3};
 
 /// Unit vectors spread over the sphere (deterministic), for the formula check.
@@ -90,43 +90,58 @@ fn describe(name: &str, body: &Gyrostat) {
     );
 }
 
+/// Smale's energy–momentum diagram of `body` over `range` of p_ψ: every branch of steady motions
+/// by continuation ([`bifurcation_diagram_checked`]), its events, and the figure.
 fn energy_momentum(
     body: &Gyrostat,
     title: &str,
     path: &Path,
-    ps: &[f64],
+    range: (f64, f64),
 ) -> Result<(), Box<dyn Error>> {
-    let mut pts = Vec::new();
-    let mut counts = [0usize; 4];
-    for &p in ps {
-        for r in classified_steady_motions(body, p)? {
-            pts.push((r.report.verdict, p, r.motion.energy));
-            if let Some(i) = common::VERDICTS.iter().position(|&v| v == r.report.verdict) {
-                counts[i] += 1;
-            }
-        }
-    }
-    let mut fig = Figure::new(
-        title,
-        "cyclic momentum p_ψ",
-        "energy E of the steady motion",
-    );
-    fig.series.extend(verdict_series(&pts, 3));
-    fig.legend = SeriesLabelPosition::UpperMiddle;
-    fig.save(path, 900, 560)?;
-    let (lo, hi) = (
-        ps.first().copied().unwrap_or(0.0),
-        ps.last().copied().unwrap_or(0.0),
-    );
+    let checked = bifurcation_diagram_checked(
+        |p| (body.clone(), p),
+        range,
+        &ContinuationOptions::default(),
+    )?;
+    let d = &checked.diagram;
     println!(
-        "\nEnergy–momentum diagram over p_ψ ∈ [{lo}, {hi}] ({} values): {} secularly stable, {} \
-         gyroscopically stabilised, {} unstable, {} degenerate steady motions.",
-        ps.len(),
-        counts[0],
-        counts[1],
-        counts[2],
-        counts[3]
+        "\nEnergy–momentum diagram over p_ψ ∈ [{}, {}]: {} branches, {} points; events:",
+        range.0,
+        range.1,
+        d.branches.len(),
+        d.branches.iter().map(|b| b.points.len()).sum::<usize>()
     );
+    for e in &d.events {
+        println!("  {e}");
+    }
+    println!(
+        "  count checks against global searches between events: {}",
+        if checked.consistent() {
+            "all agree"
+        } else {
+            "MISMATCH"
+        }
+    );
+    for c in checked
+        .checks
+        .iter()
+        .filter(|c| c.on_branches != c.searched)
+    {
+        println!(
+            "    p_ψ = {:.4}: {} steady motions on the branches, {} found by steady_motions",
+            c.s, c.on_branches, c.searched
+        );
+    }
+    plot::energy_momentum_svg(
+        d,
+        path,
+        &PlotOptions {
+            title: title.into(),
+            x_label: "cyclic momentum p_ψ".into(),
+            y_label: "energy E of the steady motion".into(),
+            ..PlotOptions::default()
+        },
+    )?;
     Ok(())
 }
 
@@ -193,13 +208,12 @@ fn main() -> Result<(), Box<dyn Error>> {
         (k_found - k_formula).abs() / k_formula
     );
 
-    let ps = linspace(-6.0, 9.0, 121);
     let path = out.join("kelvin_energy_momentum.svg");
     energy_momentum(
         &kelvin,
         "Kelvin gyrostat (a = K = 3.5e₃): energy–momentum diagram of steady motions",
         &path,
-        &ps,
+        (-6.0, 9.0),
     )?;
     figures.push(path);
 
@@ -209,13 +223,12 @@ fn main() -> Result<(), Box<dyn Error>> {
         println!("\n p_ψ = {p}:");
         common::print_steady_table(&classified_steady_motions(&coupled, p)?, &e3, "∠(γ,e₃)");
     }
-    let ps = linspace(-6.0, 6.0, 121);
     let path = out.join("coupled_energy_momentum.svg");
     energy_momentum(
         &coupled,
         "Body with a(γ) = Bγ: energy–momentum diagram of steady motions",
         &path,
-        &ps,
+        (-6.0, 6.0),
     )?;
     figures.push(path);
 

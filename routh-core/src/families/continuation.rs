@@ -393,7 +393,11 @@ pub(crate) fn changes(a: &Node, b: &Node, isolated: bool) -> Vec<Change> {
                 out.push(Change::Eigen(i));
             }
         }
-        if out.len() == 2 {
+        // Both eigenvalues through zero together: a double zero when they are equal on both
+        // sides (a symmetric body), else two events in one step, which the caller separates.
+        let equal =
+            |n: &Node| (n.eig[1] - n.eig[0]).abs() <= 1e-9 * n.eig[0].abs().max(n.eig[1].abs());
+        if out.len() == 2 && equal(a) && equal(b) {
             out.truncate(1);
         }
     } else if (a.eig[0] + a.eig[1]) * (b.eig[0] + b.eig[1]) < 0.0 {

@@ -431,7 +431,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             // Shorten the step when the tangent turns too fast, when two events share it, or
             // when the verdict changes with no test function changing sign.
             let unexplained = ch.is_empty() && a.verdict() != b.verdict();
-            if (cos < 0.97 || (eigen && disc) || unexplained) && h > 4.0 * opts.min_step {
+            let two_eigen = ch.iter().filter(|c| matches!(c, Change::Eigen(_))).count() > 1;
+            if (cos < 0.97 || (eigen && disc) || two_eigen || unexplained)
+                && h > 4.0 * opts.min_step
+            {
                 h *= 0.5;
                 continue;
             }
@@ -635,6 +638,27 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             }
             for pair in nodes.windows(2) {
                 let (a, b) = (&pair[0], &pair[1]);
+                if isolated {
+                    // Distance in (γ, σ) from the point to the segment: robust at turning points
+                    // in s, where the segments' s-ranges need not contain s.
+                    let len = self.len();
+                    let x = (gamma, s / len);
+                    let (ag, asg) = (a.gamma, a.s / len);
+                    let (dg, ds) = (b.gamma - a.gamma, (b.s - a.s) / len);
+                    let seg2 = dg.norm_squared() + ds * ds;
+                    let t = if seg2 > 0.0 {
+                        (((x.0 - ag).dot(&dg) + (x.1 - asg) * ds) / seg2).clamp(0.0, 1.0)
+                    } else {
+                        0.0
+                    };
+                    let dist = ((x.0 - (ag + t * dg)).norm_squared()
+                        + (x.1 - (asg + t * ds)).powi(2))
+                    .sqrt();
+                    if dist <= 0.3 * seg2.sqrt() + 1e-6 {
+                        return Ok(true);
+                    }
+                    continue;
+                }
                 let (lo, hi) = (a.s.min(b.s), a.s.max(b.s));
                 let pad = 1e-9 * self.len();
                 if s < lo - pad || s > hi + pad {
@@ -645,25 +669,17 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 } else {
                     0.5
                 };
-                if isolated {
-                    let g = a.gamma + t * (b.gamma - a.gamma);
-                    let seg = (b.gamma - a.gamma).norm();
-                    if (g - gamma).norm() <= 0.3 * seg + 1e-6 {
-                        return Ok(true);
-                    }
-                } else {
-                    let (ua, ub) = (
-                        a.point.steady.amended_potential,
-                        b.point.steady.amended_potential,
-                    );
-                    let (wa, wb) = (a.point.steady.psi_dot, b.point.steady.psi_dot);
-                    let ui = ua + t * (ub - ua);
-                    let wi = wa + t * (wb - wa);
-                    let tol_u = 0.3 * (ub - ua).abs() + 1e-7 * (1.0 + u.abs());
-                    let tol_w = 0.3 * (wb - wa).abs() + 1e-7 * (1.0 + w.abs());
-                    if (ui - u).abs() <= tol_u && (wi - w).abs() <= tol_w {
-                        return Ok(true);
-                    }
+                let (ua, ub) = (
+                    a.point.steady.amended_potential,
+                    b.point.steady.amended_potential,
+                );
+                let (wa, wb) = (a.point.steady.psi_dot, b.point.steady.psi_dot);
+                let ui = ua + t * (ub - ua);
+                let wi = wa + t * (wb - wa);
+                let tol_u = 0.3 * (ub - ua).abs() + 1e-7 * (1.0 + u.abs());
+                let tol_w = 0.3 * (wb - wa).abs() + 1e-7 * (1.0 + w.abs());
+                if (ui - u).abs() <= tol_u && (wi - w).abs() <= tol_w {
+                    return Ok(true);
                 }
             }
         }
