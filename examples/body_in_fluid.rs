@@ -16,7 +16,10 @@ use derived_models::fluid_body::{perturbed_axial, FluidBody, Kirchhoff};
 use derived_models::{classified_steady_motions, report_at, stability_threshold};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::fluid::FluidParameters;
-use routh::{simulate_full, Lagrangian, Matrix3, SimOptions, Vector3};
+use routh::plot::{self, Overlay, PlotOptions};
+use routh::{
+    simulate_full, stability_atlas, AtlasOptions, Lagrangian, Matrix3, SimOptions, Vector3,
+};
 
 /// Prints `label` followed by the three rows of `m`, aligned under each other.
 fn print_mat(label: &str, m: &Matrix3<f64>) {
@@ -228,6 +231,65 @@ fn main() -> Result<(), Box<dyn Error>> {
     let path2 = out.join("axial_motion_tilt.svg");
     fig2.save(&path2, 900, 500)?;
 
+    // --- Atlas of the axial motion over (added mass c₃ along the axis, p_ψ) ---------------------
+    let (c3_range, p_range) = ((0.8, 2.8), (0.0, 2.5));
+    let body_with = |c3: f64| Kirchhoff {
+        c: Matrix3::from_diagonal(&Vector3::new(rev.c[(0, 0)], rev.c[(1, 1)], c3)),
+        ..rev.clone()
+    };
+    let atlas = stability_atlas(
+        |c3, p| {
+            let f = body_with(c3)
+                .parameters(k)
+                .expect("c stays positive definite over the range");
+            (FluidBody::from(&f), p)
+        },
+        e3,
+        c3_range,
+        p_range,
+        &AtlasOptions {
+            nx: 41,
+            ny: 41,
+            ..AtlasOptions::default()
+        },
+    )?;
+    println!(
+        "\nStability atlas of the motion along the axis over (c₃, p_ψ) ∈ [{}, {}] × [{}, {}]:",
+        c3_range.0, c3_range.1, p_range.0, p_range.1
+    );
+    let closed = |c3: f64| body_with(c3).axial_threshold(k);
+    for b in &atlas.boundaries {
+        let worst = b
+            .points
+            .iter()
+            .map(|&(c3, p)| (p - closed(c3)).abs() / closed(c3).max(1e-300))
+            .fold(0.0f64, f64::max);
+        println!(
+            "  {} boundary: {} traced points, largest relative distance to p_ψ² = 4A₁k²(1/c₃ − 1/c₁): {worst:.1e}",
+            b.kind,
+            b.points.len()
+        );
+    }
+    let path3 = out.join("axial_motion_atlas.svg");
+    plot::stability_atlas_svg(
+        &atlas,
+        &path3,
+        &PlotOptions {
+            title: "Body of revolution moving along its axis: verdict over (c₃, p_ψ)".into(),
+            x_label: "added mass along the axis c₃".into(),
+            y_label: "cyclic momentum p_ψ".into(),
+            overlays: vec![Overlay {
+                label: "closed form p_ψ² = 4A₁k²(1/c₃ − 1/c₁)".into(),
+                points: linspace(c3_range.0, c3_range.1, 200)
+                    .into_iter()
+                    .map(|c3| (c3, closed(c3)))
+                    .filter(|p| p.1.is_finite())
+                    .collect(),
+            }],
+            ..PlotOptions::default()
+        },
+    )?;
+
     // --- 2. A body without symmetry -------------------------------------------------------------
     let chiral = Kirchhoff::chiral();
     let f2 = chiral.parameters(k)?;
@@ -240,6 +302,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!("\nFigures:");
     println!("  {}", path1.display());
     println!("  {}", path2.display());
+    println!("  {}", path3.display());
     println!("Done in {:.2} s.", start.elapsed().as_secs_f64());
     Ok(())
 }

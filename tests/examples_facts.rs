@@ -441,3 +441,40 @@ fn kelvin_energy_momentum_diagram_events_are_zeros_of_the_second_variation() {
     }
     assert!(zeros >= 4, "{:#?}", d.events);
 }
+
+/// `body_in_fluid`'s atlas of the motion along the axis over (c₃, p_ψ): the traced
+/// Hamiltonian–Hopf curve is the closed form p_ψ² = 4A₁k²(1/c₃ − 1/c₁).
+#[test]
+fn axial_motion_atlas_curve_is_the_closed_form() {
+    let rev = Kirchhoff::body_of_revolution();
+    let k = 1.0;
+    let body_with = |c3: f64| Kirchhoff {
+        c: Matrix3::from_diagonal(&Vector3::new(rev.c[(0, 0)], rev.c[(1, 1)], c3)),
+        ..rev.clone()
+    };
+    let atlas = routh::stability_atlas(
+        |c3, p| (FluidBody::from(&body_with(c3).parameters(k).unwrap()), p),
+        Vector3::z(),
+        (0.8, 2.8),
+        (0.0, 2.5),
+        &routh::AtlasOptions {
+            nx: 21,
+            ny: 21,
+            ..routh::AtlasOptions::default()
+        },
+    )
+    .unwrap();
+    let hh: Vec<_> = atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind == routh::EventKind::HamiltonianHopf)
+        .collect();
+    assert!(!hh.is_empty());
+    for b in hh {
+        assert!(b.points.len() > 10);
+        for &(c3, p) in &b.points {
+            let exact = body_with(c3).axial_threshold(k);
+            assert!(rel(p, exact) < 1e-8, "c₃ = {c3}: {p} vs {exact}");
+        }
+    }
+}
