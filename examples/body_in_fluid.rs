@@ -235,7 +235,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let (c3_range, p_range) = ((0.8, 2.8), (0.0, 2.5));
     let body_with = |c3: f64| Kirchhoff {
         c: Matrix3::from_diagonal(&Vector3::new(rev.c[(0, 0)], rev.c[(1, 1)], c3)),
-        ..rev.clone()
+        ..rev
     };
     let atlas = stability_atlas(
         |c3, p| {

@@ -450,7 +450,7 @@ fn axial_motion_atlas_curve_is_the_closed_form() {
     let k = 1.0;
     let body_with = |c3: f64| Kirchhoff {
         c: Matrix3::from_diagonal(&Vector3::new(rev.c[(0, 0)], rev.c[(1, 1)], c3)),
-        ..rev.clone()
+        ..rev
     };
     let atlas = routh::stability_atlas(
         |c3, p| (FluidBody::from(&body_with(c3).parameters(k).unwrap()), p),
