@@ -15,10 +15,12 @@ use std::time::Instant;
 
 use common::plot::{verdict_series, Figure};
 use common::{linspace, verdict_label};
+use derived_models::ellipsoid::uniform_inertia;
 use derived_models::Ellipsoid;
 use derived_models::{classified_steady_motions, report_at, stability_threshold};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
-use routh::{Routhian, Stability, Vector3};
+use routh::plot::{self, Overlay, PlotOptions};
+use routh::{stability_atlas, AtlasOptions, Routhian, Stability, Vector3};
 
 const DSL: &str = r#"    #[derive(Lagrangian)]
     #[lagrangian(
@@ -169,7 +171,7 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     let spheroid = Ellipsoid::spheroid();
     let triaxial = Ellipsoid::triaxial();
-    let figures = [
+    let mut figures = vec![
         study(
             "1. Prolate spheroid (egg)",
             "spheroid_steady_motions.svg",
@@ -204,6 +206,70 @@ fn main() -> Result<(), Box<dyn Error>> {
             triaxial.amended_potential(&r.motion.gamma, 0.0)
         );
     }
+
+    // --- Atlas of the spin on the end of a spheroid over (its semi-axis a₃, p_ψ) -----------------
+    let spheroid_with = |a3: f64| {
+        let a = Vector3::new(1.0, 1.0, a3);
+        Ellipsoid {
+            inertia: uniform_inertia(spheroid.mass, &a),
+            semi_axes: a,
+            ..spheroid.clone()
+        }
+    };
+    let (a3_range, p_range) = ((1.3, 3.0), (0.0, 16.0));
+    let atlas = stability_atlas(
+        |a3, p| (spheroid_with(a3), p),
+        Vector3::z(),
+        a3_range,
+        p_range,
+        &AtlasOptions {
+            nx: 41,
+            ny: 41,
+            ..AtlasOptions::default()
+        },
+    )?;
+    let closed = |a3: f64| {
+        spheroid_with(a3)
+            .spheroid_threshold(1.0)
+            .unwrap_or(f64::NAN)
+    };
+    println!(
+        "\nStability atlas of the spin on the end (γ = e₃) over (a₃, p_ψ) ∈ [{}, {}] × [{}, {}] \
+         (a₁ = a₂ = 1, uniform density):",
+        a3_range.0, a3_range.1, p_range.0, p_range.1
+    );
+    for b in &atlas.boundaries {
+        let worst = b
+            .points
+            .iter()
+            .map(|&(a3, p)| (p - closed(a3)).abs() / closed(a3))
+            .fold(0.0f64, f64::max);
+        println!(
+            "  {} boundary: {} traced points, largest relative distance to p² = 4I₁mgℓ: {worst:.1e}",
+            b.kind,
+            b.points.len()
+        );
+    }
+    let path = common::out_dir("ellipsoid_on_plane")?.join("spheroid_atlas.svg");
+    plot::stability_atlas_svg(
+        &atlas,
+        &path,
+        &PlotOptions {
+            title: "Spheroid spinning on its end: verdict over (a₃, p_ψ)".into(),
+            x_label: "semi-axis along the symmetry axis a₃".into(),
+            y_label: "cyclic momentum p_ψ".into(),
+            overlays: vec![Overlay {
+                label: "closed form p² = 4I₁mgℓ, ℓ = a₃ − h − a₁²/a₃".into(),
+                points: linspace(a3_range.0, a3_range.1, 200)
+                    .into_iter()
+                    .map(|a3| (a3, closed(a3)))
+                    .filter(|q| q.1.is_finite())
+                    .collect(),
+            }],
+            ..PlotOptions::default()
+        },
+    )?;
+    figures.push(path);
 
     println!("\nFigures:");
     for f in &figures {

@@ -478,3 +478,43 @@ fn axial_motion_atlas_curve_is_the_closed_form() {
         }
     }
 }
+
+/// `ellipsoid_on_plane`'s atlas of the spheroid spinning on its end over (a₃, p_ψ): the traced
+/// Hamiltonian–Hopf curve is the closed form p² = 4I₁mgℓ, ℓ = a₃ − h − a₁²/a₃.
+#[test]
+fn spheroid_atlas_curve_is_the_closed_form() {
+    let base = Ellipsoid::spheroid();
+    let with = |a3: f64| {
+        let a = Vector3::new(1.0, 1.0, a3);
+        Ellipsoid {
+            inertia: derived_models::ellipsoid::uniform_inertia(base.mass, &a),
+            semi_axes: a,
+            ..base.clone()
+        }
+    };
+    let atlas = routh::stability_atlas(
+        |a3, p| (with(a3), p),
+        Vector3::z(),
+        (1.3, 3.0),
+        (0.0, 16.0),
+        &routh::AtlasOptions {
+            nx: 21,
+            ny: 21,
+            ..routh::AtlasOptions::default()
+        },
+    )
+    .unwrap();
+    let mut checked = 0;
+    for b in atlas
+        .boundaries
+        .iter()
+        .filter(|b| b.kind == routh::EventKind::HamiltonianHopf)
+    {
+        for &(a3, p) in &b.points {
+            let exact = with(a3).spheroid_threshold(1.0).unwrap();
+            assert!(rel(p, exact) < 1e-8, "a₃ = {a3}: {p} vs {exact}");
+            checked += 1;
+        }
+    }
+    assert!(checked > 10);
+}
