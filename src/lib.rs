@@ -42,7 +42,11 @@ pub mod __private {
     pub use core::primitive::f64;
     pub use core::primitive::i32;
     pub use routh_core::nalgebra::{Matrix3, Vector3};
+    pub use routh_core::certify::RouthTape;
     pub use routh_core::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+
+    /// What `Routhian::certification_tape` returns.
+    pub type MaybeTape = core::option::Option<RouthTape>;
 
     /// `sign(x)` with `sign(0) = 0`: the derivative of `abs`.
     #[inline]

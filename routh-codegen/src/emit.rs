@@ -23,12 +23,14 @@ use std::fmt::Write;
 
 /// The names the text uses for the types of `<crate>::__private`, declared as type aliases in
 /// the `const _` block around the impls: `(alias, item of __private)`.
-pub const ALIASES: [(&str, &str); 5] = [
+pub const ALIASES: [(&str, &str); 7] = [
     ("__F64", "f64"),
     ("__Vector3", "Vector3"),
     ("__Matrix3", "Matrix3"),
     ("__RouthBundle", "RouthBundle"),
     ("__GyroscopicSystem", "GyroscopicSystem"),
+    ("__RouthTape", "RouthTape"),
+    ("__MaybeTape", "MaybeTape"),
 ];
 
 /// The function the text calls for `sign(x)`, declared next to the aliases when used (see
@@ -350,4 +352,16 @@ impl Emitter<'_> {
         s.push_str(",\n}\n}\n");
         out
     }
+}
+
+/// Writes `fn certification_tape`: the interval tape of `∂R/∂γ`, `∂²R/∂γ²` at `Ω = 0`
+/// ([`crate::tape`]) as one string literal, with the parameter values it reads from `self`.
+pub fn certification_tape(out: &mut String, sym: &Symbols, o: &Outputs) {
+    let (text, params) = crate::tape::tape(sym, &o.dr_dgamma_at_rest, &o.d2r_dgamma2_at_rest);
+    let _ = writeln!(
+        out,
+        "#[inline]\nfn certification_tape(&self) -> __MaybeTape {{\n\
+         __RouthTape::parse(\"{text}\", &[{}])\n}}",
+        params.join(", ")
+    );
 }

@@ -16,6 +16,7 @@ pub mod emit;
 pub mod layout;
 pub mod lower;
 pub mod reduce;
+pub mod tape;
 
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -101,7 +102,9 @@ pub fn expand_with(
         })
     };
     let lag = lex(e.lagrangian_methods(&model.outputs))?;
-    let routh = lex(e.routhian_methods(&model.outputs))?;
+    let mut routh_text = e.routhian_methods(&model.outputs);
+    emit::certification_tape(&mut routh_text, &model.lowered.sym, &model.outputs);
+    let routh = lex(routh_text)?;
     let aliases = emit::ALIASES.iter().map(|&(alias, item)| {
         let generic = matches!(item, "Vector3" | "Matrix3");
         let (alias, item) = (

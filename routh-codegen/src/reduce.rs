@@ -38,6 +38,10 @@ pub struct Outputs {
     pub amended_potential: Id,
     /// ψ̇ at Ω = 0 (38).
     pub psi_dot_at_rest: Id,
+    /// ∂R/∂γ at Ω = 0: the gradient whose tangential part vanishes at a steady motion (33).
+    pub dr_dgamma_at_rest: V3,
+    /// ∂²R/∂γ² at Ω = 0.
+    pub d2r_dgamma2_at_rest: M3,
     /// A, G, C of (64) at Ω = 0.
     pub gyro_a: M3,
     pub gyro_g: M3,
@@ -278,6 +282,8 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         d2r_dgamma2: bundle.d2r_dgamma2,
         amended_potential,
         psi_dot_at_rest,
+        dr_dgamma_at_rest: dg0,
+        d2r_dgamma2_at_rest: h0,
         gyro_a: a0,
         gyro_g,
         gyro_c,

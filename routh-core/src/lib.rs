@@ -15,6 +15,7 @@
 pub use nalgebra;
 pub use nalgebra::{Complex, Matrix3, Vector3};
 
+pub mod certify;
 mod error;
 pub mod families;
 mod krein;
@@ -25,6 +26,7 @@ pub mod stability;
 pub mod steady;
 pub mod validate;
 
+pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
 pub use error::RouthError;
 pub use families::{
     bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,

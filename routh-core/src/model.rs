@@ -145,6 +145,13 @@ pub trait Routhian: Lagrangian {
     fn gyroscopic_system(&self, gamma: &Vector3<f64>, p_psi: f64) -> GyroscopicSystem {
         GyroscopicSystem::from_bundle(&self.bundle(&Vector3::zeros(), gamma, p_psi), gamma)
     }
+    /// `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` as an expression tape that can be evaluated with
+    /// intervals, for [`steady_motions_certified`](crate::certify::steady_motions_certified).
+    /// `#[derive(Lagrangian)]` emits it; a hand-written model has none (`None`, the default)
+    /// and cannot be certified.
+    fn certification_tape(&self) -> Option<crate::certify::RouthTape> {
+        None
+    }
 }
 
 /// Formulas that `#[derive(Lagrangian)]` derived for a model, as plain text, for reports. The
