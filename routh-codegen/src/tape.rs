@@ -27,7 +27,11 @@ pub fn tape(sym: &Symbols, gradient: &[Id; 3], hessian: &[[Id; 3]; 3]) -> (Strin
     let outputs: Vec<Id> = gradient
         .iter()
         .copied()
-        .chain((0..3).flat_map(|i| (i..3).map(move |j| (i, j))).map(|(i, j)| hessian[i][j]))
+        .chain(
+            (0..3)
+                .flat_map(|i| (i..3).map(move |j| (i, j)))
+                .map(|(i, j)| hessian[i][j]),
+        )
         .collect();
     let top = outputs.iter().map(|o| o.index()).max().unwrap_or(0);
     // Nodes reachable from the outputs, in id order (children first).

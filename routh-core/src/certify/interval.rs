@@ -145,7 +145,11 @@ impl Interval {
         } else {
             (a.min(b), a.max(b))
         };
-        let lo = if small == 0.0 { 0.0 } else { down(small * small).max(0.0) };
+        let lo = if small == 0.0 {
+            0.0
+        } else {
+            down(small * small).max(0.0)
+        };
         Interval::new(lo, up(large * large))
     }
 
@@ -433,6 +437,9 @@ mod tests {
         assert_eq!(Interval::new(-1.0, 1.0).ln(), Interval::ENTIRE);
         assert_eq!(Interval::new(-1.0, 1.0).sqrt(), Interval::ENTIRE);
         assert_eq!(Interval::new(f64::NAN, 1.0), Interval::ENTIRE);
-        assert_eq!(Interval::point(0.0) * Interval::ENTIRE, Interval::point(0.0));
+        assert_eq!(
+            Interval::point(0.0) * Interval::ENTIRE,
+            Interval::point(0.0)
+        );
     }
 }

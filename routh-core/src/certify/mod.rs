@@ -231,7 +231,11 @@ impl Evaluator<'_> {
         // dγ/du = (e_a − γγ_a)/r, dγ/dv = (e_b − γγ_b)/r.
         let dgamma = |c: usize| -> [Interval; 3] {
             std::array::from_fn(|j| {
-                let e = if j == c { Interval::point(1.0) } else { Interval::point(0.0) };
+                let e = if j == c {
+                    Interval::point(1.0)
+                } else {
+                    Interval::point(0.0)
+                };
                 (e - gamma[j] * gamma[c]) * r_inv
             })
         };
@@ -253,25 +257,41 @@ enum Verdict {
     Excluded,
     /// Exactly one, inside the given sub-box.
     Unique(Interval, Interval),
-    /// Not decided at this size.
-    Split,
+    /// Not decided at this size; the Krawczyk contraction estimate `‖I − Y F'(X)‖∞` (∞ when it
+    /// could not be formed). It halves with the box near a regular zero and stays large near a
+    /// circle of zeros, where `F'` is singular.
+    Split(f64),
 }
 
 fn excludes_zero(x: Interval) -> bool {
     x.lo > 0.0 || x.hi < 0.0
 }
 
-/// One test of a box: exclusion by the natural and mean-value enclosures, then Krawczyk.
+/// `x` widened by 5% of its width on each side.
+fn inflate(x: Interval) -> Interval {
+    let e = 0.05 * x.width();
+    Interval::new((x.lo - e).next_down(), (x.hi + e).next_up())
+}
+
+/// One test of a box: exclusion by the natural and mean-value enclosures, then Krawczyk. The
+/// tests run on the box widened by 5%: a steady motion on the edge of a box (the centre of a
+/// face, on the first split, is one) can never map into the interior of that box, but it does
+/// into the interior of the wider one. A verdict on the wider box holds for the box.
 fn test_box(ev: &mut Evaluator<'_>, b: &ChartBox) -> Verdict {
+    let b = &ChartBox {
+        face: b.face,
+        u: inflate(b.u),
+        v: inflate(b.v),
+    };
     let field = ev.field(b, true);
     if field.f.iter().any(|&x| excludes_zero(x)) {
         return Verdict::Excluded;
     }
     let Some(df) = field.df else {
-        return Verdict::Split;
+        return Verdict::Split(f64::INFINITY);
     };
     if df.iter().flatten().any(|x| !x.is_bounded()) {
-        return Verdict::Split;
+        return Verdict::Split(f64::INFINITY);
     }
     let (mu, mv) = (b.u.mid(), b.v.mid());
     let centre = ChartBox {
@@ -281,7 +301,7 @@ fn test_box(ev: &mut Evaluator<'_>, b: &ChartBox) -> Verdict {
     };
     let fm = ev.field(&centre, false).f;
     if fm.iter().any(|x| !x.is_bounded()) {
-        return Verdict::Split;
+        return Verdict::Split(f64::INFINITY);
     }
     let d = [b.u - centre.u, b.v - centre.v];
     // Mean-value form: F(X) ⊆ F(m) + F'(X)(X − m).
@@ -292,11 +312,14 @@ fn test_box(ev: &mut Evaluator<'_>, b: &ChartBox) -> Verdict {
         }
     }
     // Y ≈ F'(m)⁻¹ from the midpoints (any real matrix keeps Krawczyk valid).
-    let m = [[df[0][0].mid(), df[0][1].mid()], [df[1][0].mid(), df[1][1].mid()]];
+    let m = [
+        [df[0][0].mid(), df[0][1].mid()],
+        [df[1][0].mid(), df[1][1].mid()],
+    ];
     let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
     let scale = m.iter().flatten().fold(0.0f64, |s, x| s.max(x.abs()));
     if !det.is_finite() || det.abs() <= 1e-14 * scale * scale {
-        return Verdict::Split;
+        return Verdict::Split(f64::INFINITY);
     }
     let y = [
         [m[1][1] / det, -m[0][1] / det],
@@ -304,15 +327,24 @@ fn test_box(ev: &mut Evaluator<'_>, b: &ChartBox) -> Verdict {
     ];
     let yp = |i: usize, j: usize| Interval::point(y[i][j]);
     let mut k = [centre.u, centre.v];
+    let mut q = 0.0f64;
     for (i, ki) in k.iter_mut().enumerate() {
         let yf = yp(i, 0) * fm[0] + yp(i, 1) * fm[1];
         let mut acc = *ki - yf;
+        let mut row = 0.0;
         for j in 0..2 {
             // (I − Y F'(X))_ij
             let ydf = yp(i, 0) * df[0][j] + yp(i, 1) * df[1][j];
-            let e = if i == j { Interval::point(1.0) } else { Interval::point(0.0) };
-            acc = acc + (e - ydf) * d[j];
+            let e = if i == j {
+                Interval::point(1.0)
+            } else {
+                Interval::point(0.0)
+            };
+            let c = e - ydf;
+            row += c.mag();
+            acc = acc + c * d[j];
         }
+        q = q.max(row);
         *ki = acc;
     }
     let x = [b.u, b.v];
@@ -322,7 +354,7 @@ fn test_box(ev: &mut Evaluator<'_>, b: &ChartBox) -> Verdict {
     if k[0].interior_of(x[0]) && k[1].interior_of(x[1]) {
         return Verdict::Unique(k[0], k[1]);
     }
-    Verdict::Split
+    Verdict::Split(q)
 }
 
 /// A certified zero: its chart, the box where it is unique, and a tight enclosure in γ.
@@ -443,12 +475,15 @@ pub fn steady_motions_certified<M: Routhian>(
                 let gamma = b.face.gamma(tight.0, tight.1).0;
                 found.push(Found {
                     face: b.face,
-                    unique: (b.u, b.v),
+                    unique: (inflate(b.u), inflate(b.v)),
                     gamma,
                 });
             }
-            Verdict::Split => {
-                if b.u.width().max(b.v.width()) <= opts.min_width {
+            Verdict::Split(q) => {
+                // Below `min_width` only boxes that look like a regular zero (a contraction
+                // estimate that a few more halvings bring below 1) are split further.
+                let w = b.u.width().max(b.v.width());
+                if w <= opts.min_width && (q > 16.0 || w <= opts.min_width * 1e-6) {
                     undecided.push(b);
                 } else if b.u.width() >= b.v.width() {
                     let (l, r) = b.u.bisect();

@@ -7,10 +7,7 @@ use super::interval::Interval;
 
 /// A number type the tape can be evaluated with.
 pub trait TapeScalar:
-    Copy
-    + std::ops::Add<Output = Self>
-    + std::ops::Mul<Output = Self>
-    + std::ops::Neg<Output = Self>
+    Copy + std::ops::Add<Output = Self> + std::ops::Mul<Output = Self> + std::ops::Neg<Output = Self>
 {
     /// The exact value of a double.
     fn from_f64(x: f64) -> Self;
@@ -214,7 +211,12 @@ impl RouthTape {
 
     /// `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0`, `(γ, p_ψ)`, evaluated with `T`; `scratch` is reused
     /// between calls.
-    pub fn eval<T: TapeScalar>(&self, gamma: [T; 3], p_psi: T, scratch: &mut Vec<T>) -> GradHess<T> {
+    pub fn eval<T: TapeScalar>(
+        &self,
+        gamma: [T; 3],
+        p_psi: T,
+        scratch: &mut Vec<T>,
+    ) -> GradHess<T> {
         scratch.clear();
         for op in &self.ops {
             let v = |i: usize| scratch[i];
@@ -236,9 +238,6 @@ impl RouthTape {
         let o = |k: usize| scratch[self.outputs[k]];
         let grad = [o(0), o(1), o(2)];
         let (h00, h01, h02, h11, h12, h22) = (o(3), o(4), o(5), o(6), o(7), o(8));
-        (
-            grad,
-            [[h00, h01, h02], [h01, h11, h12], [h02, h12, h22]],
-        )
+        (grad, [[h00, h01, h02], [h01, h11, h12], [h02, h12, h22]])
     }
 }
