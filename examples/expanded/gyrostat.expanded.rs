@@ -29,6 +29,8 @@ const _: () = {
     type __Matrix3 = ::routh::__private::Matrix3<::routh::__private::f64>;
     type __RouthBundle = ::routh::__private::RouthBundle;
     type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
+    type __RouthTape = ::routh::__private::RouthTape;
+    type __MaybeTape = ::routh::__private::MaybeTape;
     #[automatically_derived]
     impl ::routh::__private::Lagrangian for Gyrostat {
         #[inline]
@@ -2050,6 +2052,37 @@ const _: () = {
                     __t525,
                 ),
             }
+        }
+        #[inline]
+        fn certification_tape(&self) -> __MaybeTape {
+            __RouthTape::parse(
+                "g 0;g 1;g 2;p;f 0;f 1;f 2;f 3;f 4;f 5;f 6;f 7;f 8;f 9;f 10;f 11;f 12;f 13;f 14;f 15;f 16;f 17;f 18;f 19;f 20;f 21;f 22;* 0 13;* 1 14;* 2 15;+ 27 28;+ 29 30;* 0 16;* 1 17;* 2 18;+ 32 33;+ 34 35;* 0 19;* 1 20;* 2 21;+ 37 38;+ 39 40;+ 10 31;+ 11 36;+ 12 41;* 25 26;c 4000000000000000;* 22 45;- 47;* 23 45;- 49;* 24 45;- 51;* 0 4;* 1 5;* 2 6;+ 53 54;+ 55 56;* 0 5;* 1 7;* 2 8;+ 58 59;+ 60 61;* 0 6;* 1 8;* 2 9;+ 63 64;+ 65 66;* 0 57;* 1 62;* 2 67;+ 68 69;+ 70 71;/ 72;* 1 16;* 2 19;* 0 14;* 2 20;* 1 18;* 0 15;+ 78 79;* 46 13;+ 14 16;+ 15 19;* 46 17;+ 18 20;* 46 21;* 0 42;* 1 43;* 2 44;+ 87 88;+ 89 90;- 91;+ 3 92;* 73 93;+ 27 42;+ 74 95;+ 75 96;+ 33 43;+ 76 98;+ 77 99;+ 39 44;+ 80 101;* 57 94;* 62 94;* 67 94;+ 97 103;+ 100 104;+ 102 105;* 94 106;+ 48 109;* 94 107;+ 50 111;* 94 108;+ 52 113;+ 103 106;+ 104 107;+ 105 108;* 73 115;* 73 116;* 73 117;* 4 94;* 5 94;* 6 94;* 7 94;* 8 94;* 9 94;+ 81 121;* 94 127;* 115 118;- 129;+ 128 130;+ 82 122;* 94 132;* 116 118;- 134;+ 133 135;+ 83 123;* 94 137;* 117 118;- 139;+ 138 140;+ 84 124;* 94 142;* 116 119;- 144;+ 143 145;+ 85 125;* 94 147;* 117 119;- 149;+ 148 150;+ 86 126;* 94 152;* 117 120;- 154;+ 153 155;o 110 112 114 131 136 141 146 151 156",
+                &[
+                    self.inertia[(0usize, 0usize)],
+                    self.inertia[(0usize, 1usize)],
+                    self.inertia[(0usize, 2usize)],
+                    self.inertia[(1usize, 1usize)],
+                    self.inertia[(1usize, 2usize)],
+                    self.inertia[(2usize, 2usize)],
+                    self.rotor[0usize],
+                    self.rotor[1usize],
+                    self.rotor[2usize],
+                    self.coupling[(0usize, 0usize)],
+                    self.coupling[(0usize, 1usize)],
+                    self.coupling[(0usize, 2usize)],
+                    self.coupling[(1usize, 0usize)],
+                    self.coupling[(1usize, 1usize)],
+                    self.coupling[(1usize, 2usize)],
+                    self.coupling[(2usize, 0usize)],
+                    self.coupling[(2usize, 1usize)],
+                    self.coupling[(2usize, 2usize)],
+                    self.com[0usize],
+                    self.com[1usize],
+                    self.com[2usize],
+                    self.mass,
+                    self.g,
+                ],
+            )
         }
     }
     #[automatically_derived]

@@ -26,6 +26,8 @@ const _: () = {
     type __Matrix3 = ::routh::__private::Matrix3<::routh::__private::f64>;
     type __RouthBundle = ::routh::__private::RouthBundle;
     type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
+    type __RouthTape = ::routh::__private::RouthTape;
+    type __MaybeTape = ::routh::__private::MaybeTape;
     #[automatically_derived]
     impl ::routh::__private::Lagrangian for LagrangeTop {
         #[inline]
@@ -909,6 +911,13 @@ const _: () = {
                     __t325,
                 ),
             }
+        }
+        #[inline]
+        fn certification_tape(&self) -> __MaybeTape {
+            __RouthTape::parse(
+                "g 0;g 1;g 2;p;f 0;f 1;f 2;- 6;^ 0 2;^ 1 2;+ 8 9;* 4 10;* 2 5;* 2 12;+ 11 13;/ 14;* 0 4;* 1 4;* 3 15;* 16 18;* 17 18;* 12 18;* 18 19;* 18 20;* 18 21;+ 7 24;* 15 19;* 15 20;* 15 21;* 4 18;* 5 18;* 18 29;* 19 26;c c010000000000000;* 33 32;+ 31 34;* 20 26;* 33 36;* 21 26;* 33 38;* 20 27;* 33 40;+ 31 41;* 21 27;* 33 43;* 18 30;* 21 28;* 33 46;+ 45 47;o 22 23 25 35 37 39 42 44 48",
+                &[self.a1, self.c, self.mgl],
+            )
         }
     }
     #[automatically_derived]
