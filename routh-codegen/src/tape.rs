@@ -1,5 +1,5 @@
 //! The certification tape: `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` as a flat list of operations, for
-//! the runtime's interval evaluation (`routh::certify`, docs/method.md §7).
+//! the runtime's interval evaluation (`routh::certify`, docs/method.md §9).
 //!
 //! The certified search needs enclosures of the gradient and Hessian in γ over boxes of the
 //! sphere. Generating a second, generic copy of the code would double what the derive emits; the

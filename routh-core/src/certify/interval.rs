@@ -1,5 +1,5 @@
 //! A closed interval of reals with outward rounding: the number type of the certified search
-//! (docs/method.md §7).
+//! (docs/method.md §9).
 //!
 //! Every operation returns an interval that contains the exact result of the operation applied
 //! to every pair of points of its operands. Arithmetic (`+ − × ÷`) and `sqrt` are correctly

@@ -1,4 +1,4 @@
-//! Certified completeness of the steady-motion search (docs/method.md §7): a proof, by interval
+//! Certified completeness of the steady-motion search (docs/method.md §9): a proof, by interval
 //! arithmetic, that the steady motions returned are all the critical points of the amended
 //! potential on the sphere, each the only one in its enclosure — or the regions where the proof
 //! could not be completed.
