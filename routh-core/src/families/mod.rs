@@ -275,7 +275,7 @@ pub struct AtlasOptions {
     /// Budget of points per boundary curve (default `20_000`).
     pub max_curve_points: usize,
     /// Number of worker threads for the grid of
-    /// [`stability_atlas_parallel`](super::stability_atlas_parallel) (`0`: all cores; default
+    /// [`stability_atlas_parallel`] (`0`: all cores; default
     /// `0`). The result does not depend on it.
     pub threads: usize,
     /// Tolerances of the verdicts at each node.

@@ -1,0 +1,198 @@
+//! The grid of the atlas: the steady motion followed from node to node by a tangent predictor
+//! and Newton's method on the sphere, and its verdict at every node (see the module docs of
+//! [`super`], "The grid").
+
+use nalgebra::{Matrix2, Matrix3x2, Vector2, Vector3};
+
+use super::super::equations::{chart, chart_eval, relative_discriminant, Local};
+use super::{at_xy, Ctx, PINV_CUT};
+use crate::error::RouthError;
+use crate::model::Routhian;
+use crate::sphere::{sym2_eigen, tangent_basis};
+use crate::stability::{classify_with, StabilityReport};
+use crate::steady::SteadyMotion;
+
+/// Newton on the sphere: converged when `|P_bᵀt| ≤ NEWTON_TOL ·` local scale.
+const NEWTON_TOL: f64 = 1e-11;
+/// … and polished until this (or one more step after `NEWTON_TOL`).
+const NEWTON_POLISH: f64 = 1e-14;
+const NEWTON_MAX_ITER: usize = 12;
+/// Largest Newton step on the sphere (rad).
+const NEWTON_MAX_STEP: f64 = 0.5;
+/// Central-difference step in the segment parameter of the grid continuation.
+const SEGMENT_DS: f64 = 1e-6;
+/// Smallest step (fraction of a segment) of the grid continuation.
+const SEGMENT_MIN_STEP: f64 = 1e-6;
+/// Jump detection: `|ξ − ξ_pred| ≤ JUMP_RATIO·|ξ_pred| + JUMP_FLOOR`.
+const JUMP_RATIO: f64 = 0.3;
+const JUMP_FLOOR: f64 = 1e-4;
+/// Jump detection: eigenvalues of `K` move by at most this fraction of the local scale per step.
+const EIGEN_JUMP: f64 = 0.3;
+
+/// A grid node where the motion was found.
+#[derive(Debug, Clone)]
+pub(super) struct Node {
+    pub(super) gamma: Vector3<f64>,
+    pub(super) report: StabilityReport,
+    /// [`relative_discriminant`] of `f₂` there.
+    pub(super) disc: f64,
+}
+
+/// The result of following the motion along a segment.
+pub(super) struct Follow {
+    /// γ at the end of the segment, if reached.
+    pub(super) reached: Option<Vector3<f64>>,
+    /// The last point reached: the segment parameter and γ.
+    pub(super) last: (f64, Vector3<f64>),
+}
+
+/// Minimum-norm solution of `j·d = b`, singular values `≤ cut` taken as zero.
+pub(super) fn pinv_solve2(j: &Matrix2<f64>, b: &Vector2<f64>, cut: f64) -> Option<Vector2<f64>> {
+    if !j.iter().all(|v| v.is_finite()) || !b.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    let svd = j.svd(true, true);
+    svd.solve(b, cut)
+        .ok()
+        .filter(|d| d.iter().all(|v| v.is_finite()))
+}
+
+impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
+    /// Newton's method on the sphere for the member `(m, p)`, in the chart around `base`, from
+    /// `xi0`. `None` if it does not converge.
+    pub(super) fn newton(
+        m: &M,
+        p: f64,
+        base: &Vector3<f64>,
+        basis: &Matrix3x2<f64>,
+        xi0: Vector2<f64>,
+    ) -> Option<(Vector2<f64>, Local)> {
+        let mut xi = xi0;
+        let mut polished = false;
+        for _ in 0..NEWTON_MAX_ITER {
+            let (g, dg) = chart(base, basis, &xi);
+            let l = Local::at(m, &g, p).ok()?;
+            let f = basis.transpose() * l.tangential();
+            let scale = l.raw_scale();
+            if !(scale > 0.0 && scale.is_finite()) {
+                return None;
+            }
+            let r = f.norm() / scale;
+            if r <= NEWTON_POLISH || (polished && r <= NEWTON_TOL) {
+                return Some((xi, l));
+            }
+            polished = r <= NEWTON_TOL;
+            let j = basis.transpose() * l.dt_dgamma() * dg;
+            let d = pinv_solve2(&j, &(-f), PINV_CUT * scale)?;
+            if d.norm() > NEWTON_MAX_STEP {
+                return None;
+            }
+            xi += d;
+        }
+        None
+    }
+
+    /// Follows the motion from `γ_a` at `a` to `b` along the segment.
+    pub(super) fn follow(&self, a: (f64, f64), gamma_a: &Vector3<f64>, b: (f64, f64)) -> Follow {
+        let seg = |s: f64| {
+            if s == 1.0 {
+                (self.family)(b.0, b.1)
+            } else {
+                (self.family)(a.0 + s * (b.0 - a.0), a.1 + s * (b.1 - a.1))
+            }
+        };
+        let mut s = 0.0;
+        let mut gamma = *gamma_a;
+        let mut h: f64 = 1.0;
+        let lost = |s: f64, gamma: Vector3<f64>| Follow {
+            reached: None,
+            last: (s, gamma),
+        };
+        while s < 1.0 {
+            let basis = tangent_basis(&gamma);
+            let Ok(ce) = chart_eval(&seg, &gamma, &basis, &Vector2::zeros(), s, SEGMENT_DS) else {
+                return lost(s, gamma);
+            };
+            let scale = ce.local.raw_scale();
+            let kappa0 = sym2_eigen(&ce.local.restricted()).values;
+            let jxi = ce.jac.fixed_view::<2, 2>(0, 0).into_owned();
+            let js = ce.jac.column(2).into_owned();
+            let Some(dxi) = pinv_solve2(&jxi, &(-js), PINV_CUT * scale) else {
+                return lost(s, gamma);
+            };
+            loop {
+                let last = h >= 1.0 - s;
+                let step = if last { 1.0 - s } else { h };
+                let s1 = if last { 1.0 } else { s + step };
+                let pred = dxi * step;
+                let (m, p) = seg(s1);
+                let ok = p.is_finite()
+                    && match Self::newton(&m, p, &gamma, &basis, pred) {
+                        Some((xi, l)) => {
+                            let scale1 = l.raw_scale();
+                            let kappa1 = sym2_eigen(&l.restricted()).values;
+                            let near = (xi - pred).norm() <= JUMP_RATIO * pred.norm() + JUMP_FLOOR;
+                            let smooth = (0..2).all(|i| {
+                                (kappa1[i] - kappa0[i]).abs() <= EIGEN_JUMP * scale.max(scale1)
+                            });
+                            if near && smooth {
+                                gamma = l.gamma;
+                                true
+                            } else {
+                                false
+                            }
+                        }
+                        None => false,
+                    };
+                if ok {
+                    s = s1;
+                    h = (2.0 * step).min(1.0);
+                    break;
+                }
+                h = step / 2.0;
+                if h < SEGMENT_MIN_STEP {
+                    return lost(s, gamma);
+                }
+            }
+        }
+        Follow {
+            reached: Some(gamma),
+            last: (1.0, gamma),
+        }
+    }
+
+    /// The record and verdict at a node where the motion is at `gamma`.
+    pub(super) fn node(&self, x: f64, y: f64, gamma: Vector3<f64>) -> Result<Node, RouthError> {
+        let (m, p) = self.member(x, y)?;
+        let steady = SteadyMotion::at(&m, gamma, p, true).map_err(|e| at_xy(x, y, e))?;
+        let report = classify_with(&m, &steady, &self.opts.classify).map_err(|e| at_xy(x, y, e))?;
+        let disc = relative_discriminant(&m, &steady.gamma, p).map_err(|e| at_xy(x, y, e))?;
+        Ok(Node {
+            gamma: steady.gamma,
+            report,
+            disc,
+        })
+    }
+
+    /// One row at ordinate `y`, from its first node.
+    pub(super) fn row(
+        &self,
+        xs: &[f64],
+        y: f64,
+        first: Option<Vector3<f64>>,
+    ) -> Result<Vec<Option<Node>>, RouthError> {
+        let mut out: Vec<Option<Node>> = vec![None; xs.len()];
+        let Some(g0) = first else { return Ok(out) };
+        out[0] = Some(self.node(xs[0], y, g0)?);
+        for i in 1..xs.len() {
+            self.member(xs[i], y)?;
+            let prev = out[i - 1].as_ref().map(|n| n.gamma);
+            let Some(g) = prev else { break };
+            match self.follow((xs[i - 1], y), &g, (xs[i], y)).reached {
+                Some(g) => out[i] = Some(self.node(xs[i], y, g)?),
+                None => break,
+            }
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,424 @@
+//! [`stability_atlas`]: the verdict of one steady motion over a grid of two parameters, with
+//! boundary curves traced by continuation.
+//!
+//! # The grid
+//!
+//! The steady motion is found once, at the corner `(x₀, y₀)`, by
+//! [`steady_motion_near`]. It is then followed from node to node:
+//! up the first column (`x = x₀`, `y` ascending), then along every row from its first node
+//! (`x` ascending). Each move from a node to its neighbour is a small continuation along the
+//! segment between them (the two-parameter family restricted to the segment is a one-parameter
+//! family, so [`chart_eval`] applies): a tangent predictor `dξ/ds = −F_ξ⁻¹F_s`, then Newton's
+//! method on the sphere at the new parameters in the chart around the old γ. A step is accepted
+//! only if Newton converges, lands within `0.3·|Δξ_pred| + 10⁻⁴` rad of the prediction (no jump
+//! to another branch) and the eigenvalues of the restricted second variation `K` move by less
+//! than `0.3` of the local scale; otherwise the step is halved. Below `10⁻⁶` of the segment the
+//! motion is lost (it ended at a fold): that node and the rest of its row (or column) are
+//! `None` — continuing further along the same line would cross the same fold.
+//!
+//! Rows are independent once the first column is known, so they run in parallel on a pool of
+//! [`AtlasOptions::threads`] threads by [`stability_atlas_parallel`]; the traversal inside a row
+//! is fixed, so the result does not depend on the number of threads (bit for bit).
+//!
+//! # The boundary curves
+//!
+//! Where the verdicts of two neighbouring nodes differ, the edge between them is searched for a
+//! zero of a test function:
+//! - an eigenvalue of `K` relative to the local scale (its sign changes on the edge):
+//!   [`EventKind::Fold`] or [`EventKind::BranchPoint`]; the eigenvalue is picked by continuity of
+//!   its eigenvector, so a double zero (the secular bound of a sleeping Lagrange top, `K = hE`)
+//!   is followed like a simple one;
+//! - [`relative_discriminant`] of `f₂`, where both nodes have degree of instability 2:
+//!   [`EventKind::HamiltonianHopf`];
+//! - next to a node where the motion is lost: the eigenvalue of `K` nearest zero at the last point
+//!   the continuation reached (a fold).
+//!
+//! The crossing is bracketed by regula falsi (Illinois) along the edge, γ following by the same
+//! continuation, then projected onto the curve by Gauss–Newton with minimum-norm steps on the
+//! three equations `P_bᵀt(γ(ξ); x, y) = 0` (relative to the local scale) and `τ(γ(ξ); x, y) = 0`
+//! in the four unknowns `(ξ, x, y)` (`x`, `y` scaled to the unit square). The curve is then
+//! followed both ways by pseudo-arclength continuation: tangent = the null vector of the 3×4
+//! Jacobian nearest the previous tangent (minimum-norm steps and this choice keep symmetric
+//! cases, where the Jacobian loses rank — a branch point of a symmetric body — on the curve),
+//! corrector = Gauss–Newton on the three equations plus the arclength hyperplane. Derivatives in
+//! ξ of `t` are exact ([`chart_eval`]), in `x`, `y` and of `τ` central differences. A step is
+//! accepted when the residual is within [`AtlasOptions::curve_tol`], the correction stays
+//! within half a step of the prediction, and the tangent turns by less than 37°; otherwise it is
+//! halved, and below `10⁻⁴` of [`AtlasOptions::curve_step`] the curve ends (a cusp, a crossing,
+//! or the end of the motion). A curve also ends where it leaves the rectangle (the exit point is
+//! solved on the edge) or when it closes. A located start within `2·10⁻³` of the unit square of a
+//! curve of the same class already traced is skipped.
+//!
+//! A zero-eigenvalue curve is a [`EventKind::Fold`] where the motion ceases to exist on one side:
+//! with `ℓ` the null vector of `∂F/∂ξ`, the parameters move the equations out of its range,
+//! `ℓᵀ∂F/∂(x, y) ≠ 0` (relative to the local scale, above `10⁻⁶` in unit-square units). Where
+//! `ℓᵀ∂F/∂(x, y) = 0` other branches cross the motion instead (a pitchfork of a symmetric body,
+//! where the motion exists on both sides): [`EventKind::BranchPoint`]. The kind of a curve is
+//! that of the majority of its points.
+//!
+//! [`chart_eval`]: super::equations::chart_eval
+//! [`relative_discriminant`]: super::equations::relative_discriminant
+//! [`EventKind::Fold`]: super::EventKind::Fold
+//! [`EventKind::BranchPoint`]: super::EventKind::BranchPoint
+//! [`EventKind::HamiltonianHopf`]: super::EventKind::HamiltonianHopf
+//!
+//! # Layout
+//!
+//! - this module: the entry points, the options check and the context shared by the rest;
+//! - `grid`: the motion followed from node to node, the verdicts at the nodes;
+//! - `curve`: the defining equations of a boundary curve and their Gauss–Newton corrector;
+//! - `edge`: the start of a curve bracketed on a grid edge;
+//! - `trace`: the curves followed by continuation from their starts.
+
+mod curve;
+mod edge;
+mod grid;
+mod trace;
+
+use std::marker::PhantomData;
+
+use nalgebra::Vector3;
+use rayon::prelude::*;
+
+use super::{AtlasOptions, StabilityAtlas};
+use crate::error::RouthError;
+use crate::model::Routhian;
+use crate::steady::steady_motion_near;
+use grid::Node;
+
+/// Singular values below this fraction of the largest (or of the local scale) are zero.
+const PINV_CUT: f64 = 1e-10;
+/// Central-difference steps: parameters (relative to the range) and chart coordinates (rad).
+const PARAM_FD: f64 = 1e-6;
+
+/// The stability atlas of the steady motion nearest `gamma_guess` at `(x.0, y.0)`: its verdict
+/// ([`classify_with`] with [`AtlasOptions::classify`]) at every node of an `nx × ny` grid of the
+/// rectangle `[x.0, x.1] × [y.0, y.1]` (ends included), following the motion by continuation from
+/// node to node, and the boundary curves of its stability regions traced by continuation of their
+/// defining equations (the algorithm in full is in the docs of the source module, `families/atlas/mod.rs`):
+///
+/// - `verdicts[j][i]` is the verdict at `(x[i], y[j])`, `None` where the followed motion no longer
+///   exists (beyond a fold) or could not be followed. The first column is followed upwards from
+///   the corner, then every row from its first node; once lost, a row (or the first column) stays
+///   lost.
+/// - `boundaries`: curves where an eigenvalue of the restricted second variation `K` vanishes
+///   ([`EventKind::Fold`] if the motion is lost on one side, else [`EventKind::BranchPoint`]) or,
+///   with degree of instability 2, the discriminant of `f₂` in `λ²` vanishes
+///   ([`EventKind::HamiltonianHopf`]). Every point satisfies `t(γ; x, y) = 0` (33) and its test
+///   function to [`AtlasOptions::curve_tol`] relative to the local scale (the discriminant
+///   relative to `c₂² + 4|c₄c₀|`). Curves end at the edges of the rectangle, where they close,
+///   or at cusps and crossings.
+/// - The rows run one after the other; [`stability_atlas_parallel`] runs them on all cores (or
+///   [`AtlasOptions::threads`]) for a family that can be shared between threads, with the same
+///   result bit for bit.
+///
+/// Errors: [`RouthError::InvalidOption`] for `nx < 2`, `ny < 2`, an empty or non-finite range,
+/// or options out of range; the errors of [`steady_motion_near`] at the
+/// corner; a non-finite `p_ψ` from the family, or a failure of [`classify_with`] at a node where
+/// the motion was found — these are wrapped as
+/// `AtParameter { s: x, source: AtParameter { s: y, source } }`.
+///
+/// ```
+/// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
+/// use routh_core::{stability_atlas, AtlasOptions, EventKind, Stability};
+/// /// The Lagrange top J = diag(A₁, A₁, C), U = mgl·γ₃, written with its Routh function.
+/// struct Top { a1: f64, c: f64, mgl: f64 }
+/// # impl Top {
+/// #     fn j(&self) -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(self.a1, self.a1, self.c)) }
+/// #     fn nq(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> (f64, f64) {
+/// #         (g.dot(&(self.j() * g)), p - (self.j() * w).dot(g))
+/// #     }
+/// #     fn dqn(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+/// #         let (n, q) = self.nq(w, g, p);
+/// #         -(self.j() * w) / n - (2.0 * q / (n * n)) * (self.j() * g)
+/// #     }
+/// # }
+/// # impl Lagrangian for Top {
+/// #     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+/// #         0.5 * w.dot(&(self.j() * w)) - self.mgl * g.z
+/// #     }
+/// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { self.j() * w }
+/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+/// #         Vector3::new(0.0, 0.0, -self.mgl)
+/// #     }
+/// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { self.j() }
+/// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+/// #         Matrix3::zeros()
+/// #     }
+/// # }
+/// # impl Routhian for Top {
+/// #     fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+/// #         let (n, q) = self.nq(w, g, p);
+/// #         0.5 * w.dot(&(self.j() * w)) - self.mgl * g.z - 0.5 * q * q / n
+/// #     }
+/// #     fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+/// #         let (n, q) = self.nq(w, g, p);
+/// #         self.j() * w + (q / n) * (self.j() * g)
+/// #     }
+/// #     fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+/// #         let (n, q) = self.nq(w, g, p);
+/// #         Vector3::new(0.0, 0.0, -self.mgl) + (q / n) * (self.j() * w)
+/// #             + (q * q / (n * n)) * (self.j() * g)
+/// #     }
+/// #     fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
+/// #         let jg = self.j() * g;
+/// #         self.j() - jg * jg.transpose() / g.dot(&jg)
+/// #     }
+/// #     fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+/// #         let (n, q) = self.nq(w, g, p);
+/// #         (self.j() * g) * self.dqn(w, g, p).transpose() + (q / n) * self.j()
+/// #     }
+/// #     fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+/// #         let (n, q) = self.nq(w, g, p);
+/// #         let dqn = self.dqn(w, g, p);
+/// #         (self.j() * w) * dqn.transpose() + (q * q / (n * n)) * self.j()
+/// #             + (2.0 * q / n) * (self.j() * g) * dqn.transpose()
+/// #     }
+/// # }
+/// // The sleeping top γ = e₃ over (mgl, p_ψ) ∈ [0.5, 2] × [0.5, 5], A₁ = 1, C = 1.2.
+/// let family = |mgl: f64, p: f64| (Top { a1: 1.0, c: 1.2, mgl }, p);
+/// let opts = AtlasOptions { nx: 21, ny: 21, ..AtlasOptions::default() };
+/// let atlas = stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts)?;
+/// // Slow: unstable; fast: secularly stable; in between gyroscopically stabilised.
+/// assert_eq!(atlas.verdicts[0][0], Some(Stability::Unstable));
+/// assert_eq!(atlas.verdicts[20][0], Some(Stability::SecularlyStable));
+/// assert_eq!(atlas.verdicts[9][10], Some(Stability::GyroscopicallyStabilized)); // mgl = 1.25, p = 2.525
+/// // Maievskii's bound p² = 4A₁·mgl is the Hamiltonian–Hopf curve.
+/// let hopf = atlas.boundaries.iter().find(|b| b.kind == EventKind::HamiltonianHopf).unwrap();
+/// for &(mgl, p) in &hopf.points {
+///     assert!((p * p / (4.0 * mgl) - 1.0).abs() < 1e-8);
+/// }
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+///
+/// [`classify_with`]: crate::stability::classify_with
+/// [`EventKind::Fold`]: super::EventKind::Fold
+/// [`EventKind::BranchPoint`]: super::EventKind::BranchPoint
+/// [`EventKind::HamiltonianHopf`]: super::EventKind::HamiltonianHopf
+pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
+    family: F,
+    gamma_guess: Vector3<f64>,
+    x: (f64, f64),
+    y: (f64, f64),
+    opts: &AtlasOptions,
+) -> Result<StabilityAtlas, RouthError> {
+    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, column| {
+        (0..ys.len())
+            .map(|j| ctx.row(xs, ys[j], column[j]))
+            .collect()
+    })
+}
+
+/// [`stability_atlas`] with the rows of the grid on [`AtlasOptions::threads`] threads (`0`: all
+/// cores), for a family that can be shared between threads (`Sync`: any closure over plain
+/// data). The result is the same, bit for bit, for any number of threads and equal to that of
+/// [`stability_atlas`].
+///
+/// Errors: as [`stability_atlas`], plus [`RouthError::InvalidOption`] when the thread pool cannot
+/// be built.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let family = |mgl: f64, p: f64| (Gyrostat::lagrange_top(1.0, 1.25, mgl), p);
+/// let opts = AtlasOptions { nx: 11, ny: 11, threads: 2, ..Default::default() };
+/// let parallel = stability_atlas_parallel(family, Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts)?;
+/// let sequential = stability_atlas(family, Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts)?;
+/// assert_eq!(parallel, sequential);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn stability_atlas_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>(
+    family: F,
+    gamma_guess: Vector3<f64>,
+    x: (f64, f64),
+    y: (f64, f64),
+    opts: &AtlasOptions,
+) -> Result<StabilityAtlas, RouthError> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(opts.threads)
+        .build()
+        .map_err(|e| RouthError::InvalidOption {
+            what: "threads",
+            reason: e.to_string(),
+        })?;
+    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, column| {
+        pool.install(|| {
+            (0..ys.len())
+                .into_par_iter()
+                .map(|j| ctx.row(xs, ys[j], column[j]))
+                .collect()
+        })
+    })
+}
+
+/// Rows of nodes of the grid, or an error.
+type Rows = Result<Vec<Vec<Option<Node>>>, RouthError>;
+
+/// The atlas, with the rows computed by `rows` (sequentially or in parallel) from the first
+/// column.
+fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
+    family: &'a F,
+    gamma_guess: Vector3<f64>,
+    x: (f64, f64),
+    y: (f64, f64),
+    opts: &'a AtlasOptions,
+    rows: impl FnOnce(&Ctx<'a, M, F>, &[f64], &[f64], &[Option<Vector3<f64>>]) -> Rows,
+) -> Result<StabilityAtlas, RouthError> {
+    validate(x, y, opts)?;
+    let ctx = Ctx::new(family, x, y, opts);
+    let xs = linspace(x, opts.nx);
+    let ys = linspace(y, opts.ny);
+
+    // The corner, by a local search.
+    let (m0, p0) = ctx.member(x.0, y.0)?;
+    let start = steady_motion_near(&m0, gamma_guess, p0).map_err(|e| at_xy(x.0, y.0, e))?;
+
+    // The first column, sequentially.
+    let mut column: Vec<Option<Vector3<f64>>> = vec![None; opts.ny];
+    column[0] = Some(start.gamma);
+    for j in 1..opts.ny {
+        let Some(g) = column[j - 1] else { break };
+        ctx.member(xs[0], ys[j])?;
+        column[j] = ctx.follow((xs[0], ys[j - 1]), &g, (xs[0], ys[j])).reached;
+    }
+
+    // The rows, each from its first node in a fixed order.
+    let rows = rows(&ctx, &xs, &ys, &column)?;
+
+    let boundaries = ctx.boundaries(&xs, &ys, &rows);
+    let verdicts = rows
+        .iter()
+        .map(|r| {
+            r.iter()
+                .map(|n| n.as_ref().map(|n| n.report.verdict))
+                .collect()
+        })
+        .collect();
+    Ok(StabilityAtlas {
+        x: xs,
+        y: ys,
+        verdicts,
+        boundaries,
+    })
+}
+
+fn validate(x: (f64, f64), y: (f64, f64), opts: &AtlasOptions) -> Result<(), RouthError> {
+    let invalid =
+        |what: &'static str, reason: String| Err(RouthError::InvalidOption { what, reason });
+    for (what, r) in [("x", x), ("y", y)] {
+        if !(r.0.is_finite() && r.1.is_finite() && r.0 < r.1) {
+            return invalid(
+                what,
+                format!("the range must be finite and ascending (got {r:?})"),
+            );
+        }
+    }
+    if opts.nx < 2 {
+        return invalid(
+            "nx",
+            format!("at least 2 nodes are needed (got {})", opts.nx),
+        );
+    }
+    if opts.ny < 2 {
+        return invalid(
+            "ny",
+            format!("at least 2 nodes are needed (got {})", opts.ny),
+        );
+    }
+    if !(opts.curve_tol > 0.0 && opts.curve_tol < 1.0) {
+        return invalid(
+            "curve_tol",
+            format!("must be in (0, 1) (got {:e})", opts.curve_tol),
+        );
+    }
+    if !(opts.curve_step > 0.0 && opts.curve_step <= 1.0) {
+        return invalid(
+            "curve_step",
+            format!("must be in (0, 1] (got {:e})", opts.curve_step),
+        );
+    }
+    if opts.max_curve_points < 2 {
+        return invalid(
+            "max_curve_points",
+            format!(
+                "at least 2 points are needed (got {})",
+                opts.max_curve_points
+            ),
+        );
+    }
+    Ok(())
+}
+
+/// `n` evenly spaced values from `r.0` to `r.1`, both exact.
+fn linspace(r: (f64, f64), n: usize) -> Vec<f64> {
+    let d = (r.1 - r.0) / (n - 1) as f64;
+    (0..n)
+        .map(|i| if i + 1 == n { r.1 } else { r.0 + d * i as f64 })
+        .collect()
+}
+
+/// An error at the parameters `(x, y)`.
+fn at_xy(x: f64, y: f64, e: RouthError) -> RouthError {
+    RouthError::AtParameter {
+        s: x,
+        source: Box::new(RouthError::AtParameter {
+            s: y,
+            source: Box::new(e),
+        }),
+    }
+}
+
+struct Ctx<'a, M, F> {
+    family: &'a F,
+    x: (f64, f64),
+    y: (f64, f64),
+    hx: f64,
+    hy: f64,
+    opts: &'a AtlasOptions,
+    _model: PhantomData<fn() -> M>,
+}
+
+impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
+    fn new(family: &'a F, x: (f64, f64), y: (f64, f64), opts: &'a AtlasOptions) -> Self {
+        let step = |r: (f64, f64)| PARAM_FD * (r.1 - r.0).max(1e-8 * r.0.abs().max(r.1.abs()));
+        Ctx {
+            family,
+            x,
+            y,
+            hx: step(x),
+            hy: step(y),
+            opts,
+            _model: PhantomData,
+        }
+    }
+
+    /// The member at `(x, y)`.
+    fn member(&self, x: f64, y: f64) -> Result<(M, f64), RouthError> {
+        let (m, p) = (self.family)(x, y);
+        if !p.is_finite() {
+            return Err(at_xy(
+                x,
+                y,
+                RouthError::NonFinite {
+                    what: "p_psi returned by the family",
+                    value: p,
+                },
+            ));
+        }
+        Ok((m, p))
+    }
+
+    fn lx(&self) -> f64 {
+        self.x.1 - self.x.0
+    }
+    fn ly(&self) -> f64 {
+        self.y.1 - self.y.0
+    }
+    /// Scaled coordinates `(u, v) ∈ [0, 1]²` → parameters.
+    fn unscale(&self, u: f64, v: f64) -> (f64, f64) {
+        (self.x.0 + u * self.lx(), self.y.0 + v * self.ly())
+    }
+    fn scale_xy(&self, x: f64, y: f64) -> (f64, f64) {
+        ((x - self.x.0) / self.lx(), (y - self.y.0) / self.ly())
+    }
+}
