@@ -67,13 +67,49 @@ pub struct GyroscopicSystem {
 
 impl GyroscopicSystem {
     /// Forms `A`, `G`, `C` from a bundle evaluated at `Ω = 0` (section 5 in the matrix form of
-    /// errata E6).
+    /// errata E6), entry by entry:
+    /// - `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for every 3×3 `M` (expand both sides), so
+    ///   `2G = [(tr M)γ − Mᵀγ − ∂R/∂Ω]×` — no matrix product (for an exact bundle the vector is
+    ///   `(tr M)γ`, as `Mᵀγ = −∂R/∂Ω` by (17), but the general form is kept so that the
+    ///   formula holds for any bundle);
+    /// - `C = [γ]×ᵀ K [γ]×`, `K = μE − ∂²R/∂γ²`, as `Y = K[γ]×` and `C = [γ]×ᵀY` with the zeros of
+    ///   `[γ]×` skipped and only the upper triangle of the symmetric `C` formed.
     pub fn from_bundle(bundle: &RouthBundle, gamma: &Vector3<f64>) -> Self {
-        let gx = gamma.cross_matrix();
-        let m = bundle.d2r_domega_dgamma;
-        let g = 0.5 * (m * gx + gx * m.transpose() - bundle.dr_domega.cross_matrix());
+        let (g0, g1, g2) = (gamma.x, gamma.y, gamma.z);
+        let m = &bundle.d2r_domega_dgamma;
+        let tr = m[(0, 0)] + m[(1, 1)] + m[(2, 2)];
+        let mtg = m.tr_mul(gamma);
+        let v = 0.5 * (tr * gamma - mtg - bundle.dr_domega);
+        let g = v.cross_matrix();
+        let h = &bundle.d2r_dgamma2;
         let mu = bundle.dr_dgamma.dot(gamma);
-        let c = gx.transpose() * (Matrix3::from_diagonal_element(mu) - bundle.d2r_dgamma2) * gx;
+        // K = μE − H, symmetrised (H is symmetric up to round-off).
+        let k01 = -0.5 * (h[(0, 1)] + h[(1, 0)]);
+        let k02 = -0.5 * (h[(0, 2)] + h[(2, 0)]);
+        let k12 = -0.5 * (h[(1, 2)] + h[(2, 1)]);
+        let (k00, k11, k22) = (mu - h[(0, 0)], mu - h[(1, 1)], mu - h[(2, 2)]);
+        // Y = K[γ]×, columns of [γ]×: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0); Y₀₀ is not read.
+        let y01 = k02 * g0 - k00 * g2;
+        let y02 = k00 * g1 - k01 * g0;
+        let y10 = k11 * g2 - k12 * g1;
+        let y11 = k12 * g0 - k01 * g2;
+        let y12 = k01 * g1 - k11 * g0;
+        let y20 = k12 * g2 - k22 * g1;
+        let y21 = k22 * g0 - k02 * g2;
+        let y22 = k02 * g1 - k12 * g0;
+        // C = [γ]×ᵀY, rows of [γ]×ᵀ: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0).
+        let c00 = g2 * y10 - g1 * y20;
+        let c01 = g2 * y11 - g1 * y21;
+        let c02 = g2 * y12 - g1 * y22;
+        let c11 = g0 * y21 - g2 * y01;
+        let c12 = g0 * y22 - g2 * y02;
+        let c22 = g1 * y02 - g0 * y12;
+        #[rustfmt::skip]
+        let c = Matrix3::new(
+            c00, c01, c02,
+            c01, c11, c12,
+            c02, c12, c22,
+        );
         GyroscopicSystem {
             a: bundle.d2r_domega2,
             g,
@@ -164,4 +200,46 @@ pub trait DerivedFormulas {
     const AMENDED_POTENTIAL: &'static str;
     /// `ψ̇(0, γ, p_ψ)` of (38): the rate of rotation about the vertical of a steady motion at γ.
     const PSI_DOT_AT_REST: &'static str;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The entry-by-entry `from_bundle` equals the matrix products of errata E6 for arbitrary
+    /// matrices (the identity `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` is algebra, not (17)).
+    #[test]
+    fn from_bundle_is_the_matrix_form() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for _ in 0..200 {
+            let mut m3 = || Matrix3::from_fn(|_, _| next());
+            let (m, a, h0) = (m3(), m3(), m3());
+            let h = h0 + h0.transpose();
+            let gamma = Vector3::new(next(), next(), next());
+            let b = RouthBundle {
+                routhian: 0.0,
+                psi_dot: 0.0,
+                dr_domega: Vector3::new(next(), next(), next()),
+                dr_dgamma: Vector3::new(next(), next(), next()),
+                dr_dp: 0.0,
+                d2r_domega2: a,
+                d2r_domega_dgamma: m,
+                d2r_dgamma2: h,
+            };
+            let gx = gamma.cross_matrix();
+            let g = 0.5 * (m * gx + gx * m.transpose() - b.dr_domega.cross_matrix());
+            let mu = b.dr_dgamma.dot(&gamma);
+            let c = gx.transpose() * (Matrix3::from_diagonal_element(mu) - h) * gx;
+            let got = GyroscopicSystem::from_bundle(&b, &gamma);
+            assert!((got.g - g).amax() < 1e-14, "{}", (got.g - g).amax());
+            assert!((got.c - c).amax() < 1e-14, "{}", (got.c - c).amax());
+            assert_eq!(got.a, a);
+        }
+    }
 }
