@@ -1,0 +1,295 @@
+//! The bookkeeping of a diagram: the branches and events recorded so far, seeding by global
+//! searches, following a branch both ways, the coverage test and the count checks.
+
+use nalgebra::Vector3;
+
+use super::CountCheck;
+use crate::error::RouthError;
+use crate::families::continuation::{Constraint, Ctx, Node};
+use crate::families::equations::{at, member, Local};
+use crate::families::{BifurcationDiagram, Branch, BranchEvent, ContinuationOptions, EventKind};
+use crate::model::Routhian;
+use crate::stability::Stability;
+use crate::steady::steady_motions_with;
+
+/// A branch point found on a branch, where new branches may start.
+#[derive(Debug, Clone)]
+pub(super) struct Switch {
+    pub(super) node: Node,
+    pub(super) isolated: bool,
+}
+
+pub(super) struct Traced {
+    pub(super) nodes: Vec<Node>,
+    pub(super) events: Vec<(EventKind, Node, Stability, Stability)>,
+    pub(super) switches: Vec<Switch>,
+}
+
+pub(super) struct Builder<'a, M, F> {
+    pub(super) family: &'a F,
+    pub(super) range: (f64, f64),
+    pub(super) opts: &'a ContinuationOptions,
+    pub(super) branches: Vec<(Vec<Node>, bool)>,
+    pub(super) events: Vec<BranchEvent>,
+    pub(super) pending: Vec<Switch>,
+    pub(super) done_switches: Vec<(f64, Vector3<f64>)>,
+    pub(super) _model: std::marker::PhantomData<fn() -> M>,
+}
+
+impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
+    pub(super) fn new(family: &'a F, range: (f64, f64), opts: &'a ContinuationOptions) -> Self {
+        Builder {
+            family,
+            range,
+            opts,
+            branches: Vec::new(),
+            events: Vec::new(),
+            pending: Vec::new(),
+            done_switches: Vec::new(),
+            _model: std::marker::PhantomData,
+        }
+    }
+
+    pub(super) fn ctx(&self, isolated: bool, scale: f64) -> Ctx<'a, M, F> {
+        let mut c = Ctx::new(self.family, self.range, self.opts);
+        c.isolated = isolated;
+        c.scale = scale;
+        c
+    }
+
+    pub(super) fn len(&self) -> f64 {
+        self.range.1 - self.range.0
+    }
+
+    /// Seeds every steady motion at `s` that no branch covers yet.
+    pub(super) fn seed_all(&mut self, s: f64) -> Result<(), RouthError> {
+        let (m, p) = member(self.family, s)?;
+        let motions = steady_motions_with(&m, p, &self.opts.search).map_err(|e| at(s, e))?;
+        for sm in motions {
+            if !self.covered(s, &sm.gamma, sm.isolated)? {
+                self.start_branch(sm.gamma, s, sm.isolated)?;
+            }
+        }
+        Ok(())
+    }
+
+    pub(super) fn scale_at(&self, gamma: &Vector3<f64>, s: f64) -> Result<f64, RouthError> {
+        let (m, p) = member(self.family, s)?;
+        let l = Local::at(&m, gamma, p).map_err(|e| at(s, e))?;
+        let sc = l.restricted().norm().max(l.hess.norm());
+        Ok(if sc > 0.0 { sc } else { 1.0 })
+    }
+
+    /// Starts a branch at the steady motion `(gamma, s)` and follows it both ways.
+    pub(super) fn start_branch(
+        &mut self,
+        gamma: Vector3<f64>,
+        s: f64,
+        isolated: bool,
+    ) -> Result<(), RouthError> {
+        if self.branches.len() >= self.opts.max_branches {
+            return Ok(());
+        }
+        let ctx = self.ctx(isolated, self.scale_at(&gamma, s)?);
+        let con = Constraint {
+            a_g: Vector3::zeros(),
+            a_s: 1.0,
+            gamma_ref: gamma,
+            sigma_ref: s / ctx.len,
+            c: 0.0,
+        };
+        let Some((g, s1, it)) = ctx.correct(&gamma, s / ctx.len, &con, None)? else {
+            return Ok(());
+        };
+        let Some(start) = ctx.node(&g, s1, None, it)? else {
+            return Ok(());
+        };
+        // A seed at a degenerate point (a bifurcation point hit by a seed value) is not a
+        // regular point of an isolated branch, and a circle needs its zero eigenvalue: the
+        // branches through such a seed are found from their regular points.
+        let zero = start.eig.iter().any(|e| e.abs() <= 1e-6);
+        if isolated == zero {
+            return Ok(());
+        }
+        self.follow(&ctx, start)
+    }
+
+    /// Follows the branch through `start` both ways and records it.
+    pub(super) fn follow(&mut self, ctx: &Ctx<'a, M, F>, start: Node) -> Result<(), RouthError> {
+        let fwd = self.trace(ctx, start.clone())?;
+        let mut back_start = start.clone();
+        back_start.tau_g = -back_start.tau_g;
+        back_start.tau_s = -back_start.tau_s;
+        let closed = fwd.nodes.len() > 3
+            && dist(fwd.nodes.last().unwrap(), &start, ctx.len) < 1e-9
+            && fwd.nodes.last().unwrap().s == start.s;
+        let back = if closed {
+            Traced {
+                nodes: vec![back_start],
+                events: Vec::new(),
+                switches: Vec::new(),
+            }
+        } else {
+            self.trace(ctx, back_start)?
+        };
+        let index = self.branches.len();
+        let mut nodes: Vec<Node> = back.nodes.into_iter().skip(1).rev().collect();
+        nodes.extend(fwd.nodes);
+        for (traced, reversed) in [(back.events, true), (fwd.events, false)] {
+            for (kind, n, mut before, mut after) in traced {
+                if reversed && kind == EventKind::Fold {
+                    std::mem::swap(&mut before, &mut after);
+                }
+                self.push_event(kind, &n, index, before, after);
+            }
+        }
+        self.pending.extend(back.switches);
+        self.pending.extend(fwd.switches);
+        self.branches.push((nodes, ctx.isolated));
+        Ok(())
+    }
+
+    pub(super) fn push_event(
+        &mut self,
+        kind: EventKind,
+        n: &Node,
+        branch: usize,
+        before: Stability,
+        after: Stability,
+    ) {
+        let dup = self.events.iter().any(|e| {
+            e.kind == kind
+                && (e.s - n.s).abs() <= 1e-7 * 1f64.max(n.s.abs())
+                && (e.gamma - n.gamma).norm() < 1e-5
+        });
+        if !dup {
+            self.events.push(BranchEvent {
+                kind,
+                s: n.s,
+                gamma: n.gamma,
+                branch,
+                before,
+                after,
+            });
+        }
+    }
+
+    /// Whether a recorded branch passes through the steady motion `(gamma, s)` (for circles:
+    /// has the same amended potential and ψ̇ there).
+    pub(super) fn covered(
+        &self,
+        s: f64,
+        gamma: &Vector3<f64>,
+        isolated: bool,
+    ) -> Result<bool, RouthError> {
+        let (m, p) = member(self.family, s)?;
+        let u = m.amended_potential(gamma, p);
+        let w = m.psi_dot(&Vector3::zeros(), gamma, p);
+        for (nodes, iso) in &self.branches {
+            if *iso != isolated {
+                continue;
+            }
+            for pair in nodes.windows(2) {
+                let (a, b) = (&pair[0], &pair[1]);
+                if isolated {
+                    // Distance in (γ, σ) from the point to the segment: robust at turning points
+                    // in s, where the segments' s-ranges need not contain s.
+                    let len = self.len();
+                    let x = (gamma, s / len);
+                    let (ag, asg) = (a.gamma, a.s / len);
+                    let (dg, ds) = (b.gamma - a.gamma, (b.s - a.s) / len);
+                    let seg2 = dg.norm_squared() + ds * ds;
+                    let t = if seg2 > 0.0 {
+                        (((x.0 - ag).dot(&dg) + (x.1 - asg) * ds) / seg2).clamp(0.0, 1.0)
+                    } else {
+                        0.0
+                    };
+                    let dist = ((x.0 - (ag + t * dg)).norm_squared()
+                        + (x.1 - (asg + t * ds)).powi(2))
+                    .sqrt();
+                    if dist <= 0.3 * seg2.sqrt() + 1e-6 {
+                        return Ok(true);
+                    }
+                    continue;
+                }
+                let (lo, hi) = (a.s.min(b.s), a.s.max(b.s));
+                let pad = 1e-9 * self.len();
+                if s < lo - pad || s > hi + pad {
+                    continue;
+                }
+                let t = if hi > lo {
+                    ((s - a.s) / (b.s - a.s)).clamp(0.0, 1.0)
+                } else {
+                    0.5
+                };
+                let (ua, ub) = (
+                    a.point.steady.amended_potential,
+                    b.point.steady.amended_potential,
+                );
+                let (wa, wb) = (a.point.steady.psi_dot, b.point.steady.psi_dot);
+                let ui = ua + t * (ub - ua);
+                let wi = wa + t * (wb - wa);
+                let tol_u = 0.3 * (ub - ua).abs() + 1e-7 * (1.0 + u.abs());
+                let tol_w = 0.3 * (wb - wa).abs() + 1e-7 * (1.0 + w.abs());
+                if (ui - u).abs() <= tol_u && (wi - w).abs() <= tol_w {
+                    return Ok(true);
+                }
+            }
+        }
+        Ok(false)
+    }
+
+    /// The count of steady motions on the branches against a global search, in the middle of
+    /// every interval between consecutive events.
+    pub(super) fn count_checks(&self) -> Result<Vec<CountCheck>, RouthError> {
+        let mut cuts: Vec<f64> = self.events.iter().map(|e| e.s).collect();
+        cuts.push(self.range.0);
+        cuts.push(self.range.1);
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup_by(|a, b| (*a - *b).abs() <= 1e-6 * (self.range.1 - self.range.0));
+        let mut out = Vec::new();
+        for w in cuts.windows(2) {
+            let s = 0.5 * (w[0] + w[1]);
+            let on = self
+                .branches
+                .iter()
+                .map(|(nodes, _)| {
+                    nodes
+                        .windows(2)
+                        .filter(|p| (p[0].s < s) != (p[1].s < s))
+                        .count()
+                })
+                .sum();
+            let (m, p) = member(self.family, s)?;
+            let found = steady_motions_with(&m, p, &self.opts.search)
+                .map_err(|e| at(s, e))?
+                .len();
+            out.push(CountCheck {
+                s,
+                on_branches: on,
+                searched: found,
+            });
+        }
+        Ok(out)
+    }
+
+    pub(super) fn finish(mut self) -> BifurcationDiagram {
+        self.events.sort_by(|a, b| a.s.total_cmp(&b.s));
+        BifurcationDiagram {
+            branches: self
+                .branches
+                .into_iter()
+                .map(|(nodes, isolated)| Branch {
+                    points: nodes.into_iter().map(|n| n.point).collect(),
+                    isolated,
+                })
+                .collect(),
+            events: self.events,
+        }
+    }
+}
+
+/// Distance between two nodes in `(γ, σ)`.
+pub(super) fn dist(a: &Node, b: &Node, len: f64) -> f64 {
+    ((a.gamma - b.gamma).norm_squared() + ((a.s - b.s) / len).powi(2)).sqrt()
+}

@@ -1,0 +1,242 @@
+//! [`bifurcation_diagram`] and [`continue_branch`]: branches seeded by global searches, followed
+//! by continuation, switched at branch points, with their events, and a count check.
+
+mod builder;
+mod switch;
+mod trace;
+
+use nalgebra::Vector3;
+
+use super::{BifurcationDiagram, ContinuationOptions};
+use crate::error::RouthError;
+use crate::families::equations::{at, member};
+use crate::model::Routhian;
+use crate::steady::steady_motion_near;
+use crate::validate::check_finite;
+use builder::Builder;
+
+/// One comparison of [`bifurcation_diagram_checked`]: the number of steady motions that the
+/// branches give at `s` against the number that [`steady_motions`](crate::steady_motions) finds.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let c = families::bifurcation_diagram_checked(
+///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// let first: &families::CountCheck = &c.checks[0];
+/// assert_eq!(first.on_branches, first.searched); // the hanging and the sleeping top
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct CountCheck {
+    /// The parameter value (the middle of an interval between consecutive events).
+    pub s: f64,
+    /// Steady motions on the branches at `s` (a circle counts once).
+    pub on_branches: usize,
+    /// Steady motions found by the global search at `s`.
+    pub searched: usize,
+}
+
+/// A diagram with the count checks made while building it.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let c: families::CheckedDiagram = families::bifurcation_diagram_checked(
+///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// assert!(c.consistent());
+/// assert_eq!(c.checks.len(), c.diagram.events.len() + 1);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct CheckedDiagram {
+    /// The diagram.
+    pub diagram: BifurcationDiagram,
+    /// One check per interval between consecutive events (empty when
+    /// [`ContinuationOptions::verify_counts`] is off).
+    pub checks: Vec<CountCheck>,
+}
+
+impl CheckedDiagram {
+    /// Whether every count check agreed.
+    ///
+    /// See the example on [`CheckedDiagram`].
+    pub fn consistent(&self) -> bool {
+        self.checks.iter().all(|c| c.on_branches == c.searched)
+    }
+}
+
+/// Every branch of steady motions of `family` over `range`, with its events (the contract of
+/// the [`families`](super) module). Branches are seeded by global searches
+/// ([`steady_motions_with`](crate::steady::steady_motions_with)) at [`ContinuationOptions::seeds`] values of `s`, followed by
+/// pseudo-arclength continuation through folds, and switched at branch points (a pitchfork, or
+/// the birth of a circle of steady motions of a symmetric body, which becomes a branch with
+/// `isolated: false`). Events are located by solving their defining equation to
+/// `|Δs| ≤ event_tol·max(1, |s|)`. Between consecutive events the number of steady motions on the
+/// branches is compared with a global search, and missing branches are seeded there
+/// ([`bifurcation_diagram_checked`] returns the comparisons).
+///
+/// Errors: [`RouthError::InvalidOption`] for an empty or non-finite range or invalid options;
+/// [`RouthError::AtParameter`] when the family returns an invalid model (e.g. `J` not positive
+/// definite) or a non-finite `p_ψ` at some `s`.
+///
+/// ```
+/// use routh_core::{bifurcation_diagram, ContinuationOptions, EventKind};
+/// # use test_models::Gyrostat;
+///
+/// // A Lagrange top A₁ = 1, C = 1.25, mgl = 1 (any model implementing `Routhian`; with the
+/// // derive of the `routh` crate it is one struct and one attribute) over the cyclic momentum.
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// // Maievskii's bound p² = 4A₁mgl and the secular bound p² = mglC²/(C − A₁).
+/// let hh = d.events.iter().find(|e| e.kind == EventKind::HamiltonianHopf).unwrap();
+/// assert!((hh.s - 2.0).abs() < 1e-8);
+/// let bp = d.events.iter().find(|e| e.kind == EventKind::BranchPoint).unwrap();
+/// assert!((bp.s - 2.5).abs() < 1e-8);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    family: F,
+    range: (f64, f64),
+    opts: &ContinuationOptions,
+) -> Result<BifurcationDiagram, RouthError> {
+    bifurcation_diagram_checked(family, range, opts).map(|c| c.diagram)
+}
+
+/// [`bifurcation_diagram`] with the count checks it made.
+///
+/// Errors: as [`bifurcation_diagram`].
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let c = families::bifurcation_diagram_checked(
+///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// for check in &c.checks {
+///     println!("s = {}: {} on branches, {} searched", check.s, check.on_branches, check.searched);
+/// }
+/// assert!(c.consistent());
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    family: F,
+    range: (f64, f64),
+    opts: &ContinuationOptions,
+) -> Result<CheckedDiagram, RouthError> {
+    validate(range, opts)?;
+    let mut b = Builder::new(&family, range, opts);
+    let n = opts.seeds.max(2);
+    for k in 0..n {
+        let s = range.0 + (range.1 - range.0) * k as f64 / (n - 1) as f64;
+        b.seed_all(s)?;
+    }
+    b.switch_all()?;
+    let mut checks = Vec::new();
+    if opts.verify_counts {
+        for round in 0..3 {
+            checks = b.count_checks()?;
+            let missing: Vec<f64> = checks
+                .iter()
+                .filter(|c| c.on_branches < c.searched)
+                .map(|c| c.s)
+                .collect();
+            if missing.is_empty() || round == 2 {
+                break;
+            }
+            for s in missing {
+                b.seed_all(s)?;
+            }
+            b.switch_all()?;
+        }
+    }
+    Ok(CheckedDiagram {
+        diagram: b.finish(),
+        checks,
+    })
+}
+
+/// The branch through the steady motion nearest `gamma_guess` at `s0` (found by Newton on the
+/// sphere from the guess), followed over `range` in both directions, with the branches that
+/// split off it at its branch points.
+///
+/// Errors: as [`bifurcation_diagram`], plus [`RouthError::NoConvergence`] when no steady motion
+/// is found from the guess and [`RouthError::InvalidOption`] when `s0` is outside the range.
+///
+/// ```
+/// use routh_core::{continue_branch, ContinuationOptions, Vector3};
+/// # use test_models::Gyrostat;
+///
+/// // The sleeping top γ = e₃ of a top with A₁ = 1, C = 1.25, followed over the weight mgl at
+/// // p_ψ = 3: it loses secular stability at mgl = p²(C − A₁)/C² = 1.44 and gyroscopic
+/// // stabilisation at Maievskii's mgl = p²/(4A₁) = 2.25.
+/// let d = continue_branch(
+///     |mgl| (Gyrostat::lagrange_top(1.0, 1.25, mgl), 3.0),
+///     Vector3::z(), 1.0, (1.0, 3.0), &ContinuationOptions::default())?;
+/// let s: Vec<f64> = d.events.iter().filter(|e| e.branch == 0).map(|e| e.s).collect();
+/// assert!(s.iter().any(|s| (s - 1.44).abs() < 1e-8));
+/// assert!(s.iter().any(|s| (s - 2.25).abs() < 1e-8));
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    family: F,
+    gamma_guess: Vector3<f64>,
+    s0: f64,
+    range: (f64, f64),
+    opts: &ContinuationOptions,
+) -> Result<BifurcationDiagram, RouthError> {
+    validate(range, opts)?;
+    check_finite("s0", &[s0])?;
+    if s0 < range.0 || s0 > range.1 {
+        return Err(RouthError::InvalidOption {
+            what: "s0",
+            reason: format!(
+                "must lie in the range [{}, {}] (got {s0})",
+                range.0, range.1
+            ),
+        });
+    }
+    let (m, p) = member(&family, s0)?;
+    let steady = steady_motion_near(&m, gamma_guess, p).map_err(|e| at(s0, e))?;
+    let mut b = Builder::new(&family, range, opts);
+    b.start_branch(steady.gamma, s0, steady.isolated)?;
+    b.switch_all()?;
+    Ok(b.finish())
+}
+
+fn validate(range: (f64, f64), opts: &ContinuationOptions) -> Result<(), RouthError> {
+    check_finite("range", &[range.0, range.1])?;
+    let invalid = |what, reason: String| Err(RouthError::InvalidOption { what, reason });
+    if range.1 <= range.0 {
+        return invalid(
+            "range",
+            format!(
+                "must be (lo, hi) with lo < hi (got ({}, {}))",
+                range.0, range.1
+            ),
+        );
+    }
+    for (what, v) in [
+        ("initial_step", opts.initial_step),
+        ("max_step", opts.max_step),
+        ("min_step", opts.min_step),
+        ("newton_tol", opts.newton_tol),
+        ("event_tol", opts.event_tol),
+    ] {
+        if !(v.is_finite() && v > 0.0 && v < 1.0) {
+            return invalid(what, format!("must be in (0, 1) (got {v:e})"));
+        }
+    }
+    if opts.min_step > opts.initial_step || opts.initial_step > opts.max_step {
+        return invalid(
+            "initial_step",
+            "need min_step ≤ initial_step ≤ max_step".to_string(),
+        );
+    }
+    if opts.max_steps == 0 || opts.max_branches == 0 {
+        return invalid("max_steps", "budgets must be positive".to_string());
+    }
+    Ok(())
+}

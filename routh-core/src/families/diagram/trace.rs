@@ -1,0 +1,134 @@
+//! One direction of one branch: predictor–corrector steps with step control, the events on
+//! each step located by their defining equations, and the ends of the branch.
+
+use super::builder::{dist, Builder, Switch, Traced};
+use crate::error::RouthError;
+use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
+use crate::families::EventKind;
+use crate::model::Routhian;
+
+impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
+    /// Follows one direction from `start` until the range ends, the branch closes, meets another
+    /// branch (a branch of circles reaching its axis) or the budget is spent.
+    pub(super) fn trace(&self, ctx: &Ctx<'a, M, F>, start: Node) -> Result<Traced, RouthError> {
+        let opts = self.opts;
+        let mut out = Traced {
+            nodes: vec![start.clone()],
+            events: Vec::new(),
+            switches: Vec::new(),
+        };
+        let mut h = opts.initial_step;
+        let mut steps = 0;
+        while steps < opts.max_steps {
+            steps += 1;
+            let a = out.nodes.last().unwrap().clone();
+            let Some(b) = ctx.advance(&a, h)? else {
+                h *= 0.5;
+                if h < opts.min_step {
+                    break;
+                }
+                continue;
+            };
+            let cos = a.tau_g.dot(&b.tau_g) + a.tau_s * b.tau_s;
+            let ch = changes(&a, &b, ctx.isolated);
+            let eigen = ch.iter().any(|c| matches!(c, Change::Eigen(_)));
+            let disc = ch.contains(&Change::Discriminant);
+            // Shorten the step when the tangent turns too fast, when two events share it, or
+            // when the verdict changes with no test function changing sign.
+            let unexplained = ch.is_empty() && a.verdict() != b.verdict();
+            let two_eigen = ch.iter().filter(|c| matches!(c, Change::Eigen(_))).count() > 1;
+            if (cos < 0.97 || (eigen && disc) || two_eigen || unexplained)
+                && h > 4.0 * opts.min_step
+            {
+                h *= 0.5;
+                continue;
+            }
+            // Leaving the range: end exactly on its boundary.
+            let (lo, hi) = self.range;
+            if b.s < lo || b.s > hi {
+                let bound = if b.s < lo { lo } else { hi };
+                if let Some(e) = ctx.at_parameter(&a, &b, bound)? {
+                    if (e.s - a.s).abs() > 0.0 {
+                        out.nodes.push(e);
+                    }
+                }
+                break;
+            }
+            let turn = ch.contains(&Change::Turn);
+            let mut end = false;
+            if eigen {
+                let which = *ch.iter().find(|c| matches!(c, Change::Eigen(_))).unwrap();
+                let e = ctx.locate(&a, &b, h, &|n| test_value(which, n))?;
+                if ctx.is_branch_point(&e) {
+                    if !ctx.isolated {
+                        end = true;
+                        out.nodes.push(e.clone());
+                    } else {
+                        if !turn {
+                            out.events.push((
+                                EventKind::BranchPoint,
+                                e.clone(),
+                                a.verdict(),
+                                b.verdict(),
+                            ));
+                        }
+                        out.switches.push(Switch {
+                            node: e,
+                            isolated: ctx.isolated,
+                        });
+                    }
+                } else {
+                    out.events
+                        .push((EventKind::Fold, e, a.verdict(), b.verdict()));
+                }
+            } else if turn {
+                // A turning point in s with no eigenvalue changing sign: the branch passes
+                // through the tip of a pitchfork on another branch.
+                let e = ctx.locate(&a, &b, h, &|n| n.tau_s)?;
+                if ctx.isolated {
+                    out.switches.push(Switch {
+                        node: e,
+                        isolated: true,
+                    });
+                } else {
+                    // A branch of circles reaching its axis: the rest is the same circles again.
+                    out.nodes.push(e);
+                    end = true;
+                }
+            }
+            if disc && !end && a.degree_two() && b.degree_two() {
+                let e = ctx.locate(&a, &b, h, &|n| n.disc)?;
+                if a.verdict() != b.verdict() {
+                    out.events
+                        .push((EventKind::HamiltonianHopf, e, a.verdict(), b.verdict()));
+                }
+            }
+            if end {
+                break;
+            }
+            let it = b.iterations;
+            out.nodes.push(b);
+            let first = &out.nodes[0];
+            let last = out.nodes.last().unwrap();
+            if out.nodes.len() > 4
+                && dist(last, first, ctx.len) < 0.75 * h
+                && last.dot_tangent(&first.tau_g, first.tau_s) > 0.0
+            {
+                // Closed loop: end on the start.
+                let mut closing = first.clone();
+                closing.tau_g = last.tau_g;
+                closing.tau_s = last.tau_s;
+                out.nodes.push(closing);
+                break;
+            }
+            h = if it <= 2 {
+                (1.5 * h).min(opts.max_step)
+            } else if it >= 6 {
+                (0.7 * h).max(opts.min_step)
+            } else {
+                h
+            };
+        }
+        Ok(out)
+    }
+}
