@@ -11,7 +11,9 @@
 //! - on `Ok`, return finite values (trajectories, steady motions with a unit γ, stability
 //!   reports with finite eigenvalues and roots, diagrams).
 //!
-//! Models: the closed-form [`HeavyTop`] (fast, most calls) and the num-dual [`Gyrostat`], with
+//! Models: the closed-form [`HeavyTop`] (fast, most calls), the num-dual [`Gyrostat`] and the
+//! same gyrostat declared with `#[derive(Lagrangian)]` (generated code; the only kind the
+//! certified search accepts), with
 //! parameters log-uniform over `1e−6…1e6` with random signs, now and then an indefinite,
 //! singular, non-symmetric or non-finite inertia. Every scalar input (γ, Ω, p_ψ, t_end, options)
 //! is replaced with probability 10 % by one of NaN, ±∞, ±0, a subnormal, ±1e300.
@@ -32,7 +34,8 @@ use std::time::{Duration, Instant};
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use routh_core::families::{AtlasOptions, ContinuationOptions};
+use routh_core::certify::{steady_motions_certified, CertifyOptions};
+use routh_core::families::{self, AtlasOptions, ContinuationOptions};
 use routh_core::nalgebra::{Rotation3, Unit};
 use routh_core::sim::{self, Method, Output, SimOptions};
 use routh_core::stability::{self, ClassifyOptions, StabilityReport};
@@ -603,7 +606,7 @@ fn case_rng(seed: u64, case: u64) -> ChaCha8Rng {
 }
 
 /// A model whose family over a parameter `s` can be formed (the weight scaled by `s`).
-trait Model: Routhian + Clone + Debug {
+trait Model: Routhian + Clone + Debug + Sync {
     fn scaled(&self, s: f64) -> Self;
 }
 
@@ -619,6 +622,15 @@ impl Model for HeavyTop {
 impl Model for Gyrostat {
     fn scaled(&self, s: f64) -> Self {
         Gyrostat {
+            g: self.g * s,
+            ..self.clone()
+        }
+    }
+}
+
+impl Model for derived_models::Gyrostat {
+    fn scaled(&self, s: f64) -> Self {
+        derived_models::Gyrostat {
             g: self.g * s,
             ..self.clone()
         }
@@ -827,6 +839,80 @@ fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick: u3
                 diagram_defect,
             );
         }
+        15 => {
+            let p = scalar(rng);
+            let w = log_uniform(rng, 1e-6, 1.0);
+            let o = CertifyOptions {
+                max_boxes: rng.gen_range(0..3000),
+                min_width: maybe(rng, w),
+                initial_split: rng.gen_range(0..6),
+                refine_iterations: rng.gen_range(0..40),
+            };
+            h.check(
+                "certify::steady_motions_certified",
+                || format!("{model:?}, p_psi = {p:e}, {o:?}"),
+                || steady_motions_certified(model, p, &o),
+                |c| {
+                    let ok = c.boxes <= o.max_boxes
+                        && c.complete == (c.undecided.is_empty() && c.ambiguous_pairs == 0);
+                    (!ok)
+                        .then(|| format!("inconsistent certificate {c:?}"))
+                        .or_else(|| c.motions.iter().find_map(|m| steady_defect(&m.steady)))
+                },
+            );
+        }
+        16 => {
+            let (g, p) = (gamma(rng), scalar(rng));
+            let o = classify_options(rng);
+            let steady = match steady_motion_near(model, g, p) {
+                Ok(s) => s,
+                Err(_) => return,
+            };
+            h.check(
+                "stability::classify_with_krein",
+                || format!("{model:?}, {steady:?}, {o:?}"),
+                || stability::classify_with_krein(model, &steady, &o),
+                |k| report_defect(&k.report),
+            );
+        }
+        17 => {
+            let (r, o) = (range(rng), continuation_options(rng));
+            let p = scalar(rng);
+            h.check(
+                "families::bifurcation_diagram_checked",
+                || format!("{model:?}, p_psi = {p:e}, {r:?}, {o:?}"),
+                || families::bifurcation_diagram_checked(|s| (model.scaled(s), p), r, &o),
+                |c| diagram_defect(&c.diagram),
+            );
+        }
+        18 => {
+            let (p, o) = (scalar(rng), search_options(rng));
+            h.check(
+                "steady::steady_motions_checked_with",
+                || format!("{model:?}, p_psi = {p:e}, {o:?}"),
+                || steady::steady_motions_checked_with(model, p, &o),
+                |r| r.motions.iter().find_map(steady_defect),
+            );
+        }
+        19 => {
+            let (x, y, g) = (range(rng), range(rng), gamma(rng));
+            let o = AtlasOptions {
+                nx: rng.gen_range(0..4),
+                ny: rng.gen_range(0..4),
+                max_curve_points: rng.gen_range(0..20),
+                threads: rng.gen_range(0..3),
+                ..AtlasOptions::default()
+            };
+            h.check(
+                "families::stability_atlas_parallel",
+                || format!("{model:?}, gamma_guess = {g:?}, x = {x:?}, y = {y:?}, {o:?}"),
+                || families::stability_atlas_parallel(|a, b| (model.scaled(a), b), g, x, y, &o),
+                |a| {
+                    let ok = finite(&a.x) && finite(&a.y);
+                    (!ok).then(|| "non-finite atlas grid".to_string())
+                },
+            );
+        }
         _ => {
             let (x, y, g) = (range(rng), range(rng), gamma(rng));
             let o = AtlasOptions {
@@ -872,6 +958,18 @@ fn run_one(h: &mut Harness, seed: u64, case: u64) {
         9_960..=9_989 => 13, // continue_branch
         _ => 14,             // stability_atlas
     };
+    // A second roll, in place of 8 % of the simulations, for the functions added later.
+    let pick = if pick <= 1 && rng.gen_bool(0.08) {
+        match rng.gen_range(0..100u32) {
+            0..=59 => 15,  // steady_motions_certified
+            60..=89 => 16, // classify_with_krein
+            90..=93 => 17, // bifurcation_diagram_checked
+            94..=97 => 18, // steady_motions_checked_with
+            _ => 19,       // stability_atlas_parallel
+        }
+    } else {
+        pick
+    };
     // The num-dual gyrostat is slower: one case in five, and rarely for the global searches.
     // The default search (400 starts, 1600 more when the Morse check fails) on the gyrostat takes
     // up to ~3 s at opt-level 1 (num-dual's copies): only the heavy top is searched with it.
@@ -886,7 +984,17 @@ fn run_one(h: &mut Harness, seed: u64, case: u64) {
     // subnormal moment of inertia makes every operation ~100× slower (microcode assists) and
     // the 2000-start search then takes seconds.
     let sp = if pick == 10 || pick == 11 { 0.0 } else { 0.01 };
-    if gyro {
+    // The certified search needs the derive's tape: mostly the derived gyrostat there; the
+    // derived gyrostat (the same parameters as the num-dual twin) also takes a share of the rest.
+    let derived = if pick == 15 {
+        rng.gen_bool(0.9)
+    } else {
+        pick != 10 && pick != 11 && rng.gen_bool(0.1)
+    };
+    if derived {
+        let m = derived_models::Gyrostat::from(&gyrostat(&mut rng, sp));
+        run_case(h, &mut rng, &m, pick);
+    } else if gyro {
         let m = gyrostat(&mut rng, sp);
         run_case(h, &mut rng, &m, pick);
     } else {
