@@ -68,19 +68,18 @@ pub struct GyroscopicSystem {
 impl GyroscopicSystem {
     /// Forms `A`, `G`, `C` from a bundle evaluated at `Ω = 0` (section 5 in the matrix form of
     /// errata E6), entry by entry:
-    /// - `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for every 3×3 `M` (expand both sides), so
-    ///   `2G = [(tr M)γ − Mᵀγ − ∂R/∂Ω]×` — no matrix product (for an exact bundle the vector is
-    ///   `(tr M)γ`, as `Mᵀγ = −∂R/∂Ω` by (17), but the general form is kept so that the
-    ///   formula holds for any bundle);
+    /// - `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for every 3×3 `M` (expand both sides), and
+    ///   differentiating Theorem 2's identity (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives
+    ///   `Mᵀγ = −∂R/∂Ω` for every Routh function, so `2G = (tr M)[γ]×` — no matrix product
+    ///   (docs/method.md §4; the same closed form as the generated `gyroscopic_system`). A
+    ///   bundle that violates (17) is not the derivatives of a Routh function;
     /// - `C = [γ]×ᵀ K [γ]×`, `K = μE − ∂²R/∂γ²`, as `Y = K[γ]×` and `C = [γ]×ᵀY` with the zeros of
     ///   `[γ]×` skipped and only the upper triangle of the symmetric `C` formed.
     pub fn from_bundle(bundle: &RouthBundle, gamma: &Vector3<f64>) -> Self {
         let (g0, g1, g2) = (gamma.x, gamma.y, gamma.z);
         let m = &bundle.d2r_domega_dgamma;
-        let tr = m[(0, 0)] + m[(1, 1)] + m[(2, 2)];
-        let mtg = m.tr_mul(gamma);
-        let v = 0.5 * (tr * gamma - mtg - bundle.dr_domega);
-        let g = v.cross_matrix();
+        let half_tr = 0.5 * (m[(0, 0)] + m[(1, 1)] + m[(2, 2)]);
+        let g = (half_tr * gamma).cross_matrix();
         let h = &bundle.d2r_dgamma2;
         let mu = bundle.dr_dgamma.dot(gamma);
         // K = μE − H, symmetrised (H is symmetric up to round-off).
@@ -207,7 +206,8 @@ mod tests {
     use super::*;
 
     /// The entry-by-entry `from_bundle` equals the matrix products of errata E6 for arbitrary
-    /// matrices (the identity `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` is algebra, not (17)).
+    /// matrices satisfying (17) differentiated, `Mᵀγ = −∂R/∂Ω` (the test imposes it on a random
+    /// `M` and a random `∂R/∂Ω`); the rest of the identity is algebra.
     #[test]
     fn from_bundle_is_the_matrix_form() {
         let mut state = 0x2545_f491_4f6c_dd1du64;
@@ -222,10 +222,13 @@ mod tests {
             let (m, a, h0) = (m3(), m3(), m3());
             let h = h0 + h0.transpose();
             let gamma = Vector3::new(next(), next(), next());
+            // Impose Mᵀγ = −∂R/∂Ω by a rank-one correction of M.
+            let d = Vector3::new(next(), next(), next());
+            let m = m - gamma * (m.tr_mul(&gamma) + d).transpose() / gamma.norm_squared();
             let b = RouthBundle {
                 routhian: 0.0,
                 psi_dot: 0.0,
-                dr_domega: Vector3::new(next(), next(), next()),
+                dr_domega: d,
                 dr_dgamma: Vector3::new(next(), next(), next()),
                 dr_dp: 0.0,
                 d2r_domega2: a,
