@@ -1,0 +1,151 @@
+//! The stability atlas: the cells of its grid shaded by verdict, its boundary curves on top.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+use super::frame::{clip_polyline, draw_figure, Chart, Frame, Overlays, Polyline};
+use super::legend::{Entry, Swatch};
+use super::marks::{draw_cross, shade_cell, stroke_boundary, Px, Root};
+use super::style::{KINDS, VERDICTS};
+use super::{drawing_error, label_or, PlotError, PlotOptions};
+use crate::{BoundaryCurve, Stability, StabilityAtlas};
+
+/// Cell edges around grid nodes: midpoints between nodes, the end nodes themselves at the ends.
+fn edges(nodes: &[f64]) -> Vec<f64> {
+    let n = nodes.len();
+    if n == 1 {
+        let h = 0.5 * nodes[0].abs().max(1.0);
+        return vec![nodes[0] - h, nodes[0] + h];
+    }
+    let mut e = Vec::with_capacity(n + 1);
+    e.push(nodes[0]);
+    e.extend(nodes.windows(2).map(|w| 0.5 * (w[0] + w[1])));
+    e.push(nodes[n - 1]);
+    e
+}
+
+/// Checks that the verdicts are `y.len()` rows of `x.len()` over a finite ascending grid.
+fn check_grid(atlas: &StabilityAtlas) -> Result<(), PlotError> {
+    let (nx, ny) = (atlas.x.len(), atlas.y.len());
+    if nx == 0 || ny == 0 {
+        return Err(PlotError::EmptyData("the atlas has no grid node"));
+    }
+    if atlas.verdicts.len() != ny || atlas.verdicts.iter().any(|row| row.len() != nx) {
+        return Err(PlotError::InvalidData(format!(
+            "the verdicts must be {ny} rows of {nx} (one per y, then per x)"
+        )));
+    }
+    for (name, v) in [("x", &atlas.x), ("y", &atlas.y)] {
+        if v.iter().any(|t| !t.is_finite()) || v.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(PlotError::InvalidData(format!(
+                "the grid {name} must be finite and strictly ascending"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// [`stability_atlas_svg`](super::stability_atlas_svg).
+pub(super) fn atlas_figure(
+    atlas: &StabilityAtlas,
+    path: &Path,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    opts.check()?;
+    check_grid(atlas)?;
+    let (ex, ey) = (edges(&atlas.x), edges(&atlas.y));
+    let frame = Frame {
+        x: (ex[0], ex[atlas.x.len()]),
+        y: (ey[0], ey[atlas.y.len()]),
+        x_label: &opts.x_label,
+        y_label: label_or(&opts.y_label, "y"),
+        mesh: false,
+    };
+    let mono = opts.monochrome;
+
+    let occurs = |v: Option<Stability>| atlas.verdicts.iter().flatten().any(|&c| c == v);
+    let mut legend: Vec<Entry> = VERDICTS
+        .iter()
+        .filter(|&&v| occurs(Some(v)))
+        .map(|&v| (Swatch::Cell(Some(v)), v.to_string()))
+        .collect();
+    if occurs(None) {
+        legend.push((Swatch::Cell(None), "no steady motion".into()));
+    }
+    let curves: Vec<(&BoundaryCurve, Vec<Polyline>)> = atlas
+        .boundaries
+        .iter()
+        .map(|c| (c, clip_polyline(&c.points, frame.x, frame.y)))
+        .filter(|(_, parts)| !parts.is_empty())
+        .collect();
+    legend.extend(
+        KINDS
+            .iter()
+            .filter(|&&k| curves.iter().any(|c| c.0.kind == k))
+            .map(|&k| (Swatch::Boundary(k), format!("{k} boundary"))),
+    );
+    let overlays = Overlays::clip(opts, &frame);
+    legend.extend(overlays.legend());
+
+    draw_figure(path, opts, &frame, &legend, |root, chart| {
+        let px = |pts: &[(f64, f64)]| -> Vec<Px> {
+            pts.iter().map(|p| chart.backend_coord(p)).collect()
+        };
+        shade_cells(root, chart, atlas, (&ex, &ey), mono)?;
+        for (curve, parts) in &curves {
+            let parts: Vec<Vec<Px>> = parts.iter().map(|p| px(p)).collect();
+            stroke_boundary(root, &parts, curve.kind, mono)?;
+        }
+        overlays.draw(root, px)?;
+        let (a, b) = (
+            chart.backend_coord(&(frame.x.0, frame.y.1)),
+            chart.backend_coord(&(frame.x.1, frame.y.0)),
+        );
+        root.draw(&Rectangle::new([a, b], BLACK.stroke_width(1)))
+            .map_err(drawing_error)
+    })
+}
+
+/// Shades the cells of the grid, whose edges are `ex × ey`, by verdict; a small × in each cell
+/// without a steady motion.
+fn shade_cells(
+    root: &Root,
+    chart: &Chart,
+    atlas: &StabilityAtlas,
+    (ex, ey): (&[f64], &[f64]),
+    mono: bool,
+) -> Result<(), PlotError> {
+    // Pixel corners of the cell rectangle [ex[i0], ex[i1]] × [ey[j], ey[j + 1]].
+    let rect = |i0: usize, i1: usize, j: usize| -> (Px, Px) {
+        let a = chart.backend_coord(&(ex[i0], ey[j + 1]));
+        let b = chart.backend_coord(&(ex[i1], ey[j]));
+        (a, b)
+    };
+    let nx = atlas.x.len();
+    for (j, row) in atlas.verdicts.iter().enumerate() {
+        // Runs of equal verdict along the row, drawn as one rectangle each.
+        let mut i0 = 0;
+        while i0 < nx {
+            let v = row[i0];
+            let mut i1 = i0 + 1;
+            while i1 < nx && row[i1] == v {
+                i1 += 1;
+            }
+            match v {
+                Some(v) => {
+                    let (a, b) = rect(i0, i1, j);
+                    shade_cell(root, a, b, v, mono)?;
+                }
+                None => {
+                    for i in i0..i1 {
+                        let (a, b) = rect(i, i + 1, j);
+                        draw_cross(root, a, b)?;
+                    }
+                }
+            }
+            i0 = i1;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,217 @@
+//! The figures of branches: the bifurcation diagram and the energy–momentum diagram, each a map
+//! of the points of a [`BifurcationDiagram`] into the plane.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+use super::frame::{draw_figure, extent, padded, Frame, Overlays};
+use super::legend::{Entry, Swatch};
+use super::marks::{draw_event_marker, draw_rings, stroke_path, Px};
+use super::style::{verdict_color, verdict_stroke, KINDS, VERDICTS};
+use super::{drawing_error, PlotError, PlotOptions};
+use crate::{BifurcationDiagram, BranchEvent, BranchPoint, EventKind, Stability};
+
+/// A run of equal verdict along a branch, in data coordinates.
+struct Run {
+    verdict: Stability,
+    isolated: bool,
+    points: Vec<(f64, f64)>,
+}
+
+/// Splits each branch into runs of equal verdict (a change of verdict between two points is put
+/// at their midpoint), breaking at non-finite values.
+fn runs(diagram: &BifurcationDiagram, map: &impl Fn(&BranchPoint) -> (f64, f64)) -> Vec<Run> {
+    let mut out = Vec::new();
+    for branch in &diagram.branches {
+        let run = |verdict: Stability, points: Vec<(f64, f64)>| Run {
+            verdict,
+            isolated: branch.isolated,
+            points,
+        };
+        let mut cur: Option<Run> = None;
+        let mut prev: Option<((f64, f64), Stability)> = None;
+        for p in &branch.points {
+            let q = map(p);
+            let v = p.report.verdict;
+            if !(q.0.is_finite() && q.1.is_finite()) {
+                out.extend(cur.take());
+                prev = None;
+                continue;
+            }
+            match (&mut cur, prev) {
+                (Some(r), Some((_, pv))) if pv == v => r.points.push(q),
+                (Some(r), Some((pq, _))) => {
+                    let m = (0.5 * (pq.0 + q.0), 0.5 * (pq.1 + q.1));
+                    r.points.push(m);
+                    out.extend(cur.replace(run(v, vec![m, q])));
+                }
+                _ => out.extend(cur.replace(run(v, vec![q]))),
+            }
+            prev = Some((q, v));
+        }
+        out.extend(cur);
+    }
+    out
+}
+
+/// The position of an event in the figure: on the segment of its branch (or of any branch, if
+/// its index is out of range) nearest to `(s, γ)`, interpolated linearly.
+fn event_position(
+    diagram: &BifurcationDiagram,
+    e: &BranchEvent,
+    s_scale: f64,
+    map: &impl Fn(&BranchPoint) -> (f64, f64),
+) -> Option<(f64, f64)> {
+    let candidates: Vec<&crate::Branch> = match diagram.branches.get(e.branch) {
+        Some(b) if !b.points.is_empty() => vec![b],
+        _ => diagram.branches.iter().collect(),
+    };
+    let key = |p: &BranchPoint| -> [f64; 4] {
+        [
+            p.s / s_scale,
+            p.steady.gamma.x,
+            p.steady.gamma.y,
+            p.steady.gamma.z,
+        ]
+    };
+    let target = [e.s / s_scale, e.gamma.x, e.gamma.y, e.gamma.z];
+    let mut best: Option<(f64, (f64, f64))> = None;
+    for b in candidates {
+        let pts = &b.points;
+        let segs: Vec<(usize, usize)> = if pts.len() == 1 {
+            vec![(0, 0)]
+        } else {
+            (1..pts.len()).map(|i| (i - 1, i)).collect()
+        };
+        for (i, j) in segs {
+            let (a, c) = (key(&pts[i]), key(&pts[j]));
+            let d: Vec<f64> = (0..4).map(|k| c[k] - a[k]).collect();
+            let dd: f64 = d.iter().map(|v| v * v).sum();
+            let t = if dd > 0.0 {
+                ((0..4).map(|k| (target[k] - a[k]) * d[k]).sum::<f64>() / dd).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let dist: f64 = (0..4).map(|k| (a[k] + t * d[k] - target[k]).powi(2)).sum();
+            if !dist.is_finite() {
+                continue;
+            }
+            let (qa, qc) = (map(&pts[i]), map(&pts[j]));
+            let q = (qa.0 + t * (qc.0 - qa.0), qa.1 + t * (qc.1 - qa.1));
+            if q.0.is_finite() && q.1.is_finite() && best.is_none_or(|(bd, _)| dist < bd) {
+                best = Some((dist, q));
+            }
+        }
+    }
+    best.map(|(_, q)| q)
+}
+
+/// A diagram of branches and events with `map` giving the position of each point, and
+/// `exact_event` the coordinates of an event known without interpolation (if any).
+pub(super) fn branch_figure(
+    diagram: &BifurcationDiagram,
+    path: &Path,
+    opts: &PlotOptions,
+    map: impl Fn(&BranchPoint) -> (f64, f64),
+    exact_event: impl Fn(&BranchEvent) -> (Option<f64>, Option<f64>),
+    x_label: &str,
+    y_label: &str,
+) -> Result<(), PlotError> {
+    opts.check()?;
+    if diagram.branches.iter().all(|b| b.points.is_empty()) {
+        return Err(PlotError::EmptyData("the diagram has no branch point"));
+    }
+    let runs = runs(diagram, &map);
+    if runs.is_empty() {
+        return Err(PlotError::EmptyData(
+            "no branch point has finite coordinates",
+        ));
+    }
+    let s_scale = extent(
+        diagram
+            .branches
+            .iter()
+            .flat_map(|b| b.points.iter().map(|p| p.s)),
+    )
+    .map(|(lo, hi)| (hi - lo).max(1e-12 * lo.abs().max(1.0)))
+    .unwrap_or(1.0);
+    let events: Vec<(EventKind, (f64, f64))> = diagram
+        .events
+        .iter()
+        .filter_map(|e| {
+            let (ex, ey) = exact_event(e);
+            let q = event_position(diagram, e, s_scale, &map);
+            let x = ex.or(q.map(|q| q.0))?;
+            let y = ey.or(q.map(|q| q.1))?;
+            (x.is_finite() && y.is_finite()).then_some((e.kind, (x, y)))
+        })
+        .collect();
+    let all = || {
+        runs.iter()
+            .flat_map(|r| r.points.iter().copied())
+            .chain(events.iter().map(|e| e.1))
+    };
+    let xr = extent(all().map(|p| p.0)).expect("runs are non-empty and finite");
+    let yr = extent(all().map(|p| p.1)).expect("runs are non-empty and finite");
+    let frame = Frame {
+        x: padded(xr.0, xr.1),
+        y: padded(yr.0, yr.1),
+        x_label,
+        y_label,
+        mesh: true,
+    };
+    let mono = opts.monochrome;
+
+    let mut legend: Vec<Entry> = VERDICTS
+        .iter()
+        .filter(|&&v| runs.iter().any(|r| r.verdict == v))
+        .map(|&v| {
+            (
+                Swatch::Line(verdict_color(v, mono), verdict_stroke(v)),
+                v.to_string(),
+            )
+        })
+        .collect();
+    if runs.iter().any(|r| !r.isolated) {
+        legend.push((Swatch::Rings, "circle of steady motions".into()));
+    }
+    legend.extend(
+        KINDS
+            .iter()
+            .filter(|&&k| events.iter().any(|e| e.0 == k))
+            .map(|&k| (Swatch::Event(k), k.to_string())),
+    );
+    let overlays = Overlays::clip(opts, &frame);
+    legend.extend(overlays.legend());
+
+    draw_figure(path, opts, &frame, &legend, |root, chart| {
+        // In pixels, without repeats (a dense branch has many points per pixel).
+        let px = |pts: &[(f64, f64)]| -> Vec<Px> {
+            let mut v: Vec<Px> = pts.iter().map(|p| chart.backend_coord(p)).collect();
+            v.dedup();
+            v
+        };
+        // Stable runs last, so that they stay on top where branches cross.
+        for &v in VERDICTS.iter().rev() {
+            for run in runs.iter().filter(|r| r.verdict == v) {
+                let pts = px(&run.points);
+                let color = verdict_color(v, mono);
+                if pts.len() == 1 {
+                    root.draw(&Circle::new(pts[0], 3, color.filled()))
+                        .map_err(drawing_error)?;
+                    continue;
+                }
+                stroke_path(root, &pts, color, verdict_stroke(v))?;
+                if !run.isolated {
+                    draw_rings(root, &pts, color)?;
+                }
+            }
+        }
+        overlays.draw(root, px)?;
+        for &(kind, q) in &events {
+            draw_event_marker(root, chart.backend_coord(&q), kind)?;
+        }
+        Ok(())
+    })
+}

@@ -1,0 +1,250 @@
+//! The frame of a figure: the data ranges, clipping to them, the axes with their ticks, the
+//! reference curves of [`PlotOptions::overlays`], and the SVG file with the axes on the left and
+//! the legend on the right.
+
+use std::path::Path;
+
+use plotters::coord::types::RangedCoordf64;
+use plotters::prelude::*;
+
+use super::legend::{draw_legend, legend_width, Entry, Swatch};
+use super::marks::{stroke_path, Px, Root};
+use super::style::overlay_stroke;
+use super::{drawing_error, PlotError, PlotOptions};
+
+/// The axes, in data coordinates.
+pub(super) type Chart<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+/// A polyline in data coordinates.
+pub(super) type Polyline = Vec<(f64, f64)>;
+
+/// The axes of a figure: their ranges and labels, and whether a grid is drawn.
+pub(super) struct Frame<'l> {
+    pub(super) x: (f64, f64),
+    pub(super) y: (f64, f64),
+    pub(super) x_label: &'l str,
+    pub(super) y_label: &'l str,
+    pub(super) mesh: bool,
+}
+
+/// Writes the figure to `path`: the axes of `frame` to the left, `draw` in them, then the legend
+/// to their right, level with their top.
+pub(super) fn draw_figure(
+    path: &Path,
+    opts: &PlotOptions,
+    frame: &Frame,
+    legend: &[Entry],
+    draw: impl FnOnce(&Root, &Chart) -> Result<(), PlotError>,
+) -> Result<(), PlotError> {
+    let legend_w = legend_width(legend, opts.width);
+    write_svg(path, opts, |root| {
+        let (left, _) = root.split_horizontally(opts.width - legend_w);
+        let chart = axes(&left, opts, frame)?;
+        draw(root, &chart)?;
+        let top = chart.backend_coord(&(frame.x.0, frame.y.1)).1;
+        draw_legend(
+            root,
+            ((opts.width - legend_w) as i32 + 10, top),
+            legend,
+            opts.monochrome,
+        )
+    })
+}
+
+/// Renders `draw` into an SVG string and writes it to `path`.
+fn write_svg(
+    path: &Path,
+    opts: &PlotOptions,
+    draw: impl FnOnce(&Root) -> Result<(), PlotError>,
+) -> Result<(), PlotError> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (opts.width, opts.height)).into_drawing_area();
+        root.fill(&WHITE).map_err(drawing_error)?;
+        draw(&root)?;
+        root.present().map_err(drawing_error)?;
+    }
+    std::fs::write(path, svg)?;
+    Ok(())
+}
+
+/// The axes, on the left part of the figure (the legend panel is to their right).
+fn axes<'a, 'b>(
+    area: &'a Root<'b>,
+    opts: &PlotOptions,
+    frame: &Frame,
+) -> Result<Chart<'a, 'b>, PlotError> {
+    let ((x0, x1), (y0, y1)) = (frame.x, frame.y);
+    let mut builder = ChartBuilder::on(area);
+    if !opts.title.is_empty() {
+        // Centred over the axes: shrink a long title so that it fits their width (about 0.55 em
+        // a character).
+        let width = area.dim_in_pixel().0 as f64;
+        let chars = opts.title.chars().count().max(1) as f64;
+        let size = (width / (0.55 * chars)).clamp(10.0, 24.0);
+        builder.caption(&opts.title, ("sans-serif", size));
+    }
+    let mut chart = builder
+        .margin(15)
+        .x_label_area_size(50)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(drawing_error)?;
+    let fx = tick_format(x0, x1);
+    let fy = tick_format(y0, y1);
+    let mut mesh_style = chart.configure_mesh();
+    mesh_style
+        .x_desc(frame.x_label)
+        .y_desc(frame.y_label)
+        .x_label_formatter(&fx)
+        .y_label_formatter(&fy)
+        .label_style(("sans-serif", 16))
+        .axis_desc_style(("sans-serif", 19))
+        .light_line_style(RGBColor(238, 238, 238))
+        .bold_line_style(RGBColor(215, 215, 215));
+    if !frame.mesh {
+        mesh_style.disable_mesh();
+    }
+    mesh_style.draw().map_err(drawing_error)?;
+    Ok(chart)
+}
+
+/// Tick labels as plain decimals, with as many digits as the tick spacing needs.
+fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+    let step = ((hi - lo) / 10.0).abs().max(f64::MIN_POSITIVE);
+    let digits = ((-step.log10()).ceil().max(0.0) as usize + 1).min(12);
+    move |v: &f64| {
+        if v.abs() < step * 1e-6 {
+            return "0".into();
+        }
+        let s = format!("{:.*}", digits, v);
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    }
+}
+
+/// The range `[lo, hi]` widened by 5 % on each side (a point: by half its size, at least 1e−3).
+pub(super) fn padded(lo: f64, hi: f64) -> (f64, f64) {
+    if hi > lo {
+        let pad = 0.05 * (hi - lo);
+        (lo - pad, hi + pad)
+    } else {
+        let pad = 0.5 * lo.abs().max(1e-3);
+        (lo - pad, hi + pad)
+    }
+}
+
+/// The smallest and largest finite value, if any.
+pub(super) fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .filter(|v| v.is_finite())
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        })
+}
+
+/// Clips the polyline to the rectangle, splitting it where it leaves (Liang–Barsky per segment)
+/// and at non-finite points.
+pub(super) fn clip_polyline(
+    pts: &[(f64, f64)],
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> Vec<Polyline> {
+    /// Ends the current part: kept if it is a line, dropped if it is a lone point.
+    fn end_part(out: &mut Vec<Polyline>, cur: &mut Polyline) {
+        if cur.len() >= 2 {
+            out.push(std::mem::take(cur));
+        }
+        cur.clear();
+    }
+    let mut out: Vec<Polyline> = Vec::new();
+    let mut cur: Polyline = Vec::new();
+    let finite = |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite();
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if !(finite(&a) && finite(&b)) {
+            end_part(&mut out, &mut cur);
+            continue;
+        }
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        let mut visible = true;
+        for (p, q) in [
+            (-dx, a.0 - x0),
+            (dx, x1 - a.0),
+            (-dy, a.1 - y0),
+            (dy, y1 - a.1),
+        ] {
+            if p == 0.0 {
+                if q < 0.0 {
+                    visible = false;
+                }
+            } else {
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r);
+                } else {
+                    t1 = t1.min(r);
+                }
+            }
+        }
+        if !visible || t0 > t1 {
+            end_part(&mut out, &mut cur);
+            continue;
+        }
+        let pa = (a.0 + t0 * dx, a.1 + t0 * dy);
+        let pb = (a.0 + t1 * dx, a.1 + t1 * dy);
+        if cur.last() != Some(&pa) {
+            end_part(&mut out, &mut cur);
+            cur.push(pa);
+        }
+        cur.push(pb);
+        if t1 < 1.0 {
+            out.push(std::mem::take(&mut cur));
+        }
+    }
+    end_part(&mut out, &mut cur);
+    out
+}
+
+/// The overlays of [`PlotOptions::overlays`] clipped to the axes, by label (those wholly outside
+/// left out).
+pub(super) struct Overlays(Vec<(String, Vec<Polyline>)>);
+
+impl Overlays {
+    pub(super) fn clip(opts: &PlotOptions, frame: &Frame) -> Self {
+        Overlays(
+            opts.overlays
+                .iter()
+                .map(|o| (o.label.clone(), clip_polyline(&o.points, frame.x, frame.y)))
+                .filter(|(_, parts)| !parts.is_empty())
+                .collect(),
+        )
+    }
+
+    /// Their legend rows, in turn.
+    pub(super) fn legend(&self) -> impl Iterator<Item = Entry> + '_ {
+        self.0
+            .iter()
+            .enumerate()
+            .map(|(k, (label, _))| (Swatch::Line(BLACK, overlay_stroke(k)), label.clone()))
+    }
+
+    /// Strokes them in black, each part mapped to pixels by `to_px`.
+    pub(super) fn draw(
+        &self,
+        root: &Root,
+        to_px: impl Fn(&[(f64, f64)]) -> Vec<Px>,
+    ) -> Result<(), PlotError> {
+        for (k, (_, parts)) in self.0.iter().enumerate() {
+            for part in parts {
+                stroke_path(root, &to_px(part), BLACK, overlay_stroke(k))?;
+            }
+        }
+        Ok(())
+    }
+}

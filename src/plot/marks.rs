@@ -1,0 +1,205 @@
+//! Marks drawn in pixels: stroked paths, rings along a branch, event markers, shaded cells and
+//! the × of a missing steady motion.
+
+use plotters::coord::Shift;
+use plotters::element::{DashedPathElement, DottedPathElement};
+use plotters::prelude::*;
+
+use super::style::BOUNDARY_UNDERLAY;
+use super::style::{boundary_color, boundary_stroke, cell_fill, Pattern, Stroke};
+use super::{drawing_error, PlotError};
+use crate::{EventKind, Stability};
+
+/// The whole figure, in backend pixels.
+pub(super) type Root<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+/// A point in backend pixels.
+pub(super) type Px = (i32, i32);
+
+/// Strokes the polyline `pts` (nothing for fewer than two points).
+pub(super) fn stroke_path(
+    root: &Root,
+    pts: &[Px],
+    color: RGBColor,
+    stroke: Stroke,
+) -> Result<(), PlotError> {
+    if pts.len() < 2 {
+        return Ok(());
+    }
+    match stroke {
+        Stroke::Solid(w) => root
+            .draw(&PathElement::new(pts.to_vec(), color.stroke_width(w)))
+            .map_err(drawing_error),
+        Stroke::Dashed(w, dash, gap) => root
+            .draw(&DashedPathElement::new(
+                pts.to_vec(),
+                dash,
+                gap,
+                color.stroke_width(w),
+            ))
+            .map_err(drawing_error),
+    }
+}
+
+/// Strokes the parts of a boundary curve of kind `kind`: first all of them on a white underlay,
+/// then each in its own style.
+pub(super) fn stroke_boundary(
+    root: &Root,
+    parts: &[Vec<Px>],
+    kind: EventKind,
+    mono: bool,
+) -> Result<(), PlotError> {
+    for part in parts {
+        stroke_path(root, part, WHITE, BOUNDARY_UNDERLAY)?;
+    }
+    for part in parts {
+        stroke_path(
+            root,
+            part,
+            boundary_color(kind, mono),
+            boundary_stroke(kind),
+        )?;
+    }
+    Ok(())
+}
+
+/// Open rings along the polyline `pts`: a branch of circles of steady motions.
+pub(super) fn draw_rings(root: &Root, pts: &[Px], color: RGBColor) -> Result<(), PlotError> {
+    if pts.len() < 2 {
+        return Ok(());
+    }
+    let style = color.stroke_width(1);
+    let white = WHITE.filled();
+    root.draw(&DottedPathElement::new(pts.to_vec(), 10, 26, move |c| {
+        Circle::new(c, 4, white)
+    }))
+    .map_err(drawing_error)?;
+    root.draw(&DottedPathElement::new(pts.to_vec(), 10, 26, move |c| {
+        Circle::new(c, 4, style)
+    }))
+    .map_err(drawing_error)
+}
+
+/// The marker of an event at `c`, black on a white halo: ▲ fold, ● branch point, ■
+/// Hamiltonian–Hopf.
+pub(super) fn draw_event_marker(root: &Root, c: Px, kind: EventKind) -> Result<(), PlotError> {
+    let halo = WHITE.filled();
+    let ink = BLACK.filled();
+    let r = match kind {
+        EventKind::Fold => root
+            .draw(&TriangleMarker::new(c, 11, halo))
+            .and_then(|_| root.draw(&TriangleMarker::new(c, 7, ink))),
+        EventKind::BranchPoint => root
+            .draw(&Circle::new(c, 7, halo))
+            .and_then(|_| root.draw(&Circle::new(c, 5, ink))),
+        EventKind::HamiltonianHopf => root
+            .draw(&Rectangle::new(
+                [(c.0 - 7, c.1 - 7), (c.0 + 7, c.1 + 7)],
+                halo,
+            ))
+            .and_then(|_| {
+                root.draw(&Rectangle::new(
+                    [(c.0 - 5, c.1 - 5), (c.0 + 5, c.1 + 5)],
+                    ink,
+                ))
+            }),
+    };
+    r.map_err(drawing_error)
+}
+
+/// Shades the pixel rectangle with corners `a` (top left) and `b` (bottom right) as a cell of
+/// verdict `v`.
+pub(super) fn shade_cell(
+    root: &Root,
+    a: Px,
+    b: Px,
+    v: Stability,
+    mono: bool,
+) -> Result<(), PlotError> {
+    let (color, pattern) = cell_fill(v, mono);
+    fill_cell(root, a, b, color, pattern)
+}
+
+/// Fills the pixel rectangle `[x0, x1] × [y0, y1]` with the background and pattern (dots on
+/// `[x0, x1) × [y0, y1)`, so that abutting cells do not repeat them).
+fn fill_cell(
+    root: &Root,
+    (x0, y0): Px,
+    (x1, y1): Px,
+    color: RGBColor,
+    pattern: Pattern,
+) -> Result<(), PlotError> {
+    if x1 <= x0 || y1 <= y0 {
+        return Ok(());
+    }
+    root.draw(&Rectangle::new([(x0, y0), (x1, y1)], color.filled()))
+        .map_err(drawing_error)?;
+    const SP: i32 = 9;
+    let ink = RGBColor(40, 40, 40);
+    match pattern {
+        Pattern::Plain => {}
+        Pattern::Dots => {
+            // A staggered lattice, global in pixels so that it runs on across cells.
+            for py in (y0.div_euclid(SP) * SP..y1).step_by(SP as usize) {
+                if py < y0 {
+                    continue;
+                }
+                let off = if py.div_euclid(SP) % 2 == 0 {
+                    0
+                } else {
+                    SP / 2
+                };
+                let start = (x0 - off).div_euclid(SP) * SP + off;
+                for px in (start..x1).step_by(SP as usize) {
+                    if px >= x0 {
+                        root.draw(&Circle::new((px, py), 1, ink.filled()))
+                            .map_err(drawing_error)?;
+                    }
+                }
+            }
+        }
+        Pattern::Hatch | Pattern::CrossHatch => {
+            let style = ink.stroke_width(1);
+            // "/" lines: px + py = c.
+            let c0 = (x0 + y0).div_euclid(SP) * SP;
+            for c in (c0..=x1 + y1).step_by(SP as usize) {
+                let a = (c - y1).max(x0);
+                let b = (c - y0).min(x1);
+                if a < b {
+                    root.draw(&PathElement::new(vec![(a, c - a), (b, c - b)], style))
+                        .map_err(drawing_error)?;
+                }
+            }
+            if pattern == Pattern::CrossHatch {
+                // "\" lines: px − py = c.
+                let c0 = (x0 - y1).div_euclid(SP) * SP;
+                for c in (c0..=x1 - y0).step_by(SP as usize) {
+                    let a = (c + y0).max(x0);
+                    let b = (c + y1).min(x1);
+                    if a < b {
+                        root.draw(&PathElement::new(vec![(a, a - c), (b, b - c)], style))
+                            .map_err(drawing_error)?;
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A small grey × in the middle of the pixel rectangle: no steady motion there.
+pub(super) fn draw_cross(root: &Root, (x0, y0): Px, (x1, y1): Px) -> Result<(), PlotError> {
+    let (cx, cy) = ((x0 + x1) / 2, (y0 + y1) / 2);
+    let h = ((x1 - x0).min(y1 - y0) / 4).clamp(2, 6);
+    let style = RGBColor(120, 120, 120).stroke_width(1);
+    root.draw(&PathElement::new(
+        vec![(cx - h, cy - h), (cx + h, cy + h)],
+        style,
+    ))
+    .and_then(|_| {
+        root.draw(&PathElement::new(
+            vec![(cx - h, cy + h), (cx + h, cy - h)],
+            style,
+        ))
+    })
+    .map_err(drawing_error)
+}

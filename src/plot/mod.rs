@@ -1,0 +1,437 @@
+//! SVG figures of families of steady motions (feature `plot`, on by default): bifurcation
+//! diagrams, Smale's energy–momentum diagram and stability atlases, drawn with `plotters`.
+//!
+//! Every figure reads without colour:
+//!
+//! - along a branch, runs of equal verdict are drawn as **thick solid** lines where
+//!   [`Stability::SecularlyStable`], **thin solid** where [`Stability::GyroscopicallyStabilized`],
+//!   **dashed** where [`Stability::Unstable`] and **dotted** where [`Stability::Degenerate`];
+//!   branches of circles of steady motions (`isolated == false`) carry open rings along them;
+//! - events are marked by shape: ▲ [`EventKind::Fold`], ● [`EventKind::BranchPoint`],
+//!   ■ [`EventKind::HamiltonianHopf`];
+//! - in an atlas, each verdict has its own grey level *and* pattern (plain, dots, diagonal
+//!   hatching, cross-hatching), nodes where the steady motion does not exist are white with a
+//!   small ×, and the boundary curves are drawn on top, solid, dashed or dotted by kind.
+//!
+//! A legend to the right of the axes names every line style, marker and shading that occurs.
+//! Colour is added on top (switch it off with [`PlotOptions::monochrome`]).
+//!
+//! ```
+//! use routh::plot::{bifurcation_diagram_svg, stability_atlas_svg, DiagramAxis, PlotOptions};
+//! use routh::{bifurcation_diagram, stability_atlas, AtlasOptions, ContinuationOptions};
+//! use routh::{Lagrangian, Vector3};
+//!
+//! /// A heavy symmetric (Lagrange) top.
+//! #[derive(Lagrangian, Clone)]
+//! #[lagrangian(kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z)]
+//! struct Top { inertia: Vector3<f64>, mgl: f64 }
+//!
+//! let top = Top { inertia: Vector3::new(1.0, 1.0, 1.25), mgl: 1.0 };
+//! let coarse = ContinuationOptions { seeds: 2, verify_counts: false, max_step: 0.1, ..Default::default() };
+//! // Its steady motions over the cyclic momentum p_ψ, drawn with the tilt up.
+//! let diagram = bifurcation_diagram(|p| (top.clone(), p), (0.0, 4.0), &coarse)?;
+//! let opts = PlotOptions {
+//!     title: "Lagrange top".into(),
+//!     x_label: "p_ψ".into(),
+//!     y: DiagramAxis::Tilt,
+//!     ..PlotOptions::default()
+//! };
+//! let path = std::env::temp_dir().join("routh-doc-plot-diagram.svg");
+//! bifurcation_diagram_svg(&diagram, &path, &opts)?;
+//!
+//! // The verdict of the sleeping top over the plane (mgl, p_ψ).
+//! let atlas = stability_atlas(
+//!     |mgl, p| (Top { mgl, ..top.clone() }, p),
+//!     Vector3::z(),
+//!     (0.5, 1.5),
+//!     (0.0, 4.0),
+//!     &AtlasOptions { nx: 9, ny: 9, ..Default::default() },
+//! )?;
+//! let opts = PlotOptions { x_label: "mgl".into(), y_label: "p_ψ".into(), ..PlotOptions::default() };
+//! let path = std::env::temp_dir().join("routh-doc-plot-atlas.svg");
+//! stability_atlas_svg(&atlas, &path, &opts)?;
+//! assert!(std::fs::read_to_string(&path)?.contains("Hamiltonian–Hopf boundary"));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::fmt;
+use std::path::Path;
+
+use crate::{BifurcationDiagram, StabilityAtlas};
+#[cfg(doc)]
+use crate::{EventKind, Stability};
+
+// This file holds the public API; the drawing is split by responsibility: `style` (strokes,
+// colours and fills by verdict and event), `marks` (what is drawn in pixels), `legend`, `frame`
+// (ranges, clipping, axes, overlays, the SVG file), `diagram` (branches and events), `atlas`
+// (cells and boundaries) and `axis` (`DiagramAxis`).
+mod atlas;
+mod axis;
+mod diagram;
+mod frame;
+mod legend;
+mod marks;
+mod style;
+
+pub use axis::DiagramAxis;
+
+/// The errors of the plotting functions.
+///
+/// ```
+/// use routh::plot::{bifurcation_diagram_svg, stability_atlas_svg, PlotError, PlotOptions};
+/// use routh::{bifurcation_diagram, ContinuationOptions, StabilityAtlas};
+/// use routh::{Lagrangian, Vector3};
+///
+/// #[derive(Lagrangian, Clone)]
+/// #[lagrangian(kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z)]
+/// struct Top { inertia: Vector3<f64>, mgl: f64 }
+///
+/// let top = Top { inertia: Vector3::new(1.0, 1.0, 1.25), mgl: 1.0 };
+/// let coarse = ContinuationOptions { seeds: 2, verify_counts: false, max_step: 0.1, ..Default::default() };
+/// let diagram = bifurcation_diagram(|p| (top.clone(), p), (0.0, 3.0), &coarse)?;
+/// let path = std::env::temp_dir().join("routh-doc-plot-error.svg");
+///
+/// // Too small for axes and legend.
+/// let tiny = PlotOptions { width: 300, ..PlotOptions::default() };
+/// let err = bifurcation_diagram_svg(&diagram, &path, &tiny).unwrap_err();
+/// assert!(matches!(err, PlotError::InvalidOptions(_)), "{err}");
+///
+/// // Nothing to draw.
+/// let err = stability_atlas_svg(&StabilityAtlas::default(), &path, &PlotOptions::default());
+/// assert!(matches!(err, Err(PlotError::EmptyData(_))));
+///
+/// // A file cannot be written below a file.
+/// bifurcation_diagram_svg(&diagram, &path, &PlotOptions::default())?;
+/// let err = bifurcation_diagram_svg(&diagram, path.join("below.svg"), &PlotOptions::default());
+/// assert!(matches!(err, Err(PlotError::Io(_))));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum PlotError {
+    /// The SVG file could not be written.
+    #[error("cannot write the figure: {0}")]
+    Io(#[from] std::io::Error),
+    /// `plotters` failed while drawing.
+    #[error("drawing failed: {0}")]
+    Drawing(String),
+    /// Nothing to plot (no branch point, no grid node, or no finite value).
+    #[error("nothing to plot: {0}")]
+    EmptyData(&'static str),
+    /// The data are inconsistent (e.g. the verdict grid of an atlas does not match its axes).
+    #[error("inconsistent data: {0}")]
+    InvalidData(String),
+    /// The options cannot be honoured (e.g. a figure too small for its legend).
+    #[error("invalid plot options: {0}")]
+    InvalidOptions(String),
+}
+
+fn drawing_error<E: fmt::Display>(e: E) -> PlotError {
+    PlotError::Drawing(e.to_string())
+}
+
+/// Options of the figures.
+///
+/// ```
+/// use routh::plot::{energy_momentum_svg, DiagramAxis, PlotOptions};
+/// use routh::{bifurcation_diagram, ContinuationOptions};
+/// use routh::{Lagrangian, Vector3};
+///
+/// #[derive(Lagrangian, Clone)]
+/// #[lagrangian(kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z)]
+/// struct Top { inertia: Vector3<f64>, mgl: f64 }
+///
+/// let top = Top { inertia: Vector3::new(1.0, 1.0, 1.25), mgl: 1.0 };
+/// let coarse = ContinuationOptions { seeds: 2, verify_counts: false, max_step: 0.1, ..Default::default() };
+/// let diagram = bifurcation_diagram(|p| (top.clone(), p), (0.0, 3.0), &coarse)?;
+/// // A small black-and-white figure for print.
+/// let opts = PlotOptions {
+///     title: "Lagrange top, A₁ = 1, C = 1.25, mgl = 1".into(),
+///     y_label: "total energy".into(),
+///     width: 600,
+///     height: 400,
+///     monochrome: true,
+///     ..PlotOptions::default()
+/// };
+/// let path = std::env::temp_dir().join("routh-doc-plot-options.svg");
+/// energy_momentum_svg(&diagram, &path, &opts)?;
+/// let svg = std::fs::read_to_string(&path)?;
+/// assert!(svg.contains("width=\"600\"") && svg.contains("total energy"));
+/// assert!(svg.contains("p_ψ")); // the default x_label "s" says p_ψ here
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotOptions {
+    /// Caption above the axes (empty: none; default empty).
+    pub title: String,
+    /// Label of the horizontal axis: the parameter's name (default `"s"`). The energy–momentum
+    /// diagram, whose horizontal axis is always `p_ψ`, says `"p_ψ"` when this is `"s"` or empty.
+    pub x_label: String,
+    /// Label of the vertical axis (empty, the default: [`DiagramAxis::label`] of [`Self::y`] for
+    /// a bifurcation diagram, `"energy E"` for an energy–momentum diagram, `"y"` for an atlas).
+    pub y_label: String,
+    /// Width of the figure in pixels, legend included (default `900`, at least `400`).
+    pub width: u32,
+    /// Height of the figure in pixels (default `600`, at least `250`).
+    pub height: u32,
+    /// The scalar of the steady motion on the vertical axis of a bifurcation diagram (default
+    /// [`DiagramAxis::GammaZ`]).
+    pub y: DiagramAxis,
+    /// Black, white and greys only (default `false`: the line styles, markers and patterns are
+    /// the same, colour is added on top).
+    pub monochrome: bool,
+    /// Reference curves drawn on top of a bifurcation diagram or an atlas, in the data's
+    /// coordinates, each named in the legend — e.g. a closed form to compare with (default none).
+    pub overlays: Vec<Overlay>,
+}
+
+/// A named reference curve of [`PlotOptions::overlays`], drawn in black over the data (long
+/// dashes, short dashes, a thin line, in turn).
+///
+/// ```
+/// use routh::plot::{bifurcation_diagram_svg, Overlay, PlotOptions};
+/// use routh::{bifurcation_diagram, ContinuationOptions};
+/// use routh::{Lagrangian, Vector3};
+///
+/// #[derive(Lagrangian, Clone)]
+/// #[lagrangian(kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z)]
+/// struct Top { inertia: Vector3<f64>, mgl: f64 }
+///
+/// let (a1, c, mgl) = (1.0, 1.25, 1.0);
+/// let top = Top { inertia: Vector3::new(a1, a1, c), mgl };
+/// let coarse = ContinuationOptions { seeds: 2, verify_counts: false, max_step: 0.1, ..Default::default() };
+/// let diagram = bifurcation_diagram(|p| (top.clone(), p), (0.0, 4.0), &coarse)?;
+/// // The tilted precessions in closed form, p_ψ² = mgl (A₁ + (C − A₁)γ₃²)² / ((C − A₁)γ₃),
+/// // over the circles of steady motions that the continuation found.
+/// let tilted = Overlay {
+///     label: "tilted precessions, closed form".into(),
+///     points: (30..=100)
+///         .map(|k| {
+///             let z = k as f64 / 100.0;
+///             let p = (mgl * (a1 + (c - a1) * z * z).powi(2) / ((c - a1) * z)).sqrt();
+///             (p, z)
+///         })
+///         .collect(),
+/// };
+/// let opts = PlotOptions { x_label: "p_ψ".into(), overlays: vec![tilted], ..PlotOptions::default() };
+/// let path = std::env::temp_dir().join("routh-doc-plot-overlay.svg");
+/// bifurcation_diagram_svg(&diagram, &path, &opts)?;
+/// assert!(std::fs::read_to_string(&path)?.contains("tilted precessions, closed form"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Overlay {
+    /// The legend text.
+    pub label: String,
+    /// The points `(x, y)` in order; non-finite points break the line.
+    pub points: Vec<(f64, f64)>,
+}
+
+impl Default for PlotOptions {
+    fn default() -> Self {
+        PlotOptions {
+            title: String::new(),
+            x_label: "s".into(),
+            y_label: String::new(),
+            width: 900,
+            height: 600,
+            y: DiagramAxis::GammaZ,
+            monochrome: false,
+            overlays: Vec::new(),
+        }
+    }
+}
+
+impl PlotOptions {
+    fn check(&self) -> Result<(), PlotError> {
+        if self.width < 400 || self.height < 250 {
+            return Err(PlotError::InvalidOptions(format!(
+                "a figure of {} × {} pixels is too small (at least 400 × 250)",
+                self.width, self.height
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// `label`, or `default` when it is empty.
+fn label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
+    if label.is_empty() {
+        default
+    } else {
+        label
+    }
+}
+
+/// Writes the bifurcation diagram as an SVG: the parameter `s` across, the scalar
+/// [`PlotOptions::y`] of each steady motion up.
+///
+/// Each branch is drawn as a line, split into runs of equal verdict: thick solid where
+/// secularly stable, thin solid where gyroscopically stabilised, dashed where unstable, dotted
+/// where degenerate; branches of circles of steady motions carry open rings. Events are marked
+/// ▲ (fold), ● (branch point) and ■ (Hamiltonian–Hopf). The legend names each style and marker
+/// that occurs.
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] if no branch has a point with finite coordinates,
+/// [`PlotError::InvalidOptions`] for a figure smaller than 400 × 250 pixels, [`PlotError::Io`]
+/// if the file cannot be written.
+///
+/// ```
+/// use routh::plot::{bifurcation_diagram_svg, PlotOptions};
+/// use routh::{
+///     BifurcationDiagram, Branch, BranchPoint, Complex, Stability, StabilityReport,
+///     SteadyMotion, Vector3,
+/// };
+///
+/// // The sleeping top: stable for p_ψ > 2, unstable below.
+/// let point = |p: f64| BranchPoint {
+///     s: p,
+///     steady: SteadyMotion {
+///         p_psi: p, gamma: Vector3::z(), psi_dot: -p, mu: 0.0,
+///         amended_potential: 1.0 + 0.5 * p * p, energy: 1.0 + 0.5 * p * p, isolated: true,
+///     },
+///     report: StabilityReport {
+///         restricted_hessian_eigenvalues: [p * p / 4.0 - 1.0; 2],
+///         degree_of_instability: if p > 2.0 { 0 } else { 2 },
+///         f2_roots: [Complex::new(0.0, 0.0); 4],
+///         verdict: if p > 2.0 { Stability::SecularlyStable } else { Stability::Unstable },
+///     },
+/// };
+/// let diagram = BifurcationDiagram {
+///     branches: vec![Branch { points: (0..=40).map(|i| point(0.1 * i as f64)).collect(), isolated: true }],
+///     events: vec![],
+/// };
+/// let path = std::env::temp_dir().join("routh-doc-bifurcation.svg");
+/// let opts = PlotOptions { x_label: "p_ψ".into(), ..PlotOptions::default() };
+/// bifurcation_diagram_svg(&diagram, &path, &opts)?;
+/// assert!(std::fs::read_to_string(&path)?.contains("secularly stable"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
+    diagram: &BifurcationDiagram,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    let axis = opts.y;
+    diagram::branch_figure(
+        diagram,
+        path.as_ref(),
+        opts,
+        |p| (p.s, axis.value(&p.steady)),
+        |e| (Some(e.s), axis.of_gamma(&e.gamma)),
+        &opts.x_label,
+        label_or(&opts.y_label, axis.label()),
+    )
+}
+
+/// Writes Smale's energy–momentum diagram as an SVG: the energy `E` of each steady motion of the
+/// diagram up, against its cyclic momentum `p_ψ` across.
+///
+/// For a diagram over `p_ψ` this is the diagram's own curves seen in the `(p_ψ, E)` plane; for a
+/// diagram over a parameter of the body at fixed `p_ψ`, the branches stand on one vertical line.
+/// Line styles, markers and legend are those of [`bifurcation_diagram_svg`] (events are placed
+/// by interpolation along their branch). The horizontal axis is labelled
+/// [`PlotOptions::x_label`], or `"p_ψ"` when that is the default `"s"` or empty.
+///
+/// # Errors
+///
+/// As [`bifurcation_diagram_svg`].
+///
+/// ```
+/// use routh::plot::{energy_momentum_svg, PlotOptions};
+/// use routh::{
+///     BifurcationDiagram, Branch, BranchPoint, Complex, Stability, StabilityReport,
+///     SteadyMotion, Vector3,
+/// };
+///
+/// let point = |p: f64| BranchPoint {
+///     s: p,
+///     steady: SteadyMotion {
+///         p_psi: p, gamma: Vector3::z(), psi_dot: -p, mu: 0.0,
+///         amended_potential: 1.0 + 0.5 * p * p, energy: 1.0 + 0.5 * p * p, isolated: true,
+///     },
+///     report: StabilityReport {
+///         restricted_hessian_eigenvalues: [1.0; 2],
+///         degree_of_instability: 0,
+///         f2_roots: [Complex::new(0.0, 0.0); 4],
+///         verdict: Stability::SecularlyStable,
+///     },
+/// };
+/// let diagram = BifurcationDiagram {
+///     branches: vec![Branch { points: (0..=20).map(|i| point(0.2 * i as f64)).collect(), isolated: true }],
+///     events: vec![],
+/// };
+/// let path = std::env::temp_dir().join("routh-doc-energy-momentum.svg");
+/// energy_momentum_svg(&diagram, &path, &PlotOptions::default())?;
+/// assert!(std::fs::read_to_string(&path)?.contains("p_ψ"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn energy_momentum_svg<P: AsRef<Path>>(
+    diagram: &BifurcationDiagram,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    let x_label = if opts.x_label == "s" {
+        "p_ψ"
+    } else {
+        label_or(&opts.x_label, "p_ψ")
+    };
+    diagram::branch_figure(
+        diagram,
+        path.as_ref(),
+        opts,
+        |p| (p.steady.p_psi, p.steady.energy),
+        |_| (None, None),
+        x_label,
+        label_or(&opts.y_label, DiagramAxis::Energy.label()),
+    )
+}
+
+/// Writes the stability atlas as an SVG: the parameter plane with each grid node's cell shaded by
+/// its verdict and the boundary curves on top.
+///
+/// Each verdict has a grey level and a pattern: secularly stable plain light, gyroscopically
+/// stabilised dotted, unstable hatched `/`, degenerate cross-hatched; where the steady motion does
+/// not exist (`None`) the cell is white with a small ×. Boundary curves are solid (fold), dashed
+/// (branch point) or dotted (Hamiltonian–Hopf), on a white underlay. The legend names each shading
+/// and curve that occurs. The axes are labelled [`PlotOptions::x_label`] and
+/// [`PlotOptions::y_label`] (`"y"` when empty); [`PlotOptions::y`] is not used.
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] for an empty grid, [`PlotError::InvalidData`] if `verdicts` is not
+/// `y.len()` rows of `x.len()` or the grid is not finite and ascending,
+/// [`PlotError::InvalidOptions`] for a figure smaller than 400 × 250 pixels, [`PlotError::Io`] if
+/// the file cannot be written.
+///
+/// ```
+/// use routh::plot::{stability_atlas_svg, PlotOptions};
+/// use routh::{BoundaryCurve, EventKind, Stability, StabilityAtlas};
+///
+/// let x: Vec<f64> = (0..=10).map(|i| i as f64 / 10.0).collect();
+/// let y = x.clone();
+/// let verdicts = y
+///     .iter()
+///     .map(|&y| {
+///         x.iter()
+///             .map(|&x| Some(if y > x { Stability::SecularlyStable } else { Stability::Unstable }))
+///             .collect()
+///     })
+///     .collect();
+/// let boundaries = vec![BoundaryCurve { kind: EventKind::BranchPoint, points: vec![(0.0, 0.0), (1.0, 1.0)] }];
+/// let atlas = StabilityAtlas { x, y, verdicts, boundaries };
+/// let path = std::env::temp_dir().join("routh-doc-atlas.svg");
+/// let opts = PlotOptions { x_label: "mgl".into(), y_label: "p_ψ".into(), ..PlotOptions::default() };
+/// stability_atlas_svg(&atlas, &path, &opts)?;
+/// assert!(std::fs::read_to_string(&path)?.contains("branch point"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn stability_atlas_svg<P: AsRef<Path>>(
+    atlas: &StabilityAtlas,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    atlas::atlas_figure(atlas, path.as_ref(), opts)
+}

@@ -1,0 +1,120 @@
+//! How each verdict, event kind and overlay is drawn: strokes, colours and fills. Every style
+//! reads without colour; the colour of [`verdict_color`] and [`boundary_color`] is added on top
+//! (black with [`PlotOptions::monochrome`](super::PlotOptions::monochrome)).
+
+use plotters::style::{RGBColor, BLACK};
+
+use crate::{EventKind, Stability};
+
+/// The verdicts in the order of the legend (and the reverse of the drawing order).
+pub(super) const VERDICTS: [Stability; 4] = [
+    Stability::SecularlyStable,
+    Stability::GyroscopicallyStabilized,
+    Stability::Unstable,
+    Stability::Degenerate,
+];
+
+/// The event kinds in the order of the legend.
+pub(super) const KINDS: [EventKind; 3] = [
+    EventKind::Fold,
+    EventKind::BranchPoint,
+    EventKind::HamiltonianHopf,
+];
+
+/// How a polyline is stroked.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Stroke {
+    Solid(u32),
+    /// Width, dash, gap (pixels).
+    Dashed(u32, u32, u32),
+}
+
+/// The white band under a boundary curve of an atlas, so that it stands out of the shading.
+pub(super) const BOUNDARY_UNDERLAY: Stroke = Stroke::Solid(7);
+
+/// The strokes of [`Overlay`](super::Overlay) curves, in turn: long dashes, short dashes, a thin
+/// line.
+const OVERLAY_STROKES: [Stroke; 3] = [
+    Stroke::Dashed(2, 12, 4),
+    Stroke::Dashed(2, 4, 6),
+    Stroke::Solid(1),
+];
+
+/// The stroke of the `k`-th overlay.
+pub(super) fn overlay_stroke(k: usize) -> Stroke {
+    OVERLAY_STROKES[k % OVERLAY_STROKES.len()]
+}
+
+/// `color`, or black in a monochrome figure.
+fn ink(color: RGBColor, mono: bool) -> RGBColor {
+    if mono {
+        BLACK
+    } else {
+        color
+    }
+}
+
+/// The stroke of a run of a branch: thick solid, thin solid, dashed, dotted.
+pub(super) fn verdict_stroke(v: Stability) -> Stroke {
+    match v {
+        Stability::SecularlyStable => Stroke::Solid(4),
+        Stability::GyroscopicallyStabilized => Stroke::Solid(1),
+        Stability::Unstable => Stroke::Dashed(2, 9, 6),
+        Stability::Degenerate => Stroke::Dashed(2, 2, 4),
+    }
+}
+
+pub(super) fn verdict_color(v: Stability, mono: bool) -> RGBColor {
+    let color = match v {
+        Stability::SecularlyStable => RGBColor(0, 130, 55),
+        Stability::GyroscopicallyStabilized => RGBColor(25, 80, 210),
+        Stability::Unstable => RGBColor(205, 30, 30),
+        Stability::Degenerate => RGBColor(110, 110, 110),
+    };
+    ink(color, mono)
+}
+
+/// The stroke of a boundary curve of an atlas: solid, dashed, dotted.
+pub(super) fn boundary_stroke(k: EventKind) -> Stroke {
+    match k {
+        EventKind::Fold => Stroke::Solid(3),
+        EventKind::BranchPoint => Stroke::Dashed(3, 12, 5),
+        EventKind::HamiltonianHopf => Stroke::Dashed(3, 3, 4),
+    }
+}
+
+pub(super) fn boundary_color(k: EventKind, mono: bool) -> RGBColor {
+    let color = match k {
+        EventKind::Fold => BLACK,
+        EventKind::BranchPoint => RGBColor(90, 0, 130),
+        EventKind::HamiltonianHopf => RGBColor(150, 50, 0),
+    };
+    ink(color, mono)
+}
+
+/// The pattern over the background of an atlas cell.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Pattern {
+    Plain,
+    Dots,
+    Hatch,
+    CrossHatch,
+}
+
+/// Fill of an atlas cell: background colour (a grey level in a monochrome figure) and pattern.
+pub(super) fn cell_fill(v: Stability, mono: bool) -> (RGBColor, Pattern) {
+    let (grey, tint, pattern) = match v {
+        Stability::SecularlyStable => (240, RGBColor(228, 244, 228), Pattern::Plain),
+        Stability::GyroscopicallyStabilized => (212, RGBColor(200, 214, 240), Pattern::Dots),
+        Stability::Unstable => (180, RGBColor(238, 178, 172), Pattern::Hatch),
+        Stability::Degenerate => (150, RGBColor(160, 160, 160), Pattern::CrossHatch),
+    };
+    (
+        if mono {
+            RGBColor(grey, grey, grey)
+        } else {
+            tint
+        },
+        pattern,
+    )
+}
