@@ -10,6 +10,8 @@
 //! corrector then also keeps `c·ξ = 0` (it stays in the meridian plane) and solves in the least
 //! squares sense, and the tangent is the null vector orthogonal to `c`.
 
+use std::cell::Cell;
+
 use nalgebra::{DMatrix, DVector, Matrix2x3, Vector2, Vector3};
 
 use super::equations::{chart_eval, member, relative_discriminant, restricted_eigen, Local};
@@ -19,6 +21,9 @@ use crate::model::Routhian;
 use crate::sphere::tangent_basis;
 use crate::stability::{classify_with, Stability};
 use crate::steady::record;
+
+/// Newton iterations of the corrector before it gives up.
+pub(crate) const CORRECTOR_MAX_ITER: usize = 16;
 
 /// A converged point of a branch with its tangent and test functions.
 #[derive(Debug, Clone)]
@@ -72,6 +77,10 @@ pub(crate) struct Ctx<'a, M, F> {
     /// Residual scale of the branch (set from its first point).
     pub scale: f64,
     pub isolated: bool,
+    /// The smallest relative residual `|F|/scale` that the last failed correction reached (NaN
+    /// when it was rejected for another reason: a jump to another branch, a non-finite step):
+    /// reported when a branch cannot be continued.
+    pub failed_residual: Cell<f64>,
     pub _model: std::marker::PhantomData<fn() -> M>,
 }
 
@@ -83,6 +92,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             opts,
             scale: 1.0,
             isolated: true,
+            failed_residual: Cell::new(f64::NAN),
             _model: std::marker::PhantomData,
         }
     }
@@ -99,7 +109,8 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
     }
 
     /// Newton's method from `(gamma_p, sigma_p)` on `F = 0` plus `constraint` (plus `c·ξ = 0`
-    /// for a branch of circles). `Ok(None)` when it does not converge.
+    /// for a branch of circles). `Ok(None)` when it does not converge, with the smallest residual
+    /// reached in [`Ctx::failed_residual`].
     pub fn correct(
         &self,
         gamma_p: &Vector3<f64>,
@@ -124,7 +135,12 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         let mut sigma = sigma_p;
         let rows = if circle.is_some() { 4 } else { 3 };
         let mut last_step = f64::INFINITY;
-        for it in 0..16 {
+        let mut best = f64::NAN;
+        let failed = |best: f64| {
+            self.failed_residual.set(best);
+            Ok(None)
+        };
+        for it in 0..CORRECTOR_MAX_ITER {
             let e = chart_eval(
                 self.family,
                 gamma_p,
@@ -135,6 +151,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             )?;
             let sc = self.scale.max(e.local.scale()).max(f64::MIN_POSITIVE);
             let f = e.f / sc;
+            best = best.min(f.norm());
             let cres = a_xi.dot(&xi) + constraint.a_s * (sigma - sigma_p) - c0;
             let cir = circle.map_or(0.0, |c| c.dot(&xi));
             // Converged: the residual within tolerance, or within a hundred times it once the
@@ -166,19 +183,19 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             }
             let svd = a.svd(true, true);
             let Ok(step) = svd.solve(&r, 1e-12) else {
-                return Ok(None);
+                return failed(best);
             };
             if !step.iter().all(|v| v.is_finite()) {
-                return Ok(None);
+                return failed(best);
             }
             last_step = step.norm();
             xi -= Vector2::new(step[0], step[1]);
             sigma -= step[2];
             if xi.norm() > 0.5 || !sigma.is_finite() {
-                return Ok(None);
+                return failed(best);
             }
         }
-        Ok(None)
+        failed(best)
     }
 
     /// The node at a converged `(gamma, s)`: tangent oriented along `prev` (if any), test
@@ -273,6 +290,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         // A corrector that moved much further than the step jumped to another branch.
         let moved = ((g - g_p).norm_squared() + ((s - s_p * self.len) / self.len).powi(2)).sqrt();
         if moved > 0.5 * h.max(1e-9) + 1e-9 {
+            self.failed_residual.set(f64::NAN);
             return Ok(None);
         }
         self.node(&g, s, Some((&a.tau_g, a.tau_s)), it)

@@ -63,12 +63,19 @@ pub struct ContinuationOptions {
     pub initial_step: f64,
     /// Largest step, relative to the length of the range (default `0.05`).
     pub max_step: f64,
-    /// Smallest step before a branch is given up as unreachable (default `1e−7`).
+    /// Smallest step, relative to the length of the range (default `1e−7`): where the corrector
+    /// fails for every step down to it, the branch cannot be continued and the diagram is an
+    /// error ([`RouthError::AtParameter`](crate::RouthError::AtParameter) at the last `s`
+    /// reached, wrapping [`RouthError::NoConvergence`](crate::RouthError::NoConvergence)).
     pub min_step: f64,
-    /// Budget of continuation steps per branch; a branch that needs more ends with
-    /// [`RouthError::NoConvergence`](crate::RouthError) (default `20_000`).
+    /// Budget of continuation steps per branch, both directions together (default `20_000`); a
+    /// branch that needs more is an error,
+    /// [`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming `max_steps`, with
+    /// the `s` and γ where the budget ran out.
     pub max_steps: usize,
-    /// Budget of branches (default `64`).
+    /// Budget of branches (default `64`); a diagram with more is an error,
+    /// [`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming `max_branches`,
+    /// with the `s` and γ of the first branch over the budget.
     pub max_branches: usize,
     /// Relative tolerance of the Newton corrector on the Riemannian gradient (default `1e−12`).
     pub newton_tol: f64,
@@ -272,7 +279,9 @@ pub struct AtlasOptions {
     /// Step of the boundary-curve continuation, relative to the diagonal of the rectangle
     /// (default `0.005`).
     pub curve_step: f64,
-    /// Budget of points per boundary curve (default `20_000`).
+    /// Budget of points per boundary curve (default `20_000`); a curve that needs more is an
+    /// error, [`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming
+    /// `max_curve_points`, with the `(x, y)` and γ where the budget ran out.
     pub max_curve_points: usize,
     /// Number of worker threads for the grid of
     /// [`stability_atlas_parallel`] (`0`: all cores; default

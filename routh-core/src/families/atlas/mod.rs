@@ -113,7 +113,9 @@ const PARAM_FD: f64 = 1e-6;
 ///   result bit for bit.
 ///
 /// Errors: [`RouthError::InvalidOption`] for `nx < 2`, `ny < 2`, an empty or non-finite range,
-/// or options out of range; the errors of [`steady_motion_near`] at the
+/// or options out of range; [`RouthError::InvalidOption`] naming `max_curve_points` when a
+/// boundary curve needs more than [`AtlasOptions::max_curve_points`] points (the reason gives
+/// the `(x, y)` and γ where the budget ran out); the errors of [`steady_motion_near`] at the
 /// corner; a non-finite `p_ψ` from the family, or a failure of [`classify_with`] at a node where
 /// the motion was found — these are wrapped as
 /// `AtParameter { s: x, source: AtParameter { s: y, source } }`.
@@ -285,7 +287,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     // The rows, each from its first node in a fixed order.
     let rows = rows(&ctx, &xs, &ys, &column)?;
 
-    let boundaries = ctx.boundaries(&xs, &ys, &rows);
+    let boundaries = ctx.boundaries(&xs, &ys, &rows)?;
     let verdicts = rows
         .iter()
         .map(|r| {

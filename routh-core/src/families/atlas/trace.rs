@@ -9,6 +9,7 @@ use super::curve::{fold_indicator, null_tangent, CurvePoint, Test};
 use super::edge::Seed;
 use super::grid::Node;
 use super::Ctx;
+use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::sphere::tangent_basis;
 
@@ -38,14 +39,18 @@ pub(super) fn segment_distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f
 }
 
 impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
-    /// after the start, and whether it closed.
+    /// Follows a curve from `start` along `t0` (in the chart around `start.gamma`), with at most
+    /// `budget` points: the points after the start, and whether it closed.
+    ///
+    /// Errors: [`RouthError::InvalidOption`] naming `max_curve_points` when the budget is spent
+    /// before the curve leaves the rectangle, closes or ends.
     pub(super) fn trace(
         &self,
         test0: Test,
         start: CurvePoint,
         t0: Vector4<f64>,
         budget: usize,
-    ) -> (Vec<(CurvePoint, f64)>, bool) {
+    ) -> Result<(Vec<(CurvePoint, f64)>, bool), RouthError> {
         let h_max = self.opts.curve_step * std::f64::consts::SQRT_2;
         let h_min = CURVE_MIN_STEP * h_max;
         let mut test = test0;
@@ -55,7 +60,21 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         let mut h = h_max;
         let mut travelled = 0.0;
         let inside = |u: f64, v: f64| (0.0..=1.0).contains(&u) && (0.0..=1.0).contains(&v);
-        while pts.len() < budget {
+        loop {
+            if pts.len() >= budget {
+                let (x, y) = self.unscale(cur.u, cur.v);
+                let (x0, y0) = self.unscale(start.u, start.v);
+                let g = cur.gamma;
+                return Err(RouthError::InvalidOption {
+                    what: "max_curve_points",
+                    reason: format!(
+                        "the budget of {} points per boundary curve ran out at (x, y) = ({x}, \
+                         {y}), γ = ({:+.9}, {:+.9}, {:+.9}), on the curve through ({x0}, {y0}), \
+                         before it left the rectangle, closed or ended; raise it",
+                        self.opts.max_curve_points, g.x, g.y, g.z
+                    ),
+                });
+            }
             let basis = tangent_basis(&cur.gamma);
             let w = Vector4::new(0.0, 0.0, cur.u, cur.v);
             let pred = w + t * h;
@@ -74,7 +93,8 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             let Some((wc, e, it, tn)) = accepted else {
                 h /= 2.0;
                 if h < h_min {
-                    break;
+                    // A cusp, a crossing or the end of the motion: the curve ends here.
+                    return Ok((pts, false));
                 }
                 continue;
             };
@@ -113,7 +133,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                         }
                     }
                 }
-                return (pts, false);
+                return Ok((pts, false));
             }
             // Accept; move the chart to the new point and carry the tangent over.
             let xi = Vector2::new(wc[0], wc[1]);
@@ -139,19 +159,20 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             if travelled > 4.0 * h_max && back < h && (cur.gamma - start.gamma).norm() < 0.1 {
                 let beta = pts[0].1;
                 pts.push((start, beta));
-                return (pts, true);
+                return Ok((pts, true));
             }
         }
-        (pts, false)
     }
 
     /// All boundary curves from the grid.
+    ///
+    /// Errors: those of [`Ctx::trace`].
     pub(super) fn boundaries(
         &self,
         xs: &[f64],
         ys: &[f64],
         rows: &[Vec<Option<Node>>],
-    ) -> Vec<BoundaryCurve> {
+    ) -> Result<Vec<BoundaryCurve>, RouthError> {
         let (nx, ny) = (xs.len(), ys.len());
         let mut edges = Vec::new();
         for j in 0..ny {
@@ -224,11 +245,11 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 let Some(t0) = null_tangent(&e.jac, &r) else {
                     continue;
                 };
-                let (fwd, closed) = self.trace(test, start, t0, budget - 1);
+                let (fwd, closed) = self.trace(test, start, t0, budget - 1)?;
                 let back = if closed {
                     Vec::new()
                 } else {
-                    self.trace(test, start, -t0, budget - 1 - fwd.len()).0
+                    self.trace(test, start, -t0, budget - 1 - fwd.len())?.0
                 };
                 let mut all: Vec<(CurvePoint, f64)> = back.into_iter().rev().collect();
                 all.push((start, fold_indicator(&e)));
@@ -238,7 +259,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 curves.push((hopf, pts, folds));
             }
         }
-        curves
+        Ok(curves
             .into_iter()
             .map(|(hopf, pts, folds)| {
                 let kind = if hopf {
@@ -253,6 +274,6 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                     points: pts.iter().map(|&(u, v)| self.unscale(u, v)).collect(),
                 }
             })
-            .collect()
+            .collect())
     }
 }

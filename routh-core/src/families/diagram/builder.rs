@@ -19,10 +19,30 @@ pub(super) struct Switch {
     pub(super) isolated: bool,
 }
 
+/// One direction of a branch, as [`Builder::trace`] followed it.
 pub(super) struct Traced {
     pub(super) nodes: Vec<Node>,
     pub(super) events: Vec<(EventKind, Node, Stability, Stability)>,
     pub(super) switches: Vec<Switch>,
+    /// Continuation steps spent (out of [`ContinuationOptions::max_steps`]).
+    pub(super) steps: usize,
+}
+
+/// Why [`Builder::start_branch`] started no branch at a steady motion.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum NotStarted {
+    /// The corrector at fixed `s` did not converge; the smallest relative residual it reached.
+    Corrector(f64),
+    /// The Jacobian `[K | F_s]` has rank below 2 there: a bifurcation point, with no tangent.
+    Singular,
+    /// `K` has a zero eigenvalue at an isolated steady motion (a fold or a branch point), or
+    /// none at a point of a circle.
+    Degenerate,
+}
+
+/// `(γ₁, γ₂, γ₃)` for messages.
+pub(super) fn show(g: &Vector3<f64>) -> String {
+    format!("({:+.9}, {:+.9}, {:+.9})", g.x, g.y, g.z)
 }
 
 pub(super) struct Builder<'a, M, F> {
@@ -67,6 +87,8 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         let motions = steady_motions_with(&m, p, &self.opts.search).map_err(|e| at(s, e))?;
         for sm in motions {
             if !self.covered(s, &sm.gamma, sm.isolated)? {
+                // A seed that starts no branch (a bifurcation point hit by the seed value) is
+                // not an error: the branches through it are found from their regular points.
                 self.start_branch(sm.gamma, s, sm.isolated)?;
             }
         }
@@ -80,16 +102,14 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         Ok(if sc > 0.0 { sc } else { 1.0 })
     }
 
-    /// Starts a branch at the steady motion `(gamma, s)` and follows it both ways.
+    /// Starts a branch at the steady motion `(gamma, s)` and follows it both ways; `Ok(Some(_))`
+    /// (and nothing recorded) when the point is not a regular point of a branch.
     pub(super) fn start_branch(
         &mut self,
         gamma: Vector3<f64>,
         s: f64,
         isolated: bool,
-    ) -> Result<(), RouthError> {
-        if self.branches.len() >= self.opts.max_branches {
-            return Ok(());
-        }
+    ) -> Result<Option<NotStarted>, RouthError> {
         let ctx = self.ctx(isolated, self.scale_at(&gamma, s)?);
         let con = Constraint {
             a_g: Vector3::zeros(),
@@ -99,24 +119,40 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             c: 0.0,
         };
         let Some((g, s1, it)) = ctx.correct(&gamma, s / ctx.len, &con, None)? else {
-            return Ok(());
+            return Ok(Some(NotStarted::Corrector(ctx.failed_residual.get())));
         };
         let Some(start) = ctx.node(&g, s1, None, it)? else {
-            return Ok(());
+            return Ok(Some(NotStarted::Singular));
         };
-        // A seed at a degenerate point (a bifurcation point hit by a seed value) is not a
-        // regular point of an isolated branch, and a circle needs its zero eigenvalue: the
-        // branches through such a seed are found from their regular points.
+        // A degenerate point is not a regular point of an isolated branch, and a circle needs
+        // its zero eigenvalue.
         let zero = start.eig.iter().any(|e| e.abs() <= 1e-6);
         if isolated == zero {
-            return Ok(());
+            return Ok(Some(NotStarted::Degenerate));
         }
-        self.follow(&ctx, start)
+        self.follow(&ctx, start)?;
+        Ok(None)
     }
 
     /// Follows the branch through `start` both ways and records it.
+    ///
+    /// Errors: [`RouthError::InvalidOption`] naming `max_branches` when the budget of branches
+    /// is spent, and the errors of [`Builder::trace`] (the budget of steps, a branch that cannot
+    /// be continued).
     pub(super) fn follow(&mut self, ctx: &Ctx<'a, M, F>, start: Node) -> Result<(), RouthError> {
-        let fwd = self.trace(ctx, start.clone())?;
+        if self.branches.len() >= self.opts.max_branches {
+            return Err(RouthError::InvalidOption {
+                what: "max_branches",
+                reason: format!(
+                    "the budget of {} branches is spent and a further branch starts at s = {}, \
+                     γ = {}; raise it",
+                    self.opts.max_branches,
+                    start.s,
+                    show(&start.gamma)
+                ),
+            });
+        }
+        let fwd = self.trace(ctx, start.clone(), self.opts.max_steps)?;
         let mut back_start = start.clone();
         back_start.tau_g = -back_start.tau_g;
         back_start.tau_s = -back_start.tau_s;
@@ -128,9 +164,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 nodes: vec![back_start],
                 events: Vec::new(),
                 switches: Vec::new(),
+                steps: 0,
             }
         } else {
-            self.trace(ctx, back_start)?
+            self.trace(ctx, back_start, self.opts.max_steps - fwd.steps)?
         };
         let index = self.branches.len();
         let mut nodes: Vec<Node> = back.nodes.into_iter().skip(1).rev().collect();

@@ -13,7 +13,8 @@ use crate::families::equations::{at, member};
 use crate::model::Routhian;
 use crate::steady::steady_motion_near;
 use crate::validate::check_finite;
-use builder::Builder;
+use crate::families::continuation::CORRECTOR_MAX_ITER;
+use builder::{show, Builder, NotStarted};
 
 /// One comparison of [`bifurcation_diagram_checked`]: the number of steady motions that the
 /// branches give at `s` against the number that [`steady_motions`](crate::steady_motions) finds.
@@ -70,7 +71,7 @@ impl CheckedDiagram {
 
 /// Every branch of steady motions of `family` over `range`, with its events (the contract of
 /// the [`families`](super) module). Branches are seeded by global searches
-/// ([`steady_motions_with`](crate::steady::steady_motions_with)) at [`ContinuationOptions::seeds`] values of `s`, followed by
+/// ([`steady_motions_with`]) at [`ContinuationOptions::seeds`] values of `s`, followed by
 /// pseudo-arclength continuation through folds, and switched at branch points (a pitchfork, or
 /// the birth of a circle of steady motions of a symmetric body, which becomes a branch with
 /// `isolated: false`). Events are located by solving their defining equation to
@@ -78,9 +79,23 @@ impl CheckedDiagram {
 /// branches is compared with a global search, and missing branches are seeded there
 /// ([`bifurcation_diagram_checked`] returns the comparisons).
 ///
-/// Errors: [`RouthError::InvalidOption`] for an empty or non-finite range or invalid options;
-/// [`RouthError::AtParameter`] when the family returns an invalid model (e.g. `J` not positive
-/// definite) or a non-finite `p_ψ` at some `s`.
+/// A branch ends only where it leaves the range (exactly on its end), where it closes, or where a
+/// branch of circles reaches its axis. Anything else is an error, never a silently shortened
+/// diagram:
+///
+/// - [`RouthError::InvalidOption`] for an empty or non-finite range or invalid options;
+/// - [`RouthError::InvalidOption`] naming `max_steps` when a branch needs more than
+///   [`ContinuationOptions::max_steps`] steps, or `max_branches` when there are more than
+///   [`ContinuationOptions::max_branches`] branches; the reason gives `s` and γ where the budget
+///   ran out (and the branch, by a point of it);
+/// - [`RouthError::AtParameter`] at the last `s` reached, wrapping [`RouthError::NoConvergence`],
+///   when the corrector fails for every step down to [`ContinuationOptions::min_step`] (the
+///   branch cannot be continued: the family is not smooth there, or the branch runs into a
+///   singularity that is none of the events of [`EventKind`](super::EventKind));
+/// - [`RouthError::AtParameter`] when the family returns an invalid model (e.g. `J` not positive
+///   definite) or a non-finite `p_ψ` at some `s`.
+///
+/// [`steady_motions_with`]: crate::steady::steady_motions_with
 ///
 /// ```
 /// use routh_core::{bifurcation_diagram, ContinuationOptions, EventKind};
@@ -162,8 +177,15 @@ pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
 /// sphere from the guess), followed over `range` in both directions, with the branches that
 /// split off it at its branch points.
 ///
-/// Errors: as [`bifurcation_diagram`], plus [`RouthError::NoConvergence`] when no steady motion
-/// is found from the guess and [`RouthError::InvalidOption`] when `s0` is outside the range.
+/// Errors: as [`bifurcation_diagram`], plus
+/// - the errors of [`steady_motion_near`] at `s0` (e.g. [`RouthError::NoConvergence`] when
+///   Newton's method does not converge from the guess), wrapped in
+///   [`RouthError::AtParameter`] with `s: s0`;
+/// - [`RouthError::InvalidOption`] naming `s0` when it is outside the range, or when the steady
+///   motion found there is not a regular point of a branch (a fold or a branch point at `s0`:
+///   a zero eigenvalue of the restricted second variation, or no tangent);
+/// - [`RouthError::AtParameter`] wrapping [`RouthError::NoConvergence`] when the corrector at
+///   `s0` does not converge from it.
 ///
 /// ```
 /// use routh_core::{continue_branch, ContinuationOptions, Vector3};
@@ -201,7 +223,41 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
     let (m, p) = member(&family, s0)?;
     let steady = steady_motion_near(&m, gamma_guess, p).map_err(|e| at(s0, e))?;
     let mut b = Builder::new(&family, range, opts);
-    b.start_branch(steady.gamma, s0, steady.isolated)?;
+    let not_regular = |why: &str| RouthError::InvalidOption {
+        what: "s0",
+        reason: format!(
+            "the steady motion found from gamma_guess at s0 = {s0}, γ = {}, {why}; start at a \
+             regular point of the branch (another s0)",
+            show(&steady.gamma)
+        ),
+    };
+    match b.start_branch(steady.gamma, s0, steady.isolated)? {
+        None => {}
+        Some(NotStarted::Corrector(residual)) => {
+            return Err(at(
+                s0,
+                RouthError::NoConvergence {
+                    what: "continue_branch: the corrector at s0 from the steady motion found",
+                    iterations: CORRECTOR_MAX_ITER,
+                    residual,
+                },
+            ))
+        }
+        Some(NotStarted::Singular) => {
+            return Err(not_regular(
+                "is a bifurcation point (the Jacobian [K | F_s] has rank below 2: no tangent)",
+            ))
+        }
+        Some(NotStarted::Degenerate) => {
+            return Err(not_regular(if steady.isolated {
+                "is degenerate (a zero eigenvalue of the restricted second variation: a fold or \
+                 a branch point)"
+            } else {
+                "lies on a circle of steady motions whose restricted second variation has no \
+                 zero eigenvalue"
+            }))
+        }
+    }
     b.switch_all()?;
     Ok(b.finish())
 }

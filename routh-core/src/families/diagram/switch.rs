@@ -4,7 +4,7 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::builder::Builder;
+use super::builder::{show, Builder};
 use crate::error::RouthError;
 use crate::families::continuation::{Constraint, Node};
 use crate::model::Routhian;
@@ -12,14 +12,27 @@ use crate::sphere::tangent_basis;
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// Starts the branches that leave the branch points found so far.
+    ///
+    /// Errors: [`RouthError::InvalidOption`] naming `max_branches` when more than
+    /// `4·max_branches` branch points are met (each can start up to two branches), and the
+    /// errors of [`Builder::follow`].
     pub(super) fn switch_all(&mut self) -> Result<(), RouthError> {
         let mut rounds = 0;
         while let Some(sw) = self.pending.pop() {
             rounds += 1;
-            if rounds > 4 * self.opts.max_branches {
-                break;
-            }
             let n = &sw.node;
+            if rounds > 4 * self.opts.max_branches {
+                return Err(RouthError::InvalidOption {
+                    what: "max_branches",
+                    reason: format!(
+                        "more than 4·max_branches = {} branch points to switch at, the next at \
+                         s = {}, γ = {}; raise it",
+                        4 * self.opts.max_branches,
+                        n.s,
+                        show(&n.gamma)
+                    ),
+                });
+            }
             if self
                 .done_switches
                 .iter()
@@ -74,9 +87,6 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         eps: f64,
         isolated: bool,
     ) -> Result<(), RouthError> {
-        if self.branches.len() >= self.opts.max_branches {
-            return Ok(());
-        }
         let scale = self.scale_at(&n.gamma, n.s)?;
         let ctx = self.ctx(isolated, scale);
         let len = ctx.len;

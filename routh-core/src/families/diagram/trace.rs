@@ -1,31 +1,71 @@
 //! One direction of one branch: predictor–corrector steps with step control, the events on
 //! each step located by their defining equations, and the ends of the branch.
 
-use super::builder::{dist, Builder, Switch, Traced};
+use super::builder::{dist, show, Builder, Switch, Traced};
 use crate::error::RouthError;
 use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
 use crate::families::EventKind;
 use crate::model::Routhian;
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
-    /// Follows one direction from `start` until the range ends, the branch closes, meets another
-    /// branch (a branch of circles reaching its axis) or the budget is spent.
-    pub(super) fn trace(&self, ctx: &Ctx<'a, M, F>, start: Node) -> Result<Traced, RouthError> {
+    /// Follows one direction from `start`, with at most `budget` steps, until the branch leaves
+    /// the range (it then ends exactly on the range's end), closes, or meets another branch (a
+    /// branch of circles reaching its axis).
+    ///
+    /// Errors (each names the branch by its start and where it stopped):
+    /// - [`RouthError::InvalidOption`] naming `max_steps` when the budget is spent first;
+    /// - [`RouthError::AtParameter`] at the last point reached, wrapping
+    ///   [`RouthError::NoConvergence`], when the corrector fails for every step down to
+    ///   [`ContinuationOptions::min_step`](crate::ContinuationOptions::min_step) (the branch
+    ///   cannot be continued there: the family is not smooth, or the branch ends in a
+    ///   singularity that is not an event of the module);
+    /// - the errors of the family and the model along the way.
+    pub(super) fn trace(
+        &self,
+        ctx: &Ctx<'a, M, F>,
+        start: Node,
+        budget: usize,
+    ) -> Result<Traced, RouthError> {
         let opts = self.opts;
+        let (lo, hi) = self.range;
         let mut out = Traced {
             nodes: vec![start.clone()],
             events: Vec::new(),
             switches: Vec::new(),
+            steps: 0,
         };
         let mut h = opts.initial_step;
-        let mut steps = 0;
-        while steps < opts.max_steps {
-            steps += 1;
+        loop {
             let a = out.nodes.last().unwrap().clone();
+            if out.steps >= budget {
+                return Err(RouthError::InvalidOption {
+                    what: "max_steps",
+                    reason: format!(
+                        "the budget of {} continuation steps per branch ran out at s = {}, \
+                         γ = {}, on the branch through s = {}, γ = {}, before it left the range \
+                         [{lo}, {hi}], closed or met another branch; raise it",
+                        opts.max_steps,
+                        a.s,
+                        show(&a.gamma),
+                        start.s,
+                        show(&start.gamma),
+                    ),
+                });
+            }
+            out.steps += 1;
             let Some(b) = ctx.advance(&a, h)? else {
                 h *= 0.5;
                 if h < opts.min_step {
-                    break;
+                    return Err(RouthError::AtParameter {
+                        s: a.s,
+                        source: Box::new(RouthError::NoConvergence {
+                            what: "continuation of a branch: the corrector fails for every step \
+                                   down to ContinuationOptions::min_step (the branch cannot be \
+                                   continued from here)",
+                            iterations: out.steps,
+                            residual: ctx.failed_residual.get(),
+                        }),
+                    });
                 }
                 continue;
             };
@@ -44,7 +84,6 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 continue;
             }
             // Leaving the range: end exactly on its boundary.
-            let (lo, hi) = self.range;
             if b.s < lo || b.s > hi {
                 let bound = if b.s < lo { lo } else { hi };
                 if let Some(e) = ctx.at_parameter(&a, &b, bound)? {
