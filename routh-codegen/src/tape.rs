@@ -49,8 +49,7 @@ pub fn tape(sym: &Symbols, gradient: &[Id; 3], hessian: &[[Id; 3]; 3]) -> (Strin
     let mut slot = vec![usize::MAX; top + 1];
     let mut text = String::new();
     let mut params = Vec::new();
-    let mut next = 0usize;
-    for i in (0..=top).filter(|&i| needed[i]) {
+    for (next, i) in (0..=top).filter(|&i| needed[i]).enumerate() {
         let s = |id: Id| slot[id.index()];
         match g.node(Id::from_index(i)) {
             Node::Const(bits) => {
@@ -98,7 +97,6 @@ pub fn tape(sym: &Symbols, gradient: &[Id; 3], hessian: &[[Id; 3]; 3]) -> (Strin
         }
         text.push(';');
         slot[i] = next;
-        next += 1;
     }
     text.push('o');
     for o in &outputs {

@@ -355,6 +355,8 @@ impl Mul for Interval {
 
 impl std::ops::Div for Interval {
     type Output = Interval;
+    // x / y = x · (1/y): both enclose, so the product encloses the quotient.
+    #[allow(clippy::suspicious_arithmetic_impl)]
     fn div(self, o: Interval) -> Interval {
         self * o.recip()
     }

@@ -515,11 +515,11 @@ pub fn steady_motions_certified<M: Routhian>(
         }
     }
     let mut motions = Vec::new();
-    for i in 0..found.len() {
+    for (i, f) in found.iter().enumerate() {
         if find(&mut parent, i) != i {
             continue;
         }
-        let g = &found[i].gamma;
+        let g = &f.gamma;
         let centre = Vector3::new(g[0].mid(), g[1].mid(), g[2].mid()).normalize();
         motions.push(CertifiedMotion {
             enclosure: *g,
@@ -588,19 +588,16 @@ fn regions(boxes: &[ChartBox]) -> Vec<UndecidedRegion> {
     }
     let mut out: Vec<UndecidedRegion> = Vec::new();
     let mut index = vec![usize::MAX; hulls.len()];
-    for i in 0..hulls.len() {
+    for (i, h) in hulls.iter().enumerate() {
         let r = find(&mut parent, i);
         if index[r] == usize::MAX {
             index[r] = out.len();
-            out.push(UndecidedRegion {
-                hull: hulls[i],
-                boxes: 0,
-            });
+            out.push(UndecidedRegion { hull: *h, boxes: 0 });
         }
         let reg = &mut out[index[r]];
         reg.boxes += 1;
-        for k in 0..3 {
-            reg.hull[k] = reg.hull[k].hull(hulls[i][k]);
+        for (acc, x) in reg.hull.iter_mut().zip(h) {
+            *acc = acc.hull(*x);
         }
     }
     out
