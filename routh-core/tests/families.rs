@@ -9,12 +9,14 @@ mod common;
 use common::HeavyTop;
 use routh_core::families::bifurcation_diagram_checked;
 use routh_core::nalgebra::{Matrix4, Vector6};
+use routh_core::stability::classify_with_krein;
 use routh_core::{
-    bifurcation_diagram, continue_branch, BifurcationDiagram, ContinuationOptions, EventKind,
-    Matrix3, RouthError, Stability, Vector3,
+    bifurcation_diagram, continue_branch, steady_motions, BifurcationDiagram, ClassifyOptions,
+    ContinuationOptions, EventKind, Matrix3, RouthError, Stability, Vector3,
 };
 use test_models::jacobian::fd_jacobian;
 use test_models::roots::bracketed_roots;
+use test_models::Gyrostat;
 
 fn asymmetric(a: f64, b: f64, c: f64, mgl: f64) -> HeavyTop {
     HeavyTop {
@@ -163,20 +165,23 @@ fn asymmetric_top_branch_points_and_fold() {
     assert!(checked.consistent(), "{:#?}", checked.checks);
 }
 
-/// f₂ of the sleeping asymmetric top by hand: the linearised Euler–Poisson equations about
-/// ω = (0, 0, r), γ = e₃ (r = p/C) in (ω₁, ω₂, γ₁, γ₂) are
-/// Aω̇₁ = (B − C)rω₂ + mgl γ₂, Bω̇₂ = (C − A)rω₁ − mgl γ₁, γ̇₁ = rγ₂ − ω₂, γ̇₂ = ω₁ − rγ₁.
-/// Its characteristic polynomial is an even quartic; its coefficients come from evaluating the
+/// f₂ = c₄λ⁴ + c₂λ² + c₀ of a sleeping gyrostat by hand: a body J = diag(A, B, C) with a rotor of
+/// momentum κe₃ and its centre of mass on e₃ (U = mgl·γ₃), at γ = e₃, ω = (0, 0, r), so
+/// p_ψ = Cr + κ. Linearising Euler's (Jω + κe₃)˙ = (Jω + κe₃) × ω + ∂L/∂γ × γ and Poisson's
+/// γ̇ = γ × ω in (ω₁, ω₂, γ₁, γ₂):
+/// Aω̇₁ = (Br − p)ω₂ + mgl γ₂, Bω̇₂ = (p − Ar)ω₁ − mgl γ₁, γ̇₁ = rγ₂ − ω₂, γ̇₂ = ω₁ − rγ₁
+/// (κ = 0 is the heavy top: Br − p = (B − C)r, p − Ar = (C − A)r). The characteristic polynomial
+/// (rows scaled by A and B) is an even quartic; its coefficients come from evaluating the
 /// determinant at λ = 0, 1, 2 (even: c₀ + c₂λ² + c₄λ⁴).
-fn sleeping_discriminant(a: f64, b: f64, c: f64, mgl: f64, p: f64) -> f64 {
-    let r = p / c;
+fn sleeping_f2(a: f64, b: f64, c: f64, kappa: f64, mgl: f64, p: f64) -> [f64; 3] {
+    let r = (p - kappa) / c;
     let det = |l: f64| {
         Matrix4::new(
             a * l,
-            -(b - c) * r,
+            -(b * r - p),
             0.0,
             -mgl, //
-            -(c - a) * r,
+            -(p - a * r),
             b * l,
             mgl,
             0.0, //
@@ -194,6 +199,12 @@ fn sleeping_discriminant(a: f64, b: f64, c: f64, mgl: f64, p: f64) -> f64 {
     let c0 = det(0.0);
     let c4 = (det(2.0) - 4.0 * det(1.0) + 3.0 * c0) / 12.0;
     let c2 = det(1.0) - c0 - c4;
+    [c4, c2, c0]
+}
+
+/// The discriminant c₂² − 4c₄c₀ of f₂ of the sleeping asymmetric top (no rotor).
+fn sleeping_discriminant(a: f64, b: f64, c: f64, mgl: f64, p: f64) -> f64 {
+    let [c4, c2, c0] = sleeping_f2(a, b, c, 0.0, mgl, p);
     c2 * c2 - 4.0 * c4 * c0
 }
 
@@ -476,5 +487,211 @@ fn budgets_and_unreachable_branches_are_errors_that_say_where() {
     match continue_branch(nan_at_one, Vector3::z(), 1.0, (0.0, 5.0), &default) {
         Err(RouthError::AtParameter { s, .. }) => assert_eq!(s, 1.0),
         other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn roots_of_equal_krein_signature_cross_without_an_event() {
+    // A symmetric gyrostat A = B = 1, C = 3/2 with a rotor κ = 1/2 on its axis, hanging (centre
+    // of mass on −e₃: mgl = −1), over p_ψ ∈ [1, 3]. At γ = e₃, ω = re₃ (r = (p − κ)/C) the
+    // linearisation of `sleeping_f2` in z = ω₁ + iω₂, ζ = γ₁ + iγ₂ is Aż = i(p − Ar)z − i·mgl·ζ,
+    // ζ̇ = −irζ + iz; with z, ζ ∝ e^{iωt}, z = (ω + r)ζ and ν = ω + r solves Aν² − pν + mgl = 0.
+    // The roots of f₂ are ±iω_a, ±iω_b with ω_a = ν₊ − r, ω_b = r − ν₋ (both positive here), and
+    // ω_a − ω_b = p/A − 2r is linear in p: the frequencies cross at p* = 2Aκ/(2A − C) = 2.
+    // U_r(c) = ½(p − κc)²/(A + (C − A)c²) + mgl·c in c = γ₃ has at the pole
+    // K = −U_r′(1)·E = [κ(p − κ)/C + (p − κ)²(C − A)/C² − mgl]·E > 0: degree of instability 0, so
+    // every mode carries positive energy (one Krein signature), and the crossing is harmless.
+    let (a, c, kappa, mgl) = (1.0, 1.5, 0.5, -1.0);
+    let body = Gyrostat::new(
+        Matrix3::from_diagonal(&Vector3::new(a, a, c)),
+        Vector3::new(0.0, 0.0, kappa),
+        Matrix3::zeros(),
+        Vector3::new(0.0, 0.0, mgl),
+        1.0,
+        1.0,
+    );
+    let p_star = 2.0 * a * kappa / (2.0 * a - c);
+    let closed = |p: f64| {
+        let r = (p - kappa) / c;
+        let root = (p * p - 4.0 * a * mgl).sqrt();
+        ((p + root) / (2.0 * a) - r, r - (p - root) / (2.0 * a))
+    };
+    // The frequencies from the hand-written quartic, (slow, fast).
+    let quartic = |p: f64| {
+        let [c4, c2, c0] = sleeping_f2(a, a, c, kappa, mgl, p);
+        assert!(c4 > 0.0 && c2 > 0.0 && c0 > 0.0, "p = {p}: {c4} {c2} {c0}");
+        let d = c2 * c2 - 4.0 * c4 * c0;
+        assert!(d >= -1e-12 * c2 * c2, "p = {p}: a complex pair");
+        let sq = d.max(0.0).sqrt();
+        (
+            ((c2 - sq) / (2.0 * c4)).sqrt(),
+            ((c2 + sq) / (2.0 * c4)).sqrt(),
+        )
+    };
+    // Independently of routh: the closed form is the quartic's, and its branches cross at p*
+    // (ω_a − ω_b changes sign there once), where the quartic has a double pair.
+    for k in 0..=20 {
+        let p = 1.0 + 0.1 * k as f64;
+        let (slow, fast) = quartic(p);
+        let (wa, wb) = closed(p);
+        assert!(
+            (slow - wa.min(wb)).abs() <= 1e-12 * fast && (fast - wa.max(wb)).abs() <= 1e-12 * fast,
+            "p = {p}: quartic ({slow}, {fast}), closed form ({wa}, {wb})"
+        );
+    }
+    let grid: Vec<f64> = (0..=20).map(|k| 1.0 + 0.1 * k as f64 + 0.013).collect();
+    let crossings = bracketed_roots(|p| closed(p).0 - closed(p).1, &grid, 0.0);
+    assert_eq!(crossings.len(), 1);
+    assert!((crossings[0] - p_star).abs() <= 1e-12, "{crossings:?}");
+    let [c4, c2, c0] = sleeping_f2(a, a, c, kappa, mgl, p_star);
+    assert!((c2 * c2 - 4.0 * c4 * c0).abs() <= 1e-12 * c2 * c2);
+
+    let d = bifurcation_diagram(
+        |p| (body.clone(), p),
+        (1.0, 3.0),
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
+    let hanging = d
+        .branches
+        .iter()
+        .position(|b| {
+            b.isolated
+                && b.points
+                    .iter()
+                    .all(|q| (q.steady.gamma - Vector3::z()).norm() < 1e-9)
+        })
+        .expect("the hanging gyrostat is a branch");
+    let branch = &d.branches[hanging];
+    let s: Vec<f64> = branch.points.iter().map(|q| q.s).collect();
+    assert!(s.contains(&1.0) && s.contains(&3.0), "{s:?}");
+    // No event on it, in particular no Hamiltonian–Hopf point at p*.
+    assert!(
+        d.events
+            .iter()
+            .all(|e| e.branch != hanging && (e.gamma - Vector3::z()).norm() > 1e-6),
+        "{:#?}",
+        d.events
+    );
+    for q in &branch.points {
+        assert_eq!(q.report.verdict, Stability::SecularlyStable, "p = {}", q.s);
+        let k = kappa * (q.s - kappa) / c + (q.s - kappa).powi(2) * (c - a) / (c * c) - mgl;
+        for e in q.report.restricted_hessian_eigenvalues {
+            assert!(
+                (e - k).abs() <= 1e-9 * k,
+                "p = {}: K = {e}, closed form {k}",
+                q.s
+            );
+        }
+    }
+    // The points next to p* on either side: the frequencies are the hand-written ones, in the
+    // opposite order of the branches ω_a, ω_b, and all four roots have one Krein signature.
+    let below = branch
+        .points
+        .iter()
+        .filter(|q| q.s < p_star)
+        .max_by(|x, y| x.s.total_cmp(&y.s))
+        .unwrap();
+    let above = branch
+        .points
+        .iter()
+        .filter(|q| q.s > p_star)
+        .min_by(|x, y| x.s.total_cmp(&y.s))
+        .unwrap();
+    let gap = |p: f64| closed(p).0 - closed(p).1;
+    assert!(gap(below.s) * gap(above.s) < 0.0);
+    for q in [below, above] {
+        let kr = classify_with_krein(&body, &q.steady, &ClassifyOptions::default()).unwrap();
+        let (slow, fast) = quartic(q.s);
+        let mut w: Vec<f64> = kr.report.f2_roots.iter().map(|r| r.im.abs()).collect();
+        w.sort_by(f64::total_cmp);
+        for (x, y) in w.iter().zip([slow, slow, fast, fast]) {
+            assert!(
+                (x - y).abs() <= 1e-9 * fast,
+                "p = {}: {w:?} vs ({slow}, {fast})",
+                q.s
+            );
+        }
+        assert!(kr.report.f2_roots.iter().all(|r| r.re == 0.0), "{kr}");
+        assert!(kr.krein_signatures.iter().all(|&k| k == 1), "{kr}");
+    }
+}
+
+/// The number of tilted steady motions in the plane spanned by e₁ and e₃ of a top J = diag(A, ·, C)
+/// with U = mgl·γ₃ (C > A, mgl > 0), at p: the c = γ₃ ∈ (−1, 1) with
+/// p²(C − A)c = mgl(A + (C − A)c²)² (`plane_fold`). With D = C − A only c > 0 can solve it, where
+/// it reads φ(c) = p²D/mgl for φ(c) = (A + Dc²)²/c. φ → ∞ as c → 0, φ(1) = C², and
+/// φ′(c) = (A + Dc²)(3Dc² − A)/c², so φ decreases to its minimum at c_m² = A/(3D) if c_m < 1 (then
+/// two solutions for φ(c_m) < p²D/mgl < C², one above C², none below φ(c_m)); else φ decreases
+/// on (0, 1] (one solution above C², none below).
+fn plane_solutions(a: f64, c: f64, mgl: f64, p: f64) -> usize {
+    assert!(c > a && mgl > 0.0);
+    let d = c - a;
+    let level = p * p * d / mgl;
+    let phi = |z: f64| (a + d * z * z).powi(2) / z;
+    let cm = (a / (3.0 * d)).sqrt();
+    if level > c * c {
+        1
+    } else if cm < 1.0 && level > phi(cm) {
+        2
+    } else {
+        0
+    }
+}
+
+#[test]
+fn counts_between_events_match_the_search_and_the_closed_form() {
+    // The steady motions of a top J = diag(A, B, C), centre of mass on e₃, at p_ψ = p: the
+    // critical points of U_r = ½p²/(γᵀJγ) + mgl·γ₃ on the sphere, ∇U_r = −p²Jγ/(γᵀJγ)² + mgl·e₃
+    // parallel to γ. The components 1 and 2 give (−p²A/(γᵀJγ)² − μ)γ₁ = 0 and
+    // (−p²B/(γᵀJγ)² − μ)γ₂ = 0: for A ≠ B, γ₁ = 0 or γ₂ = 0 — the poles ±e₃, and the tilted
+    // motions in the planes (e₁, e₃) and (e₂, e₃), two mirror images per solution of
+    // `plane_solutions`. For A = B (the Lagrange top) each solution is a circle, which the
+    // diagram and the search count once: 2 + N(A) motions, and 2 + 2N(A) + 2N(B) for A ≠ B.
+    let opts = ContinuationOptions {
+        verify_counts: false, // the diagram is not repaired by its own count check
+        ..ContinuationOptions::default()
+    };
+    for (what, (a, b, c, mgl), hi) in [
+        ("Lagrange top", (1.0, 1.0, 1.25, 1.0), 5.0),
+        ("asymmetric top", (1.0, 1.2, 1.5, 1.0), 4.0),
+    ] {
+        let top = asymmetric(a, b, c, mgl);
+        let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, hi), &opts).unwrap();
+        let mut cuts: Vec<f64> = d.events.iter().map(|e| e.s).chain([0.0, hi]).collect();
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup_by(|x, y| (*x - *y).abs() <= 1e-9);
+        assert!(cuts.len() >= 4, "{what}: {:#?}", d.events);
+        for w in cuts.windows(2) {
+            let s = 0.5 * (w[0] + w[1]);
+            let on_diagram: usize = d
+                .branches
+                .iter()
+                .map(|br| {
+                    br.points
+                        .windows(2)
+                        .filter(|q| (q[0].s < s) != (q[1].s < s))
+                        .count()
+                })
+                .sum();
+            let searched = steady_motions(&top, s).unwrap();
+            let circles = searched.iter().filter(|m| !m.isolated).count();
+            let closed = if a == b {
+                2 + plane_solutions(a, c, mgl, s)
+            } else {
+                2 + 2 * plane_solutions(a, c, mgl, s) + 2 * plane_solutions(b, c, mgl, s)
+            };
+            println!(
+                "{what}, p = {s:.6}: {on_diagram} on the diagram, {} found ({circles} circles), \
+                 {closed} by the closed form",
+                searched.len()
+            );
+            assert_eq!(
+                (on_diagram, searched.len()),
+                (closed, closed),
+                "{what} at p = {s}: {:#?}",
+                d.events
+            );
+        }
     }
 }

@@ -9,11 +9,11 @@ use nalgebra::Vector3;
 
 use super::{BifurcationDiagram, ContinuationOptions};
 use crate::error::RouthError;
+use crate::families::continuation::CORRECTOR_MAX_ITER;
 use crate::families::equations::{at, member};
 use crate::model::Routhian;
 use crate::steady::steady_motion_near;
 use crate::validate::check_finite;
-use crate::families::continuation::CORRECTOR_MAX_ITER;
 use builder::{show, Builder, NotStarted};
 
 /// One comparison of [`bifurcation_diagram_checked`]: the number of steady motions that the
