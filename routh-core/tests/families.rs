@@ -1,8 +1,10 @@
 //! Families of steady motions (bifurcation diagrams) against closed forms and independent
 //! computations: Maievskii's and the secular bound of Lagrange tops, the branch points and the
 //! fold of the asymmetric top, the Hamiltonian–Hopf point of a prolate asymmetric top from a
-//! hand-derived f₂, counts of steady motions between events, and finite-difference Jacobian
-//! eigenvalues on each side of every event.
+//! hand-derived f₂, no event where two roots of f₂ of equal Krein signature cross (a hand-derived
+//! quartic of a gyrostat), counts of steady motions between events against the global search and
+//! the closed form, finite-difference Jacobian eigenvalues on each side of every event, and the
+//! errors: exhausted budgets and unreachable branches, which say where.
 
 mod common;
 
