@@ -1,4 +1,4 @@
-//! Units and symmetries of the simulation (issue 13): the same motion written in other units, in
+//! Units and symmetries of the simulation (docs/method.md §5, §6): the same motion written in other units, in
 //! a rotated body frame, or run backwards in time, must give the same trajectory and the same
 //! work, for the full equations (8) and for the reduced equations (13) in the gauge of E4.
 //!
@@ -200,7 +200,7 @@ fn options(s: f64) -> SimOptions {
 }
 
 /// `simulate_reduced` of the heavy top with inertia and potential scaled by k: the motion is the
-/// same, so is the work (issue 13 item 4: at k = 1e9 it used to stop with "too many steps").
+/// same, so is the work (at k = 1e9 an earlier version stopped with "too many steps").
 #[test]
 fn scaled_heavy_top_reduced_takes_the_same_steps() {
     let (w0, g0) = initial_state();
