@@ -1,4 +1,4 @@
-//! Runtime property tests : every public runtime function of routh-core is
+//! Runtime property tests: every public runtime function of routh-core is
 //! called on random models and random inputs, extreme values mixed in, and must
 //!
 //! - never panic (each call runs under `catch_unwind`),

@@ -1,4 +1,4 @@
-//! Units and symmetries of the simulation (docs/method.md §5, §6): the same motion written in other units, in
+//! Units and symmetries of the simulation (docs/method.md §2): the same motion written in other units, in
 //! a rotated body frame, or run backwards in time, must give the same trajectory and the same
 //! work, for the full equations (8) and for the reduced equations (13) in the gauge of E4.
 //!
