@@ -19,6 +19,35 @@ use nalgebra::SVector;
 use super::tableau::{A, B, BHH, C, D, ER};
 use crate::RouthError;
 
+/// The right-hand side `f(t, y)`. Closures implement it; the simulation's vector fields implement
+/// it with `#[inline(always)]`, so that the field is compiled into the stage loop and the stage
+/// values reach it in registers rather than through memory.
+pub(crate) trait Rhs<const N: usize> {
+    /// `f(t, y)`.
+    fn eval(&mut self, t: f64, y: &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>;
+}
+
+impl<const N: usize, F> Rhs<N> for F
+where
+    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+{
+    #[inline(always)]
+    fn eval(&mut self, t: f64, y: &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError> {
+        self(t, y)
+    }
+}
+
+/// `f.eval(t, y)` kept out of line, for the evaluations outside the step loop (the first one and
+/// the initial-step heuristic), so that the inlined field is compiled only where it is hot.
+#[inline(never)]
+fn eval_cold<const N: usize, F: Rhs<N>>(
+    f: &mut F,
+    t: f64,
+    y: &SVector<f64, N>,
+) -> Result<SVector<f64, N>, RouthError> {
+    f.eval(t, y)
+}
+
 /// Safety factor of the step-size controller.
 const SAFE: f64 = 0.9;
 /// Lower bound `h_new/h ≥ FAC1`.
@@ -94,6 +123,7 @@ pub(crate) struct Accepted<'a, const N: usize> {
     pub dense: Option<&'a DenseStep<N>>,
 }
 
+#[inline]
 fn all_finite<const N: usize>(v: &SVector<f64, N>) -> bool {
     v.iter().all(|x| x.is_finite())
 }
@@ -105,7 +135,57 @@ struct Trial<const N: usize> {
     err: f64,
 }
 
+/// `y + h·Σⱼ a_{I+1,j+1}·k[j]` over the non-zero coefficients of row `I`, accumulated in the
+/// order of j. With `I` a constant the loop is unrolled and the zero coefficients vanish at
+/// compile time (the stage values are the same, bit for bit, as those of a loop over the row).
+#[inline(always)]
+fn stage_input<const I: usize, const N: usize>(
+    y: &SVector<f64, N>,
+    k: &[SVector<f64, N>; 16],
+    h: f64,
+) -> SVector<f64, N> {
+    let mut yi = *y;
+    let mut j = 0;
+    while j < I {
+        let a = A[I][j];
+        if a != 0.0 {
+            yi += k[j] * (h * a);
+        }
+        j += 1;
+    }
+    yi
+}
+
+/// [`stage_input`] for a stage `i` known only at run time (a jump to the unrolled row), so that
+/// the stages share one call site of the right-hand side.
+#[inline(always)]
+fn stage_input_at<const N: usize>(
+    i: usize,
+    y: &SVector<f64, N>,
+    k: &[SVector<f64, N>; 16],
+    h: f64,
+) -> SVector<f64, N> {
+    match i {
+        1 => stage_input::<1, N>(y, k, h),
+        2 => stage_input::<2, N>(y, k, h),
+        3 => stage_input::<3, N>(y, k, h),
+        4 => stage_input::<4, N>(y, k, h),
+        5 => stage_input::<5, N>(y, k, h),
+        6 => stage_input::<6, N>(y, k, h),
+        7 => stage_input::<7, N>(y, k, h),
+        8 => stage_input::<8, N>(y, k, h),
+        9 => stage_input::<9, N>(y, k, h),
+        10 => stage_input::<10, N>(y, k, h),
+        11 => stage_input::<11, N>(y, k, h),
+        13 => stage_input::<13, N>(y, k, h),
+        14 => stage_input::<14, N>(y, k, h),
+        15 => stage_input::<15, N>(y, k, h),
+        _ => unreachable!("stage {i} is not built from A"),
+    }
+}
+
 /// Computes stages 2–12 into `k[1..12]`, the 8th-order solution and the error estimate.
+#[inline(always)]
 fn trial_step<const N: usize, F>(
     f: &mut F,
     t: f64,
@@ -115,16 +195,11 @@ fn trial_step<const N: usize, F>(
     weights: Weights<'_, N>,
 ) -> Result<Trial<N>, RouthError>
 where
-    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+    F: Rhs<N>,
 {
     for i in 1..12 {
-        let mut yi = *y;
-        for (j, a) in A[i].iter().enumerate().take(i) {
-            if *a != 0.0 {
-                yi += k[j] * (h * a);
-            }
-        }
-        k[i] = f(t + C[i] * h, &yi)?;
+        let yi = stage_input_at(i, y, k, h);
+        k[i] = f.eval(t + C[i] * h, &yi)?;
     }
     let mut incr = SVector::<f64, N>::zeros();
     for (j, b) in B.iter().enumerate() {
@@ -169,7 +244,7 @@ fn initial_step<const N: usize, F>(
     counters: &mut Counters,
 ) -> Result<f64, RouthError>
 where
-    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+    F: Rhs<N>,
 {
     const ORDER: f64 = 8.0;
     let sk = (cfg.weights)(y, y);
@@ -181,7 +256,7 @@ where
     }
     let h0 = (0.01 * (d0 / d1)).min(cfg.h_max);
     let y1 = y + f0 * h0;
-    let f1 = f(t + h0, &y1)?;
+    let f1 = eval_cold(f, t + h0, &y1)?;
     counters.evaluations += 1;
     let d2 = (f1 - f0).component_div(&sk).norm() / h0;
     let h1 = if !d2.is_finite() {
@@ -209,14 +284,14 @@ pub(crate) fn integrate<const N: usize, F, O>(
     mut on_step: O,
 ) -> Result<Counters, RouthError>
 where
-    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+    F: Rhs<N>,
     O: FnMut(&Accepted<'_, N>) -> Result<(), RouthError>,
 {
     let mut counters = Counters::default();
     let mut t = t0;
     let mut y = y0;
     let mut k = [SVector::<f64, N>::zeros(); 16];
-    k[0] = f(t, &y)?;
+    k[0] = eval_cold(&mut f, t, &y)?;
     counters.evaluations += 1;
     if !all_finite(&k[0]) {
         return Err(RouthError::NonFiniteState { t });
@@ -258,14 +333,14 @@ where
             continue;
         }
         let err = trial.err;
-        let fac11 = err.powf(1.0 / 8.0);
+        let fac11 = err.sqrt().sqrt().sqrt();
         let fac = (fac11 / SAFE).clamp(1.0 / FAC2, 1.0 / FAC1);
         let mut h_new = h / fac;
 
         if err <= 1.0 {
             // Stage 13: f at the new point, reused as stage 1 of the next step (FSAL).
             let t_new = if last { t_end } else { t + h };
-            let k13 = f(t_new, &trial.y_new)?;
+            let k13 = f.eval(t_new, &trial.y_new)?;
             counters.evaluations += 1;
             if !all_finite(&k13) {
                 nonfinite = true;
@@ -326,16 +401,11 @@ fn dense_step<const N: usize, F>(
     counters: &mut Counters,
 ) -> Result<DenseStep<N>, RouthError>
 where
-    F: FnMut(f64, &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError>,
+    F: Rhs<N>,
 {
     for i in 13..16 {
-        let mut yi = *y;
-        for (j, a) in A[i].iter().enumerate().take(i) {
-            if *a != 0.0 {
-                yi += k[j] * (h * a);
-            }
-        }
-        k[i] = f(t + C[i] * h, &yi)?;
+        let yi = stage_input_at(i, y, k, h);
+        k[i] = f.eval(t + C[i] * h, &yi)?;
     }
     counters.evaluations += 3;
     let ydiff = y_new - y;

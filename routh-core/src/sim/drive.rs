@@ -5,8 +5,23 @@
 use nalgebra::{SVector, Vector3};
 
 use super::{dop853, lie, Method, Output, SimOptions, SimStats};
-use crate::validate::stable_norm;
 use crate::RouthError;
+
+/// An autonomous vector field `y ↦ (ẏ, w)`, with `w` the angular velocity that moves γ
+/// (`y[3..6]`): `γ̇ = w × γ`. Implemented by the drivers' fields with `#[inline(always)]`.
+pub(super) trait Field<const N: usize> {
+    fn eval(&mut self, y: &SVector<f64, N>) -> Result<(SVector<f64, N>, Vector3<f64>), RouthError>;
+}
+
+/// A [`Field`] as the right-hand side `f(t, y)` of [`dop853::integrate`].
+struct Autonomous<'a, F>(&'a mut F);
+
+impl<const N: usize, F: Field<N>> dop853::Rhs<N> for Autonomous<'_, F> {
+    #[inline(always)]
+    fn eval(&mut self, _t: f64, y: &SVector<f64, N>) -> Result<SVector<f64, N>, RouthError> {
+        self.0.eval(y).map(|(d, _)| d)
+    }
+}
 
 /// Integrates `y' = field(y).0` from `y0` at `t = 0` to `t_end` with the chosen method and
 /// output, calling `record` at every output point. `field` returns `(ẏ, w)` with `w` the
@@ -19,7 +34,7 @@ pub(super) fn drive<const N: usize, F, R>(
     mut record: R,
 ) -> Result<SimStats, RouthError>
 where
-    F: FnMut(&SVector<f64, N>) -> Result<(SVector<f64, N>, Vector3<f64>), RouthError>,
+    F: Field<N>,
     R: FnMut(f64, &SVector<f64, N>),
 {
     let times: Option<&[f64]> = match &opts.output {
@@ -58,13 +73,8 @@ where
                     }
                 }
             }
-            let counters = dop853::integrate(
-                |_t, y| field(y).map(|(d, _)| d),
-                0.0,
-                y0,
-                t_end,
-                &cfg,
-                |acc| {
+            let counters =
+                dop853::integrate(Autonomous(&mut field), 0.0, y0, t_end, &cfg, |acc| {
                     match (times, acc.dense) {
                         (None, _) => record(acc.t, acc.y),
                         (Some(ts), dense) => {
@@ -79,8 +89,7 @@ where
                         }
                     }
                     Ok(())
-                },
-            )?;
+                })?;
             Ok(SimStats {
                 accepted_steps: counters.accepted,
                 rejected_steps: counters.rejected,
@@ -108,7 +117,7 @@ where
                 });
             }
             // The vector field at the start: surfaces errors even when nothing is integrated.
-            let (d0, w0) = field(&y0)?;
+            let (d0, w0) = field.eval(&y0)?;
             if !(d0.iter().all(|x| x.is_finite()) && w0.iter().all(|x| x.is_finite())) {
                 return Err(RouthError::NonFiniteState { t: 0.0 });
             }
@@ -126,7 +135,7 @@ where
                 let h = if n > 0 { (end - t) / n as f64 } else { 0.0 };
                 let start = t;
                 for i in 1..=n {
-                    y = lie::step(&mut field, &y, h)?;
+                    y = lie::step(&mut |y: &SVector<f64, N>| field.eval(y), &y, h)?;
                     stats.accepted_steps += 1;
                     stats.rhs_evaluations += 4;
                     t = if i == n { end } else { start + i as f64 * h };
@@ -147,6 +156,23 @@ where
     }
 }
 
+/// `|v|` without overflow or underflow, as `validate::stable_norm`, inlined here because the
+/// weights are computed at every step: `√(v·v)` where `v·v` is safely in range (equal to the
+/// scaled form up to round-off), else `m·|v/m|` with `m = max|vᵢ|`.
+#[inline]
+fn stable_norm(v: &Vector3<f64>) -> f64 {
+    let sq = v.norm_squared();
+    if (1e-290..1e290).contains(&sq) {
+        return sq.sqrt();
+    }
+    let m = v.amax();
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * (v / m).norm()
+}
+
+#[inline]
 pub(super) fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
     Vector3::new(y[at], y[at + 1], y[at + 2])
 }

@@ -9,7 +9,8 @@ use crate::RouthError;
 
 /// The vector field of the full equations (8) solved for ω̇:
 /// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`, `γ̇ = γ × ω`, with `J = ∂²L/∂ω²`
-/// (docs/method.md §2). Returns `(ω̇, γ̇)`.
+/// (docs/method.md §2). Returns `(ω̇, γ̇)`. The system in `J` is solved by a square-root-free Cholesky
+/// factorisation (LDLᵀ of its lower triangle), falling back to Cholesky proper near singularity.
 ///
 /// Errors: [`RouthError::KineticNotPositiveDefinite`] when the Cholesky factorisation of a
 /// finite `J(γ)` fails. Non-finite model outputs give non-finite rates (no error), so that an
@@ -19,18 +20,75 @@ pub fn full_vector_field<M: Lagrangian + ?Sized>(
     omega: &Vector3<f64>,
     gamma: &Vector3<f64>,
 ) -> Result<(Vector3<f64>, Vector3<f64>), RouthError> {
-    let gamma_dot = gamma.cross(omega);
-    let j = model.d2l_domega2(gamma);
-    let rhs = model.dl_domega(omega, gamma).cross(omega)
-        + model.dl_dgamma(omega, gamma).cross(gamma)
-        - model.d2l_domega_dgamma(omega, gamma) * gamma_dot;
-    let omega_dot = solve_spd(&j, &rhs, gamma, |k, g| {
-        RouthError::KineticNotPositiveDefinite {
-            gamma: gamma_array(g),
-            min_eigenvalue: min_eigenvalue(k),
+    FullField::new(model).eval(omega, gamma)
+}
+
+/// [`full_vector_field`] with a memory: the factorisation of the last `J(γ)` is kept and reused
+/// while `J` is bitwise the same (every model whose inertia does not depend on γ: tops,
+/// gyrostats), so that a simulation factorises a constant `J` once. The values are those of
+/// [`full_vector_field`] bit for bit.
+pub(super) struct FullField<'a, M: ?Sized> {
+    model: &'a M,
+    /// The last `J` that was factorised on the fast path, with its factors.
+    cache: Option<(Matrix3<f64>, Ldl)>,
+}
+
+impl<'a, M: Lagrangian + ?Sized> FullField<'a, M> {
+    #[inline]
+    pub(super) fn new(model: &'a M) -> Self {
+        FullField { model, cache: None }
+    }
+
+    #[inline(always)]
+    pub(super) fn eval(
+        &mut self,
+        omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+    ) -> Result<(Vector3<f64>, Vector3<f64>), RouthError> {
+        let model = self.model;
+        let gamma_dot = gamma.cross(omega);
+        let j = model.d2l_domega2(gamma);
+        let rhs = model.dl_domega(omega, gamma).cross(omega)
+            + model.dl_dgamma(omega, gamma).cross(gamma)
+            - model.d2l_domega_dgamma(omega, gamma) * gamma_dot;
+        if let Some((key, inv)) = &self.cache {
+            if same_bits(key, &j) {
+                // `key` was finite and factorised: only `rhs` can make the solution non-finite.
+                let omega_dot = if all_finite(&rhs) {
+                    inv.solve(&rhs)
+                } else {
+                    Vector3::repeat(f64::NAN)
+                };
+                return Ok((omega_dot, gamma_dot));
+            }
         }
-    })?;
-    Ok((omega_dot, gamma_dot))
+        if j.iter().all(|x| x.is_finite()) && all_finite(&rhs) {
+            if let Some(inv) = Ldl::new(&j) {
+                self.cache = Some((j, inv));
+                return Ok((inv.solve(&rhs), gamma_dot));
+            }
+        }
+        // Declined by the fast path: exactly the checks and the Cholesky verdict of before.
+        let omega_dot = solve_spd(&j, &rhs, gamma, |k, g| {
+            RouthError::KineticNotPositiveDefinite {
+                gamma: gamma_array(g),
+                min_eigenvalue: min_eigenvalue(k),
+            }
+        })?;
+        Ok((omega_dot, gamma_dot))
+    }
+}
+
+#[inline]
+fn same_bits(a: &Matrix3<f64>, b: &Matrix3<f64>) -> bool {
+    a.iter()
+        .zip(b.iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
+#[inline]
+fn all_finite(v: &Vector3<f64>) -> bool {
+    v.iter().all(|x| x.is_finite())
 }
 
 /// The vector field of the reduced equations (13) in the gauge of errata E4, with (15):
@@ -64,6 +122,17 @@ pub fn reduced_vector_field<M: Routhian + ?Sized>(
     gamma: &Vector3<f64>,
     p_psi: f64,
 ) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
+    reduced_field(model, big_omega, gamma, p_psi)
+}
+
+/// [`reduced_vector_field`], inlined into the integrator's stage loop.
+#[inline(always)]
+pub(super) fn reduced_field<M: Routhian + ?Sized>(
+    model: &M,
+    big_omega: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
     let b = model.bundle(big_omega, gamma, p_psi);
     let gamma_dot = gamma.cross(big_omega);
     let rhs =
@@ -78,18 +147,257 @@ pub fn reduced_vector_field<M: Routhian + ?Sized>(
     Ok((big_omega_dot, gamma_dot, -b.dr_dp))
 }
 
-/// Solves `K x = rhs` by Cholesky; non-finite `K` or `rhs` give a NaN solution.
+/// Solves `K x = rhs` for a symmetric positive definite K, reading its lower triangle (as
+/// Cholesky does): by [`Ldl`] when K is clearly positive definite, else by nalgebra's
+/// Cholesky, whose failure is the error. Non-finite `K` or `rhs` give a NaN solution.
+#[inline(always)]
 fn solve_spd(
     k: &Matrix3<f64>,
     rhs: &Vector3<f64>,
     gamma: &Vector3<f64>,
     error: impl Fn(&Matrix3<f64>, &Vector3<f64>) -> RouthError,
 ) -> Result<Vector3<f64>, RouthError> {
-    if !(k.iter().all(|x| x.is_finite()) && rhs.iter().all(|x| x.is_finite())) {
+    if !(k.iter().all(|x| x.is_finite()) && all_finite(rhs)) {
         return Ok(Vector3::repeat(f64::NAN));
     }
+    if let Some(inv) = Ldl::new(k) {
+        return Ok(inv.solve(rhs));
+    }
+    cholesky_solve(k, rhs, gamma, error)
+}
+
+/// The slow path of [`solve_spd`], out of line.
+#[inline(never)]
+fn cholesky_solve(
+    k: &Matrix3<f64>,
+    rhs: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+    error: impl Fn(&Matrix3<f64>, &Vector3<f64>) -> RouthError,
+) -> Result<Vector3<f64>, RouthError> {
     match k.cholesky() {
         Some(ch) => Ok(ch.solve(rhs)),
         None => Err(error(k, gamma)),
+    }
+}
+
+/// `K = L D Lᵀ` of a symmetric 3×3 matrix K from its lower triangle (Cholesky without square
+/// roots: `D = diag(d₁, d₂, d₃)` holds the squares of the Cholesky factor's diagonal), kept so
+/// that a solve is multiplications only.
+///
+/// Every evaluation of the vector fields solves with K, and the solve is on the critical path of
+/// the integrator (each stage needs the previous one). Cholesky puts three square roots and six
+/// divisions in a chain there; an LDLᵀ solve three divisions `1/d₁`, `1/d₂`, `1/d₃`. Here the
+/// last two are made independent: with `s₃₃ = K₃₃ − l₃₁K₃₁`, `m₃₂ = K₃₂ − l₃₁K₂₁` (so that
+/// `l₃₂ = m₃₂/d₂`, `d₃ = s₃₃ − m₃₂²/d₂`) the product `d₂d₃ = d₂s₃₃ − m₃₂²` needs no division,
+/// and `x₃ = z₃/d₃ = (d₂(b₃ − l₃₁b₁) − m₃₂z₂)/(d₂d₃)`, so that `1/d₂` and `1/(d₂d₃)` are taken
+/// side by side. `d₂d₃` carries the same rounding errors as `d₂·d₃` of the usual recurrence (its
+/// two terms are those of d₃ times d₂), so the solve is as accurate as Cholesky (see
+/// `matches_cholesky_on_ill_conditioned_matrices`). A constant K (tops, gyrostats) is
+/// factorised once ([`FullField`]), and a diagonal one is then solved by independent products.
+///
+/// Shorter chains were tried and rejected: the adjugate `adj K/det K`, and pivots from the
+/// leading minors (`d₃ = det K/M₂`), lose accuracy through the cancellation in `det K`: on a
+/// rotated K with condition number κ their error grows like κ²ε, Cholesky's like κε.
+///
+/// [`Ldl::new`] declines (`None`) unless every pivot exceeds `1e-13` times its diagonal entry:
+/// the pivots of Cholesky and of this factorisation differ by a few ε of the diagonal, so
+/// outside that margin both find K positive definite, and inside it the caller asks Cholesky,
+/// whose verdict (and error) is then exactly that of before. It also declines when `d₂d₃` over-
+/// or underflows (entries beyond about 1e±150), where Cholesky still works.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Ldl {
+    l21: f64,
+    l31: f64,
+    l32: f64,
+    m32: f64,
+    d2: f64,
+    /// `1/d₁`, `1/d₂`, `1/(d₂d₃)`.
+    r1: f64,
+    r2: f64,
+    q: f64,
+    /// All multipliers are zero (K is diagonal): the solve is three independent products.
+    diagonal: bool,
+}
+
+/// Pivots must exceed this fraction of their diagonal entry (see [`Ldl`]).
+const PIVOT_MARGIN: f64 = 1e-13;
+
+impl Ldl {
+    #[inline]
+    pub(super) fn new(k: &Matrix3<f64>) -> Option<Ldl> {
+        let (k11, k21, k31) = (k[(0, 0)], k[(1, 0)], k[(2, 0)]);
+        let (k22, k32, k33) = (k[(1, 1)], k[(2, 1)], k[(2, 2)]);
+        let r1 = 1.0 / k11;
+        let (l21, l31) = (k21 * r1, k31 * r1);
+        let d2 = k22 - l21 * k21;
+        let m32 = k32 - l31 * k21;
+        let s33 = k33 - l31 * k31;
+        let d23 = d2 * s33 - m32 * m32;
+        let (r2, q) = (1.0 / d2, 1.0 / d23);
+        let l32 = m32 * r2;
+        // d₁ > 0, d₂ and d₃ = d₂d₃/d₂ clearly positive. Written so that NaN declines; infinite
+        // entries decline too (∞ is not > ∞).
+        let clear = k11 > 0.0
+            && d2 > PIVOT_MARGIN * k22.abs()
+            && d23 > PIVOT_MARGIN * k33.abs() * d2
+            && r1.is_normal()
+            && r2.is_normal()
+            && q.is_normal();
+        clear.then_some(Ldl {
+            l21,
+            l31,
+            l32,
+            m32,
+            d2,
+            r1,
+            r2,
+            q,
+            diagonal: l21 == 0.0 && l31 == 0.0 && m32 == 0.0,
+        })
+    }
+
+    /// `K⁻¹b`: `Lz = b`, then `DLᵀx = z`.
+    #[inline]
+    pub(super) fn solve(&self, b: &Vector3<f64>) -> Vector3<f64> {
+        if self.diagonal {
+            // The general formulas below with l = m = 0, without their dependency chain: for a
+            // finite solution the same values (`x − 0·y = x`).
+            return Vector3::new(b.x * self.r1, b.y * self.r2, self.d2 * b.z * self.q);
+        }
+        let z2 = b.y - self.l21 * b.x;
+        let t3 = b.z - self.l31 * b.x;
+        let x3 = (self.d2 * t3 - self.m32 * z2) * self.q;
+        let x2 = z2 * self.r2 - self.l32 * x3;
+        let x1 = b.x * self.r1 - self.l21 * x2 - self.l31 * x3;
+        Vector3::new(x1, x2, x3)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Rotation3;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    /// The factorisation solves like Cholesky, reads only the lower triangle, is scale-free within
+    /// its range, and declines (leaving the verdict to Cholesky) near and past singularity.
+    #[test]
+    fn ldl_matches_cholesky() {
+        let k = Matrix3::new(4.0, 1.0, -0.5, 1.0, 3.0, 0.25, -0.5, 0.25, 2.0);
+        let b = Vector3::new(0.3, -1.2, 2.5);
+        let x = Ldl::new(&k).expect("SPD").solve(&b);
+        let y = k.cholesky().expect("SPD").solve(&b);
+        assert!((x - y).amax() < 4e-16 * y.amax(), "{x} vs {y}");
+        // Only the lower triangle is read.
+        let mut upper = k;
+        upper[(0, 1)] = 100.0;
+        assert_eq!(Ldl::new(&upper).expect("SPD").solve(&b), x);
+        // Scale-free: powers of two are exact, so the solution is the same to the bit.
+        for s in [2f64.powi(-450), 2f64.powi(450)] {
+            let xs = Ldl::new(&(k * s)).expect("SPD").solve(&b) * s;
+            assert_eq!(xs, x, "{s:e}");
+        }
+        // Beyond about 1e±150 the product d₂d₃ leaves the range: declined, and `solve_spd`
+        // solves by Cholesky.
+        let err = |_: &Matrix3<f64>, _: &Vector3<f64>| RouthError::NonFiniteState { t: 0.0 };
+        for s in [1e-200, 1e200] {
+            assert!(Ldl::new(&(k * s)).is_none(), "{s:e}");
+            let xs = solve_spd(&(k * s), &b, &Vector3::z(), err).unwrap() * s;
+            assert!((xs - y).amax() < 4e-16 * y.amax(), "{s:e}");
+        }
+        // Singular, indefinite, singular to working precision, non-finite: declined.
+        let singular = Matrix3::new(1.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0);
+        let indefinite = Matrix3::new(1.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0, 0.0, 1.0);
+        let negative = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0));
+        let nearly = Matrix3::new(1.0, 1.0, 0.0, 1.0, 1.0 + 1e-15, 0.0, 0.0, 0.0, 1.0);
+        let mut nan = k;
+        nan[(2, 1)] = f64::NAN;
+        let mut inf = k;
+        inf[(1, 1)] = f64::INFINITY;
+        for m in [
+            singular,
+            indefinite,
+            negative,
+            nearly,
+            nan,
+            inf,
+            Matrix3::zeros(),
+        ] {
+            assert!(Ldl::new(&m).is_none(), "{m}");
+        }
+    }
+
+    /// On random rotated SPD matrices with condition numbers κ from 1 to 1e12, the error of the
+    /// solution (against the exact x of `b = Kx` computed with compensated products) is within a
+    /// small factor of Cholesky's (or of κε); the adjugate (nalgebra's 3×3 inverse) is not.
+    #[test]
+    fn matches_cholesky_on_ill_conditioned_matrices() {
+        let mut rng = ChaCha8Rng::seed_from_u64(5);
+        let (mut worst, mut worst_adj): (f64, f64) = (0.0, 0.0);
+        for i in 0..3000 {
+            let cond = 10f64.powf(12.0 * (i % 100) as f64 / 99.0);
+            let axis = Vector3::new(rng.gen(), rng.gen(), rng.gen::<f64>()) - Vector3::repeat(0.5);
+            let rot = Rotation3::new(axis * 6.0);
+            let lam = Vector3::new(1.0, cond.powf(rng.gen()), cond);
+            let scale = 10f64.powf(rng.gen_range(-5.0..5.0));
+            let k = rot.matrix() * Matrix3::from_diagonal(&lam) * rot.matrix().transpose() * scale;
+            let k = (k + k.transpose()) * 0.5;
+            let x_true =
+                Vector3::new(rng.gen(), rng.gen(), rng.gen::<f64>()) - Vector3::repeat(0.5);
+            // b = K x with the rounding of each product compensated (two-product via mul_add).
+            let b = Vector3::from_fn(|r, _| {
+                let (mut s, mut c) = (0.0f64, 0.0f64);
+                for j in 0..3 {
+                    let p = k[(r, j)] * x_true[j];
+                    let e = k[(r, j)].mul_add(x_true[j], -p);
+                    let t = s + p;
+                    c += if s.abs() >= p.abs() {
+                        (s - t) + p
+                    } else {
+                        (p - t) + s
+                    } + e;
+                    s = t;
+                }
+                s + c
+            });
+            let Some(ch) = k.cholesky() else { continue };
+            let e_ch = (ch.solve(&b) - x_true).norm() / x_true.norm();
+            let e_ldl = match Ldl::new(&k) {
+                Some(inv) => (inv.solve(&b) - x_true).norm() / x_true.norm(),
+                None => continue,
+            };
+            let floor = 1e-16 * cond;
+            worst = worst.max(e_ldl / (e_ch + floor));
+            // The adjugate, for comparison.
+            let adj = k.try_inverse().expect("invertible") * b;
+            worst_adj = worst_adj.max(((adj - x_true).norm() / x_true.norm()) / (e_ch + floor));
+        }
+        assert!(worst < 20.0, "LDLᵀ error / Cholesky error up to {worst}");
+        assert!(worst_adj > 1e3, "the adjugate is worse: {worst_adj}");
+    }
+
+    /// `solve_spd` keeps Cholesky's verdict: an error exactly where Cholesky fails, NaN for
+    /// non-finite input.
+    #[test]
+    fn solve_spd_verdicts() {
+        let err = |_: &Matrix3<f64>, _: &Vector3<f64>| RouthError::NonFiniteState { t: 0.0 };
+        let g = Vector3::z();
+        let b = Vector3::new(1.0, 2.0, 3.0);
+        let indefinite = Matrix3::new(1.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0, 0.0, 1.0);
+        assert!(solve_spd(&indefinite, &b, &g, err).is_err());
+        // Positive definite but declined by the margin: Cholesky's solution.
+        let nearly = Matrix3::new(1.0, 1.0, 0.0, 1.0, 1.0 + 1e-14, 0.0, 0.0, 0.0, 1.0);
+        assert_eq!(
+            solve_spd(&nearly, &b, &g, err).unwrap(),
+            nearly.cholesky().unwrap().solve(&b)
+        );
+        let x = solve_spd(
+            &Matrix3::identity(),
+            &Vector3::new(f64::INFINITY, 0.0, 0.0),
+            &g,
+            err,
+        );
+        assert!(x.unwrap().iter().all(|v| v.is_nan()));
     }
 }

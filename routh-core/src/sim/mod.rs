@@ -25,7 +25,8 @@ mod tableau;
 
 pub use field::{full_vector_field, reduced_vector_field};
 
-use drive::{drive, split3};
+use drive::{drive, split3, Field};
+use field::FullField;
 
 use nalgebra::{SVector, Vector3};
 
@@ -361,7 +362,8 @@ fn too_large(what: &'static str, size: f64, equations: &str) -> RouthError {
 /// Simulates the full equations of motion (8) from `(ω₀, γ₀)` at `t = 0` to `t_end`.
 ///
 /// The state is `(ω, γ)`; ω̇ is solved from
-/// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)` with `J = ∂²L/∂ω²` by Cholesky, and
+/// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)` with `J = ∂²L/∂ω²` by a square-root-free
+/// Cholesky factorisation (factorised once when `J` does not depend on γ), and
 /// `γ̇ = γ × ω` (see [`full_vector_field`]). Along the trajectory the energy (3), the cyclic
 /// momentum (9) and `|γ|²` are recorded; they are first integrals, so their drift measures the
 /// integration error.
@@ -458,15 +460,7 @@ pub fn simulate_full<M: Lagrangian>(
     y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
 
     let mut traj = Trajectory::default();
-    let field = |y: &SVector<f64, 6>| {
-        let (w, g) = (split3(y, 0), split3(y, 3));
-        let (w_dot, g_dot) = full_vector_field(model, &w, &g)?;
-        let mut d = SVector::<f64, 6>::zeros();
-        d.fixed_rows_mut::<3>(0).copy_from(&w_dot);
-        d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
-        // γ̇ = γ × ω = (−ω) × γ.
-        Ok((d, -w))
-    };
+    let field = FullRhs(FullField::new(model));
     let record = |t: f64, y: &SVector<f64, 6>| {
         let (w, g) = (split3(y, 0), split3(y, 3));
         traj.t.push(t);
@@ -481,6 +475,42 @@ pub fn simulate_full<M: Lagrangian>(
     non_finite_record(&traj.t, &[&traj.energy, &traj.p_psi])?;
     traj.stats = stats;
     Ok(traj)
+}
+
+/// The state `(ω, γ)` of (8) and its rates.
+struct FullRhs<'a, M: ?Sized>(FullField<'a, M>);
+
+impl<M: Lagrangian + ?Sized> Field<6> for FullRhs<'_, M> {
+    #[inline(always)]
+    fn eval(&mut self, y: &SVector<f64, 6>) -> Result<(SVector<f64, 6>, Vector3<f64>), RouthError> {
+        let (w, g) = (split3(y, 0), split3(y, 3));
+        let (w_dot, g_dot) = self.0.eval(&w, &g)?;
+        let mut d = SVector::<f64, 6>::zeros();
+        d.fixed_rows_mut::<3>(0).copy_from(&w_dot);
+        d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
+        // γ̇ = γ × ω = (−ω) × γ.
+        Ok((d, -w))
+    }
+}
+
+/// The state `(Ω, γ, ψ)` of (13), (15) on the level `p_psi`, and its rates.
+struct ReducedRhs<'a, M: ?Sized> {
+    model: &'a M,
+    p_psi: f64,
+}
+
+impl<M: Routhian + ?Sized> Field<7> for ReducedRhs<'_, M> {
+    #[inline(always)]
+    fn eval(&mut self, y: &SVector<f64, 7>) -> Result<(SVector<f64, 7>, Vector3<f64>), RouthError> {
+        let (w, g) = (split3(y, 0), split3(y, 3));
+        let (w_dot, g_dot, psi_dot) = field::reduced_field(self.model, &w, &g, self.p_psi)?;
+        let mut d = SVector::<f64, 7>::zeros();
+        d.fixed_rows_mut::<3>(0).copy_from(&w_dot);
+        d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
+        d[6] = psi_dot;
+        // γ̇ = γ × Ω = (−Ω) × γ.
+        Ok((d, -w))
+    }
 }
 
 /// `Err(NonFiniteState)` at the first recorded time where one of `columns` is not finite: the
@@ -566,16 +596,7 @@ pub fn simulate_reduced<M: Routhian>(
     y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
 
     let mut traj = ReducedTrajectory::default();
-    let field = |y: &SVector<f64, 7>| {
-        let (w, g) = (split3(y, 0), split3(y, 3));
-        let (w_dot, g_dot, psi_dot) = reduced_vector_field(model, &w, &g, p_psi)?;
-        let mut d = SVector::<f64, 7>::zeros();
-        d.fixed_rows_mut::<3>(0).copy_from(&w_dot);
-        d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
-        d[6] = psi_dot;
-        // γ̇ = γ × Ω = (−Ω) × γ.
-        Ok((d, -w))
-    };
+    let field = ReducedRhs { model, p_psi };
     let record = |t: f64, y: &SVector<f64, 7>| {
         let (w, g) = (split3(y, 0), split3(y, 3));
         let b = model.bundle(&w, &g, p_psi);
