@@ -440,8 +440,8 @@ fn compare<M: Routhian, H: HandRhs>(c: &mut Criterion, problem: &Problem<'_, M, 
         (solver, grid[from])
     };
     println!(
-        "  at equal final error (≤ {target:.1e}, that of ode_solvers at rtol {RTOL:e}; loosest \
-         rtol on a grid of 8 per decade from which on the error stays below it):"
+        "  at equal final error (≤ {target:.1e}, the baseline's at rtol {RTOL:e}; each at the \
+         loosest rtol of a grid, 8 per decade, from which on its error stays below that):"
     );
     let equal: Vec<(Solver, f64)> = SOLVERS.iter().map(|&s| pick(s)).collect();
     table(problem, &equal, &err);

@@ -154,8 +154,9 @@ pub struct SimStats {
     pub accepted_steps: usize,
     /// Rejected steps (error too large, or non-finite trial values).
     pub rejected_steps: usize,
-    /// Evaluations of the vector field (each one is one evaluation of the model's derivatives,
-    /// or one [`Routhian::bundle`] for the reduced equations).
+    /// Evaluations of the vector field (each one is one evaluation of the model's derivatives
+    /// `∂L/∂ω`, `∂L/∂γ`, `J`, `∂²L/∂ω∂γ`, or for the reduced equations of `∂R/∂Ω`, `∂R/∂γ`,
+    /// `∂²R/∂Ω²`, `∂²R/∂Ω∂γ` and `∂R/∂p_ψ`).
     pub rhs_evaluations: usize,
 }
 
@@ -191,7 +192,7 @@ pub struct ReducedTrajectory {
     /// Rotation angle ψ of the rotating frame about the vertical, integrated from
     /// `ψ̇ = −∂R/∂p_ψ` (15) with `ψ(0) = 0`.
     pub psi: Vec<f64>,
-    /// `ψ̇(Ω, γ, p_ψ)` of (12)/(38) ([`Routhian::psi_dot`] via the bundle).
+    /// `ψ̇(Ω, γ, p_ψ)` of (12)/(38) ([`Routhian::psi_dot`]).
     pub psi_dot: Vec<f64>,
     /// The reconstructed body angular velocity `ω = Ω + ψ̇γ` (7).
     pub omega: Vec<Vector3<f64>>,
@@ -537,8 +538,7 @@ fn non_finite_record(t: &[f64], columns: &[&[f64]]) -> Result<(), RouthError> {
 ///
 /// The full state corresponding to `(Ω₀, γ₀, p_ψ)` is `ω₀ = Ω₀ + ψ̇(Ω₀, γ₀, p_ψ) γ₀` (7), (12).
 /// Recorded along the way: E' (16) (equal to E of (3)), `(∂R/∂Ω, γ)` (17) (identically p_ψ),
-/// `|γ|²`, ψ̇ and the reconstructed ω; one [`Routhian::bundle`] per vector-field evaluation and
-/// per recorded point.
+/// `|γ|²`, ψ̇ and the reconstructed ω.
 ///
 /// # Errors
 ///
@@ -599,15 +599,17 @@ pub fn simulate_reduced<M: Routhian>(
     let field = ReducedRhs { model, p_psi };
     let record = |t: f64, y: &SVector<f64, 7>| {
         let (w, g) = (split3(y, 0), split3(y, 3));
-        let b = model.bundle(&w, &g, p_psi);
+        // Only R, ∂R/∂Ω and ψ̇ (not the whole bundle, see `reduced_vector_field`).
+        let (psi_dot, dr_domega) = (model.psi_dot(&w, &g, p_psi), model.dr_domega(&w, &g, p_psi));
         traj.t.push(t);
         traj.big_omega.push(w);
         traj.gamma.push(g);
         traj.psi.push(y[6]);
-        traj.psi_dot.push(b.psi_dot);
-        traj.omega.push(w + g * b.psi_dot);
-        traj.energy.push(b.dr_domega.dot(&w) - b.routhian);
-        traj.p_psi.push(b.dr_domega.dot(&g));
+        traj.psi_dot.push(psi_dot);
+        traj.omega.push(w + g * psi_dot);
+        traj.energy
+            .push(dr_domega.dot(&w) - model.routhian(&w, &g, p_psi));
+        traj.p_psi.push(dr_domega.dot(&g));
         traj.gamma_norm_sq.push(g.norm_squared());
     };
     let stats = drive(field, y0, t_end, opts, record)?;
