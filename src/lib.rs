@@ -27,6 +27,26 @@
 //! assert!((routh::Lagrangian::energy(&top, &omega, &gamma) - 5.5).abs() < 1e-12);
 //! let _ = Matrix3::<f64>::identity();
 //! ```
+//!
+//! A search finds steady motions; [`certify::steady_motions_certified`] proves by interval
+//! arithmetic that the ones it returns are all of them (or names the regions it could not
+//! decide, such as the tube around a circle of steady motions):
+//!
+//! ```
+//! use routh::certify::{steady_motions_certified, CertifyOptions};
+//! use routh::{Lagrangian, Vector3};
+//!
+//! /// A heavy asymmetric top (centre of mass on the third axis).
+//! #[derive(Lagrangian)]
+//! #[lagrangian(kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z)]
+//! struct Asymmetric { inertia: Vector3<f64>, mgl: f64 }
+//!
+//! let top = Asymmetric { inertia: Vector3::new(1.0, 2.0, 3.0), mgl: 1.0 };
+//! let cert = steady_motions_certified(&top, 0.5, &CertifyOptions::default()).unwrap();
+//! assert!(cert.complete);
+//! assert_eq!(cert.motions.len(), 2); // the sleeping and the hanging top, and nothing else
+//! println!("{cert}");
+//! ```
 #![forbid(unsafe_code)]
 
 pub use routh_core::*;

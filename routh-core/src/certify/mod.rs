@@ -393,7 +393,10 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 /// The model must come from `#[derive(Lagrangian)]` (the proof evaluates the derive's
 /// certification tape); a hand-written model gives [`RouthError::InvalidModel`].
 ///
-/// ```
+/// (This example needs the derive, so it runs as a doctest of the `routh` crate, whose root
+/// documentation has it too.)
+///
+/// ```ignore
 /// use routh::{Lagrangian, Vector3};
 /// use routh::certify::{steady_motions_certified, CertifyOptions};
 ///
