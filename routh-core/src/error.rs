@@ -24,9 +24,12 @@ pub enum RouthError {
         /// Where it was evaluated.
         gamma: [f64; 3],
     },
-    /// A unit vertical γ was required (|γ| = 1 within `tol`).
-    #[error("γ must be a unit vector: |γ| = {norm} (tolerance {tol:e})")]
+    /// A unit vertical γ was required (|γ| = 1 within `tol`, the geometric integral (4)).
+    #[error("{what} must be a unit vector: |{what}| = {norm} (tolerance {tol:e})")]
     NonUnitGamma {
+        /// The name of the input, as in the function's signature (e.g. `"gamma0"`,
+        /// `"steady.gamma"`).
+        what: &'static str,
         /// The norm of the γ given.
         norm: f64,
         /// The tolerance on `| |γ| − 1 |` ([`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL)).
@@ -49,7 +52,10 @@ pub enum RouthError {
         value: f64,
     },
     /// The gauge-fixed reduced kinetic form `∂²R/∂Ω² + c·γγᵀ` (errata E4) is singular or not
-    /// positive definite, so the reduced equations (13) cannot be solved for Ω̇.
+    /// positive definite, so the reduced equations (13) cannot be solved for Ω̇; or, from
+    /// [`classify`](crate::classify), its restriction `PᵀAP` to the tangent plane (63) (`A` of
+    /// (64); the same eigenvalues on γ^⊥, since `A` annihilates γ) is not positive definite, so
+    /// `f₂` (errata E5) is not a quartic.
     #[error("the reduced kinetic form ∂²R/∂Ω² + cγγᵀ is singular at γ = {gamma:?} (smallest eigenvalue {min_eigenvalue:e})")]
     SingularReducedKinetic {
         /// Where it was evaluated.

@@ -93,11 +93,15 @@ impl Tangential {
         let (hnorm, knorm) = if h2.is_normal() || h2 == 0.0 {
             (h2.sqrt(), k2.sqrt())
         } else {
-            (d2r_dgamma2.norm(), hess.norm())
+            // Entries beyond 1e154 (p_ψ = 1e150 in units of the inertia) or below 1e−154.
+            (
+                stable_norm(d2r_dgamma2.as_slice()),
+                stable_norm(hess.as_slice()),
+            )
         };
         let raw = raw_grad.max(hnorm);
         let grad = -(basis.transpose() * dr_dgamma);
-        let grad_norm = grad.norm();
+        let grad_norm = norm3(grad.x, grad.y, 0.0);
         let zero_tol = (rel * knorm).max(ROUND * raw);
         let gf = ROUND * raw_grad;
         let mut step = Vector2::zeros();
@@ -165,14 +169,35 @@ impl Tangential {
     }
 }
 
-/// `|(x, y, z)|` without the cost of `hypot` when no overflow or underflow is possible.
+/// `|(x, y, z)|` without the cost of scaling when no overflow or underflow is possible.
 fn norm3(x: f64, y: f64, z: f64) -> f64 {
     let s = x * x + y * y + z * z;
     if s.is_normal() || s == 0.0 && x == 0.0 && y == 0.0 && z == 0.0 {
         s.sqrt()
     } else {
-        Vector3::new(x, y, z).norm()
+        stable_norm(&[x, y, z])
     }
+}
+
+/// The Euclidean norm of `xs` without overflow or underflow: the plain `√Σx²` when that sum is a
+/// normal number (then the same value as nalgebra's `norm`), otherwise scaled by the largest
+/// magnitude. NaN if an entry is NaN, `+∞` if one is infinite.
+pub(crate) fn stable_norm(xs: &[f64]) -> f64 {
+    let s: f64 = xs.iter().map(|x| x * x).sum();
+    if s.is_normal() {
+        return s.sqrt();
+    }
+    let m = xs.iter().fold(0.0f64, |m, x| {
+        if x.is_nan() || x.abs() > m {
+            x.abs()
+        } else {
+            m
+        }
+    });
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * xs.iter().map(|x| (x / m).powi(2)).sum::<f64>().sqrt()
 }
 
 /// The restricted second variation `Pᵀ(μE − ∂²R/∂γ²)P` (62)–(63), symmetrised.
@@ -214,7 +239,14 @@ pub(crate) fn sym2_eigen(k: &Matrix2<f64>) -> Eigen2 {
     } else {
         let big = if m >= 0.0 { m + d } else { m - d };
         let det = a * c - b * b;
-        let small = if big != 0.0 { det / big } else { m - d };
+        let small = if big == 0.0 {
+            m - d
+        } else if det.is_finite() {
+            det / big
+        } else {
+            // Entries beyond 1e154: divide first.
+            (a / big) * c - (b / big) * b
+        };
         if m >= 0.0 {
             (small, big)
         } else {
@@ -224,9 +256,9 @@ pub(crate) fn sym2_eigen(k: &Matrix2<f64>) -> Eigen2 {
     let vec_for = |lam: f64| {
         let v1 = Vector2::new(b, lam - a);
         let v2 = Vector2::new(lam - c, b);
-        let v = if v1.norm() >= v2.norm() { v1 } else { v2 };
-        let n = v.norm();
-        if n > 0.0 {
+        let (n1, n2) = (stable_norm(v1.as_slice()), stable_norm(v2.as_slice()));
+        let (v, n) = if n1 >= n2 { (v1, n1) } else { (v2, n2) };
+        if n > 0.0 && n.is_finite() {
             v / n
         } else {
             Vector2::new(1.0, 0.0)

@@ -10,7 +10,7 @@ use nalgebra::{Complex, Matrix2, Vector3};
 use crate::error::RouthError;
 use crate::krein::krein_signatures;
 use crate::model::Routhian;
-use crate::sphere::{tangent_basis, Tangential};
+use crate::sphere::{sym2_eigen, tangent_basis, Tangential};
 use crate::steady::SteadyMotion;
 use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
 
@@ -151,7 +151,10 @@ impl fmt::Display for StabilityReport {
 ///    `f₂(λ) = c₄λ⁴ + c₂λ² + c₀`, `c₄ = det a`, `c₂ = a₁₁c₂₂ + a₂₂c₁₁ − 2a₁₂c₁₂ + 4g²`,
 ///    `c₀ = det c`, solved exactly as a quadratic in `s = λ²` and then `λ = ±√s` (complex square
 ///    root). `c = PᵀCP` is `K` up to a rotation of the plane by a right angle (errata E6), so
-///    `c₀ = det K`.
+///    `c₀ = det K`. The coefficients are of order `p_ψ⁴` and would overflow (or underflow) in
+///    extreme units, so the quartic is solved in the scaled variable `μ = λ/ω`, `ω` a
+///    characteristic frequency of `a`, `g`, `c`, with coefficients of order 1
+///    ([`f2_coefficients_scaled`]); the roots and verdicts are the same in any units.
 ///
 /// # Verdict
 ///
@@ -184,8 +187,12 @@ impl fmt::Display for StabilityReport {
 /// Errors: [`RouthError::NonFinite`] for non-finite `p_psi` or γ (or non-finite derivatives of the
 /// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL);
 /// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
-/// `J(γ) = ∂²L/∂ω²` is not positive definite; [`RouthError::NotASteadyMotion`] when γ is not a
-/// critical point of `U_r` within [`ClassifyOptions::steady_tol`].
+/// `J(γ) = ∂²L/∂ω²` is not positive definite; [`RouthError::SingularReducedKinetic`] (with the
+/// smallest eigenvalue of `PᵀAP`) when the model's `∂²R/∂Ω²` is not positive definite on the
+/// tangent plane (errata E4: it must be, as a Schur complement of `J`);
+/// [`RouthError::NotASteadyMotion`] when γ is not a critical point of `U_r` within
+/// [`ClassifyOptions::steady_tol`]; [`RouthError::NonFiniteModel`] when the model returns
+/// non-finite derivatives or the roots of `f₂` exceed the range of `f64`.
 ///
 /// ```
 /// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
@@ -292,16 +299,24 @@ pub fn classify_with<M: Routhian>(
     let any_zero = eigs.iter().any(|e| e.abs() <= zero_tol);
     let degree = eigs.iter().filter(|&&e| e < -zero_tol).count();
 
-    // (64) on the tangent plane (errata E5).
+    // (64) on the tangent plane (errata E5), in the scaled variable μ = λ/ω (see `F2Parts`):
+    // the coefficients are O(1) whatever the units of the model, so neither they nor the
+    // discriminant overflow or underflow (p_ψ = 1e±150).
     let parts = f2_parts(model, &gamma, p_psi)?;
-    let [c4, c2, c0] = parts.coefficients;
-    let a_norm = parts.a.norm();
-    let roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
-    // Finite coefficients can still give roots beyond f64 (c₄ subnormal: a kinetic form with a
-    // moment of 1e−310 is positive definite but λ² = O(c₂/c₄) overflows). Found by
+    let [c4, c2, c0] = parts.scaled;
+    let a_norm = parts.a_hat.norm();
+    let mut roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
+    for l in &mut roots.lambda {
+        *l *= parts.omega;
+    }
+    // λ = ωμ can still exceed f64 when the frequencies themselves do (a kinetic form with a
+    // moment of 1e−310 is positive definite but its frequencies are O(1e155)). Found by
     // tests/runtime_properties.rs.
     let root_parts: Vec<f64> = roots.lambda.iter().flat_map(|l| [l.re, l.im]).collect();
     check_model_finite("roots of f2 (overflow)", &root_parts, &gamma)?;
+    // The zero threshold of K (an eigenvalue of c = PᵀCP up to a rotation, errata E6) in the
+    // units of the scaled coefficients: ĉ = c/(αω²).
+    let zero_tol = zero_tol / parts.alpha / parts.omega / parts.omega;
 
     let verdict = if any_zero {
         // det K = c₀ is zero within the tolerance, so f₂ ≈ λ²(c₄λ² + c₂): a real root pair
@@ -401,7 +416,10 @@ pub fn classify_with_krein<M: Routhian>(
 ) -> Result<KreinReport, RouthError> {
     let report = classify_with(model, steady, opts)?;
     let parts = f2_parts(model, &steady.gamma, steady.p_psi)?;
-    let krein_signatures = krein_signatures(&parts.a, parts.g, &parts.c, &report.f2_roots);
+    // The signatures of f₂ scaled (`F2Parts`): the modes of λ = ωμ are those of μ and the
+    // energies are multiplied by αω² > 0, so the signs are the same, without overflow.
+    let mu = report.f2_roots.map(|l| l / parts.omega);
+    let krein_signatures = krein_signatures(&parts.a_hat, parts.g_hat, &parts.c_hat, &mu);
     Ok(KreinReport {
         report,
         krein_signatures,
@@ -412,25 +430,71 @@ pub fn classify_with_krein<M: Routhian>(
 /// (errata E5) at the unit vector γ, from [`Routhian::gyroscopic_system`]. They do not depend on
 /// the choice of the orthonormal basis `P` of γ^⊥.
 ///
-/// Errors: as [`classify`].
+/// They are of the order of `p_ψ⁴` (for a free body, in units of the inertia) and overflow
+/// for `|p_ψ|` beyond about `1e77`; [`f2_coefficients_scaled`] gives the same polynomial in a
+/// scaled variable, which does not.
+///
+/// Errors: as [`classify`], and [`RouthError::NonFiniteModel`] when a coefficient overflows.
 pub fn f2_coefficients<M: Routhian>(
     model: &M,
     gamma: &Vector3<f64>,
     p_psi: f64,
 ) -> Result<[f64; 3], RouthError> {
-    Ok(f2_parts(model, gamma, p_psi)?.coefficients)
+    let parts = f2_parts(model, gamma, p_psi)?;
+    let (a, g, c) = (&parts.a, parts.g, &parts.c);
+    // det(aλ² + 2gJλ + c) for symmetric a, c and J = [[0, 1], [−1, 0]]: the skew part adds
+    // (2gλ)² to the determinant of the symmetric part.
+    let c4 = a.determinant();
+    let c2 =
+        a[(0, 0)] * c[(1, 1)] + a[(1, 1)] * c[(0, 0)] - 2.0 * a[(0, 1)] * c[(0, 1)] + 4.0 * g * g;
+    let c0 = c.determinant();
+    check_model_finite("coefficients of f2", &[c4, c2, c0], &parts.gamma)?;
+    Ok([c4, c2, c0])
+}
+
+/// `f₂` of [`f2_coefficients`] in the scaled variable `μ = λ/ω`: returns `([ĉ₄, ĉ₂, ĉ₀], ω)`
+/// with `f₂(λ) = α²ω⁴ (ĉ₄μ⁴ + ĉ₂μ² + ĉ₀)`, `α` the largest entry of `PᵀAP` and `ω > 0` the
+/// characteristic frequency `max(√(‖PᵀCP‖/α), |g|/α)` (entry-wise max norm). The roots of `f₂`
+/// are `ω` times the roots of the scaled quartic; `0 < ĉ₄ ≤ 1`, `|ĉ₂| ≤ 8`, `|ĉ₀| ≤ 2`, so they
+/// neither overflow nor underflow in any units (`p_ψ = 1e±150`), and ratios such as the relative
+/// discriminant `(ĉ₂² − 4ĉ₄ĉ₀)/(ĉ₂² + 4|ĉ₄ĉ₀|)` equal those of the raw coefficients.
+///
+/// Errors: as [`classify`].
+pub fn f2_coefficients_scaled<M: Routhian>(
+    model: &M,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+) -> Result<([f64; 3], f64), RouthError> {
+    let parts = f2_parts(model, gamma, p_psi)?;
+    Ok((parts.scaled, parts.omega))
 }
 
 /// The linearisation on the tangent plane, `a ẍ + 2g J ẋ + c x = 0` (`a = PᵀAP`, `c = PᵀCP`,
-/// `J = [[0, 1], [−1, 0]]`), with the coefficients of its characteristic polynomial `f₂`.
+/// `J = [[0, 1], [−1, 0]]`), and the same in the scaled variables that [`classify`] works with.
+///
+/// With `α` the largest entry of `a` (positive: `a` is positive definite) and the characteristic
+/// frequency `ω = max(√(‖c‖_max/α), |g|/α)` (1 when `c` and `g` vanish), put `â = a/α`,
+/// `ĝ = g/(αω)`, `ĉ = c/(αω²)` (entries at most 1 in magnitude, formed without overflow). Then
+/// `aλ² + 2gJλ + c = αω²(âμ² + 2ĝJμ + ĉ)` with `λ = ωμ`, so
+/// `f₂(λ) = α²ω⁴ f̂₂(μ)`, `f̂₂(μ) = det(âμ² + 2ĝJμ + ĉ) = ĉ₄μ⁴ + ĉ₂μ² + ĉ₀`: the roots of `f₂` are
+/// `ω` times those of `f̂₂`, whose coefficients are O(1). The raw coefficients are O(p_ψ⁴) and
+/// overflow, with their discriminant, long before the roots do (p_ψ = 1e150 with J = O(1e150)).
 struct F2Parts {
-    coefficients: [f64; 3],
+    /// The unit γ the parts were evaluated at.
+    gamma: Vector3<f64>,
     a: Matrix2<f64>,
     g: f64,
     c: Matrix2<f64>,
+    alpha: f64,
+    omega: f64,
+    a_hat: Matrix2<f64>,
+    g_hat: f64,
+    c_hat: Matrix2<f64>,
+    /// `[ĉ₄, ĉ₂, ĉ₀]`.
+    scaled: [f64; 3],
 }
 
-/// [`f2_coefficients`] with the restricted matrices they come from.
+/// The restricted `a`, `g`, `c` of (64) and `f₂` in scaled form (see [`F2Parts`]).
 fn f2_parts<M: Routhian>(
     model: &M,
     gamma: &Vector3<f64>,
@@ -440,6 +504,9 @@ fn f2_parts<M: Routhian>(
     let gamma = unit_gamma("gamma", gamma)?;
     check_kinetic(model, &gamma)?;
     let sys = model.gyroscopic_system(&gamma, p_psi);
+    for m in [&sys.a, &sys.g, &sys.c] {
+        check_model_finite("A, G, C of (64)", m.as_slice(), &gamma)?;
+    }
     let p = tangent_basis(&gamma);
     let a = p.transpose() * sys.a * p;
     let a = 0.5 * (a + a.transpose());
@@ -447,25 +514,62 @@ fn f2_parts<M: Routhian>(
     let c = 0.5 * (c + c.transpose());
     let gm = p.transpose() * sys.g * p;
     let g = 0.5 * (gm[(0, 1)] - gm[(1, 0)]);
-    // det(aλ² + 2gJλ + c) for symmetric a, c and J = [[0, 1], [−1, 0]]: the skew part adds
-    // (2gλ)² to the determinant of the symmetric part.
-    let c4 = a.determinant();
-    let c2 =
-        a[(0, 0)] * c[(1, 1)] + a[(1, 1)] * c[(0, 0)] - 2.0 * a[(0, 1)] * c[(0, 1)] + 4.0 * g * g;
-    let c0 = c.determinant();
-    check_model_finite("coefficients of f2", &[c4, c2, c0], &gamma)?;
-    if c4 <= 0.0 {
-        // J positive definite makes PᵀAP (a Schur complement of J) positive definite.
-        return Err(RouthError::KineticNotPositiveDefinite {
-            gamma: [gamma.x, gamma.y, gamma.z],
-            min_eigenvalue: c4,
-        });
+    check_model_finite(
+        "restricted A, G, C of (64)",
+        &[a.amax(), c.amax(), g],
+        &gamma,
+    )?;
+    let singular = || RouthError::SingularReducedKinetic {
+        gamma: [gamma.x, gamma.y, gamma.z],
+        // a = PᵀAP is the gauge-fixed form ∂²R/∂Ω² + cγγᵀ of errata E4 restricted to γ^⊥ (A
+        // annihilates γ), so its smallest eigenvalue is the one that failed.
+        min_eigenvalue: sym2_eigen(&a).values[0],
+    };
+    // J positive definite makes PᵀAP (a Schur complement of J, errata E4) positive definite, so
+    // its largest entry is a positive diagonal one; anything else is a defect of the model.
+    // α = 0 fails here (a, g, c are finite), a negative definite or indefinite `a` below.
+    let alpha = a.amax();
+    if alpha == 0.0 {
+        return Err(singular());
+    }
+    let c_max = c.amax();
+    let omega_c = c_max.sqrt() / alpha.sqrt();
+    let omega_g = g.abs() / alpha;
+    let omega = omega_c.max(omega_g);
+    let omega = if omega == 0.0 { 1.0 } else { omega };
+    check_model_finite(
+        "characteristic frequency of f2 (overflow)",
+        &[omega],
+        &gamma,
+    )?;
+    let a_hat = a / alpha;
+    let g_hat = g / alpha / omega;
+    let c_hat = if c_max > 0.0 {
+        (c / c_max) * (omega_c / omega).powi(2)
+    } else {
+        Matrix2::zeros()
+    };
+    let c4 = a_hat.determinant();
+    let c2 = a_hat[(0, 0)] * c_hat[(1, 1)] + a_hat[(1, 1)] * c_hat[(0, 0)]
+        - 2.0 * a_hat[(0, 1)] * c_hat[(0, 1)]
+        + 4.0 * g_hat * g_hat;
+    let c0 = c_hat.determinant();
+    // Positive definite: a positive diagonal entry and a positive determinant (a negative
+    // definite `a` has a positive determinant too).
+    if !(a_hat[(0, 0)] > 0.0 && c4 > 0.0) {
+        return Err(singular());
     }
     Ok(F2Parts {
-        coefficients: [c4, c2, c0],
+        gamma,
         a,
         g,
         c,
+        alpha,
+        omega,
+        a_hat,
+        g_hat,
+        c_hat,
+        scaled: [c4, c2, c0],
     })
 }
 

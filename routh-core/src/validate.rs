@@ -41,7 +41,8 @@ pub(crate) fn gamma_array(gamma: &Vector3<f64>) -> [f64; 3] {
     [gamma.x, gamma.y, gamma.z]
 }
 
-/// Checks that γ is finite and `| |γ| − 1 | ≤` [`UNIT_GAMMA_TOL`]; returns `γ/|γ|`.
+/// Checks that γ is finite and `| |γ| − 1 | ≤` [`UNIT_GAMMA_TOL`] (the geometric integral (4));
+/// returns `γ/|γ|`. Both errors name the input `what`.
 pub(crate) fn unit_gamma(
     what: &'static str,
     gamma: &Vector3<f64>,
@@ -50,6 +51,7 @@ pub(crate) fn unit_gamma(
     let norm = stable_norm(gamma);
     if (norm - 1.0).abs().is_nan() || (norm - 1.0).abs() > UNIT_GAMMA_TOL {
         return Err(RouthError::NonUnitGamma {
+            what,
             norm,
             tol: UNIT_GAMMA_TOL,
         });

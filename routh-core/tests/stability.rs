@@ -468,14 +468,28 @@ fn classify_rejects_bad_input() {
     }
     let mut bad = s.clone();
     bad.gamma = Vector3::new(0.0, 0.0, 1.01);
-    assert!(matches!(
-        classify(&top, &bad),
-        Err(RouthError::NonUnitGamma { .. })
-    ));
+    let err = classify(&top, &bad).unwrap_err();
+    assert_eq!(
+        err,
+        RouthError::NonUnitGamma {
+            what: "steady.gamma",
+            norm: 1.01,
+            tol: routh_core::validate::UNIT_GAMMA_TOL,
+        }
+    );
+    assert!(
+        err.to_string()
+            .starts_with("steady.gamma must be a unit vector: |steady.gamma| = 1.01"),
+        "{err}"
+    );
     bad.gamma = Vector3::zeros();
     assert!(matches!(
         classify(&top, &bad),
-        Err(RouthError::NonUnitGamma { .. })
+        Err(RouthError::NonUnitGamma {
+            what: "steady.gamma",
+            norm: 0.0,
+            ..
+        })
     ));
     bad.gamma = Vector3::new(f64::NAN, 0.0, 1.0);
     assert!(matches!(
@@ -507,6 +521,84 @@ fn classify_rejects_bad_input() {
         classify(&indefinite, &tilted),
         Err(RouthError::KineticNotPositiveDefinite { .. })
     ));
+}
+
+/// The sleeping Lagrange top with a defective `∂²R/∂Ω²`: `factor` times the true
+/// `A = J − (Jγ)(Jγ)ᵀ/(γᵀJγ)`, which at γ = e₃ is `diag(A₁, A₁, 0)`. J itself stays positive
+/// definite, so only the reduced kinetic form is wrong.
+struct BadReducedKinetic {
+    top: HeavyTop,
+    factor: f64,
+}
+
+impl routh_core::Lagrangian for BadReducedKinetic {
+    fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+        self.top.lagrangian(w, g)
+    }
+    fn dl_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
+        self.top.dl_domega(w, g)
+    }
+    fn dl_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
+        self.top.dl_dgamma(w, g)
+    }
+    fn d2l_domega2(&self, g: &Vector3<f64>) -> Matrix3<f64> {
+        self.top.d2l_domega2(g)
+    }
+    fn d2l_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Matrix3<f64> {
+        self.top.d2l_domega_dgamma(w, g)
+    }
+}
+
+impl Routhian for BadReducedKinetic {
+    fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+        self.top.routhian(w, g, p)
+    }
+    fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        self.top.dr_domega(w, g, p)
+    }
+    fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+        self.top.dr_dgamma(w, g, p)
+    }
+    fn d2r_domega2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        self.factor * self.top.d2r_domega2(w, g, p)
+    }
+    fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        self.top.d2r_domega_dgamma(w, g, p)
+    }
+    fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+        self.top.d2r_dgamma2(w, g, p)
+    }
+}
+
+#[test]
+fn a_reduced_kinetic_form_that_is_not_positive_definite_is_reported_as_such() {
+    // PᵀAP = factor·A₁·E on the tangent plane of e₃: its smallest eigenvalue is factor·A₁ (not
+    // det(PᵀAP) = factor²·A₁², which the error used to carry).
+    let a1 = 2.0;
+    for factor in [-1.5, 0.0] {
+        let bad = BadReducedKinetic {
+            top: HeavyTop::lagrange(a1, 1.0, 1.0),
+            factor,
+        };
+        let s = SteadyMotion::at(&bad, Vector3::z(), 3.0, true).unwrap();
+        match classify(&bad, &s) {
+            Err(RouthError::SingularReducedKinetic {
+                gamma,
+                min_eigenvalue,
+            }) => {
+                assert_eq!(gamma, [0.0, 0.0, 1.0]);
+                assert!(
+                    (min_eigenvalue - factor * a1).abs() <= 1e-15 * a1,
+                    "factor {factor}: {min_eigenvalue}"
+                );
+            }
+            other => panic!("factor {factor}: expected SingularReducedKinetic, got {other:?}"),
+        }
+        assert!(matches!(
+            f2_coefficients(&bad, &Vector3::z(), 3.0),
+            Err(RouthError::SingularReducedKinetic { .. })
+        ));
+    }
 }
 
 #[test]

@@ -28,23 +28,63 @@ fn roots_in_z(f: impl Fn(f64) -> f64) -> Vec<f64> {
     test_models::roots::bracketed_roots(f, &zs, 1e-9)
 }
 
-/// Checks the general properties of every steady motion: unit γ, critical point of U_r (33),
-/// ψ̇ by (15), μ = (∂R/∂γ, γ), U_r = −R(0, γ, p), Theorem 2 (E = U_r), sorted by U_r.
+/// Checks the general properties of every steady motion against computations that `record`
+/// does not make: unit γ, critical point of U_r (33); ψ̇ = −∂R/∂p_ψ (15) by a central difference
+/// of R itself; U_r by (40) generalised, ½(p_ψ − a·γ)²/(γᵀJγ) + U, from the Lagrangian alone
+/// (a·γ = (∂L/∂ω(0, γ), γ), U = −L(0, γ), J = ∂²L/∂ω²); μ by (19) from the Lagrangian at
+/// ω = ψ̇γ: ∂R/∂γ = ∂L/∂γ + ψ̇ ∂L/∂ω; Theorem 2 (E = U_r); the cyclic momentum (9) of the full
+/// system at ω = ψ̇γ; sorted by U_r.
 fn check_records<M: Routhian>(model: &M, p: f64, motions: &[SteadyMotion]) {
     let zero = Vector3::zeros();
     for s in motions {
-        assert!((s.gamma.norm() - 1.0).abs() < 1e-14, "{s}");
-        let dr = model.dr_dgamma(&zero, &s.gamma, p);
-        let scale = dr.norm().max(model.d2r_dgamma2(&zero, &s.gamma, p).norm());
-        let tangential = dr - dr.dot(&s.gamma) * s.gamma;
+        let g = s.gamma;
+        assert!((g.norm() - 1.0).abs() < 1e-14, "{s}");
+        let dr = model.dr_dgamma(&zero, &g, p);
+        let scale = dr.norm().max(model.d2r_dgamma2(&zero, &g, p).norm());
+        let tangential = dr - dr.dot(&g) * g;
         assert!(
             tangential.norm() <= 1e-10 * scale,
             "not critical: {s}, |grad| = {:e}",
             tangential.norm()
         );
-        assert!((s.mu - dr.dot(&s.gamma)).abs() <= 1e-12 * scale);
-        assert_eq!(s.psi_dot, model.psi_dot(&zero, &s.gamma, p));
-        assert_eq!(s.amended_potential, -model.routhian(&zero, &s.gamma, p));
+        // (15) against R: R is quadratic in p_ψ ((39): it enters only through −½(p_ψ − q)²/D),
+        // so the central difference is exact for any step but for the round-off of R, a few
+        // ε·|R|/h.
+        let h = 0.5 * p.abs().max(1.0);
+        let (r_plus, r_minus) = (
+            model.routhian(&zero, &g, p + h),
+            model.routhian(&zero, &g, p - h),
+        );
+        let psi_dot_fd = -(r_plus - r_minus) / (2.0 * h);
+        let fd_round_off = 64.0 * f64::EPSILON * (r_plus.abs() + r_minus.abs()) / (2.0 * h);
+        assert!(
+            (s.psi_dot - psi_dot_fd).abs() <= fd_round_off.max(1e-14 * psi_dot_fd.abs()),
+            "ψ̇ = {} vs −∂R/∂p by central difference {psi_dot_fd}: {s}",
+            s.psi_dot
+        );
+        // (40) generalised, from L only.
+        let a_gamma = model.dl_domega(&zero, &g).dot(&g);
+        let d = g.dot(&(model.d2l_domega2(&g) * g));
+        let u = -model.lagrangian(&zero, &g);
+        let centrifugal = 0.5 * (p - a_gamma).powi(2) / d;
+        let u_r = centrifugal + u;
+        assert!(
+            (s.amended_potential - u_r).abs() <= 1e-12 * centrifugal.abs().max(u.abs()),
+            "U_r = {} vs (40) {u_r}: {s}",
+            s.amended_potential
+        );
+        // (19) at Ω = 0, ω = ψ̇γ, with ψ̇ = (p_ψ − a·γ)/(γᵀJγ) (38) from L.
+        let psi_dot = (p - a_gamma) / d;
+        let w = psi_dot * g;
+        let dl_dw = model.dl_domega(&w, &g);
+        let dl_dg = model.dl_dgamma(&w, &g);
+        let mu = (dl_dg + psi_dot * dl_dw).dot(&g);
+        let mu_scale = scale.max(dl_dg.norm()).max((psi_dot * dl_dw).norm());
+        assert!(
+            (s.mu - mu).abs() <= 1e-12 * mu_scale,
+            "μ = {} vs (19) {mu}: {s}",
+            s.mu
+        );
         let e_scale = s.amended_potential.abs().max(scale);
         assert!(
             (s.energy - s.amended_potential).abs() <= 1e-12 * e_scale,
@@ -138,6 +178,25 @@ fn euler_characteristic<M: Routhian>(model: &M, p: f64, what: &str) -> (i64, usi
 // ---------------------------------------------------------------------------------------------
 // Symmetric bodies: circles of steady motions.
 
+/// ψ̇, μ and U_r of every steady motion of the Lagrange top in closed form: with γ₃ = z and
+/// n = A₁(1 − z²) + Cz² = γᵀJγ, ψ̇ = p/n (38), U_r = ½p²/n + mgl z (40), and from
+/// ∂R/∂γ = −mgl e₃ + (p²/n²)Jγ at Ω = 0 (39), μ = p²/n − mgl z (32)–(33). The sleeping top
+/// (z = 1) has ψ̇ = p/C, U_r = ½p²/C + mgl, μ = p²/C − mgl.
+fn check_lagrange_closed_forms(a1: f64, c: f64, mgl: f64, p: f64) {
+    let top = HeavyTop::lagrange(a1, c, mgl);
+    for s in steady_motions(&top, p).unwrap() {
+        let z = s.gamma.z;
+        let n = a1 * (1.0 - z * z) + c * z * z;
+        let tol = 1e-12 * (p * p / n + mgl);
+        assert!((s.psi_dot - p / n).abs() <= 1e-12 * p / n, "{s}");
+        assert!(
+            (s.amended_potential - (0.5 * p * p / n + mgl * z)).abs() <= tol,
+            "{s}"
+        );
+        assert!((s.mu - (p * p / n - mgl * z)).abs() <= tol, "{s}");
+    }
+}
+
 #[test]
 fn lagrange_top_poles_and_circles_of_tilted_precessions() {
     let mut total = 0;
@@ -150,6 +209,7 @@ fn lagrange_top_poles_and_circles_of_tilted_precessions() {
                 p * p * (a1 - c) * z / (n * n) + mgl
             };
             total += check_symmetric(&top, p, du, "Lagrange top");
+            check_lagrange_closed_forms(a1, c, mgl, p);
         }
     }
     assert!(total >= 3, "too few circles exercised: {total}");
@@ -321,7 +381,11 @@ fn steady_motion_near_refines_a_guess() {
     assert!((t.gamma.z - circle.gamma.z).abs() < 1e-9);
     assert!(matches!(
         steady_motion_near(&top, Vector3::zeros(), 3.0),
-        Err(RouthError::NonUnitGamma { .. })
+        Err(RouthError::NonUnitGamma {
+            what: "gamma_guess",
+            norm: 0.0,
+            ..
+        })
     ));
 }
 

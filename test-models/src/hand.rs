@@ -326,8 +326,20 @@ mod tests {
                 );
                 worst = worst.max(e);
             }
-            // (15) and the symmetry of both Hessian blocks that must be symmetric.
-            assert_eq!(got.dr_dp, -got.psi_dot);
+            // ∂R/∂p_ψ (15) against R itself: R is a quadratic polynomial in p_ψ ((39): p_ψ enters
+            // only through −½(p_ψ − q)²/s), so the central difference with any step h is exact
+            // but for the round-off of the two values of R, a few ε·|R|/h.
+            let h = 0.5;
+            let r_plus = hand_gyrostat_bundle(&model, &omega, &gamma, p + h).routhian;
+            let r_minus = hand_gyrostat_bundle(&model, &omega, &gamma, p - h).routhian;
+            let fd = (r_plus - r_minus) / (2.0 * h);
+            let round_off = 16.0 * f64::EPSILON * (r_plus.abs() + r_minus.abs()) / (2.0 * h);
+            assert!(
+                (got.dr_dp - fd).abs() <= round_off.max(1e-14 * fd.abs()),
+                "point {k}: dR/dp = {} vs central difference {fd}",
+                got.dr_dp
+            );
+            // The symmetry of both Hessian blocks that must be symmetric.
             assert_eq!(got.d2r_domega2, got.d2r_domega2.transpose());
             assert_eq!(got.d2r_dgamma2, got.d2r_dgamma2.transpose());
             assert_eq!(sys.c, sys.c.transpose());

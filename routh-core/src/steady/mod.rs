@@ -140,6 +140,15 @@ impl SearchOptions {
 /// Curves of steady motions (bodies with a symmetry) are reported once, with `isolated: false`
 /// (errata E8).
 ///
+/// **The list is the result of a search, and its completeness is self-checked, but this
+/// function does not return the check.** The search sums the indices of the critical points it
+/// found and compares the sum with the Euler characteristic χ(S²) = 2 (Poincaré–Hopf; see
+/// *Self-check* below). [`steady_motions_checked`] returns the same motions together with that
+/// sum ([`SearchResult::euler_characteristic`]) and whether it is reconciled
+/// ([`SearchResult::consistent`]). Use it whenever the number of steady motions matters: a
+/// `consistent: false` means that critical points were probably missed or mis-merged, and this
+/// function returns such a list without saying so.
+///
 /// # Geometry on the sphere
 ///
 /// γ is an unconstrained vector of ℝ³ when the model differentiates (docs/errata.md, convention), so the
@@ -180,7 +189,9 @@ impl SearchOptions {
 /// derivatives enter only as a round-off floor: `g` and `K` are differences of terms of size
 /// `|∂R/∂γ|` and `s_raw = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`, so below `1024 ε` of those they are zero.
 /// There is no scale taken over the sphere, so flat regions (e.g. `U = e^{15γ₃}` near the south
-/// pole) are treated exactly as steep ones.
+/// pole) are treated exactly as steep ones. Norms and the Newton systems are formed in scaled
+/// arithmetic, so derivatives of any magnitude up to about `1e300` work (`p_ψ = 1e150` with
+/// `J = O(1)`, where `U_r ≈ ½p_ψ²/(γᵀJγ)`).
 /// - An eigenvalue κ of `K` is zero when `|κ| ≤ max(`[`SearchOptions::zero_eigenvalue_tol`]` ·
 ///   ‖K‖_F, 1024 ε · s_raw)`: the same test as [`classify`](crate::classify).
 /// - The *Newton step* `ξ = −K⁻¹g` (radians; eigenvalues below the zero threshold replaced by it)
@@ -211,7 +222,8 @@ impl SearchOptions {
 /// level (e.g. `γ₃ = ±z` for a body symmetric under `γ₃ → −γ₃`) are two curves. A point with two
 /// zero eigenvalues is a two-dimensional critical set only if the gradient vanishes within
 /// round-off at four neighbours 0.01 rad away (e.g. `U_r` constant; reported once per level, with
-/// `isolated: false`); otherwise it is a higher-order isolated point (`x⁴ + y⁴` at its minimum),
+/// `isolated: false`; every such point is tested, lying on the level of a known set is not
+/// enough); otherwise it is a higher-order isolated point (`x⁴ + y⁴` at its minimum),
 /// reported once with `isolated: true`, and [`classify`](crate::classify) calls it
 /// [`Stability::Degenerate`](crate::Stability) unless `f₂` proves an instability.
 ///
@@ -388,6 +400,7 @@ pub fn steady_motion_near<M: Routhian>(
     let norm = stable_norm(&gamma_guess);
     if norm == 0.0 {
         return Err(RouthError::NonUnitGamma {
+            what: "gamma_guess",
             norm,
             tol: crate::validate::UNIT_GAMMA_TOL,
         });

@@ -335,13 +335,15 @@ impl Found {
                 None => self.isolated.push(loc),
             },
             _ => {
-                if self.planar.iter().any(|q| same_level(q, &loc)) {
-                    return;
-                }
+                // Only a point proven to lie in a two-dimensional critical set joins one: being
+                // on the level of a known set is not enough (a higher-order isolated point, or a
+                // point of the boundary of a flat region, can share its level).
                 if search.is_planar(&loc) {
                     // The whole neighbourhood is critical (e.g. U_r constant): one representative
                     // per level.
-                    self.planar.push(loc);
+                    if !self.planar.iter().any(|q| same_level(q, &loc)) {
+                        self.planar.push(loc);
+                    }
                 } else {
                     // A higher-order isolated critical point (e.g. x⁴ + y⁴ at its minimum).
                     self.isolated.push(loc);
@@ -538,8 +540,17 @@ impl<M: Routhian> Search<'_, M> {
             } else {
                 MAX_LM_RETRIES
             };
-            let kmax2 = cur.t.values[0].powi(2).max(cur.t.values[1].powi(2));
-            let lambda_min = (ROUND * cur.t.raw).powi(2);
+            // The system is solved in units of the largest |eigenvalue| of K, and λ is
+            // relative to its square, so that K² cannot overflow (K of order 1e300 at
+            // p_ψ = 1e150 in units of the inertia) or underflow.
+            let kmax = cur.t.values[0].abs().max(cur.t.values[1].abs());
+            let unit = if kmax > 0.0 && kmax.is_finite() {
+                kmax
+            } else {
+                1.0
+            };
+            let kmax2 = (kmax / unit).powi(2);
+            let lambda_min = (ROUND * cur.t.raw / unit).powi(2);
             let mut accepted = None;
             for _ in 0..retries {
                 // (K² + λE) ξ = −K g in the eigenbasis of K.
@@ -553,6 +564,7 @@ impl<M: Routhian> Search<'_, M> {
                     if k.abs() <= cur.t.zero_tol && gi.abs() <= cur.t.grad_floor() {
                         continue;
                     }
+                    let (k, gi) = (k / unit, gi / unit);
                     let den = k * k + lambda;
                     if den > 0.0 {
                         xi -= (k * gi / den) * v;
@@ -609,7 +621,7 @@ impl<M: Routhian> Search<'_, M> {
             let t = loc.t.basis * Vector2::new(a.cos(), a.sin());
             let g = (loc.gamma * PLANAR_PROBE.cos() + t * PLANAR_PROBE.sin()).normalize();
             self.local(&g)
-                .is_some_and(|n| n.t.grad.norm() <= n.t.grad_floor() && same_level(&n, loc))
+                .is_some_and(|n| n.t.grad_norm <= n.t.grad_floor() && same_level(&n, loc))
         })
     }
 
@@ -629,7 +641,7 @@ impl<M: Routhian> Search<'_, M> {
             let t = loc.t.basis * Vector2::new(a.cos(), a.sin());
             let g = (loc.gamma * r.cos() + t * r.sin()).normalize();
             let n = self.local(&g)?;
-            if n.t.grad.norm() <= 4.0 * n.t.grad_floor() {
+            if n.t.grad_norm <= 4.0 * n.t.grad_floor() {
                 return None;
             }
             let w = loc.t.basis.transpose() * n.grad3();
