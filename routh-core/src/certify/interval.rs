@@ -369,7 +369,7 @@ mod tests {
     /// Points spread over an interval, endpoints included.
     fn samples(x: Interval) -> Vec<f64> {
         (0..=16)
-            .map(|k| x.lo + (x.hi - x.lo) * f64::from(k) / 16.0)
+            .map(|k| (x.lo + (x.hi - x.lo) * f64::from(k) / 16.0).clamp(x.lo, x.hi))
             .collect()
     }
 
