@@ -21,7 +21,7 @@ use nalgebra::{Matrix2, Matrix2x3, Matrix3, Matrix3x2, Vector2, Vector3};
 use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::sphere::{restricted_hessian, sym2_eigen, tangent_basis};
-use crate::stability::f2_coefficients;
+use crate::stability::f2_coefficients_scaled;
 use crate::validate::{check_finite, check_kinetic, check_model_finite};
 
 /// The family member at `s`, with errors that name `s`.
@@ -179,7 +179,8 @@ pub(crate) fn relative_discriminant<M: Routhian>(
     gamma: &Vector3<f64>,
     p: f64,
 ) -> Result<f64, RouthError> {
-    let [c4, c2, c0] = f2_coefficients(model, gamma, p)?;
+    // The scaled coefficients have the same ratios and never overflow (p_ψ = 1e±150).
+    let ([c4, c2, c0], _) = f2_coefficients_scaled(model, gamma, p)?;
     let big = c2.abs().max(c4.abs()).max(c0.abs());
     if big == 0.0 {
         return Ok(0.0);
