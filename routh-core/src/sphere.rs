@@ -57,7 +57,9 @@ pub(crate) struct Tangential {
     /// `max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`: the size of the terms whose difference is `K`.
     pub raw: f64,
     /// The threshold under which an eigenvalue of `K` is zero: `rel · ‖K‖_F` (`rel` the relative
-    /// zero-eigenvalue tolerance), never below the round-off floor [`ROUND`]` · raw`.
+    /// zero-eigenvalue tolerance), never below the round-off floor [`ROUND`]` ·
+    /// max(|μ|, ‖PᵀHP‖_F, 64ε‖H‖_F)` — the size of the terms `K = μE − PᵀHP` is the difference
+    /// of (H = ∂²R/∂γ²).
     pub zero_tol: f64,
     /// The Newton step `−K⁻¹g` in the tangent plane (radians), with the eigenvalues of `K` below
     /// `zero_tol` replaced by that threshold (and a component of `g` within round-off along them
@@ -102,7 +104,14 @@ impl Tangential {
         let raw = raw_grad.max(hnorm);
         let grad = -(basis.transpose() * dr_dgamma);
         let grad_norm = norm3(grad.x, grad.y, 0.0);
-        let zero_tol = (rel * knorm).max(ROUND * raw);
+        // The round-off of K = μE − PᵀHP is a few ulps of the two terms it is the difference
+        // of (with c|γ|² added to U both carry 2c, and so does the floor), plus the error of the
+        // basis P (orthonormal to γ within ε) times H: not the radial part of H, which K never
+        // sees — at a higher-order point with a large radial Hessian (U = (1 + γ₃)² at −e₃) a
+        // floor of ε‖H‖ would call K = 0 long before the point is reached.
+        let pth = hnorm_tangential(&basis, d2r_dgamma2);
+        let k_terms = mu.abs().max(pth).max(64.0 * f64::EPSILON * hnorm);
+        let zero_tol = (rel * knorm).max(ROUND * k_terms);
         let gf = ROUND * raw_grad;
         let mut step = Vector2::zeros();
         for i in 0..2 {
@@ -167,6 +176,16 @@ impl Tangential {
             .filter(|k| k.abs() <= self.zero_tol)
             .count()
     }
+}
+
+/// `‖PᵀHP‖_F`, the tangential block of a symmetric 3×3 `H`, without overflow.
+fn hnorm_tangential(basis: &Matrix3x2<f64>, h: &Matrix3<f64>) -> f64 {
+    let scale = h.amax();
+    if scale == 0.0 || !scale.is_finite() {
+        return scale;
+    }
+    let t = basis.transpose() * (h / scale) * basis;
+    scale * t.norm()
 }
 
 /// `|(x, y, z)|` without the cost of scaling when no overflow or underflow is possible.

@@ -793,3 +793,43 @@ fn a_flat_cap_does_not_swallow_a_point_on_its_level() {
     assert_eq!(r.euler_characteristic, None);
     assert!(!r.consistent);
 }
+
+/// A higher-order point with a large radial Hessian: U = (1 + γ₃)ⁿ (n = 2, 3) is flat to order
+/// 2n at the pole −e₃ while ∂²U/∂γ₃² = 2 there (n = 2). On the sphere (1 + γ₃) = 1 − cos θ, so
+/// the critical points are the poles only (dU/dθ = n(1 − cos θ)ⁿ⁻¹ sin θ): the search must
+/// return each pole once, and its Euler-characteristic check must agree (the index of the
+/// degenerate minimum −e₃ is +1, of the maximum e₃ is +1).
+#[test]
+fn a_higher_order_point_with_a_radial_hessian_is_one_point() {
+    for n in [2i32, 3] {
+        let u: Potential = Box::new(move |g: &Vector3<f64>| {
+            let s = 1.0 + g.z;
+            let nf = f64::from(n);
+            (
+                s.powi(n),
+                Vector3::new(0.0, 0.0, nf * s.powi(n - 1)),
+                Matrix3::new(
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    nf * (nf - 1.0) * s.powi(n - 2),
+                ),
+            )
+        });
+        let body = Body::diag(1.0, 1.0, 1.0, u);
+        let r = steady_motions_checked(&body, 0.0).unwrap();
+        assert_eq!(r.motions.len(), 2, "n = {n}: {:?}", r.motions.len());
+        assert!(r.consistent, "n = {n}");
+        for pole in [Vector3::z(), -Vector3::z()] {
+            assert!(
+                r.motions.iter().any(|m| (m.gamma - pole).norm() < 1e-3),
+                "n = {n}"
+            );
+        }
+    }
+}

@@ -39,6 +39,9 @@ const STOP_FACTOR: f64 = 1e-2;
 /// Newton converges linearly with ratio `(n−2)/(n−1)` to a critical point of order `n`, whose
 /// distance is then `(n−1)` times the last step: 8 covers `n ≤ 9`.
 const MERGE_FACTOR: f64 = 8.0;
+/// Degenerate points on one level within this distance (radians) are one critical point: about
+/// 64√ε, beyond the round-off plateau of a higher-order point (see `same_point`).
+const FLAT_RADIUS: f64 = 1e-6;
 /// An iterate of a grid start joins a known non-degenerate critical point `p` within this distance
 /// (radians) when its Newton step lands within [`GRID_CAPTURE`] of its distance to `p`
 /// (quadratic convergence towards `p` is under way).
@@ -278,9 +281,16 @@ fn same_level(a: &Local, b: &Local) -> bool {
 
 /// Whether two converged points are the same critical point: closer than [`MERGE_FACTOR`] times
 /// the sum of their estimated distances to it.
+///
+/// Two degenerate points on the same level closer than [`FLAT_RADIUS`] are also one: near a
+/// higher-order point the model is flat to round-off on a cap of about `√ε` (U = (1 + γ₃)² at
+/// −e₃: `1 + γ₃ = θ²/2` is 0 in floating point for θ below 1e−8), every point of it is a zero of
+/// the computed gradient with a Newton step of 0, and copies landing anywhere on the cap would
+/// otherwise each count as a critical point.
 fn same_point(a: &Local, b: &Local) -> bool {
     let d = (a.gamma - b.gamma).norm();
     d <= MERGE_FACTOR * (a.radius() + b.radius()) + 8.0 * f64::EPSILON
+        || (d <= FLAT_RADIUS && a.degenerate() && b.degenerate() && same_level(a, b))
 }
 
 /// The critical points found so far by [`global`].
