@@ -61,8 +61,8 @@ pub mod plot;
 pub mod __private {
     pub use core::primitive::f64;
     pub use core::primitive::i32;
-    pub use routh_core::nalgebra::{Matrix3, Vector3};
     pub use routh_core::certify::RouthTape;
+    pub use routh_core::nalgebra::{Matrix3, Vector3};
     pub use routh_core::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
 
     /// What `Routhian::certification_tape` returns.
