@@ -6,12 +6,11 @@
 //! `GyroscopicSystem::from_bundle` (A, G, C). One iteration is one evaluation, cycling through 64
 //! precomputed random points, so criterion's time per iteration is ns/eval.
 //!
-//! - `M1_gyrostat/{generated,hand,hand_fused,numdual}`: gyrostat with full symmetric I, K,
-//!   general B, U = m g r·γ; `hand` is `test_models::hand_gyrostat_bundle` (the baseline of the
-//!   generated `bundle`: the same work, then the same `from_bundle`), `hand_fused` is
-//!   `test_models::hand_gyrostat_system` (the hand bundle with A, G, C in closed form instead of
-//!   `from_bundle`: every output written by hand), `numdual` is `test_models::numdual_bundle`
-//!   (one second-order num-dual Hessian over (Ω, γ)).
+//! - `M1_gyrostat/{generated,hand,numdual}`: gyrostat with full symmetric I, K, general B,
+//!   U = m g r·γ; `hand` is `test_models::hand_gyrostat_system` (every output of the bundle
+//!   written out by hand, then the same `from_bundle`, whose A, G, C are the closed form that
+//!   used to be written by hand beside it: the baseline of the generated `bundle`), `numdual` is
+//!   `test_models::numdual_bundle` (one second-order num-dual Hessian over (Ω, γ)).
 //! - `M2_ellipsoid/{generated,numdual}`: heavy ellipsoid on a plane with diagonal I.
 //!
 //! After criterion, `same-run ratios` times every variant again in this process (interleaved,
@@ -25,7 +24,7 @@ use std::time::Instant;
 use common::Point;
 use criterion::{criterion_group, BenchmarkGroup, Criterion};
 use routh::{GyroscopicSystem, RouthBundle, Routhian};
-use test_models::{hand_gyrostat_bundle, hand_gyrostat_system, numdual_bundle};
+use test_models::{hand_gyrostat_system, numdual_bundle};
 
 const N_POINTS: usize = 64;
 
@@ -67,12 +66,6 @@ impl Setup {
         with_system(self.m1.bundle(&pt.big_omega, &pt.gamma, pt.p_psi), pt)
     }
     fn m1_hand(&self, pt: &Point) -> Output {
-        with_system(
-            hand_gyrostat_bundle(&self.m1_twin, &pt.big_omega, &pt.gamma, pt.p_psi),
-            pt,
-        )
-    }
-    fn m1_hand_fused(&self, pt: &Point) -> Output {
         hand_gyrostat_system(&self.m1_twin, &pt.big_omega, &pt.gamma, pt.p_psi)
     }
     fn m1_numdual(&self, pt: &Point) -> Output {
@@ -123,7 +116,6 @@ impl Setup {
             let m1 = self.m1_numdual(pt);
             assert_close("M1 generated", &self.m1_generated(pt), &m1);
             assert_close("M1 hand", &self.m1_hand(pt), &m1);
-            assert_close("M1 hand_fused", &self.m1_hand_fused(pt), &m1);
             assert_close("M2 generated", &self.m2_generated(pt), &self.m2_numdual(pt));
         }
     }
@@ -133,10 +125,9 @@ impl Setup {
 type Eval = fn(&Setup, &Point) -> Output;
 type Variant = (&'static str, Eval);
 
-const M1_VARIANTS: [Variant; 4] = [
+const M1_VARIANTS: [Variant; 3] = [
     ("generated", Setup::m1_generated),
     ("hand", Setup::m1_hand),
-    ("hand_fused", Setup::m1_hand_fused),
     ("numdual", Setup::m1_numdual),
 ];
 const M2_VARIANTS: [Variant; 2] = [
@@ -228,7 +219,6 @@ fn same_run_ratios() {
     }
     for (label, num, den) in [
         ("M1 generated / hand    ", "M1 generated", "M1 hand"),
-        ("M1 generated / fused   ", "M1 generated", "M1 hand_fused"),
         ("M2 num-dual / generated", "M2 numdual", "M2 generated"),
         ("M1 num-dual / generated", "M1 numdual", "M1 generated"),
     ] {

@@ -24,10 +24,11 @@
 //! `∂R/∂γ` needs; only the upper triangles of the symmetric `I`, `∂²R/∂Ω²` and `∂²R/∂γ²` are
 //! formed.
 //!
-//! [`hand_gyroscopic_system`] writes A, G, C of (64) in closed form from a bundle (any model):
-//! differentiating (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω` (`M = ∂²R/∂Ω∂γ`), and
-//! `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for any `M`, so `2G = (tr M)[γ]×`; `C` is the symmetric
-//! sandwich `[γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with the zeros of `[γ]×` skipped.
+//! A, G, C of (64) come from [`GyroscopicSystem::from_bundle`], which writes them in closed form
+//! for any model: differentiating (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω`
+//! (`M = ∂²R/∂Ω∂γ`), and `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for any `M`, so `2G = (tr M)[γ]×`;
+//! `C` is the symmetric sandwich `[γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with the zeros of `[γ]×` skipped.
+//! (That closed form was first written here, by hand; it now serves every model.)
 
 use nalgebra::{Matrix3, Vector3};
 use routh_core::{GyroscopicSystem, RouthBundle};
@@ -176,57 +177,6 @@ pub fn hand_gyrostat_bundle(
     }
 }
 
-/// A, G, C of (64) from a bundle at `γ`, in closed form (equal to
-/// [`GyroscopicSystem::from_bundle`] up to round-off, for any model): `A = ∂²R/∂Ω²`,
-/// `G = ½ tr(∂²R/∂Ω∂γ) [γ]×` (module documentation) and `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×`,
-/// `μ = (∂R/∂γ, γ)`, written entry by entry (upper triangle, no products with the zeros of
-/// `[γ]×`).
-#[inline]
-pub fn hand_gyroscopic_system(bundle: &RouthBundle, gamma: &Vector3<f64>) -> GyroscopicSystem {
-    let (g0, g1, g2) = (gamma.x, gamma.y, gamma.z);
-    let m = &bundle.d2r_domega_dgamma;
-    let half_tr = 0.5 * (m[(0, 0)] + m[(1, 1)] + m[(2, 2)]);
-    let (x0, x1, x2) = (half_tr * g0, half_tr * g1, half_tr * g2);
-    #[rustfmt::skip]
-    let g = Matrix3::new(
-        0.0, -x2, x1,
-        x2, 0.0, -x0,
-        -x1, x0, 0.0,
-    );
-    // K = μE − H (symmetric); Y = K[γ]× (Y₀₀ is never read); C = [γ]×ᵀY.
-    let h = &bundle.d2r_dgamma2;
-    let mu = bundle.dr_dgamma.x * g0 + bundle.dr_dgamma.y * g1 + bundle.dr_dgamma.z * g2;
-    let (k00, k01, k02) = (mu - h[(0, 0)], -h[(0, 1)], -h[(0, 2)]);
-    let (k11, k12, k22) = (mu - h[(1, 1)], -h[(1, 2)], mu - h[(2, 2)]);
-    // Columns of [γ]×: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0).
-    let y01 = k02 * g0 - k00 * g2;
-    let y02 = k00 * g1 - k01 * g0;
-    let y10 = k11 * g2 - k12 * g1;
-    let y11 = k12 * g0 - k01 * g2;
-    let y12 = k01 * g1 - k11 * g0;
-    let y20 = k12 * g2 - k22 * g1;
-    let y21 = k22 * g0 - k02 * g2;
-    let y22 = k02 * g1 - k12 * g0;
-    // Rows of [γ]×ᵀ: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0).
-    let c00 = g2 * y10 - g1 * y20;
-    let c01 = g2 * y11 - g1 * y21;
-    let c02 = g2 * y12 - g1 * y22;
-    let c11 = g0 * y21 - g2 * y01;
-    let c12 = g0 * y22 - g2 * y02;
-    let c22 = g1 * y02 - g0 * y12;
-    #[rustfmt::skip]
-    let c = Matrix3::new(
-        c00, c01, c02,
-        c01, c11, c12,
-        c02, c12, c22,
-    );
-    GyroscopicSystem {
-        a: bundle.d2r_domega2,
-        g,
-        c,
-    }
-}
-
 /// Every output of the gyrostat at `(Ω, γ, p_ψ)` and A, G, C of (64) there: the hand-written
 /// counterpart of `bundle` followed by [`GyroscopicSystem::from_bundle`].
 #[inline]
@@ -237,7 +187,7 @@ pub fn hand_gyrostat_system(
     p_psi: f64,
 ) -> (RouthBundle, GyroscopicSystem) {
     let bundle = hand_gyrostat_bundle(m, big_omega, gamma, p_psi);
-    let system = hand_gyroscopic_system(&bundle, gamma);
+    let system = GyroscopicSystem::from_bundle(&bundle, gamma);
     (bundle, system)
 }
 
