@@ -6,13 +6,16 @@
 //! and the restricted form `K`, see [`Tangential`]) with each other, never with a scale taken over
 //! the whole sphere, and never with the raw `∂R/∂γ`, `∂²R/∂γ²` except as a round-off floor.
 
-use nalgebra::{Matrix3, SymmetricEigen, Vector2, Vector3};
+use nalgebra::{Vector2, Vector3};
 
 use super::SearchOptions;
 use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::sphere::{fibonacci_sphere, tangent_basis, Tangential, NOISE, ROUND};
 use crate::validate::check_kinetic;
+
+mod curves;
+use curves::{curve_axis, Curve};
 
 /// Two values of `U_r` are equal when they differ by at most this much relative to the larger of
 /// `|U_r|` and the raw scale (round-off in `U_r` is a few `ε` of the terms that form it).
@@ -436,59 +439,6 @@ impl Found {
     }
 }
 
-/// The unit normal of the least-squares plane through `vertices` (the axis of a circle on the
-/// sphere), if there are at least three.
-fn curve_axis(vertices: &[Vector3<f64>]) -> Option<Vector3<f64>> {
-    if vertices.len() < 3 {
-        return None;
-    }
-    let mean: Vector3<f64> = vertices.iter().sum::<Vector3<f64>>() / vertices.len() as f64;
-    let cov: Matrix3<f64> = vertices
-        .iter()
-        .map(|v| (v - mean) * (v - mean).transpose())
-        .sum();
-    let eig = SymmetricEigen::try_new(cov, f64::EPSILON, 1000)?;
-    let k = eig.eigenvalues.imin();
-    let n = eig.eigenvectors.column(k).into_owned();
-    (n.iter().all(|x| x.is_finite()) && n.norm() > 0.0).then(|| n.normalize())
-}
-
-/// A traced curve of non-isolated critical points.
-struct Curve {
-    start: Local,
-    /// Vertices in order along the curve (the trace may have gone both ways from the start: the
-    /// vertices of the second direction then follow those of the first, reversed at the seam).
-    vertices: Vec<Vector3<f64>>,
-    closed: bool,
-    step: f64,
-}
-
-impl Curve {
-    /// Whether `loc` lies on this curve: degenerate, same level of `U_r` and within `h/2` of the
-    /// polyline through the traced vertices (closed when the trace came back to its start).
-    fn contains(&self, loc: &Local) -> bool {
-        // A point of a curve of critical points has a zero eigenvalue; a non-degenerate point
-        // close to a small curve (the pole inside a small circle) is not on it.
-        if !same_level(&self.start, loc) || !loc.degenerate() {
-            return false;
-        }
-        let n = self.vertices.len();
-        let segments = if self.closed { n } else { n.saturating_sub(1) };
-        let near = |a: &Vector3<f64>, b: &Vector3<f64>| {
-            let ab = b - a;
-            let len2 = ab.norm_squared();
-            let t = if len2 > 0.0 {
-                ((loc.gamma - a).dot(&ab) / len2).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            (a + t * ab - loc.gamma).norm() <= 0.5 * self.step
-        };
-        (n == 1 && near(&self.vertices[0], &self.vertices[0]))
-            || (0..segments).any(|i| near(&self.vertices[i], &self.vertices[(i + 1) % n]))
-    }
-}
-
 /// The end of one Newton iteration.
 enum Refined {
     /// A critical point.
@@ -633,141 +583,5 @@ impl<M: Routhian> Search<'_, M> {
             self.local(&g)
                 .is_some_and(|n| n.t.grad_norm <= n.t.grad_floor() && same_level(&n, loc))
         })
-    }
-
-    /// The index of the degenerate isolated critical point `loc`: the winding number of the
-    /// gradient on the circle of radius `min(r, INDEX_RADIUS)` around it. `None` when the gradient
-    /// vanishes (within round-off) somewhere on the circle or turns too fast to be followed.
-    fn index(&self, loc: &Local, r: f64) -> Option<i64> {
-        let r = r.min(INDEX_RADIUS);
-        if r.is_nan() || r <= 0.0 {
-            return None;
-        }
-        let mut total = 0.0;
-        let mut first = None;
-        let mut last: Option<f64> = None;
-        for k in 0..=INDEX_SAMPLES {
-            let a = 2.0 * std::f64::consts::PI * (k % INDEX_SAMPLES) as f64 / INDEX_SAMPLES as f64;
-            let t = loc.t.basis * Vector2::new(a.cos(), a.sin());
-            let g = (loc.gamma * r.cos() + t * r.sin()).normalize();
-            let n = self.local(&g)?;
-            if n.t.grad_norm <= 4.0 * n.t.grad_floor() {
-                return None;
-            }
-            let w = loc.t.basis.transpose() * n.grad3();
-            let angle = w.y.atan2(w.x);
-            if let Some(prev) = last {
-                let mut d = angle - prev;
-                d -= 2.0 * std::f64::consts::PI * (d / (2.0 * std::f64::consts::PI)).round();
-                if d.abs() > 0.5 * std::f64::consts::PI {
-                    return None;
-                }
-                total += d;
-            } else {
-                first = Some(angle);
-            }
-            last = Some(angle);
-        }
-        first?;
-        let idx = total / (2.0 * std::f64::consts::PI);
-        ((idx - idx.round()).abs() < 0.1).then_some(idx.round() as i64)
-    }
-
-    /// A converged, degenerate continuation point from `from` along the direction `dir` with step
-    /// `h`: on the level of `level` and at a distance in `[h/4, 3h]` from `from`. `Err(true)` when
-    /// the iteration came back to `from` itself.
-    fn continue_from(
-        &self,
-        from: &Local,
-        dir: &Vector3<f64>,
-        h: f64,
-        level: &Local,
-    ) -> Result<Local, bool> {
-        let guess = (from.gamma + h * dir).normalize();
-        let Some(Refined::Converged(loc)) = self.refine(&guess, None) else {
-            return Err(false);
-        };
-        if same_point(&loc, from) {
-            return Err(true);
-        }
-        let d = (loc.gamma - from.gamma).norm();
-        if same_level(&loc, level) && loc.degenerate() && d >= 0.25 * h && d <= 3.0 * h {
-            Ok(loc)
-        } else {
-            Err(false)
-        }
-    }
-
-    /// Traces the curve of critical points through the degenerate critical point `start` along
-    /// the kernel of `K`; `None` when there is no such curve (a degenerate isolated point).
-    fn trace(&self, start: &Local) -> Option<Curve> {
-        let t0 = start.null_direction();
-        let mut h = TRACE_STEP;
-        for level in 0..TRACE_LEVELS {
-            let mut branches: Vec<Vec<Vector3<f64>>> = Vec::new();
-            let mut closed = false;
-            let mut returned = 0;
-            for sign in [1.0, -1.0] {
-                if closed {
-                    break;
-                }
-                let first = match self.continue_from(start, &(sign * t0), h, start) {
-                    Ok(first) => first,
-                    Err(back) => {
-                        returned += usize::from(back);
-                        continue;
-                    }
-                };
-                let mut branch = vec![first.gamma];
-                let mut prev = start.gamma;
-                let mut cur = first;
-                for step in 0..MAX_TRACE_STEPS {
-                    let mut t = cur.null_direction();
-                    if t.dot(&(cur.gamma - prev)) < 0.0 {
-                        t = -t;
-                    }
-                    let Ok(next) = self.continue_from(&cur, &t, h, start) else {
-                        break;
-                    };
-                    branch.push(next.gamma);
-                    if step >= 2 && (next.gamma - start.gamma).norm() < 1.5 * h {
-                        closed = true;
-                        break;
-                    }
-                    prev = cur.gamma;
-                    cur = next;
-                }
-                branches.push(branch);
-            }
-            if branches.is_empty() {
-                if returned == 2 {
-                    // Newton brought both neighbours back to the start: an isolated point.
-                    return None;
-                }
-                h /= 4.0;
-                continue;
-            }
-            // A closed curve resolved by too few vertices (small compared with h): trace it again
-            // with a shorter step.
-            let count: usize = branches.iter().map(Vec::len).sum();
-            if closed && count < MIN_CLOSED_VERTICES && level + 1 < TRACE_LEVELS {
-                h /= 4.0;
-                continue;
-            }
-            // Order the vertices along the curve: second branch reversed, start, first branch.
-            let mut vertices: Vec<Vector3<f64>> = Vec::new();
-            if let Some(back) = branches.get(1) {
-                vertices.extend(back.iter().rev().copied());
-            }
-            vertices.push(start.gamma);
-            vertices.extend(branches[0].iter().copied());
-            return Some(Curve {
-                start: *start,
-                vertices,
-                closed,
-                step: h,
-            });
-        }
-        None
     }
 }
