@@ -16,6 +16,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use routh_core::steady::{steady_motions_checked, SearchResult};
 use routh_core::{classify, Complex, Matrix3, StabilityReport, Vector3};
+use test_models::jacobian::match_roots_within;
 use test_models::Gyrostat;
 
 /// The steady motions at `p` and the report of each.
@@ -36,28 +37,6 @@ struct Prediction<'a> {
     kappa: f64,
     psi_dot: f64,
     roots: f64,
-}
-
-/// Matches every root of `got` with a distinct root of `want` (greedy, nearest first) within
-/// `tol`.
-fn roots_match(got: &[Complex<f64>], want: &[Complex<f64>], tol: f64) -> Result<f64, String> {
-    let mut used = vec![false; want.len()];
-    let mut worst = 0.0f64;
-    for z in got {
-        let (k, d) = want
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| !used[*k])
-            .map(|(k, w)| (k, (z - w).norm()))
-            .min_by(|x, y| x.1.total_cmp(&y.1))
-            .ok_or("more roots than expected")?;
-        if d > tol {
-            return Err(format!("root {z} unmatched: nearest {} at {d:e}", want[k]));
-        }
-        used[k] = true;
-        worst = worst.max(d);
-    }
-    Ok(worst)
 }
 
 /// Compares the analysis of a model (`base`) with that of its transform (`other`) against the
@@ -120,7 +99,7 @@ fn compare(
         // The roots of f₂.
         let scaled: Vec<Complex<f64>> = want.f2_roots.iter().map(|z| z * pred.roots).collect();
         let scale = scaled.iter().map(|z| z.norm()).fold(0.0, f64::max);
-        let d = roots_match(&got.f2_roots, &scaled, 1e-9 * scale)
+        let d = match_roots_within(&got.f2_roots, &scaled, |_| 1e-9 * scale)
             .unwrap_or_else(|e| panic!("{ctx}\n  f₂: {e}"));
         worst = worst.max(d / scale);
     }

@@ -9,7 +9,7 @@ use routh_core::{
     classify, simulate_full, stability::f2_coefficients, steady_motions, Complex, Matrix3,
     RouthError, Routhian, SimOptions, Stability, SteadyMotion, Vector3,
 };
-use test_models::jacobian::fd_jacobian;
+use test_models::jacobian::{fd_jacobian, match_roots_within, sleeping_top_roots};
 use test_models::{Ellipsoid, Gyrostat};
 
 mod common;
@@ -34,37 +34,10 @@ fn sleeping(top: &HeavyTop, p: f64) -> SteadyMotion {
     SteadyMotion::at(top, Vector3::z(), p, true).expect("sleeping top is a steady motion")
 }
 
-/// The roots of f₂ of the sleeping Lagrange top in closed form: with k = p²(2A₁ − C)²/C²,
-/// f₂(λ) = (A₁λ² + h)² + kλ², so λ = (i/2A₁)(±√k ± √(p² − 4A₁mgl)) (complex square root).
-fn sleeping_roots(a1: f64, c: f64, mgl: f64, p: f64) -> Vec<Complex<f64>> {
-    let sk = p.abs() * (2.0 * a1 - c).abs() / c;
-    let d = Complex::new(p * p - 4.0 * a1 * mgl, 0.0).sqrt();
-    let i = Complex::new(0.0, 1.0);
-    let mut out = Vec::new();
-    for s1 in [1.0, -1.0] {
-        for s2 in [1.0, -1.0] {
-            out.push(i * (d * s2 + sk * s1) / (2.0 * a1));
-        }
-    }
-    out
-}
-
 /// Every root in `a` has a distinct partner in `b` within `tol` (greedy matching).
 fn assert_roots_match(a: &[Complex<f64>], b: &[Complex<f64>], tol: f64, what: &str) {
-    let mut used = vec![false; b.len()];
-    for r in a {
-        let (k, dist) = b
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| !used[*k])
-            .map(|(k, s)| (k, (r - s).norm()))
-            .min_by(|x, y| x.1.total_cmp(&y.1))
-            .expect("enough roots");
-        assert!(
-            dist <= tol,
-            "{what}: root {r} unmatched (nearest at {dist:e}); a = {a:?}, b = {b:?}"
-        );
-        used[k] = true;
+    if let Err(e) = match_roots_within(a, b, |_| tol) {
+        panic!("{what}: {e}; a = {a:?}, b = {b:?}");
     }
 }
 
@@ -132,7 +105,7 @@ fn check_sleeping(a1: f64, c: f64, mgl: f64, p2: f64, expected: Stability) {
         "discriminant {disc} vs {disc_closed}"
     );
 
-    let closed = sleeping_roots(a1, c, mgl, p);
+    let closed = sleeping_top_roots(a1, c, mgl, p);
     let scale = closed.iter().map(|r| r.norm()).fold(0.0, f64::max);
     assert_roots_match(
         &report.f2_roots,

@@ -8,13 +8,14 @@
 
 use routh_core::steady::{steady_motions_checked, steady_motions_checked_with, SearchResult};
 use routh_core::{
-    classify, stability::ClassifyOptions, Complex, Matrix3, RouthError, SearchOptions, Stability,
+    classify, stability::ClassifyOptions, Matrix3, RouthError, SearchOptions, Stability,
     SteadyMotion, Vector3,
 };
 
 // ---------------------------------------------------------------------------------------------
 // The hand-written model.
 
+use test_models::jacobian::{match_roots_within, sleeping_top_roots};
 use test_models::{Potential, PotentialBody as Body};
 
 /// U = k·γ (gravity: k = m g r).
@@ -98,30 +99,6 @@ fn find(r: &SearchResult, gamma: Vector3<f64>, tol: f64) -> &SteadyMotion {
         .collect();
     assert_eq!(hits.len(), 1, "expected one steady motion at {gamma:?}");
     hits[0]
-}
-
-/// Matches every root of `got` with a distinct root of `want` (greedy, nearest first) within
-/// `tol(want root)`.
-fn assert_roots_match(
-    got: &[Complex<f64>],
-    want: &[Complex<f64>],
-    tol: impl Fn(&Complex<f64>) -> f64,
-) -> Result<(), String> {
-    let mut used = vec![false; want.len()];
-    for z in got {
-        let (k, d) = want
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| !used[*k])
-            .map(|(k, w)| (k, (z - w).norm()))
-            .min_by(|x, y| x.1.total_cmp(&y.1))
-            .ok_or("more roots than expected")?;
-        if d > tol(&want[k]) {
-            return Err(format!("root {z} unmatched: nearest {} at {d:e}", want[k]));
-        }
-        used[k] = true;
-    }
-    Ok(())
 }
 
 /// The tilt θ = ∠(γ, e₃), accurate also near the pole.
@@ -611,7 +588,7 @@ fn extreme_momenta_change_nothing() {
                 // that is compared.
                 let zero_pair = w0.abs().min(w1.abs()) <= 1e-8 * k_scale;
                 let scale = want.f2_roots.iter().map(|z| z.norm()).fold(0.0, f64::max);
-                assert_roots_match(&got.f2_roots, &want.f2_roots, |w| {
+                match_roots_within(&got.f2_roots, &want.f2_roots, |w| {
                     if zero_pair && w.norm() <= 1e-4 * scale {
                         2e-4 * scale
                     } else {
@@ -634,22 +611,6 @@ fn extreme_momenta_change_nothing() {
             "{v} not exercised: {verdicts_seen:?}"
         );
     }
-}
-
-/// The roots of f₂ of the sleeping Lagrange top γ = e₃ in closed form (docs/errata.md,
-/// classical checks): with k = p²(2A₁ − C)²/C², f₂(λ) = (A₁λ² + h)² + kλ² and
-/// λ = (i/2A₁)(±√k ± √(p² − 4A₁mgl)) (complex square root).
-fn sleeping_roots(a1: f64, c: f64, mgl: f64, p: f64) -> Vec<Complex<f64>> {
-    let sk = p.abs() * (2.0 * a1 - c).abs() / c;
-    let d = Complex::new(p * p - 4.0 * a1 * mgl, 0.0).sqrt();
-    let i = Complex::new(0.0, 1.0);
-    let mut out = Vec::new();
-    for s1 in [1.0, -1.0] {
-        for s2 in [1.0, -1.0] {
-            out.push(i * (d * s2 + sk * s1) / (2.0 * a1));
-        }
-    }
-    out
 }
 
 #[test]
@@ -693,9 +654,9 @@ fn a_lagrange_top_at_p_1e150_in_ordinary_units() {
                     "{what}: {e} vs {kappa}"
                 );
             }
-            let closed = sleeping_roots(a1, c, m, p);
+            let closed = sleeping_top_roots(a1, c, m, p);
             let scale = closed.iter().map(|z| z.norm()).fold(0.0, f64::max);
-            assert_roots_match(&rep.f2_roots, &closed, |_| 1e-9 * scale)
+            match_roots_within(&rep.f2_roots, &closed, |_| 1e-9 * scale)
                 .unwrap_or_else(|e| panic!("{what}: {e}\n{rep}"));
         }
     }

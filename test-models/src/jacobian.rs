@@ -54,6 +54,49 @@ pub struct RootMatch {
     pub leftover: Vec<Complex<f64>>,
 }
 
+/// Greedy matching within a tolerance: each root of `got` in turn takes the nearest root of
+/// `want` not taken yet, which must lie within `tol(partner)`. Returns the largest distance, or a
+/// message naming the first root left unmatched.
+pub fn match_roots_within(
+    got: &[Complex<f64>],
+    want: &[Complex<f64>],
+    tol: impl Fn(&Complex<f64>) -> f64,
+) -> Result<f64, String> {
+    let mut used = vec![false; want.len()];
+    let mut worst = 0.0f64;
+    for z in got {
+        let (k, d) = want
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| !used[*k])
+            .map(|(k, w)| (k, (z - w).norm()))
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+            .ok_or("more roots than expected")?;
+        if d > tol(&want[k]) {
+            return Err(format!("root {z} unmatched: nearest {} at {d:e}", want[k]));
+        }
+        used[k] = true;
+        worst = worst.max(d);
+    }
+    Ok(worst)
+}
+
+/// The roots of f₂ of the sleeping Lagrange top γ = e₃ in closed form (docs/errata.md, classical
+/// checks): with k = p²(2A₁ − C)²/C², f₂(λ) = (A₁λ² + h)² + kλ², so
+/// λ = (i/2A₁)(±√k ± √(p² − 4A₁mgl)) (complex square root).
+pub fn sleeping_top_roots(a1: f64, c: f64, mgl: f64, p: f64) -> Vec<Complex<f64>> {
+    let sk = p.abs() * (2.0 * a1 - c).abs() / c;
+    let d = Complex::new(p * p - 4.0 * a1 * mgl, 0.0).sqrt();
+    let i = Complex::new(0.0, 1.0);
+    let mut out = Vec::new();
+    for s1 in [1.0, -1.0] {
+        for s2 in [1.0, -1.0] {
+            out.push(i * (d * s2 + sk * s1) / (2.0 * a1));
+        }
+    }
+    out
+}
+
 /// Greedy matching: each root in `roots` in turn takes the nearest candidate not taken yet.
 ///
 /// # Panics
