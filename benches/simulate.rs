@@ -40,6 +40,7 @@ use std::time::Instant;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ode_solvers::{Dop853, OutputType, SVector as OdeVector, System};
+use rand::Rng;
 use routh::{simulate_full, simulate_reduced, Lagrangian, Routhian, SimOptions, Vector3};
 use routh_core::sim::{full_vector_field, reduced_vector_field};
 
@@ -76,7 +77,41 @@ impl HandRhs for TopRhs {
         let torque = iw.cross(w) + g.cross(&m.com) * (m.mass * m.g);
         (torque.component_div(&m.inertia), g.cross(w))
     }
+    fn inertia(&self) -> Vector3<f64> {
+        self.0.inertia
+    }
+    fn reduced_closed_form(&self, o: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Option<Rates7> {
+        Some(self.reduced_closed(o, g, p))
+    }
 }
+
+impl TopRhs {
+    /// The reduced equations (13) of the top in closed form, written from its Routh function
+    /// `R = ½Ω·IΩ − m g r·γ − ½q²/s` (39) with `w = Iγ`, `c = IΩ`, `s = γ·w`, `ρ = 1/s`,
+    /// `q = p_ψ − c·γ`, `u = qρ = ψ̇`: `∂R/∂Ω = c + uw`, `∂R/∂γ = u(c + uw) − m g r`,
+    /// `M = uI − w zᵀ` with `z = ρ(c + 2uw)`, and `Ω̇ = J⁻¹b` projected on γ^⊥ (the gauge).
+    fn reduced_closed(&self, o: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Rates7 {
+        let m = &self.0;
+        let i = &m.inertia;
+        let w = i.component_mul(g);
+        let c = i.component_mul(o);
+        let rho = 1.0 / g.dot(&w);
+        let r_gamma = 1.0 / g.norm_squared();
+        let u = (p - c.dot(g)) * rho;
+        let uw = w * u;
+        let dr_do = c + uw;
+        let dr_dg = dr_do * u - m.com * (m.mass * m.g);
+        let g_dot = g.cross(o);
+        let z = (dr_do + uw) * rho;
+        let m_gd = i.component_mul(&g_dot) * u - w * z.dot(&g_dot);
+        let b = dr_do.cross(o) + dr_dg.cross(g) - m_gd;
+        let y = b.component_div(i);
+        (y - g * (g.dot(&y) * r_gamma), g_dot, u)
+    }
+}
+
+/// `(Ω̇, γ̇, ψ̇)` of the reduced equations (13) with (15).
+type Rates7 = (Vector3<f64>, Vector3<f64>, f64);
 
 /// The ellipsoid on a plane by hand. With `D = diag(a²)`, `s = √(γᵀDγ)`, the height gradient
 /// `n = Dγ/s − c₀`, its Jacobian `N = D/s − DγγᵀD/s³`, `v = n × γ` and `u = v·ω`:
@@ -110,11 +145,59 @@ impl HandRhs for EllipsoidRhs {
         let w_dot = ir - iv * (m * v.dot(&ir) / (1.0 + m * v.dot(&iv)));
         (w_dot, g_dot)
     }
+    fn inertia(&self) -> Vector3<f64> {
+        self.0.inertia
+    }
 }
 
-/// A closed-form right-hand side of (8) for `ode_solvers`.
+/// A closed-form right-hand side of (8) for `ode_solvers`, and of (13) from it.
 trait HandRhs: Clone {
     fn rates(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>);
+
+    /// The diagonal inertia I: for both bodies `γᵀJγ = γᵀIγ` and `(∂L/∂ω(Ω), γ) = IΩ·γ`
+    /// (the ellipsoid's `v = n × γ` is orthogonal to γ), so ψ̇ of (38) is
+    /// `(p_ψ − IΩ·γ)/(γᵀIγ)`.
+    fn inertia(&self) -> Vector3<f64>;
+
+    /// The reduced equations (13) in the gauge `Ω̇·γ = 0` through the full ones (Routh's
+    /// reduction is exact): with `ω = Ω + ψ̇γ` (7), `ω̇ = Ω̇ + ψ̈γ + ψ̇γ̇` and `γ̇ ⊥ γ`, so
+    /// `Ω̇ = ω̇ − γ(γ·ω̇)/|γ|² − ψ̇γ̇`. The cheapest correct (13) an expert writes by hand.
+    fn reduced_via_full(&self, o: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Rates7 {
+        let i = self.inertia();
+        let psi_dot = (p - i.component_mul(o).dot(g)) / i.component_mul(g).dot(g);
+        let (w_dot, g_dot) = self.rates(&(o + g * psi_dot), g);
+        let o_dot = w_dot - g * (g.dot(&w_dot) / g.norm_squared()) - g_dot * psi_dot;
+        (o_dot, g_dot, psi_dot)
+    }
+
+    /// (13) written out in closed form, where there is one.
+    fn reduced_closed_form(&self, _o: &Vector3<f64>, _g: &Vector3<f64>, _p: f64) -> Option<Rates7> {
+        None
+    }
+}
+
+/// A hand-written reduced right-hand side for `ode_solvers`: through (8), or in closed form.
+struct HandReduced<H>(H, f64, bool);
+
+impl<H: HandRhs> System<f64, State7> for HandReduced<H> {
+    fn system(&self, _t: f64, y: &State7, dy: &mut State7) {
+        let (o, g) = (
+            Vector3::new(y[0], y[1], y[2]),
+            Vector3::new(y[3], y[4], y[5]),
+        );
+        let (a, b, psi_dot) = if self.2 {
+            self.0
+                .reduced_closed_form(&o, &g, self.1)
+                .expect("closed form")
+        } else {
+            self.0.reduced_via_full(&o, &g, self.1)
+        };
+        for i in 0..3 {
+            dy[i] = a[i];
+            dy[3 + i] = b[i];
+        }
+        dy[6] = psi_dot;
+    }
 }
 
 struct Ode<H>(H);
@@ -211,16 +294,22 @@ enum Solver {
     OdeFull,
     /// `ode_solvers` on the generated reduced equations: same equations as `Reduced`.
     OdeReduced,
+    /// `ode_solvers` on the hand-written reduced equations through the full ones.
+    OdeHandReduced,
+    /// `ode_solvers` on the hand-written reduced equations in closed form (the top).
+    OdeHandReducedClosed,
     /// `ode_solvers` on the hand-written full equations: the baseline.
     OdeHand,
 }
 
 /// The baseline last.
-const SOLVERS: [Solver; 5] = [
+const SOLVERS: [Solver; 7] = [
     Solver::Full,
     Solver::Reduced,
     Solver::OdeFull,
     Solver::OdeReduced,
+    Solver::OdeHandReduced,
+    Solver::OdeHandReducedClosed,
     Solver::OdeHand,
 ];
 
@@ -231,6 +320,8 @@ impl Solver {
             Solver::Reduced => "simulate_reduced              ",
             Solver::OdeFull => "ode_solvers, generated (8)    ",
             Solver::OdeReduced => "ode_solvers, generated (13)   ",
+            Solver::OdeHandReduced => "ode_solvers, hand (13) via (8)",
+            Solver::OdeHandReducedClosed => "ode_solvers, hand (13) closed ",
             Solver::OdeHand => "ode_solvers, hand-written (8) ",
         }
     }
@@ -277,11 +368,19 @@ impl<M: Routhian, H: HandRhs> Problem<'_, M, H> {
                     evals,
                 }
             }
-            Solver::OdeReduced => {
+            Solver::OdeReduced | Solver::OdeHandReduced | Solver::OdeHandReducedClosed => {
                 let p = self.model.cyclic_momentum(&w0, &g0);
                 let o = w0 - g0 * w0.dot(&g0);
                 let y0 = State7::from_column_slice(&[o.x, o.y, o.z, g0.x, g0.y, g0.z, 0.0]);
-                let (y, evals) = ode_solvers_run(GeneratedReduced(self.model, p), y0, rtol);
+                let (y, evals) = match solver {
+                    Solver::OdeReduced => {
+                        ode_solvers_run(GeneratedReduced(self.model, p), y0, rtol)
+                    }
+                    _ => {
+                        let closed = solver == Solver::OdeHandReducedClosed;
+                        ode_solvers_run(HandReduced(self.hand.clone(), p, closed), y0, rtol)
+                    }
+                };
                 let (o, gamma) = (
                     Vector3::new(y[0], y[1], y[2]),
                     Vector3::new(y[3], y[4], y[5]),
@@ -390,6 +489,20 @@ fn table<M: Routhian, H: HandRhs>(
             err(&ends[i]),
         );
     }
+    // `simulate_reduced` against the faster hand-written (13): the same equations by hand.
+    let at = |s: Solver| picks.iter().position(|&(x, _)| x == s);
+    let hand13 = [Solver::OdeHandReduced, Solver::OdeHandReducedClosed]
+        .into_iter()
+        .filter_map(at)
+        .min_by(|&a, &b| fastest(&times[a]).total_cmp(&fastest(&times[b])));
+    if let (Some(r), Some(h)) = (at(Solver::Reduced), hand13) {
+        println!(
+            "    simulate_reduced / {}: {:.2}× the evaluations, {:.2}× the wall time",
+            picks[h].0.label().trim_end(),
+            ends[r].evals as f64 / ends[h].evals as f64,
+            fastest(&times[r]) / fastest(&times[h]),
+        );
+    }
 }
 
 /// Prints both comparisons for one model and registers its criterion benches.
@@ -408,7 +521,29 @@ fn compare<M: Routhian, H: HandRhs>(c: &mut Criterion, problem: &Problem<'_, M, 
             diff < 1e-12 * scale,
             "{name}: hand-written rhs differs by {diff:e}"
         );
+        // The hand-written (13), both ways, against the generated one on a level p_ψ.
+        let p = rng.gen_range(-3.0..3.0);
+        let (x, y, z) = reduced_vector_field(problem.model, &w, &g, p).expect("field");
+        let mut hands = vec![problem.hand.reduced_via_full(&w, &g, p)];
+        hands.extend(problem.hand.reduced_closed_form(&w, &g, p));
+        for (a, b, c) in hands {
+            let scale = x.amax().max(y.amax()).max(z.abs()).max(1.0);
+            let diff = (a - x).amax().max((b - y).amax()).max((c - z).abs());
+            assert!(
+                diff < 1e-12 * scale,
+                "{name}: hand-written (13) differs by {diff:e}"
+            );
+        }
     }
+    let solvers: Vec<Solver> = SOLVERS
+        .into_iter()
+        .filter(|&s| {
+            s != Solver::OdeHandReducedClosed
+                || (problem.hand)
+                    .reduced_closed_form(&problem.w0, &problem.g0, 1.0)
+                    .is_some()
+        })
+        .collect();
 
     let reference = problem.run(Solver::Full, 1e-14);
     let err = |e: &End| {
@@ -424,7 +559,7 @@ fn compare<M: Routhian, H: HandRhs>(c: &mut Criterion, problem: &Problem<'_, M, 
     );
 
     println!("  at the same tolerances (atol = rtol/100):");
-    let same: Vec<(Solver, f64)> = SOLVERS.iter().map(|&s| (s, RTOL)).collect();
+    let same: Vec<(Solver, f64)> = solvers.iter().map(|&s| (s, RTOL)).collect();
     table(problem, &same, &err);
 
     // Equal final error: the loosest grid tolerance from which on all tighter ones meet it.
@@ -443,7 +578,7 @@ fn compare<M: Routhian, H: HandRhs>(c: &mut Criterion, problem: &Problem<'_, M, 
         "  at equal final error (≤ {target:.1e}, the baseline's at rtol {RTOL:e}; each at the \
          loosest rtol of a grid, 8 per decade, from which on its error stays below that):"
     );
-    let equal: Vec<(Solver, f64)> = SOLVERS.iter().map(|&s| pick(s)).collect();
+    let equal: Vec<(Solver, f64)> = solvers.iter().map(|&s| pick(s)).collect();
     table(problem, &equal, &err);
 
     let mut group = c.benchmark_group(format!("simulate_{name}"));

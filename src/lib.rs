@@ -63,7 +63,10 @@ pub mod __private {
     pub use core::primitive::i32;
     pub use routh_core::certify::RouthTape;
     pub use routh_core::nalgebra::{Matrix3, Vector3};
-    pub use routh_core::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+    pub use routh_core::{
+        DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, ReducedEquations,
+        RouthBundle, Routhian,
+    };
 
     /// What `Routhian::certification_tape` returns.
     pub type MaybeTape = core::option::Option<RouthTape>;

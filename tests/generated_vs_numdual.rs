@@ -200,3 +200,127 @@ fn gyrostat_routhian_matches_numdual() {
 fn ellipsoid_routhian_matches_numdual() {
     over_random_twins::<_, Ellipsoid>(4, test_models::Ellipsoid::random, check_routhian, 1e-12);
 }
+
+/// The generated one-body vector-field terms, `full_equations` (8) and `reduced_equations` (13),
+/// against the trait's defaults on the num-dual twin, which combine its num-dual derivatives
+/// term by term (J, ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)γ̇, and the same with R): the generated
+/// bodies form the mixed term as a derivative along γ̇ where that is shorter, never as the
+/// twin does. The right sides are sums with cancellation, so they are compared relative to the
+/// size of their terms.
+fn check_equations<G: Routhian, H: Routhian>(
+    gen: &G,
+    reference: &H,
+    rng: &mut ChaCha8Rng,
+    tol: f64,
+) -> f64 {
+    let mut worst = 0.0f64;
+    for _ in 0..POINTS {
+        let w = test_models::random_vector(rng, 2.0);
+        let g = test_models::random_gamma(rng);
+        let p = rng.gen_range(-3.0..3.0);
+        let (got, want) = (gen.full_equations(&w, &g), reference.full_equations(&w, &g));
+        let gd = g.cross(&w);
+        let terms = reference.dl_domega(&w, &g).norm() * w.norm()
+            + reference.dl_dgamma(&w, &g).norm() * g.norm()
+            + reference.d2l_domega_dgamma(&w, &g).norm() * gd.norm();
+        let (gr, wr) = (
+            gen.reduced_equations(&w, &g, p),
+            reference.reduced_equations(&w, &g, p),
+        );
+        let terms_r = reference.dr_domega(&w, &g, p).norm() * w.norm()
+            + reference.dr_dgamma(&w, &g, p).norm() * g.norm()
+            + reference.d2r_domega_dgamma(&w, &g, p).norm() * gd.norm();
+        let checks: [(&str, Vec<f64>, Vec<f64>, f64); 5] = [
+            ("J", m(got.inertia), m(want.inertia), 1e-12),
+            (
+                "(8) right side",
+                v(got.right_side),
+                v(want.right_side),
+                terms,
+            ),
+            ("J in (13)", m(gr.inertia), m(wr.inertia), 1e-12),
+            (
+                "(13) right side",
+                v(gr.right_side),
+                v(wr.right_side),
+                terms_r,
+            ),
+            ("psi_dot", s(gr.psi_dot), s(wr.psi_dot), 1e-12),
+        ];
+        for (name, a, b, floor) in checks {
+            match close(&a, &b, tol, floor) {
+                Ok(e) => worst = worst.max(e),
+                Err(msg) => panic!("{name} at w = {w:?}, g = {g:?}, p = {p}: {msg}"),
+            }
+        }
+    }
+    worst
+}
+
+#[test]
+fn gyrostat_equations_match_numdual() {
+    over_random_twins::<_, Gyrostat>(5, test_models::Gyrostat::random, check_equations, 1e-12);
+}
+
+#[test]
+fn ellipsoid_equations_match_numdual() {
+    over_random_twins::<_, Ellipsoid>(6, test_models::Ellipsoid::random, check_equations, 1e-12);
+}
+
+/// `reduced_vector_field` solves (13) in its gauge: with `A = ∂²R/∂Ω²` and the right side `b`
+/// of the num-dual twin, `A Ω̇ = b` and `Ω̇·γ = 0` (the field solves with J and projects,
+/// docs/method.md §3, never with A), at random states including |γ| ≠ 1.
+#[test]
+fn reduced_vector_field_solves_13_in_the_gauge() {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let mut worst = 0.0f64;
+    for k in 0..400 {
+        let reference = if k % 2 == 0 {
+            Twin::G(test_models::Gyrostat::random(&mut rng))
+        } else {
+            Twin::E(test_models::Ellipsoid::random(&mut rng))
+        };
+        let w = test_models::random_vector(&mut rng, 2.0);
+        let g = test_models::random_gamma(&mut rng);
+        let p = rng.gen_range(-3.0..3.0);
+        let (x, gd, psi_dot, a, eq) = match &reference {
+            Twin::G(t) => field_and_reference(&Gyrostat::from(t), t, &w, &g, p),
+            Twin::E(t) => field_and_reference(&Ellipsoid::from(t), t, &w, &g, p),
+        };
+        let b = eq.right_side;
+        let residual = (a * x - b).norm() / (a.norm() * x.norm() + b.norm());
+        let along = x.dot(&g).abs() / (x.norm() * g.norm());
+        assert!(residual < 1e-13, "A Ω̇ − b: {residual:e} at k = {k}");
+        assert!(along < 1e-14, "Ω̇·γ: {along:e} at k = {k}");
+        assert_eq!(gd, g.cross(&w));
+        assert!((psi_dot - eq.psi_dot).abs() <= 1e-12 * eq.psi_dot.abs().max(1.0));
+        worst = worst.max(residual);
+    }
+    eprintln!("worst relative residual of (13): {worst:e}");
+}
+
+enum Twin {
+    G(test_models::Gyrostat),
+    E(test_models::Ellipsoid),
+}
+
+type FieldAndReference = (
+    Vector3<f64>,
+    Vector3<f64>,
+    f64,
+    routh::Matrix3<f64>,
+    routh::ReducedEquations,
+);
+
+/// The generated model's reduced field and the twin's `A` and (13).
+fn field_and_reference<G: Routhian, H: Routhian>(
+    gen: &G,
+    twin: &H,
+    w: &Vector3<f64>,
+    g: &Vector3<f64>,
+    p: f64,
+) -> FieldAndReference {
+    let (x, gd, psi_dot) = routh::sim::reduced_vector_field(gen, w, g, p).expect("field");
+    let a = twin.d2r_domega2(w, g, p);
+    (x, gd, psi_dot, a, twin.reduced_equations(w, g, p))
+}

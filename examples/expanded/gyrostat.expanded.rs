@@ -29,6 +29,8 @@ const _: () = {
     type __Matrix3 = ::routh::__private::Matrix3<::routh::__private::f64>;
     type __RouthBundle = ::routh::__private::RouthBundle;
     type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
+    type __FullEquations = ::routh::__private::FullEquations;
+    type __ReducedEquations = ::routh::__private::ReducedEquations;
     type __RouthTape = ::routh::__private::RouthTape;
     type __MaybeTape = ::routh::__private::MaybeTape;
     #[automatically_derived]
@@ -416,6 +418,162 @@ const _: () = {
             let __t134: __F64 = __t131 + __t132;
             let __t135: __F64 = __t133 + __t134;
             __t135
+        }
+        #[inline]
+        fn full_equations(
+            &self,
+            __omega: &__Vector3,
+            __gamma: &__Vector3,
+        ) -> __FullEquations {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v7: __F64 = self.inertia[(0usize, 0usize)];
+            let __v8: __F64 = self.inertia[(0usize, 1usize)];
+            let __v9: __F64 = self.inertia[(0usize, 2usize)];
+            let __v10: __F64 = self.inertia[(1usize, 1usize)];
+            let __v11: __F64 = self.inertia[(1usize, 2usize)];
+            let __v12: __F64 = self.inertia[(2usize, 2usize)];
+            let __v13: __F64 = self.rotor[0usize];
+            let __v14: __F64 = self.rotor[1usize];
+            let __v15: __F64 = self.rotor[2usize];
+            let __v16: __F64 = self.coupling[(0usize, 0usize)];
+            let __v17: __F64 = self.coupling[(0usize, 1usize)];
+            let __v18: __F64 = self.coupling[(0usize, 2usize)];
+            let __v19: __F64 = self.coupling[(1usize, 0usize)];
+            let __v20: __F64 = self.coupling[(1usize, 1usize)];
+            let __v21: __F64 = self.coupling[(1usize, 2usize)];
+            let __v22: __F64 = self.coupling[(2usize, 0usize)];
+            let __v23: __F64 = self.coupling[(2usize, 1usize)];
+            let __v24: __F64 = self.coupling[(2usize, 2usize)];
+            let __v25: __F64 = self.com[0usize];
+            let __v26: __F64 = self.com[1usize];
+            let __v27: __F64 = self.com[2usize];
+            let __v28: __F64 = self.mass;
+            let __v29: __F64 = self.g;
+            let __t32: __F64 = __v0 * __v7;
+            let __t33: __F64 = __v1 * __v8;
+            let __t34: __F64 = __v2 * __v9;
+            let __t35: __F64 = __t32 + __t33;
+            let __t36: __F64 = __t34 + __t35;
+            let __t37: __F64 = __v0 * __v8;
+            let __t38: __F64 = __v1 * __v10;
+            let __t39: __F64 = __v2 * __v11;
+            let __t40: __F64 = __t37 + __t38;
+            let __t41: __F64 = __t39 + __t40;
+            let __t42: __F64 = __v0 * __v9;
+            let __t43: __F64 = __v1 * __v11;
+            let __t44: __F64 = __v2 * __v12;
+            let __t45: __F64 = __t42 + __t43;
+            let __t46: __F64 = __t44 + __t45;
+            let __t53: __F64 = __v3 * __v16;
+            let __t54: __F64 = __v4 * __v17;
+            let __t55: __F64 = __v5 * __v18;
+            let __t56: __F64 = __t53 + __t54;
+            let __t57: __F64 = __t55 + __t56;
+            let __t58: __F64 = __v3 * __v19;
+            let __t59: __F64 = __v4 * __v20;
+            let __t60: __F64 = __v5 * __v21;
+            let __t61: __F64 = __t58 + __t59;
+            let __t62: __F64 = __t60 + __t61;
+            let __t63: __F64 = __v3 * __v22;
+            let __t64: __F64 = __v4 * __v23;
+            let __t65: __F64 = __v5 * __v24;
+            let __t66: __F64 = __t63 + __t64;
+            let __t67: __F64 = __t65 + __t66;
+            let __t68: __F64 = __v13 + __t57;
+            let __t69: __F64 = __v14 + __t62;
+            let __t70: __F64 = __v15 + __t67;
+            let __t76: __F64 = __v28 * __v29;
+            let __t91: __F64 = __t36 + __t68;
+            let __t95: __F64 = __t41 + __t69;
+            let __t99: __F64 = __t46 + __t70;
+            let __t100: __F64 = __v25 * __t76;
+            let __t102: __F64 = __v1 * __v19;
+            let __t103: __F64 = __v0 * __v16;
+            let __t104: __F64 = __t102 + __t103;
+            let __t105: __F64 = __v2 * __v22;
+            let __t106: __F64 = __t104 + __t105;
+            let __t107: __F64 = __t106 - __t100;
+            let __t108: __F64 = __v26 * __t76;
+            let __t110: __F64 = __v1 * __v20;
+            let __t111: __F64 = __v0 * __v17;
+            let __t112: __F64 = __t110 + __t111;
+            let __t113: __F64 = __v2 * __v23;
+            let __t114: __F64 = __t112 + __t113;
+            let __t115: __F64 = __t114 - __t108;
+            let __t116: __F64 = __v27 * __t76;
+            let __t118: __F64 = __v1 * __v21;
+            let __t119: __F64 = __v0 * __v18;
+            let __t120: __F64 = __t118 + __t119;
+            let __t121: __F64 = __v2 * __v24;
+            let __t122: __F64 = __t120 + __t121;
+            let __t123: __F64 = __t122 - __t116;
+            let __t911: __F64 = __v2 * __v4;
+            let __t912: __F64 = __v1 * __v5;
+            let __t914: __F64 = __t911 - __t912;
+            let __t915: __F64 = __v0 * __v5;
+            let __t916: __F64 = __v2 * __v3;
+            let __t918: __F64 = __t915 - __t916;
+            let __t919: __F64 = __v1 * __v3;
+            let __t920: __F64 = __v0 * __v4;
+            let __t922: __F64 = __t919 - __t920;
+            let __t923: __F64 = __v16 * __t914;
+            let __t924: __F64 = __v17 * __t918;
+            let __t925: __F64 = __v18 * __t922;
+            let __t926: __F64 = __t923 + __t924;
+            let __t927: __F64 = __t925 + __t926;
+            let __t928: __F64 = __v19 * __t914;
+            let __t929: __F64 = __v20 * __t918;
+            let __t930: __F64 = __v21 * __t922;
+            let __t931: __F64 = __t928 + __t929;
+            let __t932: __F64 = __t930 + __t931;
+            let __t933: __F64 = __v22 * __t914;
+            let __t934: __F64 = __v23 * __t918;
+            let __t935: __F64 = __v24 * __t922;
+            let __t936: __F64 = __t933 + __t934;
+            let __t937: __F64 = __t935 + __t936;
+            let __t938: __F64 = __v2 * __t95;
+            let __t939: __F64 = __v1 * __t99;
+            let __t941: __F64 = __t938 - __t939;
+            let __t942: __F64 = __v0 * __t99;
+            let __t943: __F64 = __v2 * __t91;
+            let __t945: __F64 = __t942 - __t943;
+            let __t946: __F64 = __v1 * __t91;
+            let __t947: __F64 = __v0 * __t95;
+            let __t949: __F64 = __t946 - __t947;
+            let __t950: __F64 = __v5 * __t115;
+            let __t951: __F64 = __v4 * __t123;
+            let __t953: __F64 = __t950 - __t951;
+            let __t954: __F64 = __v3 * __t123;
+            let __t955: __F64 = __v5 * __t107;
+            let __t957: __F64 = __t954 - __t955;
+            let __t958: __F64 = __v4 * __t107;
+            let __t959: __F64 = __v3 * __t115;
+            let __t961: __F64 = __t958 - __t959;
+            let __t962: __F64 = __t941 + __t953;
+            let __t964: __F64 = __t962 - __t927;
+            let __t965: __F64 = __t945 + __t957;
+            let __t967: __F64 = __t965 - __t932;
+            let __t968: __F64 = __t949 + __t961;
+            let __t970: __F64 = __t968 - __t937;
+            __FullEquations {
+                inertia: __Matrix3::new(
+                    __v7,
+                    __v8,
+                    __v9,
+                    __v8,
+                    __v10,
+                    __v11,
+                    __v9,
+                    __v11,
+                    __v12,
+                ),
+                right_side: __Vector3::new(__t964, __t967, __t970),
+            }
         }
     }
     #[automatically_derived]
@@ -2051,6 +2209,262 @@ const _: () = {
                     __t521,
                     __t525,
                 ),
+            }
+        }
+        #[inline]
+        fn reduced_equations(
+            &self,
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __ReducedEquations {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.inertia[(0usize, 0usize)];
+            let __v8: __F64 = self.inertia[(0usize, 1usize)];
+            let __v9: __F64 = self.inertia[(0usize, 2usize)];
+            let __v10: __F64 = self.inertia[(1usize, 1usize)];
+            let __v11: __F64 = self.inertia[(1usize, 2usize)];
+            let __v12: __F64 = self.inertia[(2usize, 2usize)];
+            let __v13: __F64 = self.rotor[0usize];
+            let __v14: __F64 = self.rotor[1usize];
+            let __v15: __F64 = self.rotor[2usize];
+            let __v16: __F64 = self.coupling[(0usize, 0usize)];
+            let __v17: __F64 = self.coupling[(0usize, 1usize)];
+            let __v18: __F64 = self.coupling[(0usize, 2usize)];
+            let __v19: __F64 = self.coupling[(1usize, 0usize)];
+            let __v20: __F64 = self.coupling[(1usize, 1usize)];
+            let __v21: __F64 = self.coupling[(1usize, 2usize)];
+            let __v22: __F64 = self.coupling[(2usize, 0usize)];
+            let __v23: __F64 = self.coupling[(2usize, 1usize)];
+            let __v24: __F64 = self.coupling[(2usize, 2usize)];
+            let __v25: __F64 = self.com[0usize];
+            let __v26: __F64 = self.com[1usize];
+            let __v27: __F64 = self.com[2usize];
+            let __v28: __F64 = self.mass;
+            let __v29: __F64 = self.g;
+            let __t32: __F64 = __v0 * __v7;
+            let __t33: __F64 = __v1 * __v8;
+            let __t34: __F64 = __v2 * __v9;
+            let __t35: __F64 = __t32 + __t33;
+            let __t36: __F64 = __t34 + __t35;
+            let __t37: __F64 = __v0 * __v8;
+            let __t38: __F64 = __v1 * __v10;
+            let __t39: __F64 = __v2 * __v11;
+            let __t40: __F64 = __t37 + __t38;
+            let __t41: __F64 = __t39 + __t40;
+            let __t42: __F64 = __v0 * __v9;
+            let __t43: __F64 = __v1 * __v11;
+            let __t44: __F64 = __v2 * __v12;
+            let __t45: __F64 = __t42 + __t43;
+            let __t46: __F64 = __t44 + __t45;
+            let __t53: __F64 = __v3 * __v16;
+            let __t54: __F64 = __v4 * __v17;
+            let __t55: __F64 = __v5 * __v18;
+            let __t56: __F64 = __t53 + __t54;
+            let __t57: __F64 = __t55 + __t56;
+            let __t58: __F64 = __v3 * __v19;
+            let __t59: __F64 = __v4 * __v20;
+            let __t60: __F64 = __v5 * __v21;
+            let __t61: __F64 = __t58 + __t59;
+            let __t62: __F64 = __t60 + __t61;
+            let __t63: __F64 = __v3 * __v22;
+            let __t64: __F64 = __v4 * __v23;
+            let __t65: __F64 = __v5 * __v24;
+            let __t66: __F64 = __t63 + __t64;
+            let __t67: __F64 = __t65 + __t66;
+            let __t68: __F64 = __v13 + __t57;
+            let __t69: __F64 = __v14 + __t62;
+            let __t70: __F64 = __v15 + __t67;
+            let __t76: __F64 = __v28 * __v29;
+            let __t91: __F64 = __t36 + __t68;
+            let __t95: __F64 = __t41 + __t69;
+            let __t99: __F64 = __t46 + __t70;
+            let __t100: __F64 = __v25 * __t76;
+            let __t102: __F64 = __v1 * __v19;
+            let __t103: __F64 = __v0 * __v16;
+            let __t104: __F64 = __t102 + __t103;
+            let __t105: __F64 = __v2 * __v22;
+            let __t106: __F64 = __t104 + __t105;
+            let __t107: __F64 = __t106 - __t100;
+            let __t108: __F64 = __v26 * __t76;
+            let __t110: __F64 = __v1 * __v20;
+            let __t111: __F64 = __v0 * __v17;
+            let __t112: __F64 = __t110 + __t111;
+            let __t113: __F64 = __v2 * __v23;
+            let __t114: __F64 = __t112 + __t113;
+            let __t115: __F64 = __t114 - __t108;
+            let __t116: __F64 = __v27 * __t76;
+            let __t118: __F64 = __v1 * __v21;
+            let __t119: __F64 = __v0 * __v18;
+            let __t120: __F64 = __t118 + __t119;
+            let __t121: __F64 = __v2 * __v24;
+            let __t122: __F64 = __t120 + __t121;
+            let __t123: __F64 = __t122 - __t116;
+            let __t131: __F64 = __v3 * __t91;
+            let __t132: __F64 = __v4 * __t95;
+            let __t133: __F64 = __v5 * __t99;
+            let __t134: __F64 = __t131 + __t132;
+            let __t135: __F64 = __t133 + __t134;
+            let __t136: __F64 = __v3 * __v7;
+            let __t137: __F64 = __v4 * __v8;
+            let __t138: __F64 = __v5 * __v9;
+            let __t139: __F64 = __t136 + __t137;
+            let __t140: __F64 = __t138 + __t139;
+            let __t141: __F64 = __v3 * __v8;
+            let __t142: __F64 = __v4 * __v10;
+            let __t143: __F64 = __v5 * __v11;
+            let __t144: __F64 = __t141 + __t142;
+            let __t145: __F64 = __t143 + __t144;
+            let __t146: __F64 = __v3 * __v9;
+            let __t147: __F64 = __v4 * __v11;
+            let __t148: __F64 = __v5 * __v12;
+            let __t149: __F64 = __t146 + __t147;
+            let __t150: __F64 = __t148 + __t149;
+            let __t151: __F64 = __v3 * __t140;
+            let __t152: __F64 = __v4 * __t145;
+            let __t153: __F64 = __v5 * __t150;
+            let __t154: __F64 = __t151 + __t152;
+            let __t155: __F64 = __t153 + __t154;
+            let __t158: __F64 = __v6 - __t135;
+            let __t159: __F64 = 1.0f64 / __t155;
+            let __t160: __F64 = __t158 * __t159;
+            let __t167: __F64 = __v4 * __v19;
+            let __t168: __F64 = __t53 + __t91;
+            let __t169: __F64 = __t167 + __t168;
+            let __t170: __F64 = __v5 * __v22;
+            let __t171: __F64 = __t169 + __t170;
+            let __t172: __F64 = __t59 + __t95;
+            let __t173: __F64 = __v3 * __v17;
+            let __t174: __F64 = __t172 + __t173;
+            let __t175: __F64 = __v5 * __v23;
+            let __t176: __F64 = __t174 + __t175;
+            let __t177: __F64 = __v4 * __v21;
+            let __t178: __F64 = __v3 * __v18;
+            let __t179: __F64 = __t177 + __t178;
+            let __t180: __F64 = __t65 + __t99;
+            let __t181: __F64 = __t179 + __t180;
+            let __t191: __F64 = __t140 * __t160;
+            let __t192: __F64 = __t145 * __t160;
+            let __t193: __F64 = __t150 * __t160;
+            let __t194: __F64 = __t171 + __t191;
+            let __t195: __F64 = __t176 + __t192;
+            let __t196: __F64 = __t181 + __t193;
+            let __t197: __F64 = __t91 + __t191;
+            let __t198: __F64 = __t95 + __t192;
+            let __t199: __F64 = __t99 + __t193;
+            let __t200: __F64 = __t160 * __t194;
+            let __t201: __F64 = __t107 + __t200;
+            let __t202: __F64 = __t160 * __t195;
+            let __t203: __F64 = __t115 + __t202;
+            let __t204: __F64 = __t160 * __t196;
+            let __t205: __F64 = __t123 + __t204;
+            let __t206: __F64 = __t191 + __t194;
+            let __t207: __F64 = __t192 + __t195;
+            let __t208: __F64 = __t193 + __t196;
+            let __t209: __F64 = __t140 * __t159;
+            let __t210: __F64 = __t145 * __t159;
+            let __t211: __F64 = __t150 * __t159;
+            let __t224: __F64 = __v7 * __t160;
+            let __t225: __F64 = __v16 + __t224;
+            let __t226: __F64 = __t206 * __t209;
+            let __t228: __F64 = __t225 - __t226;
+            let __t229: __F64 = __v8 * __t160;
+            let __t230: __F64 = __v17 + __t229;
+            let __t231: __F64 = __t207 * __t209;
+            let __t233: __F64 = __t230 - __t231;
+            let __t234: __F64 = __v9 * __t160;
+            let __t235: __F64 = __v18 + __t234;
+            let __t236: __F64 = __t208 * __t209;
+            let __t238: __F64 = __t235 - __t236;
+            let __t245: __F64 = __v19 + __t229;
+            let __t246: __F64 = __t206 * __t210;
+            let __t248: __F64 = __t245 - __t246;
+            let __t249: __F64 = __v10 * __t160;
+            let __t250: __F64 = __v20 + __t249;
+            let __t251: __F64 = __t207 * __t210;
+            let __t253: __F64 = __t250 - __t251;
+            let __t254: __F64 = __v11 * __t160;
+            let __t255: __F64 = __v21 + __t254;
+            let __t256: __F64 = __t208 * __t210;
+            let __t258: __F64 = __t255 - __t256;
+            let __t262: __F64 = __v22 + __t234;
+            let __t263: __F64 = __t206 * __t211;
+            let __t265: __F64 = __t262 - __t263;
+            let __t266: __F64 = __v23 + __t254;
+            let __t267: __F64 = __t207 * __t211;
+            let __t269: __F64 = __t266 - __t267;
+            let __t270: __F64 = __v12 * __t160;
+            let __t271: __F64 = __v24 + __t270;
+            let __t272: __F64 = __t208 * __t211;
+            let __t274: __F64 = __t271 - __t272;
+            let __t911: __F64 = __v2 * __v4;
+            let __t912: __F64 = __v1 * __v5;
+            let __t914: __F64 = __t911 - __t912;
+            let __t915: __F64 = __v0 * __v5;
+            let __t916: __F64 = __v2 * __v3;
+            let __t918: __F64 = __t915 - __t916;
+            let __t919: __F64 = __v1 * __v3;
+            let __t920: __F64 = __v0 * __v4;
+            let __t922: __F64 = __t919 - __t920;
+            let __t1149: __F64 = __t228 * __t914;
+            let __t1150: __F64 = __t233 * __t918;
+            let __t1151: __F64 = __t238 * __t922;
+            let __t1152: __F64 = __t1149 + __t1150;
+            let __t1153: __F64 = __t1151 + __t1152;
+            let __t1154: __F64 = __t248 * __t914;
+            let __t1155: __F64 = __t253 * __t918;
+            let __t1156: __F64 = __t258 * __t922;
+            let __t1157: __F64 = __t1154 + __t1155;
+            let __t1158: __F64 = __t1156 + __t1157;
+            let __t1159: __F64 = __t265 * __t914;
+            let __t1160: __F64 = __t269 * __t918;
+            let __t1161: __F64 = __t274 * __t922;
+            let __t1162: __F64 = __t1159 + __t1160;
+            let __t1163: __F64 = __t1161 + __t1162;
+            let __t1164: __F64 = __v2 * __t198;
+            let __t1165: __F64 = __v1 * __t199;
+            let __t1167: __F64 = __t1164 - __t1165;
+            let __t1168: __F64 = __v0 * __t199;
+            let __t1169: __F64 = __v2 * __t197;
+            let __t1171: __F64 = __t1168 - __t1169;
+            let __t1172: __F64 = __v1 * __t197;
+            let __t1173: __F64 = __v0 * __t198;
+            let __t1175: __F64 = __t1172 - __t1173;
+            let __t1176: __F64 = __v5 * __t203;
+            let __t1177: __F64 = __v4 * __t205;
+            let __t1179: __F64 = __t1176 - __t1177;
+            let __t1180: __F64 = __v3 * __t205;
+            let __t1181: __F64 = __v5 * __t201;
+            let __t1183: __F64 = __t1180 - __t1181;
+            let __t1184: __F64 = __v4 * __t201;
+            let __t1185: __F64 = __v3 * __t203;
+            let __t1187: __F64 = __t1184 - __t1185;
+            let __t1188: __F64 = __t1167 + __t1179;
+            let __t1190: __F64 = __t1188 - __t1153;
+            let __t1191: __F64 = __t1171 + __t1183;
+            let __t1193: __F64 = __t1191 - __t1158;
+            let __t1194: __F64 = __t1175 + __t1187;
+            let __t1196: __F64 = __t1194 - __t1163;
+            __ReducedEquations {
+                inertia: __Matrix3::new(
+                    __v7,
+                    __v8,
+                    __v9,
+                    __v8,
+                    __v10,
+                    __v11,
+                    __v9,
+                    __v11,
+                    __v12,
+                ),
+                right_side: __Vector3::new(__t1190, __t1193, __t1196),
+                psi_dot: __t160,
             }
         }
         #[inline]

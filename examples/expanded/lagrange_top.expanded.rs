@@ -26,6 +26,8 @@ const _: () = {
     type __Matrix3 = ::routh::__private::Matrix3<::routh::__private::f64>;
     type __RouthBundle = ::routh::__private::RouthBundle;
     type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
+    type __FullEquations = ::routh::__private::FullEquations;
+    type __ReducedEquations = ::routh::__private::ReducedEquations;
     type __RouthTape = ::routh::__private::RouthTape;
     type __MaybeTape = ::routh::__private::MaybeTape;
     #[automatically_derived]
@@ -130,6 +132,51 @@ const _: () = {
             let __t42: __F64 = __t39 + __t40;
             let __t43: __F64 = __t41 + __t42;
             __t43
+        }
+        #[inline]
+        fn full_equations(
+            &self,
+            __omega: &__Vector3,
+            __gamma: &__Vector3,
+        ) -> __FullEquations {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t510: __F64 = __v2 * __t29;
+            let __t511: __F64 = __v1 * __t15;
+            let __t513: __F64 = __t510 - __t511;
+            let __t514: __F64 = __v0 * __t15;
+            let __t515: __F64 = __v2 * __t26;
+            let __t517: __F64 = __t514 - __t515;
+            let __t518: __F64 = __v1 * __t26;
+            let __t519: __F64 = __v0 * __t29;
+            let __t521: __F64 = __t518 - __t519;
+            let __t522: __F64 = __v4 * __v9;
+            let __t524: __F64 = __v3 * __v9;
+            let __t526: __F64 = __t513 + __t522;
+            let __t527: __F64 = __t517 - __t524;
+            __FullEquations {
+                inertia: __Matrix3::new(
+                    __v7,
+                    0f64,
+                    0f64,
+                    0f64,
+                    __v7,
+                    0f64,
+                    0f64,
+                    0f64,
+                    __v8,
+                ),
+                right_side: __Vector3::new(__t526, __t527, __t521),
+            }
         }
     }
     #[automatically_derived]
@@ -910,6 +957,134 @@ const _: () = {
                     __t321,
                     __t325,
                 ),
+            }
+        }
+        #[inline]
+        fn reduced_equations(
+            &self,
+            __big_omega: &__Vector3,
+            __gamma: &__Vector3,
+            __p_psi: __F64,
+        ) -> __ReducedEquations {
+            let __v0: __F64 = __big_omega[0usize];
+            let __v1: __F64 = __big_omega[1usize];
+            let __v2: __F64 = __big_omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v6: __F64 = __p_psi;
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t15: __F64 = __v2 * __v8;
+            let __t26: __F64 = __v0 * __v7;
+            let __t29: __F64 = __v1 * __v7;
+            let __t39: __F64 = __v3 * __t26;
+            let __t40: __F64 = __v4 * __t29;
+            let __t41: __F64 = __v5 * __t15;
+            let __t42: __F64 = __t39 + __t40;
+            let __t43: __F64 = __t41 + __t42;
+            let __t44: __F64 = __v3 * __v3;
+            let __t45: __F64 = __v4 * __v4;
+            let __t46: __F64 = __t44 + __t45;
+            let __t47: __F64 = __v7 * __t46;
+            let __t48: __F64 = __v5 * __v8;
+            let __t49: __F64 = __v5 * __t48;
+            let __t50: __F64 = __t47 + __t49;
+            let __t53: __F64 = __v6 - __t43;
+            let __t54: __F64 = 1.0f64 / __t50;
+            let __t55: __F64 = __t53 * __t54;
+            let __t62: __F64 = __v3 * __v7;
+            let __t63: __F64 = __v4 * __v7;
+            let __t69: __F64 = __t55 * __t62;
+            let __t70: __F64 = __t55 * __t63;
+            let __t71: __F64 = __t48 * __t55;
+            let __t72: __F64 = __t26 + __t69;
+            let __t73: __F64 = __t29 + __t70;
+            let __t74: __F64 = __t15 + __t71;
+            let __t75: __F64 = __t55 * __t72;
+            let __t76: __F64 = __t55 * __t73;
+            let __t77: __F64 = __t55 * __t74;
+            let __t78: __F64 = __t77 - __v9;
+            let __t498: __F64 = __v2 * __v4;
+            let __t499: __F64 = __v1 * __v5;
+            let __t501: __F64 = __t498 - __t499;
+            let __t502: __F64 = __v0 * __v5;
+            let __t503: __F64 = __v2 * __v3;
+            let __t505: __F64 = __t502 - __t503;
+            let __t506: __F64 = __v1 * __v3;
+            let __t507: __F64 = __v0 * __v4;
+            let __t509: __F64 = __t506 - __t507;
+            let __t560: __F64 = __v2 * __t73;
+            let __t561: __F64 = __v1 * __t74;
+            let __t563: __F64 = __t560 - __t561;
+            let __t564: __F64 = __v0 * __t74;
+            let __t565: __F64 = __v2 * __t72;
+            let __t567: __F64 = __t564 - __t565;
+            let __t568: __F64 = __v1 * __t72;
+            let __t569: __F64 = __v0 * __t73;
+            let __t571: __F64 = __t568 - __t569;
+            let __t572: __F64 = __v5 * __t76;
+            let __t573: __F64 = __v4 * __t78;
+            let __t575: __F64 = __t572 - __t573;
+            let __t576: __F64 = __v3 * __t78;
+            let __t577: __F64 = __v5 * __t75;
+            let __t579: __F64 = __t576 - __t577;
+            let __t580: __F64 = __v4 * __t75;
+            let __t581: __F64 = __v3 * __t76;
+            let __t583: __F64 = __t580 - __t581;
+            let __t584: __F64 = __t563 + __t575;
+            let __t587: __F64 = __t567 + __t579;
+            let __t590: __F64 = __t571 + __t583;
+            let __t640: __F64 = __v7 * __t501;
+            let __t641: __F64 = __v8 * __t509;
+            let __t656: __F64 = __t29 * __t505;
+            let __t657: __F64 = __t26 * __t501;
+            let __t658: __F64 = __t656 + __t657;
+            let __t659: __F64 = __t15 * __t509;
+            let __t660: __F64 = __t658 + __t659;
+            let __t672: __F64 = __v7 * __t505;
+            let __t751: __F64 = __t48 * __t509;
+            let __t752: __F64 = __v5 * __t641;
+            let __t753: __F64 = __t751 + __t752;
+            let __t754: __F64 = __v4 * __t505;
+            let __t755: __F64 = 2f64 * __t754;
+            let __t756: __F64 = __v3 * __t501;
+            let __t757: __F64 = 2f64 * __t756;
+            let __t758: __F64 = __t755 + __t757;
+            let __t759: __F64 = __v7 * __t758;
+            let __t760: __F64 = __t753 + __t759;
+            let __t761: __F64 = __t50 * __t50;
+            let __t763: __F64 = __t760 / __t761;
+            let __t765: __F64 = __t54 * __t660;
+            let __t767: __F64 = __t53 * __t763;
+            let __t769: __F64 = __t765 + __t767;
+            let __t771: __F64 = __t62 * __t769;
+            let __t773: __F64 = __t55 * __t640;
+            let __t774: __F64 = __t773 - __t771;
+            let __t775: __F64 = __t63 * __t769;
+            let __t777: __F64 = __t55 * __t672;
+            let __t778: __F64 = __t777 - __t775;
+            let __t779: __F64 = __t55 * __t641;
+            let __t780: __F64 = __t48 * __t769;
+            let __t782: __F64 = __t779 - __t780;
+            let __t784: __F64 = __t584 - __t774;
+            let __t786: __F64 = __t587 - __t778;
+            let __t788: __F64 = __t590 - __t782;
+            __ReducedEquations {
+                inertia: __Matrix3::new(
+                    __v7,
+                    0f64,
+                    0f64,
+                    0f64,
+                    __v7,
+                    0f64,
+                    0f64,
+                    0f64,
+                    __v8,
+                ),
+                right_side: __Vector3::new(__t784, __t786, __t788),
+                psi_dot: __t55,
             }
         }
         #[inline]

@@ -14,6 +14,7 @@
 //! next to the impls, through `<crate>::__private` ([`ALIASES`]), so that the text never names
 //! the crate path (whose tokens carry the user's span for errors).
 
+use crate::equations::Equations;
 use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
@@ -23,12 +24,14 @@ use std::fmt::Write;
 
 /// The names the text uses for the types of `<crate>::__private`, declared as type aliases in
 /// the `const _` block around the impls: `(alias, item of __private)`.
-pub const ALIASES: [(&str, &str); 7] = [
+pub const ALIASES: [(&str, &str); 9] = [
     ("__F64", "f64"),
     ("__Vector3", "Vector3"),
     ("__Matrix3", "Matrix3"),
     ("__RouthBundle", "RouthBundle"),
     ("__GyroscopicSystem", "GyroscopicSystem"),
+    ("__FullEquations", "FullEquations"),
+    ("__ReducedEquations", "ReducedEquations"),
     ("__RouthTape", "RouthTape"),
     ("__MaybeTape", "MaybeTape"),
 ];
@@ -281,7 +284,7 @@ impl Emitter<'_> {
     }
 
     /// The methods of `impl Lagrangian`.
-    pub fn lagrangian_methods(&self, o: &Outputs) -> String {
+    pub fn lagrangian_methods(&self, o: &Outputs, eq: &Equations) -> String {
         let mut out = String::new();
         let l = Inputs::Lagrangian;
         let s = &mut out;
@@ -294,11 +297,25 @@ impl Emitter<'_> {
         self.method(s, "d2l_domega_dgamma", WG, mx, l);
         self.method(s, "energy", WG, Ret::Scalar(o.energy), l);
         self.method(s, "cyclic_momentum", WG, Ret::Scalar(o.cyclic_momentum), l);
+
+        // full_equations: J and the right side of (8) from one body.
+        let _ = writeln!(
+            s,
+            "#[inline]\nfn full_equations(&self, {WG}) -> __FullEquations {{"
+        );
+        let mut ids = flat_m(&o.d2l_domega2);
+        ids.extend(eq.full);
+        let outs = self.body(s, &ids, l);
+        s.push_str("__FullEquations {\ninertia: ");
+        construct(s, "__Matrix3", &outs[..9]);
+        s.push_str(",\nright_side: ");
+        construct(s, "__Vector3", &outs[9..]);
+        s.push_str(",\n}\n}\n");
         out
     }
 
     /// The methods of `impl Routhian`.
-    pub fn routhian_methods(&self, o: &Outputs) -> String {
+    pub fn routhian_methods(&self, o: &Outputs, eq: &Equations) -> String {
         let mut out = String::new();
         let r = Inputs::Routhian;
         let s = &mut out;
@@ -350,6 +367,21 @@ impl Emitter<'_> {
         s.push_str(",\nc: ");
         construct(s, "__Matrix3", m.c.as_flattened());
         s.push_str(",\n}\n}\n");
+
+        // reduced_equations: J, the right side of (13) and ψ̇ from one body.
+        let _ = writeln!(
+            s,
+            "#[inline]\nfn reduced_equations(&self, {ROUTH}) -> __ReducedEquations {{"
+        );
+        let mut ids = flat_m(&o.d2l_domega2);
+        ids.extend(eq.reduced);
+        ids.push(o.psi_dot);
+        let outs = self.body(s, &ids, r);
+        s.push_str("__ReducedEquations {\ninertia: ");
+        construct(s, "__Matrix3", &outs[..9]);
+        s.push_str(",\nright_side: ");
+        construct(s, "__Vector3", &outs[9..12]);
+        let _ = write!(s, ",\npsi_dot: {},\n}}\n}}\n", outs[12]);
         out
     }
 }

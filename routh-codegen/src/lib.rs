@@ -13,6 +13,7 @@ pub mod attr;
 pub mod check;
 pub mod ctxt;
 pub mod emit;
+pub mod equations;
 pub mod layout;
 pub mod lower;
 pub mod reduce;
@@ -49,6 +50,8 @@ fn lex(src: &str) -> Option<TokenStream> {
 pub struct Model {
     pub lowered: lower::Lowered,
     pub outputs: reduce::Outputs,
+    /// The right sides of (8) and (13), for the vector fields.
+    pub equations: equations::Equations,
 }
 
 /// Parses, checks, lowers and reduces; all errors combined.
@@ -65,7 +68,12 @@ pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
         ));
     };
     let outputs = reduce::reduce(&mut lowered);
-    Ok(Model { lowered, outputs })
+    let equations = equations::equations(&mut lowered.sym, &outputs);
+    Ok(Model {
+        lowered,
+        outputs,
+        equations,
+    })
 }
 
 fn crate_path(m: &Model) -> TokenStream {
@@ -101,8 +109,8 @@ pub fn expand_with(
             )
         })
     };
-    let lag = lex(e.lagrangian_methods(&model.outputs))?;
-    let mut routh_text = e.routhian_methods(&model.outputs);
+    let lag = lex(e.lagrangian_methods(&model.outputs, &model.equations))?;
+    let mut routh_text = e.routhian_methods(&model.outputs, &model.equations);
     emit::certification_tape(&mut routh_text, &model.lowered.sym, &model.outputs);
     let routh = lex(routh_text)?;
     let aliases = emit::ALIASES.iter().map(|&(alias, item)| {

@@ -33,7 +33,10 @@ pub use families::{
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions,
     EventKind, StabilityAtlas,
 };
-pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+pub use model::{
+    DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, ReducedEquations, RouthBundle,
+    Routhian,
+};
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};
 pub use steady::{steady_motion_near, steady_motions, SearchOptions, SteadyMotion};

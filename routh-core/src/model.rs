@@ -27,6 +27,47 @@ pub trait Lagrangian {
     fn cyclic_momentum(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
         self.dl_domega(omega, gamma).dot(gamma)
     }
+    /// The terms of the full equations (8) solved for ω̇ at one state (see [`FullEquations`]):
+    /// what [`simulate_full`](crate::simulate_full) evaluates at every stage.
+    ///
+    /// The default combines the methods above; `#[derive(Lagrangian)]` emits one straight-line
+    /// body for all of it, so that the subexpressions the derivatives share are computed once.
+    fn full_equations(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> FullEquations {
+        let gamma_dot = gamma.cross(omega);
+        FullEquations {
+            inertia: self.d2l_domega2(gamma),
+            right_side: self.dl_domega(omega, gamma).cross(omega)
+                + self.dl_dgamma(omega, gamma).cross(gamma)
+                - self.d2l_domega_dgamma(omega, gamma) * gamma_dot,
+        }
+    }
+}
+
+/// The full equations (8) at one state `(ω, γ)`, solved for ω̇ (docs/method.md §2):
+/// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)` and `γ̇ = γ × ω`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FullEquations {
+    /// `J(γ) = ∂²L/∂ω²`, symmetric positive definite for a physical body.
+    pub inertia: Matrix3<f64>,
+    /// The right side `∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`.
+    pub right_side: Vector3<f64>,
+}
+
+/// The reduced equations (13) at one state `(Ω, γ, p_ψ)` (docs/method.md §3, errata E4):
+/// `A Ω̇ = ∂R/∂Ω × Ω + ∂R/∂γ × γ − M(γ × Ω)` with `A = ∂²R/∂Ω²` and `M = ∂²R/∂Ω∂γ`,
+/// `γ̇ = γ × Ω`, and the cyclic angle's rate `ψ̇ = −∂R/∂p_ψ` (15).
+///
+/// `A` is singular along γ and is not needed: with `J = ∂²L/∂ω²`, `A = J − (Jγ)(Jγ)ᵀ/(γᵀJγ)`,
+/// and the solution with `Ω̇·γ = 0` (the gauge) is `J⁻¹b` projected on γ^⊥ (see
+/// [`reduced_vector_field`](crate::sim::reduced_vector_field)), so the equations carry `J`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReducedEquations {
+    /// `J(γ) = ∂²L/∂ω²`, symmetric positive definite for a physical body.
+    pub inertia: Matrix3<f64>,
+    /// The right side `∂R/∂Ω × Ω + ∂R/∂γ × γ − M(γ × Ω)`.
+    pub right_side: Vector3<f64>,
+    /// `ψ̇ = −∂R/∂p_ψ` (15), (38).
+    pub psi_dot: f64,
 }
 
 /// Every output of the Routh function at one point `(Ω, γ, p_ψ)`, from one evaluation.
@@ -179,6 +220,27 @@ pub trait Routhian: Lagrangian {
     /// `A`, `G`, `C` of (64) at `Ω = 0` (see [`GyroscopicSystem`]).
     fn gyroscopic_system(&self, gamma: &Vector3<f64>, p_psi: f64) -> GyroscopicSystem {
         GyroscopicSystem::from_bundle(&self.bundle(&Vector3::zeros(), gamma, p_psi), gamma)
+    }
+    /// The terms of the reduced equations (13) at one state (see [`ReducedEquations`]): what
+    /// [`simulate_reduced`](crate::simulate_reduced) evaluates at every stage.
+    ///
+    /// The default combines the methods above; `#[derive(Lagrangian)]` emits one straight-line
+    /// body for all of it, so that the subexpressions the derivatives share are computed once.
+    fn reduced_equations(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> ReducedEquations {
+        let (w, g, p) = (big_omega, gamma, p_psi);
+        let gamma_dot = gamma.cross(big_omega);
+        ReducedEquations {
+            inertia: self.d2l_domega2(gamma),
+            right_side: self.dr_domega(w, g, p).cross(big_omega)
+                + self.dr_dgamma(w, g, p).cross(gamma)
+                - self.d2r_domega_dgamma(w, g, p) * gamma_dot,
+            psi_dot: -self.dr_dp(w, g, p),
+        }
     }
     /// `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` as an expression tape that can be evaluated with
     /// intervals, for [`steady_motions_certified`](crate::certify::steady_motions_certified).

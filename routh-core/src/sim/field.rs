@@ -3,14 +3,15 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::model::{Lagrangian, Routhian};
+use crate::model::{FullEquations, Lagrangian, ReducedEquations, Routhian};
 use crate::validate::{gamma_array, min_eigenvalue};
 use crate::RouthError;
 
 /// The vector field of the full equations (8) solved for ω̇:
 /// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`, `γ̇ = γ × ω`, with `J = ∂²L/∂ω²`
-/// (docs/method.md §2). Returns `(ω̇, γ̇)`. The system in `J` is solved by a square-root-free Cholesky
-/// factorisation (LDLᵀ of its lower triangle), falling back to Cholesky proper near singularity.
+/// (docs/method.md §2), from [`Lagrangian::full_equations`]. Returns `(ω̇, γ̇)`. The system in
+/// `J` is solved by a square-root-free Cholesky factorisation (LDLᵀ of its lower triangle),
+/// falling back to Cholesky proper near singularity.
 ///
 /// Errors: [`RouthError::KineticNotPositiveDefinite`] when the Cholesky factorisation of a
 /// finite `J(γ)` fails. Non-finite model outputs give non-finite rates (no error), so that an
@@ -23,20 +24,52 @@ pub fn full_vector_field<M: Lagrangian + ?Sized>(
     FullField::new(model).eval(omega, gamma)
 }
 
-/// [`full_vector_field`] with a memory: the factorisation of the last `J(γ)` is kept and reused
-/// while `J` is bitwise the same (every model whose inertia does not depend on γ: tops,
-/// gyrostats), so that a simulation factorises a constant `J` once. The values are those of
+/// The factorisation of the last `J(γ)` a vector field solved with, kept and reused while `J`
+/// is bitwise the same (every model whose inertia does not depend on γ: tops, gyrostats), so
+/// that a simulation factorises a constant `J` once. Solutions are bit for bit those of a new
+/// factorisation.
+#[derive(Default)]
+pub(super) struct InertiaCache(Option<(Matrix3<f64>, Ldl)>);
+
+impl InertiaCache {
+    /// `J⁻¹b` on the fast path: by the kept factorisation when `J` is the kept one, else by a
+    /// new [`Ldl`] (then kept) when `J` is finite and clearly positive definite. A non-finite `b`
+    /// gives NaN. `None` when the fast path declines (`J` not finite, or not clearly positive
+    /// definite): the caller then decides with Cholesky.
+    #[inline(always)]
+    fn solve(&mut self, j: &Matrix3<f64>, b: &Vector3<f64>) -> Option<Vector3<f64>> {
+        if !all_finite(b) {
+            return Some(Vector3::repeat(f64::NAN));
+        }
+        if let Some((key, inv)) = &self.0 {
+            if same_bits(key, j) {
+                return Some(inv.solve(b));
+            }
+        }
+        if j.iter().all(|x| x.is_finite()) {
+            if let Some(inv) = Ldl::new(j) {
+                self.0 = Some((*j, inv));
+                return Some(inv.solve(b));
+            }
+        }
+        None
+    }
+}
+
+/// [`full_vector_field`] with an [`InertiaCache`]; the values are those of
 /// [`full_vector_field`] bit for bit.
 pub(super) struct FullField<'a, M: ?Sized> {
     model: &'a M,
-    /// The last `J` that was factorised on the fast path, with its factors.
-    cache: Option<(Matrix3<f64>, Ldl)>,
+    cache: InertiaCache,
 }
 
 impl<'a, M: Lagrangian + ?Sized> FullField<'a, M> {
     #[inline]
     pub(super) fn new(model: &'a M) -> Self {
-        FullField { model, cache: None }
+        FullField {
+            model,
+            cache: InertiaCache::default(),
+        }
     }
 
     #[inline(always)]
@@ -45,30 +78,15 @@ impl<'a, M: Lagrangian + ?Sized> FullField<'a, M> {
         omega: &Vector3<f64>,
         gamma: &Vector3<f64>,
     ) -> Result<(Vector3<f64>, Vector3<f64>), RouthError> {
-        let model = self.model;
         let gamma_dot = gamma.cross(omega);
-        let j = model.d2l_domega2(gamma);
-        let rhs = model.dl_domega(omega, gamma).cross(omega)
-            + model.dl_dgamma(omega, gamma).cross(gamma)
-            - model.d2l_domega_dgamma(omega, gamma) * gamma_dot;
-        if let Some((key, inv)) = &self.cache {
-            if same_bits(key, &j) {
-                // `key` was finite and factorised: only `rhs` can make the solution non-finite.
-                let omega_dot = if all_finite(&rhs) {
-                    inv.solve(&rhs)
-                } else {
-                    Vector3::repeat(f64::NAN)
-                };
-                return Ok((omega_dot, gamma_dot));
-            }
+        let FullEquations {
+            inertia: j,
+            right_side: rhs,
+        } = self.model.full_equations(omega, gamma);
+        if let Some(omega_dot) = self.cache.solve(&j, &rhs) {
+            return Ok((omega_dot, gamma_dot));
         }
-        if j.iter().all(|x| x.is_finite()) && all_finite(&rhs) {
-            if let Some(inv) = Ldl::new(&j) {
-                self.cache = Some((j, inv));
-                return Ok((inv.solve(&rhs), gamma_dot));
-            }
-        }
-        // Declined by the fast path: exactly the checks and the Cholesky verdict of before.
+        // Declined by the fast path: the checks and the Cholesky verdict.
         let omega_dot = solve_spd(&j, &rhs, gamma, |k, g| {
             RouthError::KineticNotPositiveDefinite {
                 gamma: gamma_array(g),
@@ -92,65 +110,95 @@ fn all_finite(v: &Vector3<f64>) -> bool {
 }
 
 /// The vector field of the reduced equations (13) in the gauge of errata E4, with (15):
-/// `(A + c γγᵀ) Ω̇ = ∂R/∂Ω × Ω + ∂R/∂γ × γ − M γ̇`, `γ̇ = γ × Ω`, `ψ̇ = −∂R/∂p_ψ`, where
-/// `A = ∂²R/∂Ω²`, `M = ∂²R/∂Ω∂γ`, and `c = tr(A)/2`. Returns `(Ω̇, γ̇, ψ̇)`.
+/// `A Ω̇ = ∂R/∂Ω × Ω + ∂R/∂γ × γ − M γ̇` with `Ω̇·γ = 0`, `γ̇ = γ × Ω`, `ψ̇ = −∂R/∂p_ψ`,
+/// where `A = ∂²R/∂Ω²` and `M = ∂²R/∂Ω∂γ`, from [`Routhian::reduced_equations`]. Returns
+/// `(Ω̇, γ̇, ψ̇)`.
 ///
-/// The derivatives are taken from the model's methods one by one rather than from
-/// [`Routhian::bundle`], which also computes R, ψ̇ and `∂²R/∂γ²`: when `bundle` is not inlined
-/// (the generated one is too large for that inside the integrator) those are not optimised away.
-/// Generated methods inlined side by side share their common subexpressions again; on the heavy
-/// top this made `simulate_reduced` 17% faster, on the ellipsoid of `benches/simulate.rs`, whose
-/// `∂R/∂γ` and `∂²R/∂Ω∂γ` stay out of line, 7% slower.
-///
-/// # The gauge
+/// # The gauge, and the solve through J
 ///
 /// `A` annihilates γ (E4), so the γ-component of (13) is an identity and Ω̇ is fixed only up to a
-/// multiple of γ; adding `c γγᵀ` for any `c > 0` picks the one with `Ω̇·γ = 0`. The gauge is
-/// exact for every c: the right side is orthogonal to γ (by `Mᵀγ = −∂R/∂Ω`, E6), `A` maps γ^⊥
-/// into γ^⊥, and `(A + cγγᵀ)γ = c|γ|²γ`, so the solution has no γ-component when `|γ| = 1`;
-/// with `γ̇·Ω = 0` this keeps `Ω·γ` at its initial value.
+/// multiple of γ; the gauge `Ω̇·γ = 0` picks one, and with `γ̇·Ω = 0` it keeps `Ω·γ` at its
+/// initial value.
 ///
-/// The value of c matters only in floating point. It must carry the units of `A` (those of the
-/// inertia J): with `c = 1` and J in units 1e9 times smaller (the same body in other units), the
-/// round-off of the right side along γ, about `ε·|J||Ω|²`, is divided by 1 instead of by `|J|`
-/// and pushes Ω off the gauge by `1e9·ε` per step, so that the error control fails ("too many
-/// steps"); in units 1e9 times larger, Cholesky of `A + γγᵀ` mixes eigenvalues 1e−9 and 1 and
-/// loses 9 digits of Ω̇. `c = tr(A)/2` is the mean of the two non-zero eigenvalues of A
-/// (A is positive semi-definite with kernel γ), so `A + cγγᵀ` is exactly as well conditioned as
-/// A on γ^⊥, and c scales with J and is invariant under rotations of the body frame. It is
-/// computed as `A₁₁/2 + A₂₂/2 + A₃₃/2`, which overflows only if an entry of A does.
+/// For `L = ½ωᵀJω + a·ω − U` (every model of the DSL), differentiating (14) twice in Ω gives
+/// `A = J − (Jγ)(Jγ)ᵀ/(γᵀJγ)`, so `A J⁻¹b = b − Jγ (γ·b)/(γᵀJγ) = b` for every `b ⊥ γ`, and
+/// the right side `b` is orthogonal to γ (by `Mᵀγ = −∂R/∂Ω`, E6). Hence the gauge solution is
+/// `Ω̇ = y − (γ·y/|γ|²)γ` with `y = J⁻¹b`: the singular A is never factorised, and for a body
+/// whose J does not depend on γ (tops, gyrostats) the factorisation of J is made once per
+/// simulation ([`InertiaCache`]) and every evaluation is multiplications and one division,
+/// `1/|γ|²`, off the critical path. It is scale-free: J carries the units of A, and the
+/// projection none.
+///
+/// When J is not clearly positive definite (the fast path declines), the solve falls back to
+/// `(A + cγγᵀ)Ω̇ = b` with `A` from [`Routhian::d2r_domega2`] and `c = tr(A)/2`, the mean of
+/// the two non-zero eigenvalues of A (so that `A + cγγᵀ` is as well conditioned as A on γ^⊥,
+/// and c scales with J), by Cholesky, whose failure is the error.
 ///
 /// Errors: [`RouthError::SingularReducedKinetic`] (with the smallest eigenvalue of
-/// `A + cγγᵀ`) when its Cholesky factorisation fails for finite entries.
+/// `A + cγγᵀ`) when that Cholesky factorisation fails for finite entries.
 pub fn reduced_vector_field<M: Routhian + ?Sized>(
     model: &M,
     big_omega: &Vector3<f64>,
     gamma: &Vector3<f64>,
     p_psi: f64,
 ) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
-    reduced_field(model, big_omega, gamma, p_psi)
+    ReducedField::new(model, p_psi).eval(big_omega, gamma)
 }
 
-/// [`reduced_vector_field`], inlined into the integrator's stage loop.
-#[inline(always)]
-pub(super) fn reduced_field<M: Routhian + ?Sized>(
-    model: &M,
-    big_omega: &Vector3<f64>,
-    gamma: &Vector3<f64>,
+/// [`reduced_vector_field`] on the level `p_ψ`, with an [`InertiaCache`].
+pub(super) struct ReducedField<'a, M: ?Sized> {
+    model: &'a M,
     p_psi: f64,
-) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
-    let (w, g, p) = (big_omega, gamma, p_psi);
-    let gamma_dot = gamma.cross(big_omega);
-    let rhs = model.dr_domega(w, g, p).cross(big_omega) + model.dr_dgamma(w, g, p).cross(gamma)
-        - model.d2r_domega_dgamma(w, g, p) * gamma_dot;
-    let a = &model.d2r_domega2(w, g, p);
-    let gauge = 0.5 * a[(0, 0)] + 0.5 * a[(1, 1)] + 0.5 * a[(2, 2)];
-    let k = a + gamma * gamma.transpose() * gauge;
-    let big_omega_dot = solve_spd(&k, &rhs, gamma, |k, g| RouthError::SingularReducedKinetic {
-        gamma: gamma_array(g),
-        min_eigenvalue: min_eigenvalue(k),
-    })?;
-    Ok((big_omega_dot, gamma_dot, -model.dr_dp(w, g, p)))
+    cache: InertiaCache,
+}
+
+impl<'a, M: Routhian + ?Sized> ReducedField<'a, M> {
+    #[inline]
+    pub(super) fn new(model: &'a M, p_psi: f64) -> Self {
+        ReducedField {
+            model,
+            p_psi,
+            cache: InertiaCache::default(),
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn eval(
+        &mut self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+    ) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
+        let gamma_dot = gamma.cross(big_omega);
+        // Taken before the solve, so that the division is off its critical path.
+        let r_gamma = 1.0 / gamma.norm_squared();
+        let ReducedEquations {
+            inertia: j,
+            right_side: rhs,
+            psi_dot,
+        } = self.model.reduced_equations(big_omega, gamma, self.p_psi);
+        let big_omega_dot = match self.cache.solve(&j, &rhs) {
+            Some(y) => y - gamma * (gamma.dot(&y) * r_gamma),
+            None => self.singular_inertia(big_omega, gamma, &rhs)?,
+        };
+        Ok((big_omega_dot, gamma_dot, psi_dot))
+    }
+
+    /// The solve when `J` is not clearly positive definite: `(A + cγγᵀ)Ω̇ = b` by Cholesky.
+    #[inline(never)]
+    fn singular_inertia(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        rhs: &Vector3<f64>,
+    ) -> Result<Vector3<f64>, RouthError> {
+        let a = self.model.d2r_domega2(big_omega, gamma, self.p_psi);
+        let gauge = 0.5 * a[(0, 0)] + 0.5 * a[(1, 1)] + 0.5 * a[(2, 2)];
+        let k = a + gamma * gamma.transpose() * gauge;
+        solve_spd(&k, rhs, gamma, |k, g| RouthError::SingularReducedKinetic {
+            gamma: gamma_array(g),
+            min_eigenvalue: min_eigenvalue(k),
+        })
+    }
 }
 
 /// Solves `K x = rhs` for a symmetric positive definite K, reading its lower triangle (as
@@ -199,7 +247,7 @@ fn cholesky_solve(
 /// side by side. `d₂d₃` carries the same rounding errors as `d₂·d₃` of the usual recurrence (its
 /// two terms are those of d₃ times d₂), so the solve is as accurate as Cholesky (see
 /// `matches_cholesky_on_ill_conditioned_matrices`). A constant K (tops, gyrostats) is
-/// factorised once ([`FullField`]), and a diagonal one is then solved by independent products.
+/// factorised once ([`InertiaCache`]), and a diagonal one is then solved by independent products.
 ///
 /// Shorter chains were tried and rejected: the adjugate `adj K/det K`, and pivots from the
 /// leading minors (`d₃ = det K/M₂`), lose accuracy through the cancellation in `det K`: on a

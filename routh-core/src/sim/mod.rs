@@ -26,7 +26,7 @@ mod tableau;
 pub use field::{full_vector_field, reduced_vector_field};
 
 use drive::{drive, split3, Field};
-use field::FullField;
+use field::{FullField, ReducedField};
 
 use nalgebra::{SVector, Vector3};
 
@@ -495,16 +495,13 @@ impl<M: Lagrangian + ?Sized> Field<6> for FullRhs<'_, M> {
 }
 
 /// The state `(Ω, γ, ψ)` of (13), (15) on the level `p_psi`, and its rates.
-struct ReducedRhs<'a, M: ?Sized> {
-    model: &'a M,
-    p_psi: f64,
-}
+struct ReducedRhs<'a, M: ?Sized>(ReducedField<'a, M>);
 
 impl<M: Routhian + ?Sized> Field<7> for ReducedRhs<'_, M> {
     #[inline(always)]
     fn eval(&mut self, y: &SVector<f64, 7>) -> Result<(SVector<f64, 7>, Vector3<f64>), RouthError> {
         let (w, g) = (split3(y, 0), split3(y, 3));
-        let (w_dot, g_dot, psi_dot) = field::reduced_field(self.model, &w, &g, self.p_psi)?;
+        let (w_dot, g_dot, psi_dot) = self.0.eval(&w, &g)?;
         let mut d = SVector::<f64, 7>::zeros();
         d.fixed_rows_mut::<3>(0).copy_from(&w_dot);
         d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
@@ -596,7 +593,7 @@ pub fn simulate_reduced<M: Routhian>(
     y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
 
     let mut traj = ReducedTrajectory::default();
-    let field = ReducedRhs { model, p_psi };
+    let field = ReducedRhs(ReducedField::new(model, p_psi));
     let record = |t: f64, y: &SVector<f64, 7>| {
         let (w, g) = (split3(y, 0), split3(y, 3));
         // Only R, ∂R/∂Ω and ψ̇ (not the whole bundle, see `reduced_vector_field`).
