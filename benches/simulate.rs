@@ -5,7 +5,11 @@
 //! integrates), the generated reduced equations (13) with ψ (15) (`reduced_vector_field`, those
 //! of `simulate_reduced`), and the baseline, the full equations written by hand in closed form.
 //! The first two separate the integrators (same equations, same right-hand side); the baseline
-//! adds the cost of the generated right-hand side against an expert's.
+//! adds the cost of the generated right-hand side against an expert's. For the reduced problem
+//! the fair baseline is the same equations (13) by hand, two ways: through the hand-written (8)
+//! (Routh's reduction is exact: `Ω̇ = ω̇ − γ(γ·ω̇)/|γ|² − ψ̇γ̇` at `ω = Ω + ψ̇γ`), for both bodies,
+//! and in closed form from R (39) for the top; a last line compares `simulate_reduced` with the
+//! faster of them.
 //!
 //! Printed before the criterion timings, for each model, with ratios to the baseline:
 //!
