@@ -203,10 +203,9 @@ fn ellipsoid_routhian_matches_numdual() {
 
 /// The generated one-body vector-field terms, `full_equations` (8) and `reduced_equations` (13),
 /// against the trait's defaults on the num-dual twin, which combine its num-dual derivatives
-/// term by term (J, ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)γ̇, and the same with R): the generated
-/// bodies form the mixed term as a derivative along γ̇ where that is shorter, never as the
-/// twin does. The right sides are sums with cancellation, so they are compared relative to the
-/// size of their terms.
+/// term by term (J, ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)γ̇, and the same with R), where the
+/// generated bodies are one expression DAG each. The right sides are sums with cancellation,
+/// so they are compared relative to the size of their terms.
 fn check_equations<G: Routhian, H: Routhian>(
     gen: &G,
     reference: &H,

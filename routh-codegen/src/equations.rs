@@ -10,8 +10,7 @@
 
 use crate::lower::Symbols;
 use crate::reduce::{Outputs, M3, V3};
-use routh_symbolic::{op_counts, Graph, Id, Var};
-use std::collections::HashMap;
+use routh_symbolic::{Graph, Id};
 
 /// The right sides, one node per component.
 pub struct Equations {
@@ -23,40 +22,22 @@ pub struct Equations {
 
 /// The right sides of (8) and (13) for the model's outputs.
 ///
-/// The term `(∂²F/∂w∂γ)(γ × w)` is formed in two exactly equal ways, and the one that makes the
-/// shorter method body (with the inertia J it returns beside it) is kept: as the product of the
-/// 3×3 matrix the derivatives already have with `γ̇ = γ × w`, or as the derivative of `∂F/∂w`
-/// along `γ̇`, `d/dε ∂F/∂w(w, γ + εγ̇)` at `ε = 0`, which never forms the matrix (for the
-/// ellipsoid on a plane, whose mixed block is long, this is the shorter).
+/// The mixed term `(∂²F/∂w∂γ)(γ × w)` is the product of the 3×3 matrix the derivatives already
+/// have with `γ̇ = γ × w`. (Forming it instead as the derivative of `∂F/∂w` along `γ̇`,
+/// `d/dε ∂F/∂w(w, γ + εγ̇)` at `ε = 0`, and keeping the shorter, was tried: 6% fewer operations
+/// for the top's (13), 1% for the ellipsoid's (8), none for the gyrostat, at 6 ms more of
+/// expansion in an unoptimised build of the generator, which is what a user pays.)
 pub fn equations(sym: &mut Symbols, o: &Outputs) -> Equations {
     let (w, gm) = (sym.ids(sym.omega), sym.ids(sym.gamma));
-    let gamma_vars = sym.gamma;
     let g = &mut sym.graph;
     let gamma_dot = cross(g, &gm, &w);
-    let j = flat(&o.d2l_domega2);
-    let shortest = |g: &mut Graph, p: &V3, f: &V3, m: &M3| {
+    let side = |g: &mut Graph, p: &V3, f: &V3, m: &M3| {
         let product = matrix_times(g, m, &gamma_dot);
-        let by_matrix = right_side(g, p, f, &product, &w, &gm);
-        let along = derivative_along(g, p, gamma_vars, &gm, &gamma_dot);
-        let by_derivative = right_side(g, p, f, &along, &w, &gm);
-        let cost = |g: &Graph, r: &V3| {
-            let mut ids = j.clone();
-            ids.extend(r);
-            op_counts(g, &ids).total()
-        };
-        if cost(g, &by_derivative) < cost(g, &by_matrix) {
-            by_derivative
-        } else {
-            by_matrix
-        }
+        right_side(g, p, f, &product, &w, &gm)
     };
-    let full = shortest(g, &o.dl_domega, &o.dl_dgamma, &o.d2l_domega_dgamma);
-    let reduced = shortest(g, &o.dr_domega, &o.dr_dgamma, &o.d2r_domega_dgamma);
+    let full = side(g, &o.dl_domega, &o.dl_dgamma, &o.d2l_domega_dgamma);
+    let reduced = side(g, &o.dr_domega, &o.dr_dgamma, &o.d2r_domega_dgamma);
     Equations { full, reduced }
-}
-
-fn flat(m: &M3) -> Vec<Id> {
-    m.iter().flatten().copied().collect()
 }
 
 /// `m x`.
@@ -65,24 +46,6 @@ fn matrix_times(g: &mut Graph, m: &M3, x: &V3) -> V3 {
         let products: Vec<Id> = (0..3).map(|j| g.mul(m[i][j], x[j])).collect();
         g.sum(products)
     })
-}
-
-/// `(∂p/∂γ) x`: the derivative of `p` along `x`, `d/dε p(γ + εx)` at `ε = 0`.
-fn derivative_along(g: &mut Graph, p: &V3, gamma_vars: [Var; 3], gm: &V3, x: &V3) -> V3 {
-    let eps_var = g.new_var("ε");
-    let eps = g.var_id(eps_var);
-    let shift: HashMap<Var, Id> = (0..3)
-        .map(|k| {
-            let t = g.mul(eps, x[k]);
-            (gamma_vars[k], g.add(gm[k], t))
-        })
-        .collect();
-    let shifted = g.substitute(p, &shift);
-    let d: Vec<Id> = shifted.iter().map(|&s| g.diff(s, eps_var)).collect();
-    let zero = g.zero();
-    let at_zero: HashMap<Var, Id> = [(eps_var, zero)].into_iter().collect();
-    let d0 = g.substitute(&d, &at_zero);
-    [d0[0], d0[1], d0[2]]
 }
 
 /// `a × b`.
