@@ -79,6 +79,7 @@ pub(crate) struct Tangential {
 impl Tangential {
     /// The tangential quantities at the unit vector γ; `rel` is the relative tolerance for a zero
     /// eigenvalue of `K`.
+    #[inline(always)]
     pub(crate) fn new(
         gamma: &Vector3<f64>,
         dr_dgamma: &Vector3<f64>,
@@ -87,7 +88,7 @@ impl Tangential {
     ) -> Self {
         let basis = tangent_basis(gamma);
         let mu = dr_dgamma.dot(gamma);
-        let hess = restricted_hessian(&basis, mu, d2r_dgamma2);
+        let (hess, pth) = restricted_parts(&basis, mu, d2r_dgamma2);
         let e = sym2_eigen(&hess);
         let raw_grad = norm3(dr_dgamma.x, dr_dgamma.y, dr_dgamma.z);
         let h2: f64 = d2r_dgamma2.iter().map(|x| x * x).sum();
@@ -102,14 +103,15 @@ impl Tangential {
             )
         };
         let raw = raw_grad.max(hnorm);
-        let grad = -(basis.transpose() * dr_dgamma);
+        let (u, v) = (basis.column(0), basis.column(1));
+        let grad = Vector2::new(-u.dot(dr_dgamma), -v.dot(dr_dgamma));
         let grad_norm = norm3(grad.x, grad.y, 0.0);
         // The round-off of K = μE − PᵀHP is a few ulps of the two terms it is the difference
         // of (with c|γ|² added to U both carry 2c, and so does the floor), plus the error of the
         // basis P (orthonormal to γ within ε) times H: not the radial part of H, which K never
         // sees — at a higher-order point with a large radial Hessian (U = (1 + γ₃)² at −e₃) a
         // floor of ε‖H‖ would call K = 0 long before the point is reached.
-        let pth = hnorm_tangential(&basis, d2r_dgamma2);
+        let pth = pth.unwrap_or_else(|| hnorm_tangential(&basis, d2r_dgamma2));
         let k_terms = mu.abs().max(pth).max(64.0 * f64::EPSILON * hnorm);
         let zero_tol = (rel * knorm).max(ROUND * k_terms);
         let gf = ROUND * raw_grad;
@@ -198,6 +200,18 @@ fn norm3(x: f64, y: f64, z: f64) -> f64 {
     }
 }
 
+/// `|v|` of a 2-vector: the same value as [`stable_norm`], without its loop when `|v|²` is a
+/// normal number.
+#[inline]
+fn norm2(v: &Vector2<f64>) -> f64 {
+    let s = v.x * v.x + v.y * v.y;
+    if s.is_normal() {
+        s.sqrt()
+    } else {
+        stable_norm(v.as_slice())
+    }
+}
+
 /// The Euclidean norm of `xs` without overflow or underflow: the plain `√Σx²` when that sum is a
 /// normal number (then the same value as nalgebra's `norm`), otherwise scaled by the largest
 /// magnitude. NaN if an entry is NaN, `+∞` if one is infinite.
@@ -225,13 +239,28 @@ pub(crate) fn restricted_hessian(
     mu: f64,
     d2r_dgamma2: &Matrix3<f64>,
 ) -> Matrix2<f64> {
+    restricted_parts(p, mu, d2r_dgamma2).0
+}
+
+/// [`restricted_hessian`] and `‖PᵀHP‖_F` (`H = ∂²R/∂γ²`) from the same products, the norm `None`
+/// when its sum of squares is not a normal number (then [`hnorm_tangential`] scales).
+#[inline]
+fn restricted_parts(
+    p: &Matrix3x2<f64>,
+    mu: f64,
+    d2r_dgamma2: &Matrix3<f64>,
+) -> (Matrix2<f64>, Option<f64>) {
     // Written out (no 3×3 temporaries): K_ij = μ δ_ij − p_iᵀ H p_j, symmetrised.
     let u = Vector3::new(p[(0, 0)], p[(1, 0)], p[(2, 0)]);
     let v = Vector3::new(p[(0, 1)], p[(1, 1)], p[(2, 1)]);
     let hu = d2r_dgamma2 * u;
     let hv = d2r_dgamma2 * v;
-    let k01 = -0.5 * (u.dot(&hv) + v.dot(&hu));
-    Matrix2::new(mu - u.dot(&hu), k01, k01, mu - v.dot(&hv))
+    let (uhu, uhv, vhu, vhv) = (u.dot(&hu), u.dot(&hv), v.dot(&hu), v.dot(&hv));
+    let k01 = -0.5 * (uhv + vhu);
+    let k = Matrix2::new(mu - uhu, k01, k01, mu - vhv);
+    let s = uhu * uhu + uhv * uhv + vhu * vhu + vhv * vhv;
+    let zero = uhu == 0.0 && uhv == 0.0 && vhu == 0.0 && vhv == 0.0;
+    (k, (s.is_normal() || zero).then(|| s.sqrt()))
 }
 
 /// Eigen-decomposition of a symmetric 2×2 matrix, eigenvalues ascending.
@@ -241,6 +270,7 @@ pub(crate) struct Eigen2 {
 }
 
 /// Closed-form eigen-decomposition of the symmetric 2×2 matrix `k` (reads the upper triangle).
+#[inline(always)]
 pub(crate) fn sym2_eigen(k: &Matrix2<f64>) -> Eigen2 {
     let (a, b, c) = (k[(0, 0)], k[(0, 1)], k[(1, 1)]);
     let m = 0.5 * (a + c);
@@ -275,7 +305,7 @@ pub(crate) fn sym2_eigen(k: &Matrix2<f64>) -> Eigen2 {
     let vec_for = |lam: f64| {
         let v1 = Vector2::new(b, lam - a);
         let v2 = Vector2::new(lam - c, b);
-        let (n1, n2) = (stable_norm(v1.as_slice()), stable_norm(v2.as_slice()));
+        let (n1, n2) = (norm2(&v1), norm2(&v2));
         let (v, n) = if n1 >= n2 { (v1, n1) } else { (v2, n2) };
         if n > 0.0 && n.is_finite() {
             v / n

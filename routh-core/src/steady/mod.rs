@@ -83,6 +83,9 @@ impl SteadyMotion {
     }
 }
 
+/// The default number of starts of the search ([`SearchOptions::starts`]).
+const DEFAULT_STARTS: usize = 400;
+
 /// Options of the global search of [`steady_motions_with`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct SearchOptions {
@@ -102,7 +105,7 @@ pub struct SearchOptions {
 impl Default for SearchOptions {
     fn default() -> Self {
         SearchOptions {
-            starts: 400,
+            starts: DEFAULT_STARTS,
             max_iterations: 100,
             gradient_tol: 1e-10,
             zero_eigenvalue_tol: 1e-8,

@@ -6,9 +6,12 @@
 //! and the restricted form `K`, see [`Tangential`]) with each other, never with a scale taken over
 //! the whole sphere, and never with the raw `∂R/∂γ`, `∂²R/∂γ²` except as a round-off floor.
 
+use std::borrow::Cow;
+use std::sync::OnceLock;
+
 use nalgebra::{Vector2, Vector3};
 
-use super::SearchOptions;
+use super::{SearchOptions, DEFAULT_STARTS};
 use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::sphere::{fibonacci_sphere, tangent_basis, Tangential, NOISE, ROUND};
@@ -82,8 +85,8 @@ pub(super) fn global<M: Routhian>(
     p_psi: f64,
     opts: &SearchOptions,
 ) -> Result<Outcome, RouthError> {
-    let grid = fibonacci_sphere(opts.starts);
-    for g in &grid {
+    let grid = fibonacci_grid(opts.starts);
+    for g in grid.iter() {
         check_kinetic(model, g)?;
     }
     let search = Search {
@@ -95,7 +98,7 @@ pub(super) fn global<M: Routhian>(
     };
 
     let mut found = Found::default();
-    for start in &grid {
+    for start in grid.iter() {
         found.add(&search, start, GRID_CAPTURE);
     }
     // Critical points closer together than the grid spacing (next to a bifurcation, e.g. the
@@ -110,8 +113,8 @@ pub(super) fn global<M: Routhian>(
     // missed: search again on a grid four times finer.
     let mut euler = found.euler_characteristic(&search);
     if euler != Some(2) && !found.is_empty() && !found.planar_only() {
-        let fine = fibonacci_sphere(4 * opts.starts);
-        for start in &fine {
+        let fine = fibonacci_grid(4 * opts.starts);
+        for start in fine.iter() {
             found.add(&search, start, GRID_CAPTURE);
         }
         for start in found.probes(0.5 * spacing) {
@@ -125,6 +128,7 @@ pub(super) fn global<M: Routhian>(
         curves,
         planar,
         best_residual,
+        ..
     } = found;
     if isolated.is_empty() && curves.is_empty() && planar.is_empty() {
         return Err(RouthError::NoConvergence {
@@ -146,6 +150,21 @@ pub(super) fn global<M: Routhian>(
         euler,
         consistent,
     })
+}
+
+/// The Fibonacci grid of `n` starts ([`fibonacci_sphere`]); the grids of the default search and
+/// of its refinement are computed once per process.
+fn fibonacci_grid(n: usize) -> Cow<'static, [Vector3<f64>]> {
+    static DEFAULT: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
+    static FINE: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
+    let cache = if n == DEFAULT_STARTS {
+        &DEFAULT
+    } else if n == 4 * DEFAULT_STARTS {
+        &FINE
+    } else {
+        return Cow::Owned(fibonacci_sphere(n));
+    };
+    Cow::Borrowed(cache.get_or_init(|| fibonacci_sphere(n)))
 }
 
 /// The critical point reached by Newton on the sphere from the unit vector `g0`, with whether it
@@ -203,6 +222,7 @@ struct Local {
 
 impl Local {
     /// `None` when the model returns non-finite values at γ.
+    #[inline(always)]
     fn at<M: Routhian>(
         model: &M,
         gamma: &Vector3<f64>,
@@ -299,6 +319,8 @@ fn same_point(a: &Local, b: &Local) -> bool {
 /// The critical points found so far by [`global`].
 struct Found {
     isolated: Vec<Local>,
+    /// The non-degenerate points of `isolated` (their γ): the targets of early capture.
+    anchors: Vec<Vector3<f64>>,
     curves: Vec<Curve>,
     planar: Vec<Local>,
     best_residual: f64,
@@ -308,6 +330,7 @@ impl Default for Found {
     fn default() -> Self {
         Found {
             isolated: Vec::new(),
+            anchors: Vec::new(),
             curves: Vec::new(),
             planar: Vec::new(),
             best_residual: f64::INFINITY,
@@ -327,7 +350,7 @@ impl Found {
 
     /// Runs the Newton iteration from `start` and records a new critical point, if any.
     fn add<M: Routhian>(&mut self, search: &Search<'_, M>, start: &Vector3<f64>, capture: f64) {
-        let loc = match search.refine(start, Some((&self.isolated, capture))) {
+        let loc = match search.refine(start, Some((&self.anchors, capture))) {
             Some(Refined::Converged(loc)) => loc,
             Some(Refined::Stalled(loc)) => {
                 self.best_residual = self.best_residual.min(loc.residual());
@@ -342,7 +365,10 @@ impl Found {
             return;
         }
         match loc.zeros() {
-            0 => self.isolated.push(loc),
+            0 => {
+                self.anchors.push(loc.gamma);
+                self.isolated.push(loc);
+            }
             1 => match search.trace(&loc) {
                 Some(curve) => self.curves.push(curve),
                 None => self.isolated.push(loc),
@@ -467,7 +493,11 @@ impl<M: Routhian> Search<'_, M> {
     /// is not finite at `gamma0`. With `capture = Some((known, ratio))` the iteration stops as
     /// soon as its Newton step heads into a known non-degenerate critical point (lands within
     /// `ratio` times its distance to it). No allocation.
-    fn refine(&self, gamma0: &Vector3<f64>, capture: Option<(&[Local], f64)>) -> Option<Refined> {
+    fn refine(
+        &self,
+        gamma0: &Vector3<f64>,
+        capture: Option<(&[Vector3<f64>], f64)>,
+    ) -> Option<Refined> {
         let mut cur = self.local(gamma0)?;
         let mut lambda = 0.0f64;
         let mut prev = f64::INFINITY;
@@ -483,10 +513,8 @@ impl<M: Routhian> Search<'_, M> {
             if let Some((known, ratio)) = capture {
                 let target = cur.gamma + cur.t.basis * cur.t.step;
                 let joined = known.iter().any(|p| {
-                    let dp = (cur.gamma - p.gamma).norm();
-                    !p.degenerate()
-                        && dp <= CAPTURE_RADIUS
-                        && (target - p.gamma).norm() <= ratio * dp
+                    let dp = (cur.gamma - p).norm();
+                    dp <= CAPTURE_RADIUS && (target - p).norm() <= ratio * dp
                 });
                 if joined {
                     return Some(Refined::Captured);
