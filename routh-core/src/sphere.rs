@@ -86,7 +86,19 @@ impl Tangential {
         d2r_dgamma2: &Matrix3<f64>,
         rel: f64,
     ) -> Self {
-        let basis = tangent_basis(gamma);
+        Self::with_basis(gamma, tangent_basis(gamma), dr_dgamma, d2r_dgamma2, rel)
+    }
+
+    /// [`Self::new`] with the basis `tangent_basis(gamma)` computed by the caller (before the
+    /// model is evaluated, so that its square root and divisions overlap with the model).
+    #[inline(always)]
+    pub(crate) fn with_basis(
+        gamma: &Vector3<f64>,
+        basis: Matrix3x2<f64>,
+        dr_dgamma: &Vector3<f64>,
+        d2r_dgamma2: &Matrix3<f64>,
+        rel: f64,
+    ) -> Self {
         let mu = dr_dgamma.dot(gamma);
         let (hess, pth) = restricted_parts(&basis, mu, d2r_dgamma2);
         let e = sym2_eigen(&hess);
@@ -191,6 +203,7 @@ fn hnorm_tangential(basis: &Matrix3x2<f64>, h: &Matrix3<f64>) -> f64 {
 }
 
 /// `|(x, y, z)|` without the cost of scaling when no overflow or underflow is possible.
+#[inline]
 fn norm3(x: f64, y: f64, z: f64) -> f64 {
     let s = x * x + y * y + z * z;
     if s.is_normal() || s == 0.0 && x == 0.0 && y == 0.0 && z == 0.0 {

@@ -312,8 +312,8 @@ pub fn classify_with<M: Routhian>(
     // λ = ωμ can still exceed f64 when the frequencies themselves do (a kinetic form with a
     // moment of 1e−310 is positive definite but its frequencies are O(1e155)). Found by
     // tests/runtime_properties.rs.
-    let root_parts: Vec<f64> = roots.lambda.iter().flat_map(|l| [l.re, l.im]).collect();
-    check_model_finite("roots of f2 (overflow)", &root_parts, &gamma)?;
+    let root_parts = roots.lambda.map(|l| [l.re, l.im]);
+    check_model_finite("roots of f2 (overflow)", root_parts.as_flattened(), &gamma)?;
     // The zero threshold of K (an eigenvalue of c = PᵀCP up to a rotation, errata E6) in the
     // units of the scaled coefficients: ĉ = c/(αω²).
     let zero_tol = zero_tol / parts.alpha / parts.omega / parts.omega;

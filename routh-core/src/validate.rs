@@ -22,6 +22,7 @@ pub(crate) fn check_finite(what: &'static str, values: &[f64]) -> Result<(), Rou
 }
 
 /// Checks that a model output is finite at γ.
+#[inline]
 pub(crate) fn check_model_finite(
     what: &'static str,
     values: &[f64],

@@ -229,6 +229,8 @@ impl Local {
         p_psi: f64,
         zero_rel: f64,
     ) -> Option<Local> {
+        // The basis depends on γ alone: formed first, it is ready when the model returns.
+        let basis = tangent_basis(gamma);
         let b = model.bundle(&Vector3::zeros(), gamma, p_psi);
         let finite = b.routhian.is_finite()
             && b.dr_dgamma.iter().all(|v| v.is_finite())
@@ -236,7 +238,7 @@ impl Local {
         if !finite {
             return None;
         }
-        let t = Tangential::new(gamma, &b.dr_dgamma, &b.d2r_dgamma2, zero_rel);
+        let t = Tangential::with_basis(gamma, basis, &b.dr_dgamma, &b.d2r_dgamma2, zero_rel);
         if !(t.knorm.is_finite() && t.raw.is_finite()) {
             return None;
         }
