@@ -474,9 +474,9 @@ impl<M: Routhian> Search<'_, M> {
     }
 
     /// Safeguarded Newton (Levenberg–Marquardt) on the sphere from `gamma0`; `None` if the model
-    /// is not finite at `gamma0`. With `capture = Some((known, ratio))` the iteration stops as
-    /// soon as its Newton step heads into a known non-degenerate critical point (lands within
-    /// `ratio` times its distance to it). No allocation.
+    /// is not finite at `gamma0`. With `capture = Some((known, ratio))` (`known` the γ of the known
+    /// non-degenerate critical points) the iteration stops as soon as its Newton step heads into
+    /// one of them (lands within `ratio` times its distance to it). No allocation.
     fn refine(
         &self,
         gamma0: &Vector3<f64>,
