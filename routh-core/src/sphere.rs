@@ -2,6 +2,9 @@
 //! second variation (62)–(63), the closed-form 2×2 symmetric eigen-decomposition, the local scale
 //! of the amended potential and a Fibonacci grid of starting points.
 
+use std::borrow::Cow;
+use std::sync::OnceLock;
+
 use nalgebra::{Matrix2, Matrix3, Matrix3x2, Vector2, Vector3};
 
 /// A 3×2 orthonormal basis `P = [u v]` of γ^⊥ with `(u, v, γ)` right-handed; γ must be a unit
@@ -351,6 +354,21 @@ pub(crate) fn fibonacci_sphere(n: usize) -> Vec<Vector3<f64>> {
         .collect()
 }
 
+/// [`fibonacci_sphere`]`(n)`; the grids of the default search of steady motions and of its
+/// refinement (4 times finer) are computed once per process.
+pub(crate) fn fibonacci_grid(n: usize) -> Cow<'static, [Vector3<f64>]> {
+    static DEFAULT: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
+    static FINE: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
+    let cache = if n == crate::steady::DEFAULT_STARTS {
+        &DEFAULT
+    } else if n == 4 * crate::steady::DEFAULT_STARTS {
+        &FINE
+    } else {
+        return Cow::Owned(fibonacci_sphere(n));
+    };
+    Cow::Borrowed(cache.get_or_init(|| fibonacci_sphere(n)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -363,6 +381,14 @@ mod tests {
             assert!((u.norm() - 1.0).abs() < 1e-14 && (v.norm() - 1.0).abs() < 1e-14);
             assert!(u.dot(&v).abs() < 1e-14 && u.dot(&g).abs() < 1e-14);
             assert!((u.cross(&v) - g).norm() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn cached_grids_are_the_fibonacci_grids() {
+        let n = crate::steady::DEFAULT_STARTS;
+        for m in [n, 4 * n, 7] {
+            assert_eq!(*fibonacci_grid(m), *fibonacci_sphere(m));
         }
     }
 

@@ -84,7 +84,7 @@ impl SteadyMotion {
 }
 
 /// The default number of starts of the search ([`SearchOptions::starts`]).
-const DEFAULT_STARTS: usize = 400;
+pub(crate) const DEFAULT_STARTS: usize = 400;
 
 /// Options of the global search of [`steady_motions_with`].
 #[derive(Debug, Clone, PartialEq)]

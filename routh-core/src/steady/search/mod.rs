@@ -6,15 +6,12 @@
 //! and the restricted form `K`, see [`Tangential`]) with each other, never with a scale taken over
 //! the whole sphere, and never with the raw `∂R/∂γ`, `∂²R/∂γ²` except as a round-off floor.
 
-use std::borrow::Cow;
-use std::sync::OnceLock;
-
 use nalgebra::{Vector2, Vector3};
 
-use super::{SearchOptions, DEFAULT_STARTS};
+use super::SearchOptions;
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::sphere::{fibonacci_sphere, tangent_basis, Tangential, NOISE, ROUND};
+use crate::sphere::{fibonacci_grid, tangent_basis, Tangential, NOISE, ROUND};
 use crate::validate::check_kinetic;
 
 mod curves;
@@ -150,21 +147,6 @@ pub(super) fn global<M: Routhian>(
         euler,
         consistent,
     })
-}
-
-/// The Fibonacci grid of `n` starts ([`fibonacci_sphere`]); the grids of the default search and
-/// of its refinement are computed once per process.
-fn fibonacci_grid(n: usize) -> Cow<'static, [Vector3<f64>]> {
-    static DEFAULT: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
-    static FINE: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
-    let cache = if n == DEFAULT_STARTS {
-        &DEFAULT
-    } else if n == 4 * DEFAULT_STARTS {
-        &FINE
-    } else {
-        return Cow::Owned(fibonacci_sphere(n));
-    };
-    Cow::Borrowed(cache.get_or_init(|| fibonacci_sphere(n)))
 }
 
 /// The critical point reached by Newton on the sphere from the unit vector `g0`, with whether it
@@ -492,9 +474,9 @@ impl<M: Routhian> Search<'_, M> {
     }
 
     /// Safeguarded Newton (Levenberg–Marquardt) on the sphere from `gamma0`; `None` if the model
-    /// is not finite at `gamma0`. With `capture = Some((known, ratio))` the iteration stops as
-    /// soon as its Newton step heads into a known non-degenerate critical point (lands within
-    /// `ratio` times its distance to it). No allocation.
+    /// is not finite at `gamma0`. With `capture = Some((known, ratio))` (`known` the γ of the known
+    /// non-degenerate critical points) the iteration stops as soon as its Newton step heads into
+    /// one of them (lands within `ratio` times its distance to it). No allocation.
     fn refine(
         &self,
         gamma0: &Vector3<f64>,
