@@ -92,6 +92,70 @@ fn kids(node: Node) -> (Option<Id>, Option<Id>) {
     }
 }
 
+/// "No statement" in [`Plan::order`].
+const NONE: usize = usize::MAX;
+
+/// The tree of [`Plan::order`] as it grows: parents, depths and Myers' jump pointers (the jump
+/// of a node depends only on its depth, and any ancestor is reached in `O(log depth)` steps).
+struct Tree {
+    parent: Vec<usize>,
+    jump: Vec<usize>,
+    depth: Vec<u32>,
+}
+
+impl Tree {
+    /// Hangs `k` under `parent` (`NONE`: a root).
+    fn attach(&mut self, k: usize, parent: usize) {
+        self.parent[k] = parent;
+        if parent == NONE {
+            self.jump[k] = k;
+            return;
+        }
+        self.depth[k] = self.depth[parent] + 1;
+        let j = self.jump[parent];
+        let jj = self.jump[j];
+        self.jump[k] = if self.depth[parent] - self.depth[j] == self.depth[j] - self.depth[jj] {
+            jj
+        } else {
+            parent
+        };
+    }
+
+    /// The ancestor of `a` at depth `d` (≤ the depth of `a`).
+    fn ancestor(&self, mut a: usize, d: u32) -> usize {
+        while self.depth[a] > d {
+            a = if self.depth[self.jump[a]] >= d {
+                self.jump[a]
+            } else {
+                self.parent[a]
+            };
+        }
+        a
+    }
+
+    /// Whether `a` comes before `b` (`a ≠ b`) in the pre-order, siblings in increasing order.
+    fn before(&self, a: usize, b: usize) -> bool {
+        let (da, db) = (self.depth[a], self.depth[b]);
+        let (mut a, mut b) = (self.ancestor(a, db.min(da)), self.ancestor(b, da.min(db)));
+        if a == b {
+            // One is an ancestor of the other, and comes first.
+            return da < db;
+        }
+        // Up to the children of the common ancestor (jumps at equal depths land at equal
+        // depths).
+        while self.parent[a] != self.parent[b] {
+            if self.jump[a] != self.jump[b] {
+                a = self.jump[a];
+                b = self.jump[b];
+            } else {
+                a = self.parent[a];
+                b = self.parent[b];
+            }
+        }
+        a < b
+    }
+}
+
 /// What straight-line code for a set of outputs computes: the nodes to emit (children before
 /// parents) and how each is written. A negation feeding a sum is written as a subtraction, a
 /// reciprocal used once as a division; such folded nodes are not emitted on their own.
@@ -163,6 +227,74 @@ impl Plan {
             .children()
             .map(|c| self.folds(g, id, c).unwrap_or(c))
             .collect()
+    }
+
+    /// The emitted non-leaf nodes in the order they are written: each statement right after the
+    /// statement it reads that is written last, following the statements already placed there
+    /// and what they lead to (the pre-order of the tree in which a statement hangs under that
+    /// operand, siblings in id order; statements that read only inputs and constants are the
+    /// roots, in id order). Children still come before parents, but a value is computed soon
+    /// after its operands rather than where its id falls: ids grow in the order the reduction
+    /// builds its outputs, so an output built last from early values (R, from ψ̇ and the
+    /// gradient of L) would otherwise be computed after everything else, at the end of the
+    /// critical path. (Measured on the gyrostat: about 1% of `bundle` + `from_bundle`.)
+    ///
+    /// `O(n log n)`: an order query per statement with two operands, answered with jump pointers
+    /// in the tree (each statement also points to an ancestor chosen so that any ancestor is
+    /// reached in logarithmically many steps).
+    pub fn order(&self, g: &Graph) -> Vec<Id> {
+        let stmts: Vec<Id> = self.statements(g).collect();
+        // slot[id] = position of a statement in `stmts`.
+        let mut slot = vec![NONE; self.emit.len()];
+        for (k, id) in stmts.iter().enumerate() {
+            slot[id.index()] = k;
+        }
+        // The tree, children in increasing slot order as linked lists (first, last, next) so
+        // that nothing is allocated per statement; the virtual root of the statements that
+        // read no statement is slot n.
+        let n = stmts.len();
+        let mut tree = Tree {
+            parent: vec![NONE; n],
+            jump: vec![NONE; n],
+            depth: vec![0; n],
+        };
+        let mut first = vec![NONE; n + 1];
+        let mut last = vec![NONE; n + 1];
+        let mut next = vec![NONE; n];
+        for (k, &id) in stmts.iter().enumerate() {
+            let mut anchor = NONE;
+            let (a, b) = kids(g.node(id));
+            for c in [a, b].into_iter().flatten() {
+                let c = slot[self.folds(g, id, c).unwrap_or(c).index()];
+                if c != NONE && (anchor == NONE || tree.before(anchor, c)) {
+                    anchor = c;
+                }
+            }
+            tree.attach(k, anchor);
+            let p = if anchor == NONE { n } else { anchor };
+            if last[p] == NONE {
+                first[p] = k;
+            } else {
+                next[last[p]] = k;
+            }
+            last[p] = k;
+        }
+        let mut out = Vec::with_capacity(n);
+        // Pre-order: a statement, then its children, then its next sibling.
+        let mut stack = Vec::new();
+        let mut k = first[n];
+        loop {
+            while k != NONE {
+                out.push(stmts[k]);
+                stack.push(next[k]);
+                k = first[k];
+            }
+            match stack.pop() {
+                Some(s) => k = s,
+                None => break,
+            }
+        }
+        out
     }
 
     /// The emitted non-leaf nodes, in order.
