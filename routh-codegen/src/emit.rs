@@ -219,10 +219,10 @@ impl<'a> Emitter<'a> {
                 out.push_str(";\n");
             }
         }
-        // Untyped: every operand is an input local or a literal typed as `__F64`, so the type
-        // of each statement is inferred, and the text has two tokens fewer per statement (most
-        // of what expansion costs is lexing this text).
-        for id in plan.order(g) {
+        // Statements are untyped: every operand is an input local declared `__F64`, a literal
+        // suffixed `f64` or an earlier statement, so each type is inferred, and the text has two
+        // tokens fewer per statement (lexing this text is most of what expansion costs).
+        for id in plan.statements(g) {
             out.push_str("let ");
             local(out, id);
             out.push_str(" = ");

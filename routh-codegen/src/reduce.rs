@@ -187,6 +187,14 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let hs = g.mul(half, slack);
     let corr = g.mul(psi_dot, hs);
     let routhian = g.sub(lagrangian, corr);
+    let routhians = routhian_candidates(
+        g,
+        routhian,
+        &dl_domega,
+        [m.linear, m.potential],
+        [slack, psi_dot, half],
+        [&w_vars, &g_vars],
+    );
     // The derivatives go through (10) and (36): with ψ̇ an independent slot,
     // 𝒜(Ω, γ, ψ̇) = L(Ω + ψ̇γ, γ) = L(Ω, γ) + ψ̇ q(Ω, γ) + ψ̇² d(γ), where q = (∂L/∂ω(Ω), γ) and
     // d = ½γᵀJγ (L is quadratic in ω, so the expansion is exact). Because ∂𝒜/∂ψ̇ = p_ψ on the
@@ -280,9 +288,12 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         d2r_dgamma2: block(&hess_x, X_GAMMA, X_GAMMA),
     };
 
-    let terms = [m.linear, m.potential];
-    let nodes = [slack, psi_dot, half];
-    bundle.routhian = cheapest_routhian(g, &dl_domega, terms, nodes, &bundle, [&w_vars, &g_vars]);
+    let mut base = bundle.flatten();
+    base.remove(0);
+    bundle.routhian = routhians
+        .into_iter()
+        .min_by_key(|&r| extra_cost(g, r, &base))
+        .unwrap_or(routhian);
 
     // (34) and section 5 at Ω = 0. ∂R/∂p_ψ = −ψ̇ is not needed at rest, and it is left out
     // rather than substituted: it is the newest node, and `substitute` rebuilds every node up to
@@ -330,27 +341,31 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     }
 }
 
-/// The cheapest of exactly equal formulations of R next to the other outputs of `bundle` (whose
-/// `routhian` is (14) as derived): by Euler's theorem for the homogeneous terms (the DSL checks
-/// that `kinetic` has degree 2 and `linear` degree 1 in ω), `Ω·∂L/∂Ω = 2T₂ + T₁`, so
-/// `L = ½ Ω·(∂L/∂Ω + ∂T₁/∂Ω) − U` and
+/// Exactly equal formulations of R, (14) as derived (`routhian`) first; [`reduce_with`] keeps
+/// the one that costs least next to the other outputs of `bundle` (ties keep (14)). By Euler's
+/// theorem for the homogeneous terms (the DSL checks that `kinetic` has degree 2 and `linear`
+/// degree 1 in ω), `Ω·∂L/∂Ω = 2T₂ + T₁`, so `L = ½ Ω·(∂L/∂Ω + ∂T₁/∂Ω) − U` and
 ///
 /// `R = ½(Ω·(∂L/∂Ω + ∂T₁/∂Ω) − ψ̇ (p_ψ − q)) − U`,
 ///
 /// which reuses the gradient `∂L/∂Ω` (needed for `∂R/∂Ω`) instead of forming `T₂` and `T₁`
 /// (the gyrostat's `½(Ω·(c + a) − ψ̇ q) − m g r·γ` with `c = IΩ + a`). When `U` is homogeneous of
 /// degree `k ≥ 1` in γ, `U = (1/k) γ·∂U/∂γ` may reuse the gradient `∂U/∂γ` of `∂R/∂γ` in turn
-/// (`Σ (m g rᵢ) γᵢ` rather than `m g (r·γ)`). Ties keep (14). `dl_domega` is `∂L/∂Ω`,
+/// (`Σ (m g rᵢ) γᵢ` rather than `m g (r·γ)`).
+///
+/// They are built right after ψ̇, before the gradient and the Hessian, so that the one kept gets
+/// the ids (and the place in the straight-line code, written in id order) of a value known
+/// that early, rather than coming after everything else. `dl_domega` is `∂L/∂Ω`,
 /// `[linear, potential]` are `T₁` and `U`, `[slack, psi_dot, half]` the nodes of `p_ψ − q`, ψ̇
 /// and ½, and `[w_vars, g_vars]` the variables Ω and γ.
-fn cheapest_routhian(
+fn routhian_candidates(
     g: &mut Graph,
+    routhian: Id,
     dl_domega: &V3,
     [linear, potential]: [Id; 2],
     [slack, psi_dot, half]: [Id; 3],
-    bundle: &Bundle<Id>,
     [w_vars, g_vars]: [&[Var; 3]; 2],
-) -> Id {
+) -> Vec<Id> {
     let w = w_vars.map(|v| g.var_id(v));
     let gm = g_vars.map(|v| g.var_id(v));
     let sum: V3 = std::array::from_fn(|i| {
@@ -370,16 +385,11 @@ fn cheapest_routhian(
             potentials.push(g.mul(inv, dot));
         }
     }
-    let mut candidates = vec![bundle.routhian];
+    let mut candidates = vec![routhian];
     for u in potentials {
         candidates.push(g.sub(he, u));
     }
-    let mut base = bundle.flatten();
-    base.remove(0);
     candidates
-        .into_iter()
-        .min_by_key(|&r| extra_cost(g, r, &base))
-        .unwrap_or(bundle.routhian)
 }
 
 /// Where Ω starts in the coordinates `x = (Ω, γ)` of the Schur complement.

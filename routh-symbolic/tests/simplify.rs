@@ -3,9 +3,7 @@
 use std::collections::HashMap;
 
 use routh_symbolic::shape::{self, Value};
-use routh_symbolic::{
-    degree, op_counts, schedule, to_infix, Degree, Func, Graph, Id, Node, Plan, Var,
-};
+use routh_symbolic::{degree, op_counts, schedule, to_infix, Degree, Func, Graph, Id, Node, Var};
 
 fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-13 * 1f64.max(a.abs()).max(b.abs())
@@ -846,106 +844,6 @@ fn schedule_puts_children_first_and_shares_subexpressions() {
     }
     assert!(schedule(&g, &[]).is_empty());
     assert!(schedule(&g, &[x]).is_empty(), "leaves need no code");
-}
-
-#[test]
-fn written_order_computes_each_value_right_after_its_operands() {
-    let (mut g, x, y, z) = xyz();
-    // `b` and the chain through the reciprocal are built first; `tail` reads only `b` but is
-    // built last, so in id order it would be written after the whole chain.
-    let a = g.mul(x, y);
-    let b = g.add(a, z);
-    let w1 = g.mul(y, z);
-    let w2 = g.add(w1, x);
-    let d = g.recip(w2);
-    let q = g.mul(x, d);
-    let late = g.mul(q, q);
-    let tail = g.mul(b, z);
-    let outputs = [late, tail, d];
-    let plan = Plan::new(&g, &outputs);
-    let order = plan.order(&g);
-    // The same statements, each once, children first.
-    let mut sorted = order.clone();
-    sorted.sort();
-    assert_eq!(sorted, plan.statements(&g).collect::<Vec<_>>());
-    let pos = |id: Id| order.iter().position(|&o| o == id);
-    for (k, &id) in order.iter().enumerate() {
-        for c in plan.operands(&g, id) {
-            if let Some(p) = pos(c) {
-                assert!(p < k, "{c:?} written after its reader {id:?}");
-            }
-        }
-    }
-    // Each statement follows the operand written last (statements that read only inputs in id
-    // order): `tail` right after `b`, before the chain.
-    assert_eq!(order, [a, b, tail, w1, w2, d, q, late]);
-    // An operand written after another built later decides: `v` reads `b` and `w2`.
-    let v = g.mul(b, w2);
-    let order = Plan::new(&g, &[v, tail]).order(&g);
-    assert_eq!(order, [a, b, tail, w1, w2, v]);
-    assert!(
-        Plan::new(&g, &[x]).order(&g).is_empty(),
-        "leaves need no code"
-    );
-}
-
-/// [`Plan::order`] by its definition, with the path from the root as a sort key: a statement's
-/// key is that of the operand with the greatest key, followed by its own position.
-fn order_by_keys(g: &Graph, plan: &Plan) -> Vec<Id> {
-    let stmts: Vec<Id> = plan.statements(g).collect();
-    let mut key: HashMap<Id, Vec<usize>> = HashMap::new();
-    for (k, &id) in stmts.iter().enumerate() {
-        let mut best: Vec<usize> = Vec::new();
-        for c in plan.operands(g, id) {
-            if let Some(kc) = key.get(&c) {
-                if *kc > best {
-                    best = kc.clone();
-                }
-            }
-        }
-        best.push(k);
-        key.insert(id, best);
-    }
-    let mut out = stmts;
-    out.sort_by(|a, b| key[a].cmp(&key[b]));
-    out
-}
-
-#[test]
-fn written_order_matches_its_definition_on_random_graphs() {
-    // A small deterministic generator.
-    let mut state = 0x0bad_5eedu64;
-    let mut below = |n: usize| {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        ((state >> 33) as usize) % n
-    };
-    for round in 0..200 {
-        let mut g = Graph::new();
-        let mut pool: Vec<Id> = (0..4).map(|i| g.var(format!("x{i}"))).collect();
-        pool.push(g.constant(0.5));
-        // Long chains now and then (deep trees), otherwise wide random DAGs.
-        let ops = 20 + below(200);
-        for _ in 0..ops {
-            let a = if round % 4 == 0 && below(3) > 0 {
-                pool[pool.len() - 1]
-            } else {
-                pool[below(pool.len())]
-            };
-            let b = pool[below(pool.len())];
-            let id = match below(6) {
-                0 | 1 => g.add(a, b),
-                2 => g.sub(a, b),
-                3 | 4 => g.mul(a, b),
-                _ => g.div(a, b),
-            };
-            pool.push(id);
-        }
-        let outputs: Vec<Id> = (0..1 + below(5)).map(|_| pool[below(pool.len())]).collect();
-        let plan = Plan::new(&g, &outputs);
-        assert_eq!(plan.order(&g), order_by_keys(&g, &plan), "round {round}");
-    }
 }
 
 #[test]
