@@ -222,10 +222,13 @@ impl<'a> Emitter<'a> {
                 out.push_str(";\n");
             }
         }
+        // Statements are untyped: every operand is an input local declared `__F64`, a literal
+        // suffixed `f64` or an earlier statement, so each type is inferred, and the text has two
+        // tokens fewer per statement (lexing this text is most of what expansion costs).
         for id in plan.statements(g) {
             out.push_str("let ");
             local(out, id);
-            out.push_str(": __F64 = ");
+            out.push_str(" = ");
             self.expr(out, id, &plan);
             out.push_str(";\n");
         }

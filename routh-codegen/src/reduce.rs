@@ -5,7 +5,7 @@
 use crate::layout::{Bundle, Gyroscopic};
 use crate::lower::Lowered;
 use routh_symbolic::shape::{dot3, matmul3, skew3, transpose3};
-use routh_symbolic::{Graph, Id, Var};
+use routh_symbolic::{degree, extra_cost, Degree, Graph, Id, Var};
 use std::collections::HashMap;
 
 pub type V3 = [Id; 3];
@@ -187,6 +187,14 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let hs = g.mul(half, slack);
     let corr = g.mul(psi_dot, hs);
     let routhian = g.sub(lagrangian, corr);
+    let routhians = routhian_candidates(
+        g,
+        routhian,
+        &dl_domega,
+        [m.linear, m.potential],
+        [slack, psi_dot, half],
+        [&w_vars, &g_vars],
+    );
     // The derivatives go through (10) and (36): with ψ̇ an independent slot,
     // 𝒜(Ω, γ, ψ̇) = L(Ω + ψ̇γ, γ) = L(Ω, γ) + ψ̇ q(Ω, γ) + ψ̇² d(γ), where q = (∂L/∂ω(Ω), γ) and
     // d = ½γᵀJγ (L is quadratic in ω, so the expansion is exact). Because ∂𝒜/∂ψ̇ = p_ψ on the
@@ -204,7 +212,27 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let hd = g.mul(half, vertical_inertia);
     let vars: Vec<Var> = w_vars.iter().chain(g_vars.iter()).copied().collect();
     let l_x: Vec<Id> = vars.iter().map(|&v| g.diff(lagrangian, v)).collect();
-    let q_x: Vec<Id> = vars.iter().map(|&v| g.diff(cyclic_momentum, v)).collect();
+    let q_x: Vec<Id> = (0..6)
+        .map(|i| match momentum {
+            // The product rule on q = (∂L/∂ω, γ) written out, from the second derivatives of L
+            // the outputs need anyway: ∂q/∂Ω_i = Σ_j γ_j ∂²L/∂ω_j∂ω_i and
+            // ∂q/∂γ_i = ∂L/∂ω_i + Σ_j γ_j ∂²L/∂ω_j∂γ_i. Differentiating q node by node gives the
+            // same terms but threads the first one through the sum ((γ₁B₁₁ + c₁) + γ₂B₂₁) + γ₃B₃₁
+            // in an order that differs from one component to the next; the contraction kept
+            // whole, c₁ + (γ₁B₁₁ + γ₂B₂₁ + γ₃B₃₁), costs as much and is the same expression in
+            // every component.
+            Momentum::Contracted if i < 3 => {
+                let col = std::array::from_fn(|j| j_full[j][i]);
+                dot3(g, &gm, &col)
+            }
+            Momentum::Contracted => {
+                let col = std::array::from_fn(|j| d2l_domega_dgamma[j][i - 3]);
+                let contracted = dot3(g, &gm, &col);
+                g.add(dl_domega[i - 3], contracted)
+            }
+            Momentum::Directional => g.diff(cyclic_momentum, vars[i]),
+        })
+        .collect();
     let d_x: Vec<Id> = vars.iter().map(|&v| g.diff(hd, v)).collect();
     let e_x: Vec<Id> = d_x.iter().map(|&d| g.mul(psi_dot, d)).collect();
     let m_x: Vec<Id> = q_x.iter().zip(&e_x).map(|(&q, &e)| g.add(q, e)).collect();
@@ -213,7 +241,23 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         g.add(l_x[i], t)
     });
     // 𝒜_xψ̇ for x = (Ω, γ), and 𝒜_xψ̇ / D (one reciprocal of D for all of them).
-    let k: Vec<Id> = m_x.iter().zip(&e_x).map(|(&m, &e)| g.add(m, e)).collect();
+    // 𝒜_xψ̇ = q_x + ψ̇ (2d_x) with 2d_x formed before ψ̇ is known: ψ̇ waits for the division by
+    // D, and (q_x + e_x) + e_x would add two dependent steps after the product ψ̇ d_x where
+    // this adds one (two more operations per coordinate, against a shorter critical path into
+    // the Schur complement).
+    let k: Vec<Id> = q_x
+        .iter()
+        .zip(&d_x)
+        .zip(&m_x)
+        .map(|((&q, &d), &m)| {
+            if g.is_const(d, 0.0) {
+                m
+            } else {
+                let e2 = g.mul_scaled(psi_dot, 2.0, d);
+                g.add(q, e2)
+            }
+        })
+        .collect();
     let r_d = g.recip(vertical_inertia);
     let kd: Vec<Id> = k.iter().map(|&x| g.mul(x, r_d)).collect();
     let mut hess_x = [[zero; 6]; 6];
@@ -232,7 +276,7 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
             hess_x[j][i] = h;
         }
     }
-    let bundle = Bundle {
+    let mut bundle = Bundle {
         routhian,
         psi_dot,
         dr_domega: part(&grad_x, X_OMEGA),
@@ -243,6 +287,13 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         d2r_domega_dgamma: block(&hess_x, X_OMEGA, X_GAMMA),
         d2r_dgamma2: block(&hess_x, X_GAMMA, X_GAMMA),
     };
+
+    let mut base = bundle.flatten();
+    base.remove(0);
+    bundle.routhian = routhians
+        .into_iter()
+        .min_by_key(|&r| extra_cost(g, r, &base))
+        .unwrap_or(routhian);
 
     // (34) and section 5 at Ω = 0. ∂R/∂p_ψ = −ψ̇ is not needed at rest, and it is left out
     // rather than substituted: it is the newest node, and `substitute` rebuilds every node up to
@@ -273,7 +324,7 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         energy,
         cyclic_momentum,
         psi_dot,
-        routhian,
+        routhian: bundle.routhian,
         dr_domega: bundle.dr_domega,
         dr_dgamma: bundle.dr_dgamma,
         dr_dp: bundle.dr_dp,
@@ -288,6 +339,57 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         gyro_g,
         gyro_c,
     }
+}
+
+/// Exactly equal formulations of R, (14) as derived (`routhian`) first; [`reduce_with`] keeps
+/// the one that costs least next to the other outputs of `bundle` (ties keep (14)). By Euler's
+/// theorem for the homogeneous terms (the DSL checks that `kinetic` has degree 2 and `linear`
+/// degree 1 in ω), `Ω·∂L/∂Ω = 2T₂ + T₁`, so `L = ½ Ω·(∂L/∂Ω + ∂T₁/∂Ω) − U` and
+///
+/// `R = ½(Ω·(∂L/∂Ω + ∂T₁/∂Ω) − ψ̇ (p_ψ − q)) − U`,
+///
+/// which reuses the gradient `∂L/∂Ω` (needed for `∂R/∂Ω`) instead of forming `T₂` and `T₁`
+/// (the gyrostat's `½(Ω·(c + a) − ψ̇ q) − m g r·γ` with `c = IΩ + a`). When `U` is homogeneous of
+/// degree `k ≥ 1` in γ, `U = (1/k) γ·∂U/∂γ` may reuse the gradient `∂U/∂γ` of `∂R/∂γ` in turn
+/// (`Σ (m g rᵢ) γᵢ` rather than `m g (r·γ)`).
+///
+/// They are built right after ψ̇, before the gradient and the Hessian, so that the one kept gets
+/// the ids (and the place in the straight-line code, written in id order) of a value known
+/// that early, rather than coming after everything else. `dl_domega` is `∂L/∂Ω`,
+/// `[linear, potential]` are `T₁` and `U`, `[slack, psi_dot, half]` the nodes of `p_ψ − q`, ψ̇
+/// and ½, and `[w_vars, g_vars]` the variables Ω and γ.
+fn routhian_candidates(
+    g: &mut Graph,
+    routhian: Id,
+    dl_domega: &V3,
+    [linear, potential]: [Id; 2],
+    [slack, psi_dot, half]: [Id; 3],
+    [w_vars, g_vars]: [&[Var; 3]; 2],
+) -> Vec<Id> {
+    let w = w_vars.map(|v| g.var_id(v));
+    let gm = g_vars.map(|v| g.var_id(v));
+    let sum: V3 = std::array::from_fn(|i| {
+        let t1w = g.diff(linear, w_vars[i]);
+        g.add(dl_domega[i], t1w)
+    });
+    let euler = dot3(g, &w, &sum);
+    let ps = g.mul(psi_dot, slack);
+    let e = g.sub(euler, ps);
+    let he = g.mul(half, e);
+    let mut potentials = vec![potential];
+    if let Degree::Homogeneous(k) = degree(g, potential, g_vars) {
+        if k >= 1 {
+            let du: V3 = g_vars.map(|v| g.diff(potential, v));
+            let dot = dot3(g, &gm, &du);
+            let inv = g.constant(1.0 / f64::from(k));
+            potentials.push(g.mul(inv, dot));
+        }
+    }
+    let mut candidates = vec![routhian];
+    for u in potentials {
+        candidates.push(g.sub(he, u));
+    }
+    candidates
 }
 
 /// Where Ω starts in the coordinates `x = (Ω, γ)` of the Schur complement.

@@ -847,6 +847,37 @@ fn schedule_puts_children_first_and_shares_subexpressions() {
 }
 
 #[test]
+fn scaled_products_keep_the_constant_on_the_early_factor() {
+    let (mut g, x, y, _) = xyz();
+    let two = g.constant(2.0);
+    let xy = g.mul(x, y);
+    let normal = g.mul(two, xy); // 2·(x·y)
+    let scaled = g.mul_scaled(x, 2.0, y); // x·(2·y)
+    let two_y = g.mul(two, y);
+    assert_ne!(scaled, normal);
+    let (a, b) = match g.node(scaled) {
+        Node::Mul(a, b) => (a, b),
+        n => panic!("not a product: {n:?}"),
+    };
+    assert!((a, b) == (x, two_y) || (a, b) == (two_y, x));
+    let p = [0.7, -1.3, 0.0];
+    assert_eq!(g.eval(&[scaled], &p), g.eval(&[normal], &p));
+    // Its derivative is that of 2xy, and substitution rebuilds it in normal form.
+    let dx = g.diff(scaled, var(&g, x));
+    let dy = g.diff(scaled, var(&g, y));
+    assert!(close(g.eval(&[dx], &p)[0], 2.0 * p[1]));
+    assert!(close(g.eval(&[dy], &p)[0], 2.0 * p[0]));
+    let three = g.constant(3.0);
+    let map: HashMap<Var, Id> = [(var(&g, x), three)].into_iter().collect();
+    let sub = g.substitute(&[scaled], &map)[0];
+    let six = g.constant(6.0);
+    assert_eq!(sub, g.mul(six, y));
+    // A unit scale, or a constant `late`, is an ordinary product.
+    assert_eq!(g.mul_scaled(x, 1.0, y), xy);
+    assert_eq!(g.mul_scaled(two, 2.0, y), g.mul(two, two_y));
+}
+
+#[test]
 fn op_counts_follow_the_schedule() {
     let (mut g, x, y, _) = xyz();
     let x3 = g.powi(x, 3); // 2 mul

@@ -16,13 +16,16 @@
 //! - `∂R/∂Ω = c + uw`;
 //! - `∂R/∂γ = BᵀΩ − m g r + u(h + uw)`;
 //! - `∂²R/∂Ω² = I − (ρw)wᵀ`;
-//! - `∂²R/∂Ω_i∂γ_j = P − w zᵀ` (`= B + uI − wtᵀ/s`);
+//! - `∂²R/∂Ω_i∂γ_j = P − (ρw)tᵀ` (`= B + uI − wtᵀ/s`);
 //! - `∂²R/∂γ² = u(P + Bᵀ) − t zᵀ` (`= u(B + Bᵀ) + u²I − ttᵀ/s`; symmetric, because
 //!   `P + Bᵀ = B + Bᵀ + uI`).
 //!
-//! Every block reuses `w`, `c`, `u`, `uw`, `t`, `z` and `P`; `t = (h + uw) + uw` reuses the sum
-//! `∂R/∂γ` needs; only the upper triangles of the symmetric `I`, `∂²R/∂Ω²` and `∂²R/∂γ²` are
-//! formed.
+//! Every block reuses `w`, `ρw`, `c`, `u`, `uw`, `t`, `z` and `P`; only the upper triangles of
+//! the symmetric `I`, `∂²R/∂Ω²` and `∂²R/∂γ²` are formed. Everything after the division waits
+//! for it, so that part is written for a short critical path rather than for the fewest
+//! operations: `h` is formed before `u` is known, and `t = h + u(2w)` is one multiplication and
+//! one addition after `u` (three more operations than `(h + uw) + uw`, which would reuse the
+//! sum `∂R/∂γ` needs but is three dependent steps); `∂²R/∂Ω∂γ` reads `t` rather than `z = ρt`.
 //!
 //! A, G, C of (64) come from [`GyroscopicSystem::from_bundle`], which writes them in closed form
 //! for any model: differentiating (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω`
@@ -99,10 +102,13 @@ pub fn hand_gyrostat_bundle(
 
     let dr_domega = Vector3::new(c0 + uw0, c1 + uw1, c2 + uw2);
 
-    // h + uw with h = c + Bᵀγ; ∂R/∂γ = BᵀΩ − m g r + u(h + uw).
-    let hu0 = dr_domega.x + (b00 * g0 + b10 * g1 + b20 * g2);
-    let hu1 = dr_domega.y + (b01 * g0 + b11 * g1 + b21 * g2);
-    let hu2 = dr_domega.z + (b02 * g0 + b12 * g1 + b22 * g2);
+    // h = c + Bᵀγ (formed while ρ is being computed), h + uw; ∂R/∂γ = BᵀΩ − m g r + u(h + uw).
+    let h0 = c0 + (b00 * g0 + b10 * g1 + b20 * g2);
+    let h1 = c1 + (b01 * g0 + b11 * g1 + b21 * g2);
+    let h2 = c2 + (b02 * g0 + b12 * g1 + b22 * g2);
+    let hu0 = h0 + uw0;
+    let hu1 = h1 + uw1;
+    let hu2 = h2 + uw2;
     let dr_dgamma = Vector3::new(
         (b00 * o0 + b10 * o1 + b20 * o2) - mr0 + u * hu0,
         (b01 * o0 + b11 * o1 + b21 * o2) - mr1 + u * hu1,
@@ -126,15 +132,16 @@ pub fn hand_gyrostat_bundle(
         aa02, aa12, aa22,
     );
 
-    // t = h + 2uw = (h + uw) + uw, z = ρt.
-    let t0 = hu0 + uw0;
-    let t1 = hu1 + uw1;
-    let t2 = hu2 + uw2;
+    // t = h + u(2w), z = ρt: 2w is ready long before u, which waits for the division, so this
+    // is one multiplication and one addition after u where (h + uw) + uw is three steps.
+    let t0 = h0 + u * (w0 + w0);
+    let t1 = h1 + u * (w1 + w1);
+    let t2 = h2 + u * (w2 + w2);
     let z0 = rho * t0;
     let z1 = rho * t1;
     let z2 = rho * t2;
 
-    // P = B + uI; ∂²R/∂Ω_i∂γ_j = P − w zᵀ.
+    // P = B + uI; ∂²R/∂Ω_i∂γ_j = P − (ρw)tᵀ.
     let ui00 = u * i00;
     let ui01 = u * i01;
     let ui02 = u * i02;
@@ -146,9 +153,9 @@ pub fn hand_gyrostat_bundle(
     let (p20, p21, p22) = (b20 + ui02, b21 + ui12, b22 + ui22);
     #[rustfmt::skip]
     let d2r_domega_dgamma = Matrix3::new(
-        p00 - w0 * z0, p01 - w0 * z1, p02 - w0 * z2,
-        p10 - w1 * z0, p11 - w1 * z1, p12 - w1 * z2,
-        p20 - w2 * z0, p21 - w2 * z1, p22 - w2 * z2,
+        p00 - rw0 * t0, p01 - rw0 * t1, p02 - rw0 * t2,
+        p10 - rw1 * t0, p11 - rw1 * t1, p12 - rw1 * t2,
+        p20 - rw2 * t0, p21 - rw2 * t1, p22 - rw2 * t2,
     );
 
     // ∂²R/∂γ² = u(P + Bᵀ) − t zᵀ, symmetric.

@@ -176,6 +176,27 @@ impl Graph {
         self.intern(Node::Mul(a, b))
     }
 
+    /// `late · (c · early)`: the value of `mul(c, mul(late, early))`, but with the constant
+    /// scaling `early` rather than the product. [`Graph::mul`] pulls constant factors to the
+    /// front (`x · (c · y) = c · (x · y)`), which is what lets equal products share a node; this
+    /// keeps `c · early` as an operand instead, for a caller that knows `early` long before
+    /// `late` (a value that waits for a division, say): the straight-line code can then form
+    /// `c · early` beforehand and apply one multiplication once `late` is known, where
+    /// `c · (late · early)` needs two. The node is not merged with its normal form;
+    /// [`Graph::substitute`] keeps it where its operands are their own images and rebuilds it
+    /// with `mul` elsewhere.
+    pub fn mul_scaled(&mut self, late: Id, c: f64, early: Id) -> Id {
+        let c = self.constant(c);
+        let scaled = self.mul(c, early);
+        match self.node(scaled) {
+            Node::Mul(k, _) if self.as_const(k).is_some() && self.as_const(late).is_none() => {
+                let (a, b) = self.order(late, scaled);
+                self.intern(Node::Mul(a, b))
+            }
+            _ => self.mul(late, scaled),
+        }
+    }
+
     /// `(base, n)` with `id = base^n` (`n = 1` for anything that is not a power).
     fn base_exp(&self, id: Id) -> (Id, i32) {
         match self.node(id) {
