@@ -238,14 +238,17 @@ fn cholesky_solve(
 ///
 /// Every evaluation of the vector fields solves with K, and the solve is on the critical path of
 /// the integrator (each stage needs the previous one). Cholesky puts three square roots and six
-/// divisions in a chain there; an LDLᵀ solve three divisions `1/d₁`, `1/d₂`, `1/d₃`. Here the
-/// last two are made independent: with `s₃₃ = K₃₃ − l₃₁K₃₁`, `m₃₂ = K₃₂ − l₃₁K₂₁` (so that
-/// `l₃₂ = m₃₂/d₂`, `d₃ = s₃₃ − m₃₂²/d₂`) the product `d₂d₃ = d₂s₃₃ − m₃₂²` needs no division,
-/// and `x₃ = z₃/d₃ = (d₂(b₃ − l₃₁b₁) − m₃₂z₂)/(d₂d₃)`, so that `1/d₂` and `1/(d₂d₃)` are taken
-/// side by side. `d₂d₃` carries the same rounding errors as `d₂·d₃` of the usual recurrence (its
-/// two terms are those of d₃ times d₂), so the solve is as accurate as Cholesky (see
-/// `matches_cholesky_on_ill_conditioned_matrices`). A constant K (tops, gyrostats) is
-/// factorised once ([`InertiaCache`]), and a diagonal one is then solved by independent products.
+/// divisions in a chain there; the usual LDLᵀ two rounds of divisions (`1/d₁` before `d₂`). Here
+/// the pivots are carried multiplied by `k₁₁` (fraction-free elimination), so that all three
+/// divisions are taken side by side, once, at the end:
+/// `d₂' = k₁₁d₂ = k₁₁k₂₂ − k₂₁²`, `m₃₂' = k₁₁k₃₂ − k₃₁k₂₁`, `s₃₃' = k₁₁k₃₃ − k₃₁²` and
+/// `Δ = k₁₁²d₂d₃ = d₂'s₃₃' − m₃₂'²`; the solve is
+/// `z₂ = k₁₁b₂ − k₂₁b₁`, `t₃ = k₁₁b₃ − k₃₁b₁`, `x₃ = (d₂'t₃ − m₃₂'z₂)/Δ`,
+/// `x₂ = (z₂ − m₃₂'x₃)/d₂'`, `x₁ = (b₁ − k₂₁x₂ − k₃₁x₃)/k₁₁`. These are the quantities of the
+/// usual recurrence scaled by powers of `k₁₁`, formed from the same products, so they carry the
+/// same relative rounding errors, and the solve is as accurate as Cholesky (see
+/// `matches_cholesky_on_ill_conditioned_matrices`). A constant K (tops, gyrostats) is factorised
+/// once ([`InertiaCache`]), and a diagonal one is then solved by three independent products.
 ///
 /// Shorter chains were tried and rejected: the adjugate `adj K/det K`, and pivots from the
 /// leading minors (`d₃ = det K/M₂`), lose accuracy through the cancellation in `det K`: on a
@@ -254,21 +257,23 @@ fn cholesky_solve(
 /// [`Ldl::new`] declines (`None`) unless every pivot exceeds `1e-13` times its diagonal entry:
 /// the pivots of Cholesky and of this factorisation differ by a few ε of the diagonal, so
 /// outside that margin both find K positive definite, and inside it the caller asks Cholesky,
-/// whose verdict (and error) is then exactly that of before. It also declines when `d₂d₃` over-
-/// or underflows (entries beyond about 1e±150), where Cholesky still works.
+/// whose verdict (and error) is then exactly that of before. It also declines when `Δ`, a
+/// product of four entries, over- or underflows (entries beyond about 1e±75), where Cholesky
+/// still works.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Ldl {
-    l21: f64,
-    l31: f64,
-    l32: f64,
-    m32: f64,
+    k11: f64,
+    k21: f64,
+    k31: f64,
     d2: f64,
-    /// `1/d₁`, `1/d₂`, `1/(d₂d₃)`.
+    m32: f64,
+    /// `1/k₁₁`, `1/d₂'`, `1/Δ`.
     r1: f64,
     r2: f64,
     q: f64,
-    /// All multipliers are zero (K is diagonal): the solve is three independent products.
-    diagonal: bool,
+    /// For a diagonal K (all multipliers zero): `1/K₂₂ = k₁₁/d₂'` and `1/K₃₃ = k₁₁d₂'/Δ`, so
+    /// that the solve is three independent products; `None` otherwise.
+    diagonal: Option<(f64, f64)>,
 }
 
 /// Pivots must exceed this fraction of their diagonal entry (see [`Ldl`]).
@@ -279,48 +284,44 @@ impl Ldl {
     pub(super) fn new(k: &Matrix3<f64>) -> Option<Ldl> {
         let (k11, k21, k31) = (k[(0, 0)], k[(1, 0)], k[(2, 0)]);
         let (k22, k32, k33) = (k[(1, 1)], k[(2, 1)], k[(2, 2)]);
-        let r1 = 1.0 / k11;
-        let (l21, l31) = (k21 * r1, k31 * r1);
-        let d2 = k22 - l21 * k21;
-        let m32 = k32 - l31 * k21;
-        let s33 = k33 - l31 * k31;
-        let d23 = d2 * s33 - m32 * m32;
-        let (r2, q) = (1.0 / d2, 1.0 / d23);
-        let l32 = m32 * r2;
-        // d₁ > 0, d₂ and d₃ = d₂d₃/d₂ clearly positive. Written so that NaN declines; infinite
-        // entries decline too (∞ is not > ∞).
+        let d2 = k11 * k22 - k21 * k21;
+        let m32 = k11 * k32 - k31 * k21;
+        let s33 = k11 * k33 - k31 * k31;
+        let delta = d2 * s33 - m32 * m32;
+        let (r1, r2, q) = (1.0 / k11, 1.0 / d2, 1.0 / delta);
+        // d₁ > 0, d₂ = d₂'/k₁₁ and d₃ = Δ/(k₁₁d₂') clearly positive. Written so that NaN
+        // declines; infinite entries decline too (∞ is not > ∞).
         let clear = k11 > 0.0
-            && d2 > PIVOT_MARGIN * k22.abs()
-            && d23 > PIVOT_MARGIN * k33.abs() * d2
+            && d2 > PIVOT_MARGIN * k22.abs() * k11
+            && delta > PIVOT_MARGIN * k33.abs() * d2 * k11
             && r1.is_normal()
             && r2.is_normal()
             && q.is_normal();
+        let diagonal = (k21 == 0.0 && k31 == 0.0 && m32 == 0.0).then(|| (k11 * r2, k11 * d2 * q));
         clear.then_some(Ldl {
-            l21,
-            l31,
-            l32,
-            m32,
+            k11,
+            k21,
+            k31,
             d2,
+            m32,
             r1,
             r2,
             q,
-            diagonal: l21 == 0.0 && l31 == 0.0 && m32 == 0.0,
+            diagonal,
         })
     }
 
-    /// `K⁻¹b`: `Lz = b`, then `DLᵀx = z`.
+    /// `K⁻¹b`: the elimination scaled by `k₁₁` (see [`Ldl`]).
     #[inline]
     pub(super) fn solve(&self, b: &Vector3<f64>) -> Vector3<f64> {
-        if self.diagonal {
-            // The general formulas below with l = m = 0, without their dependency chain: for a
-            // finite solution the same values (`x − 0·y = x`).
-            return Vector3::new(b.x * self.r1, b.y * self.r2, self.d2 * b.z * self.q);
+        if let Some((r22, r33)) = self.diagonal {
+            return Vector3::new(b.x * self.r1, b.y * r22, b.z * r33);
         }
-        let z2 = b.y - self.l21 * b.x;
-        let t3 = b.z - self.l31 * b.x;
+        let z2 = self.k11 * b.y - self.k21 * b.x;
+        let t3 = self.k11 * b.z - self.k31 * b.x;
         let x3 = (self.d2 * t3 - self.m32 * z2) * self.q;
-        let x2 = z2 * self.r2 - self.l32 * x3;
-        let x1 = b.x * self.r1 - self.l21 * x2 - self.l31 * x3;
+        let x2 = (z2 - self.m32 * x3) * self.r2;
+        let x1 = (b.x - self.k21 * x2 - self.k31 * x3) * self.r1;
         Vector3::new(x1, x2, x3)
     }
 }
@@ -346,7 +347,7 @@ mod tests {
         upper[(0, 1)] = 100.0;
         assert_eq!(Ldl::new(&upper).expect("SPD").solve(&b), x);
         // Scale-free: powers of two are exact, so the solution is the same to the bit.
-        for s in [2f64.powi(-450), 2f64.powi(450)] {
+        for s in [2f64.powi(-200), 2f64.powi(200)] {
             let xs = Ldl::new(&(k * s)).expect("SPD").solve(&b) * s;
             assert_eq!(xs, x, "{s:e}");
         }
