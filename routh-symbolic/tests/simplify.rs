@@ -928,3 +928,39 @@ fn infix_printing() {
     let sg = g.func(Func::Sign, ay);
     assert_eq!(to_infix(&g, sg), "sign(abs(y))");
 }
+
+/// A power of two times a sum whose terms all carry constants is distributed (bit for bit the
+/// same value: the scaled constants are exact), so that `½(2x + 2yz)` is `x + yz`; other
+/// constants, or a term without a constant, leave the product as it is.
+#[test]
+fn powers_of_two_distribute_over_scaled_sums() {
+    let (mut g, x, y, z) = xyz();
+    let (two, half, three) = (g.constant(2.0), g.constant(0.5), g.constant(3.0));
+    let yz = g.mul(y, z);
+    let (tx, tyz) = (g.mul(two, x), g.mul(two, yz));
+    let s = g.add(tx, tyz);
+    let plain = g.add(x, yz);
+    assert_eq!(g.mul(half, s), plain);
+    // Nested sums, and a scale that leaves constants: ¼(2x + 2yz + 4z) = ½x + ½yz + z.
+    let four = g.constant(4.0);
+    let fz = g.mul(four, z);
+    let s3 = g.add(s, fz);
+    let quarter = g.constant(0.25);
+    let q = g.mul(quarter, s3);
+    let p = [0.3, -1.7, 2.9];
+    assert_eq!(
+        g.eval(&[q], &p),
+        g.eval(&[s3], &p)
+            .iter()
+            .map(|v| 0.25 * v)
+            .collect::<Vec<_>>()
+    );
+    assert!(matches!(g.node(q), Node::Add(..)));
+    // Not a power of two: kept as a product (3 · (2x + 2yz)).
+    let t = g.mul(three, s);
+    assert_eq!(g.node(t), Node::Mul(three, s));
+    // A term without a constant factor: nothing to save.
+    let mixed = g.add(tx, yz);
+    let m = g.mul(half, mixed);
+    assert_eq!(g.node(m), Node::Mul(half, mixed));
+}

@@ -85,6 +85,52 @@ impl Graph {
         None
     }
 
+    /// `c · s` for a sum `s` every term of which carries a constant factor, `Σ kᵢxᵢ`, written as
+    /// `Σ (c kᵢ) xᵢ` when `c` is a power of two: then every `c kᵢ` is exact and scaling by `c`
+    /// commutes with rounding, so the value is bit for bit that of `c · s` (barring over- and
+    /// underflow), with one multiplication fewer, or none at all where `c kᵢ = 1`. This is how
+    /// `½(2Iω + 2m u v)`, the derivative of a kinetic energy written as `½(…)`, becomes
+    /// `Iω + m u v`. `None` when a term has no constant factor (nothing would be saved), or the
+    /// sum is deeper than `depth`.
+    fn scale_sum(&mut self, c: f64, s: Id, depth: u32) -> Option<Id> {
+        let power_of_two = c.is_normal() && (c.abs().log2().fract() == 0.0);
+        if !power_of_two || depth == 0 {
+            return None;
+        }
+        match self.node(s) {
+            Node::Mul(k, x) => {
+                let k = self.as_const(k)?;
+                let ck = c * k;
+                if !ck.is_normal() {
+                    return None;
+                }
+                let ck = self.constant(ck);
+                Some(self.mul(ck, x))
+            }
+            Node::Add(p, q) => {
+                // Both terms are checked before anything is built.
+                if !self.all_terms_scaled(p, depth - 1) || !self.all_terms_scaled(q, depth - 1) {
+                    return None;
+                }
+                let p = self.scale_sum(c, p, depth - 1)?;
+                let q = self.scale_sum(c, q, depth - 1)?;
+                Some(self.add(p, q))
+            }
+            _ => None,
+        }
+    }
+
+    /// Whether every term of the sum `s` (at most `depth` sums deep) has a constant factor.
+    fn all_terms_scaled(&self, s: Id, depth: u32) -> bool {
+        match self.node(s) {
+            Node::Mul(k, _) => self.as_const(k).is_some(),
+            Node::Add(p, q) if depth > 0 => {
+                self.all_terms_scaled(p, depth - 1) && self.all_terms_scaled(q, depth - 1)
+            }
+            _ => false,
+        }
+    }
+
     /// `a - b`.
     pub fn sub(&mut self, a: Id, b: Id) -> Id {
         let nb = self.neg(b);
@@ -132,6 +178,11 @@ impl Graph {
                     Node::Neg(y) => {
                         let p = self.constant(-x);
                         return self.mul(p, y);
+                    }
+                    Node::Add(..) => {
+                        if let Some(s) = self.scale_sum(x, b, 8) {
+                            return s;
+                        }
                     }
                     _ => {}
                 }
