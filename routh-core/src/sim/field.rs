@@ -297,7 +297,7 @@ impl Ldl {
             && r1.is_normal()
             && r2.is_normal()
             && q.is_normal();
-        let diagonal = (k21 == 0.0 && k31 == 0.0 && m32 == 0.0).then(|| (k11 * r2, k11 * d2 * q));
+        let diagonal = (k21 == 0.0 && k31 == 0.0 && m32 == 0.0).then_some((k11 * r2, k11 * d2 * q));
         clear.then_some(Ldl {
             k11,
             k21,
