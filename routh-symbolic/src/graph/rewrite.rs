@@ -251,7 +251,11 @@ impl Graph {
     /// `(base, n)` with `id = base^n` (`n = 1` for anything that is not a power).
     fn base_exp(&self, id: Id) -> (Id, i32) {
         match self.node(id) {
-            Node::Powi(b, n) => (b, n),
+            Node::Powi(b, n) => match self.node(b) {
+                // (1/bb)ⁿ, the form of a negative power.
+                Node::Recip(bb) => (bb, -n),
+                _ => (b, n),
+            },
             Node::Recip(b) => match self.node(b) {
                 Node::Powi(bb, n) => (bb, -n),
                 _ => (b, -1),
@@ -317,9 +321,12 @@ impl Graph {
         }
         match n {
             -1 => self.intern(Node::Recip(a)),
+            // a⁻ⁿ as (1/a)ⁿ, not 1/aⁿ: the reciprocal 1/a is then shared with every other
+            // power of it (the derivative of 1/a is −a′(1/a)², which reuses the one division
+            // instead of adding 1/a²). Exact up to rounding.
             _ if n < 0 => {
-                let p = self.powi(a, -n);
-                self.intern(Node::Recip(p))
+                let r = self.intern(Node::Recip(a));
+                self.intern(Node::Powi(r, -n))
             }
             _ => self.intern(Node::Powi(a, n)),
         }
