@@ -15,7 +15,7 @@
 //! the crate path (whose tokens carry the user's span for errors).
 
 use crate::equations::Equations;
-use crate::layout::{Bundle, Gyroscopic};
+use crate::layout::{Bundle, EquationTerms, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
 use routh_symbolic::{Func, Graph, Id, Node, Plan, Var};
@@ -300,21 +300,38 @@ impl Emitter<'_> {
         self.method(s, "d2l_domega_dgamma", WG, mx, l);
         self.method(s, "energy", WG, Ret::Scalar(o.energy), l);
         self.method(s, "cyclic_momentum", WG, Ret::Scalar(o.cyclic_momentum), l);
-
-        // full_equations: J and the right side of (8) from one body.
-        let _ = writeln!(
-            s,
-            "#[inline]\nfn full_equations(&self, {WG}) -> __FullEquations {{"
-        );
-        let mut ids = flat_m(&o.d2l_domega2);
-        ids.extend(eq.full);
-        let outs = self.body(s, &ids, l);
-        s.push_str("__FullEquations {\ninertia: ");
-        construct(s, "__Matrix3", &outs[..9]);
-        s.push_str(",\nright_side: ");
-        construct(s, "__Vector3", &outs[9..]);
-        s.push_str(",\n}\n}\n");
+        let terms = EquationTerms {
+            inertia: o.d2l_domega2,
+            right_side: eq.full,
+            psi_dot: None,
+        };
+        self.equations_method(s, "full_equations", WG, "__FullEquations", terms, l);
         out
+    }
+
+    /// Writes `full_equations` or `reduced_equations`: J, the right side of (8) or (13) and,
+    /// for (13), ψ̇, from one straight-line body.
+    fn equations_method(
+        &self,
+        out: &mut String,
+        name: &str,
+        args: &str,
+        ret_ty: &str,
+        terms: EquationTerms<Id>,
+        inputs: Inputs,
+    ) {
+        let with_psi_dot = terms.psi_dot.is_some();
+        let _ = writeln!(out, "#[inline]\nfn {name}(&self, {args}) -> {ret_ty} {{");
+        let outs = self.body(out, &terms.flatten(), inputs);
+        let t = EquationTerms::from_flat(outs, with_psi_dot);
+        let _ = write!(out, "{ret_ty} {{\ninertia: ");
+        construct(out, "__Matrix3", t.inertia.as_flattened());
+        out.push_str(",\nright_side: ");
+        construct(out, "__Vector3", &t.right_side);
+        if let Some(psi_dot) = t.psi_dot {
+            let _ = write!(out, ",\npsi_dot: {psi_dot}");
+        }
+        out.push_str(",\n}\n}\n");
     }
 
     /// The methods of `impl Routhian`.
@@ -371,20 +388,19 @@ impl Emitter<'_> {
         construct(s, "__Matrix3", m.c.as_flattened());
         s.push_str(",\n}\n}\n");
 
-        // reduced_equations: J, the right side of (13) and ψ̇ from one body.
-        let _ = writeln!(
+        let terms = EquationTerms {
+            inertia: o.d2l_domega2,
+            right_side: eq.reduced,
+            psi_dot: Some(o.psi_dot),
+        };
+        self.equations_method(
             s,
-            "#[inline]\nfn reduced_equations(&self, {ROUTH}) -> __ReducedEquations {{"
+            "reduced_equations",
+            ROUTH,
+            "__ReducedEquations",
+            terms,
+            r,
         );
-        let mut ids = flat_m(&o.d2l_domega2);
-        ids.extend(eq.reduced);
-        ids.push(o.psi_dot);
-        let outs = self.body(s, &ids, r);
-        s.push_str("__ReducedEquations {\ninertia: ");
-        construct(s, "__Matrix3", &outs[..9]);
-        s.push_str(",\nright_side: ");
-        construct(s, "__Vector3", &outs[9..12]);
-        let _ = write!(s, ",\npsi_dot: {},\n}}\n}}\n", outs[12]);
         out
     }
 }

@@ -1,5 +1,6 @@
-//! The layouts of the two methods that return many outputs from one straight-line body,
-//! `Routhian::bundle` and `Routhian::gyroscopic_system`: which output is which, by name.
+//! The layouts of the methods that return many outputs from one straight-line body,
+//! `Routhian::bundle`, `Routhian::gyroscopic_system`, `Lagrangian::full_equations` and
+//! `Routhian::reduced_equations`: which output is which, by name.
 //!
 //! [`reduce`](crate::reduce) derives the outputs as nodes and [`emit`](crate::emit) writes one
 //! body for all of them, which hands back one token per node in the order it was given. Both
@@ -97,6 +98,41 @@ impl<T> Gyroscopic<T> {
     }
 }
 
+/// What `Lagrangian::full_equations` and `Routhian::reduced_equations` return: `J`, the right
+/// side of (8) or (13), and (for (13) only) `ψ̇`, in the order of `routh::FullEquations` and
+/// `routh::ReducedEquations`.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub struct EquationTerms<T> {
+    /// `J = ∂²L/∂ω²`, row-major.
+    pub inertia: [[T; 3]; 3],
+    /// The right side solved for the angular acceleration.
+    pub right_side: [T; 3],
+    /// `ψ̇` (38), for the reduced equations.
+    pub psi_dot: Option<T>,
+}
+
+impl<T> EquationTerms<T> {
+    /// The scalars in layout order (`J` row-major, the right side, then `ψ̇` if present).
+    pub fn flatten(self) -> Vec<T> {
+        let mut out: Vec<T> = self.inertia.into_iter().flatten().collect();
+        out.extend(self.right_side);
+        out.extend(self.psi_dot);
+        out
+    }
+
+    /// The inverse of [`EquationTerms::flatten`], with or without `ψ̇`.
+    ///
+    /// # Panics
+    /// If `flat` does not hold exactly 12 scalars (13 with `ψ̇`).
+    pub fn from_flat(flat: impl IntoIterator<Item = T>, with_psi_dot: bool) -> Self {
+        read_exactly(flat, |it| EquationTerms {
+            inertia: take33(it),
+            right_side: take3(it),
+            psi_dot: with_psi_dot.then(|| take(it)),
+        })
+    }
+}
+
 /// A layout read from `flat` by `read`, which must use up every scalar.
 fn read_exactly<T, I: IntoIterator<Item = T>, S>(
     flat: I,
@@ -144,6 +180,19 @@ mod tests {
         let s = Gyroscopic::from_flat(0..27);
         assert_eq!((s.a[0][1], s.g[0][0], s.c[2][2]), (1, 9, 26));
         assert_eq!(s.flatten(), (0..27).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn equation_terms_round_trip_in_field_order() {
+        let full = EquationTerms::from_flat(0..12, false);
+        assert_eq!(
+            (full.inertia[1][0], full.right_side, full.psi_dot),
+            (3, [9, 10, 11], None)
+        );
+        assert_eq!(full.flatten(), (0..12).collect::<Vec<_>>());
+        let reduced = EquationTerms::from_flat(0..13, true);
+        assert_eq!(reduced.psi_dot, Some(12));
+        assert_eq!(reduced.flatten(), (0..13).collect::<Vec<_>>());
     }
 
     #[test]

@@ -85,8 +85,12 @@ impl<'a, M: Lagrangian + ?Sized> FullField<'a, M> {
         if let Some(omega_dot) = self.cache.solve(j, rhs) {
             return Ok((omega_dot, gamma_dot));
         }
-        // Declined by the fast path: the checks and the Cholesky verdict.
-        let omega_dot = solve_spd(j, rhs, gamma, |k, g| {
+        // Declined by the fast path (which has already tried `Ldl` on a finite J): NaN for a
+        // non-finite J, else the Cholesky verdict.
+        if !j.iter().all(|x| x.is_finite()) {
+            return Ok((Vector3::repeat(f64::NAN), gamma_dot));
+        }
+        let omega_dot = cholesky_solve(j, rhs, gamma, |k, g| {
             RouthError::KineticNotPositiveDefinite {
                 gamma: gamma_array(g),
                 min_eigenvalue: min_eigenvalue(k),

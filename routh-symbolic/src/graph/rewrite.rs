@@ -93,39 +93,38 @@ impl Graph {
     /// `Iω + m u v`. `None` when a term has no constant factor (nothing would be saved), or the
     /// sum is deeper than `depth`.
     fn scale_sum(&mut self, c: f64, s: Id, depth: u32) -> Option<Id> {
-        let power_of_two = c.is_normal() && (c.abs().log2().fract() == 0.0);
-        if !power_of_two || depth == 0 {
-            return None;
-        }
+        // A normal number with a zero mantissa is a power of two.
+        let power_of_two = c.is_normal() && c.to_bits() & ((1u64 << 52) - 1) == 0;
+        (power_of_two && self.all_terms_scaled(c, s, depth)).then(|| self.scale_terms(c, s))
+    }
+
+    /// `Σ (c kᵢ) xᵢ` for a sum [`Graph::all_terms_scaled`] accepted.
+    fn scale_terms(&mut self, c: f64, s: Id) -> Id {
         match self.node(s) {
-            Node::Mul(k, x) => {
-                let k = self.as_const(k)?;
-                let ck = c * k;
-                if !ck.is_normal() {
-                    return None;
-                }
-                let ck = self.constant(ck);
-                Some(self.mul(ck, x))
-            }
             Node::Add(p, q) => {
-                // Both terms are checked before anything is built.
-                if !self.all_terms_scaled(p, depth - 1) || !self.all_terms_scaled(q, depth - 1) {
-                    return None;
-                }
-                let p = self.scale_sum(c, p, depth - 1)?;
-                let q = self.scale_sum(c, q, depth - 1)?;
-                Some(self.add(p, q))
+                let p = self.scale_terms(c, p);
+                let q = self.scale_terms(c, q);
+                self.add(p, q)
             }
-            _ => None,
+            Node::Mul(k, x) => {
+                let ck = self.constant(c * self.as_const(k).unwrap_or(1.0));
+                self.mul(ck, x)
+            }
+            // Not reached (every term is a product with a constant); `c · s` as it is.
+            _ => {
+                let c = self.constant(c);
+                self.mul(c, s)
+            }
         }
     }
 
-    /// Whether every term of the sum `s` (at most `depth` sums deep) has a constant factor.
-    fn all_terms_scaled(&self, s: Id, depth: u32) -> bool {
+    /// Whether every term of the sum `s` (at most `depth` sums deep) has a constant factor `k`
+    /// with `c k` a normal number (so that `c k` is exact for a power of two `c`).
+    fn all_terms_scaled(&self, c: f64, s: Id, depth: u32) -> bool {
         match self.node(s) {
-            Node::Mul(k, _) => self.as_const(k).is_some(),
+            Node::Mul(k, _) => self.as_const(k).is_some_and(|k| (c * k).is_normal()),
             Node::Add(p, q) if depth > 0 => {
-                self.all_terms_scaled(p, depth - 1) && self.all_terms_scaled(q, depth - 1)
+                self.all_terms_scaled(c, p, depth - 1) && self.all_terms_scaled(c, q, depth - 1)
             }
             _ => false,
         }
