@@ -24,35 +24,54 @@ pub fn full_vector_field<M: Lagrangian + ?Sized>(
     FullField::new(model).eval(omega, gamma)
 }
 
-/// The factorisation of the last `J(γ)` a vector field solved with, kept and reused while `J`
+/// The factorisation of the first `J(γ)` a vector field solved with, kept and reused while `J`
 /// is bitwise the same (every model whose inertia does not depend on γ: tops, gyrostats), so
-/// that a simulation factorises a constant `J` once. Solutions are bit for bit those of a new
-/// factorisation.
+/// that a simulation factorises a constant `J` once. Once a different `J` is met, `J` depends on
+/// the state (an ellipsoid on a plane): from then on every solve factorises afresh and nothing
+/// is compared or stored. Solutions are bit for bit those of a new factorisation either way.
 #[derive(Default)]
-pub(super) struct InertiaCache(Option<(Matrix3<f64>, Ldl)>);
+pub(super) enum InertiaCache {
+    /// Nothing solved yet.
+    #[default]
+    Empty,
+    /// Every `J` so far was this one.
+    Kept(Matrix3<f64>, Ldl),
+    /// `J` has changed: it depends on the state.
+    Varies,
+}
 
 impl InertiaCache {
     /// `J⁻¹b` on the fast path: by the kept factorisation when `J` is the kept one, else by a
-    /// new [`Ldl`] (then kept) when `J` is finite and clearly positive definite. A non-finite `b`
-    /// gives NaN. `None` when the fast path declines (`J` not finite, or not clearly positive
-    /// definite): the caller then decides with Cholesky.
+    /// new [`Ldl`] when `J` is finite and clearly positive definite. A non-finite `b` gives NaN.
+    /// `None` when the fast path declines (`J` not finite, or not clearly positive definite):
+    /// the caller then decides with Cholesky.
     #[inline(always)]
     fn solve(&mut self, j: &Matrix3<f64>, b: &Vector3<f64>) -> Option<Vector3<f64>> {
         if !all_finite(b) {
             return Some(Vector3::repeat(f64::NAN));
         }
-        if let Some((key, inv)) = &self.0 {
-            if same_bits(key, j) {
-                return Some(inv.solve(b));
+        match self {
+            InertiaCache::Varies => {}
+            InertiaCache::Kept(key, inv) => {
+                if same_bits(key, j) {
+                    return Some(inv.solve(b));
+                }
+                *self = InertiaCache::Varies;
+            }
+            InertiaCache::Empty => {
+                if j.iter().all(|x| x.is_finite()) {
+                    let inv = Ldl::new(j)?;
+                    *self = InertiaCache::Kept(*j, inv);
+                    return Some(inv.solve(b));
+                }
+                return None;
             }
         }
         if j.iter().all(|x| x.is_finite()) {
-            if let Some(inv) = Ldl::new(j) {
-                self.0 = Some((*j, inv));
-                return Some(inv.solve(b));
-            }
+            Ldl::new(j).map(|inv| inv.solve(b))
+        } else {
+            None
         }
-        None
     }
 }
 
@@ -368,20 +387,17 @@ mod tests {
         let indefinite = Matrix3::new(1.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0, 0.0, 1.0);
         let negative = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0));
         let nearly = Matrix3::new(1.0, 1.0, 0.0, 1.0, 1.0 + 1e-15, 0.0, 0.0, 0.0, 1.0);
-        let mut nan = k;
-        nan[(2, 1)] = f64::NAN;
-        let mut inf = k;
-        inf[(1, 1)] = f64::INFINITY;
-        for m in [
-            singular,
-            indefinite,
-            negative,
-            nearly,
-            nan,
-            inf,
-            Matrix3::zeros(),
-        ] {
+        for m in [singular, indefinite, negative, nearly, Matrix3::zeros()] {
             assert!(Ldl::new(&m).is_none(), "{m}");
+        }
+        // Any non-finite entry of the lower triangle.
+        for (i, j) in [(0, 0), (1, 0), (2, 0), (1, 1), (2, 1), (2, 2)] {
+            for x in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                let mut m = k;
+                m[(i, j)] = x;
+                m[(j, i)] = x;
+                assert!(Ldl::new(&m).is_none(), "{m}");
+            }
         }
     }
 
@@ -432,6 +448,38 @@ mod tests {
         }
         assert!(worst < 20.0, "LDLᵀ error / Cholesky error up to {worst}");
         assert!(worst_adj > 1e3, "the adjugate is worse: {worst_adj}");
+    }
+
+    /// The cache gives the solutions of a fresh factorisation, bit for bit, through all three of
+    /// its states: kept while J repeats, then, once J changes, afresh for every J (including a
+    /// return to the first one).
+    #[test]
+    fn inertia_cache_solves_like_a_fresh_factorisation() {
+        let mut rng = ChaCha8Rng::seed_from_u64(0xCAC4E);
+        let spd = |rng: &mut ChaCha8Rng| {
+            let a = Matrix3::from_fn(|_, _| rng.gen_range(-1.0..1.0));
+            a * a.transpose() + Matrix3::identity()
+        };
+        let (j1, j2, j3) = (spd(&mut rng), spd(&mut rng), spd(&mut rng));
+        let mut cache = InertiaCache::default();
+        for (k, j) in [j1, j1, j1, j2, j1, j3, j3].iter().enumerate() {
+            let b = Vector3::from_fn(|_, _| rng.gen_range(-5.0..5.0));
+            let got = cache.solve(j, &b).expect("clearly positive definite");
+            let want = Ldl::new(j).expect("clearly positive definite").solve(&b);
+            assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "solve {k}");
+            let state = match cache {
+                InertiaCache::Empty => "empty",
+                InertiaCache::Kept(..) => "kept",
+                InertiaCache::Varies => "varies",
+            };
+            assert_eq!(state, if k < 3 { "kept" } else { "varies" }, "solve {k}");
+        }
+        // A singular J is declined in every state, and a non-finite b gives NaN.
+        let singular = Matrix3::new(1.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0);
+        assert!(InertiaCache::default().solve(&singular, &Vector3::x()).is_none());
+        assert!(cache.solve(&singular, &Vector3::x()).is_none());
+        let nan = cache.solve(&j1, &Vector3::new(f64::NAN, 0.0, 0.0)).unwrap();
+        assert!(nan.iter().all(|x| x.is_nan()));
     }
 
     /// `solve_spd` keeps Cholesky's verdict: an error exactly where Cholesky fails, NaN for
