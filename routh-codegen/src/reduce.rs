@@ -288,8 +288,12 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         d2r_dgamma2: block(&hess_x, X_GAMMA, X_GAMMA),
     };
 
-    let mut base = bundle.flatten();
-    base.remove(0);
+    // Every output but R (its slot repeats ψ̇), to price each form of R by what it adds to them.
+    let base = Bundle {
+        routhian: bundle.psi_dot,
+        ..bundle
+    }
+    .flatten();
     bundle.routhian = routhians
         .into_iter()
         .min_by_key(|&r| extra_cost(g, r, &base))
