@@ -476,7 +476,9 @@ mod tests {
         }
         // A singular J is declined in every state, and a non-finite b gives NaN.
         let singular = Matrix3::new(1.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0);
-        assert!(InertiaCache::default().solve(&singular, &Vector3::x()).is_none());
+        assert!(InertiaCache::default()
+            .solve(&singular, &Vector3::x())
+            .is_none());
         assert!(cache.solve(&singular, &Vector3::x()).is_none());
         let nan = cache.solve(&j1, &Vector3::new(f64::NAN, 0.0, 0.0)).unwrap();
         assert!(nan.iter().all(|x| x.is_nan()));
