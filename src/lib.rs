@@ -64,9 +64,14 @@ pub mod __private {
     pub use routh_core::certify::RouthTape;
     pub use routh_core::nalgebra::{Matrix3, Vector3};
     pub use routh_core::{
-        DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, ReducedEquations,
-        RouthBundle, Routhian,
+        DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia,
+        ReducedEquations, RouthBundle, Routhian,
     };
+
+    /// What `Lagrangian::constant_inertia` returns.
+    pub type MaybeMatrix3 = core::option::Option<Matrix3<f64>>;
+    /// The `rank_one` field of `FullEquations` and `ReducedEquations`.
+    pub type MaybeRankOne = core::option::Option<RankOneInertia>;
 
     /// What `Routhian::certification_tape` returns.
     pub type MaybeTape = core::option::Option<RouthTape>;

@@ -229,8 +229,27 @@ fn check_equations<G: Routhian, H: Routhian>(
         let terms_r = reference.dr_domega(&w, &g, p).norm() * w.norm()
             + reference.dr_dgamma(&w, &g, p).norm() * g.norm()
             + reference.d2r_domega_dgamma(&w, &g, p).norm() * gd.norm();
-        let checks: [(&str, Vec<f64>, Vec<f64>, f64); 5] = [
+        // A body on a plane also hands out its J as J₀ + c v vᵀ (docs/method.md §2a): the
+        // completed matrix against the twin's num-dual J, in both equations.
+        let complete = |r: Option<routh::RankOneInertia>| match (gen.constant_inertia(), r) {
+            (Some(j0), Some(r)) => m(r.complete(&j0)),
+            (None, None) => m(want.inertia),
+            (j0, r) => panic!("J₀ {j0:?} without c v vᵀ {r:?}, or the other way"),
+        };
+        let checks: [(&str, Vec<f64>, Vec<f64>, f64); 7] = [
             ("J", m(got.inertia), m(want.inertia), 1e-12),
+            (
+                "J₀ + c v vᵀ",
+                complete(got.rank_one),
+                m(want.inertia),
+                1e-12,
+            ),
+            (
+                "J₀ + c v vᵀ in (13)",
+                complete(gr.rank_one),
+                m(want.inertia),
+                1e-12,
+            ),
             (
                 "(8) right side",
                 v(got.right_side),
@@ -264,6 +283,27 @@ fn gyrostat_equations_match_numdual() {
 #[test]
 fn ellipsoid_equations_match_numdual() {
     over_random_twins::<_, Ellipsoid>(6, test_models::Ellipsoid::random, check_equations, 1e-12);
+}
+
+/// The derive finds `J = J₀ + c v vᵀ` in the ellipsoid on a plane, with `J₀ = I` and `c = m`
+/// (its kinetic energy is `½ωᵀIω + ½m(n·(γ × ω))²`), and not in the gyrostat, whose J is
+/// constant.
+#[test]
+fn the_rank_one_form_is_found_where_it_is() {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let twin = test_models::Ellipsoid::random(&mut rng);
+    let e = Ellipsoid::from(&twin);
+    assert_eq!(e.constant_inertia(), Some(twin.inertia));
+    let (w, g) = (
+        test_models::random_vector(&mut rng, 2.0),
+        test_models::random_gamma(&mut rng),
+    );
+    let r = e.full_equations(&w, &g).rank_one.expect("c v vᵀ");
+    assert_eq!(r.weight, twin.mass);
+    assert_eq!(e.reduced_equations(&w, &g, 0.7).rank_one, Some(r));
+    let gyrostat = Gyrostat::from(&test_models::Gyrostat::random(&mut rng));
+    assert_eq!(gyrostat.constant_inertia(), None);
+    assert_eq!(gyrostat.full_equations(&w, &g).rank_one, None);
 }
 
 /// `reduced_vector_field` solves (13) in its gauge: with `A = ∂²R/∂Ω²` and the right side `b`

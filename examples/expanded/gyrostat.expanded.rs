@@ -33,6 +33,7 @@ const _: () = {
     type __ReducedEquations = ::routh::__private::ReducedEquations;
     type __RouthTape = ::routh::__private::RouthTape;
     type __MaybeTape = ::routh::__private::MaybeTape;
+    type __MaybeRankOne = ::routh::__private::MaybeRankOne;
     #[automatically_derived]
     impl ::routh::__private::Lagrangian for Gyrostat {
         #[inline]
@@ -573,6 +574,7 @@ const _: () = {
                     __v12,
                 ),
                 right_side: __Vector3::new(__t1305, __t1308, __t1311),
+                rank_one: __MaybeRankOne::None,
             }
         }
     }
@@ -2472,6 +2474,7 @@ const _: () = {
                 ),
                 right_side: __Vector3::new(__t1353, __t1356, __t1359),
                 psi_dot: __t160,
+                rank_one: __MaybeRankOne::None,
             }
         }
         #[inline]

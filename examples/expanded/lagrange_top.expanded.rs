@@ -30,6 +30,7 @@ const _: () = {
     type __ReducedEquations = ::routh::__private::ReducedEquations;
     type __RouthTape = ::routh::__private::RouthTape;
     type __MaybeTape = ::routh::__private::MaybeTape;
+    type __MaybeRankOne = ::routh::__private::MaybeRankOne;
     #[automatically_derived]
     impl ::routh::__private::Lagrangian for LagrangeTop {
         #[inline]
@@ -176,6 +177,7 @@ const _: () = {
                     __v8,
                 ),
                 right_side: __Vector3::new(__t493, __t494, __t488),
+                rank_one: __MaybeRankOne::None,
             }
         }
     }
@@ -1093,6 +1095,7 @@ const _: () = {
                 ),
                 right_side: __Vector3::new(__t543, __t546, __t549),
                 psi_dot: __t55,
+                rank_one: __MaybeRankOne::None,
             }
         }
         #[inline]

@@ -15,6 +15,7 @@
 //! the crate path (whose tokens carry the user's span for errors).
 
 use crate::equations::Equations;
+use crate::inertia::RankOne;
 use crate::layout::{Bundle, EquationTerms, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
@@ -24,7 +25,7 @@ use std::fmt::Write;
 
 /// The names the text uses for the types of `<crate>::__private`, declared as type aliases in
 /// the `const _` block around the impls: `(alias, item of __private)`.
-pub const ALIASES: [(&str, &str); 9] = [
+pub const ALIASES: [(&str, &str); 12] = [
     ("__F64", "f64"),
     ("__Vector3", "Vector3"),
     ("__Matrix3", "Matrix3"),
@@ -34,6 +35,9 @@ pub const ALIASES: [(&str, &str); 9] = [
     ("__ReducedEquations", "ReducedEquations"),
     ("__RouthTape", "RouthTape"),
     ("__MaybeTape", "MaybeTape"),
+    ("__MaybeMatrix3", "MaybeMatrix3"),
+    ("__RankOneInertia", "RankOneInertia"),
+    ("__MaybeRankOne", "MaybeRankOne"),
 ];
 
 /// The function the text calls for `sign(x)`, declared next to the aliases when used (see
@@ -260,14 +264,16 @@ enum Ret {
     Scalar(Id),
     Vector(V3),
     Matrix(M3),
+    /// `Some(matrix)`.
+    SomeMatrix(M3),
 }
 
 /// The arguments of the Lagrangian methods.
-const WG: &str = "__omega: &__Vector3, __gamma: &__Vector3";
+const WG: &str = ", __omega: &__Vector3, __gamma: &__Vector3";
 /// The arguments of the Routhian methods.
-const ROUTH: &str = "__big_omega: &__Vector3, __gamma: &__Vector3, __p_psi: __F64";
+const ROUTH: &str = ", __big_omega: &__Vector3, __gamma: &__Vector3, __p_psi: __F64";
 /// The arguments of the methods at rest.
-const REST: &str = "__gamma: &__Vector3, __p_psi: __F64";
+const REST: &str = ", __gamma: &__Vector3, __p_psi: __F64";
 
 impl Emitter<'_> {
     /// Writes `#[inline] fn name(&self, args) -> ret_ty { ... }`.
@@ -276,34 +282,49 @@ impl Emitter<'_> {
             Ret::Scalar(s) => (vec![*s], "__F64"),
             Ret::Vector(v) => (v.to_vec(), "__Vector3"),
             Ret::Matrix(m) => (flat_m(m), "__Matrix3"),
+            Ret::SomeMatrix(m) => (flat_m(m), "__MaybeMatrix3"),
         };
-        let _ = writeln!(out, "#[inline]\nfn {name}(&self, {args}) -> {ret_ty} {{");
+        let _ = writeln!(out, "#[inline]\nfn {name}(&self{args}) -> {ret_ty} {{");
         let outs = self.body(out, &ids, inputs);
         match ret {
             Ret::Scalar(_) => out.push_str(&outs[0]),
             Ret::Vector(_) | Ret::Matrix(_) => construct(out, ret_ty, &outs),
+            Ret::SomeMatrix(_) => {
+                out.push_str("__MaybeMatrix3::Some(");
+                construct(out, "__Matrix3", &outs);
+                out.push(')');
+            }
         }
         out.push_str("\n}\n");
     }
 
     /// The methods of `impl Lagrangian`.
-    pub fn lagrangian_methods(&self, o: &Outputs, eq: &Equations) -> String {
+    pub fn lagrangian_methods(
+        &self,
+        o: &Outputs,
+        eq: &Equations,
+        rank_one: Option<&RankOne>,
+    ) -> String {
         let mut out = String::new();
         let l = Inputs::Lagrangian;
         let s = &mut out;
         self.method(s, "lagrangian", WG, Ret::Scalar(o.lagrangian), l);
         self.method(s, "dl_domega", WG, Ret::Vector(o.dl_domega), l);
         self.method(s, "dl_dgamma", WG, Ret::Vector(o.dl_dgamma), l);
-        let gonly = "__gamma: &__Vector3";
+        let gonly = ", __gamma: &__Vector3";
         self.method(s, "d2l_domega2", gonly, Ret::Matrix(o.d2l_domega2), l);
         let mx = Ret::Matrix(o.d2l_domega_dgamma);
         self.method(s, "d2l_domega_dgamma", WG, mx, l);
         self.method(s, "energy", WG, Ret::Scalar(o.energy), l);
         self.method(s, "cyclic_momentum", WG, Ret::Scalar(o.cyclic_momentum), l);
+        if let Some(r) = rank_one {
+            self.method(s, "constant_inertia", "", Ret::SomeMatrix(r.constant), l);
+        }
         let terms = EquationTerms {
             inertia: o.d2l_domega2,
             right_side: eq.full,
             psi_dot: None,
+            rank_one: rank_one.map(|r| (r.weight, r.vector)),
         };
         self.equations_method(s, "full_equations", WG, "__FullEquations", terms, l);
         out
@@ -320,10 +341,10 @@ impl Emitter<'_> {
         terms: EquationTerms<Id>,
         inputs: Inputs,
     ) {
-        let with_psi_dot = terms.psi_dot.is_some();
-        let _ = writeln!(out, "#[inline]\nfn {name}(&self, {args}) -> {ret_ty} {{");
+        let shape = terms.shape();
+        let _ = writeln!(out, "#[inline]\nfn {name}(&self{args}) -> {ret_ty} {{");
         let outs = self.body(out, &terms.flatten(), inputs);
-        let t = EquationTerms::from_flat(outs, with_psi_dot);
+        let t = EquationTerms::from_flat(outs, shape);
         let _ = write!(out, "{ret_ty} {{\ninertia: ");
         construct(out, "__Matrix3", t.inertia.as_flattened());
         out.push_str(",\nright_side: ");
@@ -331,11 +352,27 @@ impl Emitter<'_> {
         if let Some(psi_dot) = t.psi_dot {
             let _ = write!(out, ",\npsi_dot: {psi_dot}");
         }
+        match t.rank_one {
+            Some((c, v)) => {
+                let _ = write!(
+                    out,
+                    ",\nrank_one: __MaybeRankOne::Some(__RankOneInertia {{\nweight: {c},\nvector: "
+                );
+                construct(out, "__Vector3", &v);
+                out.push_str(",\n})");
+            }
+            None => out.push_str(",\nrank_one: __MaybeRankOne::None"),
+        }
         out.push_str(",\n}\n}\n");
     }
 
     /// The methods of `impl Routhian`.
-    pub fn routhian_methods(&self, o: &Outputs, eq: &Equations) -> String {
+    pub fn routhian_methods(
+        &self,
+        o: &Outputs,
+        eq: &Equations,
+        rank_one: Option<&RankOne>,
+    ) -> String {
         let mut out = String::new();
         let r = Inputs::Routhian;
         let s = &mut out;
@@ -352,10 +389,7 @@ impl Emitter<'_> {
         self.method(s, "amended_potential", REST, ur, r);
 
         // bundle: every output from one straight-line body.
-        let _ = writeln!(
-            s,
-            "#[inline]\nfn bundle(&self, {ROUTH}) -> __RouthBundle {{"
-        );
+        let _ = writeln!(s, "#[inline]\nfn bundle(&self{ROUTH}) -> __RouthBundle {{");
         let outs = self.body(s, &o.bundle().flatten(), r);
         let b = Bundle::from_flat(outs);
         let _ = write!(
@@ -376,7 +410,7 @@ impl Emitter<'_> {
 
         let _ = writeln!(
             s,
-            "#[inline]\nfn gyroscopic_system(&self, {REST}) -> __GyroscopicSystem {{"
+            "#[inline]\nfn gyroscopic_system(&self{REST}) -> __GyroscopicSystem {{"
         );
         let outs = self.body(s, &o.gyroscopic().flatten(), r);
         let m = Gyroscopic::from_flat(outs);
@@ -392,6 +426,7 @@ impl Emitter<'_> {
             inertia: o.d2l_domega2,
             right_side: eq.reduced,
             psi_dot: Some(o.psi_dot),
+            rank_one: rank_one.map(|r| (r.weight, r.vector)),
         };
         self.equations_method(
             s,

@@ -99,8 +99,8 @@ impl<T> Gyroscopic<T> {
 }
 
 /// What `Lagrangian::full_equations` and `Routhian::reduced_equations` return: `J`, the right
-/// side of (8) or (13), and (for (13) only) `ψ̇`, in the order of `routh::FullEquations` and
-/// `routh::ReducedEquations`.
+/// side of (8) or (13), (for (13) only) `ψ̇`, and (for a model with `J = J₀ + c v vᵀ`) `c` and
+/// `v`, in the order of `routh::FullEquations` and `routh::ReducedEquations`.
 #[derive(Copy, Clone, PartialEq, Eq, Debug)]
 pub struct EquationTerms<T> {
     /// `J = ∂²L/∂ω²`, row-major.
@@ -109,26 +109,49 @@ pub struct EquationTerms<T> {
     pub right_side: [T; 3],
     /// `ψ̇` (38), for the reduced equations.
     pub psi_dot: Option<T>,
+    /// `(c, v)` of `J = J₀ + c v vᵀ` ([`crate::inertia`]).
+    pub rank_one: Option<(T, [T; 3])>,
+}
+
+/// Which optional parts an [`EquationTerms`] has, to read it back from its scalars.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub struct TermsShape {
+    pub psi_dot: bool,
+    pub rank_one: bool,
 }
 
 impl<T> EquationTerms<T> {
-    /// The scalars in layout order (`J` row-major, the right side, then `ψ̇` if present).
+    /// Which optional parts it has.
+    pub fn shape(&self) -> TermsShape {
+        TermsShape {
+            psi_dot: self.psi_dot.is_some(),
+            rank_one: self.rank_one.is_some(),
+        }
+    }
+
+    /// The scalars in layout order (`J` row-major, the right side, then `ψ̇`, `c` and `v` if
+    /// present).
     pub fn flatten(self) -> Vec<T> {
         let mut out: Vec<T> = self.inertia.into_iter().flatten().collect();
         out.extend(self.right_side);
         out.extend(self.psi_dot);
+        if let Some((c, v)) = self.rank_one {
+            out.push(c);
+            out.extend(v);
+        }
         out
     }
 
-    /// The inverse of [`EquationTerms::flatten`], with or without `ψ̇`.
+    /// The inverse of [`EquationTerms::flatten`], for the given shape.
     ///
     /// # Panics
-    /// If `flat` does not hold exactly 12 scalars (13 with `ψ̇`).
-    pub fn from_flat(flat: impl IntoIterator<Item = T>, with_psi_dot: bool) -> Self {
+    /// If `flat` does not hold exactly 12 scalars, plus 1 with `ψ̇` and 4 with `(c, v)`.
+    pub fn from_flat(flat: impl IntoIterator<Item = T>, shape: TermsShape) -> Self {
         read_exactly(flat, |it| EquationTerms {
             inertia: take33(it),
             right_side: take3(it),
-            psi_dot: with_psi_dot.then(|| take(it)),
+            psi_dot: shape.psi_dot.then(|| take(it)),
+            rank_one: shape.rank_one.then(|| (take(it), take3(it))),
         })
     }
 }
@@ -184,15 +207,22 @@ mod tests {
 
     #[test]
     fn equation_terms_round_trip_in_field_order() {
-        let full = EquationTerms::from_flat(0..12, false);
+        let shape = |psi_dot, rank_one| TermsShape { psi_dot, rank_one };
+        let full = EquationTerms::from_flat(0..12, shape(false, false));
         assert_eq!(
             (full.inertia[1][0], full.right_side, full.psi_dot),
             (3, [9, 10, 11], None)
         );
         assert_eq!(full.flatten(), (0..12).collect::<Vec<_>>());
-        let reduced = EquationTerms::from_flat(0..13, true);
+        let reduced = EquationTerms::from_flat(0..13, shape(true, false));
         assert_eq!(reduced.psi_dot, Some(12));
         assert_eq!(reduced.flatten(), (0..13).collect::<Vec<_>>());
+        let split = EquationTerms::from_flat(0..17, shape(true, true));
+        assert_eq!(split.rank_one, Some((13, [14, 15, 16])));
+        assert_eq!(split.shape(), shape(true, true));
+        assert_eq!(split.flatten(), (0..17).collect::<Vec<_>>());
+        let full_split = EquationTerms::from_flat(0..16, shape(false, true));
+        assert_eq!(full_split.rank_one, Some((12, [13, 14, 15])));
     }
 
     #[test]

@@ -14,6 +14,7 @@ pub mod check;
 pub mod ctxt;
 pub mod emit;
 pub mod equations;
+pub mod inertia;
 pub mod layout;
 pub mod lower;
 pub mod reduce;
@@ -52,6 +53,8 @@ pub struct Model {
     pub outputs: reduce::Outputs,
     /// The right sides of (8) and (13), for the vector fields.
     pub equations: equations::Equations,
+    /// `J = J₀ + c v vᵀ`, when the kinetic energy has that form.
+    pub rank_one: Option<inertia::RankOne>,
 }
 
 /// Parses, checks, lowers and reduces; all errors combined.
@@ -69,10 +72,12 @@ pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
     };
     let outputs = reduce::reduce(&mut lowered);
     let equations = equations::equations(&mut lowered.sym, &outputs);
+    let rank_one = inertia::rank_one(&mut lowered.sym, lowered.kinetic);
     Ok(Model {
         lowered,
         outputs,
         equations,
+        rank_one,
     })
 }
 
@@ -109,11 +114,16 @@ pub fn expand_with(
             )
         })
     };
-    let lag = lex(e.lagrangian_methods(&model.outputs, &model.equations))?;
-    let mut routh_text = e.routhian_methods(&model.outputs, &model.equations);
+    let split = model.rank_one.as_ref();
+    let lag_text = e.lagrangian_methods(&model.outputs, &model.equations, split);
+    let mut routh_text = e.routhian_methods(&model.outputs, &model.equations, split);
     emit::certification_tape(&mut routh_text, &model.lowered.sym, &model.outputs);
+    // Only the aliases the text uses are declared (an unused one would be dead code).
+    let used = |alias: &str| lag_text.contains(alias) || routh_text.contains(alias);
+    let used_aliases: Vec<_> = emit::ALIASES.iter().filter(|(a, _)| used(a)).collect();
+    let lag = lex(lag_text)?;
     let routh = lex(routh_text)?;
-    let aliases = emit::ALIASES.iter().map(|&(alias, item)| {
+    let aliases = used_aliases.into_iter().map(|&(alias, item)| {
         let generic = matches!(item, "Vector3" | "Matrix3");
         let (alias, item) = (
             Ident::new(alias, Span::call_site()),

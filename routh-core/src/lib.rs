@@ -34,8 +34,8 @@ pub use families::{
     EventKind, StabilityAtlas,
 };
 pub use model::{
-    DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, ReducedEquations, RouthBundle,
-    Routhian,
+    DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
+    RouthBundle, Routhian,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};

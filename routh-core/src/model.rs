@@ -27,6 +27,18 @@ pub trait Lagrangian {
     fn cyclic_momentum(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
         self.dl_domega(omega, gamma).dot(gamma)
     }
+    /// `J₀` when the kinetic matrix has the form `J(γ) = J₀ + c(γ) v(γ) v(γ)ᵀ` with `J₀`
+    /// constant (docs/method.md §2a): a body on a smooth plane, whose kinetic energy is
+    /// `½ωᵀIω` plus `½m ż²` of its centre's height. The equations then carry `c` and `v`
+    /// ([`FullEquations::rank_one`], [`ReducedEquations::rank_one`]), and the simulations solve
+    /// with `J` by Sherman–Morrison from one factorisation of `J₀`.
+    ///
+    /// `#[derive(Lagrangian)]` emits it when it finds the kinetic energy written as a sum of
+    /// terms free of γ and one square `f(γ)·w(ω, γ)²` with `w` linear in ω. The default, `None`,
+    /// is always correct: the solvers then factorise `J` itself.
+    fn constant_inertia(&self) -> Option<Matrix3<f64>> {
+        None
+    }
     /// The terms of the full equations (8) solved for ω̇ at one state (see [`FullEquations`]):
     /// what [`simulate_full`](crate::simulate_full) evaluates at every stage.
     ///
@@ -39,6 +51,7 @@ pub trait Lagrangian {
             right_side: self.dl_domega(omega, gamma).cross(omega)
                 + self.dl_dgamma(omega, gamma).cross(gamma)
                 - self.d2l_domega_dgamma(omega, gamma) * gamma_dot,
+            rank_one: None,
         }
     }
 }
@@ -51,6 +64,27 @@ pub struct FullEquations {
     pub inertia: Matrix3<f64>,
     /// The right side `∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`.
     pub right_side: Vector3<f64>,
+    /// `J − J₀ = c v vᵀ` when the model has a [`Lagrangian::constant_inertia`] `J₀`; `None`
+    /// otherwise (and always correct: the solvers then use `inertia`).
+    pub rank_one: Option<RankOneInertia>,
+}
+
+/// The part `c v vᵀ` of a kinetic matrix `J(γ) = J₀ + c(γ) v(γ) v(γ)ᵀ` at one state, `J₀` being
+/// the model's [`Lagrangian::constant_inertia`] (docs/method.md §2a). For a body on a smooth
+/// plane, `c = m` and `v = n × γ`, with `n` the gradient of the centre's height.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RankOneInertia {
+    /// `c(γ)`.
+    pub weight: f64,
+    /// `v(γ)`.
+    pub vector: Vector3<f64>,
+}
+
+impl RankOneInertia {
+    /// `J₀ + c v vᵀ`, the kinetic matrix it completes.
+    pub fn complete(&self, constant: &Matrix3<f64>) -> Matrix3<f64> {
+        constant + self.vector * self.vector.transpose() * self.weight
+    }
 }
 
 /// The reduced equations (13) at one state `(Ω, γ, p_ψ)` (docs/method.md §3, errata E4):
@@ -68,6 +102,8 @@ pub struct ReducedEquations {
     pub right_side: Vector3<f64>,
     /// `ψ̇ = −∂R/∂p_ψ` (15), (38).
     pub psi_dot: f64,
+    /// `J − J₀ = c v vᵀ`, as [`FullEquations::rank_one`].
+    pub rank_one: Option<RankOneInertia>,
 }
 
 /// Every output of the Routh function at one point `(Ω, γ, p_ψ)`, from one evaluation.
@@ -240,6 +276,7 @@ pub trait Routhian: Lagrangian {
                 + self.dr_dgamma(w, g, p).cross(gamma)
                 - self.d2r_domega_dgamma(w, g, p) * gamma_dot,
             psi_dot: -self.dr_dp(w, g, p),
+            rank_one: None,
         }
     }
     /// `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` as an expression tape that can be evaluated with

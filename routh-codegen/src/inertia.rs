@@ -1,0 +1,225 @@
+//! The kinetic matrix as a constant plus a rank-one part, `J(γ) = J₀ + c(γ) v(γ) v(γ)ᵀ`
+//! (docs/method.md §2a), found in the kinetic energy as written.
+//!
+//! A body on a smooth plane has `T = ½ωᵀIω + ½m ż²`, where the height's rate `ż = v(γ)·ω` is
+//! linear in ω: its kinetic matrix is `I + m v vᵀ`. Solving with it by Sherman–Morrison from one
+//! factorisation of `I` is what an expert writes by hand, and it takes one division per
+//! evaluation where a fresh factorisation of `J` takes three in a chain. The generated code
+//! hands the runtime `J₀` once (`Lagrangian::constant_inertia`) and `c`, `v` with every
+//! evaluation of the equations (`rank_one`).
+//!
+//! The form is read off the expression, exactly: `T` is split into terms through sums,
+//! negations and factors free of ω; every term must be free of γ (it goes to `J₀`), except
+//! squares `f·w²` of one expression `w` homogeneous linear in ω, whose factors `f` add up to
+//! `½c`. Anything else (two different squares, a γ-dependent quadratic form) leaves the model
+//! without the form, and the runtime factorises `J` as before.
+
+use crate::lower::Symbols;
+use crate::reduce::{M3, V3};
+use routh_symbolic::{degree, Degree, Graph, Id, Node, Var};
+
+/// `J = J₀ + c v vᵀ`, as nodes.
+pub struct RankOne {
+    /// `J₀`, free of ω and γ (parameters only).
+    pub constant: M3,
+    /// `c(γ)`.
+    pub weight: Id,
+    /// `v(γ) = ∂w/∂ω`.
+    pub vector: V3,
+}
+
+/// The split of the kinetic energy `kinetic` (homogeneous quadratic in ω, as the DSL checks),
+/// or `None` when it does not have the form (see the module documentation), or when its matrix
+/// is constant (no γ-dependent square: the runtime keeps one factorisation of `J` anyway).
+pub fn rank_one(sym: &mut Symbols, kinetic: Id) -> Option<RankOne> {
+    let (omega, gamma) = (sym.omega, sym.gamma);
+    let g = &mut sym.graph;
+    let on_omega = dependence(g, kinetic, &omega);
+    let on_gamma = dependence(g, kinetic, &gamma);
+    let mut constant_terms = Vec::new();
+    // The square `w` and the sum of its factors.
+    let mut square: Option<(Id, Id)> = None;
+    for (factor, term) in terms(g, kinetic, &on_omega)? {
+        // Factors are free of ω by construction.
+        if !on_gamma[term.index()] && !g.depends_on(factor, &gamma) {
+            constant_terms.push(g.mul(factor, term));
+            continue;
+        }
+        let w = squared(g, term)?;
+        if degree(g, w, &omega) != Degree::Homogeneous(1) {
+            return None;
+        }
+        square = match square {
+            None => Some((w, factor)),
+            Some((w0, f0)) if w0 == w => Some((w, g.add(f0, factor))),
+            Some(_) => return None,
+        };
+    }
+    let (w, factor) = square?;
+    let base = g.sum(constant_terms);
+    let gradient: V3 = omega.map(|x| g.diff(base, x));
+    let constant: M3 =
+        std::array::from_fn(|i| std::array::from_fn(|k| g.diff(gradient[i], omega[k])));
+    let vector: V3 = omega.map(|x| g.diff(w, x));
+    let free = |g: &Graph, id: Id| !g.depends_on(id, &omega) && !g.depends_on(id, &gamma);
+    if !constant.iter().flatten().all(|&x| free(g, x))
+        || vector.iter().any(|&x| g.depends_on(x, &omega))
+    {
+        return None;
+    }
+    let two = g.constant(2.0);
+    let weight = g.mul(two, factor);
+    Some(RankOne {
+        constant,
+        weight,
+        vector,
+    })
+}
+
+/// For every node up to `root`, whether it depends on any of `vars`.
+fn dependence(g: &Graph, root: Id, vars: &[Var]) -> Vec<bool> {
+    let mut dep = vec![false; root.index() + 1];
+    for i in 0..=root.index() {
+        dep[i] = match g.nodes()[i] {
+            Node::Var(v) => vars.contains(&v),
+            n => n.children().any(|c| dep[c.index()]),
+        };
+    }
+    dep
+}
+
+/// `root` as a sum `Σ fₖ·tₖ`, through sums, negations and products with a factor free of ω
+/// (`on_omega` tells, per node, which depend on ω); `None` if that takes too many terms.
+fn terms(g: &mut Graph, root: Id, on_omega: &[bool]) -> Option<Vec<(Id, Id)>> {
+    /// More terms than any body's kinetic energy has: the walk stops rather than expand a
+    /// product of sums term by term.
+    const MAX_TERMS: usize = 64;
+    let one = g.one();
+    let mut out = Vec::new();
+    let mut stack = vec![(one, root)];
+    while let Some((factor, id)) = stack.pop() {
+        if stack.len() + out.len() > MAX_TERMS {
+            return None;
+        }
+        match g.node(id) {
+            Node::Add(a, b) => stack.extend([(factor, a), (factor, b)]),
+            Node::Neg(a) => {
+                let minus = g.neg(factor);
+                stack.push((minus, a));
+            }
+            Node::Mul(a, b) if !on_omega[a.index()] => {
+                let f = g.mul(factor, a);
+                stack.push((f, b));
+            }
+            Node::Mul(a, b) if !on_omega[b.index()] => {
+                let f = g.mul(factor, b);
+                stack.push((f, a));
+            }
+            _ => out.push((factor, id)),
+        }
+    }
+    Some(out)
+}
+
+/// `w` when `term` is `w²`.
+fn squared(g: &Graph, term: Id) -> Option<Id> {
+    match g.node(term) {
+        Node::Powi(w, 2) => Some(w),
+        Node::Mul(a, b) if a == b => Some(a),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lower::Symbols;
+
+    /// `J₀ + c v vᵀ` equals the Hessian of the kinetic energy at random points, for a body on
+    /// a plane (the form) written several ways; other kinetic energies have no split.
+    #[test]
+    fn splits_exactly_the_bodies_on_a_plane() {
+        for kinetic in [
+            // The ellipsoid of paper Example 2, as the test models write it.
+            "0.5 * (omega.dot(diag(inertia) * omega) + mass * n.dot(gamma.cross(omega)).powi(2))",
+            // The square first, a negated factor, the constant part in two terms.
+            "mass * 0.5 * (n.dot(gamma.cross(omega)) * n.dot(gamma.cross(omega))) + 0.5 * inertia[0] * omega[0] * omega[0] + 0.5 * (inertia[1] * omega[1].powi(2) + inertia[2] * omega[2].powi(2))",
+        ] {
+            let (mut sym, t) = lowered(kinetic);
+            let split = rank_one(&mut sym, t).expect(kinetic);
+            check_split(&mut sym, t, &split);
+        }
+        for kinetic in [
+            // Constant J: nothing to gain.
+            "0.5 * omega.dot(diag(inertia) * omega)",
+            // A γ-dependent quadratic form that is not a square.
+            "0.5 * (omega.dot(diag(inertia) * omega) + mass * gamma[0] * omega[0] * omega[1])",
+            // Two different squares (rank two).
+            "0.5 * (omega.dot(diag(inertia) * omega) + mass * n.dot(gamma.cross(omega)).powi(2) + mass * gamma.dot(omega).powi(2))",
+        ] {
+            let (mut sym, t) = lowered(kinetic);
+            assert!(rank_one(&mut sym, t).is_none(), "{kinetic}");
+        }
+    }
+
+    /// The symbols and kinetic energy of an ellipsoid-like model with the given `kinetic`.
+    fn lowered(kinetic: &str) -> (Symbols, Id) {
+        let src = format!(
+            "#[derive(Lagrangian)]
+            #[lagrangian(
+                let d = diag(semi_axes.component_mul(semi_axes)),
+                let c3 = gamma.dot(d * gamma).sqrt() - offset.dot(gamma),
+                let n = grad(c3, gamma),
+                kinetic = {kinetic},
+                potential = mass * g * c3,
+            )]
+            struct Body {{ inertia: Vector3<f64>, semi_axes: Vector3<f64>, offset: Vector3<f64>, mass: f64, g: f64 }}"
+        );
+        let di: syn::DeriveInput = syn::parse_str(&src).expect("parses");
+        let m = crate::analyse(&di).expect("a valid model");
+        (m.lowered.sym, m.lowered.kinetic)
+    }
+
+    /// Evaluates `J₀ + c v vᵀ` and the Hessian of `t` (by the graph's own `diff`, a path the
+    /// split does not take: the Hessian of the whole, not of its parts) at random inputs.
+    fn check_split(sym: &mut Symbols, t: Id, split: &RankOne) {
+        let omega = sym.omega;
+        let g = &mut sym.graph;
+        let hessian: Vec<Id> = (0..3)
+            .flat_map(|i| (0..3).map(move |k| (i, k)))
+            .map(|(i, k)| {
+                let d = g.diff(t, omega[i]);
+                g.diff(d, omega[k])
+            })
+            .collect();
+        let mut roots = hessian.clone();
+        roots.extend(split.constant.iter().flatten());
+        roots.push(split.weight);
+        roots.extend(split.vector);
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..20 {
+            let inputs: Vec<f64> = (0..g.num_vars())
+                .map(|_| {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    0.5 + (state >> 11) as f64 / (1u64 << 53) as f64
+                })
+                .collect();
+            let vals = g.eval(&roots, &inputs);
+            let (h, rest) = vals.split_at(9);
+            let (j0, rest) = rest.split_at(9);
+            let (c, v) = (rest[0], &rest[1..4]);
+            for i in 0..3 {
+                for k in 0..3 {
+                    let want = h[3 * i + k];
+                    let got = j0[3 * i + k] + c * v[i] * v[k];
+                    assert!(
+                        (got - want).abs() <= 1e-13 * (1.0 + want.abs()),
+                        "J[{i}][{k}]: {got} vs {want}"
+                    );
+                }
+            }
+        }
+    }
+}
