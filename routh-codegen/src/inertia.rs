@@ -36,27 +36,28 @@ pub fn rank_one(sym: &mut Symbols, kinetic: Id) -> Option<RankOne> {
     let g = &mut sym.graph;
     let on_omega = dependence(g, kinetic, &omega);
     let on_gamma = dependence(g, kinetic, &gamma);
+    // Read first, without adding a node to the graph: a model without the form leaves the
+    // graph (and so its generated code) exactly as it was.
     let mut constant_terms = Vec::new();
-    // The square `w` and the sum of its factors.
-    let mut square: Option<(Id, Id)> = None;
-    for (factor, term) in terms(g, kinetic, &on_omega)? {
-        // Factors are free of ω by construction.
-        if !on_gamma[term.index()] && !g.depends_on(factor, &gamma) {
-            constant_terms.push(g.mul(factor, term));
+    let mut square: Option<Id> = None;
+    let mut square_factors = Vec::new();
+    for term in terms(g, kinetic, &on_omega)? {
+        if !on_gamma[term.node.index()] && !term.factors.iter().any(|f| on_gamma[f.index()]) {
+            constant_terms.push(term);
             continue;
         }
-        let w = squared(g, term)?;
-        if degree(g, w, &omega) != Degree::Homogeneous(1) {
+        let w = squared(g, term.node)?;
+        if square.is_some_and(|w0| w0 != w) || degree(g, w, &omega) != Degree::Homogeneous(1) {
             return None;
         }
-        square = match square {
-            None => Some((w, factor)),
-            Some((w0, f0)) if w0 == w => Some((w, g.add(f0, factor))),
-            Some(_) => return None,
-        };
+        square = Some(w);
+        square_factors.push(term);
     }
-    let (w, factor) = square?;
+    let w = square?;
+    let constant_terms: Vec<Id> = constant_terms.iter().map(|t| t.build(g)).collect();
     let base = g.sum(constant_terms);
+    let factors: Vec<Id> = square_factors.iter().map(|t| t.factor(g)).collect();
+    let factor = g.sum(factors);
     let gradient: V3 = omega.map(|x| g.diff(base, x));
     let constant: M3 =
         std::array::from_fn(|i| std::array::from_fn(|k| g.diff(gradient[i], omega[k])));
@@ -76,6 +77,34 @@ pub fn rank_one(sym: &mut Symbols, kinetic: Id) -> Option<RankOne> {
     })
 }
 
+/// One term `±f₁·f₂·…·node` of the kinetic energy, the factors free of ω.
+struct Term {
+    negated: bool,
+    factors: Vec<Id>,
+    node: Id,
+}
+
+impl Term {
+    /// `±f₁·f₂·…` as a node.
+    fn factor(&self, g: &mut Graph) -> Id {
+        let mut f = g.one();
+        for &x in &self.factors {
+            f = g.mul(f, x);
+        }
+        if self.negated {
+            g.neg(f)
+        } else {
+            f
+        }
+    }
+
+    /// The whole term as a node.
+    fn build(&self, g: &mut Graph) -> Id {
+        let f = self.factor(g);
+        g.mul(f, self.node)
+    }
+}
+
 /// For every node up to `root`, whether it depends on any of `vars`.
 fn dependence(g: &Graph, root: Id, vars: &[Var]) -> Vec<bool> {
     let mut dep = vec![false; root.index() + 1];
@@ -88,34 +117,44 @@ fn dependence(g: &Graph, root: Id, vars: &[Var]) -> Vec<bool> {
     dep
 }
 
-/// `root` as a sum `Σ fₖ·tₖ`, through sums, negations and products with a factor free of ω
+/// `root` as a sum of [`Term`]s, through sums, negations and products with a factor free of ω
 /// (`on_omega` tells, per node, which depend on ω); `None` if that takes too many terms.
-fn terms(g: &mut Graph, root: Id, on_omega: &[bool]) -> Option<Vec<(Id, Id)>> {
+fn terms(g: &Graph, root: Id, on_omega: &[bool]) -> Option<Vec<Term>> {
     /// More terms than any body's kinetic energy has: the walk stops rather than expand a
     /// product of sums term by term.
     const MAX_TERMS: usize = 64;
-    let one = g.one();
     let mut out = Vec::new();
-    let mut stack = vec![(one, root)];
-    while let Some((factor, id)) = stack.pop() {
+    let mut stack = vec![Term {
+        negated: false,
+        factors: Vec::new(),
+        node: root,
+    }];
+    while let Some(mut t) = stack.pop() {
         if stack.len() + out.len() > MAX_TERMS {
             return None;
         }
-        match g.node(id) {
-            Node::Add(a, b) => stack.extend([(factor, a), (factor, b)]),
+        match g.node(t.node) {
+            Node::Add(a, b) => {
+                let other = Term {
+                    negated: t.negated,
+                    factors: t.factors.clone(),
+                    node: b,
+                };
+                t.node = a;
+                stack.extend([t, other]);
+            }
             Node::Neg(a) => {
-                let minus = g.neg(factor);
-                stack.push((minus, a));
+                t.negated = !t.negated;
+                t.node = a;
+                stack.push(t);
             }
-            Node::Mul(a, b) if !on_omega[a.index()] => {
-                let f = g.mul(factor, a);
-                stack.push((f, b));
+            Node::Mul(a, b) if !on_omega[a.index()] || !on_omega[b.index()] => {
+                let (f, rest) = if on_omega[a.index()] { (b, a) } else { (a, b) };
+                t.factors.push(f);
+                t.node = rest;
+                stack.push(t);
             }
-            Node::Mul(a, b) if !on_omega[b.index()] => {
-                let f = g.mul(factor, b);
-                stack.push((f, a));
-            }
-            _ => out.push((factor, id)),
+            _ => out.push(t),
         }
     }
     Some(out)

@@ -70,9 +70,10 @@ pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
             "the Lagrangian could not be lowered",
         ));
     };
+    // First, while the graph holds only the model (its walks are linear in the graph's size).
+    let rank_one = inertia::rank_one(&mut lowered.sym, lowered.kinetic);
     let outputs = reduce::reduce(&mut lowered);
     let equations = equations::equations(&mut lowered.sym, &outputs);
-    let rank_one = inertia::rank_one(&mut lowered.sym, lowered.kinetic);
     Ok(Model {
         lowered,
         outputs,
