@@ -21,7 +21,13 @@ pub fn full_vector_field<M: Lagrangian + ?Sized>(
     omega: &Vector3<f64>,
     gamma: &Vector3<f64>,
 ) -> Result<(Vector3<f64>, Vector3<f64>), RouthError> {
-    FullField::new(model).eval(omega, gamma)
+    // One evaluation: J itself, factorised once, is cheaper than preparing J₀ for
+    // Sherman–Morrison (a simulation prepares it once for all its stages).
+    FullField {
+        model,
+        inertia: InertiaSolver::with_constant(None),
+    }
+    .eval(omega, gamma)
 }
 
 /// The factorisation of the first `J(γ)` a vector field solved with, kept and reused while `J`
@@ -277,7 +283,13 @@ pub fn reduced_vector_field<M: Routhian + ?Sized>(
     gamma: &Vector3<f64>,
     p_psi: f64,
 ) -> Result<(Vector3<f64>, Vector3<f64>, f64), RouthError> {
-    ReducedField::new(model, p_psi).eval(big_omega, gamma)
+    // One evaluation: through J itself, as in `full_vector_field`.
+    ReducedField {
+        model,
+        p_psi,
+        inertia: InertiaSolver::with_constant(None),
+    }
+    .eval(big_omega, gamma)
 }
 
 /// [`reduced_vector_field`] on the level `p_ψ`, with an [`InertiaSolver`].
