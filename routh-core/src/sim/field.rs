@@ -460,8 +460,10 @@ impl Ldl {
         })
     }
 
-    /// `K⁻¹b`: the elimination scaled by `k₁₁` (see [`Ldl`]).
-    #[inline]
+    /// `K⁻¹b`: the elimination scaled by `k₁₁` (see [`Ldl`]). Always inlined: it is on the
+    /// critical path of every stage, and with three call sites (two in Sherman–Morrison)
+    /// LLVM otherwise keeps it out of line.
+    #[inline(always)]
     pub(super) fn solve(&self, b: &Vector3<f64>) -> Vector3<f64> {
         if let Some((r22, r33)) = self.diagonal {
             return Vector3::new(b.x * self.r1, b.y * r22, b.z * r33);
