@@ -201,6 +201,72 @@ mod tests {
         }
     }
 
+    /// Random kinetic energies built from terms free of γ, squares of one linear form
+    /// `w = n·(γ × ω)` with factors that may depend on γ, a second square and a γ-dependent
+    /// cross term, summed, scaled and negated in random nestings: the split is found exactly
+    /// when the terms that depend on γ are squares of one form, and whenever it is found,
+    /// `J₀ + c v vᵀ` is the Hessian.
+    #[test]
+    fn random_kinetic_energies() {
+        const FREE: [&str; 4] = [
+            "inertia[0] * omega[0] * omega[0]",
+            "mass * omega[1] * omega[2]",
+            "omega.dot(diag(inertia) * omega)",
+            "(omega[0] + 2.0 * omega[1]).powi(2)",
+        ];
+        const W_FACTORS: [&str; 4] = ["mass", "0.5 * mass", "gamma[2].powi(2)", "(-0.25)"];
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = |n: usize| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % n as u64) as usize
+        };
+        let mut found = 0;
+        for _ in 0..150 {
+            let mut terms: Vec<String> = (0..1 + next(3)).map(|_| FREE[next(4)].into()).collect();
+            let squares = next(3);
+            for _ in 0..squares {
+                let f = W_FACTORS[next(4)];
+                terms.push(format!("{f} * n.dot(gamma.cross(omega)).powi(2)"));
+            }
+            // 0: nothing else; 1: a second square; 2: a γ-dependent cross term.
+            let other = next(3);
+            match other {
+                1 => terms.push("mass * gamma.dot(omega).powi(2)".into()),
+                2 => terms.push("gamma[0] * omega[0] * omega[1]".into()),
+                _ => {}
+            }
+            // Random nesting: group neighbours, scale or negate the groups.
+            while terms.len() > 1 {
+                let i = next(terms.len() - 1);
+                let (a, b) = (terms.remove(i), terms.remove(i));
+                terms.insert(
+                    i,
+                    match next(3) {
+                        0 => format!("{a} + {b}"),
+                        1 => format!("0.5 * ({a} + {b})"),
+                        _ => format!("{a} - (-({b}))"),
+                    },
+                );
+            }
+            let kinetic = terms.pop().expect("one term");
+            let expected = match other {
+                0 => squares > 0,
+                1 => squares == 0,
+                _ => false,
+            };
+            let (mut sym, t) = lowered(&kinetic);
+            let split = rank_one(&mut sym, t);
+            assert_eq!(split.is_some(), expected, "{kinetic}");
+            if let Some(split) = split {
+                check_split(&mut sym, t, &split);
+                found += 1;
+            }
+        }
+        assert!(found > 30, "only {found} splits");
+    }
+
     /// The symbols and kinetic energy of an ellipsoid-like model with the given `kinetic`.
     fn lowered(kinetic: &str) -> (Symbols, Id) {
         let src = format!(
