@@ -162,8 +162,9 @@ impl InertiaSolver {
 /// The largest bound [`condition_bound`] of `J₀` for which [`InertiaSolver`] uses
 /// Sherman–Morrison. Its error, measured against Cholesky of the completed matrix, grows like
 /// the condition number of `J₀` (`sherman_morrison_matches_cholesky`: within 4× of Cholesky's
-/// for κ(J₀) < 2, 9× below 10, 70× near 100, 200× beyond); up to 16 it stays within the factor
-/// 20 that the LDLᵀ of `J` itself is held to. Solid bodies are well inside (a uniform ellipsoid
+/// for κ(J₀) < 2, 9× below 10, 70× near 100, 200× beyond, over 30 000 random cases); up to 16
+/// it stays within the factor 20 that the LDLᵀ of `J` itself is held to (10× at worst in the
+/// test's 5000 cases). Solid bodies are well inside (a uniform ellipsoid
 /// with semi-axes 0.8, 1.2, 2 has κ(I) = 2.6, a disc 2); a needle is not, and is solved through
 /// `J`.
 const MAX_BASE_CONDITION: f64 = 16.0;
@@ -539,6 +540,37 @@ mod tests {
         }
     }
 
+    /// A random rotation of `diag(1, κ^u, κ)` (u uniform in [0, 1]) times a scale `10^s`, s
+    /// uniform in `[−range, range]`; returns the matrix and the scale.
+    fn random_spd(rng: &mut ChaCha8Rng, cond: f64, range: f64) -> (Matrix3<f64>, f64) {
+        let axis = Vector3::new(rng.gen(), rng.gen(), rng.gen::<f64>()) - Vector3::repeat(0.5);
+        let rot = Rotation3::new(axis * 6.0);
+        let lam = Vector3::new(1.0, cond.powf(rng.gen()), cond);
+        let scale = 10f64.powf(rng.gen_range(-range..range));
+        let k = rot.matrix() * Matrix3::from_diagonal(&lam) * rot.matrix().transpose() * scale;
+        ((k + k.transpose()) * 0.5, scale)
+    }
+
+    /// `K x` with the rounding of each product compensated (two-product via `mul_add`, and a
+    /// compensated sum): the right side of which `x` is the exact solution, to working precision.
+    fn compensated_product(k: &Matrix3<f64>, x: &Vector3<f64>) -> Vector3<f64> {
+        Vector3::from_fn(|r, _| {
+            let (mut s, mut c) = (0.0f64, 0.0f64);
+            for j in 0..3 {
+                let p = k[(r, j)] * x[j];
+                let e = k[(r, j)].mul_add(x[j], -p);
+                let t = s + p;
+                c += if s.abs() >= p.abs() {
+                    (s - t) + p
+                } else {
+                    (p - t) + s
+                } + e;
+                s = t;
+            }
+            s + c
+        })
+    }
+
     /// On random rotated SPD matrices with condition numbers κ from 1 to 1e12, the error of the
     /// solution (against the exact x of `b = Kx` computed with compensated products) is within a
     /// small factor of Cholesky's (or of κε); the adjugate (nalgebra's 3×3 inverse) is not.
@@ -548,30 +580,10 @@ mod tests {
         let (mut worst, mut worst_adj): (f64, f64) = (0.0, 0.0);
         for i in 0..3000 {
             let cond = 10f64.powf(12.0 * (i % 100) as f64 / 99.0);
-            let axis = Vector3::new(rng.gen(), rng.gen(), rng.gen::<f64>()) - Vector3::repeat(0.5);
-            let rot = Rotation3::new(axis * 6.0);
-            let lam = Vector3::new(1.0, cond.powf(rng.gen()), cond);
-            let scale = 10f64.powf(rng.gen_range(-5.0..5.0));
-            let k = rot.matrix() * Matrix3::from_diagonal(&lam) * rot.matrix().transpose() * scale;
-            let k = (k + k.transpose()) * 0.5;
+            let (k, _) = random_spd(&mut rng, cond, 5.0);
             let x_true =
                 Vector3::new(rng.gen(), rng.gen(), rng.gen::<f64>()) - Vector3::repeat(0.5);
-            // b = K x with the rounding of each product compensated (two-product via mul_add).
-            let b = Vector3::from_fn(|r, _| {
-                let (mut s, mut c) = (0.0f64, 0.0f64);
-                for j in 0..3 {
-                    let p = k[(r, j)] * x_true[j];
-                    let e = k[(r, j)].mul_add(x_true[j], -p);
-                    let t = s + p;
-                    c += if s.abs() >= p.abs() {
-                        (s - t) + p
-                    } else {
-                        (p - t) + s
-                    } + e;
-                    s = t;
-                }
-                s + c
-            });
+            let b = compensated_product(&k, &x_true);
             let Some(ch) = k.cholesky() else { continue };
             let e_ch = (ch.solve(&b) - x_true).norm() / x_true.norm();
             let e_ldl = match Ldl::new(&k) {
@@ -635,33 +647,14 @@ mod tests {
         let mut worst: f64 = 0.0;
         for i in 0..5000 {
             let cond = MAX_BASE_CONDITION.powf((i % 50) as f64 / 49.0);
-            let axis = Vector3::from_fn(|_, _| rng.gen_range(-3.0..3.0));
-            let rot = *Rotation3::new(axis).matrix();
-            let lam = Vector3::new(1.0, cond.powf(rng.gen()), cond);
-            let scale = 10f64.powf(rng.gen_range(-3.0..3.0));
-            let j0 = rot * Matrix3::from_diagonal(&lam) * rot.transpose() * scale;
-            let j0 = (j0 + j0.transpose()) * 0.5;
+            let (j0, scale) = random_spd(&mut rng, cond, 3.0);
             let r = RankOneInertia {
                 weight: scale * 10f64.powf(rng.gen_range(-6.0..6.0)),
                 vector: Vector3::from_fn(|_, _| rng.gen_range(-1.0..1.0)),
             };
             let j = r.complete(&j0);
             let x_true = Vector3::from_fn(|_, _| rng.gen_range(-0.5..0.5));
-            let b = Vector3::from_fn(|row, _| {
-                let (mut s, mut c) = (0.0f64, 0.0f64);
-                for k in 0..3 {
-                    let p = j[(row, k)] * x_true[k];
-                    let e = j[(row, k)].mul_add(x_true[k], -p);
-                    let t = s + p;
-                    c += if s.abs() >= p.abs() {
-                        (s - t) + p
-                    } else {
-                        (p - t) + s
-                    } + e;
-                    s = t;
-                }
-                s + c
-            });
+            let b = compensated_product(&j, &x_true);
             let Some(ch) = j.cholesky() else { continue };
             let base = Ldl::new(&j0).expect("positive definite");
             let x = sherman_morrison(&base, &r, &b).expect("c ≥ 0");
