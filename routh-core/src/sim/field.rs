@@ -161,12 +161,12 @@ impl InertiaSolver {
 
 /// The largest bound [`condition_bound`] of `J₀` for which [`InertiaSolver`] uses
 /// Sherman–Morrison. Its error, measured against Cholesky of the completed matrix, grows like
-/// the condition number of `J₀` (`sherman_morrison_matches_cholesky`: within 4× of Cholesky's
-/// for κ(J₀) < 2, 9× below 10, 70× near 100, 200× beyond, over 30 000 random cases); up to 16
-/// it stays within the factor 20 that the LDLᵀ of `J` itself is held to (10× at worst in the
-/// test's 5000 cases). Solid bodies are well inside (a uniform ellipsoid
-/// with semi-axes 0.8, 1.2, 2 has κ(I) = 2.6, a disc 2); a needle is not, and is solved through
-/// `J`.
+/// the condition number of `J₀`: `sherman_morrison_matches_cholesky` widened to κ(J₀) up to
+/// 10⁸ and 30 000 cases gave within 4× of Cholesky's error for κ(J₀) < 2, 9× below 10, 70×
+/// near 100 and 200× beyond. Up to 16 it stays within the factor 20 that the LDLᵀ of `J` itself
+/// is held to (10× at worst in the test as it stands). Solid bodies are well inside (a uniform
+/// ellipsoid with semi-axes 0.8, 1.2, 2 has κ(I) = 2.6, a disc 2); a needle is not, and is
+/// solved through `J`.
 const MAX_BASE_CONDITION: f64 = 16.0;
 
 /// An upper bound of the condition number `λ_max/λ_min` of a symmetric positive definite 3×3
