@@ -28,7 +28,7 @@ pub fn derive(input: TokenStream) -> TokenStream {
     derive_with(input, &lex)
 }
 
-/// [`derive`], with `lex` turning the generated methods' source text into tokens (see
+/// [`derive()`], with `lex` turning the generated methods' source text into tokens (see
 /// [`expand_with`]).
 pub fn derive_with(input: TokenStream, lex: &dyn Fn(&str) -> Option<TokenStream>) -> TokenStream {
     let di: syn::DeriveInput = match syn::parse2(input) {

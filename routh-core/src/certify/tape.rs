@@ -126,8 +126,9 @@ enum Op {
 }
 
 /// `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` of a derived model, with the model's parameter values bound:
-/// what [`crate::Routhian::certification_tape`] returns and [`steady_motions_certified`]
-/// (super::steady_motions_certified) evaluates over boxes of the sphere.
+/// what [`crate::Routhian::certification_tape`] returns and
+/// [`steady_motions_certified`](super::steady_motions_certified) evaluates over boxes of the
+/// sphere.
 #[derive(Debug, Clone)]
 pub struct RouthTape {
     ops: Vec<Op>,

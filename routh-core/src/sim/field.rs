@@ -11,7 +11,9 @@ use crate::RouthError;
 /// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`, `γ̇ = γ × ω`, with `J = ∂²L/∂ω²`
 /// (docs/method.md §2), from [`Lagrangian::full_equations`]. Returns `(ω̇, γ̇)`. The system in
 /// `J` is solved by a square-root-free Cholesky factorisation (LDLᵀ of its lower triangle),
-/// falling back to Cholesky proper near singularity.
+/// falling back to Cholesky proper near singularity. (A simulation of a model with
+/// `J = J₀ + c v vᵀ`, [`Lagrangian::constant_inertia`], solves by Sherman–Morrison instead,
+/// docs/method.md §2a.)
 ///
 /// Errors: [`RouthError::KineticNotPositiveDefinite`] when the Cholesky factorisation of a
 /// finite `J(γ)` fails. Non-finite model outputs give non-finite rates (no error), so that an
@@ -203,8 +205,9 @@ fn sherman_morrison(base: &Ldl, r: &RankOneInertia, b: &Vector3<f64>) -> Option<
     Some(y - u * (c * v.dot(&y) / denominator))
 }
 
-/// [`full_vector_field`] with an [`InertiaSolver`]; the values are those of
-/// [`full_vector_field`] bit for bit.
+/// [`full_vector_field`] with an [`InertiaSolver`], for a simulation: the values are those of
+/// [`full_vector_field`] bit for bit, except for a model with `J = J₀ + c v vᵀ`, which is solved
+/// by Sherman–Morrison (as accurate, see [`MAX_BASE_CONDITION`]), and the same verdicts.
 pub(super) struct FullField<'a, M: ?Sized> {
     model: &'a M,
     inertia: InertiaSolver,
@@ -276,7 +279,7 @@ fn all_finite(v: &Vector3<f64>) -> bool {
 /// the right side `b` is orthogonal to γ (by `Mᵀγ = −∂R/∂Ω`, E6). Hence the gauge solution is
 /// `Ω̇ = y − (γ·y/|γ|²)γ` with `y = J⁻¹b`: the singular A is never factorised, and for a body
 /// whose J does not depend on γ (tops, gyrostats) the factorisation of J is made once per
-/// simulation ([`InertiaCache`]) and every evaluation is multiplications and one division,
+/// simulation (the inertia cache) and every evaluation is multiplications and one division,
 /// `1/|γ|²`, off the critical path. It is scale-free: J carries the units of A, and the
 /// projection none.
 ///
@@ -333,7 +336,9 @@ impl<'a, M: Routhian + ?Sized> ReducedField<'a, M> {
         // loads of what the generated code has just stored 8 bytes at a time, which the
         // processor cannot forward from its store buffer (9% of a simulation of the ellipsoid).
         let eq = self.model.reduced_equations(big_omega, gamma, self.p_psi);
-        let solved = (self.inertia).solve(&eq.inertia, eq.rank_one.as_ref(), &eq.right_side);
+        let solved = self
+            .inertia
+            .solve(&eq.inertia, eq.rank_one.as_ref(), &eq.right_side);
         let big_omega_dot = match solved {
             Some(y) => y - gamma * (gamma.dot(&y) * r_gamma),
             None => self.singular_inertia(big_omega, gamma, &eq.right_side)?,

@@ -364,8 +364,9 @@ fn too_large(what: &'static str, size: f64, equations: &str) -> RouthError {
 ///
 /// The state is `(ω, γ)`; ω̇ is solved from
 /// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)` with `J = ∂²L/∂ω²` by a square-root-free
-/// Cholesky factorisation (factorised once when `J` does not depend on γ), and
-/// `γ̇ = γ × ω` (see [`full_vector_field`]). Along the trajectory the energy (3), the cyclic
+/// Cholesky factorisation (factorised once when `J` does not depend on γ; when
+/// `J = J₀ + c(γ) v(γ) v(γ)ᵀ`, a body on a plane, `J₀` is factorised once and each solve is
+/// Sherman–Morrison, docs/method.md §2a), and `γ̇ = γ × ω` (see [`full_vector_field`]). Along the trajectory the energy (3), the cyclic
 /// momentum (9) and `|γ|²` are recorded; they are first integrals, so their drift measures the
 /// integration error.
 ///
