@@ -276,7 +276,8 @@ const ROUTH: &str = ", __big_omega: &__Vector3, __gamma: &__Vector3, __p_psi: __
 const REST: &str = ", __gamma: &__Vector3, __p_psi: __F64";
 
 impl Emitter<'_> {
-    /// Writes `#[inline] fn name(&self, args) -> ret_ty { ... }`.
+    /// Writes `#[inline] fn name(&self<args>) -> ret_ty { ... }`; `args` is empty or starts
+    /// with `, ` (as [`WG`], [`ROUTH`] and [`REST`] do).
     fn method(&self, out: &mut String, name: &str, args: &str, ret: Ret, inputs: Inputs) {
         let (ids, ret_ty) = match &ret {
             Ret::Scalar(s) => (vec![*s], "__F64"),
