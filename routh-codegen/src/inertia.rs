@@ -16,7 +16,7 @@
 
 use crate::lower::Symbols;
 use crate::reduce::{M3, V3};
-use routh_symbolic::{degree, Degree, Graph, Id, Node, Var};
+use routh_symbolic::{degree, Degree, Graph, Id, Node};
 
 /// `J = J₀ + c v vᵀ`, as nodes.
 pub struct RankOne {
@@ -34,8 +34,8 @@ pub struct RankOne {
 pub fn rank_one(sym: &mut Symbols, kinetic: Id) -> Option<RankOne> {
     let (omega, gamma) = (sym.omega, sym.gamma);
     let g = &mut sym.graph;
-    let on_omega = dependence(g, kinetic, &omega);
-    let on_gamma = dependence(g, kinetic, &gamma);
+    let on_omega = g.dependence(kinetic, &omega);
+    let on_gamma = g.dependence(kinetic, &gamma);
     // Read first, without adding a node to the graph: a model without the form leaves the
     // graph (and so its generated code) exactly as it was.
     let mut constant_terms = Vec::new();
@@ -62,9 +62,15 @@ pub fn rank_one(sym: &mut Symbols, kinetic: Id) -> Option<RankOne> {
     let constant: M3 =
         std::array::from_fn(|i| std::array::from_fn(|k| g.diff(gradient[i], omega[k])));
     let vector: V3 = omega.map(|x| g.diff(w, x));
-    let free = |g: &Graph, id: Id| !g.depends_on(id, &omega) && !g.depends_on(id, &gamma);
-    if !constant.iter().flatten().all(|&x| free(g, x))
-        || vector.iter().any(|&x| g.depends_on(x, &omega))
+    // J₀ must be free of ω and γ, v of ω: one walk per set of variables for all twelve.
+    let last = constant.iter().flatten().chain(&vector).copied().max()?;
+    let (on_omega, on_gamma) = (g.dependence(last, &omega), g.dependence(last, &gamma));
+    let depends = |dep: &[bool], id: Id| dep[id.index()];
+    if constant
+        .iter()
+        .flatten()
+        .any(|&x| depends(&on_omega, x) || depends(&on_gamma, x))
+        || vector.iter().any(|&x| depends(&on_omega, x))
     {
         return None;
     }
@@ -103,18 +109,6 @@ impl Term {
         let f = self.factor(g);
         g.mul(f, self.node)
     }
-}
-
-/// For every node up to `root`, whether it depends on any of `vars`.
-fn dependence(g: &Graph, root: Id, vars: &[Var]) -> Vec<bool> {
-    let mut dep = vec![false; root.index() + 1];
-    for i in 0..=root.index() {
-        dep[i] = match g.nodes()[i] {
-            Node::Var(v) => vars.contains(&v),
-            n => n.children().any(|c| dep[c.index()]),
-        };
-    }
-    dep
 }
 
 /// `root` as a sum of [`Term`]s, through sums, negations and products with a factor free of ω

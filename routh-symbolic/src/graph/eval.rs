@@ -6,6 +6,12 @@ use super::{Graph, Id, Node, Var};
 impl Graph {
     /// Whether `root` depends on any of `vars` (structurally: through any of its descendants).
     pub fn depends_on(&self, root: Id, vars: &[Var]) -> bool {
+        self.dependence(root, vars)[root.index()]
+    }
+
+    /// For every node up to `root` (by index), whether it depends on any of `vars`: one walk
+    /// that answers [`Graph::depends_on`] for all of them.
+    pub fn dependence(&self, root: Id, vars: &[Var]) -> Vec<bool> {
         let mut dep = vec![false; root.index() + 1];
         for i in 0..=root.index() {
             dep[i] = match self.nodes[i] {
@@ -13,7 +19,7 @@ impl Graph {
                 n => n.children().any(|c| dep[c.index()]),
             };
         }
-        dep[root.index()]
+        dep
     }
 
     /// Evaluates `roots` with variable `v` set to `inputs[v.index()]`.
