@@ -20,12 +20,12 @@ fn models() -> [(&'static str, Model); 3] {
     ]
 }
 
-fn analyse<M: Routhian>(model: &M, p: f64) -> usize {
+fn analyse<M: Routhian>(model: &M, p: f64) -> Vec<routh::StabilityReport> {
     let motions = steady_motions(model, p).expect("steady motions");
     motions
         .iter()
         .map(|s| classify(model, s).expect("classify"))
-        .count()
+        .collect()
 }
 
 fn bench_pair<D: Routhian>(c: &mut Criterion, name: &str, derived: &D, runtime: &Model, p: f64) {
