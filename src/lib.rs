@@ -51,6 +51,9 @@
 
 pub use routh_core::*;
 pub use routh_macros::Lagrangian;
+/// Models read at run time: the derive's language as text or TOML (`routh::Model`,
+/// docs/models.md).
+pub use routh_runtime::{Model, ModelError, Param};
 
 pub mod fluid;
 
@@ -81,12 +84,12 @@ pub mod plot;
 pub mod __private {
     pub use core::primitive::f64;
     pub use core::primitive::i32;
-    pub use routh_core::certify::RouthTape;
     pub use routh_core::nalgebra::{Matrix3, Vector3};
     pub use routh_core::{
         DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia,
         ReducedEquations, RouthBundle, Routhian,
     };
+    pub use routh_tape::{CertificationTape, Func, Op, Output, RouthianTape, Tape};
 
     /// What `Lagrangian::constant_inertia` returns.
     pub type MaybeMatrix3 = core::option::Option<Matrix3<f64>>;
@@ -94,15 +97,11 @@ pub mod __private {
     pub type MaybeRankOne = core::option::Option<RankOneInertia>;
 
     /// What `Routhian::certification_tape` returns.
-    pub type MaybeTape = core::option::Option<RouthTape>;
+    pub type MaybeTape = core::option::Option<CertificationTape>;
+    /// What `Routhian::routh_tape` returns.
+    pub type MaybeRouthianTape = core::option::Option<RouthianTape>;
 
-    /// `sign(x)` with `sign(0) = 0`: the derivative of `abs`.
-    #[inline]
-    pub fn sign(x: f64) -> f64 {
-        if x == 0.0 {
-            0.0
-        } else {
-            x.signum()
-        }
-    }
+    /// `sign(x)` with `sign(0) = 0`: the derivative of `abs` (the one definition, in
+    /// `routh-tape`).
+    pub use routh_tape::sign;
 }

@@ -28,8 +28,13 @@ const _: () = {
     type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
     type __FullEquations = ::routh::__private::FullEquations;
     type __ReducedEquations = ::routh::__private::ReducedEquations;
-    type __RouthTape = ::routh::__private::RouthTape;
+    type __Op = ::routh::__private::Op;
+    type __Output = ::routh::__private::Output;
+    type __Tape = ::routh::__private::Tape;
+    type __CertificationTape = ::routh::__private::CertificationTape;
+    type __RouthianTape = ::routh::__private::RouthianTape;
     type __MaybeTape = ::routh::__private::MaybeTape;
+    type __MaybeRouthianTape = ::routh::__private::MaybeRouthianTape;
     type __MaybeRankOne = ::routh::__private::MaybeRankOne;
     #[automatically_derived]
     impl ::routh::__private::Lagrangian for LagrangeTop {
@@ -1100,10 +1105,168 @@ const _: () = {
         }
         #[inline]
         fn certification_tape(&self) -> __MaybeTape {
-            __RouthTape::parse(
-                "g 0;g 1;g 2;p;f 0;f 1;f 2;- 6;^ 0 2;^ 1 2;+ 8 9;* 4 10;* 2 5;* 2 12;+ 11 13;/ 14;* 0 4;* 1 4;* 3 15;* 16 18;* 17 18;* 12 18;* 18 19;* 18 20;* 18 21;+ 7 24;* 15 19;* 15 20;* 15 21;* 4 18;* 5 18;* 18 29;* 19 26;c c010000000000000;* 33 32;+ 31 34;* 20 26;* 33 36;* 21 26;* 33 38;* 20 27;* 33 40;+ 31 41;* 21 27;* 33 43;* 18 30;* 21 28;* 33 46;+ 45 47;o 22 23 25 35 37 39 42 44 48",
-                &[self.a1, self.c, self.mgl],
-            )
+            static __CERTIFICATION_OPS: [__Op; 49] = [
+                __Op::Gamma(0),
+                __Op::Gamma(1),
+                __Op::Gamma(2),
+                __Op::PPsi,
+                __Op::Param(0),
+                __Op::Param(1),
+                __Op::Param(2),
+                __Op::Neg(6),
+                __Op::Powi(0, 2),
+                __Op::Powi(1, 2),
+                __Op::Add(8, 9),
+                __Op::Mul(4, 10),
+                __Op::Mul(2, 5),
+                __Op::Mul(2, 12),
+                __Op::Add(11, 13),
+                __Op::Recip(14),
+                __Op::Mul(0, 4),
+                __Op::Mul(1, 4),
+                __Op::Mul(3, 15),
+                __Op::Mul(16, 18),
+                __Op::Mul(17, 18),
+                __Op::Mul(12, 18),
+                __Op::Mul(18, 19),
+                __Op::Mul(18, 20),
+                __Op::Mul(18, 21),
+                __Op::Add(7, 24),
+                __Op::Mul(15, 19),
+                __Op::Mul(15, 20),
+                __Op::Mul(15, 21),
+                __Op::Mul(4, 18),
+                __Op::Mul(5, 18),
+                __Op::Mul(18, 29),
+                __Op::Mul(19, 26),
+                __Op::Const(0xc010000000000000),
+                __Op::Mul(33, 32),
+                __Op::Add(31, 34),
+                __Op::Mul(20, 26),
+                __Op::Mul(33, 36),
+                __Op::Mul(21, 26),
+                __Op::Mul(33, 38),
+                __Op::Mul(20, 27),
+                __Op::Mul(33, 40),
+                __Op::Add(31, 41),
+                __Op::Mul(21, 27),
+                __Op::Mul(33, 43),
+                __Op::Mul(18, 30),
+                __Op::Mul(21, 28),
+                __Op::Mul(33, 46),
+                __Op::Add(45, 47),
+            ];
+            static __CERTIFICATION_OUT: [__Output; 9] = [
+                __Output {
+                    name: "dr_dgamma[0]",
+                    slot: 22,
+                },
+                __Output {
+                    name: "dr_dgamma[1]",
+                    slot: 23,
+                },
+                __Output {
+                    name: "dr_dgamma[2]",
+                    slot: 25,
+                },
+                __Output {
+                    name: "d2r_dgamma2[0][0]",
+                    slot: 35,
+                },
+                __Output {
+                    name: "d2r_dgamma2[0][1]",
+                    slot: 37,
+                },
+                __Output {
+                    name: "d2r_dgamma2[0][2]",
+                    slot: 39,
+                },
+                __Output {
+                    name: "d2r_dgamma2[1][1]",
+                    slot: 42,
+                },
+                __Output {
+                    name: "d2r_dgamma2[1][2]",
+                    slot: 44,
+                },
+                __Output {
+                    name: "d2r_dgamma2[2][2]",
+                    slot: 48,
+                },
+            ];
+            static __CERTIFICATION: __Tape = __Tape::from_static(
+                &__CERTIFICATION_OPS,
+                &__CERTIFICATION_OUT,
+                3,
+            );
+            __CertificationTape::new(
+                    __Tape::clone(&__CERTIFICATION),
+                    <[__F64]>::to_vec(&[self.a1, self.c, self.mgl]),
+                )
+                .ok()
+        }
+        #[inline]
+        fn routh_tape(&self) -> __MaybeRouthianTape {
+            static __ROUTHIAN_OPS: [__Op; 42] = [
+                __Op::Omega(0),
+                __Op::Omega(1),
+                __Op::Omega(2),
+                __Op::Gamma(0),
+                __Op::Gamma(1),
+                __Op::Gamma(2),
+                __Op::PPsi,
+                __Op::Param(0),
+                __Op::Param(1),
+                __Op::Param(2),
+                __Op::Const(0x3fe0000000000000),
+                __Op::Mul(2, 8),
+                __Op::Mul(2, 11),
+                __Op::Mul(5, 9),
+                __Op::Neg(13),
+                __Op::Mul(0, 7),
+                __Op::Mul(1, 7),
+                __Op::Mul(0, 15),
+                __Op::Mul(1, 16),
+                __Op::Add(17, 18),
+                __Op::Add(12, 19),
+                __Op::Mul(3, 15),
+                __Op::Mul(4, 16),
+                __Op::Mul(5, 11),
+                __Op::Add(21, 22),
+                __Op::Add(23, 24),
+                __Op::Powi(3, 2),
+                __Op::Powi(4, 2),
+                __Op::Add(26, 27),
+                __Op::Mul(7, 28),
+                __Op::Mul(5, 8),
+                __Op::Mul(5, 30),
+                __Op::Add(29, 31),
+                __Op::Neg(25),
+                __Op::Add(6, 33),
+                __Op::Recip(32),
+                __Op::Mul(34, 35),
+                __Op::Mul(34, 36),
+                __Op::Neg(37),
+                __Op::Add(20, 38),
+                __Op::Mul(10, 39),
+                __Op::Add(14, 40),
+            ];
+            static __ROUTHIAN_OUT: [__Output; 1] = [
+                __Output {
+                    name: "routhian",
+                    slot: 41,
+                },
+            ];
+            static __ROUTHIAN: __Tape = __Tape::from_static(
+                &__ROUTHIAN_OPS,
+                &__ROUTHIAN_OUT,
+                3,
+            );
+            __RouthianTape::new(
+                    __Tape::clone(&__ROUTHIAN),
+                    <[__F64]>::to_vec(&[self.a1, self.c, self.mgl]),
+                )
+                .ok()
         }
     }
     #[automatically_derived]

@@ -25,7 +25,7 @@ use std::fmt::Write;
 
 /// The names the text uses for the types of `<crate>::__private`, declared as type aliases in
 /// the `const _` block around the impls: `(alias, item of __private)`.
-pub const ALIASES: [(&str, &str); 12] = [
+pub const ALIASES: [(&str, &str); 18] = [
     ("__F64", "f64"),
     ("__Vector3", "Vector3"),
     ("__Matrix3", "Matrix3"),
@@ -33,8 +33,14 @@ pub const ALIASES: [(&str, &str); 12] = [
     ("__GyroscopicSystem", "GyroscopicSystem"),
     ("__FullEquations", "FullEquations"),
     ("__ReducedEquations", "ReducedEquations"),
-    ("__RouthTape", "RouthTape"),
+    ("__Op", "Op"),
+    ("__Output", "Output"),
+    ("__Tape", "Tape"),
+    ("__Func", "Func"),
+    ("__CertificationTape", "CertificationTape"),
+    ("__RouthianTape", "RouthianTape"),
     ("__MaybeTape", "MaybeTape"),
+    ("__MaybeRouthianTape", "MaybeRouthianTape"),
     ("__MaybeMatrix3", "MaybeMatrix3"),
     ("__RankOneInertia", "RankOneInertia"),
     ("__MaybeRankOne", "MaybeRankOne"),
@@ -441,14 +447,32 @@ impl Emitter<'_> {
     }
 }
 
-/// Writes `fn certification_tape`: the interval tape of `∂R/∂γ`, `∂²R/∂γ²` at `Ω = 0`
-/// ([`crate::tape`]) as one string literal, with the parameter values it reads from `self`.
-pub fn certification_tape(out: &mut String, sym: &Symbols, o: &Outputs) {
-    let (text, params) = crate::tape::tape(sym, &o.dr_dgamma_at_rest, &o.d2r_dgamma2_at_rest);
+/// The paths [`routh_tape::Tape::write_rust`] writes, all aliases of [`ALIASES`].
+const TAPE_PATHS: routh_tape::RustPaths<'static> = routh_tape::RustPaths {
+    op: "__Op",
+    output: "__Output",
+    tape: "__Tape",
+    func: "__Func",
+};
+
+/// Writes `fn certification_tape` (the interval tape of `∂R/∂γ`, `∂²R/∂γ²` at `Ω = 0`) and
+/// `fn routh_tape` (the tape of `R(Ω, γ, p_ψ)`), each as `static` typed ops
+/// ([`crate::tape`]) bound to the parameter values read from `self`.
+pub fn tapes(out: &mut String, sym: &Symbols, o: &Outputs) -> Result<(), routh_tape::TapeError> {
+    let params = crate::tape::param_reads(sym).join(", ");
+    let cert = crate::tape::certification(sym, o)?;
+    out.push_str("#[inline]\nfn certification_tape(&self) -> __MaybeTape {\n");
+    cert.write_rust(out, "__CERTIFICATION", &TAPE_PATHS);
     let _ = writeln!(
         out,
-        "#[inline]\nfn certification_tape(&self) -> __MaybeTape {{\n\
-         __RouthTape::parse(\"{text}\", &[{}])\n}}",
-        params.join(", ")
+        "__CertificationTape::new(__Tape::clone(&__CERTIFICATION), <[__F64]>::to_vec(&[{params}])).ok()\n}}"
     );
+    let r = crate::tape::routhian(sym, o)?;
+    out.push_str("#[inline]\nfn routh_tape(&self) -> __MaybeRouthianTape {\n");
+    r.write_rust(out, "__ROUTHIAN", &TAPE_PATHS);
+    let _ = writeln!(
+        out,
+        "__RouthianTape::new(__Tape::clone(&__ROUTHIAN), <[__F64]>::to_vec(&[{params}])).ok()\n}}"
+    );
+    Ok(())
 }

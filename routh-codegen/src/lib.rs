@@ -118,7 +118,12 @@ pub fn expand_with(
     let split = model.rank_one.as_ref();
     let lag_text = e.lagrangian_methods(&model.outputs, &model.equations, split);
     let mut routh_text = e.routhian_methods(&model.outputs, &model.equations, split);
-    emit::certification_tape(&mut routh_text, &model.lowered.sym, &model.outputs);
+    emit::tapes(&mut routh_text, &model.lowered.sym, &model.outputs).map_err(|e| {
+        syn::Error::new_spanned(
+            &di.ident,
+            format!("internal error in #[derive(Lagrangian)]: invalid tape ({e})"),
+        )
+    })?;
     // Only the aliases the text uses are declared (an unused one would be dead code).
     let used = |alias: &str| lag_text.contains(alias) || routh_text.contains(alias);
     let used_aliases: Vec<_> = emit::ALIASES.iter().filter(|(a, _)| used(a)).collect();

@@ -7,7 +7,7 @@ use routh_symbolic::{shape, Func, Graph, Id, Value, Var};
 use std::collections::HashMap;
 
 /// How a scalar input slot is read from the model struct.
-#[derive(Clone, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Access {
     /// `self.field`
     Scalar,
@@ -444,7 +444,6 @@ impl Lowerer<'_> {
         let recv = self.expr(&m.receiver);
         let args: Vec<&syn::Expr> = m.args.iter().map(strip_ref).collect();
         let n = args.len();
-        let scalar_fn = |f: Func| move |g: &mut Graph, s: Id| g.func(f, s);
         let r = match name.as_str() {
             "dot" | "cross" | "component_mul" => {
                 self.arity(&m.method, &name, n, 1)?;
@@ -457,8 +456,7 @@ impl Lowerer<'_> {
                     _ => shape::component_mul(g, &recv, &a),
                 }
             }
-            "norm" | "norm_squared" | "transpose" | "trace" | "sqrt" | "sin" | "cos" | "tan"
-            | "exp" | "ln" | "recip" | "abs" => {
+            "norm" | "norm_squared" | "transpose" | "trace" | "recip" => {
                 self.arity(&m.method, &name, n, 0)?;
                 let recv = recv?;
                 let g = &mut self.g;
@@ -467,15 +465,16 @@ impl Lowerer<'_> {
                     "norm_squared" => shape::norm_squared(g, &recv),
                     "transpose" => shape::transpose(g, &recv),
                     "trace" => shape::trace(g, &recv),
-                    "sqrt" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Sqrt)),
-                    "sin" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Sin)),
-                    "cos" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Cos)),
-                    "tan" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Tan)),
-                    "exp" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Exp)),
-                    "ln" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Ln)),
-                    "abs" => shape::scalar_func(g, &name, &recv, scalar_fn(Func::Abs)),
                     _ => shape::scalar_func(g, &name, &recv, Graph::recip),
                 }
+            }
+            // The elementary functions: the one list is `routh_tape::Func`.
+            _ if Func::from_name(&name).is_some_and(Func::is_dsl_method) => {
+                self.arity(&m.method, &name, n, 0)?;
+                let recv = recv?;
+                let f = Func::from_name(&name)?;
+                let g = &mut self.g;
+                shape::scalar_func(g, &name, &recv, move |g: &mut Graph, s: Id| g.func(f, s))
             }
             "powi" => {
                 self.arity(&m.method, &name, n, 1)?;

@@ -1,106 +1,67 @@
-//! The certification tape: `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` as a flat list of operations, for
-//! the runtime's interval evaluation (`routh::certify`, docs/method.md §9).
+//! The model's tapes (`routh_tape::Tape`): the outputs of the expression DAG as typed
+//! straight-line programs, for what the derive emits as `static` data (the certification tape
+//! of `∂R/∂γ`, `∂²R/∂γ²` at `Ω = 0` and the tape of `R` itself) and for the runtime model, which
+//! evaluates one tape per generated method.
 //!
-//! The certified search needs enclosures of the gradient and Hessian in γ over boxes of the
-//! sphere. Generating a second, generic copy of the code would double what the derive emits; the
-//! tape is instead one string literal (one token, whatever the model's size) that the runtime
-//! parses once and interprets with intervals. It is the DAG itself, written children first, so
-//! the interval evaluation computes every shared subexpression once, like the f64 code.
-//!
-//! Format: operations separated by `;`, the `k`-th (from 0) defining slot `k`:
-//! - `g i` — γ_i; `p` — p_ψ; `f k` — the `k`-th parameter value passed with the tape;
-//! - `c HEX` — the constant with these IEEE 754 bits (exact, no decimal rounding);
-//! - `+ a b`, `* a b`, `- a` (negation), `/ a` (reciprocal), `^ a n` (integer power), `P a b`
-//!   (`a^b`), `F name a` (an elementary function by its `f64` method name, or `sign`);
-//!
-//! and a last item `o s₁ … s₉`: the slots of `∂R/∂γ` (3) and of the upper triangle of
-//! `∂²R/∂γ²` row by row (`00 01 02 11 12 22`).
+//! Inputs: `ω` (which stands for `Ω` in the Routh function's outputs) is [`Op::Omega`], `γ` is
+//! [`Op::Gamma`], `p_ψ` is [`Op::PPsi`], and the `k`-th scalar parameter of
+//! [`Symbols::params`] is `Op::Param(k)`: every tape of a model reads the same parameter list,
+//! in that order ([`param_reads`] writes how the derive reads it from `self`).
 
 use crate::lower::{Access, Symbols};
-use routh_symbolic::{Graph, Id, Node};
-use std::fmt::Write;
+use crate::reduce::Outputs;
+use routh_symbolic::{Id, Var};
+use routh_tape::{Op, Tape, TapeError, CERTIFICATION_OUTPUTS, ROUTHIAN_OUTPUT};
 
-/// The tape of `outputs` (gradient then upper Hessian), and the expressions reading the
-/// parameters it uses from `self`, in the order of its `f k` operations.
-pub fn tape(sym: &Symbols, gradient: &[Id; 3], hessian: &[[Id; 3]; 3]) -> (String, Vec<String>) {
-    let g: &Graph = &sym.graph;
-    let outputs: Vec<Id> = gradient
+/// The tape computing `outputs` (name, node) of the model's graph.
+pub fn tape(sym: &Symbols, outputs: &[(&'static str, Id)]) -> Result<Tape, TapeError> {
+    let input = |v: Var| -> Op {
+        let idx = |vars: &[Var; 3]| vars.iter().position(|&x| x == v);
+        if let Some(i) = idx(&sym.omega) {
+            Op::Omega(i as u8)
+        } else if let Some(i) = idx(&sym.gamma) {
+            Op::Gamma(i as u8)
+        } else if v == sym.p_psi {
+            Op::PPsi
+        } else if let Some(k) = sym.params.iter().position(|p| p.var == v) {
+            Op::Param(k as u32)
+        } else {
+            // Every variable is ω, γ, p_ψ or a parameter (as in the emitted code).
+            Op::constant(0.0)
+        }
+    };
+    sym.graph.to_tape(outputs, &input, sym.params.len() as u32)
+}
+
+/// The certification tape: `∂R/∂γ` then the upper triangle of `∂²R/∂γ²`, at `Ω = 0`, named as
+/// [`CERTIFICATION_OUTPUTS`].
+pub fn certification(sym: &Symbols, o: &Outputs) -> Result<Tape, TapeError> {
+    let g = &o.dr_dgamma_at_rest;
+    let h = &o.d2r_dgamma2_at_rest;
+    let ids = [
+        g[0], g[1], g[2], h[0][0], h[0][1], h[0][2], h[1][1], h[1][2], h[2][2],
+    ];
+    let outs: Vec<_> = CERTIFICATION_OUTPUTS.into_iter().zip(ids).collect();
+    tape(sym, &outs)
+}
+
+/// The tape of the Routh function `R(Ω, γ, p_ψ)` (14) itself, general in all its arguments,
+/// named [`ROUTHIAN_OUTPUT`].
+pub fn routhian(sym: &Symbols, o: &Outputs) -> Result<Tape, TapeError> {
+    tape(sym, &[(ROUTHIAN_OUTPUT, o.routhian)])
+}
+
+/// How the derive reads the parameters from `self`, in the order of `Op::Param(k)`.
+pub fn param_reads(sym: &Symbols) -> Vec<String> {
+    sym.params
         .iter()
-        .copied()
-        .chain(
-            (0..3)
-                .flat_map(|i| (i..3).map(move |j| (i, j)))
-                .map(|(i, j)| hessian[i][j]),
-        )
-        .collect();
-    let top = outputs.iter().map(|o| o.index()).max().unwrap_or(0);
-    // Nodes reachable from the outputs, in id order (children first).
-    let mut needed = vec![false; top + 1];
-    for o in &outputs {
-        needed[o.index()] = true;
-    }
-    for i in (0..=top).rev() {
-        if needed[i] {
-            for c in g.node(Id::from_index(i)).children() {
-                needed[c.index()] = true;
+        .map(|p| {
+            let f = &p.field;
+            match p.access {
+                Access::Scalar => format!("self.{f}"),
+                Access::Component(i) => format!("self.{f}[{i}usize]"),
+                Access::Entry(i, j) => format!("self.{f}[({i}usize, {j}usize)]"),
             }
-        }
-    }
-    let mut slot = vec![usize::MAX; top + 1];
-    let mut text = String::new();
-    let mut params = Vec::new();
-    for (next, i) in (0..=top).filter(|&i| needed[i]).enumerate() {
-        let s = |id: Id| slot[id.index()];
-        match g.node(Id::from_index(i)) {
-            Node::Const(bits) => {
-                let _ = write!(text, "c {bits:x}");
-            }
-            Node::Var(v) => {
-                if let Some(k) = sym.gamma.iter().position(|&x| x == v) {
-                    let _ = write!(text, "g {k}");
-                } else if v == sym.p_psi {
-                    text.push('p');
-                } else if let Some(p) = sym.params.iter().find(|p| p.var == v) {
-                    let f = &p.field;
-                    params.push(match p.access {
-                        Access::Scalar => format!("self.{f}"),
-                        Access::Component(i) => format!("self.{f}[{i}usize]"),
-                        Access::Entry(i, j) => format!("self.{f}[({i}usize, {j}usize)]"),
-                    });
-                    let _ = write!(text, "f {}", params.len() - 1);
-                } else {
-                    // ω (Ω) is 0 at rest; no other variable reaches these outputs.
-                    text.push_str("c 0");
-                }
-            }
-            Node::Add(a, b) => {
-                let _ = write!(text, "+ {} {}", s(a), s(b));
-            }
-            Node::Mul(a, b) => {
-                let _ = write!(text, "* {} {}", s(a), s(b));
-            }
-            Node::Neg(a) => {
-                let _ = write!(text, "- {}", s(a));
-            }
-            Node::Recip(a) => {
-                let _ = write!(text, "/ {}", s(a));
-            }
-            Node::Powi(a, n) => {
-                let _ = write!(text, "^ {} {n}", s(a));
-            }
-            Node::Powf(a, b) => {
-                let _ = write!(text, "P {} {}", s(a), s(b));
-            }
-            Node::Func(f, a) => {
-                let _ = write!(text, "F {} {}", f.name(), s(a));
-            }
-        }
-        text.push(';');
-        slot[i] = next;
-    }
-    text.push('o');
-    for o in &outputs {
-        let _ = write!(text, " {}", slot[o.index()]);
-    }
-    (text, params)
+        })
+        .collect()
 }

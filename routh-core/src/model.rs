@@ -283,7 +283,20 @@ pub trait Routhian: Lagrangian {
     /// intervals, for [`steady_motions_certified`](crate::certify::steady_motions_certified).
     /// `#[derive(Lagrangian)]` emits it; a hand-written model has none (`None`, the default)
     /// and cannot be certified.
-    fn certification_tape(&self) -> Option<crate::certify::RouthTape> {
+    fn certification_tape(&self) -> Option<routh_tape::CertificationTape> {
+        None
+    }
+    /// The Routh function `R(Ω, γ, p_ψ)` of (14) as a tape with the model's parameter values
+    /// bound, to be evaluated with any [`TapeScalar`](routh_tape::TapeScalar): for analyses
+    /// that need derivatives beyond the Hessian (evaluate it with a Taylor-jet scalar), or
+    /// enclosures of `R` (intervals).
+    ///
+    /// All of `Ω`, `γ` (an unconstrained vector of ℝ³, as when the derive differentiates) and
+    /// `p_ψ` are inputs; nothing in the tape assumes `Ω = 0` or `|γ| = 1`. Its `f64` value is the
+    /// generated [`Routhian::routhian`] up to rounding (the same expression DAG).
+    /// `#[derive(Lagrangian)]` and `routh::Model` provide it; a hand-written model has none
+    /// (`None`, the default).
+    fn routh_tape(&self) -> Option<routh_tape::RouthianTape> {
         None
     }
 }

@@ -354,14 +354,18 @@ pub(crate) fn fibonacci_sphere(n: usize) -> Vec<Vector3<f64>> {
         .collect()
 }
 
+/// The default number of starts of the search of steady motions (`SearchOptions::starts`),
+/// the size of the grid [`fibonacci_grid`] caches.
+pub(crate) const DEFAULT_STARTS: usize = 400;
+
 /// [`fibonacci_sphere`]`(n)`; the grids of the default search of steady motions and of its
 /// refinement (4 times finer) are computed once per process.
 pub(crate) fn fibonacci_grid(n: usize) -> Cow<'static, [Vector3<f64>]> {
     static DEFAULT: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
     static FINE: OnceLock<Vec<Vector3<f64>>> = OnceLock::new();
-    let cache = if n == crate::steady::DEFAULT_STARTS {
+    let cache = if n == DEFAULT_STARTS {
         &DEFAULT
-    } else if n == 4 * crate::steady::DEFAULT_STARTS {
+    } else if n == 4 * DEFAULT_STARTS {
         &FINE
     } else {
         return Cow::Owned(fibonacci_sphere(n));
@@ -386,7 +390,7 @@ mod tests {
 
     #[test]
     fn cached_grids_are_the_fibonacci_grids() {
-        let n = crate::steady::DEFAULT_STARTS;
+        let n = DEFAULT_STARTS;
         for m in [n, 4 * n, 7] {
             assert_eq!(*fibonacci_grid(m), *fibonacci_sphere(m));
         }

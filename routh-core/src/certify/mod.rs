@@ -32,7 +32,11 @@ mod interval;
 mod tape;
 
 pub use interval::{Interval, LIBM_ULPS};
-pub use tape::{Func, GradHess, RouthTape, TapeScalar};
+pub use routh_tape::{Func, GradHess, TapeScalar};
+
+/// `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` of a derived model, with the model's parameter values bound:
+/// what [`crate::Routhian::certification_tape`] returns (the typed tape of `routh-tape`).
+pub type RouthTape = routh_tape::CertificationTape;
 
 use crate::error::RouthError;
 use crate::model::Routhian;

@@ -83,8 +83,9 @@ impl SteadyMotion {
     }
 }
 
-/// The default number of starts of the search ([`SearchOptions::starts`]).
-pub(crate) const DEFAULT_STARTS: usize = 400;
+/// The default number of starts of the search ([`SearchOptions::starts`]); defined with the
+/// grids it sizes, below this module.
+pub(crate) use crate::sphere::DEFAULT_STARTS;
 
 /// Options of the global search of [`steady_motions_with`].
 #[derive(Debug, Clone, PartialEq)]

@@ -16,13 +16,15 @@
 //! - `rewrite`: the simplifying constructors and substitution;
 //! - `collect`: like-term collection in sums (a part of `add`);
 //! - `diff`: symbolic differentiation;
-//! - `eval`: numerical evaluation and dependence on variables.
+//! - `eval`: numerical evaluation and dependence on variables;
+//! - `tape`: the nodes reachable from some outputs as a typed `routh_tape::Tape`.
 
 mod collect;
 mod diff;
 mod eval;
 mod fx;
 mod rewrite;
+mod tape;
 
 use std::collections::HashMap;
 use std::fmt;
@@ -47,55 +49,8 @@ impl Id {
     }
 }
 
-/// Unary elementary functions.
-#[derive(Copy, Clone, PartialEq, Eq, Hash, Debug)]
-pub enum Func {
-    Sqrt,
-    Sin,
-    Cos,
-    Tan,
-    Exp,
-    Ln,
-    Abs,
-    /// The sign function (derivative of `abs`); `signum` with `sign(0) = 0`.
-    Sign,
-}
-
-impl Func {
-    /// The function applied to a number.
-    pub fn apply(self, x: f64) -> f64 {
-        match self {
-            Func::Sqrt => x.sqrt(),
-            Func::Sin => x.sin(),
-            Func::Cos => x.cos(),
-            Func::Tan => x.tan(),
-            Func::Exp => x.exp(),
-            Func::Ln => x.ln(),
-            Func::Abs => x.abs(),
-            Func::Sign => {
-                if x == 0.0 {
-                    0.0
-                } else {
-                    x.signum()
-                }
-            }
-        }
-    }
-
-    /// The method name in Rust's `f64` API (`sign` is emitted specially).
-    pub fn name(self) -> &'static str {
-        match self {
-            Func::Sqrt => "sqrt",
-            Func::Sin => "sin",
-            Func::Cos => "cos",
-            Func::Tan => "tan",
-            Func::Exp => "exp",
-            Func::Ln => "ln",
-            Func::Abs => "abs",
-            Func::Sign => "sign",
-        }
-    }
-}
+/// Unary elementary functions: the one definition, in `routh-tape`.
+pub use routh_tape::Func;
 
 /// An input variable of a [`Graph`] (its slot among the inputs of [`Graph::eval`] and of the
 /// generated code), made by [`Graph::new_var`] or [`Graph::var`].

@@ -1,0 +1,377 @@
+//! From a model's text to its tapes, through the derive's own code: a `syn::DeriveInput` is
+//! synthesised (a struct whose fields are the parameters, with their shapes, carrying the text
+//! as its `#[lagrangian(...)]` attribute, lexed by `proc_macro2` so that spans keep their line
+//! and column), and `routh_codegen::analyse` parses, checks, lowers and reduces it exactly as
+//! `#[derive(Lagrangian)]` does. Each generated method's outputs ([`routh_codegen::layout`])
+//! become one tape ([`routh_codegen::tape`]), its parameters left as `Op::Param` to be bound
+//! by [`crate::Model`].
+
+use crate::error::ModelError;
+use crate::Param;
+use proc_macro2::{Span, TokenStream};
+use quote::quote;
+use routh_codegen::layout::{Bundle, EquationTerms, Gyroscopic};
+use routh_codegen::lower::Access;
+use routh_symbolic::Id;
+use routh_tape::Tape;
+
+/// `["name[0]", "name[1]", "name[2]"]`.
+macro_rules! v3 {
+    ($n:literal) => {
+        [concat!($n, "[0]"), concat!($n, "[1]"), concat!($n, "[2]")]
+    };
+}
+
+/// The 3×3 entries `name[i][j]`, row-major.
+macro_rules! m33 {
+    ($n:literal) => {
+        [
+            [
+                concat!($n, "[0][0]"),
+                concat!($n, "[0][1]"),
+                concat!($n, "[0][2]"),
+            ],
+            [
+                concat!($n, "[1][0]"),
+                concat!($n, "[1][1]"),
+                concat!($n, "[1][2]"),
+            ],
+            [
+                concat!($n, "[2][0]"),
+                concat!($n, "[2][1]"),
+                concat!($n, "[2][2]"),
+            ],
+        ]
+    };
+}
+
+/// The tapes of one model, one per generated method (see `routh_codegen::emit`); the unbound
+/// form has `Op::Param(k)` for the `k`-th read of [`Compiled::reads`].
+#[derive(Clone, Debug)]
+pub(crate) struct Tapes<T> {
+    pub lagrangian: T,
+    pub dl_domega: T,
+    pub dl_dgamma: T,
+    pub d2l_domega2: T,
+    pub d2l_domega_dgamma: T,
+    pub energy: T,
+    pub cyclic_momentum: T,
+    pub full_equations: T,
+    pub psi_dot: T,
+    pub routhian: T,
+    pub dr_domega: T,
+    pub dr_dgamma: T,
+    pub dr_dp: T,
+    pub d2r_domega2: T,
+    pub d2r_domega_dgamma: T,
+    pub d2r_dgamma2: T,
+    pub amended_potential: T,
+    pub bundle: T,
+    pub gyroscopic_system: T,
+    pub reduced_equations: T,
+}
+
+impl<T> Tapes<T> {
+    /// Applies `f` to every tape, stopping at the first error.
+    pub fn try_map<U, E>(&self, mut f: impl FnMut(&T) -> Result<U, E>) -> Result<Tapes<U>, E> {
+        Ok(Tapes {
+            lagrangian: f(&self.lagrangian)?,
+            dl_domega: f(&self.dl_domega)?,
+            dl_dgamma: f(&self.dl_dgamma)?,
+            d2l_domega2: f(&self.d2l_domega2)?,
+            d2l_domega_dgamma: f(&self.d2l_domega_dgamma)?,
+            energy: f(&self.energy)?,
+            cyclic_momentum: f(&self.cyclic_momentum)?,
+            full_equations: f(&self.full_equations)?,
+            psi_dot: f(&self.psi_dot)?,
+            routhian: f(&self.routhian)?,
+            dr_domega: f(&self.dr_domega)?,
+            dr_dgamma: f(&self.dr_dgamma)?,
+            dr_dp: f(&self.dr_dp)?,
+            d2r_domega2: f(&self.d2r_domega2)?,
+            d2r_domega_dgamma: f(&self.d2r_domega_dgamma)?,
+            d2r_dgamma2: f(&self.d2r_dgamma2)?,
+            amended_potential: f(&self.amended_potential)?,
+            bundle: f(&self.bundle)?,
+            gyroscopic_system: f(&self.gyroscopic_system)?,
+            reduced_equations: f(&self.reduced_equations)?,
+        })
+    }
+}
+
+/// A model's text reduced to tapes.
+#[derive(Clone, Debug)]
+pub(crate) struct Compiled {
+    /// How `Op::Param(k)` is read: the parameter's name and which scalar of it.
+    pub reads: Vec<(String, Access)>,
+    pub tapes: Tapes<Tape>,
+    /// `J₀` of `J = J₀ + c v vᵀ` (a tape of parameters only), when the kinetic energy has that
+    /// form.
+    pub constant_inertia: Option<Tape>,
+    /// Whether the equations carry `(c, v)`.
+    pub rank_one: bool,
+    pub certification: Tape,
+    pub routh: Tape,
+    /// `L`, `U_r` and `ψ̇` at rest after simplification, as the derive's `DerivedFormulas`.
+    pub formulas: [String; 3],
+}
+
+/// The deepest nesting of brackets accepted: deeper texts are refused before they are lexed
+/// (the parsers recurse on nesting).
+const MAX_NESTING: usize = 64;
+
+/// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
+pub(crate) fn compile(
+    text: &str,
+    params: &[(String, Param)],
+    symmetric: &[String],
+) -> Result<Compiled, ModelError> {
+    check_nesting(text)?;
+    let body: TokenStream = text.parse().map_err(|e: proc_macro2::LexError| {
+        let s = e.span();
+        let (a, b) = (s.start(), s.end());
+        let width = if a.line == b.line {
+            b.column.saturating_sub(a.column)
+        } else {
+            1
+        };
+        ModelError::at(
+            format!("the text does not lex as Rust tokens: {e}"),
+            text,
+            a.line,
+            a.column + 1,
+            width,
+        )
+    })?;
+    let mut fields = Vec::new();
+    for (name, p) in params {
+        let ident: syn::Ident = syn::parse_str(name).map_err(|_| {
+            let (line, column) = first_use(text, name);
+            ModelError::at(
+                format!(
+                    "`{name}` is not a valid parameter name (a Rust identifier, not a keyword)"
+                ),
+                text,
+                line,
+                column,
+                name.chars().count(),
+            )
+        })?;
+        let ty = match p {
+            Param::Scalar(_) => quote!(f64),
+            Param::Vector(_) => quote!(Vector3<f64>),
+            Param::Matrix(_) => quote!(Matrix3<f64>),
+        };
+        let attr = symmetric
+            .contains(name)
+            .then(|| quote!(#[lagrangian(symmetric)]));
+        fields.push(quote!(#attr #ident: #ty));
+    }
+    for s in symmetric {
+        if !params.iter().any(|(n, _)| n == s) {
+            let (line, column) = first_use(text, s);
+            return Err(ModelError::at(
+                format!("`symmetric` names `{s}`, which is not a parameter of the model"),
+                text,
+                line,
+                column,
+                s.chars().count(),
+            ));
+        }
+    }
+    let tokens = quote! {
+        #[lagrangian(#body)]
+        struct RuntimeModel { #(#fields,)* }
+    };
+    let di: syn::DeriveInput = syn::parse2(tokens).map_err(|e| to_model_error(&e, text, params))?;
+    let model = routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))?;
+    build(&model).map_err(|e| {
+        ModelError::general(format!(
+            "internal error: the reduced model does not make a valid tape ({e})"
+        ))
+    })
+}
+
+/// Refuses texts nested deeper than [`MAX_NESTING`], at the first bracket too deep.
+fn check_nesting(text: &str) -> Result<(), ModelError> {
+    let mut depth = 0usize;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' | '{' => {
+                depth += 1;
+                if depth > MAX_NESTING {
+                    return Err(ModelError::at_byte(
+                        format!("brackets nested more than {MAX_NESTING} deep; split the expression with `let` items"),
+                        text,
+                        i,
+                        i + 1,
+                    ));
+                }
+            }
+            ')' | ']' | '}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// `(line, column)` of the first occurrence of `name` in `text` as a word, or `(1, 1)`.
+pub(crate) fn first_use(text: &str, name: &str) -> (usize, usize) {
+    let is_word = |c: char| c.is_alphanumeric() || c == '_';
+    let mut from = 0;
+    while let Some(k) = text.get(from..).and_then(|t| t.find(name)) {
+        let at = from + k;
+        let before = text[..at].chars().next_back();
+        let after = text[at + name.len()..].chars().next();
+        if !name.is_empty() && !before.is_some_and(is_word) && !after.is_some_and(is_word) {
+            return crate::error::line_column(text, at);
+        }
+        from = at + name.len().max(1);
+    }
+    (1, 1)
+}
+
+/// The derive's errors as a [`ModelError`] (the first, the others attached). An error whose
+/// span is not in the text (it is about the synthesised struct: a parameter) is placed at the
+/// first use of the parameter it names, or at the start of the text.
+fn to_model_error(err: &syn::Error, text: &str, params: &[(String, Param)]) -> ModelError {
+    let mut all = err.clone().into_iter().map(|e| one_error(&e, text, params));
+    let mut first = all
+        .next()
+        .unwrap_or_else(|| ModelError::general("the model could not be read"));
+    first.others = all.collect();
+    first
+}
+
+fn one_error(e: &syn::Error, text: &str, params: &[(String, Param)]) -> ModelError {
+    let message = e.to_string();
+    let span: Span = e.span();
+    let (a, b) = (span.start(), span.end());
+    let lines = text.lines().count().max(1);
+    if ((1..=lines).contains(&a.line) && (a.line, a.column) != (1, 0)) || from_text(text, a) {
+        let width = if a.line == b.line {
+            b.column.saturating_sub(a.column)
+        } else {
+            text.lines()
+                .nth(a.line - 1)
+                .map_or(1, |l| l.chars().count().saturating_sub(a.column))
+        };
+        return ModelError::at(message, text, a.line, a.column + 1, width);
+    }
+    // About a field of the synthesised struct: at the first use of a parameter it names.
+    for (name, _) in params {
+        if message.contains(&format!("`{name}`")) {
+            let (line, column) = first_use(text, name);
+            return ModelError::at(message, text, line, column, name.chars().count());
+        }
+    }
+    ModelError::at(message, text, 1, 1, 1)
+}
+
+/// Whether a position `(1, 0)` is really the start of the text (and not a span of the
+/// synthesised tokens, which `proc_macro2` places at `(1, 0)` too).
+fn from_text(text: &str, a: proc_macro2::LineColumn) -> bool {
+    a.line == 1 && a.column == 0 && !text.starts_with(char::is_whitespace) && !text.is_empty()
+}
+
+/// The tapes of every generated method of an analysed model.
+fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
+    use routh_codegen::tape::tape;
+    let sym = &m.lowered.sym;
+    let o = &m.outputs;
+    let eq = &m.equations;
+    let rank_one = m.rank_one.as_ref();
+    let one = |name: &'static str, id: Id| tape(sym, &[(name, id)]);
+    let three = |names: [&'static str; 3], ids: [Id; 3]| {
+        tape(sym, &names.into_iter().zip(ids).collect::<Vec<_>>())
+    };
+    let nine = |names: [[&'static str; 3]; 3], ids: [[Id; 3]; 3]| {
+        let outs: Vec<_> = names
+            .into_iter()
+            .flatten()
+            .zip(ids.into_iter().flatten())
+            .collect();
+        tape(sym, &outs)
+    };
+    let terms_names = |psi_dot: bool| EquationTerms {
+        inertia: m33!("inertia"),
+        right_side: v3!("right_side"),
+        psi_dot: psi_dot.then_some("psi_dot"),
+        rank_one: rank_one.map(|_| ("weight", v3!("vector"))),
+    };
+    let terms = |right_side, psi_dot: Option<Id>| EquationTerms {
+        inertia: o.d2l_domega2,
+        right_side,
+        psi_dot,
+        rank_one: rank_one.map(|r| (r.weight, r.vector)),
+    };
+    let zip = |names: Vec<&'static str>, ids: Vec<Id>| -> Vec<(&'static str, Id)> {
+        names.into_iter().zip(ids).collect()
+    };
+    let bundle_names = Bundle {
+        routhian: "routhian",
+        psi_dot: "psi_dot",
+        dr_domega: v3!("dr_domega"),
+        dr_dgamma: v3!("dr_dgamma"),
+        dr_dp: "dr_dp",
+        d2r_domega2: m33!("d2r_domega2"),
+        d2r_domega_dgamma: m33!("d2r_domega_dgamma"),
+        d2r_dgamma2: m33!("d2r_dgamma2"),
+    };
+    let gyro_names = Gyroscopic {
+        a: m33!("a"),
+        g: m33!("g"),
+        c: m33!("c"),
+    };
+    let tapes = Tapes {
+        lagrangian: one("lagrangian", o.lagrangian)?,
+        dl_domega: three(v3!("dl_domega"), o.dl_domega)?,
+        dl_dgamma: three(v3!("dl_dgamma"), o.dl_dgamma)?,
+        d2l_domega2: nine(m33!("d2l_domega2"), o.d2l_domega2)?,
+        d2l_domega_dgamma: nine(m33!("d2l_domega_dgamma"), o.d2l_domega_dgamma)?,
+        energy: one("energy", o.energy)?,
+        cyclic_momentum: one("cyclic_momentum", o.cyclic_momentum)?,
+        full_equations: tape(
+            sym,
+            &zip(terms_names(false).flatten(), terms(eq.full, None).flatten()),
+        )?,
+        psi_dot: one("psi_dot", o.psi_dot)?,
+        routhian: one("routhian", o.routhian)?,
+        dr_domega: three(v3!("dr_domega"), o.dr_domega)?,
+        dr_dgamma: three(v3!("dr_dgamma"), o.dr_dgamma)?,
+        dr_dp: one("dr_dp", o.dr_dp)?,
+        d2r_domega2: nine(m33!("d2r_domega2"), o.d2r_domega2)?,
+        d2r_domega_dgamma: nine(m33!("d2r_domega_dgamma"), o.d2r_domega_dgamma)?,
+        d2r_dgamma2: nine(m33!("d2r_dgamma2"), o.d2r_dgamma2)?,
+        amended_potential: one("amended_potential", o.amended_potential)?,
+        bundle: tape(sym, &zip(bundle_names.flatten(), o.bundle().flatten()))?,
+        gyroscopic_system: tape(sym, &zip(gyro_names.flatten(), o.gyroscopic().flatten()))?,
+        reduced_equations: tape(
+            sym,
+            &zip(
+                terms_names(true).flatten(),
+                terms(eq.reduced, Some(o.psi_dot)).flatten(),
+            ),
+        )?,
+    };
+    let constant_inertia = rank_one
+        .map(|r| nine(m33!("constant_inertia"), r.constant))
+        .transpose()?;
+    let reads = sym
+        .params
+        .iter()
+        .map(|p| (p.field.to_string(), p.access))
+        .collect();
+    let graph = &sym.graph;
+    let formulas = [o.lagrangian, o.amended_potential, o.psi_dot_at_rest]
+        .map(|id| routh_symbolic::to_infix(graph, id));
+    Ok(Compiled {
+        reads,
+        tapes,
+        constant_inertia,
+        rank_one: rank_one.is_some(),
+        certification: routh_codegen::tape::certification(sym, o)?,
+        routh: routh_codegen::tape::routhian(sym, o)?,
+        formulas,
+    })
+}

@@ -1,0 +1,454 @@
+//! [`Model`]: a model read at run time, and its implementations of the model traits.
+
+use crate::compile::{compile, Compiled, Tapes};
+use crate::error::ModelError;
+use crate::kernel::{interpret, Backend, Kernel, INPUTS};
+use crate::Param;
+use nalgebra::{Matrix3, Vector3};
+use routh_codegen::layout::{Bundle, EquationTerms, Gyroscopic, TermsShape};
+use routh_core::{
+    FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations, RouthBundle,
+    Routhian,
+};
+use routh_tape::{CertificationTape, RouthianTape, Tape};
+use std::collections::BTreeMap;
+use std::fmt;
+use std::sync::Arc;
+
+/// A rigid-body model written in the language of `#[derive(Lagrangian)]`, read at run time: the
+/// body of the derive's `#[lagrangian(...)]` attribute and the values of its parameters.
+///
+/// The text is parsed, checked, differentiated and reduced by the derive's own code (the same
+/// expression DAG, simplifications and error messages), and each method of [`Lagrangian`] and
+/// [`Routhian`] evaluates a tape of that DAG with the parameter values folded in, so every
+/// analysis takes a `Model` as it takes a derived struct.
+///
+/// ```
+/// use routh_runtime::Model;
+/// use routh_core::{steady_motions, Routhian, Vector3};
+///
+/// // The Lagrange top of examples/heavy_top.rs: A₁ = 1, C = 1.25, mgl = 1.
+/// let top = Model::new(
+///     "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+///     &[("inertia", [1.0, 1.0, 1.25].into()), ("mgl", 1.0.into())],
+/// )?;
+/// let gamma = Vector3::new(0.0, 0.0, 1.0);
+/// // The amended potential of the sleeping top: U_r = p²/(2C) + mgl.
+/// let p = 2.5;
+/// assert!((top.amended_potential(&gamma, p) - (p * p / 2.5 + 1.0)).abs() < 1e-14);
+/// let motions = steady_motions(&top, p)?;
+/// assert!(!motions.is_empty());
+/// // Parameters can be changed (the tapes are re-bound, not re-derived).
+/// let heavier = top.with("mgl", 2.0)?;
+/// assert!((heavier.amended_potential(&gamma, p) - (p * p / 2.5 + 2.0)).abs() < 1e-14);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone)]
+pub struct Model {
+    text: Arc<str>,
+    params: Vec<(String, Param)>,
+    symmetric: Vec<String>,
+    latex: BTreeMap<String, String>,
+    compiled: Arc<Compiled>,
+    backend: Backend,
+    bound: Arc<Bound>,
+}
+
+/// A model's tapes with its parameter values bound, ready to evaluate.
+struct Bound {
+    kernels: Tapes<Arc<dyn Kernel>>,
+    constant_inertia: Option<Matrix3<f64>>,
+    certification: Option<CertificationTape>,
+    routh: Option<RouthianTape>,
+}
+
+impl fmt::Debug for Model {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Model")
+            .field("lagrangian", &&*self.text)
+            .field("parameters", &self.params)
+            .field("symmetric", &self.symmetric)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Model {
+    /// A model of `lagrangian` (the body of a derive's `#[lagrangian(...)]`: `kinetic = ...`,
+    /// `linear = ...`, `potential = ...` and `let` items) with the named parameters, which the
+    /// text uses as a derived struct's fields. A parameter given and not used is allowed.
+    ///
+    /// Errors: every mistake the derive reports (an unknown name, a shape mismatch, a kinetic
+    /// energy that is not quadratic in ω, …) with its line and column in `lagrangian`; a
+    /// parameter given twice or with an invalid name.
+    pub fn new(lagrangian: &str, parameters: &[(&str, Param)]) -> Result<Model, ModelError> {
+        let params: Vec<(String, Param)> = parameters
+            .iter()
+            .map(|(n, p)| ((*n).to_string(), *p))
+            .collect();
+        Model::build(lagrangian, params, Vec::new(), BTreeMap::new())
+    }
+
+    /// [`Model::new`] with the matrices of `symmetric` read by their upper triangle only (the
+    /// derive's `#[lagrangian(symmetric)]`).
+    pub fn with_symmetric(
+        lagrangian: &str,
+        parameters: &[(&str, Param)],
+        symmetric: &[&str],
+    ) -> Result<Model, ModelError> {
+        let params = parameters
+            .iter()
+            .map(|(n, p)| ((*n).to_string(), *p))
+            .collect();
+        let symmetric = symmetric.iter().map(|s| (*s).to_string()).collect();
+        Model::build(lagrangian, params, symmetric, BTreeMap::new())
+    }
+
+    pub(crate) fn build(
+        text: &str,
+        params: Vec<(String, Param)>,
+        symmetric: Vec<String>,
+        latex: BTreeMap<String, String>,
+    ) -> Result<Model, ModelError> {
+        for (i, (name, _)) in params.iter().enumerate() {
+            if params[..i].iter().any(|(n, _)| n == name) {
+                let (line, column) = crate::compile::first_use(text, name);
+                return Err(ModelError::at(
+                    format!("parameter `{name}` is given twice"),
+                    text,
+                    line,
+                    column,
+                    name.chars().count(),
+                ));
+            }
+        }
+        let compiled = Arc::new(compile(text, &params, &symmetric)?);
+        let backend: Backend = interpret;
+        let bound = Arc::new(bind(&compiled, &params, backend)?);
+        Ok(Model {
+            text: text.into(),
+            params,
+            symmetric,
+            latex,
+            compiled,
+            backend,
+            bound,
+        })
+    }
+
+    /// Sets parameter `name` to `value` (of the shape it has) and re-binds the tapes: no
+    /// re-derivation, the reduced expressions do not depend on the values.
+    pub fn set(&mut self, name: &str, value: impl Into<Param>) -> Result<(), ModelError> {
+        let value = value.into();
+        let Some(slot) = self.params.iter_mut().find(|(n, _)| n == name) else {
+            let known: Vec<&str> = self.params.iter().map(|(n, _)| n.as_str()).collect();
+            return Err(ModelError::general(format!(
+                "unknown parameter `{name}` (the model's parameters: {})",
+                if known.is_empty() {
+                    "none".to_string()
+                } else {
+                    known.join(", ")
+                }
+            )));
+        };
+        if !slot.1.same_shape(&value) {
+            return Err(ModelError::general(format!(
+                "parameter `{name}` is a {}, not a {}",
+                slot.1.shape_name(),
+                value.shape_name()
+            )));
+        }
+        slot.1 = value;
+        self.bound = Arc::new(bind(&self.compiled, &self.params, self.backend)?);
+        Ok(())
+    }
+
+    /// A copy with parameter `name` set to `value` (see [`Model::set`]).
+    pub fn with(&self, name: &str, value: impl Into<Param>) -> Result<Model, ModelError> {
+        let mut m = self.clone();
+        m.set(name, value)?;
+        Ok(m)
+    }
+
+    /// The value of parameter `name`.
+    pub fn get(&self, name: &str) -> Option<Param> {
+        self.params.iter().find(|(n, _)| n == name).map(|(_, p)| *p)
+    }
+
+    /// The parameters, in the order given.
+    pub fn parameters(&self) -> &[(String, Param)] {
+        &self.params
+    }
+
+    /// The Lagrangian's text.
+    pub fn lagrangian_text(&self) -> &str {
+        &self.text
+    }
+
+    /// The matrices read by their upper triangle only.
+    pub fn symmetric(&self) -> &[String] {
+        &self.symmetric
+    }
+
+    /// The LaTeX symbols of the TOML file's optional `[latex]` table (name → symbol), for
+    /// reports.
+    pub fn latex_symbols(&self) -> &BTreeMap<String, String> {
+        &self.latex
+    }
+
+    /// `L`, the amended potential `U_r(γ, p_ψ)` (34) and `ψ̇` at rest (38) after simplification,
+    /// as text (the derive's `DerivedFormulas`).
+    pub fn formulas(&self) -> [&str; 3] {
+        let f = &self.compiled.formulas;
+        [&f[0], &f[1], &f[2]]
+    }
+
+    /// Replaces the evaluation of every tape by `backend` (e.g. a JIT compiler); the default is
+    /// the interpreter, [`crate::kernel::interpret`].
+    pub fn with_backend(&self, backend: Backend) -> Result<Model, ModelError> {
+        let mut m = self.clone();
+        m.backend = backend;
+        m.bound = Arc::new(bind(&m.compiled, &m.params, backend)?);
+        Ok(m)
+    }
+}
+
+/// The values of the tapes' parameters, `Op::Param(k)` being `reads[k]`.
+fn values(compiled: &Compiled, params: &[(String, Param)]) -> Result<Vec<f64>, ModelError> {
+    compiled
+        .reads
+        .iter()
+        .map(|(name, access)| {
+            params
+                .iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, p)| p.read(access))
+                .ok_or_else(|| ModelError::general(format!("parameter `{name}` has no value")))
+        })
+        .collect()
+}
+
+fn bind(
+    compiled: &Compiled,
+    params: &[(String, Param)],
+    backend: Backend,
+) -> Result<Bound, ModelError> {
+    let values = values(compiled, params)?;
+    let internal = |e: routh_tape::TapeError| ModelError::general(format!("internal error: {e}"));
+    let kernels = compiled
+        .tapes
+        .try_map(|t: &Tape| t.bind(&values).map(|b| backend(&b)))
+        .map_err(internal)?;
+    let constant_inertia = match &compiled.constant_inertia {
+        Some(t) => {
+            let mut out = [0.0; 9];
+            let zero = routh_tape::Inputs {
+                omega: [0.0; 3],
+                gamma: [0.0; 3],
+                p_psi: 0.0,
+            };
+            t.eval(&zero, &values, &mut Vec::new(), &mut out);
+            Some(Matrix3::from_row_slice(&out))
+        }
+        None => None,
+    };
+    Ok(Bound {
+        kernels,
+        constant_inertia,
+        certification: CertificationTape::new(compiled.certification.clone(), values.clone()).ok(),
+        routh: RouthianTape::new(compiled.routh.clone(), values).ok(),
+    })
+}
+
+fn inputs(w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> [f64; INPUTS] {
+    [w.x, w.y, w.z, g.x, g.y, g.z, p]
+}
+
+fn v3(o: &[f64]) -> Vector3<f64> {
+    Vector3::new(o[0], o[1], o[2])
+}
+
+fn m3(o: &[f64]) -> Matrix3<f64> {
+    Matrix3::from_row_slice(&o[..9])
+}
+
+impl Model {
+    fn k(&self) -> &Tapes<Arc<dyn Kernel>> {
+        &self.bound.kernels
+    }
+
+    fn eval<const N: usize>(&self, k: &Arc<dyn Kernel>, x: [f64; INPUTS]) -> [f64; N] {
+        let mut out = [0.0; N];
+        k.eval(&x, &mut out);
+        out
+    }
+
+    fn terms(&self, k: &Arc<dyn Kernel>, x: [f64; INPUTS], psi_dot: bool) -> EquationTerms<f64> {
+        let mut out = [0.0; 17];
+        k.eval(&x, &mut out);
+        let shape = TermsShape {
+            psi_dot,
+            rank_one: self.compiled.rank_one,
+        };
+        let n = 12 + usize::from(psi_dot) + 4 * usize::from(self.compiled.rank_one);
+        EquationTerms::from_flat(out[..n].iter().copied(), shape)
+    }
+}
+
+fn rank_one(r: Option<(f64, [f64; 3])>) -> Option<RankOneInertia> {
+    r.map(|(weight, v)| RankOneInertia {
+        weight,
+        vector: Vector3::from(v),
+    })
+}
+
+fn matrix(m: [[f64; 3]; 3]) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| m[i][j])
+}
+
+impl Lagrangian for Model {
+    fn lagrangian(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
+        self.eval::<1>(&self.k().lagrangian, inputs(omega, gamma, 0.0))[0]
+    }
+    fn dl_domega(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Vector3<f64> {
+        v3(&self.eval::<3>(&self.k().dl_domega, inputs(omega, gamma, 0.0)))
+    }
+    fn dl_dgamma(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Vector3<f64> {
+        v3(&self.eval::<3>(&self.k().dl_dgamma, inputs(omega, gamma, 0.0)))
+    }
+    fn d2l_domega2(&self, gamma: &Vector3<f64>) -> Matrix3<f64> {
+        let x = inputs(&Vector3::zeros(), gamma, 0.0);
+        m3(&self.eval::<9>(&self.k().d2l_domega2, x))
+    }
+    fn d2l_domega_dgamma(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Matrix3<f64> {
+        m3(&self.eval::<9>(&self.k().d2l_domega_dgamma, inputs(omega, gamma, 0.0)))
+    }
+    fn energy(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
+        self.eval::<1>(&self.k().energy, inputs(omega, gamma, 0.0))[0]
+    }
+    fn cyclic_momentum(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
+        self.eval::<1>(&self.k().cyclic_momentum, inputs(omega, gamma, 0.0))[0]
+    }
+    fn constant_inertia(&self) -> Option<Matrix3<f64>> {
+        self.bound.constant_inertia
+    }
+    fn full_equations(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> FullEquations {
+        let t = self.terms(&self.k().full_equations, inputs(omega, gamma, 0.0), false);
+        FullEquations {
+            inertia: matrix(t.inertia),
+            right_side: Vector3::from(t.right_side),
+            rank_one: rank_one(t.rank_one),
+        }
+    }
+}
+
+impl Routhian for Model {
+    fn psi_dot(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
+        self.eval::<1>(&self.k().psi_dot, inputs(big_omega, gamma, p_psi))[0]
+    }
+    fn routhian(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
+        self.eval::<1>(&self.k().routhian, inputs(big_omega, gamma, p_psi))[0]
+    }
+    fn dr_domega(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Vector3<f64> {
+        v3(&self.eval::<3>(&self.k().dr_domega, inputs(big_omega, gamma, p_psi)))
+    }
+    fn dr_dgamma(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Vector3<f64> {
+        v3(&self.eval::<3>(&self.k().dr_dgamma, inputs(big_omega, gamma, p_psi)))
+    }
+    fn dr_dp(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
+        self.eval::<1>(&self.k().dr_dp, inputs(big_omega, gamma, p_psi))[0]
+    }
+    fn d2r_domega2(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Matrix3<f64> {
+        m3(&self.eval::<9>(&self.k().d2r_domega2, inputs(big_omega, gamma, p_psi)))
+    }
+    fn d2r_domega_dgamma(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Matrix3<f64> {
+        m3(&self.eval::<9>(&self.k().d2r_domega_dgamma, inputs(big_omega, gamma, p_psi)))
+    }
+    fn d2r_dgamma2(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> Matrix3<f64> {
+        m3(&self.eval::<9>(&self.k().d2r_dgamma2, inputs(big_omega, gamma, p_psi)))
+    }
+    fn bundle(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> RouthBundle {
+        let o = self.eval::<36>(&self.k().bundle, inputs(big_omega, gamma, p_psi));
+        let b = Bundle::from_flat(o);
+        RouthBundle {
+            routhian: b.routhian,
+            psi_dot: b.psi_dot,
+            dr_domega: Vector3::from(b.dr_domega),
+            dr_dgamma: Vector3::from(b.dr_dgamma),
+            dr_dp: b.dr_dp,
+            d2r_domega2: matrix(b.d2r_domega2),
+            d2r_domega_dgamma: matrix(b.d2r_domega_dgamma),
+            d2r_dgamma2: matrix(b.d2r_dgamma2),
+        }
+    }
+    fn amended_potential(&self, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
+        let x = inputs(&Vector3::zeros(), gamma, p_psi);
+        self.eval::<1>(&self.k().amended_potential, x)[0]
+    }
+    fn gyroscopic_system(&self, gamma: &Vector3<f64>, p_psi: f64) -> GyroscopicSystem {
+        let x = inputs(&Vector3::zeros(), gamma, p_psi);
+        let s = Gyroscopic::from_flat(self.eval::<27>(&self.k().gyroscopic_system, x));
+        GyroscopicSystem {
+            a: matrix(s.a),
+            g: matrix(s.g),
+            c: matrix(s.c),
+        }
+    }
+    fn reduced_equations(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> ReducedEquations {
+        let x = inputs(big_omega, gamma, p_psi);
+        let t = self.terms(&self.k().reduced_equations, x, true);
+        ReducedEquations {
+            inertia: matrix(t.inertia),
+            right_side: Vector3::from(t.right_side),
+            psi_dot: t.psi_dot.unwrap_or(f64::NAN),
+            rank_one: rank_one(t.rank_one),
+        }
+    }
+    fn certification_tape(&self) -> Option<CertificationTape> {
+        self.bound.certification.clone()
+    }
+    fn routh_tape(&self) -> Option<RouthianTape> {
+        self.bound.routh.clone()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn assert_send_sync<T: Send + Sync + Clone + fmt::Debug>() {}
+
+    #[test]
+    fn model_is_send_sync_clone_debug() {
+        assert_send_sync::<Model>();
+    }
+}
