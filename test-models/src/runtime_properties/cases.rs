@@ -47,7 +47,7 @@ impl Model for Gyrostat {
     }
 }
 
-/// One case: one public function of routh-core (`pick`, drawn by [`run_one`]) on one random input
+/// One case: one public function of routh-core (`pick`, drawn with the case's model) on one random input
 /// drawn from `rng`, on `model`.
 pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick: u32) {
     match pick {

@@ -12,7 +12,7 @@
 //!   reports with finite eigenvalues and roots, diagrams).
 //!
 //! Models: the closed-form [`HeavyTop`](crate::HeavyTop) (fast, most calls), the num-dual
-//! [`Gyrostat`](crate::Gyrostat) and the same gyrostat declared with `#[derive(Lagrangian)]`
+//! [`Gyrostat`] and the same gyrostat declared with `#[derive(Lagrangian)]`
 //! (generated code; the only kind the certified search accepts), with parameters log-uniform over
 //! `1e−6…1e6` with random signs, now and then an indefinite, singular, non-symmetric or
 //! non-finite inertia. Every scalar input (γ, Ω, p_ψ, t_end, options) is replaced with
@@ -77,7 +77,7 @@ pub type DerivedCase<'a> = &'a dyn Fn(&mut Harness, &mut ChaCha8Rng, &Gyrostat, 
 /// Which cases a run executes, by the model each case draws.
 pub enum Part<'a> {
     /// The cases on the hand-written models ([`HeavyTop`](crate::HeavyTop),
-    /// [`Gyrostat`](crate::Gyrostat)) and the regression cases: routh-core's test.
+    /// [`Gyrostat`]) and the regression cases: routh-core's test.
     Hand,
     /// The cases on the derived gyrostat: the facade's test, which supplies the derived model.
     Derived(DerivedCase<'a>),
