@@ -1,8 +1,10 @@
-//! Prints the operation counts of the code `#[derive(Lagrangian)]` generates for the benchmark
-//! models M1 (gyrostat) and M2 (ellipsoid on a plane), method by method, and the time the code
-//! generator takes for each model.
+//! Operation counts of the code `#[derive(Lagrangian)]` generates for the bench models M1 and M2.
+//! Run: `cargo run --release --example op_counts`.
 //!
-//! `cargo run --release --example op_counts`
+//! Method by method, with the time the code generator takes for each model. A tool for the
+//! generator's developers, not a user's example: it calls the unpublished `routh-codegen` and
+//! `routh-symbolic` directly, and takes the models' source text from `derived-models` so that it
+//! counts exactly what `benches/bundle.rs` evaluates.
 
 use routh_symbolic::{op_counts, Id};
 use std::time::Instant;

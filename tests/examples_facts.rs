@@ -1,7 +1,8 @@
 //! The facts the paper's examples (`examples/heavy_top.rs`, `gyrostat.rs`,
 //! `ellipsoid_on_plane.rs`, `body_in_fluid.rs`) print, checked against closed forms derived by
-//! hand and against simulations. The models and analyses are the examples' own, shared through
-//! the `derived-models` crate.
+//! hand and against simulations, through the models and analyses of the `derived-models` crate:
+//! each example declares the same model in its own file (one file a user can copy), and
+//! `tests/examples_models.rs` checks that the two declarations are token for token the same.
 
 use derived_models::{
     bisect, classified_steady_motions, instability_threshold, report_at, stability_threshold,

@@ -1,15 +1,30 @@
 //! Code shared by the paper's examples (`heavy_top`, `gyrostat`, `ellipsoid_on_plane`,
-//! `body_in_fluid`): table formatting and figures. The models and the analyses the examples run
-//! are in the `derived-models` crate (`test-models/derived`), where `tests/examples_facts.rs`
-//! checks them too. Each example uses only part of this module, hence the `allow(dead_code)`.
+//! `body_in_fluid`): number and table formatting, figures, and one analysis (the `p_ψ` where a
+//! steady motion becomes stable). Each example declares its own body with
+//! `#[derive(Lagrangian)]`; `tests/examples_facts.rs` checks the facts they print. Each example
+//! uses only part of this module, hence the `allow(dead_code)`.
 #![allow(dead_code)]
 
 pub mod plot;
 
 use std::path::PathBuf;
 
-use derived_models::Classified;
-use routh::{Stability, Vector3};
+use routh::{Classified, RouthError, Routhian, Stability, Vector3};
+
+/// A number with at most `digits` decimals, trailing zeros removed (`0.5`, `9.81`, `-2`).
+pub fn num(x: f64, digits: usize) -> String {
+    let s = format!("{x:.digits$}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    };
+    if s == "-0" {
+        "0".into()
+    } else {
+        s
+    }
+}
 
 /// `n` equally spaced points from `a` to `b` inclusive.
 pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
@@ -117,4 +132,30 @@ pub fn print_steady_table(rows: &[Classified], axis: &Vector3<f64>, axis_name: &
             if r.motion.isolated { "" } else { " (one of a circle)" }
         );
     }
+}
+
+/// The `p_ψ` in `[lo, hi]` where the steady motion through the critical point `gamma` (at `lo`)
+/// stops being `Unstable`, by continuation of its branch over `p_ψ`
+/// ([`routh::continue_branch`]): the first event on the branch, within `1e−9` of `gamma`, whose
+/// verdict goes from `Unstable` to a stable one. Its location is solved from the event's defining
+/// equation (a zero eigenvalue of the restricted second variation, or a zero discriminant of
+/// `f₂`), not bisected.
+pub fn stability_threshold<M: Routhian + Clone>(
+    model: &M,
+    gamma: Vector3<f64>,
+    lo: f64,
+    hi: f64,
+) -> Result<Option<f64>, RouthError> {
+    let d = routh::continue_branch(
+        |p| (model.clone(), p),
+        gamma,
+        lo,
+        (lo, hi),
+        &routh::ContinuationOptions::default(),
+    )?;
+    Ok(d.events
+        .iter()
+        .filter(|e| (e.gamma - gamma).norm() < 1e-9)
+        .find(|e| e.before == Stability::Unstable && e.after != Stability::Unstable)
+        .map(|e| e.s))
 }

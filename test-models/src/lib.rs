@@ -22,6 +22,10 @@
 //! [`numdual_bundle`] evaluates every output of the Routh function with one num-dual Hessian over
 //! `(Ω, γ)` (plus a first-order dual in `p_ψ`): it is the "num-dual Hessians of the same R"
 //! baseline that the benches compare generated code against.
+//!
+//! [`runtime_properties`] is the runtime property test's harness (random and extreme inputs to
+//! every public function of routh-core): routh-core's test runs its cases on the models here, the
+//! facade's test its cases on the derived gyrostat.
 #![forbid(unsafe_code)]
 
 mod ellipsoid;
@@ -34,6 +38,7 @@ pub mod jacobian;
 mod numdual;
 mod random;
 pub mod roots;
+pub mod runtime_properties;
 pub mod vec3;
 
 pub use ellipsoid::Ellipsoid;

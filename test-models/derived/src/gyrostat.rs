@@ -46,6 +46,16 @@ impl From<&test_models::Gyrostat> for Gyrostat {
     }
 }
 
+/// The runtime property test's family over the weight: `g` scaled by `s`, as for the twin.
+impl test_models::runtime_properties::Model for Gyrostat {
+    fn scaled(&self, s: f64) -> Self {
+        Gyrostat {
+            g: self.g * s,
+            ..self.clone()
+        }
+    }
+}
+
 impl Gyrostat {
     /// A Kelvin gyrostat, `a = K`: an asymmetric heavy body (`I = diag(2, 2.5, 1.5)`, centre of
     /// mass on `e₃` at `l = 0.1`, `m = 1`, `g = 9.81`) carrying a rotor of momentum
