@@ -59,6 +59,7 @@ pub trait Lagrangian {
 /// The full equations (8) at one state `(ω, γ)`, solved for ω̇ (docs/method.md §2):
 /// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)` and `γ̇ = γ × ω`.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FullEquations {
     /// `J(γ) = ∂²L/∂ω²`, symmetric positive definite for a physical body.
     pub inertia: Matrix3<f64>,
@@ -73,6 +74,7 @@ pub struct FullEquations {
 /// the model's [`Lagrangian::constant_inertia`] (docs/method.md §2a). For a body on a smooth
 /// plane, `c = m` and `v = n × γ`, with `n` the gradient of the centre's height.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RankOneInertia {
     /// `c(γ)`.
     pub weight: f64,
@@ -95,6 +97,7 @@ impl RankOneInertia {
 /// and the solution with `Ω̇·γ = 0` (the gauge) is `J⁻¹b` projected on γ^⊥ (see
 /// [`reduced_vector_field`](crate::sim::reduced_vector_field)), so the equations carry `J`.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReducedEquations {
     /// `J(γ) = ∂²L/∂ω²`, symmetric positive definite for a physical body.
     pub inertia: Matrix3<f64>,
@@ -108,6 +111,7 @@ pub struct ReducedEquations {
 
 /// Every output of the Routh function at one point `(Ω, γ, p_ψ)`, from one evaluation.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RouthBundle {
     /// `R(Ω, γ, p_ψ)` of (14).
     pub routhian: f64,
@@ -133,6 +137,7 @@ pub struct RouthBundle {
 /// `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with `μ = (∂R/∂γ, γ)`. All three annihilate γ, so
 /// `det(Aλ² + 2Gλ + C) ≡ 0` (errata E5); the characteristic polynomial is the 2×2 one on γ^⊥.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GyroscopicSystem {
     /// Kinetic matrix `A = ∂²R/∂Ω²` at Ω = 0.
     pub a: Matrix3<f64>,

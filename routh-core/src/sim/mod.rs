@@ -36,6 +36,7 @@ use crate::{Lagrangian, RouthError, Routhian};
 
 /// The integration method.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Method {
     /// Dormand–Prince 8(5,3) with Hairer's step-size control, initial-step heuristic and
     /// 7th-order dense output. Uses [`SimOptions::rtol`], [`SimOptions::atol`],
@@ -53,6 +54,7 @@ pub enum Method {
 
 /// Which points the trajectory records.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Output {
     /// `t = 0` and the end of every accepted step (the last one is `t_end`).
     Steps,
@@ -84,6 +86,7 @@ pub enum Output {
 /// (the same Lagrangian in other units of energy) changes no state variable and needs no change
 /// of the options.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SimOptions {
     /// Relative tolerance of [`Method::Dop853`]. Must be finite and at least
     /// `10·ε ≈ 2.2e-15`. Default `1e-10`.
@@ -169,6 +172,7 @@ impl SimOptions {
 
 /// Work done by one simulation.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SimStats {
     /// Accepted steps.
     pub accepted_steps: usize,
@@ -182,6 +186,7 @@ pub struct SimStats {
 
 /// A solution of the full equations (8), from [`simulate_full`].
 #[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Trajectory {
     /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
     pub t: Vec<f64>,
@@ -206,6 +211,7 @@ pub struct Trajectory {
 /// A solution of the reduced equations (13) with the reconstruction (15), from
 /// [`simulate_reduced`].
 #[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReducedTrajectory {
     /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
     pub t: Vec<f64>,
