@@ -17,6 +17,7 @@ pub use nalgebra::{Complex, Matrix3, Vector3};
 
 pub mod certify;
 mod error;
+pub mod export;
 pub mod families;
 mod krein;
 mod model;
