@@ -19,6 +19,7 @@ pub mod certify;
 mod error;
 pub mod export;
 pub mod families;
+mod formulas;
 mod krein;
 mod model;
 pub mod sim;
@@ -34,6 +35,7 @@ pub use families::{
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions,
     EventKind, StabilityAtlas,
 };
+pub use formulas::LatexFormulas;
 pub use model::{
     DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
     RouthBundle, Routhian,

@@ -3,6 +3,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use crate::formulas::LatexFormulas;
+
 /// A Lagrangian `L(ω, γ) = ½ ωᵀJ(γ)ω + a(γ)·ω − U(γ)` of a rigid body with a symmetry about the
 /// vertical: ω is the body-frame angular velocity, γ the body-frame coordinates of the upward unit
 /// vertical. γ is treated as an unconstrained vector of ℝ³ when differentiating (paper (18)–(19)).
@@ -303,6 +305,34 @@ pub trait DerivedFormulas {
     const AMENDED_POTENTIAL: &'static str;
     /// `ψ̇(0, γ, p_ψ)` of (38): the rate of rotation about the vertical of a steady motion at γ.
     const PSI_DOT_AT_REST: &'static str;
+    /// [`LatexFormulas::lagrangian`] (emitted by the derive; empty by default).
+    const LATEX_LAGRANGIAN: &'static str = "";
+    /// [`LatexFormulas::psi_dot`].
+    const LATEX_PSI_DOT: &'static str = "";
+    /// [`LatexFormulas::routhian`].
+    const LATEX_ROUTHIAN: &'static str = "";
+    /// [`LatexFormulas::amended_potential`].
+    const LATEX_AMENDED_POTENTIAL: &'static str = "";
+    /// [`LatexFormulas::a`].
+    const LATEX_A: &'static str = "";
+    /// [`LatexFormulas::g`].
+    const LATEX_G: &'static str = "";
+    /// [`LatexFormulas::c`].
+    const LATEX_C: &'static str = "";
+
+    /// The derived formulas in LaTeX: L, ψ̇ (38), R (14), U_r (34) and A, G, C (64) as
+    /// matrices (see [`LatexFormulas`] for the symbols and the `|γ|² = 1` rule).
+    fn latex(&self) -> LatexFormulas {
+        LatexFormulas {
+            lagrangian: Self::LATEX_LAGRANGIAN.to_string(),
+            psi_dot: Self::LATEX_PSI_DOT.to_string(),
+            routhian: Self::LATEX_ROUTHIAN.to_string(),
+            amended_potential: Self::LATEX_AMENDED_POTENTIAL.to_string(),
+            a: Self::LATEX_A.to_string(),
+            g: Self::LATEX_G.to_string(),
+            c: Self::LATEX_C.to_string(),
+        }
+    }
 }
 
 #[cfg(test)]
