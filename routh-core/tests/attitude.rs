@@ -266,3 +266,48 @@ fn steady_motion_precesses_at_its_psi_dot() {
         eprintln!("steady γ = {:?}: ψ̇ = {:.6}", s.gamma.as_slice(), s.psi_dot);
     }
 }
+
+/// The three classic apex loci of a heavy symmetric top, started at rest in θ at θ₀ with the
+/// precession rate ψ̇₀: the classical criterion compares `u' = L_z/L₃` (where ψ̇ = 0) with the
+/// nutation range `[u₁, u₂]` of `u = cos θ` from the cubic — inside: looping, at the turning
+/// point `u₂`: cuspidal, outside: wavy. The simulation's ψ̇ must say the same.
+#[test]
+fn apex_loci_follow_the_classical_criterion() {
+    use routh_core::sim::attitude::{classify_apex_locus, ApexLocus};
+    let (a, c, mgl) = (1.0, 0.6, 1.0);
+    let top = Gyrostat::lagrange_top(a, c, mgl);
+    let (theta0, spin) = (0.5f64, 6.0);
+    let slow = mgl / (c * spin); // the slow precession rate of a fast top
+    for (psi_dot0, want) in [
+        (-1.0 * slow, ApexLocus::Looping),
+        (0.0, ApexLocus::Cuspidal),
+        (0.6 * slow, ApexLocus::Wavy),
+    ] {
+        // Body frame of Euler angles (ψ, θ, φ = 0): γ = (0, sin θ, cos θ); ω = ψ̇γ + spin-part.
+        let gamma0 = Vector3::new(0.0, theta0.sin(), theta0.cos());
+        // ω₃ = ψ̇ cos θ + φ̇ with φ̇ chosen for the given spin ω₃; ω₁ = θ̇ = 0, ω₂ = ψ̇ sin θ.
+        let omega0 = Vector3::new(0.0, psi_dot0 * theta0.sin(), spin);
+        let l3 = c * spin;
+        let lz = (top.inertia * omega0).dot(&gamma0);
+        let e = 0.5 * omega0.dot(&(top.inertia * omega0)) + mgl * gamma0.z;
+        let (u1, u2) = nutation_bounds(a, e - 0.5 * c * spin * spin, mgl, lz, l3);
+        let u_prime = lz / l3;
+        let criterion = if (u_prime - u2).abs() < 1e-9 || (u_prime - u1).abs() < 1e-9 {
+            ApexLocus::Cuspidal
+        } else if u_prime > u1 && u_prime < u2 {
+            ApexLocus::Looping
+        } else {
+            ApexLocus::Wavy
+        };
+        assert_eq!(criterion, want, "u' = {u_prime}, [{u1}, {u2}]");
+        let t_end = 6.0;
+        let times: Vec<f64> = (0..=6000).map(|i| t_end * i as f64 / 6000.0).collect();
+        let opts = SimOptions::with_tolerances(1e-11, 1e-12)
+            .with_attitude()
+            .at_times(times.clone());
+        let tr = simulate_full(&top, omega0, gamma0, t_end, &opts).unwrap();
+        let got = classify_apex_locus(&tr.t, &tr.euler_angles(), 0.02).unwrap();
+        eprintln!("ψ̇₀ = {psi_dot0:+.4}: u' = {u_prime:.5} in [{u1:.5}, {u2:.5}]? → {got}");
+        assert_eq!(got, criterion);
+    }
+}

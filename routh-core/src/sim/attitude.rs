@@ -107,6 +107,61 @@ fn unwrap(prev: f64, x: f64) -> f64 {
     x + ((prev - x) / tau).round() * tau
 }
 
+/// The shape of a top's apex locus between its nutation bounds, from the sign of the
+/// precession rate ψ̇ (the classical classification of the heavy symmetric top).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum ApexLocus {
+    /// ψ̇ changes sign: the apex makes loops.
+    Looping,
+    /// ψ̇ vanishes at the upper turning points without changing sign: cusps.
+    Cuspidal,
+    /// ψ̇ keeps one sign: waves.
+    Wavy,
+}
+
+impl std::fmt::Display for ApexLocus {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            ApexLocus::Looping => "looping",
+            ApexLocus::Cuspidal => "cuspidal",
+            ApexLocus::Wavy => "wavy",
+        })
+    }
+}
+
+/// Classifies an apex locus from the Euler angles of a simulation (e.g.
+/// [`Trajectory::euler_angles`](super::Trajectory::euler_angles)) at the times `t`: the
+/// precession rate ψ̇ is taken by finite differences of the unwrapped ψ; with `lo`, `hi` its
+/// extreme values and `m = max(|lo|, |hi|)`, the locus is looping when ψ̇ takes both signs
+/// beyond `tol·m`, cuspidal when the smaller of `|lo|`, `|hi|` is below `tol·m`, wavy otherwise.
+/// `tol = 0.02` suits runs sampled finely enough to resolve the turning points (a few hundred
+/// samples per nutation period). `None` for fewer than three points or ψ̇ ≡ 0.
+pub fn classify_apex_locus(t: &[f64], euler: &[[f64; 3]], tol: f64) -> Option<ApexLocus> {
+    if t.len() < 3 || t.len() != euler.len() {
+        return None;
+    }
+    let rates = t
+        .windows(2)
+        .zip(euler.windows(2))
+        .filter(|(w, _)| w[1] > w[0])
+        .map(|(w, e)| (e[1][0] - e[0][0]) / (w[1] - w[0]));
+    let (lo, hi) = rates.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+        (a.min(r), b.max(r))
+    });
+    let m = lo.abs().max(hi.abs());
+    if !(m.is_finite() && m > 0.0) {
+        return None;
+    }
+    Some(if lo < -tol * m && hi > tol * m {
+        ApexLocus::Looping
+    } else if lo.abs().min(hi.abs()) < tol * m || lo * hi <= 0.0 {
+        ApexLocus::Cuspidal
+    } else {
+        ApexLocus::Wavy
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
