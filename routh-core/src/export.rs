@@ -115,6 +115,7 @@ impl Trajectory {
     /// let csv = Trajectory::default().to_csv();
     /// assert!(csv.starts_with("t,omega_1,omega_2,omega_3,gamma_1,"));
     /// ```
+    #[allow(clippy::needless_range_loop)] // one row from many columns
     pub fn to_csv(&self) -> String {
         let att = !self.attitude.is_empty();
         let mut tb = Table::new(&header(
@@ -163,6 +164,7 @@ impl Trajectory {
 
 impl ReducedTrajectory {
     /// The trajectory as CSV text (columns in the [module documentation](crate::export)).
+    #[allow(clippy::needless_range_loop)] // one row from many columns
     pub fn to_csv(&self) -> String {
         let att = !self.attitude.is_empty();
         let mut tb = Table::new(&header(

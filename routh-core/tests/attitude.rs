@@ -279,7 +279,7 @@ fn apex_loci_follow_the_classical_criterion() {
     let (theta0, spin) = (0.5f64, 6.0);
     let slow = mgl / (c * spin); // the slow precession rate of a fast top
     for (psi_dot0, want) in [
-        (-1.0 * slow, ApexLocus::Looping),
+        (-slow, ApexLocus::Looping),
         (0.0, ApexLocus::Cuspidal),
         (0.6 * slow, ApexLocus::Wavy),
     ] {

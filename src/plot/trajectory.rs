@@ -145,6 +145,9 @@ pub fn apex_locus_svg<P: AsRef<Path>>(
     Ok(())
 }
 
+/// One panel of [`time_histories_svg`]: its axis label and its named curves.
+type Panel<'a> = (&'a str, Vec<(&'a str, Vec<f64>)>);
+
 fn check_size(opts: &PlotOptions) -> Result<(), PlotError> {
     if opts.width < 250 || opts.height < 250 {
         return Err(PlotError::InvalidOptions(format!(
@@ -180,7 +183,7 @@ pub fn time_histories_svg<P: AsRef<Path>>(
             .map(|v| (v - x[0]).abs().max(1e-18).log10())
             .collect()
     };
-    let panels: [(&str, Vec<(&str, Vec<f64>)>); 3] = [
+    let panels: [Panel; 3] = [
         (
             "γ (body frame)",
             vec![
