@@ -2,6 +2,9 @@
 //! diagram over the cyclic momentum, whose events sit on Maievskii's bound `p_ψ² = 4A₁mgl` and the
 //! secular bound `p_ψ² = mglC²/(C − A₁)`.
 //!
+//! Last, the attitude of the body: the three classic apex loci of a top (looping, cuspidal,
+//! wavy), started by the classical criterion and named from the simulated precession rate.
+//!
 //! Run with `cargo run --release --example heavy_top`. Figures go to `out/heavy_top/`.
 
 #[path = "common/mod.rs"]
@@ -12,15 +15,101 @@ use std::time::Instant;
 
 use common::plot::{Figure, Series, Style};
 use common::{linspace, verdict_label};
-use derived_models::LagrangeTop;
 use derived_models::{classified_steady_motions, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::families::bifurcation_diagram_checked;
 use routh::plot::{self, DiagramAxis, Overlay, PlotOptions};
+use routh::sim::attitude::{classify_apex_locus, ApexLocus};
 use routh::{
     simulate_full, stability_atlas_parallel, AtlasOptions, ContinuationOptions, EventKind,
-    Routhian, SimOptions, Vector3,
+    Lagrangian, Routhian, SimOptions, Vector3,
 };
+
+// The body, declared here: `#[derive(Lagrangian)]` differentiates L at build time.
+/// The Lagrange top about its fixed point: `L = ½(A₁(ω₁² + ω₂²) + Cω₃²) − m g l γ₃`, the centre
+/// of mass at distance `l` from the fixed point on the symmetry axis `e₃`.
+#[derive(Lagrangian, Debug, Clone)]
+#[lagrangian(
+    kinetic = 0.5 * (a1 * (omega.x * omega.x + omega.y * omega.y) + c * omega.z * omega.z),
+    potential = mass * g * l * gamma.z,
+)]
+struct LagrangeTop {
+    /// Transverse moment of inertia about the fixed point, `A₁`.
+    #[lagrangian(latex = "A_1")]
+    a1: f64,
+    /// Axial moment of inertia, `C`.
+    #[lagrangian(latex = "C")]
+    c: f64,
+    /// Mass `m`.
+    mass: f64,
+    /// Gravity `g`.
+    g: f64,
+    /// Distance `l` from the fixed point to the centre of mass.
+    l: f64,
+}
+
+impl LagrangeTop {
+    /// The top of the example, in units where `A₁ = m = g = l = 1`: `C = 1.25`, an oblate top
+    /// (`C > A₁`, still `C ≤ 2A₁`), chosen so that the sleeping top passes through all three
+    /// verdicts: unstable, gyroscopically stabilised, secularly stable.
+    fn example() -> Self {
+        LagrangeTop {
+            a1: 1.0,
+            c: 1.25,
+            mass: 1.0,
+            g: 1.0,
+            l: 1.0,
+        }
+    }
+
+    /// The Lagrange top `(A₁, C, m g l)` in units where `m = g = 1`.
+    fn with_mgl(a1: f64, c: f64, mgl: f64) -> Self {
+        LagrangeTop {
+            a1,
+            c,
+            mass: 1.0,
+            g: 1.0,
+            l: mgl,
+        }
+    }
+
+    /// `m g l`.
+    fn mgl(&self) -> f64 {
+        self.mass * self.g * self.l
+    }
+
+    /// Maievskii's bound: the sleeping top is stable iff `p_ψ² > 4 A₁ m g l`.
+    fn maievskii_p(&self) -> f64 {
+        (4.0 * self.a1 * self.mgl()).sqrt()
+    }
+
+    /// The `p_ψ` above which the sleeping top is a minimum of the amended potential (secular
+    /// stability), for an oblate top (`C > A₁`): the restricted second variation at `γ = e₃` is
+    /// `p²(C − A₁)/C² − m g l` (twice), positive iff `p² > m g l C²/(C − A₁)`. `None` for
+    /// `C ≤ A₁` (never secularly stable).
+    fn secular_p(&self) -> Option<f64> {
+        (self.c > self.a1).then(|| (self.mgl() * self.c * self.c / (self.c - self.a1)).sqrt())
+    }
+
+    /// The family of tilted steady motions: on the sphere with `z = γ₃`,
+    /// `U_r = p²/(2(A₁ + (C − A₁)z²)) + m g l z`, and `dU_r/dz = 0` at
+    /// `m g l (A₁ + (C − A₁)z²)² = p² (C − A₁) z`. Returns the `p_ψ ≥ 0` of the member at height
+    /// `z` (`None` where there is none, i.e. `(C − A₁)z ≤ 0`).
+    fn tilted_family_p(&self, z: f64) -> Option<f64> {
+        let d = self.c - self.a1;
+        let n = self.a1 + d * z * z;
+        (d * z > 0.0).then(|| (self.mgl() * n * n / (d * z)).sqrt())
+    }
+
+    /// The initial state of a sleeping top tilted by `tilt` radians about `e₂` with the spin
+    /// chosen so that the cyclic momentum (9) is exactly `p_psi`: `γ₀ = (sin ε, 0, cos ε)`,
+    /// `ω₀ = (0, 0, p_ψ/(C cos ε))`. Returns `(ω₀, γ₀)`.
+    fn perturbed_sleeping(&self, p_psi: f64, tilt: f64) -> (Vector3<f64>, Vector3<f64>) {
+        let gamma0 = Vector3::new(tilt.sin(), 0.0, tilt.cos());
+        let omega0 = Vector3::new(0.0, 0.0, p_psi / (self.c * tilt.cos()));
+        (omega0, gamma0)
+    }
+}
 
 fn main() -> Result<(), Box<dyn Error>> {
     let start = Instant::now();
@@ -296,6 +385,68 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!("  {}", path1.display());
     println!("  {}", path2.display());
     println!("  {}", path3.display());
+    apex_loci(&out)?;
     println!("Done in {:.2} s.", start.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// The three classic apex loci of a fast top (Klein & Sommerfeld; Goldstein §5.7), each started
+/// at rest in θ at θ₀ = 0.5 with spin ω₃ and the precession rate ψ̇₀ chosen by the classical
+/// criterion — ψ̇₀ against the spin's precession: loops; ψ̇₀ = 0: cusps; ψ̇₀ with it but slower
+/// than the steady precession: waves — and named from the simulated ψ̇ (its sign changes), not
+/// from ψ̇₀.
+fn apex_loci(out: &std::path::Path) -> Result<(), Box<dyn Error>> {
+    let top = LagrangeTop::with_mgl(1.0, 0.6, 1.0);
+    let (theta0, spin) = (0.5f64, 6.0);
+    let slow = top.mgl() / (top.c * spin);
+    println!("\nApex loci (attitude integrated with the motion, SimOptions::attitude)");
+    println!(
+        "top A₁ = {}, C = {}, mgl = {}, θ₀ = {theta0}, ω₃ = {spin}; slow precession ≈ {slow:.4}",
+        top.a1,
+        top.c,
+        top.mgl()
+    );
+    for (name, psi_dot0, expected) in [
+        ("looping", -slow, ApexLocus::Looping),
+        ("cuspidal", 0.0, ApexLocus::Cuspidal),
+        ("wavy", 0.6 * slow, ApexLocus::Wavy),
+    ] {
+        let gamma0 = Vector3::new(0.0, theta0.sin(), theta0.cos());
+        let omega0 = Vector3::new(0.0, psi_dot0 * theta0.sin(), spin);
+        let t_end = 6.0;
+        let times = linspace(0.0, t_end, 6001);
+        let opts = SimOptions::with_tolerances(1e-11, 1e-12)
+            .with_attitude()
+            .at_times(times);
+        let tr = simulate_full(&top, omega0, gamma0, t_end, &opts)?;
+        let euler = tr.euler_angles();
+        let seen = classify_apex_locus(&tr.t, &euler, 0.02).ok_or("no precession")?;
+        let (lo, hi) = euler
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), e| (a.min(e[1]), b.max(e[1])));
+        println!(
+            "  ψ̇₀ = {psi_dot0:+.4}: θ ∈ [{:.4}, {:.4}] rad, E drift {:.1e}, locus: {seen}{}",
+            lo,
+            hi,
+            tr.energy_drift(),
+            if seen == expected {
+                ""
+            } else {
+                "  (NOT the expected one)"
+            }
+        );
+        let path = out.join(format!("apex_locus_{name}.svg"));
+        let opts = PlotOptions {
+            title: format!("apex locus, ψ̇₀ = {psi_dot0:+.3}: {seen}"),
+            width: 600,
+            height: 600,
+            ..PlotOptions::default()
+        };
+        plot::apex_locus_svg(&tr.attitude, Vector3::z(), &path, &opts)?;
+        if name == "looping" {
+            let path = out.join("looping_time_histories.svg");
+            plot::time_histories_svg(&tr, &path, &PlotOptions::default())?;
+        }
+    }
     Ok(())
 }

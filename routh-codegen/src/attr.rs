@@ -29,6 +29,9 @@ pub struct Field {
     /// `#[lagrangian(symmetric)]` on a `Matrix3<f64>`: only the upper triangle is read and the
     /// matrix is taken to be symmetric (an inertia tensor), which the generated code exploits.
     pub symmetric: Option<proc_macro2::Span>,
+    /// `#[lagrangian(latex = "I")]`: the field's symbol in the LaTeX of the derived formulas
+    /// (default `\mathit{name}`).
+    pub latex: Option<String>,
 }
 
 /// Which term of `L = kinetic + linear − potential` an item defines.
@@ -132,23 +135,30 @@ fn parse_field(cx: &Ctxt, f: &syn::Field) -> Option<Field> {
     let ident = f.ident.clone()?;
     let mut skip = false;
     let mut symmetric = None;
+    let mut latex = None;
     for attr in f.attrs.iter().filter(|a| a.path().is_ident("lagrangian")) {
-        let word = match &attr.meta {
-            syn::Meta::List(list) => {
-                let t: Vec<TokenTree> = list.tokens.clone().into_iter().collect();
-                match t.as_slice() {
-                    [TokenTree::Ident(i)] => Some(i.clone()),
-                    _ => None,
+        let tokens: Vec<TokenTree> = match &attr.meta {
+            syn::Meta::List(list) => list.tokens.clone().into_iter().collect(),
+            _ => Vec::new(),
+        };
+        match tokens.as_slice() {
+            [TokenTree::Ident(i)] if i == "skip" => skip = true,
+            [TokenTree::Ident(i)] if i == "symmetric" => symmetric = Some(i.span()),
+            [TokenTree::Ident(i), TokenTree::Punct(p), TokenTree::Literal(l)]
+                if i == "latex" && p.as_char() == '=' =>
+            {
+                match syn::parse_str::<syn::LitStr>(&l.to_string()) {
+                    Ok(s) if !s.value().trim().is_empty() => latex = Some(s.value()),
+                    _ => cx.error_spanned_by(
+                        attr,
+                        "expected a non-empty string: `#[lagrangian(latex = \"I\")]`",
+                    ),
                 }
             }
-            _ => None,
-        };
-        match word {
-            Some(i) if i == "skip" => skip = true,
-            Some(i) if i == "symmetric" => symmetric = Some(i.span()),
             _ => cx.error_spanned_by(
                 attr,
-                "expected `#[lagrangian(skip)]` or `#[lagrangian(symmetric)]` on a field",
+                "expected `#[lagrangian(skip)]`, `#[lagrangian(symmetric)]` or \
+                 `#[lagrangian(latex = \"…\")]` on a field",
             ),
         }
     }
@@ -158,6 +168,7 @@ fn parse_field(cx: &Ctxt, f: &syn::Field) -> Option<Field> {
         ty: f.ty.clone(),
         skip,
         symmetric,
+        latex,
     })
 }
 

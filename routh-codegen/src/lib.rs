@@ -15,6 +15,7 @@ pub mod ctxt;
 pub mod emit;
 pub mod equations;
 pub mod inertia;
+pub mod latex;
 pub mod layout;
 pub mod lower;
 pub mod reduce;
@@ -55,12 +56,18 @@ pub struct Model {
     pub equations: equations::Equations,
     /// `J = J₀ + c v vᵀ`, when the kinetic energy has that form.
     pub rank_one: Option<inertia::RankOne>,
+    /// The LaTeX symbols the fields were given (`#[lagrangian(latex = "I")]`): field name →
+    /// symbol, for [`latex::latex_formulas`].
+    pub latex_symbols: Vec<(String, String)>,
 }
 
 /// Parses, checks, lowers and reduces; all errors combined.
 pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
     let cx = ctxt::Ctxt::new();
     let input = attr::parse_input(&cx, di);
+    let latex_symbols = (input.fields.iter())
+        .filter_map(|f| Some((f.ident.to_string(), f.latex.clone()?)))
+        .collect();
     check::check(&cx, di, &input);
     let lowered = lower::lower(&cx, &input);
     cx.check()?;
@@ -79,6 +86,7 @@ pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
         outputs,
         equations,
         rank_one,
+        latex_symbols,
     })
 }
 
@@ -156,6 +164,14 @@ pub fn expand_with(
     let o = &model.outputs;
     let [f_l, f_ur, f_pd] = [o.lagrangian, o.amended_potential, o.psi_dot_at_rest]
         .map(|id| routh_symbolic::to_infix(graph, id));
+    let tex = latex::latex_formulas(&model, &model.latex_symbols);
+    let (t_l, t_pd, t_r, t_ur) = (
+        &tex.lagrangian,
+        &tex.psi_dot,
+        &tex.routhian,
+        &tex.amended_potential,
+    );
+    let (t_a, t_g, t_c) = (&tex.a, &tex.g, &tex.c);
     Ok(quote! {
         #[doc(hidden)]
         #[allow(non_upper_case_globals, unused_qualifications, clippy::all, clippy::pedantic, clippy::nursery)]
@@ -175,6 +191,13 @@ pub fn expand_with(
                 const LAGRANGIAN: &'static str = #f_l;
                 const AMENDED_POTENTIAL: &'static str = #f_ur;
                 const PSI_DOT_AT_REST: &'static str = #f_pd;
+                const LATEX_LAGRANGIAN: &'static str = #t_l;
+                const LATEX_PSI_DOT: &'static str = #t_pd;
+                const LATEX_ROUTHIAN: &'static str = #t_r;
+                const LATEX_AMENDED_POTENTIAL: &'static str = #t_ur;
+                const LATEX_A: &'static str = #t_a;
+                const LATEX_G: &'static str = #t_g;
+                const LATEX_C: &'static str = #t_c;
             }
         };
     })

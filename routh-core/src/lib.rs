@@ -18,7 +18,9 @@ pub use nalgebra::{Complex, Matrix3, Vector3};
 pub mod certify;
 mod classified;
 mod error;
+pub mod export;
 pub mod families;
+mod formulas;
 mod krein;
 mod model;
 pub mod sim;
@@ -35,6 +37,7 @@ pub use families::{
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions,
     EventKind, StabilityAtlas,
 };
+pub use formulas::LatexFormulas;
 pub use model::{
     DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
     RouthBundle, Routhian,

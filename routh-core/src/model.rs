@@ -3,6 +3,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use crate::formulas::LatexFormulas;
+
 /// A Lagrangian `L(ω, γ) = ½ ωᵀJ(γ)ω + a(γ)·ω − U(γ)` of a rigid body with a symmetry about the
 /// vertical: ω is the body-frame angular velocity, γ the body-frame coordinates of the upward unit
 /// vertical. γ is treated as an unconstrained vector of ℝ³ when differentiating (paper (18)–(19)).
@@ -59,6 +61,7 @@ pub trait Lagrangian {
 /// The full equations (8) at one state `(ω, γ)`, solved for ω̇ (docs/method.md §2):
 /// `J ω̇ = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)` and `γ̇ = γ × ω`.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FullEquations {
     /// `J(γ) = ∂²L/∂ω²`, symmetric positive definite for a physical body.
     pub inertia: Matrix3<f64>,
@@ -73,6 +76,7 @@ pub struct FullEquations {
 /// the model's [`Lagrangian::constant_inertia`] (docs/method.md §2a). For a body on a smooth
 /// plane, `c = m` and `v = n × γ`, with `n` the gradient of the centre's height.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RankOneInertia {
     /// `c(γ)`.
     pub weight: f64,
@@ -95,6 +99,7 @@ impl RankOneInertia {
 /// and the solution with `Ω̇·γ = 0` (the gauge) is `J⁻¹b` projected on γ^⊥ (see
 /// [`reduced_vector_field`](crate::sim::reduced_vector_field)), so the equations carry `J`.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReducedEquations {
     /// `J(γ) = ∂²L/∂ω²`, symmetric positive definite for a physical body.
     pub inertia: Matrix3<f64>,
@@ -108,6 +113,7 @@ pub struct ReducedEquations {
 
 /// Every output of the Routh function at one point `(Ω, γ, p_ψ)`, from one evaluation.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RouthBundle {
     /// `R(Ω, γ, p_ψ)` of (14).
     pub routhian: f64,
@@ -133,6 +139,7 @@ pub struct RouthBundle {
 /// `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with `μ = (∂R/∂γ, γ)`. All three annihilate γ, so
 /// `det(Aλ² + 2Gλ + C) ≡ 0` (errata E5); the characteristic polynomial is the 2×2 one on γ^⊥.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GyroscopicSystem {
     /// Kinetic matrix `A = ∂²R/∂Ω²` at Ω = 0.
     pub a: Matrix3<f64>,
@@ -311,6 +318,34 @@ pub trait DerivedFormulas {
     const AMENDED_POTENTIAL: &'static str;
     /// `ψ̇(0, γ, p_ψ)` of (38): the rate of rotation about the vertical of a steady motion at γ.
     const PSI_DOT_AT_REST: &'static str;
+    /// [`LatexFormulas::lagrangian`] (emitted by the derive; empty by default).
+    const LATEX_LAGRANGIAN: &'static str = "";
+    /// [`LatexFormulas::psi_dot`].
+    const LATEX_PSI_DOT: &'static str = "";
+    /// [`LatexFormulas::routhian`].
+    const LATEX_ROUTHIAN: &'static str = "";
+    /// [`LatexFormulas::amended_potential`].
+    const LATEX_AMENDED_POTENTIAL: &'static str = "";
+    /// [`LatexFormulas::a`].
+    const LATEX_A: &'static str = "";
+    /// [`LatexFormulas::g`].
+    const LATEX_G: &'static str = "";
+    /// [`LatexFormulas::c`].
+    const LATEX_C: &'static str = "";
+
+    /// The derived formulas in LaTeX: L, ψ̇ (38), R (14), U_r (34) and A, G, C (64) as
+    /// matrices (see [`LatexFormulas`] for the symbols and the `|γ|² = 1` rule).
+    fn latex(&self) -> LatexFormulas {
+        LatexFormulas {
+            lagrangian: Self::LATEX_LAGRANGIAN.to_string(),
+            psi_dot: Self::LATEX_PSI_DOT.to_string(),
+            routhian: Self::LATEX_ROUTHIAN.to_string(),
+            amended_potential: Self::LATEX_AMENDED_POTENTIAL.to_string(),
+            a: Self::LATEX_A.to_string(),
+            g: Self::LATEX_G.to_string(),
+            c: Self::LATEX_C.to_string(),
+        }
+    }
 }
 
 #[cfg(test)]

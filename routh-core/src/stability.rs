@@ -16,6 +16,7 @@ use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamm
 
 /// The tolerances of [`classify_with`]; [`classify`] uses the defaults.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ClassifyOptions {
     /// Relative tolerance under which an eigenvalue of the restricted second variation counts as
     /// zero (errata E8), relative to the norm of the restricted form itself, with a round-off
@@ -72,6 +73,7 @@ impl ClassifyOptions {
 
 /// The stability verdict of [`classify`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Stability {
     /// The restricted second variation (62)–(63) is positive definite: the amended potential has
     /// a strict minimum, stable in the secular sense (section 4).
@@ -100,6 +102,7 @@ impl fmt::Display for Stability {
 
 /// The stability analysis of one steady motion (sections 4–5 with errata E5, E8).
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StabilityReport {
     /// Eigenvalues, ascending, of the restricted second variation `Pᵀ(μE − ∂²R/∂γ²)P` of the
     /// amended potential (62)–(63).
@@ -366,6 +369,7 @@ pub fn classify_with<M: Routhian>(
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct KreinReport {
     /// The stability analysis.
     pub report: StabilityReport,

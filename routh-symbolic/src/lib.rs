@@ -18,8 +18,10 @@
 
 pub mod analysis;
 mod graph;
+pub mod latex;
 pub mod shape;
 
 pub use analysis::{degree, extra_cost, op_counts, schedule, to_infix, Degree, OpCounts, Plan};
 pub use graph::{Func, Graph, Id, Node, Var};
+pub use latex::{latex_symbol, matrix_to_latex, on_sphere, to_latex, LatexSymbols};
 pub use shape::{Shape, ShapeError, Value};

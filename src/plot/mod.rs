@@ -72,8 +72,10 @@ mod frame;
 mod legend;
 mod marks;
 mod style;
+mod trajectory;
 
 pub use axis::DiagramAxis;
+pub use trajectory::{apex_locus_svg, apex_path, time_histories_svg};
 
 /// The errors of the plotting functions.
 ///

@@ -22,6 +22,7 @@ pub const LIBM_ULPS: u32 = 4;
 
 /// A closed interval `[lo, hi]` (`lo ≤ hi`; both may be infinite; never NaN).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Interval {
     /// Lower endpoint.
     pub lo: f64,

@@ -47,6 +47,7 @@ use std::time::{Duration, Instant};
 
 /// Options of [`steady_motions_certified`].
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CertifyOptions {
     /// Boxes per side of each face of the cube at the start (default 4).
     pub initial_split: usize,
@@ -73,6 +74,7 @@ impl Default for CertifyOptions {
 
 /// A steady motion proved to exist, alone in its enclosure.
 #[derive(Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CertifiedMotion {
     /// A box of `R³` (an interval per component of γ) containing the steady motion's γ; no other
     /// steady motion lies in the chart box it was certified in.
@@ -85,6 +87,7 @@ pub struct CertifiedMotion {
 /// motions: the tube around a circle of steady motions, a degenerate critical point, or what
 /// the budget left.
 #[derive(Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct UndecidedRegion {
     /// A box of `R³` containing the region's points of the sphere.
     pub hull: [Interval; 3],
@@ -94,6 +97,7 @@ pub struct UndecidedRegion {
 
 /// The result of [`steady_motions_certified`].
 #[derive(Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Certificate {
     /// The cyclic momentum.
     pub p_psi: f64,

@@ -58,6 +58,7 @@ pub use diagram::{
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ContinuationOptions {
     /// First step, relative to the length of the range (default `0.01`).
     pub initial_step: f64,
@@ -129,6 +130,7 @@ impl Default for ContinuationOptions {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BifurcationDiagram {
     /// The branches; [`BranchEvent::branch`] indexes this list.
     pub branches: Vec<Branch>,
@@ -149,6 +151,7 @@ pub struct BifurcationDiagram {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Branch {
     /// The points, in arclength order along the branch.
     pub points: Vec<BranchPoint>,
@@ -169,6 +172,7 @@ pub struct Branch {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BranchPoint {
     /// The parameter.
     pub s: f64,
@@ -191,6 +195,7 @@ pub struct BranchPoint {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BranchEvent {
     /// What happens.
     pub kind: EventKind,
@@ -215,6 +220,7 @@ pub struct BranchEvent {
 /// assert_eq!(EventKind::HamiltonianHopf.to_string(), "Hamiltonian–Hopf");
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum EventKind {
     /// A zero eigenvalue of the restricted second variation where the branch turns back in the
     /// parameter: two steady motions meet and vanish.
@@ -268,6 +274,7 @@ impl fmt::Display for BranchEvent {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AtlasOptions {
     /// Number of grid nodes along x (default `41`), at least 2.
     pub nx: usize,
@@ -320,6 +327,7 @@ impl Default for AtlasOptions {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StabilityAtlas {
     /// The grid abscissae, ascending.
     pub x: Vec<f64>,
@@ -349,6 +357,7 @@ pub struct StabilityAtlas {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BoundaryCurve {
     /// Which defining equation: a zero eigenvalue of the restricted second variation
     /// ([`EventKind::Fold`] or [`EventKind::BranchPoint`]) or a zero discriminant of `f₂`

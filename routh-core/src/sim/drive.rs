@@ -2,9 +2,9 @@
 //! [`simulate_reduced`](super::simulate_reduced): the chosen [`Method`], the error weights of
 //! [`SimOptions`] and the [`Output`] points.
 
-use nalgebra::{SVector, Vector3};
+use nalgebra::{SVector, UnitQuaternion, Vector3};
 
-use super::{dop853, lie, Method, Output, SimOptions, SimStats};
+use super::{attitude, dop853, lie, Method, Output, SimOptions, SimStats};
 use crate::RouthError;
 
 /// An autonomous vector field `y ↦ (ẏ, w)`, with `w` the angular velocity that moves γ
@@ -26,16 +26,22 @@ impl<const N: usize, F: Field<N>> dop853::Rhs<N> for Autonomous<'_, F> {
 /// Integrates `y' = field(y).0` from `y0` at `t = 0` to `t_end` with the chosen method and
 /// output, calling `record` at every output point. `field` returns `(ẏ, w)` with `w` the
 /// angular velocity that moves γ (`y[3..6]`): `γ̇ = w × γ`.
+///
+/// `lie_attitude`: with [`Method::LieRk4`], an initial attitude `R₀` (body → space) moved along
+/// by the rotations of the steps, `R₁ = R₀ exp(−[u]×)` with `γ₁ = exp([u]×)γ₀`
+/// ([`lie::step`]), so that `γ = Rᵀe₃` stays exact to round-off; it is passed to `record`
+/// (`None` otherwise, and always with [`Method::Dop853`], where an attitude is part of `y`).
 pub(super) fn drive<const N: usize, F, R>(
     mut field: F,
     y0: SVector<f64, N>,
     t_end: f64,
     opts: &SimOptions,
+    lie_attitude: Option<UnitQuaternion<f64>>,
     mut record: R,
 ) -> Result<SimStats, RouthError>
 where
     F: Field<N>,
-    R: FnMut(f64, &SVector<f64, N>),
+    R: FnMut(f64, &SVector<f64, N>, Option<&UnitQuaternion<f64>>),
 {
     let times: Option<&[f64]> = match &opts.output {
         Output::Steps => None,
@@ -65,10 +71,10 @@ where
             };
             let mut next = 0;
             match times {
-                None => record(0.0, &y0),
+                None => record(0.0, &y0, None),
                 Some(ts) => {
                     while next < ts.len() && ts[next] <= 0.0 {
-                        record(ts[next], &y0);
+                        record(ts[next], &y0, None);
                         next += 1;
                     }
                 }
@@ -76,13 +82,13 @@ where
             let counters =
                 dop853::integrate(Autonomous(&mut field), 0.0, y0, t_end, &cfg, |acc| {
                     match (times, acc.dense) {
-                        (None, _) => record(acc.t, acc.y),
+                        (None, _) => record(acc.t, acc.y, None),
                         (Some(ts), dense) => {
                             while next < ts.len() && ts[next] <= acc.t {
                                 let tn = ts[next];
                                 match dense {
-                                    Some(d) if tn < acc.t => record(tn, &d.eval(tn)),
-                                    _ => record(tn, acc.y),
+                                    Some(d) if tn < acc.t => record(tn, &d.eval(tn), None),
+                                    _ => record(tn, acc.y, None),
                                 }
                                 next += 1;
                             }
@@ -125,8 +131,9 @@ where
                 rhs_evaluations: 1,
                 ..SimStats::default()
             };
+            let mut q = lie_attitude;
             if times.is_none() {
-                record(0.0, &y0);
+                record(0.0, &y0, q.as_ref());
             }
             let mut t = 0.0;
             let mut y = y0;
@@ -135,7 +142,11 @@ where
                 let h = if n > 0 { (end - t) / n as f64 } else { 0.0 };
                 let start = t;
                 for i in 1..=n {
-                    y = lie::step(&mut |y: &SVector<f64, N>| field.eval(y), &y, h)?;
+                    let (y1, u) = lie::step(&mut |y: &SVector<f64, N>| field.eval(y), &y, h)?;
+                    y = y1;
+                    if let Some(r) = q.as_mut() {
+                        *r *= attitude::exp(&-u);
+                    }
                     stats.accepted_steps += 1;
                     stats.rhs_evaluations += 4;
                     t = if i == n { end } else { start + i as f64 * h };
@@ -143,12 +154,12 @@ where
                         return Err(RouthError::NonFiniteState { t });
                     }
                     if times.is_none() {
-                        record(t, &y);
+                        record(t, &y, q.as_ref());
                     }
                 }
                 t = end;
                 if times.is_some() {
-                    record(t, &y);
+                    record(t, &y, q.as_ref());
                 }
             }
             Ok(stats)

@@ -57,11 +57,15 @@ fn act<const N: usize>(
 
 /// One RKMK4 step of size `h` from `y`. `field(y)` returns `(ẏ, w)`: the rates of every
 /// component (those of γ are ignored) and the angular velocity `w` with `γ' = w × γ`.
+///
+/// Returns the new state and the rotation vector `u` of the step: `γ₁ = exp([u]×) γ₀`, an
+/// order-4 approximation of the flow of the lifted equation `Ẏ = [w]× Y` on SO(3), which moves
+/// any attitude `Rᵀ` with `(Rᵀ)˙ = [w]× Rᵀ` exactly as it moves γ.
 pub(crate) fn step<const N: usize, F>(
     field: &mut F,
     y: &SVector<f64, N>,
     h: f64,
-) -> Result<SVector<f64, N>, RouthError>
+) -> Result<(SVector<f64, N>, Vector3<f64>), RouthError>
 where
     F: FnMut(&SVector<f64, N>) -> Result<(SVector<f64, N>, Vector3<f64>), RouthError>,
 {
@@ -74,7 +78,7 @@ where
     let (k4v, k4w) = eval(&k3v, &k3w)?;
     let u_v = (k1v + (k2v + k3v) * 2.0 + k4v) / 6.0;
     let u_w = (k1w + (k2w + k3w) * 2.0 + k4w) / 6.0 - k1w.cross(&k4w) / 12.0;
-    Ok(act(&u_v, &u_w, y))
+    Ok((act(&u_v, &u_w, y), u_w))
 }
 
 #[cfg(test)]
@@ -125,7 +129,7 @@ mod tests {
         let h = 2.0 / n as f64;
         let mut y = SVector::<f64, 6>::from_column_slice(&[0.5, -1.0, 2.0, 0.6, 0.0, 0.8]);
         for _ in 0..n {
-            y = step(&mut field, &y, h).unwrap();
+            y = step(&mut field, &y, h).unwrap().0;
         }
         y
     }

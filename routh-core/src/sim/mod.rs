@@ -17,6 +17,7 @@
 //! integration loop over both methods, `field` the vector fields, `dop853` (with `tableau`) and
 //! `lie` the two steppers.
 
+pub mod attitude;
 mod dop853;
 mod drive;
 mod field;
@@ -28,13 +29,14 @@ pub use field::{full_vector_field, reduced_vector_field};
 use drive::{drive, split3, Field};
 use field::{FullField, ReducedField};
 
-use nalgebra::{SVector, Vector3};
+use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 use crate::validate::{check_finite, stable_norm, unit_gamma};
 use crate::{Lagrangian, RouthError, Routhian};
 
 /// The integration method.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Method {
     /// Dormand–Prince 8(5,3) with Hairer's step-size control, initial-step heuristic and
     /// 7th-order dense output. Uses [`SimOptions::rtol`], [`SimOptions::atol`],
@@ -52,6 +54,7 @@ pub enum Method {
 
 /// Which points the trajectory records.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Output {
     /// `t = 0` and the end of every accepted step (the last one is `t_end`).
     Steps,
@@ -83,6 +86,7 @@ pub enum Output {
 /// (the same Lagrangian in other units of energy) changes no state variable and needs no change
 /// of the options.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SimOptions {
     /// Relative tolerance of [`Method::Dop853`]. Must be finite and at least
     /// `10·ε ≈ 2.2e-15`. Default `1e-10`.
@@ -105,6 +109,18 @@ pub struct SimOptions {
     pub max_steps: usize,
     /// Which points are recorded. Default [`Output::Steps`].
     pub output: Output,
+    /// Also integrate the attitude of the body, the rotation `R` body → space, as a unit
+    /// quaternion (`Ṙ = R[ω]×`, module [`attitude`]), recorded in [`Trajectory::attitude`] /
+    /// [`ReducedTrajectory::attitude`]. Default `false` (no cost when off).
+    ///
+    /// With [`Method::LieRk4`] the attitude moves by the same exact rotations as γ, so it stays
+    /// a unit quaternion and `γ = Rᵀe₃` holds to round-off. With [`Method::Dop853`] the
+    /// quaternion is four more components of the state under the same error control; each
+    /// recorded attitude is normalised and turned by the (tolerance-sized) smallest rotation
+    /// that makes `Rᵀe₃` equal the direction of the integrated γ, so `γ/|γ| = Rᵀe₃` holds to
+    /// round-off there too (|γ| itself drifts at the tolerance, see
+    /// [`Trajectory::gamma_norm_error`]).
+    pub attitude: bool,
 }
 
 impl Default for SimOptions {
@@ -118,6 +134,7 @@ impl Default for SimOptions {
             h_init: None,
             max_steps: 100_000,
             output: Output::Steps,
+            attitude: false,
         }
     }
 }
@@ -140,6 +157,12 @@ impl SimOptions {
         }
     }
 
+    /// The same options, also integrating the attitude (see [`SimOptions::attitude`]).
+    pub fn with_attitude(mut self) -> Self {
+        self.attitude = true;
+        self
+    }
+
     /// The same options, recording exactly at `times` (see [`Output::Times`]).
     pub fn at_times(mut self, times: Vec<f64>) -> Self {
         self.output = Output::Times(times);
@@ -149,6 +172,7 @@ impl SimOptions {
 
 /// Work done by one simulation.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SimStats {
     /// Accepted steps.
     pub accepted_steps: usize,
@@ -162,6 +186,7 @@ pub struct SimStats {
 
 /// A solution of the full equations (8), from [`simulate_full`].
 #[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Trajectory {
     /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
     pub t: Vec<f64>,
@@ -175,6 +200,10 @@ pub struct Trajectory {
     pub p_psi: Vec<f64>,
     /// `|γ|²` (the geometric integral (4) is `|γ|² − 1 = 0`).
     pub gamma_norm_sq: Vec<f64>,
+    /// The attitude `R` (body → space) at each point when [`SimOptions::attitude`] is set,
+    /// empty otherwise: `γ = Rᵀe₃`, `Ṙ = R[ω]×`, and `R(0)` the attitude with Euler angle
+    /// `ψ(0) = 0` ([`attitude::initial_attitude`]).
+    pub attitude: Vec<UnitQuaternion<f64>>,
     /// Work counters.
     pub stats: SimStats,
 }
@@ -182,6 +211,7 @@ pub struct Trajectory {
 /// A solution of the reduced equations (13) with the reconstruction (15), from
 /// [`simulate_reduced`].
 #[derive(Debug, Clone, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReducedTrajectory {
     /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
     pub t: Vec<f64>,
@@ -202,6 +232,16 @@ pub struct ReducedTrajectory {
     pub p_psi: Vec<f64>,
     /// `|γ|²`.
     pub gamma_norm_sq: Vec<f64>,
+    /// The attitude `R` (body → space) at each point when [`SimOptions::attitude`] is set,
+    /// empty otherwise, reconstructed by (15): `R = R_z(ψ) R_Ω` with `R_Ω` the attitude of the
+    /// body relative to the frame rotating about the vertical (`Ṙ_Ω = R_Ω[Ω]×`,
+    /// `R_Ω(0)` = [`attitude::initial_attitude`]`(γ₀)`) and ψ the angle of [`psi`](Self::psi);
+    /// then `Ṙ = R[Ω + ψ̇γ]× = R[ω]×` and `γ = Rᵀe₃`.
+    ///
+    /// The gauge angle ψ (errata E4) is not the Euler angle ψ of [`euler_angles`](Self::euler_angles):
+    /// the Euler ψ of `R` is the gauge ψ plus the Euler ψ of `R_Ω`, which moves unless Ω = 0.
+    /// On a steady motion (Ω = 0) the two differ by a constant, so their rates agree.
+    pub attitude: Vec<UnitQuaternion<f64>>,
     /// Work counters.
     pub stats: SimStats,
 }
@@ -240,6 +280,12 @@ impl Trajectory {
     pub fn gamma_norm_error(&self) -> f64 {
         max_unit_error(&self.gamma_norm_sq)
     }
+    /// The z-x-z Euler angles `(ψ, θ, φ)` of [`attitude`](Self::attitude),
+    /// `R = R_z(ψ) R_x(θ) R_z(φ)`, ψ and φ unwrapped ([`attitude::euler_angles`]); empty when
+    /// the attitude was not integrated.
+    pub fn euler_angles(&self) -> Vec<[f64; 3]> {
+        attitude::euler_angles(&self.attitude)
+    }
 }
 
 impl ReducedTrajectory {
@@ -264,6 +310,11 @@ impl ReducedTrajectory {
     /// `max | |γ(t)|² − 1 |`.
     pub fn gamma_norm_error(&self) -> f64 {
         max_unit_error(&self.gamma_norm_sq)
+    }
+    /// The z-x-z Euler angles `(ψ, θ, φ)` of [`attitude`](Self::attitude) (see
+    /// [`Trajectory::euler_angles`]); empty when the attitude was not integrated.
+    pub fn euler_angles(&self) -> Vec<[f64; 3]> {
+        attitude::euler_angles(&self.attitude)
     }
 }
 
@@ -462,17 +513,37 @@ pub fn simulate_full<M: Lagrangian>(
     y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
 
     let mut traj = Trajectory::default();
-    let field = FullRhs(FullField::new(model));
-    let record = |t: f64, y: &SVector<f64, 6>| {
-        let (w, g) = (split3(y, 0), split3(y, 3));
+    let mut push = |t: f64, w: Vector3<f64>, g: Vector3<f64>, q: Option<UnitQuaternion<f64>>| {
         traj.t.push(t);
         traj.omega.push(w);
         traj.gamma.push(g);
         traj.energy.push(model.energy(&w, &g));
         traj.p_psi.push(model.cyclic_momentum(&w, &g));
         traj.gamma_norm_sq.push(g.norm_squared());
+        if let Some(q) = q {
+            traj.attitude.push(q);
+        }
     };
-    let stats = drive(field, y0, t_end, opts, record)?;
+    let q0 = opts.attitude.then(|| attitude::initial_attitude(&gamma0));
+    let stats = match (q0, opts.method) {
+        (Some(q0), Method::Dop853) => {
+            let mut y0q = SVector::<f64, 10>::zeros();
+            y0q.fixed_rows_mut::<6>(0).copy_from(&y0);
+            attitude::write(&mut y0q, 6, q0.quaternion());
+            let field = WithAttitude(FullRhs(FullField::new(model)));
+            drive(field, y0q, t_end, opts, None, |t, y, _| {
+                let g = split3(y, 3);
+                let q = attitude::aligned(&attitude::read(y, 6), &g);
+                push(t, split3(y, 0), g, Some(q))
+            })?
+        }
+        (q0, _) => {
+            let field = FullRhs(FullField::new(model));
+            drive(field, y0, t_end, opts, q0, |t, y, q| {
+                push(t, split3(y, 0), split3(y, 3), q.copied())
+            })?
+        }
+    };
     // A finite state can still overflow the recorded integrals (a fixed-step run gone unstable).
     non_finite_record(&traj.t, &[&traj.energy, &traj.p_psi])?;
     traj.stats = stats;
@@ -492,6 +563,47 @@ impl<M: Lagrangian + ?Sized> Field<6> for FullRhs<'_, M> {
         d.fixed_rows_mut::<3>(3).copy_from(&g_dot);
         // γ̇ = γ × ω = (−ω) × γ.
         Ok((d, -w))
+    }
+}
+
+/// A field of `N` components extended by the attitude quaternion `q` at `y[N..N + 4]`, moved by
+/// the angular velocity `ω` (full) or Ω (reduced) of `y[0..3]`: `q̇ = ½ q ⊗ (0, ω)` (module
+/// [`attitude`]). For [`Method::Dop853`] only (the Lie method moves the attitude exactly).
+struct WithAttitude<F>(F);
+
+impl<'a, M: Lagrangian + ?Sized> Field<10> for WithAttitude<FullRhs<'a, M>> {
+    #[inline(always)]
+    fn eval(
+        &mut self,
+        y: &SVector<f64, 10>,
+    ) -> Result<(SVector<f64, 10>, Vector3<f64>), RouthError> {
+        let (d6, w) = self.0.eval(&y.fixed_rows::<6>(0).into_owned())?;
+        let mut d = SVector::<f64, 10>::zeros();
+        d.fixed_rows_mut::<6>(0).copy_from(&d6);
+        attitude::write(
+            &mut d,
+            6,
+            &attitude::rate(&attitude::read(y, 6), &split3(y, 0)),
+        );
+        Ok((d, w))
+    }
+}
+
+impl<'a, M: Routhian + ?Sized> Field<11> for WithAttitude<ReducedRhs<'a, M>> {
+    #[inline(always)]
+    fn eval(
+        &mut self,
+        y: &SVector<f64, 11>,
+    ) -> Result<(SVector<f64, 11>, Vector3<f64>), RouthError> {
+        let (d7, w) = self.0.eval(&y.fixed_rows::<7>(0).into_owned())?;
+        let mut d = SVector::<f64, 11>::zeros();
+        d.fixed_rows_mut::<7>(0).copy_from(&d7);
+        attitude::write(
+            &mut d,
+            7,
+            &attitude::rate(&attitude::read(y, 7), &split3(y, 0)),
+        );
+        Ok((d, w))
     }
 }
 
@@ -594,9 +706,12 @@ pub fn simulate_reduced<M: Routhian>(
     y0.fixed_rows_mut::<3>(3).copy_from(&gamma0);
 
     let mut traj = ReducedTrajectory::default();
-    let field = ReducedRhs(ReducedField::new(model, p_psi));
-    let record = |t: f64, y: &SVector<f64, 7>| {
+    let mut record = |t: f64, y: &SVector<f64, 7>, q: Option<UnitQuaternion<f64>>| {
         let (w, g) = (split3(y, 0), split3(y, 3));
+        if let Some(q) = q {
+            // (15): R = R_z(ψ) R_Ω.
+            traj.attitude.push(attitude::about_vertical(y[6]) * q);
+        }
         // Only R, ∂R/∂Ω and ψ̇ (not the whole bundle, see `reduced_vector_field`).
         let (psi_dot, dr_domega) = (model.psi_dot(&w, &g, p_psi), model.dr_domega(&w, &g, p_psi));
         traj.t.push(t);
@@ -610,7 +725,25 @@ pub fn simulate_reduced<M: Routhian>(
         traj.p_psi.push(dr_domega.dot(&g));
         traj.gamma_norm_sq.push(g.norm_squared());
     };
-    let stats = drive(field, y0, t_end, opts, record)?;
+    let q0 = opts.attitude.then(|| attitude::initial_attitude(&gamma0));
+    let stats = match (q0, opts.method) {
+        (Some(q0), Method::Dop853) => {
+            let mut y0q = SVector::<f64, 11>::zeros();
+            y0q.fixed_rows_mut::<7>(0).copy_from(&y0);
+            attitude::write(&mut y0q, 7, q0.quaternion());
+            let field = WithAttitude(ReducedRhs(ReducedField::new(model, p_psi)));
+            drive(field, y0q, t_end, opts, None, |t, y, _| {
+                let q = attitude::aligned(&attitude::read(y, 7), &split3(y, 3));
+                record(t, &y.fixed_rows::<7>(0).into_owned(), Some(q))
+            })?
+        }
+        (q0, _) => {
+            let field = ReducedRhs(ReducedField::new(model, p_psi));
+            drive(field, y0, t_end, opts, q0, |t, y, q| {
+                record(t, y, q.copied())
+            })?
+        }
+    };
     let omega: Vec<f64> = (traj.omega.iter())
         .map(|w| if all_finite(w) { 0.0 } else { f64::NAN })
         .collect();

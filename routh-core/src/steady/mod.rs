@@ -20,6 +20,7 @@ use crate::validate::{check_finite, check_kinetic, check_model_finite, stable_no
 /// One steady motion (31)–(34): the body at rest in the frame that turns uniformly about the
 /// vertical at the rate `psi_dot`, with body-frame vertical `gamma`.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SteadyMotion {
     /// The cyclic momentum `p_ψ` (9) at which this is a steady motion.
     pub p_psi: f64,
@@ -89,6 +90,7 @@ pub(crate) use crate::sphere::DEFAULT_STARTS;
 
 /// Options of the global search of [`steady_motions_with`].
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SearchOptions {
     /// Number of starting points of the Fibonacci grid on the sphere (default 400).
     pub starts: usize,
@@ -334,6 +336,7 @@ pub fn steady_motions_with<M: Routhian>(
 
 /// The steady motions of [`steady_motions`] with the outcome of its Morse self-check.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SearchResult {
     /// The steady motions, as returned by [`steady_motions`].
     pub motions: Vec<SteadyMotion>,

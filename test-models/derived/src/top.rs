@@ -13,8 +13,10 @@ use routh::{Lagrangian, Vector3};
 )]
 pub struct LagrangeTop {
     /// Transverse moment of inertia about the fixed point, `A₁`.
+    #[lagrangian(latex = "A_1")]
     pub a1: f64,
     /// Axial moment of inertia, `C`.
+    #[lagrangian(latex = "C")]
     pub c: f64,
     /// Mass `m`.
     pub mass: f64,

@@ -261,6 +261,7 @@ pub(crate) fn sim_options(rng: &mut ChaCha8Rng, t_end: f64) -> SimOptions {
         },
         max_steps: rng.gen_range(0..=60),
         output,
+        attitude: false,
     }
 }
 

@@ -30,6 +30,7 @@ use builder::{show, Builder, NotStarted};
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CountCheck {
     /// The parameter value (the middle of an interval between consecutive events).
     pub s: f64,
@@ -52,6 +53,7 @@ pub struct CountCheck {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CheckedDiagram {
     /// The diagram.
     pub diagram: BifurcationDiagram,

@@ -1,0 +1,278 @@
+//! Figures of one motion: the apex locus (the path of a body axis on the unit sphere in space,
+//! seen from above) and the time histories of γ, ω and the drifts of the first integrals.
+//! Readable without colour: every curve has its own line style.
+
+use std::path::Path;
+
+use plotters::element::{DashedPathElement, DottedPathElement};
+use plotters::prelude::*;
+
+use super::{drawing_error, PlotError, PlotOptions};
+use crate::nalgebra::UnitQuaternion;
+use crate::{Trajectory, Vector3};
+
+/// The points `R(t) a` (space coordinates) of the body axis `a` along the attitudes.
+pub fn apex_path(attitude: &[UnitQuaternion<f64>], body_axis: &Vector3<f64>) -> Vec<Vector3<f64>> {
+    let a = body_axis.normalize();
+    attitude.iter().map(|q| q * a).collect()
+}
+
+/// Draws the apex locus: the path on the unit sphere in space of the body axis `body_axis`
+/// (the symmetry axis `e₃` of a top: `Vector3::z()`), in orthographic projection seen from above
+/// (x to the right, y up), as an SVG file.
+///
+/// The part of the path on the upper hemisphere (z ≥ 0) is a solid line, the part below a
+/// dotted line; the start is a ring, the end a filled dot; the horizon (the equator, |x| = 1)
+/// is dashed when it falls in the frame. The frame is the locus's extent, square, padded, so the
+/// loops, cusps or waves of a top show at any tilt. `opts.title` is the caption.
+///
+/// `attitude` is [`Trajectory::attitude`] or
+/// [`ReducedTrajectory::attitude`](crate::ReducedTrajectory::attitude) of a run with
+/// [`SimOptions::attitude`](crate::SimOptions::attitude).
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] without attitude (the run did not integrate it),
+/// [`PlotError::InvalidData`] for a non-finite attitude or a zero axis, [`PlotError::Io`] and
+/// [`PlotError::Drawing`] from writing.
+pub fn apex_locus_svg<P: AsRef<Path>>(
+    attitude: &[UnitQuaternion<f64>],
+    body_axis: Vector3<f64>,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    if attitude.is_empty() {
+        return Err(PlotError::EmptyData(
+            "no attitude: simulate with SimOptions::attitude = true",
+        ));
+    }
+    if !(body_axis.norm() > 0.0 && body_axis.iter().all(|x| x.is_finite())) {
+        return Err(PlotError::InvalidData(format!(
+            "body axis {body_axis:?} is not a finite non-zero vector"
+        )));
+    }
+    let pts = apex_path(attitude, &body_axis);
+    if pts.iter().any(|p| !p.iter().all(|x| x.is_finite())) {
+        return Err(PlotError::InvalidData("non-finite attitude".into()));
+    }
+    check_size(opts)?;
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for p in &pts {
+        x0 = x0.min(p.x);
+        x1 = x1.max(p.x);
+        y0 = y0.min(p.y);
+        y1 = y1.max(p.y);
+    }
+    let half = (0.5 * (x1 - x0).max(y1 - y0)).max(1e-3) * 1.1;
+    let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+    let (xr, yr) = ((cx - half)..(cx + half), (cy - half)..(cy + half));
+    let side = opts.width.min(opts.height);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (side, side)).into_drawing_area();
+        root.fill(&WHITE).map_err(drawing_error)?;
+        let mut b = ChartBuilder::on(&root);
+        if !opts.title.is_empty() {
+            b.caption(&opts.title, ("sans-serif", 18));
+        }
+        let mut chart = b
+            .margin(15)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(xr.clone(), yr.clone())
+            .map_err(drawing_error)?;
+        chart
+            .configure_mesh()
+            .x_desc("x (space, horizontal)")
+            .y_desc("y (space, horizontal)")
+            .light_line_style(RGBColor(238, 238, 238))
+            .bold_line_style(RGBColor(215, 215, 215))
+            .draw()
+            .map_err(drawing_error)?;
+        // The horizon |(x, y)| = 1, where it falls in the frame.
+        let horizon: Vec<(f64, f64)> = (0..=720)
+            .map(|k| {
+                let a = k as f64 / 720.0 * std::f64::consts::TAU;
+                (a.cos(), a.sin())
+            })
+            .collect();
+        if horizon
+            .iter()
+            .any(|&(x, y)| xr.contains(&x) && yr.contains(&y))
+        {
+            chart
+                .draw_series(std::iter::once(DashedPathElement::new(
+                    horizon,
+                    6,
+                    6,
+                    ShapeStyle::from(&RGBColor(120, 120, 120)).stroke_width(1),
+                )))
+                .map_err(drawing_error)?;
+        }
+        // The locus, split where it crosses the horizon.
+        let mut runs: Vec<(bool, Vec<(f64, f64)>)> = Vec::new();
+        for p in &pts {
+            let upper = p.z >= 0.0;
+            match runs.last_mut() {
+                Some((u, run)) if *u == upper => run.push((p.x, p.y)),
+                _ => runs.push((upper, vec![(p.x, p.y)])),
+            }
+        }
+        let ink = ShapeStyle::from(&BLACK).stroke_width(2);
+        for (upper, run) in runs {
+            if upper {
+                chart
+                    .draw_series(std::iter::once(PathElement::new(run, ink)))
+                    .map_err(drawing_error)?;
+            } else {
+                chart
+                    .draw_series(std::iter::once(DottedPathElement::new(run, 0, 6, |c| {
+                        Circle::new(c, 1, BLACK.filled())
+                    })))
+                    .map_err(drawing_error)?;
+            }
+        }
+        let (s, e) = (pts[0], pts[pts.len() - 1]);
+        chart
+            .draw_series([
+                Circle::new((s.x, s.y), 6, ShapeStyle::from(&BLACK).stroke_width(2)),
+                Circle::new((e.x, e.y), 4, BLACK.filled()),
+            ])
+            .map_err(drawing_error)?;
+        root.present().map_err(drawing_error)?;
+    }
+    std::fs::write(path, svg)?;
+    Ok(())
+}
+
+/// One panel of [`time_histories_svg`]: its axis label and its named curves.
+type Panel<'a> = (&'a str, Vec<(&'a str, Vec<f64>)>);
+
+fn check_size(opts: &PlotOptions) -> Result<(), PlotError> {
+    if opts.width < 250 || opts.height < 250 {
+        return Err(PlotError::InvalidOptions(format!(
+            "a figure of {}×{} pixels is too small (at least 250×250)",
+            opts.width, opts.height
+        )));
+    }
+    Ok(())
+}
+
+/// Draws the time histories of a full simulation in three panels, one above the other: γ₁, γ₂,
+/// γ₃; ω₁, ω₂, ω₃ (solid, dashed, dotted in that order); and `log₁₀` of the drifts
+/// `|E(t) − E(0)|` (solid) and `|p_ψ(t) − p_ψ(0)|` (dashed) of the energy (3) and the cyclic
+/// momentum (9), floored at 1e−18.
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] for an empty trajectory, [`PlotError::InvalidOptions`] for a figure
+/// smaller than 250×250, [`PlotError::Io`] and [`PlotError::Drawing`] from writing.
+pub fn time_histories_svg<P: AsRef<Path>>(
+    traj: &Trajectory,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    if traj.is_empty() {
+        return Err(PlotError::EmptyData("empty trajectory"));
+    }
+    check_size(opts)?;
+    let t = &traj.t;
+    let comp = |v: &[Vector3<f64>], i: usize| -> Vec<f64> { v.iter().map(|x| x[i]).collect() };
+    let drift = |x: &[f64]| -> Vec<f64> {
+        x.iter()
+            .map(|v| (v - x[0]).abs().max(1e-18).log10())
+            .collect()
+    };
+    let panels: [Panel; 3] = [
+        (
+            "γ (body frame)",
+            vec![
+                ("γ₁", comp(&traj.gamma, 0)),
+                ("γ₂", comp(&traj.gamma, 1)),
+                ("γ₃", comp(&traj.gamma, 2)),
+            ],
+        ),
+        (
+            "ω (body frame)",
+            vec![
+                ("ω₁", comp(&traj.omega, 0)),
+                ("ω₂", comp(&traj.omega, 1)),
+                ("ω₃", comp(&traj.omega, 2)),
+            ],
+        ),
+        (
+            "log₁₀ drift",
+            vec![
+                ("|E − E₀|", drift(&traj.energy)),
+                ("|p_ψ − p_ψ₀|", drift(&traj.p_psi)),
+            ],
+        ),
+    ];
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (opts.width, opts.height)).into_drawing_area();
+        root.fill(&WHITE).map_err(drawing_error)?;
+        let root = if opts.title.is_empty() {
+            root
+        } else {
+            root.titled(&opts.title, ("sans-serif", 18))
+                .map_err(drawing_error)?
+        };
+        let areas = root.split_evenly((3, 1));
+        let (t0, t1) = (t[0], t[t.len() - 1].max(t[0] + 1e-12));
+        for (area, (label, curves)) in areas.iter().zip(panels) {
+            let finite = curves
+                .iter()
+                .flat_map(|(_, v)| v.iter())
+                .filter(|v| v.is_finite());
+            let (lo, hi) = finite.fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+            let (lo, hi) = if lo <= hi { (lo, hi) } else { (-1.0, 1.0) };
+            let pad = ((hi - lo) * 0.05).max(1e-9);
+            let mut chart = ChartBuilder::on(area)
+                .margin(8)
+                .x_label_area_size(30)
+                .y_label_area_size(60)
+                .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
+                .map_err(drawing_error)?;
+            chart
+                .configure_mesh()
+                .x_desc("t")
+                .y_desc(label)
+                .light_line_style(RGBColor(238, 238, 238))
+                .bold_line_style(RGBColor(215, 215, 215))
+                .draw()
+                .map_err(drawing_error)?;
+            for (k, (name, ys)) in curves.into_iter().enumerate() {
+                let pts: Vec<(f64, f64)> = t.iter().copied().zip(ys).collect();
+                let style = ShapeStyle::from(&BLACK).stroke_width(if k == 0 { 2 } else { 1 });
+                let legend_style = style;
+                let drawn =
+                    match k {
+                        0 => chart.draw_series(std::iter::once(PathElement::new(pts, style))),
+                        1 => chart
+                            .draw_series(std::iter::once(DashedPathElement::new(pts, 8, 5, style))),
+                        _ => chart
+                            .draw_series(std::iter::once(DashedPathElement::new(pts, 2, 4, style))),
+                    }
+                    .map_err(drawing_error)?;
+                drawn.label(name).legend(move |(x, y)| match k {
+                    0 => PathElement::new(vec![(x, y), (x + 20, y)], legend_style).into_dyn(),
+                    1 => DashedPathElement::new(vec![(x, y), (x + 20, y)], 8, 5, legend_style)
+                        .into_dyn(),
+                    _ => DashedPathElement::new(vec![(x, y), (x + 20, y)], 2, 4, legend_style)
+                        .into_dyn(),
+                });
+            }
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.8))
+                .border_style(BLACK)
+                .position(SeriesLabelPosition::UpperRight)
+                .draw()
+                .map_err(drawing_error)?;
+        }
+        root.present().map_err(drawing_error)?;
+    }
+    std::fs::write(path, svg)?;
+    Ok(())
+}

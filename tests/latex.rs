@@ -1,0 +1,521 @@
+//! The LaTeX of `DerivedFormulas::latex()` evaluated by an independent parser of the LaTeX
+//! subset it uses (numbers, symbols with subscripts, + −, products by juxtaposition, `\frac`,
+//! `^`, `\sqrt`, `\left( \right)`, `\left| \right|`, elementary functions, `pmatrix`) and
+//! compared with the generated functions at random points (unit γ: the formulas are simplified
+//! with |γ|² = 1), for every paper model: the Lagrange and asymmetric tops, the gyrostat, the
+//! ellipsoid on a plane, the body in a fluid.
+
+use std::collections::HashMap;
+
+use derived_models::{
+    AsymmetricTop, DiagonalEllipsoid, Ellipsoid, FluidBody, Gyrostat, LagrangeTop,
+};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use routh::{DerivedFormulas, Matrix3, Routhian, Vector3};
+
+// ---------------------------------------------------------------- the LaTeX-subset evaluator
+
+#[derive(Clone, Debug, PartialEq)]
+enum Tok {
+    Num(f64),
+    /// A symbol's base: a letter, a Greek command, or the text of `\mathit{…}`.
+    Sym(String),
+    Cmd(String),
+    Ch(char),
+}
+
+fn lex(s: &str) -> Vec<Tok> {
+    let c: Vec<char> = s.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < c.len() {
+        let ch = c[i];
+        if ch.is_whitespace() {
+            i += 1;
+        } else if ch == '\\' {
+            let start = i + 1;
+            let mut j = start;
+            while j < c.len() && c[j].is_ascii_alphabetic() {
+                j += 1;
+            }
+            if j == start {
+                // `\\`, `\_`, `\,` …
+                out.push(Tok::Cmd(c[start].to_string()));
+                i = start + 1;
+                continue;
+            }
+            let name: String = c[start..j].iter().collect();
+            i = j;
+            match name.as_str() {
+                "mathit" | "operatorname" | "text" => {
+                    assert_eq!(c[i], '{', "{s}");
+                    let mut k = i + 1;
+                    while c[k] != '}' {
+                        k += 1;
+                    }
+                    let raw: String = c[i + 1..k].iter().collect();
+                    let raw = raw.replace("\\_", "_");
+                    i = k + 1;
+                    match name.as_str() {
+                        "mathit" => out.push(Tok::Sym(raw)),
+                        "text" => panic!("formula not printed: {raw}"),
+                        _ => out.push(Tok::Cmd(raw)),
+                    }
+                }
+                "gamma" | "omega" | "Omega" | "psi" => out.push(Tok::Sym(format!("\\{name}"))),
+                _ => out.push(Tok::Cmd(name)),
+            }
+        } else if ch.is_ascii_digit() || ch == '.' {
+            let mut j = i;
+            while j < c.len() && (c[j].is_ascii_digit() || c[j] == '.') {
+                j += 1;
+            }
+            let t: String = c[i..j].iter().collect();
+            out.push(Tok::Num(t.parse().unwrap()));
+            i = j;
+        } else if ch.is_ascii_alphabetic() {
+            out.push(Tok::Sym(ch.to_string()));
+            i += 1;
+        } else {
+            out.push(Tok::Ch(ch));
+            i += 1;
+        }
+    }
+    out
+}
+
+struct Parser<'a> {
+    t: Vec<Tok>,
+    at: usize,
+    env: &'a HashMap<String, f64>,
+    src: &'a str,
+}
+
+impl Parser<'_> {
+    fn peek(&self) -> Option<&Tok> {
+        self.t.get(self.at)
+    }
+    fn next(&mut self) -> Tok {
+        let t = self.t.get(self.at).cloned();
+        self.at += 1;
+        t.unwrap_or_else(|| panic!("unexpected end in {}", self.src))
+    }
+    fn expect(&mut self, want: Tok) {
+        let got = self.next();
+        assert_eq!(got, want, "at token {} of {}", self.at, self.src);
+    }
+    fn expr(&mut self) -> f64 {
+        let mut sign = 1.0;
+        if self.peek() == Some(&Tok::Ch('-')) {
+            self.at += 1;
+            sign = -1.0;
+        }
+        let mut v = sign * self.term();
+        loop {
+            match self.peek() {
+                Some(Tok::Ch('+')) => {
+                    self.at += 1;
+                    v += self.term();
+                }
+                Some(Tok::Ch('-')) => {
+                    self.at += 1;
+                    v -= self.term();
+                }
+                _ => return v,
+            }
+        }
+    }
+    fn starts_factor(&self) -> bool {
+        match self.peek() {
+            Some(Tok::Num(_)) | Some(Tok::Sym(_)) | Some(Tok::Ch('{')) => true,
+            Some(Tok::Cmd(c)) => matches!(
+                c.as_str(),
+                "frac" | "sqrt" | "left" | "sin" | "cos" | "tan" | "exp" | "ln" | "sgn" | "cdot"
+            ),
+            _ => false,
+        }
+    }
+    fn term(&mut self) -> f64 {
+        let mut v = self.factor();
+        while self.starts_factor() {
+            if self.peek() == Some(&Tok::Cmd("cdot".into())) {
+                self.at += 1;
+            }
+            v *= self.factor();
+        }
+        v
+    }
+    fn factor(&mut self) -> f64 {
+        let base = self.primary();
+        if self.peek() == Some(&Tok::Ch('^')) {
+            self.at += 1;
+            let e = match self.next() {
+                Tok::Ch('{') => {
+                    let e = self.expr();
+                    self.expect(Tok::Ch('}'));
+                    e
+                }
+                Tok::Num(n) => n,
+                t => panic!("exponent {t:?} in {}", self.src),
+            };
+            return base.powf(e);
+        }
+        base
+    }
+    fn group(&mut self) -> f64 {
+        self.expect(Tok::Ch('{'));
+        let v = self.expr();
+        self.expect(Tok::Ch('}'));
+        v
+    }
+    /// The text of a subscript: `_1`, `_{11}`, `_\psi`.
+    fn subscript(&mut self) -> String {
+        match self.next() {
+            Tok::Num(n) => format!("{n}"),
+            Tok::Sym(s) => s,
+            Tok::Ch('{') => {
+                let mut s = String::new();
+                loop {
+                    match self.next() {
+                        Tok::Ch('}') => return s,
+                        Tok::Num(n) => s.push_str(&format!("{n}")),
+                        Tok::Sym(x) => s.push_str(&x),
+                        t => panic!("subscript {t:?} in {}", self.src),
+                    }
+                }
+            }
+            t => panic!("subscript {t:?} in {}", self.src),
+        }
+    }
+    fn primary(&mut self) -> f64 {
+        match self.next() {
+            Tok::Num(n) => n,
+            Tok::Sym(base) => {
+                let key = if self.peek() == Some(&Tok::Ch('_')) {
+                    self.at += 1;
+                    format!("{base}_{}", self.subscript())
+                } else {
+                    base
+                };
+                *self
+                    .env
+                    .get(&key)
+                    .unwrap_or_else(|| panic!("unknown symbol {key} in {}", self.src))
+            }
+            Tok::Ch('{') => {
+                let v = self.expr();
+                self.expect(Tok::Ch('}'));
+                v
+            }
+            Tok::Cmd(c) => match c.as_str() {
+                "frac" => {
+                    let a = self.group();
+                    let b = self.group();
+                    a / b
+                }
+                "sqrt" => self.group().sqrt(),
+                "left" => match self.next() {
+                    Tok::Ch('(') => {
+                        let v = self.expr();
+                        self.expect(Tok::Cmd("right".into()));
+                        self.expect(Tok::Ch(')'));
+                        v
+                    }
+                    Tok::Ch('|') => {
+                        let v = self.expr();
+                        self.expect(Tok::Cmd("right".into()));
+                        self.expect(Tok::Ch('|'));
+                        v.abs()
+                    }
+                    t => panic!("\\left{t:?} in {}", self.src),
+                },
+                "sin" => self.primary().sin(),
+                "cos" => self.primary().cos(),
+                "tan" => self.primary().tan(),
+                "exp" => self.primary().exp(),
+                "ln" => self.primary().ln(),
+                "sgn" => {
+                    let x = self.primary();
+                    if x == 0.0 {
+                        0.0
+                    } else {
+                        x.signum()
+                    }
+                }
+                _ => panic!("command \\{c} in {}", self.src),
+            },
+            t => panic!("unexpected {t:?} at token {} in {}", self.at, self.src),
+        }
+    }
+}
+
+/// The value of a LaTeX expression.
+fn eval(src: &str, env: &HashMap<String, f64>) -> f64 {
+    let mut p = Parser {
+        t: lex(src),
+        at: 0,
+        env,
+        src,
+    };
+    let v = p.expr();
+    assert_eq!(p.at, p.t.len(), "trailing tokens in {src}");
+    v
+}
+
+/// The value of a `\begin{pmatrix} … \end{pmatrix}`.
+fn eval_matrix(src: &str, env: &HashMap<String, f64>) -> Matrix3<f64> {
+    let body = src
+        .trim()
+        .strip_prefix("\\begin{pmatrix}")
+        .and_then(|s| s.strip_suffix("\\end{pmatrix}"))
+        .unwrap_or_else(|| panic!("not a pmatrix: {src}"));
+    let rows: Vec<&str> = body.split("\\\\").collect();
+    assert_eq!(rows.len(), 3, "{src}");
+    let mut m = Matrix3::zeros();
+    for (i, row) in rows.iter().enumerate() {
+        let cells: Vec<&str> = row.split('&').collect();
+        assert_eq!(cells.len(), 3, "{src}");
+        for (j, cell) in cells.iter().enumerate() {
+            m[(i, j)] = eval(cell, env);
+        }
+    }
+    m
+}
+
+#[test]
+fn the_evaluator_reads_its_subset() {
+    let env: HashMap<String, f64> = [
+        ("\\gamma_1".to_string(), 0.5),
+        ("I_11".to_string(), 2.0),
+        ("p_\\psi".to_string(), 3.0),
+        ("mgl".to_string(), 4.0),
+    ]
+    .into_iter()
+    .collect();
+    let v = eval(
+        "\\frac{1}{2} I_{11} \\gamma_1^{2} - \\frac{p_\\psi^{2}}{\\left(1 + \\gamma_1\\right)} + \\sqrt{\\mathit{mgl}}",
+        &env,
+    );
+    assert!((v - (0.25 - 9.0 / 1.5 + 2.0)).abs() < 1e-15);
+}
+
+// ---------------------------------------------------------------- the models
+
+/// Symbol values: scalars `name`, vectors `name_i`, matrices `name_ij` (from 1).
+#[derive(Default)]
+struct Env(HashMap<String, f64>);
+
+impl Env {
+    fn scalar(&mut self, name: &str, v: f64) -> &mut Self {
+        self.0.insert(name.to_string(), v);
+        self
+    }
+    fn vector(&mut self, name: &str, v: &Vector3<f64>) -> &mut Self {
+        for i in 0..3 {
+            self.0.insert(format!("{name}_{}", i + 1), v[i]);
+        }
+        self
+    }
+    fn matrix(&mut self, name: &str, m: &Matrix3<f64>) -> &mut Self {
+        for i in 0..3 {
+            for j in 0..3 {
+                self.0
+                    .insert(format!("{name}_{}{}", i + 1, j + 1), m[(i, j)]);
+            }
+        }
+        self
+    }
+}
+
+fn unit(rng: &mut ChaCha8Rng) -> Vector3<f64> {
+    loop {
+        let v = Vector3::from_fn(|_, _| rng.gen_range(-1.0..1.0));
+        if v.norm() > 0.2 && v.norm() < 1.0 {
+            return v.normalize();
+        }
+    }
+}
+
+fn close(a: f64, b: f64, scale: f64, what: &str) {
+    assert!(
+        (a - b).abs() <= 1e-9 * scale.max(1.0),
+        "{what}: LaTeX {a} vs generated {b}"
+    );
+}
+
+/// Evaluates every printed formula of `model` at random points against the generated code;
+/// returns how many formulas were printed (a formula too large to read is a `\text`).
+fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usize {
+    let f = model.latex();
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let printed = |s: &str| !s.contains("\\text");
+    let mut count = 0;
+    for s in [
+        &f.lagrangian,
+        &f.psi_dot,
+        &f.routhian,
+        &f.amended_potential,
+        &f.a,
+        &f.g,
+        &f.c,
+    ] {
+        assert!(!s.is_empty(), "{name}: empty formula");
+        count += usize::from(printed(s));
+    }
+    for _ in 0..20 {
+        let gamma = unit(&mut rng);
+        let w = Vector3::from_fn(|_, _| rng.gen_range(-2.0..2.0));
+        let p = rng.gen_range(-3.0..3.0);
+        let mut e = env.0.clone();
+        for i in 0..3 {
+            e.insert(format!("\\gamma_{}", i + 1), gamma[i]);
+            e.insert(format!("\\omega_{}", i + 1), w[i]);
+            e.insert(format!("\\Omega_{}", i + 1), w[i]);
+        }
+        e.insert("p_\\psi".to_string(), p);
+        if printed(&f.lagrangian) {
+            let want = model.lagrangian(&w, &gamma);
+            close(
+                eval(&f.lagrangian, &e),
+                want,
+                want.abs(),
+                &format!("{name} L"),
+            );
+        }
+        if printed(&f.psi_dot) {
+            let want = model.psi_dot(&w, &gamma, p);
+            close(eval(&f.psi_dot, &e), want, want.abs(), &format!("{name} ψ̇"));
+        }
+        if printed(&f.routhian) {
+            let want = model.routhian(&w, &gamma, p);
+            close(
+                eval(&f.routhian, &e),
+                want,
+                want.abs(),
+                &format!("{name} R"),
+            );
+        }
+        if printed(&f.amended_potential) {
+            let want = model.amended_potential(&gamma, p);
+            close(
+                eval(&f.amended_potential, &e),
+                want,
+                want.abs(),
+                &format!("{name} U_r"),
+            );
+        }
+        let sys = model.gyroscopic_system(&gamma, p);
+        for (tex, m, what) in [(&f.a, sys.a, "A"), (&f.g, sys.g, "G"), (&f.c, sys.c, "C")] {
+            if printed(tex) {
+                let got = eval_matrix(tex, &e);
+                let scale = m.amax();
+                for k in 0..9 {
+                    close(got[k], m[k], scale, &format!("{name} {what}"));
+                }
+            }
+        }
+    }
+    eprintln!(
+        "{name}: {count}/7 formulas printed and checked; U_r = {}",
+        f.amended_potential
+    );
+    count
+}
+
+#[test]
+fn lagrange_top() {
+    let top = LagrangeTop::with_mgl(1.3, 0.7, 2.1);
+    let mut env = Env::default();
+    env.scalar("A_1", top.a1)
+        .scalar("C", top.c)
+        .scalar("mass", top.mass)
+        .scalar("g", top.g)
+        .scalar("l", top.l);
+    assert_eq!(check("Lagrange top", &top, &env), 7);
+    let f = top.latex();
+    eprintln!("{f:#?}");
+    // The field symbols and the |γ|² = 1 rule: ψ̇ at rest has the denominator A₁ + (C − A₁)γ₃²,
+    // no γ₁² or γ₂².
+    assert!(f.lagrangian.contains("A_1") && f.lagrangian.contains("\\mathit{mass}"));
+    assert!(
+        !f.amended_potential.contains("\\gamma_1"),
+        "{}",
+        f.amended_potential
+    );
+}
+
+#[test]
+fn asymmetric_top() {
+    let top = AsymmetricTop {
+        inertia: Vector3::new(1.0, 2.0, 3.5),
+        mass: 1.2,
+        g: 9.81,
+        com: Vector3::new(0.3, -0.2, 0.5),
+    };
+    let mut env = Env::default();
+    env.vector("inertia", &top.inertia)
+        .vector("com", &top.com)
+        .scalar("mass", top.mass)
+        .scalar("g", top.g);
+    assert_eq!(check("asymmetric top", &top, &env), 7);
+}
+
+#[test]
+fn gyrostat() {
+    let twin = test_models::Gyrostat::random(&mut ChaCha8Rng::seed_from_u64(3));
+    let m = Gyrostat::from(&twin);
+    let mut env = Env::default();
+    env.matrix("I", &m.inertia)
+        .vector("rotor", &m.rotor)
+        .matrix("coupling", &m.coupling)
+        .vector("com", &m.com)
+        .scalar("mass", m.mass)
+        .scalar("g", m.g);
+    assert!(check("gyrostat", &m, &env) >= 4);
+    assert!(m.latex().lagrangian.contains("I_{11}"));
+}
+
+#[test]
+fn ellipsoids() {
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let d = DiagonalEllipsoid::random(&mut rng);
+    let mut env = Env::default();
+    env.vector("inertia", &d.inertia)
+        .vector("semi_axes", &d.semi_axes)
+        .vector("offset", &d.offset)
+        .scalar("mass", d.mass)
+        .scalar("g", d.g);
+    assert!(check("diagonal ellipsoid", &d, &env) >= 2);
+    let e = Ellipsoid {
+        inertia: Matrix3::from_diagonal(&d.inertia),
+        semi_axes: d.semi_axes,
+        offset: d.offset,
+        mass: d.mass,
+        g: d.g,
+    };
+    let mut env = Env::default();
+    env.matrix("inertia", &e.inertia)
+        .vector("semi_axes", &e.semi_axes)
+        .vector("offset", &e.offset)
+        .scalar("mass", e.mass)
+        .scalar("g", e.g);
+    assert!(check("ellipsoid", &e, &env) >= 2);
+}
+
+#[test]
+fn fluid_body() {
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let mut spd = || {
+        let a = Matrix3::from_fn(|_, _| rng.gen_range(-0.5..0.5));
+        a * a.transpose() + Matrix3::identity() * 2.0
+    };
+    let (a_kin, pot) = (spd(), spd());
+    let lin = Matrix3::from_fn(|i, j| (i as f64 - j as f64) * 0.3 + 0.1);
+    let b = FluidBody { a_kin, lin, pot };
+    let mut env = Env::default();
+    env.matrix("a_kin", &b.a_kin)
+        .matrix("lin", &b.lin)
+        .matrix("pot", &b.pot);
+    assert!(check("body in a fluid", &b, &env) >= 4);
+}
