@@ -549,3 +549,17 @@ impl Lowerer<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The error message's list of methods names every elementary function a text may call
+    /// (the functions themselves are `routh_tape::Func`, the one list).
+    #[test]
+    fn methods_list_every_dsl_function() {
+        for f in Func::ALL.into_iter().filter(|f| f.is_dsl_method()) {
+            assert!(METHODS.split(", ").any(|m| m == f.name()), "{}", f.name());
+        }
+    }
+}
