@@ -114,6 +114,9 @@ pub(crate) struct Compiled {
     pub routh: Tape,
     /// `L`, `U_r` and `ψ̇` at rest after simplification, as the derive's `DerivedFormulas`.
     pub formulas: [String; 3],
+    /// The formulas in LaTeX, every parameter printed as `\mathit{name}` (the model's own
+    /// symbols are put in by [`Model::latex`](crate::Model::latex)).
+    pub latex: routh_codegen::latex::LatexText,
 }
 
 /// The deepest nesting of brackets accepted: deeper texts are refused before they are lexed
@@ -373,5 +376,6 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
         certification: routh_codegen::tape::certification(sym, o)?,
         routh: routh_codegen::tape::routhian(sym, o)?,
         formulas,
+        latex: routh_codegen::latex::latex_formulas(m, &[]),
     })
 }

@@ -195,6 +195,54 @@ impl Model {
         &self.latex
     }
 
+    /// The derived formulas in LaTeX, printed from the same DAG as the evaluation: `L`, `ψ̇` (38),
+    /// `R` (14), `U_r` (34) and `A`, `G`, `C` of (64) as `pmatrix`es (the derive's
+    /// `DerivedFormulas::latex`). A parameter prints as the symbol the TOML's `[latex]` table gives
+    /// it, else as `\mathit{name}`; components are subscripted (`I_{11}`, `\gamma_3`).
+    ///
+    /// ```
+    /// let top = routh_runtime::Model::from_toml(r#"
+    /// [model]
+    /// lagrangian = "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z"
+    /// [parameters]
+    /// inertia = [1.0, 1.0, 1.25]
+    /// mgl = 1.0
+    /// [latex]
+    /// inertia = "I"
+    /// "#)?;
+    /// let f = top.latex();
+    /// assert!(f.amended_potential.contains("I_{"));
+    /// assert!(f.amended_potential.contains(r"\mathit{mgl}"));
+    /// # Ok::<(), routh_runtime::ModelError>(())
+    /// ```
+    pub fn latex(&self) -> routh_core::LatexFormulas {
+        let symbols: Vec<(String, String)> = self
+            .latex
+            .iter()
+            .map(|(name, symbol)| {
+                (
+                    format!("\\mathit{{{}}}", name.replace('_', "\\_")),
+                    symbol.clone(),
+                )
+            })
+            .collect();
+        let put = |s: &str| {
+            symbols
+                .iter()
+                .fold(s.to_string(), |acc, (from, to)| acc.replace(from.as_str(), to))
+        };
+        let t = &self.compiled.latex;
+        routh_core::LatexFormulas {
+            lagrangian: put(&t.lagrangian),
+            psi_dot: put(&t.psi_dot),
+            routhian: put(&t.routhian),
+            amended_potential: put(&t.amended_potential),
+            a: put(&t.a),
+            g: put(&t.g),
+            c: put(&t.c),
+        }
+    }
+
     /// `L`, the amended potential `U_r(γ, p_ψ)` (34) and `ψ̇` at rest (38) after simplification,
     /// as text (the derive's `DerivedFormulas`).
     pub fn formulas(&self) -> [&str; 3] {
