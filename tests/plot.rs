@@ -152,6 +152,7 @@ fn full_diagram() -> BifurcationDiagram {
             ),
             event(EventKind::Fold, 5.0, 2.0, 2, Unstable, SecularlyStable),
         ],
+        stop: None,
     }
 }
 
@@ -425,6 +426,7 @@ fn errors() {
             isolated: true,
         }],
         events: vec![],
+        stop: None,
     };
     assert!(matches!(
         energy_momentum_svg(&hollow, &path, &opts),

@@ -31,7 +31,7 @@ pub use error::RouthError;
 pub use families::{
     bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions,
-    EventKind, StabilityAtlas,
+    EventKind, StabilityAtlas, StopReason,
 };
 pub use model::{
     DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
