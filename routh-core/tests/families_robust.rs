@@ -48,3 +48,16 @@ fn repro_spherical() {
         println!("{:?}", d.map(|d| d.events.len()));
     }
 }
+
+#[test]
+fn repro_overcount() {
+    let t = top(1.247881732184984, 1.879983826181486, 2.8811622028312702, Vector3::new(0.0, 0.0, 0.522814257247007));
+    let d = bifurcation_diagram(|p| (t.clone(), p), (1.6388759567102462, 2.5251716398162674), &ContinuationOptions::default()).unwrap();
+    for e in &d.events { println!("{e}"); }
+    for b in &d.branches {
+        println!("branch iso {} n {}", b.isolated, b.points.len());
+        for q in &b.points { println!("   s {:.6} g {:.5} {:.5} {:.5}", q.s, q.steady.gamma.x, q.steady.gamma.y, q.steady.gamma.z); }
+    }
+    println!("{}", d.count_at(1.98));
+    for m in steady_motions(&t, 1.98).unwrap() { println!("{m}"); }
+}

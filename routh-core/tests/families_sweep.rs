@@ -6,7 +6,7 @@
 //! a grid on the sphere, with its Morse self-check).
 //!
 //! `cargo test -p routh-core --test families_sweep` runs 150 bodies;
-//! `cargo test -p routh-core --release --test families_sweep -- --ignored` runs 1000.
+//! `cargo test -p routh-core --test families_sweep -- --ignored` runs 1000.
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -175,7 +175,7 @@ fn sweep_of_150_random_tops_never_fails_and_counts_right() {
 }
 
 #[test]
-#[ignore = "1000 bodies: minutes; run with --release -- --ignored"]
+#[ignore = "1000 bodies: minutes; run with -- --ignored"]
 fn sweep_of_1000_random_tops_never_fails_and_counts_right() {
     let failures = sweep(1000, 2020);
     assert!(failures.is_empty(), "{} failures", failures.len());

@@ -184,6 +184,16 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         if isolated == zero {
             return Ok(Some(NotStarted::Degenerate));
         }
+        // A point of a circle keeps its zero eigenvalue along the branch; a degenerate isolated
+        // point that the search took for a point of a curve (the tip of a pitchfork, where the
+        // amended potential is quartic along the kernel of K) loses it one step away.
+        if !isolated {
+            if let Some(next) = ctx.advance(&start, 1e-3)? {
+                if next.eig.iter().all(|e| e.abs() > 1e-6) {
+                    return Ok(Some(NotStarted::Degenerate));
+                }
+            }
+        }
         self.follow(&ctx, start)?;
         Ok(None)
     }
