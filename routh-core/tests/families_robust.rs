@@ -3,7 +3,8 @@
 //! against closed forms (the Kovalevskaya top, the asymmetric prolate top) and the global search.
 
 use routh_core::{
-    bifurcation_diagram, steady_motions, ContinuationOptions, EventKind, Matrix3, Vector3,
+    bifurcation_diagram, steady_motions, BifurcationDiagram, ContinuationOptions, EventKind,
+    Matrix3, Vector3,
 };
 use test_models::HeavyTop;
 
@@ -14,50 +15,154 @@ fn top(a: f64, b: f64, c: f64, mgr: Vector3<f64>) -> HeavyTop {
     }
 }
 
+fn events(d: &BifurcationDiagram, kind: EventKind) -> Vec<f64> {
+    d.events
+        .iter()
+        .filter(|e| e.kind == kind)
+        .map(|e| e.s)
+        .collect()
+}
+
+/// Whether some branch other than `not` has a point at `(s, gamma)` (to 1e−9 in s, 1e−6 in γ).
+fn passes_through(d: &BifurcationDiagram, not: usize, s: f64, gamma: &Vector3<f64>) -> bool {
+    d.branches.iter().enumerate().any(|(i, b)| {
+        i != not
+            && b.points.iter().any(|q| {
+                (q.s - s).abs() <= 1e-9 * s.abs().max(1.0) && (q.steady.gamma - gamma).norm() < 1e-6
+            })
+    })
+}
+
+/// The Kovalevskaya top J = diag(2, 2, 1), U = γ₁ over p ∈ [0, 4], default options (seeds at
+/// p = 0, 1, 2, 3, 4: p = 2 is exactly its pitchfork). U_r = ½p²/(2 − γ₃²) + γ₁ on the sphere:
+/// its critical points have γ₂ = 0 (the γ₂ component of ∇U_r = λγ forces λ = 0, impossible, or
+/// γ₂ = 0); they are γ = ±e₁ and the tilted motions x = γ₁ ∈ (0, 1) with (1 + x²)²/x = p², two
+/// per root (γ₃ = ±√(1 − x²)). The function (1 + x²)²/x has its minimum 16√3/9 at x = 1/√3 (a
+/// fold) and is 4 at x = 1 (the pitchfork on γ = e₁ at p = 2). Counts: 2 below the fold, 6
+/// between the fold and p = 2, 4 above.
 #[test]
-fn repro_kovalevskaya() {
+fn kovalevskaya_top_closed_forms() {
     let k = top(2.0, 2.0, 1.0, Vector3::x());
-    let d = bifurcation_diagram(|p| (k.clone(), p), (0.0, 4.0), &Default::default());
-    println!("{:?}", d.as_ref().map(|d| d.events.len()));
-    for e in &d.as_ref().unwrap().events {
-        println!("{e}");
+    let d = bifurcation_diagram(|p| (k.clone(), p), (0.0, 4.0), &Default::default()).unwrap();
+    assert_eq!(d.stop, None);
+    let fold = (16.0 * 3f64.sqrt() / 9.0).sqrt();
+    let folds = events(&d, EventKind::Fold);
+    assert!(!folds.is_empty());
+    for s in &folds {
+        assert!((s - fold).abs() <= 2e-10 * fold, "fold at {s}, closed form {fold}");
     }
-    let _ = EventKind::Fold;
-    let m = steady_motions(&k, 2.0).unwrap();
-    for x in &m {
-        println!("{x}");
+    let bps = events(&d, EventKind::BranchPoint);
+    assert_eq!(bps.len(), 1, "{bps:?}");
+    assert!((bps[0] - 2.0).abs() <= 4e-10, "{}", bps[0]);
+    // Every point of every branch is a steady motion of the closed form.
+    for b in &d.branches {
+        assert!(b.isolated);
+        for q in &b.points {
+            let (g, p) = (q.steady.gamma, q.s);
+            assert!(g.y.abs() < 1e-9, "γ₂ = {} at p = {p}", g.y);
+            if (g.x.abs() - 1.0).abs() > 1e-9 {
+                let x = g.x;
+                assert!(x > 0.0);
+                let r = (1.0 + x * x).powi(2) / x - p * p;
+                assert!(r.abs() < 1e-8 * (1.0 + p * p), "(1 + x²)²/x − p² = {r} at p = {p}");
+            }
+        }
+    }
+    // The tilted branch passes through the pitchfork point (p, γ) = (2, e₁).
+    let e = d
+        .events
+        .iter()
+        .find(|e| e.kind == EventKind::BranchPoint)
+        .unwrap();
+    assert!((e.gamma - Vector3::x()).norm() < 1e-9);
+    assert!(passes_through(&d, e.branch, e.s, &e.gamma));
+    // Counts from the polylines: at the closed-form values and next to the events.
+    for (s, n) in [
+        (0.5, 2),
+        (fold - 1e-5, 2),
+        (fold + 1e-5, 6),
+        (1.9, 6),
+        (2.0 - 1e-5, 6),
+        (2.0 + 1e-5, 4),
+        (3.5, 4),
+    ] {
+        assert_eq!(d.count_at(s), n, "count_at({s})");
+    }
+    for s in [0.5, 1.9, 3.5] {
+        assert_eq!(d.count_at(s), steady_motions(&k, s).unwrap().len(), "at {s}");
     }
 }
 
+/// The asymmetric prolate top J = diag(2, 2.2, 1), U = γ₃: the hanging top γ = −e₃ has its
+/// pitchforks where the curvature of U_r = ½p²/(γᵀJγ) + γ₃ at −e₃ vanishes along e₁ and e₂,
+/// p² = C²/(A − C) = 1 and p² = C²/(B − C) = 1/1.2; each starts a pair of tilted motions in the
+/// plane of its axis. Counts: 2 below 1/√1.2, 4 up to 1, 6 above.
 #[test]
-fn repro_prolate() {
+fn prolate_top_pitchfork_tips() {
     let t = top(2.0, 2.2, 1.0, Vector3::z());
-    let d = bifurcation_diagram(|p| (t.clone(), p), (0.5, 1.5), &ContinuationOptions::default());
-    println!("{:?}", d.as_ref().map(|d| d.events.len()));
-    let d = bifurcation_diagram(|p| (t.clone(), p), (0.2, 5.0), &ContinuationOptions::default()).unwrap();
-    for b in &d.branches {
-        println!("branch iso {} s {}..{} n {}", b.isolated, b.points[0].s, b.points.last().unwrap().s, b.points.len());
+    let tips = [(1.0f64 / 1.2).sqrt(), 1.0];
+    let d =
+        bifurcation_diagram(|p| (t.clone(), p), (0.2, 5.0), &ContinuationOptions::default()).unwrap();
+    assert_eq!(d.stop, None);
+    let bps = events(&d, EventKind::BranchPoint);
+    assert_eq!(bps.len(), 2, "{bps:?}");
+    for (s, exact) in bps.iter().zip(tips) {
+        assert!((s - exact).abs() <= 2e-10, "{s} vs {exact}");
+    }
+    // Both arms of each pitchfork are joined at the located tip.
+    for e in d.events.iter().filter(|e| e.kind == EventKind::BranchPoint) {
+        assert!((e.gamma + Vector3::z()).norm() < 1e-9);
+        assert!(passes_through(&d, e.branch, e.s, &e.gamma), "{e}");
+    }
+    let closed = |s: f64| 2 + tips.iter().filter(|t| s > **t).count() * 2;
+    for s in [0.5, 0.9, 0.95, 1.2, 4.0] {
+        assert_eq!(d.count_at(s), closed(s), "count_at({s})");
+        assert_eq!(steady_motions(&t, s).unwrap().len(), closed(s), "search at {s}");
+    }
+    for tip in tips {
+        for ds in [-2e-6, 2e-6] {
+            let s = tip + ds;
+            assert_eq!(d.count_at(s), closed(s), "count_at({s}) next to the tip {tip}");
+        }
+    }
+    // A range with a seed on the tip p = 1.
+    let d =
+        bifurcation_diagram(|p| (t.clone(), p), (0.5, 1.5), &ContinuationOptions::default()).unwrap();
+    assert_eq!(d.stop, None);
+    for s in [0.6, 0.95, 1.3] {
+        assert_eq!(d.count_at(s), closed(s), "count_at({s})");
     }
 }
 
+/// Symmetric bodies near a sphere over ranges around their secular bound (where a circle of
+/// tilted steady motions is born at a pole): no failure for any number of seeds, and counts that
+/// agree with the global search.
 #[test]
-fn repro_spherical() {
-    for (a, c, r) in [((2.1823, 2.1823, 2.1481)), ((0.7509, 0.7509, 2.0895))].map(|x| x).iter().zip([(11.53, 11.79), (1.583, 1.969)]).map(|(x, r)| (x.0, x.2, r)) {
+fn near_spherical_symmetric_tops() {
+    for (a, c, range) in [
+        (2.1823, 2.1481, (11.53, 11.79)),
+        (0.7509, 2.0895, (1.583, 1.969)),
+        (1.0, 1.01, (9.0, 11.0)),
+        (1.0, 0.99, (9.0, 11.0)),
+    ] {
         let t = top(a, a, c, Vector3::z());
-        let d = bifurcation_diagram(|p| (t.clone(), p), r, &ContinuationOptions::default());
-        println!("{:?}", d.map(|d| d.events.len()));
+        for seeds in [2, 5, 6, 9] {
+            let opts = ContinuationOptions {
+                seeds,
+                ..Default::default()
+            };
+            let d = bifurcation_diagram(|p| (t.clone(), p), range, &opts)
+                .unwrap_or_else(|e| panic!("({a}, {c}) over {range:?}, {seeds} seeds: {e}"));
+            assert_eq!(d.stop, None);
+            for k in 1..4 {
+                let s = range.0 + (range.1 - range.0) * (k as f64 / 4.0 + 0.013);
+                assert_eq!(
+                    d.count_at(s),
+                    steady_motions(&t, s).unwrap().len(),
+                    "({a}, {c}) at {s}, {seeds} seeds"
+                );
+            }
+        }
     }
 }
 
-#[test]
-fn repro_overcount() {
-    let t = top(1.247881732184984, 1.879983826181486, 2.8811622028312702, Vector3::new(0.0, 0.0, 0.522814257247007));
-    let d = bifurcation_diagram(|p| (t.clone(), p), (1.6388759567102462, 2.5251716398162674), &ContinuationOptions::default()).unwrap();
-    for e in &d.events { println!("{e}"); }
-    for b in &d.branches {
-        println!("branch iso {} n {}", b.isolated, b.points.len());
-        for q in &b.points { println!("   s {:.6} g {:.5} {:.5} {:.5}", q.s, q.steady.gamma.x, q.steady.gamma.y, q.steady.gamma.z); }
-    }
-    println!("{}", d.count_at(1.98));
-    for m in steady_motions(&t, 1.98).unwrap() { println!("{m}"); }
-}

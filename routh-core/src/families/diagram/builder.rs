@@ -379,7 +379,64 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         Ok(out)
     }
 
+    /// Joins the branches born at a branch point to the located event point: the node of each
+    /// other branch nearest to it (a turning point located to `event_tol` in `s`, hence only to
+    /// about `√event_tol` in γ at a pitchfork tip) is replaced by the event point, and a branch
+    /// of circles that ends next to its axis gets the event point as its end.
+    fn join_at_branch_points(&mut self) {
+        for e in &self.events {
+            if e.kind != EventKind::BranchPoint {
+                continue;
+            }
+            let Some(event_node) = self
+                .branches
+                .iter()
+                .flat_map(|(nodes, _)| nodes.iter())
+                .find(|n| n.s == e.s && n.gamma == e.gamma)
+                .cloned()
+            else {
+                continue;
+            };
+            let ds_tol = 1e-4 * e.s.abs().max(1.0);
+            for (i, (nodes, _)) in self.branches.iter_mut().enumerate() {
+                if i == e.branch || nodes.is_empty() {
+                    continue;
+                }
+                let near = |n: &Node| (n.s - e.s).abs() <= ds_tol && (n.gamma - e.gamma).norm() <= 1e-2;
+                let Some((k, _)) = nodes
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, n)| near(n))
+                    .min_by(|x, y| {
+                        let dx = (x.1.gamma - e.gamma).norm();
+                        let dy = (y.1.gamma - e.gamma).norm();
+                        dx.total_cmp(&dy)
+                    })
+                else {
+                    continue;
+                };
+                let last = nodes.len() - 1;
+                let exact = |n: &Node| n.s == e.s && n.gamma == e.gamma;
+                if exact(&nodes[k]) {
+                    continue;
+                }
+                let close = (nodes[k].gamma - e.gamma).norm() <= 1e-4;
+                if (k == 0 || k == last) && !close {
+                    // An end next to the point: extend the branch to it.
+                    if k == 0 {
+                        nodes.insert(0, event_node.clone());
+                    } else {
+                        nodes.push(event_node.clone());
+                    }
+                } else if close {
+                    nodes[k] = event_node.clone();
+                }
+            }
+        }
+    }
+
     pub(super) fn finish(mut self) -> BifurcationDiagram {
+        self.join_at_branch_points();
         self.events.sort_by(|a, b| a.s.total_cmp(&b.s));
         BifurcationDiagram {
             branches: self

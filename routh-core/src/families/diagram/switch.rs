@@ -84,6 +84,20 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         eps: f64,
         isolated: bool,
     ) -> Result<(), RouthError> {
+        // A branch of circles that already ends next to this point of its axis (traced from a
+        // seed down to where its circles shrink to the pole) is the one that would start here.
+        if !isolated {
+            let ds_tol = 1e-4 * n.s.abs().max(1.0);
+            let ends_here = self.branches.iter().any(|(nodes, iso)| {
+                !*iso
+                    && [nodes.first(), nodes.last()].into_iter().flatten().any(|e| {
+                        (e.s - n.s).abs() <= ds_tol && (e.gamma - n.gamma).norm() <= 1e-2
+                    })
+            });
+            if ends_here {
+                return Ok(());
+            }
+        }
         let scale = self.scale_at(&n.gamma, n.s)?;
         let ctx = self.ctx(isolated, scale);
         let len = ctx.len;

@@ -7,6 +7,10 @@ use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
 use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
 
+/// Both eigenvalues of `K` (relative to the branch's scale) below this on a branch of circles:
+/// the circle is next to its axis.
+const NEAR_AXIS: f64 = 1e-5;
+
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// Follows one direction from `start`, with at most `budget` steps, until the branch leaves
     /// the range (it then ends exactly on the range's end), closes, or meets another branch (a
@@ -50,6 +54,13 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             let Some(b) = ctx.advance(&a, h)? else {
                 h *= 0.5;
                 if h < opts.min_step {
+                    // A branch of circles next to its axis (both eigenvalues of K nearly zero:
+                    // the circle shrinks to the pole of the symmetry), where the circle direction
+                    // is lost in round-off: the rest is the same circles again, down to the axis,
+                    // which `finish` appends from the branch point on the axis.
+                    if !ctx.isolated && a.eig.iter().all(|e| e.abs() <= NEAR_AXIS) {
+                        break;
+                    }
                     return Err(RouthError::AtParameter {
                         s: a.s,
                         source: Box::new(RouthError::NoConvergence {
