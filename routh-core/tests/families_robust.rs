@@ -6,6 +6,7 @@ use routh_core::{
     bifurcation_diagram, steady_motions, BifurcationDiagram, ContinuationOptions, EventKind,
     Matrix3, Vector3,
 };
+use routh_core::steady::steady_motions_checked;
 use test_models::HeavyTop;
 
 fn top(a: f64, b: f64, c: f64, mgr: Vector3<f64>) -> HeavyTop {
@@ -160,6 +161,37 @@ fn near_spherical_symmetric_tops() {
                     d.count_at(s),
                     steady_motions(&t, s).unwrap().len(),
                     "({a}, {c}) at {s}, {seeds} seeds"
+                );
+            }
+        }
+    }
+}
+
+
+/// Symmetric tops on which the sweep (`tests/families_sweep.rs`) once found a runaway budget on a
+/// branch of circles next to its axis, or a circle counted twice: every diagram is complete and
+/// its counts agree with the global search.
+#[test]
+fn symmetric_tops_found_by_the_sweep() {
+    for (a, c, mgl, range) in [
+        (1.7896079667855886, 0.9244872621694179, 0.850263488186846, (0.5704683519035405, 1.0318632260119305)),
+        (1.259035798095694, 1.8105563607740174, 1.1113181513267394, (2.1706470674081837, 3.929929007332265)),
+        (0.5041867794522943, 2.1308790236942428, 1.6544642018095397, (2.0011613470990155, 2.296822502139793)),
+        (0.9088267332641699, 2.0775525847747875, 1.0713451908236011, (1.7845268202706923, 2.057314232611689)),
+        (1.419812344497365, 1.417938475142442, 0.7299629958083884, (16.633506387996693, 39.338148894777916)),
+    ] {
+        let t = top(a, a, c, Vector3::new(0.0, 0.0, mgl));
+        let d = bifurcation_diagram(|p| (t.clone(), p), range, &ContinuationOptions::default())
+            .unwrap_or_else(|e| panic!("({a}, {c}, {mgl}) over {range:?}: {e}"));
+        assert_eq!(d.stop, None, "({a}, {c}, {mgl}) over {range:?}");
+        for k in 1..6 {
+            let s = range.0 + (range.1 - range.0) * (k as f64 / 6.0 + 0.011);
+            let found = steady_motions_checked(&t, s).unwrap();
+            if found.consistent {
+                assert_eq!(
+                    d.count_at(s),
+                    found.motions.len(),
+                    "({a}, {c}, {mgl}) at {s}"
                 );
             }
         }

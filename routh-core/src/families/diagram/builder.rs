@@ -187,11 +187,17 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         // A point of a circle keeps its zero eigenvalue along the branch; a degenerate isolated
         // point that the search took for a point of a curve (the tip of a pitchfork, where the
         // amended potential is quartic along the kernel of K) loses it one step away.
+        // A seed that cannot show this (no step along the branch succeeds) is moved.
         if !isolated {
-            if let Some(next) = ctx.advance(&start, 1e-3)? {
-                if next.eig.iter().all(|e| e.abs() > 1e-6) {
-                    return Ok(Some(NotStarted::Degenerate));
+            let mut circle = false;
+            for h in [1e-2, 1e-3] {
+                if let Some(next) = ctx.advance(&start, h)? {
+                    circle = next.eig.iter().any(|e| e.abs() <= 1e-6);
+                    break;
                 }
+            }
+            if !circle {
+                return Ok(Some(NotStarted::Degenerate));
             }
         }
         self.follow(&ctx, start)?;
@@ -397,12 +403,13 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             else {
                 continue;
             };
-            let ds_tol = 1e-4 * e.s.abs().max(1.0);
-            for (i, (nodes, _)) in self.branches.iter_mut().enumerate() {
+            let len = self.range.1 - self.range.0;
+            for (i, (nodes, isolated)) in self.branches.iter_mut().enumerate() {
                 if i == e.branch || nodes.is_empty() {
                     continue;
                 }
-                let near = |n: &Node| (n.s - e.s).abs() <= ds_tol && (n.gamma - e.gamma).norm() <= 1e-2;
+                let (ds_tol, dg_tol) = join_tolerances(*isolated, e.s, len);
+                let near = |n: &Node| (n.s - e.s).abs() <= ds_tol && (n.gamma - e.gamma).norm() <= dg_tol;
                 let Some((k, _)) = nodes
                     .iter()
                     .enumerate()
@@ -450,6 +457,19 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             events: self.events,
             stop: self.stop,
         }
+    }
+}
+
+/// How far (in `s`, in γ) a point of a branch may be from a branch point to be joined to it:
+/// `1e−4·max(1, |s|)` and `1e−2` for a pitchfork's tip (located to `event_tol` in `s`); for the end
+/// of a branch of circles next to its axis (where the continuation stops before the circle
+/// direction is lost) `1e−2` of the range and `0.1` rad: along such a branch `s` is monotone up to
+/// the axis (the circles shrink as `√|s − s*|`), so the segment to the axis counts right.
+pub(super) fn join_tolerances(isolated: bool, s: f64, len: f64) -> (f64, f64) {
+    if isolated {
+        (1e-4 * s.abs().max(1.0), 1e-2)
+    } else {
+        (1e-2 * len, 0.1)
     }
 }
 

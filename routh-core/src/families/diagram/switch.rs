@@ -4,7 +4,7 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::builder::Builder;
+use super::builder::{join_tolerances, Builder};
 use crate::error::RouthError;
 use crate::families::continuation::{Constraint, Node};
 use crate::families::StopReason;
@@ -87,11 +87,11 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         // A branch of circles that already ends next to this point of its axis (traced from a
         // seed down to where its circles shrink to the pole) is the one that would start here.
         if !isolated {
-            let ds_tol = 1e-4 * n.s.abs().max(1.0);
+            let (ds_tol, dg_tol) = join_tolerances(false, n.s, self.len());
             let ends_here = self.branches.iter().any(|(nodes, iso)| {
                 !*iso
                     && [nodes.first(), nodes.last()].into_iter().flatten().any(|e| {
-                        (e.s - n.s).abs() <= ds_tol && (e.gamma - n.gamma).norm() <= 1e-2
+                        (e.s - n.s).abs() <= ds_tol && (e.gamma - n.gamma).norm() <= dg_tol
                     })
             });
             if ends_here {

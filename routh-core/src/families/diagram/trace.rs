@@ -7,9 +7,13 @@ use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
 use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
 
-/// Both eigenvalues of `K` (relative to the branch's scale) below this on a branch of circles:
-/// the circle is next to its axis.
-const NEAR_AXIS: f64 = 1e-5;
+/// Whether a point of a branch of circles is next to the axis of its circles, where they shrink
+/// to a pole: both eigenvalues of `K` below `1e−5` and the whole Jacobian `[K | F_s]` below
+/// `1e−2`, relative to the branch's scale (at the pole both vanish by symmetry; at a fold of
+/// circles `F_s` does not).
+fn near_axis(scale: f64, n: &Node) -> bool {
+    n.eig.iter().all(|e| e.abs() <= 1e-5) && n.jac.norm() <= 1e-2 * scale
+}
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// Follows one direction from `start`, with at most `budget` steps, until the branch leaves
@@ -58,7 +62,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                     // the circle shrinks to the pole of the symmetry), where the circle direction
                     // is lost in round-off: the rest is the same circles again, down to the axis,
                     // which `finish` appends from the branch point on the axis.
-                    if !ctx.isolated && a.eig.iter().all(|e| e.abs() <= NEAR_AXIS) {
+                    if !ctx.isolated && near_axis(ctx.scale, &a) {
                         break;
                     }
                     return Err(RouthError::AtParameter {
@@ -74,6 +78,18 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 }
                 continue;
             };
+            // A branch of circles has a zero eigenvalue of K all along it (the circle
+            // direction). Where its circles shrink to their axis it crosses the branch of the
+            // pole (where K is a multiple of the identity), and a step can slide onto that
+            // branch: a point with no zero eigenvalue is not a circle. Shorter steps, and next to
+            // the axis the end (`finish` appends the point on the axis).
+            if !ctx.isolated && b.eig.iter().all(|e| e.abs() > 1e-6) {
+                if a.eig.iter().all(|e| e.abs() <= 1e-3) || h <= 4.0 * opts.min_step {
+                    break;
+                }
+                h *= 0.5;
+                continue;
+            }
             let cos = a.tau_g.dot(&b.tau_g) + a.tau_s * b.tau_s;
             let ch = changes(&a, &b, ctx.isolated);
             let eigen = ch.iter().any(|c| matches!(c, Change::Eigen(_)));
@@ -157,6 +173,12 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             if end {
                 break;
             }
+            if !ctx.isolated && near_axis(ctx.scale, &b) {
+                // Next to the axis the steps would shrink without end (the circle direction is
+                // lost in round-off): end here; `finish` appends the point on the axis.
+                out.nodes.push(b);
+                break;
+            }
             let ab = dist(&a, &b, ctx.len);
             located.sort_by(|x, y| dist(&a, x, ctx.len).total_cmp(&dist(&a, y, ctx.len)));
             for e in located {
@@ -188,6 +210,17 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             } else {
                 h
             };
+        }
+        if !ctx.isolated {
+            // A located end that slid onto the branch of the pole is no point of a circle.
+            while out.nodes.len() > 1
+                && out
+                    .nodes
+                    .last()
+                    .is_some_and(|n| n.eig.iter().all(|e| e.abs() > 1e-6))
+            {
+                out.nodes.pop();
+            }
         }
         Ok(out)
     }
