@@ -289,7 +289,8 @@ fn label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
 /// let point = |p: f64| BranchPoint {
 ///     s: p,
 ///     steady: SteadyMotion {
-///         p_psi: p, gamma: Vector3::z(), psi_dot: -p, mu: 0.0,
+///         // C = 1: ψ̇ = p/C (38), U_r = ½p²/C + mgl with mgl = 1.
+///         p_psi: p, gamma: Vector3::z(), psi_dot: p, mu: 0.0,
 ///         amended_potential: 1.0 + 0.5 * p * p, energy: 1.0 + 0.5 * p * p, isolated: true,
 ///     },
 ///     report: StabilityReport {
@@ -350,7 +351,8 @@ pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
 /// let point = |p: f64| BranchPoint {
 ///     s: p,
 ///     steady: SteadyMotion {
-///         p_psi: p, gamma: Vector3::z(), psi_dot: -p, mu: 0.0,
+///         // C = 1: ψ̇ = p/C (38), U_r = ½p²/C + mgl with mgl = 1.
+///         p_psi: p, gamma: Vector3::z(), psi_dot: p, mu: 0.0,
 ///         amended_potential: 1.0 + 0.5 * p * p, energy: 1.0 + 0.5 * p * p, isolated: true,
 ///     },
 ///     report: StabilityReport {
