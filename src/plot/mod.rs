@@ -425,7 +425,7 @@ pub fn energy_momentum_svg<P: AsRef<Path>>(
 ///     })
 ///     .collect();
 /// let boundaries = vec![BoundaryCurve { kind: EventKind::BranchPoint, points: vec![(0.0, 0.0), (1.0, 1.0)] }];
-/// let atlas = StabilityAtlas { x, y, verdicts, boundaries };
+/// let atlas = StabilityAtlas { x, y, verdicts, boundaries, ..Default::default() };
 /// let path = std::env::temp_dir().join("routh-doc-atlas.svg");
 /// let opts = PlotOptions { x_label: "mgl".into(), y_label: "p_ψ".into(), ..PlotOptions::default() };
 /// stability_atlas_svg(&atlas, &path, &opts)?;

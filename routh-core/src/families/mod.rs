@@ -382,10 +382,20 @@ pub struct AtlasOptions {
     /// Step of the boundary-curve continuation, relative to the diagonal of the rectangle
     /// (default `0.005`).
     pub curve_step: f64,
-    /// Budget of points per boundary curve (default `20_000`); a curve that needs more is an
-    /// error, [`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming
-    /// `max_curve_points`, with the `(x, y)` and γ where the budget ran out.
+    /// Budget of points per boundary curve (default `20_000`); a curve that needs more ends
+    /// where it ran out, and the atlas comes back with [`StabilityAtlas::stop`] =
+    /// [`StopReason::MaxCurvePoints`] (the `(x, y)` and γ there).
     pub max_curve_points: usize,
+    /// Where the motion is first found from `gamma_guess` (by Newton's method on the sphere),
+    /// then followed to the nearest node, from which the grid is followed: up and down its
+    /// column, then along every row both ways. `None` (the default): the middle of the
+    /// rectangle.
+    pub start: Option<(f64, f64)>,
+    /// Largest angle (radians) between `gamma_guess` and the steady motion found from it at the
+    /// start (default `0.35`, about 20°). Farther, the motion asked for is probably not there
+    /// and Newton's method landed on another one: [`stability_atlas`] refuses
+    /// ([`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming `gamma_guess`).
+    pub max_guess_angle: f64,
     /// Number of worker threads for the grid of
     /// [`stability_atlas_parallel`] (`0`: all cores; default
     /// `0`). The result does not depend on it.
@@ -402,6 +412,8 @@ impl Default for AtlasOptions {
             curve_tol: 1e-10,
             curve_step: 0.005,
             max_curve_points: 20_000,
+            start: None,
+            max_guess_angle: 0.35,
             threads: 0,
             classify: ClassifyOptions::default(),
         }
@@ -429,10 +441,18 @@ pub struct StabilityAtlas {
     /// The grid ordinates, ascending.
     pub y: Vec<f64>,
     /// `verdicts[j][i]` at `(x[i], y[j])`; `None` where the steady motion does not exist (beyond
-    /// a fold) or could not be followed.
+    /// a fold) or could not be followed (see [`StabilityAtlas::lost`]).
     pub verdicts: Vec<Vec<Option<Stability>>>,
     /// The boundary curves, traced by continuation of their defining equations.
     pub boundaries: Vec<BoundaryCurve>,
+    /// `lost[j][i]` is `true` where `verdicts[j][i]` is `None` because the motion was lost: its
+    /// continuation towards the node stalled away from a fold (a step would land on another
+    /// steady motion, which is refused: the atlas never jumps from one motion to another), so
+    /// nothing is known there. `false` where the motion ends at a fold on the way (it does not
+    /// exist beyond it) and at every node with a verdict.
+    pub lost: Vec<Vec<bool>>,
+    /// `None` when the atlas is complete; otherwise why it stopped early (a budget ran out).
+    pub stop: Option<StopReason>,
 }
 
 /// A curve in the parameter plane where the verdict of the followed steady motion changes.
