@@ -478,7 +478,11 @@ fn certified_enclosures_are_tight_and_their_motions_classify() {
             let d = g.dot(&j.component_mul(&g));
             let grad = top.com - p * p / (d * d) * j.component_mul(&g);
             let t = grad - grad.dot(&g) * g;
-            assert!(t.norm() < 1e-9 * (1.0 + p * p), "p = {p}: |t| = {}", t.norm());
+            assert!(
+                t.norm() < 1e-9 * (1.0 + p * p),
+                "p = {p}: |t| = {}",
+                t.norm()
+            );
             count += 1;
         }
     }

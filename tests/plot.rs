@@ -430,7 +430,12 @@ fn atlas_legend_tells_a_lost_motion_from_no_steady_motion() {
     let path = out("atlas-lost.svg");
     let opts = PlotOptions::default();
     // The upper cell lost along its row, the lower one beyond a fold.
-    stability_atlas_svg(&atlas(vec![vec![false; 2], vec![false, true]]), &path, &opts).unwrap();
+    stability_atlas_svg(
+        &atlas(vec![vec![false; 2], vec![false, true]]),
+        &path,
+        &opts,
+    )
+    .unwrap();
     let svg = read_svg(&path);
     assert!(has_text(&svg, "motion lost"));
     assert!(has_text(&svg, "no steady motion"));

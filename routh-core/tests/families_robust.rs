@@ -2,11 +2,11 @@
 //! pitchfork tips, near-spherical circles, budgets that end with a partial result. Checked
 //! against closed forms (the Kovalevskaya top, the asymmetric prolate top) and the global search.
 
+use routh_core::steady::steady_motions_checked;
 use routh_core::{
     bifurcation_diagram, steady_motions, BifurcationDiagram, ContinuationOptions, EventKind,
     Matrix3, Vector3,
 };
-use routh_core::steady::steady_motions_checked;
 use test_models::HeavyTop;
 
 fn top(a: f64, b: f64, c: f64, mgr: Vector3<f64>) -> HeavyTop {
@@ -50,7 +50,10 @@ fn kovalevskaya_top_closed_forms() {
     let folds = events(&d, EventKind::Fold);
     assert!(!folds.is_empty());
     for s in &folds {
-        assert!((s - fold).abs() <= 2e-10 * fold, "fold at {s}, closed form {fold}");
+        assert!(
+            (s - fold).abs() <= 2e-10 * fold,
+            "fold at {s}, closed form {fold}"
+        );
     }
     let bps = events(&d, EventKind::BranchPoint);
     assert_eq!(bps.len(), 1, "{bps:?}");
@@ -65,7 +68,10 @@ fn kovalevskaya_top_closed_forms() {
                 let x = g.x;
                 assert!(x > 0.0);
                 let r = (1.0 + x * x).powi(2) / x - p * p;
-                assert!(r.abs() < 1e-8 * (1.0 + p * p), "(1 + x²)²/x − p² = {r} at p = {p}");
+                assert!(
+                    r.abs() < 1e-8 * (1.0 + p * p),
+                    "(1 + x²)²/x − p² = {r} at p = {p}"
+                );
             }
         }
     }
@@ -90,7 +96,11 @@ fn kovalevskaya_top_closed_forms() {
         assert_eq!(d.count_at(s), n, "count_at({s})");
     }
     for s in [0.5, 1.9, 3.5] {
-        assert_eq!(d.count_at(s), steady_motions(&k, s).unwrap().len(), "at {s}");
+        assert_eq!(
+            d.count_at(s),
+            steady_motions(&k, s).unwrap().len(),
+            "at {s}"
+        );
     }
 }
 
@@ -102,8 +112,12 @@ fn kovalevskaya_top_closed_forms() {
 fn prolate_top_pitchfork_tips() {
     let t = top(2.0, 2.2, 1.0, Vector3::z());
     let tips = [(1.0f64 / 1.2).sqrt(), 1.0];
-    let d =
-        bifurcation_diagram(|p| (t.clone(), p), (0.2, 5.0), &ContinuationOptions::default()).unwrap();
+    let d = bifurcation_diagram(
+        |p| (t.clone(), p),
+        (0.2, 5.0),
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
     assert_eq!(d.stop, None);
     let bps = events(&d, EventKind::BranchPoint);
     assert_eq!(bps.len(), 2, "{bps:?}");
@@ -118,17 +132,29 @@ fn prolate_top_pitchfork_tips() {
     let closed = |s: f64| 2 + tips.iter().filter(|t| s > **t).count() * 2;
     for s in [0.5, 0.9, 0.95, 1.2, 4.0] {
         assert_eq!(d.count_at(s), closed(s), "count_at({s})");
-        assert_eq!(steady_motions(&t, s).unwrap().len(), closed(s), "search at {s}");
+        assert_eq!(
+            steady_motions(&t, s).unwrap().len(),
+            closed(s),
+            "search at {s}"
+        );
     }
     for tip in tips {
         for ds in [-2e-6, 2e-6] {
             let s = tip + ds;
-            assert_eq!(d.count_at(s), closed(s), "count_at({s}) next to the tip {tip}");
+            assert_eq!(
+                d.count_at(s),
+                closed(s),
+                "count_at({s}) next to the tip {tip}"
+            );
         }
     }
     // A range with a seed on the tip p = 1.
-    let d =
-        bifurcation_diagram(|p| (t.clone(), p), (0.5, 1.5), &ContinuationOptions::default()).unwrap();
+    let d = bifurcation_diagram(
+        |p| (t.clone(), p),
+        (0.5, 1.5),
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
     assert_eq!(d.stop, None);
     for s in [0.6, 0.95, 1.3] {
         assert_eq!(d.count_at(s), closed(s), "count_at({s})");
@@ -167,18 +193,42 @@ fn near_spherical_symmetric_tops() {
     }
 }
 
-
 /// Symmetric tops on which the sweep (`tests/families_sweep.rs`) once found a runaway budget on a
 /// branch of circles next to its axis, or a circle counted twice: every diagram is complete and
 /// its counts agree with the global search.
 #[test]
 fn symmetric_tops_found_by_the_sweep() {
     for (a, c, mgl, range) in [
-        (1.7896079667855886, 0.9244872621694179, 0.850263488186846, (0.5704683519035405, 1.0318632260119305)),
-        (1.259035798095694, 1.8105563607740174, 1.1113181513267394, (2.1706470674081837, 3.929929007332265)),
-        (0.5041867794522943, 2.1308790236942428, 1.6544642018095397, (2.0011613470990155, 2.296822502139793)),
-        (0.9088267332641699, 2.0775525847747875, 1.0713451908236011, (1.7845268202706923, 2.057314232611689)),
-        (1.419812344497365, 1.417938475142442, 0.7299629958083884, (16.633506387996693, 39.338148894777916)),
+        (
+            1.7896079667855886,
+            0.9244872621694179,
+            0.850263488186846,
+            (0.5704683519035405, 1.0318632260119305),
+        ),
+        (
+            1.259035798095694,
+            1.8105563607740174,
+            1.1113181513267394,
+            (2.1706470674081837, 3.929929007332265),
+        ),
+        (
+            0.5041867794522943,
+            2.1308790236942428,
+            1.6544642018095397,
+            (2.0011613470990155, 2.296822502139793),
+        ),
+        (
+            0.9088267332641699,
+            2.0775525847747875,
+            1.0713451908236011,
+            (1.7845268202706923, 2.057314232611689),
+        ),
+        (
+            1.419812344497365,
+            1.417938475142442,
+            0.7299629958083884,
+            (16.633506387996693, 39.338148894777916),
+        ),
     ] {
         let t = top(a, a, c, Vector3::new(0.0, 0.0, mgl));
         let d = bifurcation_diagram(|p| (t.clone(), p), range, &ContinuationOptions::default())
@@ -197,7 +247,6 @@ fn symmetric_tops_found_by_the_sweep() {
         }
     }
 }
-
 
 /// The pitchfork point of the Kovalevskaya top at p = 2, γ = e₁ (where (1 + x²)²/x = 4 has its
 /// double root x = 1: U_r is quartic along e₃ there): the global search reports it once,

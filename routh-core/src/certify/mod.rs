@@ -484,7 +484,10 @@ pub fn steady_motions_certified<M: Routhian>(
                     None => refine(&mut ev, b.face, (ku, kv), opts.refine_iterations),
                 };
                 let gamma = b.face.gamma(tight.0, tight.1).0;
-                if gamma.iter().any(|g| !(g.width() <= MAX_ENCLOSURE)) {
+                if gamma
+                    .iter()
+                    .any(|g| g.width().is_nan() || g.width() > MAX_ENCLOSURE)
+                {
                     // Proved to exist, but not located to MAX_ENCLOSURE: its `steady` could not
                     // be trusted to be the motion; leave it undecided.
                     undecided.push(b);

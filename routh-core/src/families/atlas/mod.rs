@@ -215,11 +215,18 @@ pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     y: (f64, f64),
     opts: &AtlasOptions,
 ) -> Result<StabilityAtlas, RouthError> {
-    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, i0, column| {
-        (0..ys.len())
-            .map(|j| ctx.row(xs, ys[j], i0, column[j].0, column[j].1))
-            .collect()
-    })
+    atlas_with(
+        &family,
+        gamma_guess,
+        x,
+        y,
+        opts,
+        |ctx, xs, ys, i0, column| {
+            (0..ys.len())
+                .map(|j| ctx.row(xs, ys[j], i0, column[j].0, column[j].1))
+                .collect()
+        },
+    )
 }
 
 /// [`stability_atlas`] with the rows of the grid on [`AtlasOptions::threads`] threads (`0`: all
@@ -254,14 +261,21 @@ pub fn stability_atlas_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>
             what: "threads",
             reason: e.to_string(),
         })?;
-    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, i0, column| {
-        pool.install(|| {
-            (0..ys.len())
-                .into_par_iter()
-                .map(|j| ctx.row(xs, ys[j], i0, column[j].0, column[j].1))
-                .collect()
-        })
-    })
+    atlas_with(
+        &family,
+        gamma_guess,
+        x,
+        y,
+        opts,
+        |ctx, xs, ys, i0, column| {
+            pool.install(|| {
+                (0..ys.len())
+                    .into_par_iter()
+                    .map(|j| ctx.row(xs, ys[j], i0, column[j].0, column[j].1))
+                    .collect()
+            })
+        },
+    )
 }
 
 /// Rows of nodes of the grid (with their lost flags), or an error.
@@ -286,9 +300,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     let ys = linspace(y, opts.ny);
 
     // The start: the motion nearest the guess at the start point, followed to its nearest node.
-    let (sx, sy) = opts
-        .start
-        .unwrap_or((0.5 * (x.0 + x.1), 0.5 * (y.0 + y.1)));
+    let (sx, sy) = opts.start.unwrap_or((0.5 * (x.0 + x.1), 0.5 * (y.0 + y.1)));
     let nearest = |v: &[f64], t: f64| {
         (0..v.len())
             .min_by(|&a, &b| (v[a] - t).abs().total_cmp(&(v[b] - t).abs()))
@@ -299,7 +311,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     let found = steady_motion_near(&m0, gamma_guess, p0).map_err(|e| at_xy(sx, sy, e))?;
     let guess = gamma_guess.normalize();
     let angle = guess.dot(&found.gamma).clamp(-1.0, 1.0).acos();
-    if !(angle <= opts.max_guess_angle) {
+    if angle.is_nan() || angle > opts.max_guess_angle {
         return Err(RouthError::InvalidOption {
             what: "gamma_guess",
             reason: format!(
@@ -368,7 +380,12 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     let lost = lost
         .into_iter()
         .zip(&rows)
-        .map(|(l, r)| l.into_iter().zip(r).map(|(l, n)| l && n.is_none()).collect())
+        .map(|(l, r)| {
+            l.into_iter()
+                .zip(r)
+                .map(|(l, n)| l && n.is_none())
+                .collect()
+        })
         .collect();
     let stop = ctx.stop.lock().map(|s| s.clone()).unwrap_or(None);
     Ok(StabilityAtlas {

@@ -246,7 +246,8 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 let back = if closed {
                     Vec::new()
                 } else {
-                    self.trace(test, start, -t0, budget.saturating_sub(1 + fwd.len()))?.0
+                    self.trace(test, start, -t0, budget.saturating_sub(1 + fwd.len()))?
+                        .0
                 };
                 let mut all: Vec<(CurvePoint, f64)> = back.into_iter().rev().collect();
                 all.push((start, fold_indicator(&e)));

@@ -409,16 +409,18 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                     continue;
                 }
                 let (ds_tol, dg_tol) = join_tolerances(*isolated, e.s, len);
-                let near = |n: &Node| (n.s - e.s).abs() <= ds_tol && (n.gamma - e.gamma).norm() <= dg_tol;
-                let Some((k, _)) = nodes
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, n)| near(n))
-                    .min_by(|x, y| {
-                        let dx = (x.1.gamma - e.gamma).norm();
-                        let dy = (y.1.gamma - e.gamma).norm();
-                        dx.total_cmp(&dy)
-                    })
+                let near =
+                    |n: &Node| (n.s - e.s).abs() <= ds_tol && (n.gamma - e.gamma).norm() <= dg_tol;
+                let Some((k, _)) =
+                    nodes
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, n)| near(n))
+                        .min_by(|x, y| {
+                            let dx = (x.1.gamma - e.gamma).norm();
+                            let dy = (y.1.gamma - e.gamma).norm();
+                            dx.total_cmp(&dy)
+                        })
                 else {
                     continue;
                 };

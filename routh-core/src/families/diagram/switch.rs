@@ -90,9 +90,12 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             let (ds_tol, dg_tol) = join_tolerances(false, n.s, self.len());
             let ends_here = self.branches.iter().any(|(nodes, iso)| {
                 !*iso
-                    && [nodes.first(), nodes.last()].into_iter().flatten().any(|e| {
-                        (e.s - n.s).abs() <= ds_tol && (e.gamma - n.gamma).norm() <= dg_tol
-                    })
+                    && [nodes.first(), nodes.last()]
+                        .into_iter()
+                        .flatten()
+                        .any(|e| {
+                            (e.s - n.s).abs() <= ds_tol && (e.gamma - n.gamma).norm() <= dg_tol
+                        })
             });
             if ends_here {
                 return Ok(());

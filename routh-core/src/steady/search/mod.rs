@@ -677,7 +677,11 @@ impl<M: Routhian> Search<'_, M> {
             }
         }
         match at(0.5 * (a + b)) {
-            Some((l, _)) if l.degenerate() && l.residual() <= self.gradient_tol.max(loc.residual()) => l,
+            Some((l, _))
+                if l.degenerate() && l.residual() <= self.gradient_tol.max(loc.residual()) =>
+            {
+                l
+            }
             _ => loc,
         }
     }
