@@ -219,7 +219,7 @@ impl SearchOptions {
 /// converges only linearly there and stops `n − 1` times its last step away from a point of order
 /// `n`. A pitchfork point (gradient cubic along the kernel) is so located to about
 /// `(ε·s_raw/|∂³g|)^{1/3}` (2e−8 rad at the Kovalevskaya top's pitchfork, `p_ψ = 2`, `γ = e₁`),
-/// and copies within `1e−4` rad on one level are one point. It is then tested for a curve along
+/// so that its copies merge. It is then tested for a curve along
 /// the kernel of `K`: the search
 /// steps by `h` along the null direction, re-converges, and traces the curve by
 /// predictor–corrector continuation if it lands on a *different*, also degenerate critical point

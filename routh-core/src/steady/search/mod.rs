@@ -45,11 +45,10 @@ const STOP_FACTOR: f64 = 1e-2;
 /// Newton converges linearly with ratio `(n−2)/(n−1)` to a critical point of order `n`, whose
 /// distance is then `(n−1)` times the last step: 8 covers `n ≤ 9`.
 const MERGE_FACTOR: f64 = 8.0;
-/// Degenerate points on one level within this distance (radians) are one critical point: beyond
-/// the round-off plateau of a higher-order point (about 64√ε for a quartic minimum, see
-/// `same_point`) and the accuracy `~(ε)^{1/3}` to which a pitchfork point is placed (see
-/// `Search::polish_degenerate`).
-const FLAT_RADIUS: f64 = 1e-4;
+/// Degenerate points on one level within this distance (radians) are one critical point: about
+/// 64√ε, beyond the round-off plateau of a higher-order point (see `same_point`). (1e−4 merged
+/// the points of a circle of radius 2.4e−4 round a pole: tests/trust.rs.)
+const FLAT_RADIUS: f64 = 1e-6;
 /// An iterate of a grid start joins a known non-degenerate critical point `p` within this distance
 /// (radians) when its Newton step lands within [`GRID_CAPTURE`] of its distance to `p`
 /// (quadratic convergence towards `p` is under way).
