@@ -152,6 +152,7 @@ fn full_diagram() -> BifurcationDiagram {
             ),
             event(EventKind::Fold, 5.0, 2.0, 2, Unstable, SecularlyStable),
         ],
+        stop: None,
     }
 }
 
@@ -215,6 +216,7 @@ impl BoundaryCurveSet {
             y,
             verdicts,
             boundaries: self.0,
+            ..Default::default()
         }
     }
 }
@@ -397,6 +399,7 @@ fn atlas_of_one_verdict_and_monochrome() {
         y: vec![0.0, 1.0, 2.0],
         verdicts: vec![vec![Some(Stability::Unstable); 2]; 3],
         boundaries: vec![],
+        ..Default::default()
     };
     let path = out("atlas-mono.svg");
     let opts = PlotOptions {
@@ -409,6 +412,40 @@ fn atlas_of_one_verdict_and_monochrome() {
     assert!(!has_text(&svg, &Stability::SecularlyStable.to_string()));
     assert!(!svg.contains("boundary"));
     assert!(has_text(&svg, "y"));
+}
+
+#[test]
+fn atlas_legend_tells_a_lost_motion_from_no_steady_motion() {
+    let verdicts = vec![
+        vec![Some(Stability::Unstable), None],
+        vec![Some(Stability::Unstable), None],
+    ];
+    let atlas = |lost: Vec<Vec<bool>>| StabilityAtlas {
+        x: vec![0.0, 1.0],
+        y: vec![0.0, 1.0],
+        verdicts: verdicts.clone(),
+        lost,
+        ..Default::default()
+    };
+    let path = out("atlas-lost.svg");
+    let opts = PlotOptions::default();
+    // The upper cell lost along its row, the lower one beyond a fold.
+    stability_atlas_svg(
+        &atlas(vec![vec![false; 2], vec![false, true]]),
+        &path,
+        &opts,
+    )
+    .unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(&svg, "motion lost"));
+    assert!(has_text(&svg, "no steady motion"));
+    // Only beyond a fold (and without the flags at all).
+    for lost in [vec![vec![false; 2]; 2], vec![]] {
+        stability_atlas_svg(&atlas(lost), &path, &opts).unwrap();
+        let svg = read_svg(&path);
+        assert!(!has_text(&svg, "motion lost"));
+        assert!(has_text(&svg, "no steady motion"));
+    }
 }
 
 #[test]
@@ -425,6 +462,7 @@ fn errors() {
             isolated: true,
         }],
         events: vec![],
+        stop: None,
     };
     assert!(matches!(
         energy_momentum_svg(&hollow, &path, &opts),

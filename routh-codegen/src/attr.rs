@@ -77,6 +77,8 @@ pub struct Input {
     pub items: Vec<Item>,
     /// Whether the struct carries at least one `#[lagrangian(...)]`.
     pub has_attr: bool,
+    /// The first `#[lagrangian(...)]` attribute, where errors about a missing item point.
+    pub first_attr: Option<syn::Attribute>,
     /// Whether some part of an attribute did not parse (already reported): rules about missing
     /// items stay silent then, since the missing item may be the one that failed.
     pub incomplete: bool,
@@ -86,6 +88,7 @@ pub struct Input {
 pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
     let mut items = Vec::new();
     let mut has_attr = false;
+    let mut first_attr = None;
     let mut incomplete = false;
     for attr in input
         .attrs
@@ -93,6 +96,9 @@ pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
         .filter(|a| a.path().is_ident("lagrangian"))
     {
         has_attr = true;
+        if first_attr.is_none() {
+            first_attr = Some(attr.clone());
+        }
         match &attr.meta {
             syn::Meta::List(list) => {
                 let span = list.delimiter.span().join();
@@ -127,6 +133,7 @@ pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
         fields,
         items,
         has_attr,
+        first_attr,
         incomplete,
     }
 }

@@ -128,10 +128,12 @@ fn kinetic_is_present(cx: &Ctxt, input: &Input) {
             )
         })
     {
-        cx.error_spanned_by(
-            &input.ident,
-            "missing `kinetic = EXPR` in `#[lagrangian(...)]`",
-        );
+        // Point at the attribute that lacks the item, not at the struct.
+        let msg = "missing `kinetic = EXPR` in `#[lagrangian(...)]`";
+        match &input.first_attr {
+            Some(attr) => cx.error_spanned_by(attr, msg),
+            None => cx.error_spanned_by(&input.ident, msg),
+        }
     }
 }
 

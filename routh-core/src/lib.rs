@@ -35,7 +35,7 @@ pub use error::RouthError;
 pub use families::{
     bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions,
-    EventKind, StabilityAtlas,
+    EventKind, StabilityAtlas, StopReason,
 };
 pub use formulas::LatexFormulas;
 pub use model::{

@@ -10,7 +10,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh_core::{
     classify, stability_atlas, stability_atlas_parallel, AtlasOptions, Complex, EventKind, Matrix3,
-    RouthError, Stability, StabilityAtlas, SteadyMotion, Vector3,
+    RouthError, Stability, StabilityAtlas, SteadyMotion, StopReason, Vector3,
 };
 use test_models::jacobian::{fd_jacobian, match_roots, steady_state};
 use test_models::roots::bracketed_roots;
@@ -438,12 +438,31 @@ fn in_plane_fold(theta: f64) -> (f64, f64) {
 
 #[test]
 fn imperfect_top_fold_curve_matches_the_in_plane_closed_form() {
+    // The near-upright motion does not exist in the middle of the rectangle (beyond its fold):
+    // start where it does, at slow spin and ε = 0.
     let opts = AtlasOptions {
         nx: 31,
         ny: 31,
+        start: Some((1.0, 0.0)),
         ..AtlasOptions::default()
     };
     let atlas = stability_atlas(imperfect, Vector3::z(), (1.0, 3.0), (0.0, 0.2), &opts).unwrap();
+    // From the middle, the motion asked for is not there: Newton's method from the guess does
+    // not converge, or lands on another motion (refused), never a silent atlas of another one.
+    let middle = AtlasOptions {
+        start: None,
+        ..opts.clone()
+    };
+    match stability_atlas(imperfect, Vector3::z(), (1.0, 3.0), (0.0, 0.2), &middle) {
+        Err(RouthError::InvalidOption {
+            what: "gamma_guess",
+            reason,
+        }) => println!("{reason}"),
+        Err(RouthError::AtParameter { .. }) => {}
+        other => panic!("{other:?}"),
+    }
+    // No node is "lost" on this grid: beyond the fold the motion does not exist.
+    assert!(atlas.lost.iter().flatten().all(|l| !l));
     // The motion is lost beyond the fold for small ε > 0.
     assert!(atlas.verdicts[1].iter().any(|v| v.is_none()));
     assert!(atlas.verdicts[0].iter().all(|v| v.is_some()));
@@ -481,9 +500,10 @@ fn imperfect_top_fold_curve_matches_the_in_plane_closed_form() {
 }
 
 #[test]
-fn curve_budget_is_an_error_that_says_where() {
+fn curve_budget_ends_the_atlas_with_a_stop_reason_that_says_where() {
     // Each boundary curve of the sleeping Lagrange top crosses the whole rectangle in about 150
-    // points: a budget of 10 runs out on the first one traced.
+    // points: a budget of 10 runs out on the first one traced. The atlas comes back with its
+    // verdicts, the curves cut short, and where the budget ran out.
     let opts = AtlasOptions {
         nx: 11,
         ny: 11,
@@ -491,23 +511,58 @@ fn curve_budget_is_an_error_that_says_where() {
         ..AtlasOptions::default()
     };
     let family = |mgl: f64, p: f64| (HeavyTop::lagrange(A1, C_LAGRANGE, mgl), p);
-    match stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts) {
-        Err(RouthError::InvalidOption {
-            what: "max_curve_points",
-            reason,
-        }) => {
-            let key = "ran out at (x, y) = (";
-            let at = &reason[reason.find(key).unwrap_or_else(|| panic!("{reason}")) + key.len()..];
-            let xy: Vec<f64> = at[..at.find(')').unwrap()]
-                .split(',')
-                .map(|v| v.trim().parse().unwrap())
-                .collect();
-            let (mgl, p) = (xy[0], xy[1]);
+    let atlas = stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts).unwrap();
+    assert!(atlas.verdicts.iter().flatten().all(|v| v.is_some()));
+    assert!(atlas.boundaries.iter().all(|b| b.points.len() <= 10));
+    match atlas.stop {
+        Some(StopReason::MaxCurvePoints { x: mgl, y: p, .. }) => {
             // On Maievskii's or on the secular bound.
             let maievskii = (p * p - 4.0 * A1 * mgl).abs() / (4.0 * A1 * mgl);
             let secular = (p * p * (C_LAGRANGE - A1) / (C_LAGRANGE * C_LAGRANGE) - mgl).abs() / mgl;
-            assert!(maievskii.min(secular) < 1e-9, "{reason}");
+            assert!(maievskii.min(secular) < 1e-9, "({mgl}, {p})");
         }
         other => panic!("{other:?}"),
     }
+}
+
+#[test]
+fn the_start_and_the_angle_from_the_guess() {
+    let family = |mgl: f64, p: f64| (HeavyTop::lagrange(A1, C_LAGRANGE, mgl), p);
+    let guess = Vector3::new(1e-3, 0.0, 1.0); // 1e−3 rad from the sleeping top e₃
+    let base = AtlasOptions {
+        nx: 5,
+        ny: 5,
+        ..AtlasOptions::default()
+    };
+    // Default: the middle of the rectangle; the sleeping top exists everywhere, so the start
+    // does not change the verdicts.
+    let middle = stability_atlas(family, guess, (0.5, 2.0), (0.5, 5.0), &base).unwrap();
+    for start in [(0.5, 0.5), (2.0, 5.0), (1.1, 2.2)] {
+        let opts = AtlasOptions {
+            start: Some(start),
+            ..base.clone()
+        };
+        let other = stability_atlas(family, guess, (0.5, 2.0), (0.5, 5.0), &opts).unwrap();
+        assert_eq!(other.verdicts, middle.verdicts, "start {start:?}");
+    }
+    // The motion found is 1e−3 rad from the guess: refused below that angle.
+    let strict = AtlasOptions {
+        max_guess_angle: 1e-4,
+        ..base.clone()
+    };
+    match stability_atlas(family, guess, (0.5, 2.0), (0.5, 5.0), &strict) {
+        Err(RouthError::InvalidOption {
+            what: "gamma_guess",
+            reason,
+        }) => assert!(reason.contains("rad from the guess"), "{reason}"),
+        other => panic!("{other:?}"),
+    }
+    let outside = AtlasOptions {
+        start: Some((3.0, 1.0)),
+        ..base
+    };
+    assert!(matches!(
+        stability_atlas(family, guess, (0.5, 2.0), (0.5, 5.0), &outside),
+        Err(RouthError::InvalidOption { what: "start", .. })
+    ));
 }

@@ -4,7 +4,8 @@
 //! hand-derived f₂, no event where two roots of f₂ of equal Krein signature cross (a hand-derived
 //! quartic of a gyrostat), counts of steady motions between events against the global search and
 //! the closed form, finite-difference Jacobian eigenvalues on each side of every event, and the
-//! errors: exhausted budgets and unreachable branches, which say where.
+//! budgets, which end with a partial diagram and say where, and unreachable branches,
+//! which are errors.
 
 mod common;
 
@@ -14,7 +15,7 @@ use routh_core::nalgebra::{Matrix4, Vector6};
 use routh_core::stability::classify_with_krein;
 use routh_core::{
     bifurcation_diagram, continue_branch, steady_motions, BifurcationDiagram, ClassifyOptions,
-    ContinuationOptions, EventKind, Matrix3, RouthError, Stability, Vector3,
+    ContinuationOptions, EventKind, Matrix3, RouthError, Stability, StopReason, Vector3,
 };
 use test_models::jacobian::fd_jacobian;
 use test_models::roots::bracketed_roots;
@@ -375,23 +376,6 @@ fn errors_are_values() {
     ));
 }
 
-/// The `s` and γ that an error message reports after `after` ("… at s = 0.2375, γ = (+0, +0,
-/// -1) …").
-fn reported_point(reason: &str, after: &str) -> (f64, Vector3<f64>) {
-    let at = reason.find(after).unwrap_or_else(|| panic!("{reason}"));
-    let rest = &reason[at + after.len()..];
-    let s_text = rest
-        .strip_prefix("s = ")
-        .unwrap_or_else(|| panic!("{reason}"));
-    let s: f64 = s_text[..s_text.find(',').unwrap()].parse().unwrap();
-    let g_text = &s_text[s_text.find("γ = (").unwrap() + "γ = (".len()..];
-    let g: Vec<f64> = g_text[..g_text.find(')').unwrap()]
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect();
-    (s, Vector3::new(g[0], g[1], g[2]))
-}
-
 /// Whether γ is a steady motion of the Lagrange top (A₁, C, mgl) at p, to the 9 digits of an
 /// error message: γ = ±e₃, or a point of a circle γ₃ = c with p²(C − A₁)c = mgl(A₁ + (C − A₁)c²)²
 /// (the critical points of U_r(c) = ½p²/(A₁ + (C − A₁)c²) + mgl·c in c = γ₃ ∈ (−1, 1)).
@@ -404,28 +388,31 @@ fn lagrange_steady(a1: f64, c: f64, mgl: f64, p: f64, g: &Vector3<f64>) -> bool 
 }
 
 #[test]
-fn budgets_and_unreachable_branches_are_errors_that_say_where() {
+fn budgets_end_with_a_partial_diagram_and_unreachable_branches_are_errors() {
     let (a1, c, mgl) = (1.0, 1.25, 1.0);
     let top = HeavyTop::lagrange(a1, c, mgl);
     let family = |p: f64| (top.clone(), p);
     let default = ContinuationOptions::default();
-    // The budget of steps per branch: no branch of [0, 5] fits in 3 steps.
+    // The budget of steps per branch: no branch of [0, 5] fits in 3 steps. The diagram comes
+    // back with what was traced and the reason it stopped, at a steady motion.
     let tiny = ContinuationOptions {
         max_steps: 3,
         ..ContinuationOptions::default()
     };
-    match bifurcation_diagram(family, (0.0, 5.0), &tiny) {
-        Err(RouthError::InvalidOption {
-            what: "max_steps",
-            reason,
-        }) => {
-            let (s, g) = reported_point(&reason, "ran out at ");
-            assert!(s > 0.0 && s < 5.0, "{reason}");
-            assert!(lagrange_steady(a1, c, mgl, s, &g), "{reason}");
-            let (s0, g0) = reported_point(&reason, "on the branch through ");
-            assert!(lagrange_steady(a1, c, mgl, s0, &g0), "{reason}");
+    let d = bifurcation_diagram(family, (0.0, 5.0), &tiny).unwrap();
+    match d.stop {
+        Some(StopReason::MaxSteps { s, gamma }) => {
+            assert!(s > 0.0 && s < 5.0, "{s}");
+            assert!(lagrange_steady(a1, c, mgl, s, &gamma), "{s} {gamma}");
         }
-        other => panic!("{other:?}"),
+        ref other => panic!("{other:?}"),
+    }
+    assert!(!d.branches.is_empty());
+    for b in &d.branches {
+        assert!(b.points.len() <= 4);
+        for q in &b.points {
+            assert!(lagrange_steady(a1, c, mgl, q.s, &q.steady.gamma));
+        }
     }
     // The budget of branches: the diagram over [0, 5] has three.
     for (max_branches, ok) in [(2, false), (3, true)] {
@@ -433,15 +420,13 @@ fn budgets_and_unreachable_branches_are_errors_that_say_where() {
             max_branches,
             ..ContinuationOptions::default()
         };
-        match bifurcation_diagram(family, (0.0, 5.0), &opts) {
-            Ok(d) if ok => assert_eq!(d.branches.len(), 3),
-            Err(RouthError::InvalidOption {
-                what: "max_branches",
-                reason,
-            }) if !ok => {
-                let (s, g) = reported_point(&reason, "branch starts at ");
-                assert!((0.0..=5.0).contains(&s), "{reason}");
-                assert!(lagrange_steady(a1, c, mgl, s, &g), "{reason}");
+        let d = bifurcation_diagram(family, (0.0, 5.0), &opts).unwrap();
+        assert_eq!(d.branches.len(), max_branches);
+        match d.stop {
+            None if ok => {}
+            Some(StopReason::MaxBranches { s, gamma }) if !ok => {
+                assert!((0.0..=5.0).contains(&s), "{s}");
+                assert!(lagrange_steady(a1, c, mgl, s, &gamma), "{s} {gamma}");
             }
             other => panic!("max_branches = {max_branches}: {other:?}"),
         }

@@ -70,8 +70,26 @@ pub(super) fn atlas_figure(
         .filter(|&&v| occurs(Some(v)))
         .map(|&v| (Swatch::Cell(Some(v)), v.to_string()))
         .collect();
-    if occurs(None) {
+    // A missing verdict is either no steady motion (beyond a fold) or the motion lost along
+    // the row (`StabilityAtlas::lost`).
+    let is_lost = |i: usize, j: usize| atlas.lost.get(j).and_then(|r| r.get(i)) == Some(&true);
+    let (mut absent, mut lost) = (false, false);
+    for (j, row) in atlas.verdicts.iter().enumerate() {
+        for (i, v) in row.iter().enumerate() {
+            if v.is_none() {
+                if is_lost(i, j) {
+                    lost = true;
+                } else {
+                    absent = true;
+                }
+            }
+        }
+    }
+    if absent {
         legend.push((Swatch::Cell(None), "no steady motion".into()));
+    }
+    if lost {
+        legend.push((Swatch::Cell(None), "motion lost".into()));
     }
     let curves: Vec<(&BoundaryCurve, Vec<Polyline>)> = atlas
         .boundaries

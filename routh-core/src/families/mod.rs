@@ -70,13 +70,12 @@ pub struct ContinuationOptions {
     /// reached, wrapping [`RouthError::NoConvergence`](crate::RouthError::NoConvergence)).
     pub min_step: f64,
     /// Budget of continuation steps per branch, both directions together (default `20_000`); a
-    /// branch that needs more is an error,
-    /// [`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming `max_steps`, with
-    /// the `s` and γ where the budget ran out.
+    /// branch that needs more ends where the budget ran out, and the diagram comes back with
+    /// [`BifurcationDiagram::stop`] = [`StopReason::MaxSteps`] (the `s` and γ where it ran out).
     pub max_steps: usize,
-    /// Budget of branches (default `64`); a diagram with more is an error,
-    /// [`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming `max_branches`,
-    /// with the `s` and γ of the first branch over the budget.
+    /// Budget of branches (default `64`); when it is spent the diagram comes back with the
+    /// branches so far and [`BifurcationDiagram::stop`] = [`StopReason::MaxBranches`] (the `s`
+    /// and γ of the first branch over the budget).
     pub max_branches: usize,
     /// Relative tolerance of the Newton corrector on the Riemannian gradient (default `1e−12`).
     pub newton_tol: f64,
@@ -84,7 +83,8 @@ pub struct ContinuationOptions {
     /// `1e−9` of the contract).
     pub event_tol: f64,
     /// Number of parameter values, evenly spread over the range ends included, at which
-    /// [`bifurcation_diagram`] seeds branches with a global search (default `5`).
+    /// [`bifurcation_diagram`] seeds branches with a global search (default `5`). A seed value
+    /// that falls on an event is moved off it (by `1.3e−3`, then `7.1e−3` of the range).
     pub seeds: usize,
     /// Whether [`bifurcation_diagram`] checks, between consecutive events, that the number of
     /// steady motions equals what [`steady_motions`](crate::steady_motions) finds there, and seeds
@@ -136,6 +136,110 @@ pub struct BifurcationDiagram {
     pub branches: Vec<Branch>,
     /// The events, sorted by `s`.
     pub events: Vec<BranchEvent>,
+    /// `None` when the diagram is complete; otherwise why it stopped early (a budget of
+    /// [`ContinuationOptions`] ran out): the branches and events are those computed so far.
+    pub stop: Option<StopReason>,
+}
+
+impl BifurcationDiagram {
+    /// The number of steady motions at `s` according to the branches: the number of segments of
+    /// the branches' polylines that cross `s` (a circle of steady motions counts once, as it is
+    /// one point of its branch).
+    ///
+    /// Branches contain their events (folds, branch points, the tips of pitchforks) as points,
+    /// so the count is right at any `s` inside the range farther than about `1e−6·max(1, |s|)`
+    /// from an event; exactly at an event or at a point of a branch it is not meaningful.
+    ///
+    /// ```
+    /// # use routh_core::*;
+    /// # use test_models::Gyrostat;
+    /// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+    /// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+    /// // Below the fold of the circles: the hanging and the sleeping top; above the secular
+    /// // bound p = 2.5: those two and one circle of tilted precessions.
+    /// assert_eq!(d.count_at(1.0), 2);
+    /// assert_eq!(d.count_at(4.0), 3);
+    /// # Ok::<(), routh_core::RouthError>(())
+    /// ```
+    pub fn count_at(&self, s: f64) -> usize {
+        self.branches
+            .iter()
+            .map(|b| {
+                b.points
+                    .windows(2)
+                    .filter(|w| (w[0].s < s) != (w[1].s < s))
+                    .count()
+            })
+            .sum()
+    }
+}
+
+/// Why a family computation stopped before it was complete: a budget ran out. The result it
+/// comes with holds everything computed so far. (Errors, [`RouthError`](crate::RouthError), are
+/// kept for bad input: invalid options, a family that is not smooth or not finite.)
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let opts = ContinuationOptions { max_branches: 2, ..Default::default() };
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &opts)?;
+/// assert_eq!(d.branches.len(), 2);
+/// assert!(matches!(d.stop, Some(StopReason::MaxBranches { .. })));
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub enum StopReason {
+    /// [`ContinuationOptions::max_steps`] ran out on a branch at `(s, gamma)`; that branch ends
+    /// there, the others are complete.
+    MaxSteps {
+        /// The parameter where the branch ends.
+        s: f64,
+        /// The steady motion where it ends.
+        gamma: Vector3<f64>,
+    },
+    /// [`ContinuationOptions::max_branches`] was spent; a further branch would start at
+    /// `(s, gamma)`, and it and any later branch are missing.
+    MaxBranches {
+        /// The parameter of the first missing branch.
+        s: f64,
+        /// A steady motion of it.
+        gamma: Vector3<f64>,
+    },
+    /// [`AtlasOptions::max_curve_points`] ran out on a boundary curve at `(x, y)`; that curve
+    /// ends there.
+    MaxCurvePoints {
+        /// The first parameter where the curve ends.
+        x: f64,
+        /// The second parameter where the curve ends.
+        y: f64,
+        /// The steady motion there.
+        gamma: Vector3<f64>,
+    },
+}
+
+impl fmt::Display for StopReason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            StopReason::MaxSteps { s, gamma } => write!(
+                f,
+                "the budget max_steps ran out on a branch at s = {s}, γ = ({:+.9}, {:+.9}, {:+.9})",
+                gamma.x, gamma.y, gamma.z
+            ),
+            StopReason::MaxBranches { s, gamma } => write!(
+                f,
+                "the budget max_branches was spent; a further branch starts at s = {s}, \
+                 γ = ({:+.9}, {:+.9}, {:+.9})",
+                gamma.x, gamma.y, gamma.z
+            ),
+            StopReason::MaxCurvePoints { x, y, gamma } => write!(
+                f,
+                "the budget max_curve_points ran out on a boundary curve at (x, y) = ({x}, {y}), \
+                 γ = ({:+.9}, {:+.9}, {:+.9})",
+                gamma.x, gamma.y, gamma.z
+            ),
+        }
+    }
 }
 
 /// One branch: a curve of steady motions `s ↦ γ(s)`, possibly turning back in `s` at folds.
@@ -286,10 +390,20 @@ pub struct AtlasOptions {
     /// Step of the boundary-curve continuation, relative to the diagonal of the rectangle
     /// (default `0.005`).
     pub curve_step: f64,
-    /// Budget of points per boundary curve (default `20_000`); a curve that needs more is an
-    /// error, [`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming
-    /// `max_curve_points`, with the `(x, y)` and γ where the budget ran out.
+    /// Budget of points per boundary curve (default `20_000`); a curve that needs more ends
+    /// where it ran out, and the atlas comes back with [`StabilityAtlas::stop`] =
+    /// [`StopReason::MaxCurvePoints`] (the `(x, y)` and γ there).
     pub max_curve_points: usize,
+    /// Where the motion is first found from `gamma_guess` (by Newton's method on the sphere),
+    /// then followed to the nearest node, from which the grid is followed: up and down its
+    /// column, then along every row both ways. `None` (the default): the middle of the
+    /// rectangle.
+    pub start: Option<(f64, f64)>,
+    /// Largest angle (radians) between `gamma_guess` and the steady motion found from it at the
+    /// start (default `0.35`, about 20°). Farther, the motion asked for is probably not there
+    /// and Newton's method landed on another one: [`stability_atlas`] refuses
+    /// ([`RouthError::InvalidOption`](crate::RouthError::InvalidOption) naming `gamma_guess`).
+    pub max_guess_angle: f64,
     /// Number of worker threads for the grid of
     /// [`stability_atlas_parallel`] (`0`: all cores; default
     /// `0`). The result does not depend on it.
@@ -306,6 +420,8 @@ impl Default for AtlasOptions {
             curve_tol: 1e-10,
             curve_step: 0.005,
             max_curve_points: 20_000,
+            start: None,
+            max_guess_angle: 0.35,
             threads: 0,
             classify: ClassifyOptions::default(),
         }
@@ -334,10 +450,18 @@ pub struct StabilityAtlas {
     /// The grid ordinates, ascending.
     pub y: Vec<f64>,
     /// `verdicts[j][i]` at `(x[i], y[j])`; `None` where the steady motion does not exist (beyond
-    /// a fold) or could not be followed.
+    /// a fold) or could not be followed (see [`StabilityAtlas::lost`]).
     pub verdicts: Vec<Vec<Option<Stability>>>,
     /// The boundary curves, traced by continuation of their defining equations.
     pub boundaries: Vec<BoundaryCurve>,
+    /// `lost[j][i]` is `true` where `verdicts[j][i]` is `None` because the motion was lost: its
+    /// continuation towards the node stalled away from a fold (a step would land on another
+    /// steady motion, which is refused: the atlas never jumps from one motion to another), so
+    /// nothing is known there. `false` where the motion ends at a fold on the way (it does not
+    /// exist beyond it) and at every node with a verdict.
+    pub lost: Vec<Vec<bool>>,
+    /// `None` when the atlas is complete; otherwise why it stopped early (a budget ran out).
+    pub stop: Option<StopReason>,
 }
 
 /// A curve in the parameter plane where the verdict of the followed steady motion changes.

@@ -217,11 +217,19 @@ impl SearchOptions {
 ///
 /// # Degenerate and non-isolated critical points
 ///
-/// A point with one zero eigenvalue is tested for a curve along the kernel of `K`: the search
+/// A point with one zero eigenvalue is first placed where the gradient along the kernel of `K`
+/// changes sign (bisection, with Newton corrections across the kernel): Newton's method alone
+/// converges only linearly there and stops `n − 1` times its last step away from a point of order
+/// `n`. A pitchfork point (gradient cubic along the kernel) is so located to about
+/// `(ε·s_raw/|∂³g|)^{1/3}` (2e−8 rad at the Kovalevskaya top's pitchfork, `p_ψ = 2`, `γ = e₁`),
+/// so that its copies merge. It is then tested for a curve along
+/// the kernel of `K`: the search
 /// steps by `h` along the null direction, re-converges, and traces the curve by
 /// predictor–corrector continuation if it lands on a *different*, also degenerate critical point
 /// on the same level at a distance in `[h/4, 3h]`; `h` is 0.05 rad, then quarters of it down to
-/// `0.05/4⁸` for small curves (a closed curve must get at least 12 vertices). One representative
+/// `0.05/4⁸` for small curves (a closed curve must get at least 12 vertices; a trace that does
+/// not close must get at least 4, else the point is a degenerate isolated one: the neighbours of
+/// a pitchfork point converge onto it). One representative
 /// per curve is reported (`isolated: false`); a later degenerate point on the same level within
 /// `h/2` of the traced polyline belongs to that curve. A non-degenerate point is never absorbed by
 /// a curve (the sleeping top inside a tiny circle of tilted precessions). Two circles on the same

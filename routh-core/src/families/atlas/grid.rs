@@ -28,6 +28,9 @@ const JUMP_RATIO: f64 = 0.3;
 const JUMP_FLOOR: f64 = 1e-4;
 /// Jump detection: eigenvalues of `K` move by at most this fraction of the local scale per step.
 const EIGEN_JUMP: f64 = 0.3;
+/// A continuation that stalls where an eigenvalue of `K` is below this fraction of the size of the
+/// derivatives ended at a fold; elsewhere the motion was lost.
+const FOLD_EIGEN: f64 = 1e-3;
 
 /// A grid node where the motion was found.
 #[derive(Debug, Clone)]
@@ -174,25 +177,67 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         })
     }
 
-    /// One row at ordinate `y`, from its first node.
+    /// Whether the motion, lost by [`Ctx::follow`] at `last` on the segment from `a` to `b`,
+    /// ended at a fold (the restricted second variation has an eigenvalue below `1e−3` of the
+    /// size of the derivatives there: the motion ceases to exist) rather than being lost (its
+    /// continuation would jump to another motion or stalls for another reason).
+    pub(super) fn lost_at(&self, a: (f64, f64), b: (f64, f64), last: (f64, Vector3<f64>)) -> bool {
+        let (s, gamma) = last;
+        let (m, p) = (self.family)(a.0 + s * (b.0 - a.0), a.1 + s * (b.1 - a.1));
+        match Local::at(&m, &gamma, p) {
+            Ok(l) => {
+                let k = sym2_eigen(&l.restricted()).values;
+                k[0].abs().min(k[1].abs()) > FOLD_EIGEN * l.raw_scale()
+            }
+            Err(_) => true,
+        }
+    }
+
+    /// Follows the motion along the line of nodes `xs` at ordinate `y` from the node `i0`, where
+    /// it is at `first`, both ways. Returns the nodes and, for each node without the motion,
+    /// whether it was lost (see [`Ctx::lost_at`]); `lost0` is that flag for every node when
+    /// `first` is `None`.
     pub(super) fn row(
         &self,
         xs: &[f64],
         y: f64,
+        i0: usize,
         first: Option<Vector3<f64>>,
-    ) -> Result<Vec<Option<Node>>, RouthError> {
+        lost0: bool,
+    ) -> Result<Line, RouthError> {
         let mut out: Vec<Option<Node>> = vec![None; xs.len()];
-        let Some(g0) = first else { return Ok(out) };
-        out[0] = Some(self.node(xs[0], y, g0)?);
-        for i in 1..xs.len() {
-            self.member(xs[i], y)?;
-            let prev = out[i - 1].as_ref().map(|n| n.gamma);
-            let Some(g) = prev else { break };
-            match self.follow((xs[i - 1], y), &g, (xs[i], y)).reached {
-                Some(g) => out[i] = Some(self.node(xs[i], y, g)?),
-                None => break,
+        let mut lost = vec![false; xs.len()];
+        let Some(g0) = first else {
+            return Ok((out, vec![lost0; xs.len()]));
+        };
+        out[i0] = Some(self.node(xs[i0], y, g0)?);
+        let order: [Vec<usize>; 2] = [(i0 + 1..xs.len()).collect(), (0..i0).rev().collect()];
+        for dir in order {
+            let mut gone: Option<bool> = None;
+            for i in dir {
+                if let Some(l) = gone {
+                    lost[i] = l;
+                    continue;
+                }
+                self.member(xs[i], y)?;
+                let k = if i > i0 { i - 1 } else { i + 1 };
+                let Some(g) = out[k].as_ref().map(|n| n.gamma) else {
+                    continue;
+                };
+                let f = self.follow((xs[k], y), &g, (xs[i], y));
+                match f.reached {
+                    Some(g) => out[i] = Some(self.node(xs[i], y, g)?),
+                    None => {
+                        let l = self.lost_at((xs[k], y), (xs[i], y), f.last);
+                        lost[i] = l;
+                        gone = Some(l);
+                    }
+                }
             }
         }
-        Ok(out)
+        Ok((out, lost))
     }
 }
+
+/// The nodes of one line of the grid and, where the motion is missing, whether it was lost.
+pub(super) type Line = (Vec<Option<Node>>, Vec<bool>);

@@ -3,18 +3,23 @@
 //!
 //! # The grid
 //!
-//! The steady motion is found once, at the corner `(x₀, y₀)`, by
-//! [`steady_motion_near`]. It is then followed from node to node:
-//! up the first column (`x = x₀`, `y` ascending), then along every row from its first node
-//! (`x` ascending). Each move from a node to its neighbour is a small continuation along the
+//! The steady motion is found once, at [`AtlasOptions::start`] (default: the middle of the
+//! rectangle), by [`steady_motion_near`] from the guess; if it lies farther than
+//! [`AtlasOptions::max_guess_angle`] from the guess the atlas is refused (the motion asked for is
+//! not there). It is followed to the nearest node, then from node to node: up and down the
+//! column of that node, then along every row both ways from its node in that column. Each move
+//! from a node to its neighbour is a small continuation along the
 //! segment between them (the two-parameter family restricted to the segment is a one-parameter
 //! family, so [`chart_eval`] applies): a tangent predictor `dξ/ds = −F_ξ⁻¹F_s`, then Newton's
 //! method on the sphere at the new parameters in the chart around the old γ. A step is accepted
 //! only if Newton converges, lands within `0.3·|Δξ_pred| + 10⁻⁴` rad of the prediction (no jump
 //! to another branch) and the eigenvalues of the restricted second variation `K` move by less
 //! than `0.3` of the local scale; otherwise the step is halved. Below `10⁻⁶` of the segment the
-//! motion is lost (it ended at a fold): that node and the rest of its row (or column) are
-//! `None` — continuing further along the same line would cross the same fold.
+//! motion is gone: at a fold (an eigenvalue of `K` below `10⁻³` of the size of the derivatives
+//! where it stalled) it does not exist beyond; elsewhere it is *lost*
+//! ([`StabilityAtlas::lost`]): a step would land on another motion. That node and the rest of
+//! its row (or column, away from the start) are `None` — continuing further along the same line
+//! would cross the same fold, and a motion found again there could be another sheet.
 //!
 //! Rows are independent once the first column is known, so they run in parallel on a pool of
 //! [`AtlasOptions::threads`] threads by [`stability_atlas_parallel`]; the traversal inside a row
@@ -80,27 +85,29 @@ use std::marker::PhantomData;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 
-use super::{AtlasOptions, StabilityAtlas};
+use super::{AtlasOptions, StabilityAtlas, StopReason};
 use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::steady::steady_motion_near;
-use grid::Node;
+use grid::{Line, Node};
 
 /// Singular values below this fraction of the largest (or of the local scale) are zero.
 const PINV_CUT: f64 = 1e-10;
 /// Central-difference steps: parameters (relative to the range) and chart coordinates (rad).
 const PARAM_FD: f64 = 1e-6;
 
-/// The stability atlas of the steady motion nearest `gamma_guess` at `(x.0, y.0)`: its verdict
+/// The stability atlas of the steady motion nearest `gamma_guess` at [`AtlasOptions::start`]
+/// (default: the middle of the rectangle): its verdict
 /// ([`classify_with`] with [`AtlasOptions::classify`]) at every node of an `nx × ny` grid of the
 /// rectangle `[x.0, x.1] × [y.0, y.1]` (ends included), following the motion by continuation from
 /// node to node, and the boundary curves of its stability regions traced by continuation of their
 /// defining equations (the algorithm in full is in the docs of the source module, `families/atlas/mod.rs`):
 ///
 /// - `verdicts[j][i]` is the verdict at `(x[i], y[j])`, `None` where the followed motion no longer
-///   exists (beyond a fold) or could not be followed. The first column is followed upwards from
-///   the corner, then every row from its first node; once lost, a row (or the first column) stays
-///   lost.
+///   exists (beyond a fold) or was lost (`lost[j][i]`: its continuation would have jumped to
+///   another steady motion, which is never done). The column of the start node is followed both
+///   ways from it, then every row both ways from its node in that column; once gone, the rest of
+///   a line stays `None`.
 /// - `boundaries`: curves where an eigenvalue of the restricted second variation `K` vanishes
 ///   ([`EventKind::Fold`] if the motion is lost on one side, else [`EventKind::BranchPoint`]) or,
 ///   with degree of instability 2, the discriminant of `f₂` in `λ²` vanishes
@@ -112,12 +119,16 @@ const PARAM_FD: f64 = 1e-6;
 ///   [`AtlasOptions::threads`]) for a family that can be shared between threads, with the same
 ///   result bit for bit.
 ///
+/// A boundary curve longer than [`AtlasOptions::max_curve_points`] ends there, and the atlas
+/// comes back with [`StabilityAtlas::stop`] saying where.
+///
 /// Errors: [`RouthError::InvalidOption`] for `nx < 2`, `ny < 2`, an empty or non-finite range,
-/// or options out of range; [`RouthError::InvalidOption`] naming `max_curve_points` when a
-/// boundary curve needs more than [`AtlasOptions::max_curve_points`] points (the reason gives
-/// the `(x, y)` and γ where the budget ran out); the errors of [`steady_motion_near`] at the
-/// corner; a non-finite `p_ψ` from the family, or a failure of [`classify_with`] at a node where
-/// the motion was found — these are wrapped as
+/// or options out of range (a start outside the rectangle); [`RouthError::InvalidOption`] naming
+/// `gamma_guess` when the motion found from it at the start is farther than
+/// [`AtlasOptions::max_guess_angle`] from it, or naming `start` when that motion cannot be
+/// followed from a start between nodes to the nearest node; the errors of
+/// [`steady_motion_near`] at the start; a non-finite `p_ψ` from the family, or a failure of
+/// [`classify_with`] at a node where the motion was found — these are wrapped as
 /// `AtParameter { s: x, source: AtParameter { s: y, source } }`.
 ///
 /// ```
@@ -204,11 +215,18 @@ pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     y: (f64, f64),
     opts: &AtlasOptions,
 ) -> Result<StabilityAtlas, RouthError> {
-    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, column| {
-        (0..ys.len())
-            .map(|j| ctx.row(xs, ys[j], column[j]))
-            .collect()
-    })
+    atlas_with(
+        &family,
+        gamma_guess,
+        x,
+        y,
+        opts,
+        |ctx, xs, ys, i0, column| {
+            (0..ys.len())
+                .map(|j| ctx.row(xs, ys[j], i0, column[j].0, column[j].1))
+                .collect()
+        },
+    )
 }
 
 /// [`stability_atlas`] with the rows of the grid on [`AtlasOptions::threads`] threads (`0`: all
@@ -243,20 +261,30 @@ pub fn stability_atlas_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>
             what: "threads",
             reason: e.to_string(),
         })?;
-    atlas_with(&family, gamma_guess, x, y, opts, |ctx, xs, ys, column| {
-        pool.install(|| {
-            (0..ys.len())
-                .into_par_iter()
-                .map(|j| ctx.row(xs, ys[j], column[j]))
-                .collect()
-        })
-    })
+    atlas_with(
+        &family,
+        gamma_guess,
+        x,
+        y,
+        opts,
+        |ctx, xs, ys, i0, column| {
+            pool.install(|| {
+                (0..ys.len())
+                    .into_par_iter()
+                    .map(|j| ctx.row(xs, ys[j], i0, column[j].0, column[j].1))
+                    .collect()
+            })
+        },
+    )
 }
 
-/// Rows of nodes of the grid, or an error.
-type Rows = Result<Vec<Vec<Option<Node>>>, RouthError>;
+/// Rows of nodes of the grid (with their lost flags), or an error.
+type Rows = Result<Vec<Line>, RouthError>;
 
-/// The atlas, with the rows computed by `rows` (sequentially or in parallel) from the first
+/// The first column: at each ordinate γ at the start column, if reached, and whether it was lost.
+type Column = [(Option<Vector3<f64>>, bool)];
+
+/// The atlas, with the rows computed by `rows` (sequentially or in parallel) from the start
 /// column.
 fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     family: &'a F,
@@ -264,28 +292,81 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     x: (f64, f64),
     y: (f64, f64),
     opts: &'a AtlasOptions,
-    rows: impl FnOnce(&Ctx<'a, M, F>, &[f64], &[f64], &[Option<Vector3<f64>>]) -> Rows,
+    rows: impl FnOnce(&Ctx<'a, M, F>, &[f64], &[f64], usize, &Column) -> Rows,
 ) -> Result<StabilityAtlas, RouthError> {
     validate(x, y, opts)?;
     let ctx = Ctx::new(family, x, y, opts);
     let xs = linspace(x, opts.nx);
     let ys = linspace(y, opts.ny);
 
-    // The corner, by a local search.
-    let (m0, p0) = ctx.member(x.0, y.0)?;
-    let start = steady_motion_near(&m0, gamma_guess, p0).map_err(|e| at_xy(x.0, y.0, e))?;
+    // The start: the motion nearest the guess at the start point, followed to its nearest node.
+    let (sx, sy) = opts.start.unwrap_or((0.5 * (x.0 + x.1), 0.5 * (y.0 + y.1)));
+    let nearest = |v: &[f64], t: f64| {
+        (0..v.len())
+            .min_by(|&a, &b| (v[a] - t).abs().total_cmp(&(v[b] - t).abs()))
+            .unwrap_or(0)
+    };
+    let (i0, j0) = (nearest(&xs, sx), nearest(&ys, sy));
+    let (m0, p0) = ctx.member(sx, sy)?;
+    let found = steady_motion_near(&m0, gamma_guess, p0).map_err(|e| at_xy(sx, sy, e))?;
+    let guess = gamma_guess.normalize();
+    let angle = guess.dot(&found.gamma).clamp(-1.0, 1.0).acos();
+    if angle.is_nan() || angle > opts.max_guess_angle {
+        return Err(RouthError::InvalidOption {
+            what: "gamma_guess",
+            reason: format!(
+                "the steady motion found from it at the start (x, y) = ({sx}, {sy}), γ = \
+                 ({:+.9}, {:+.9}, {:+.9}), is {angle:.4} rad from the guess, more than \
+                 max_guess_angle = {} rad: the motion asked for is probably not there; give \
+                 another start or a better guess",
+                found.gamma.x, found.gamma.y, found.gamma.z, opts.max_guess_angle
+            ),
+        });
+    }
+    let start = if (sx, sy) == (xs[i0], ys[j0]) {
+        found.gamma
+    } else {
+        ctx.follow((sx, sy), &found.gamma, (xs[i0], ys[j0]))
+            .reached
+            .ok_or_else(|| RouthError::InvalidOption {
+                what: "start",
+                reason: format!(
+                    "the steady motion found at the start (x, y) = ({sx}, {sy}) cannot be \
+                     followed to the nearest node ({}, {}); give a start on a node",
+                    xs[i0], ys[j0]
+                ),
+            })?
+    };
 
-    // The first column, sequentially.
-    let mut column: Vec<Option<Vector3<f64>>> = vec![None; opts.ny];
-    column[0] = Some(start.gamma);
-    for j in 1..opts.ny {
-        let Some(g) = column[j - 1] else { break };
-        ctx.member(xs[0], ys[j])?;
-        column[j] = ctx.follow((xs[0], ys[j - 1]), &g, (xs[0], ys[j])).reached;
+    // The start column, both ways from the start node, sequentially.
+    let mut column: Vec<(Option<Vector3<f64>>, bool)> = vec![(None, false); opts.ny];
+    column[j0] = (Some(start), false);
+    let order: [Vec<usize>; 2] = [(j0 + 1..opts.ny).collect(), (0..j0).rev().collect()];
+    for dir in order {
+        let mut gone: Option<bool> = None;
+        for j in dir {
+            if let Some(l) = gone {
+                column[j] = (None, l);
+                continue;
+            }
+            let k = if j > j0 { j - 1 } else { j + 1 };
+            let Some(g) = column[k].0 else { continue };
+            ctx.member(xs[i0], ys[j])?;
+            let f = ctx.follow((xs[i0], ys[k]), &g, (xs[i0], ys[j]));
+            match f.reached {
+                Some(g) => column[j] = (Some(g), false),
+                None => {
+                    let l = ctx.lost_at((xs[i0], ys[k]), (xs[i0], ys[j]), f.last);
+                    column[j] = (None, l);
+                    gone = Some(l);
+                }
+            }
+        }
     }
 
-    // The rows, each from its first node in a fixed order.
-    let rows = rows(&ctx, &xs, &ys, &column)?;
+    // The rows, each from its node in the start column in a fixed order.
+    let lines = rows(&ctx, &xs, &ys, i0, &column)?;
+    let (rows, lost): (Vec<Vec<Option<Node>>>, Vec<Vec<bool>>) = lines.into_iter().unzip();
 
     let boundaries = ctx.boundaries(&xs, &ys, &rows)?;
     let verdicts = rows
@@ -296,11 +377,24 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
                 .collect()
         })
         .collect();
+    let lost = lost
+        .into_iter()
+        .zip(&rows)
+        .map(|(l, r)| {
+            l.into_iter()
+                .zip(r)
+                .map(|(l, n)| l && n.is_none())
+                .collect()
+        })
+        .collect();
+    let stop = ctx.stop.lock().map(|s| s.clone()).unwrap_or(None);
     Ok(StabilityAtlas {
         x: xs,
         y: ys,
         verdicts,
         boundaries,
+        lost,
+        stop,
     })
 }
 
@@ -338,6 +432,20 @@ fn validate(x: (f64, f64), y: (f64, f64), opts: &AtlasOptions) -> Result<(), Rou
             "curve_step",
             format!("must be in (0, 1] (got {:e})", opts.curve_step),
         );
+    }
+    if !(opts.max_guess_angle > 0.0 && opts.max_guess_angle <= std::f64::consts::PI) {
+        return invalid(
+            "max_guess_angle",
+            format!("must be in (0, π] (got {:e})", opts.max_guess_angle),
+        );
+    }
+    if let Some((sx, sy)) = opts.start {
+        if !(sx >= x.0 && sx <= x.1 && sy >= y.0 && sy <= y.1) {
+            return invalid(
+                "start",
+                format!("must lie in the rectangle (got ({sx}, {sy}))"),
+            );
+        }
     }
     if opts.max_curve_points < 2 {
         return invalid(
@@ -377,6 +485,8 @@ struct Ctx<'a, M, F> {
     hx: f64,
     hy: f64,
     opts: &'a AtlasOptions,
+    /// The first budget that ran out, if any (shared by the rows' threads).
+    stop: std::sync::Mutex<Option<StopReason>>,
     _model: PhantomData<fn() -> M>,
 }
 
@@ -390,7 +500,17 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
             hx: step(x),
             hy: step(y),
             opts,
+            stop: std::sync::Mutex::new(None),
             _model: PhantomData,
+        }
+    }
+
+    /// Records the first budget that ran out.
+    fn stopped(&self, why: StopReason) {
+        if let Ok(mut s) = self.stop.lock() {
+            if s.is_none() {
+                *s = Some(why);
+            }
         }
     }
 

@@ -4,7 +4,7 @@
 use nalgebra::{Vector2, Vector4};
 
 use super::super::equations::chart;
-use super::super::{BoundaryCurve, EventKind};
+use super::super::{BoundaryCurve, EventKind, StopReason};
 use super::curve::{fold_indicator, null_tangent, CurvePoint, Test};
 use super::edge::Seed;
 use super::grid::Node;
@@ -42,8 +42,8 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
     /// Follows a curve from `start` along `t0` (in the chart around `start.gamma`), with at most
     /// `budget` points: the points after the start, and whether it closed.
     ///
-    /// Errors: [`RouthError::InvalidOption`] naming `max_curve_points` when the budget is spent
-    /// before the curve leaves the rectangle, closes or ends.
+    /// When the budget is spent before the curve leaves the rectangle, closes or ends, the curve
+    /// ends there and [`StopReason::MaxCurvePoints`] is recorded.
     pub(super) fn trace(
         &self,
         test0: Test,
@@ -62,18 +62,15 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         let inside = |u: f64, v: f64| (0.0..=1.0).contains(&u) && (0.0..=1.0).contains(&v);
         loop {
             if pts.len() >= budget {
+                // The budget ends this curve, not the atlas: the atlas comes back with
+                // `stop` saying where.
                 let (x, y) = self.unscale(cur.u, cur.v);
-                let (x0, y0) = self.unscale(start.u, start.v);
-                let g = cur.gamma;
-                return Err(RouthError::InvalidOption {
-                    what: "max_curve_points",
-                    reason: format!(
-                        "the budget of {} points per boundary curve ran out at (x, y) = ({x}, \
-                         {y}), γ = ({:+.9}, {:+.9}, {:+.9}), on the curve through ({x0}, {y0}), \
-                         before it left the rectangle, closed or ended; raise it",
-                        self.opts.max_curve_points, g.x, g.y, g.z
-                    ),
+                self.stopped(StopReason::MaxCurvePoints {
+                    x,
+                    y,
+                    gamma: cur.gamma,
                 });
+                return Ok((pts, false));
             }
             let basis = tangent_basis(&cur.gamma);
             let w = Vector4::new(0.0, 0.0, cur.u, cur.v);
@@ -245,11 +242,12 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 let Some(t0) = null_tangent(&e.jac, &r) else {
                     continue;
                 };
-                let (fwd, closed) = self.trace(test, start, t0, budget - 1)?;
+                let (fwd, closed) = self.trace(test, start, t0, budget.saturating_sub(1))?;
                 let back = if closed {
                     Vec::new()
                 } else {
-                    self.trace(test, start, -t0, budget - 1 - fwd.len())?.0
+                    self.trace(test, start, -t0, budget.saturating_sub(1 + fwd.len()))?
+                        .0
                 };
                 let mut all: Vec<(CurvePoint, f64)> = back.into_iter().rev().collect();
                 all.push((start, fold_indicator(&e)));

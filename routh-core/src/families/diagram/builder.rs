@@ -7,7 +7,9 @@ use super::CountCheck;
 use crate::error::RouthError;
 use crate::families::continuation::{Constraint, Ctx, Node};
 use crate::families::equations::{at, member, Local};
-use crate::families::{BifurcationDiagram, Branch, BranchEvent, ContinuationOptions, EventKind};
+use crate::families::{
+    BifurcationDiagram, Branch, BranchEvent, ContinuationOptions, EventKind, StopReason,
+};
 use crate::model::Routhian;
 use crate::stability::Stability;
 use crate::steady::steady_motions_with;
@@ -26,6 +28,8 @@ pub(super) struct Traced {
     pub(super) switches: Vec<Switch>,
     /// Continuation steps spent (out of [`ContinuationOptions::max_steps`]).
     pub(super) steps: usize,
+    /// Set when the budget of steps ran out before the branch ended.
+    pub(super) stop: Option<StopReason>,
 }
 
 /// Why [`Builder::start_branch`] started no branch at a steady motion.
@@ -53,6 +57,8 @@ pub(super) struct Builder<'a, M, F> {
     pub(super) events: Vec<BranchEvent>,
     pub(super) pending: Vec<Switch>,
     pub(super) done_switches: Vec<(f64, Vector3<f64>)>,
+    /// The first budget that ran out, if any.
+    pub(super) stop: Option<StopReason>,
     pub(super) _model: std::marker::PhantomData<fn() -> M>,
 }
 
@@ -66,6 +72,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             events: Vec::new(),
             pending: Vec::new(),
             done_switches: Vec::new(),
+            stop: None,
             _model: std::marker::PhantomData,
         }
     }
@@ -81,18 +88,65 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         self.range.1 - self.range.0
     }
 
-    /// Seeds every steady motion at `s` that no branch covers yet.
+    /// Seeds every steady motion at `s` that no branch covers yet. A seed value that falls on
+    /// an event (a steady motion there is degenerate, or the corrector or the classification
+    /// fails at it) is never fatal: the seed is moved by `±1.3e−3` and then `±7.1e−3` of the
+    /// range (inside it) and the search repeated there; when every move fails too the seed is
+    /// dropped (the branches through an event are found from their regular points by the other
+    /// seeds, the branch switching and the count checks).
+    ///
+    /// Errors: those of the family and the model (bad input), and of [`Builder::follow`] (a
+    /// branch that cannot be continued from the seed nor from any moved seed).
     pub(super) fn seed_all(&mut self, s: f64) -> Result<(), RouthError> {
-        let (m, p) = member(self.family, s)?;
-        let motions = steady_motions_with(&m, p, &self.opts.search).map_err(|e| at(s, e))?;
-        for sm in motions {
-            if !self.covered(s, &sm.gamma, sm.isolated)? {
-                // A seed that starts no branch (a bifurcation point hit by the seed value) is
-                // not an error: the branches through it are found from their regular points.
-                self.start_branch(sm.gamma, s, sm.isolated)?;
+        let len = self.len();
+        let mut first_failure = None;
+        for shift in [0.0, 1.3e-3, -1.3e-3, 7.1e-3, -7.1e-3] {
+            let t = s + shift * len;
+            if t < self.range.0 || t > self.range.1 {
+                continue;
+            }
+            match self.seed_at(t) {
+                Ok(true) => return Ok(()),
+                Ok(false) => {}
+                // A branch started from a seed on an event can fail to continue (a degenerate
+                // point taken for a point of a circle); a branch that fails from every moved
+                // seed as well is a family that is not smooth: that is an error.
+                Err(e @ RouthError::AtParameter { .. })
+                    if matches!(
+                        &e,
+                        RouthError::AtParameter { source, .. }
+                            if matches!(**source, RouthError::NoConvergence { .. })
+                    ) =>
+                {
+                    first_failure.get_or_insert(e);
+                }
+                Err(e) => return Err(e),
             }
         }
-        Ok(())
+        first_failure.map_or(Ok(()), Err)
+    }
+
+    /// [`Builder::seed_all`] at exactly `s`: `Ok(false)` when some steady motion there started no
+    /// branch (or the search failed to converge).
+    fn seed_at(&mut self, s: f64) -> Result<bool, RouthError> {
+        let (m, p) = member(self.family, s)?;
+        let motions = match steady_motions_with(&m, p, &self.opts.search) {
+            Ok(v) => v,
+            Err(RouthError::NoConvergence { .. }) => return Ok(false),
+            Err(e) => return Err(at(s, e)),
+        };
+        let mut all = true;
+        for sm in motions {
+            if self.stop.is_some() {
+                break;
+            }
+            if !self.covered(s, &sm.gamma, sm.isolated)?
+                && self.start_branch(sm.gamma, s, sm.isolated)?.is_some()
+            {
+                all = false;
+            }
+        }
+        Ok(all)
     }
 
     pub(super) fn scale_at(&self, gamma: &Vector3<f64>, s: f64) -> Result<f64, RouthError> {
@@ -130,27 +184,44 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         if isolated == zero {
             return Ok(Some(NotStarted::Degenerate));
         }
+        // A point of a circle keeps its zero eigenvalue along the branch; a degenerate isolated
+        // point that the search took for a point of a curve (the tip of a pitchfork, where the
+        // amended potential is quartic along the kernel of K) loses it one step away.
+        // A seed that cannot show this (no step along the branch succeeds) is moved.
+        if !isolated {
+            let mut circle = false;
+            for h in [1e-2, 1e-3] {
+                if let Some(next) = ctx.advance(&start, h)? {
+                    circle = next.eig.iter().any(|e| e.abs() <= 1e-6);
+                    break;
+                }
+            }
+            if !circle {
+                return Ok(Some(NotStarted::Degenerate));
+            }
+        }
         self.follow(&ctx, start)?;
         Ok(None)
     }
 
-    /// Follows the branch through `start` both ways and records it.
+    /// Records the first budget that ran out.
+    pub(super) fn stopped(&mut self, why: StopReason) {
+        if self.stop.is_none() {
+            self.stop = Some(why);
+        }
+    }
+
+    /// Follows the branch through `start` both ways and records it. When the budget of
+    /// branches is spent, records [`StopReason::MaxBranches`] instead.
     ///
-    /// Errors: [`RouthError::InvalidOption`] naming `max_branches` when the budget of branches
-    /// is spent, and the errors of [`Builder::trace`] (the budget of steps, a branch that cannot
-    /// be continued).
+    /// Errors: those of [`Builder::trace`] (a branch that cannot be continued).
     pub(super) fn follow(&mut self, ctx: &Ctx<'a, M, F>, start: Node) -> Result<(), RouthError> {
         if self.branches.len() >= self.opts.max_branches {
-            return Err(RouthError::InvalidOption {
-                what: "max_branches",
-                reason: format!(
-                    "the budget of {} branches is spent and a further branch starts at s = {}, \
-                     γ = {}; raise it",
-                    self.opts.max_branches,
-                    start.s,
-                    show(&start.gamma)
-                ),
+            self.stopped(StopReason::MaxBranches {
+                s: start.s,
+                gamma: start.gamma,
             });
+            return Ok(());
         }
         let fwd = self.trace(ctx, start.clone(), self.opts.max_steps)?;
         let mut back_start = start.clone();
@@ -165,6 +236,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 events: Vec::new(),
                 switches: Vec::new(),
                 steps: 0,
+                stop: None,
             }
         } else {
             self.trace(ctx, back_start, self.opts.max_steps - fwd.steps)?
@@ -182,6 +254,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         }
         self.pending.extend(back.switches);
         self.pending.extend(fwd.switches);
+        for why in [fwd.stop, back.stop].into_iter().flatten() {
+            self.stopped(why);
+        }
         self.branches.push((nodes, ctx.isolated));
         Ok(())
     }
@@ -310,7 +385,67 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         Ok(out)
     }
 
+    /// Joins the branches born at a branch point to the located event point: the node of each
+    /// other branch nearest to it (a turning point located to `event_tol` in `s`, hence only to
+    /// about `√event_tol` in γ at a pitchfork tip) is replaced by the event point, and a branch
+    /// of circles that ends next to its axis gets the event point as its end.
+    fn join_at_branch_points(&mut self) {
+        for e in &self.events {
+            if e.kind != EventKind::BranchPoint {
+                continue;
+            }
+            let Some(event_node) = self
+                .branches
+                .iter()
+                .flat_map(|(nodes, _)| nodes.iter())
+                .find(|n| n.s == e.s && n.gamma == e.gamma)
+                .cloned()
+            else {
+                continue;
+            };
+            let len = self.range.1 - self.range.0;
+            for (i, (nodes, isolated)) in self.branches.iter_mut().enumerate() {
+                if i == e.branch || nodes.is_empty() {
+                    continue;
+                }
+                let (ds_tol, dg_tol) = join_tolerances(*isolated, e.s, len);
+                let near =
+                    |n: &Node| (n.s - e.s).abs() <= ds_tol && (n.gamma - e.gamma).norm() <= dg_tol;
+                let Some((k, _)) =
+                    nodes
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, n)| near(n))
+                        .min_by(|x, y| {
+                            let dx = (x.1.gamma - e.gamma).norm();
+                            let dy = (y.1.gamma - e.gamma).norm();
+                            dx.total_cmp(&dy)
+                        })
+                else {
+                    continue;
+                };
+                let last = nodes.len() - 1;
+                let exact = |n: &Node| n.s == e.s && n.gamma == e.gamma;
+                if exact(&nodes[k]) {
+                    continue;
+                }
+                let close = (nodes[k].gamma - e.gamma).norm() <= 1e-4;
+                if (k == 0 || k == last) && !close {
+                    // An end next to the point: extend the branch to it.
+                    if k == 0 {
+                        nodes.insert(0, event_node.clone());
+                    } else {
+                        nodes.push(event_node.clone());
+                    }
+                } else if close {
+                    nodes[k] = event_node.clone();
+                }
+            }
+        }
+    }
+
     pub(super) fn finish(mut self) -> BifurcationDiagram {
+        self.join_at_branch_points();
         self.events.sort_by(|a, b| a.s.total_cmp(&b.s));
         BifurcationDiagram {
             branches: self
@@ -322,7 +457,21 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 })
                 .collect(),
             events: self.events,
+            stop: self.stop,
         }
+    }
+}
+
+/// How far (in `s`, in γ) a point of a branch may be from a branch point to be joined to it:
+/// `1e−4·max(1, |s|)` and `1e−2` for a pitchfork's tip (located to `event_tol` in `s`); for the end
+/// of a branch of circles next to its axis (where the continuation stops before the circle
+/// direction is lost) `1e−2` of the range and `0.1` rad: along such a branch `s` is monotone up to
+/// the axis (the circles shrink as `√|s − s*|`), so the segment to the axis counts right.
+pub(super) fn join_tolerances(isolated: bool, s: f64, len: f64) -> (f64, f64) {
+    if isolated {
+        (1e-4 * s.abs().max(1.0), 1e-2)
+    } else {
+        (1e-2 * len, 0.1)
     }
 }
 

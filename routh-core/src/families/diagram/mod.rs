@@ -81,15 +81,19 @@ impl CheckedDiagram {
 /// branches is compared with a global search, and missing branches are seeded there
 /// ([`bifurcation_diagram_checked`] returns the comparisons).
 ///
+/// Seed values that fall on an event (a branch point at a round parameter value, as `p = 2` of
+/// the Kovalevskaya top) are moved off it, never fatal; points of a branch next to an event are
+/// classified on the corrector's word. Every branch contains its located events and turning
+/// points (the tips of pitchforks, folds) as points, so [`BifurcationDiagram::count_at`] and a
+/// drawing of the polylines are right away from the events.
+///
 /// A branch ends only where it leaves the range (exactly on its end), where it closes, or where a
-/// branch of circles reaches its axis. Anything else is an error, never a silently shortened
-/// diagram:
+/// branch of circles reaches its axis. A budget that runs out ends the computation with the
+/// diagram so far and [`BifurcationDiagram::stop`] saying why ([`StopReason`](super::StopReason):
+/// [`ContinuationOptions::max_steps`] on one branch, [`ContinuationOptions::max_branches`]).
+/// Errors are kept for bad input:
 ///
 /// - [`RouthError::InvalidOption`] for an empty or non-finite range or invalid options;
-/// - [`RouthError::InvalidOption`] naming `max_steps` when a branch needs more than
-///   [`ContinuationOptions::max_steps`] steps, or `max_branches` when there are more than
-///   [`ContinuationOptions::max_branches`] branches; the reason gives `s` and γ where the budget
-///   ran out (and the branch, by a point of it);
 /// - [`RouthError::AtParameter`] at the last `s` reached, wrapping [`RouthError::NoConvergence`],
 ///   when the corrector fails for every step down to [`ContinuationOptions::min_step`] (the
 ///   branch cannot be continued: the family is not smooth there, or the branch runs into a

@@ -4,34 +4,31 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::builder::{show, Builder};
+use super::builder::{join_tolerances, Builder};
 use crate::error::RouthError;
 use crate::families::continuation::{Constraint, Node};
+use crate::families::StopReason;
 use crate::model::Routhian;
 use crate::sphere::tangent_basis;
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// Starts the branches that leave the branch points found so far.
     ///
-    /// Errors: [`RouthError::InvalidOption`] naming `max_branches` when more than
-    /// `4·max_branches` branch points are met (each can start up to two branches), and the
-    /// errors of [`Builder::follow`].
+    /// More than `4·max_branches` branch points (each can start up to two branches) end the
+    /// switching with [`StopReason::MaxBranches`].
+    ///
+    /// Errors: those of [`Builder::follow`].
     pub(super) fn switch_all(&mut self) -> Result<(), RouthError> {
         let mut rounds = 0;
         while let Some(sw) = self.pending.pop() {
             rounds += 1;
             let n = &sw.node;
             if rounds > 4 * self.opts.max_branches {
-                return Err(RouthError::InvalidOption {
-                    what: "max_branches",
-                    reason: format!(
-                        "more than 4·max_branches = {} branch points to switch at, the next at \
-                         s = {}, γ = {}; raise it",
-                        4 * self.opts.max_branches,
-                        n.s,
-                        show(&n.gamma)
-                    ),
+                self.stopped(StopReason::MaxBranches {
+                    s: n.s,
+                    gamma: n.gamma,
                 });
+                return Ok(());
             }
             if self
                 .done_switches
@@ -87,6 +84,23 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         eps: f64,
         isolated: bool,
     ) -> Result<(), RouthError> {
+        // A branch of circles that already ends next to this point of its axis (traced from a
+        // seed down to where its circles shrink to the pole) is the one that would start here.
+        if !isolated {
+            let (ds_tol, dg_tol) = join_tolerances(false, n.s, self.len());
+            let ends_here = self.branches.iter().any(|(nodes, iso)| {
+                !*iso
+                    && [nodes.first(), nodes.last()]
+                        .into_iter()
+                        .flatten()
+                        .any(|e| {
+                            (e.s - n.s).abs() <= ds_tol && (e.gamma - n.gamma).norm() <= dg_tol
+                        })
+            });
+            if ends_here {
+                return Ok(());
+            }
+        }
         let scale = self.scale_at(&n.gamma, n.s)?;
         let ctx = self.ctx(isolated, scale);
         let len = ctx.len;

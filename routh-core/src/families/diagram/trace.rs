@@ -1,19 +1,28 @@
 //! One direction of one branch: predictor–corrector steps with step control, the events on
 //! each step located by their defining equations, and the ends of the branch.
 
-use super::builder::{dist, show, Builder, Switch, Traced};
+use super::builder::{dist, Builder, Switch, Traced};
 use crate::error::RouthError;
 use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
-use crate::families::EventKind;
+use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
+
+/// Whether a point of a branch of circles is next to the axis of its circles, where they shrink
+/// to a pole: both eigenvalues of `K` below `1e−5` and the whole Jacobian `[K | F_s]` below
+/// `1e−2`, relative to the branch's scale (at the pole both vanish by symmetry; at a fold of
+/// circles `F_s` does not).
+fn near_axis(scale: f64, n: &Node) -> bool {
+    n.eig.iter().all(|e| e.abs() <= 1e-5) && n.jac.norm() <= 1e-2 * scale
+}
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// Follows one direction from `start`, with at most `budget` steps, until the branch leaves
     /// the range (it then ends exactly on the range's end), closes, or meets another branch (a
     /// branch of circles reaching its axis).
     ///
-    /// Errors (each names the branch by its start and where it stopped):
-    /// - [`RouthError::InvalidOption`] naming `max_steps` when the budget is spent first;
+    /// When the budget is spent first the branch ends there, with [`StopReason::MaxSteps`].
+    ///
+    /// Errors:
     /// - [`RouthError::AtParameter`] at the last point reached, wrapping
     ///   [`RouthError::NoConvergence`], when the corrector fails for every step down to
     ///   [`ContinuationOptions::min_step`](crate::ContinuationOptions::min_step) (the branch
@@ -33,29 +42,29 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             events: Vec::new(),
             switches: Vec::new(),
             steps: 0,
+            stop: None,
         };
         let mut h = opts.initial_step;
         loop {
             let a = out.nodes.last().unwrap().clone();
             if out.steps >= budget {
-                return Err(RouthError::InvalidOption {
-                    what: "max_steps",
-                    reason: format!(
-                        "the budget of {} continuation steps per branch ran out at s = {}, \
-                         γ = {}, on the branch through s = {}, γ = {}, before it left the range \
-                         [{lo}, {hi}], closed or met another branch; raise it",
-                        opts.max_steps,
-                        a.s,
-                        show(&a.gamma),
-                        start.s,
-                        show(&start.gamma),
-                    ),
+                out.stop = Some(StopReason::MaxSteps {
+                    s: a.s,
+                    gamma: a.gamma,
                 });
+                break;
             }
             out.steps += 1;
             let Some(b) = ctx.advance(&a, h)? else {
                 h *= 0.5;
                 if h < opts.min_step {
+                    // A branch of circles next to its axis (both eigenvalues of K nearly zero:
+                    // the circle shrinks to the pole of the symmetry), where the circle direction
+                    // is lost in round-off: the rest is the same circles again, down to the axis,
+                    // which `finish` appends from the branch point on the axis.
+                    if !ctx.isolated && near_axis(ctx.scale, &a) {
+                        break;
+                    }
                     return Err(RouthError::AtParameter {
                         s: a.s,
                         source: Box::new(RouthError::NoConvergence {
@@ -69,6 +78,18 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 }
                 continue;
             };
+            // A branch of circles has a zero eigenvalue of K all along it (the circle
+            // direction). Where its circles shrink to their axis it crosses the branch of the
+            // pole (where K is a multiple of the identity), and a step can slide onto that
+            // branch: a point with no zero eigenvalue is not a circle. Shorter steps, and next to
+            // the axis the end (`finish` appends the point on the axis).
+            if !ctx.isolated && b.eig.iter().all(|e| e.abs() > 1e-6) {
+                if a.eig.iter().all(|e| e.abs() <= 1e-3) || h <= 4.0 * opts.min_step {
+                    break;
+                }
+                h *= 0.5;
+                continue;
+            }
             let cos = a.tau_g.dot(&b.tau_g) + a.tau_s * b.tau_s;
             let ch = changes(&a, &b, ctx.isolated);
             let eigen = ch.iter().any(|c| matches!(c, Change::Eigen(_)));
@@ -95,6 +116,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             }
             let turn = ch.contains(&Change::Turn);
             let mut end = false;
+            // The located events and turning points on this step: points of the branch, so that
+            // its polyline passes through them (the tip of a pitchfork, a fold).
+            let mut located: Vec<Node> = Vec::new();
             if eigen {
                 let which = *ch.iter().find(|c| matches!(c, Change::Eigen(_))).unwrap();
                 let e = ctx.locate(&a, &b, h, &|n| test_value(which, n))?;
@@ -103,6 +127,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                         end = true;
                         out.nodes.push(e.clone());
                     } else {
+                        located.push(e.clone());
                         if !turn {
                             out.events.push((
                                 EventKind::BranchPoint,
@@ -117,6 +142,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                         });
                     }
                 } else {
+                    located.push(e.clone());
                     out.events
                         .push((EventKind::Fold, e, a.verdict(), b.verdict()));
                 }
@@ -125,6 +151,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 // through the tip of a pitchfork on another branch.
                 let e = ctx.locate(&a, &b, h, &|n| n.tau_s)?;
                 if ctx.isolated {
+                    located.push(e.clone());
                     out.switches.push(Switch {
                         node: e,
                         isolated: true,
@@ -138,12 +165,28 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             if disc && !end && a.degree_two() && b.degree_two() {
                 let e = ctx.locate(&a, &b, h, &|n| n.disc)?;
                 if a.verdict() != b.verdict() {
+                    located.push(e.clone());
                     out.events
                         .push((EventKind::HamiltonianHopf, e, a.verdict(), b.verdict()));
                 }
             }
             if end {
                 break;
+            }
+            if !ctx.isolated && near_axis(ctx.scale, &b) {
+                // Next to the axis the steps would shrink without end (the circle direction is
+                // lost in round-off): end here; `finish` appends the point on the axis.
+                out.nodes.push(b);
+                break;
+            }
+            let ab = dist(&a, &b, ctx.len);
+            located.sort_by(|x, y| dist(&a, x, ctx.len).total_cmp(&dist(&a, y, ctx.len)));
+            for e in located {
+                let (da, db) = (dist(&a, &e, ctx.len), dist(&e, &b, ctx.len));
+                let last = out.nodes.last().map_or(0.0, |l| dist(l, &e, ctx.len));
+                if da > 1e-9 * ab && db > 1e-9 * ab && last > 1e-9 * ab {
+                    out.nodes.push(e);
+                }
             }
             let it = b.iterations;
             out.nodes.push(b);
@@ -167,6 +210,17 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             } else {
                 h
             };
+        }
+        if !ctx.isolated {
+            // A located end that slid onto the branch of the pole is no point of a circle.
+            while out.nodes.len() > 1
+                && out
+                    .nodes
+                    .last()
+                    .is_some_and(|n| n.eig.iter().all(|e| e.abs() > 1e-6))
+            {
+                out.nodes.pop();
+            }
         }
         Ok(out)
     }

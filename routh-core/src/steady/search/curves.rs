@@ -181,6 +181,14 @@ impl<M: Routhian> Search<'_, M> {
                 h /= 4.0;
                 continue;
             }
+            // A curve of critical points of an analytic U_r is closed (or branches); an open
+            // "curve" of a few vertices is the smear of a degenerate isolated point (a pitchfork
+            // point, where U_r is quartic along the kernel of K and Newton's method stops at the
+            // tolerance a little off it, so its neighbours converge at a distance of that
+            // offset): an isolated point.
+            if !closed && count < MIN_OPEN_VERTICES {
+                return None;
+            }
             // Order the vertices along the curve: second branch reversed, start, first branch.
             let mut vertices: Vec<Vector3<f64>> = Vec::new();
             if let Some(back) = branches.get(1) {

@@ -31,6 +31,9 @@ const TRACE_LEVELS: usize = 9;
 const MAX_TRACE_STEPS: usize = 1000;
 /// Fewest vertices for a traced closed curve before the trace is redone with a shorter step.
 const MIN_CLOSED_VERTICES: usize = 12;
+/// Fewest vertices (besides the start) of a curve that does not close: fewer is a degenerate
+/// isolated point.
+const MIN_OPEN_VERTICES: usize = 4;
 /// Largest number of Levenberg–Marquardt retries (growing λ) within one iteration.
 const MAX_LM_RETRIES: usize = 14;
 /// The iteration stops when the Newton step is below this fraction of
@@ -43,7 +46,8 @@ const STOP_FACTOR: f64 = 1e-2;
 /// distance is then `(n−1)` times the last step: 8 covers `n ≤ 9`.
 const MERGE_FACTOR: f64 = 8.0;
 /// Degenerate points on one level within this distance (radians) are one critical point: about
-/// 64√ε, beyond the round-off plateau of a higher-order point (see `same_point`).
+/// 64√ε, beyond the round-off plateau of a higher-order point (see `same_point`). (1e−4 merged
+/// the points of a circle of radius 2.4e−4 round a pole: tests/trust.rs.)
 const FLAT_RADIUS: f64 = 1e-6;
 /// An iterate of a grid start joins a known non-degenerate critical point `p` within this distance
 /// (radians) when its Newton step lands within [`GRID_CAPTURE`] of its distance to `p`
@@ -343,6 +347,14 @@ impl Found {
             Some(Refined::Captured) | None => return,
         };
         self.best_residual = self.best_residual.min(loc.residual());
+        if self.curves.iter().any(|c| c.contains(&loc)) {
+            return;
+        }
+        let loc = if loc.zeros() == 1 {
+            search.polish_degenerate(loc)
+        } else {
+            loc
+        };
         if self.isolated.iter().any(|q| same_point(q, &loc))
             || self.curves.iter().any(|c| c.contains(&loc))
         {
@@ -582,6 +594,95 @@ impl<M: Routhian> Search<'_, M> {
         } else {
             Refined::Stalled(cur)
         })
+    }
+
+    /// A critical point with one zero eigenvalue of `K`, placed where the gradient along the
+    /// kernel changes sign. Newton's method converges only linearly there and stops at the
+    /// tolerance on its step, which at a point of order `n` (a pitchfork point: `n = 3`, the
+    /// gradient cubic along the kernel) is `n − 1` times farther from the point than the step
+    /// (6e−5 rad at the Kovalevskaya top's pitchfork). Here: the sign change of `φ(t) = g·v` along
+    /// the kernel direction `v` is bracketed within `±r` (`r` from `1e−8` doubling to `1e−2`),
+    /// each trial point corrected across the kernel by Newton steps along the other eigenvector,
+    /// and bisected to round-off in `φ`: to about `(ε·s_raw/|φ⁽ⁿ⁾|)^{1/n}` (`~1e−5` rad for a
+    /// cubic gradient). Unchanged when no sign change is bracketed (a curve of critical points,
+    /// where `φ ≡ 0`, or an even order).
+    fn polish_degenerate(&self, loc: Local) -> Local {
+        let v = loc.null_direction();
+        let i_w = if loc.t.values[0].abs() <= loc.t.values[1].abs() {
+            1
+        } else {
+            0
+        };
+        let w = loc.t.basis * loc.t.vectors[i_w];
+        let kappa = loc.t.values[i_w];
+        if kappa == 0.0 || !kappa.is_finite() {
+            return loc;
+        }
+        // The point at offset t along v, corrected across it, and φ there.
+        let at = |t: f64| -> Option<(Local, f64)> {
+            let mut g = (loc.gamma + t * v).normalize();
+            let mut l = self.local(&g)?;
+            for _ in 0..4 {
+                let gw = l.grad3().dot(&w);
+                g = (g - (gw / kappa) * w).normalize();
+                l = self.local(&g)?;
+            }
+            let phi = l.grad3().dot(&v);
+            Some((l, phi))
+        };
+        let Some((_, phi0)) = at(0.0) else {
+            return loc;
+        };
+        if phi0 == 0.0 {
+            return loc;
+        }
+        let mut r = 1e-8;
+        let mut bracket = None;
+        while r <= 1e-2 {
+            let (Some((la, pa)), Some((lb, pb))) = (at(-r), at(r)) else {
+                return loc;
+            };
+            // Signs of φ within round-off (a curve of critical points, φ ≡ 0) are no bracket.
+            let noise = 4.0 * la.t.grad_floor().max(lb.t.grad_floor());
+            if pa.abs() <= noise || pb.abs() <= noise {
+                r *= 2.0;
+                continue;
+            }
+            if pa * pb < 0.0 {
+                bracket = Some((-r, pa, r));
+                break;
+            }
+            r *= 2.0;
+        }
+        let Some((mut a, mut pa, mut b)) = bracket else {
+            return loc;
+        };
+        for _ in 0..80 {
+            let m = 0.5 * (a + b);
+            if m <= a || m >= b {
+                break;
+            }
+            let Some((_, pm)) = at(m) else { break };
+            if pm == 0.0 {
+                a = m;
+                b = m;
+                break;
+            }
+            if (pm < 0.0) == (pa < 0.0) {
+                a = m;
+                pa = pm;
+            } else {
+                b = m;
+            }
+        }
+        match at(0.5 * (a + b)) {
+            Some((l, _))
+                if l.degenerate() && l.residual() <= self.gradient_tol.max(loc.residual()) =>
+            {
+                l
+            }
+            _ => loc,
+        }
     }
 
     /// Whether the degenerate critical point `loc` (both eigenvalues of `K` zero) lies in a
