@@ -20,6 +20,7 @@ mod error;
 pub mod families;
 mod krein;
 mod model;
+pub mod nonlinear;
 pub mod sim;
 mod sphere;
 pub mod stability;
@@ -36,6 +37,10 @@ pub use families::{
 pub use model::{
     DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
     RouthBundle, Routhian,
+};
+pub use nonlinear::{
+    nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport,
+    NonlinearVerdict, Resonance,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};

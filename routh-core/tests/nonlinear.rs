@@ -1,0 +1,271 @@
+//! The nonlinear stability test (docs/method.md §11) against things it did not produce:
+//! num-dual derivatives for the jets, the roots of f₂ and a finite-difference Jacobian of the full
+//! system (8) for the frequencies, the closed forms of the sleeping Lagrange top, and simulations.
+
+use nalgebra::{Complex, Vector3};
+use num_dual::{third_derivative, Dual3, Dual64, DualNum};
+
+use routh_core::nonlinear::{Jet, NCOEF};
+use routh_core::{
+    classify, nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearVerdict,
+    Stability, SteadyMotion,
+};
+use test_models::jacobian::{fd_jacobian, match_roots, sleeping_top_roots, steady_state};
+use test_models::Gyrostat;
+
+/// The operations the test functions use, for jets and num-dual numbers alike.
+trait Num:
+    Copy
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<Output = Self>
+    + std::ops::Div<Output = Self>
+    + std::ops::Neg<Output = Self>
+{
+    fn c(x: f64) -> Self;
+    fn sin_(self) -> Self;
+    fn cos_(self) -> Self;
+    fn tan_(self) -> Self;
+    fn exp_(self) -> Self;
+    fn ln_(self) -> Self;
+    fn sqrt_(self) -> Self;
+    fn abs_(self) -> Self;
+    fn recip_(self) -> Self;
+    fn powi_(self, n: i32) -> Self;
+    fn powf_(self, r: f64) -> Self;
+}
+
+impl Num for Jet {
+    fn c(x: f64) -> Self {
+        Jet::constant(x)
+    }
+    fn sin_(self) -> Self {
+        self.sin()
+    }
+    fn cos_(self) -> Self {
+        self.cos()
+    }
+    fn tan_(self) -> Self {
+        self.tan()
+    }
+    fn exp_(self) -> Self {
+        self.exp()
+    }
+    fn ln_(self) -> Self {
+        self.ln()
+    }
+    fn sqrt_(self) -> Self {
+        self.sqrt()
+    }
+    fn abs_(self) -> Self {
+        self.abs()
+    }
+    fn recip_(self) -> Self {
+        self.recip()
+    }
+    fn powi_(self, n: i32) -> Self {
+        self.powi(n)
+    }
+    fn powf_(self, r: f64) -> Self {
+        routh_core::certify::TapeScalar::powf(self, Jet::constant(r))
+    }
+}
+
+type D3 = Dual3<Dual64, f64>;
+
+impl Num for D3 {
+    fn c(x: f64) -> Self {
+        D3::from(x)
+    }
+    fn sin_(self) -> Self {
+        self.sin()
+    }
+    fn cos_(self) -> Self {
+        self.cos()
+    }
+    fn tan_(self) -> Self {
+        self.tan()
+    }
+    fn exp_(self) -> Self {
+        self.exp()
+    }
+    fn ln_(self) -> Self {
+        self.ln()
+    }
+    fn sqrt_(self) -> Self {
+        self.sqrt()
+    }
+    fn abs_(self) -> Self {
+        if self.re.re < 0.0 {
+            -self
+        } else {
+            self
+        }
+    }
+    fn recip_(self) -> Self {
+        self.recip()
+    }
+    fn powi_(self, n: i32) -> Self {
+        self.powi(n)
+    }
+    fn powf_(self, r: f64) -> Self {
+        self.powf(r)
+    }
+}
+
+/// A composition of every function of the DSL.
+fn every_function<T: Num>(x: [T; 4]) -> T {
+    let [a, b, c, d] = x;
+    (a * b).sin_() + c.cos_() * d.exp_() / (T::c(2.0) + a * a).sqrt_()
+        - (T::c(3.0) + b * c).ln_() * (T::c(0.3) + d).tan_()
+        + (T::c(1.0) + a * a + d * c).powf_(1.7)
+        + (b + T::c(2.0)).powi_(-3)
+        + (c - T::c(1.0)).abs_() * (a + d).powi_(5)
+        + (T::c(1.5) + b * d - a).recip_()
+}
+
+/// Every Taylor coefficient of the jet of `every_function` against num-dual: the k-th derivative
+/// along a direction u equals k!·Σ_{|e|=k} c_e u^e; 40 random directions (more than the 35
+/// monomials of degree 4) pin every coefficient. The fourth derivative is the dual part of a
+/// third derivative taken at a dual point (num-dual's `Dual3<Dual64>`).
+#[test]
+fn jet_matches_num_dual_on_every_function() {
+    let a = [0.3, -0.2, 0.5, 0.1];
+    let jet = every_function([0, 1, 2, 3].map(|i| Jet::variable(a[i], i)));
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut rnd = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let exps = routh_core::nonlinear::monomials();
+    let mut worst = 0.0f64;
+    for _ in 0..40 {
+        let u = [rnd(), rnd(), rnd(), rnd()];
+        let g = |t: Dual3<Dual64, f64>| {
+            every_function([0, 1, 2, 3].map(|i| Dual3::from_re(Dual64::from(a[i])) + t * u[i]))
+        };
+        let (f0, f1, f2, f3) = third_derivative(g, Dual64::new(0.0, 1.0));
+        let num = [f0.re, f1.re, f2.re, f3.re, f3.eps];
+        let mut from_jet = [0.0; 5];
+        for (k, e) in exps.iter().enumerate().take(NCOEF) {
+            let deg: usize = e.iter().map(|&x| x as usize).sum();
+            let fact = [1.0, 1.0, 2.0, 6.0, 24.0][deg];
+            let mono: f64 = (0..4).map(|v| u[v].powi(i32::from(e[v]))).product();
+            from_jet[deg] += jet.c[k] * mono * fact;
+        }
+        for k in 0..5 {
+            let err = (num[k] - from_jet[k]).abs() / (1.0 + num[k].abs());
+            worst = worst.max(err);
+        }
+    }
+    assert!(worst < 1e-12, "worst relative error {worst:e}");
+}
+
+/// `R` of the gyrostat (39), written generically: `a = K + Bγ`,
+/// `R = ½ΩᵀIΩ + a·Ω − m g r·γ − ½(p_ψ − (IΩ)·γ − a·γ)²/(γᵀIγ)`.
+fn gyrostat_r(m: &Gyrostat) -> impl Fn(&[Jet; 3], &[Jet; 3], f64) -> Jet + '_ {
+    move |w: &[Jet; 3], g: &[Jet; 3], p: f64| {
+        let mv = |v: &[Jet; 3]| {
+            let mut out = [Jet::constant(0.0); 3];
+            for (i, o) in out.iter_mut().enumerate() {
+                for (j, vj) in v.iter().enumerate() {
+                    *o += *vj * m.inertia[(i, j)];
+                }
+            }
+            out
+        };
+        let dot = |a: &[Jet; 3], b: &[Jet; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let mut a = [0, 1, 2].map(|i| Jet::constant(m.rotor[i]));
+        for (i, ai) in a.iter_mut().enumerate() {
+            for (j, gj) in g.iter().enumerate() {
+                *ai += *gj * m.coupling[(i, j)];
+            }
+        }
+        let iw = mv(w);
+        let ig = mv(g);
+        let r_com = [0, 1, 2].map(|i| Jet::constant(m.com[i]));
+        let q = dot(&iw, g) + dot(&a, g);
+        let pot = dot(&r_com, g) * (m.mass * m.g);
+        dot(&iw, w) * 0.5 + dot(&a, w) - pot - (-q + p) * (-q + p) / dot(&ig, g) * 0.5
+    }
+}
+
+fn sleeping(model: &Gyrostat, p: f64) -> SteadyMotion {
+    SteadyMotion::at(model, Vector3::z(), p, true).expect("steady motion")
+}
+
+/// The frequencies of the normal form (from the Hessian of the chart Hamiltonian) are the moduli
+/// of the roots of f₂ (64) and of the eigenvalues of a finite-difference Jacobian of the full
+/// equations (8) — check (a) — for the sleeping Lagrange top (also against the closed form) and
+/// an asymmetric heavy top and a gyrostat.
+#[test]
+fn frequencies_are_the_roots_of_f2_and_the_full_jacobian_eigenvalues() {
+    let mut cases: Vec<(Gyrostat, SteadyMotion, &str)> = Vec::new();
+    let lagrange = Gyrostat::lagrange_top(2.0, 1.0, 1.0);
+    let s = sleeping(&lagrange, 4.0);
+    cases.push((lagrange, s, "Lagrange top"));
+    let asym = Gyrostat::heavy_top(Vector3::new(2.0, 2.5, 1.0), Vector3::z(), 1.0, 1.0);
+    let s = sleeping(&asym, 5.0);
+    cases.push((asym, s, "asymmetric prolate top"));
+    let mut gyro = Gyrostat::heavy_top(Vector3::new(2.0, 2.5, 1.0), Vector3::z(), 1.0, 1.0);
+    gyro.rotor = Vector3::new(0.0, 0.0, 0.7);
+    let s = sleeping(&gyro, 5.0);
+    cases.push((gyro, s, "gyrostat"));
+    for (model, s, what) in &cases {
+        let lin = classify(model, s).unwrap();
+        assert_eq!(lin.verdict, Stability::GyroscopicallyStabilized, "{what}");
+        let rep =
+            nonlinear_stability_with(model, s, &gyrostat_r(model), &NonlinearOptions::default())
+                .unwrap();
+        let mut f2: Vec<f64> = lin.f2_roots.iter().map(|r| r.im.abs()).collect();
+        f2.sort_by(f64::total_cmp);
+        let [w1, w2] = rep.frequencies;
+        assert!(w1 >= w2 && w2 > 0.0, "{what}: {rep}");
+        assert!((w1 - f2[3]).abs() < 1e-10 * w1, "{what}: {w1} vs f₂ {f2:?}");
+        assert!((w2 - f2[0]).abs() < 1e-10 * w1, "{what}: {w2} vs f₂ {f2:?}");
+        let eig: Vec<Complex<f64>> = fd_jacobian(model, &steady_state(s), 1e-4)
+            .complex_eigenvalues()
+            .iter()
+            .copied()
+            .collect();
+        let mine = [w1, -w1, w2, -w2].map(|w| Complex::new(0.0, w));
+        let m = match_roots(&mine, &eig);
+        assert!(m.worst < 1e-6 * w1, "{what}: {mine:?} vs {eig:?}");
+        assert!(rep.normalisation_defect < 1e-9, "{what}: {rep}");
+        assert_eq!(rep.krein_signs[0], -rep.krein_signs[1], "{what}: {rep}");
+        if *what == "Lagrange top" {
+            let closed = sleeping_top_roots(2.0, 1.0, 1.0, 4.0);
+            let m = match_roots(&mine, &closed);
+            assert!(m.worst < 1e-12 * w1, "{mine:?} vs {closed:?}");
+        }
+        println!("{what}: {rep}");
+    }
+}
+
+/// A hand-written model has no tape: `nonlinear_stability` says so with an error, not a panic.
+#[test]
+fn without_a_tape_the_error_names_the_need() {
+    let top = Gyrostat::lagrange_top(2.0, 1.0, 1.0);
+    let s = sleeping(&top, 4.0);
+    let err = nonlinear_stability(&top, &s, &NonlinearOptions::default()).unwrap_err();
+    assert!(err.to_string().contains("derived or run-time model"), "{err}");
+}
+
+/// A linearly unstable motion (the sleeping top below the Maievskii bound p² < 4A·mgl) is
+/// `Unstable` with NaN frequencies; a hanging top is `SecularlyStable`.
+#[test]
+fn linear_verdicts_carry_over() {
+    let top = Gyrostat::lagrange_top(2.0, 1.0, 1.0);
+    let s = sleeping(&top, 2.0);
+    let rep = nonlinear_stability_with(&top, &s, &gyrostat_r(&top), &Default::default()).unwrap();
+    assert_eq!(rep.verdict, NonlinearVerdict::Unstable, "{rep}");
+    assert!(rep.frequencies[0].is_nan());
+    let top = Gyrostat::heavy_top(Vector3::new(2.0, 2.5, 1.0), Vector3::z(), 1.0, 1.0);
+    let hang = SteadyMotion::at(&top, -Vector3::z(), 1.0, true).unwrap();
+    let rep =
+        nonlinear_stability_with(&top, &hang, &gyrostat_r(&top), &Default::default()).unwrap();
+    assert_eq!(rep.verdict, NonlinearVerdict::SecularlyStable, "{rep}");
+    assert_eq!(rep.krein_signs, [1, 1], "{rep}");
+}
