@@ -166,6 +166,41 @@ impl fmt::Display for NonlinearReport {
     }
 }
 
+/// The reduced Hamiltonian at a steady motion and its linear symplectic normalisation
+/// (docs/method.md §11.1–11.2), for analyses beyond the verdict (e.g. to set up a
+/// small-amplitude simulation in normal coordinates).
+#[derive(Debug, Clone)]
+pub struct LinearNormalForm {
+    /// `H(x₁, x₂, y₁, y₂)` in the chart of [`chart`] (jet variables 0–3), minus its value at the
+    /// steady motion.
+    pub hamiltonian: Jet,
+    /// `ω₁ ≥ ω₂ > 0`.
+    pub frequencies: [f64; 2],
+    /// Krein signs.
+    pub krein_signs: [i8; 2],
+    /// Symplectic `T` with `(x, y) = T(q₁, q₂, p₁, p₂)` and
+    /// `H₂ = Σ s_kω_k(q_k² + p_k²)/2`.
+    pub transform: nalgebra::Matrix4<f64>,
+}
+
+/// [`LinearNormalForm`] at `(γ₀, p_ψ)`; `None` unless `H₂` has two distinct real frequencies.
+pub fn linear_normal_form<R: RouthianJet + ?Sized>(
+    r: &R,
+    gamma0: &nalgebra::Vector3<f64>,
+    p_psi: f64,
+) -> Option<LinearNormalForm> {
+    let h = chart::reduced_hamiltonian(r, gamma0, p_psi);
+    let s = normal_form::quadratic_form(&h);
+    let omega2 = normal_form::squared_frequencies(&s)?;
+    let nf = normal_form::normalise(&s, omega2)?;
+    Some(LinearNormalForm {
+        hamiltonian: h,
+        frequencies: nf.omega,
+        krein_signs: nf.signs,
+        transform: nf.t,
+    })
+}
+
 /// The nonlinear stability of a steady motion, the Routh function's jets taken from the model.
 ///
 /// Needs the model's Routh function as an expression tape; until the model provides it, this
