@@ -1,4 +1,4 @@
-//! The nonlinear stability test (docs/method.md §11) against things it did not produce:
+//! The nonlinear stability test (docs/method.md §10) against things it did not produce:
 //! num-dual derivatives for the jets, the roots of f₂ and a finite-difference Jacobian of the full
 //! system (8) for the frequencies, the closed forms of the sleeping Lagrange top, and simulations.
 
@@ -403,6 +403,40 @@ fn normal_form_predicts_frequency_shifts_of_simulations() {
                 );
                 assert!(err < 0.01 * shift, "{what} {z0:?} mode {k}");
             }
+        }
+    }
+}
+
+/// Check (e): the sleeping Lagrange top is Lyapunov stable for p² > 4A·mgl (Chetaev, by the
+/// integrals). Over a scan of p_ψ and exactly at its resonances the verdict must never be
+/// `Unstable`. For the prolate top A = 1, C = 0.8, mgl = 1 the roots of f₂ (Maievskii's closed
+/// form) give ω₁,₂ = (λp ± d)/2A with λ = (2A − C)/C = 1.5 and d = √(p² − 4A·mgl), so
+/// ω₁ = 2ω₂ at d = λp/3, p² = 16/3, and ω₁ = 3ω₂ at d = λp/2, p² = 64/7 (docs/method.md §10.5).
+/// The symmetry about the axis kills the resonant terms there (H is even in the chart), so the
+/// 1:2 point is `Undecided` and Markeev's criterion decides the 1:3 point.
+#[test]
+fn sleeping_lagrange_top_is_never_called_unstable_above_the_maievskii_bound() {
+    let top = Gyrostat::lagrange_top(1.0, 0.8, 1.0);
+    let r = gyrostat_r(&top);
+    for k in 0..60 {
+        let p = 2.02 + 0.15 * f64::from(k);
+        let s = sleeping(&top, p);
+        let rep = nonlinear_stability_with(&top, &s, &r, &Default::default()).unwrap();
+        assert_ne!(rep.verdict, NonlinearVerdict::Unstable, "p = {p}: {rep}");
+        assert_ne!(rep.verdict, NonlinearVerdict::SecularlyStable, "p = {p}: {rep}");
+    }
+    for (p2, res) in [
+        (16.0 / 3.0, routh_core::Resonance::OneToTwo),
+        (64.0 / 7.0, routh_core::Resonance::OneToThree),
+    ] {
+        let s = sleeping(&top, f64::sqrt(p2));
+        let rep = nonlinear_stability_with(&top, &s, &r, &Default::default()).unwrap();
+        println!("{rep}");
+        assert_eq!(rep.resonance, Some(res), "{rep}");
+        assert!(rep.resonance_distance < 1e-12, "{rep}");
+        assert_ne!(rep.verdict, NonlinearVerdict::Unstable, "{rep}");
+        if res == routh_core::Resonance::OneToTwo {
+            assert_eq!(rep.verdict, NonlinearVerdict::Undecided, "{rep}");
         }
     }
 }

@@ -1,5 +1,5 @@
 //! The reduced Hamiltonian at fixed `p_ψ` in local canonical coordinates of `T*S²` around a
-//! steady motion, as a Taylor jet of order four (docs/method.md §11.1).
+//! steady motion, as a Taylor jet of order four (docs/method.md §10.1).
 //!
 //! **Chart.** With `(u, v, γ₀)` a right-handed orthonormal frame at the steady motion's `γ₀`,
 //! `γ(x) = √(1 − x₁² − x₂²) γ₀ + x₁u + x₂v`: an orthogonal projection chart of the upper

@@ -3,7 +3,7 @@
 //! linear parts are seeded (`Jet::variable`) gives its Taylor expansion to order four at the
 //! point, exactly up to round-off: this is how the nonlinear test gets the third and fourth
 //! derivatives of the Routh function from the model's own expression DAG, without finite
-//! differences (docs/method.md §11).
+//! differences (docs/method.md §10).
 //!
 //! Coefficients are stored densely, indexed by the monomials of degree ≤ 4 in graded order
 //! ([`monomials`]); products run over a precomputed list of the 495 index pairs whose degrees add

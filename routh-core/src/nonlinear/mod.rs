@@ -1,6 +1,6 @@
 //! Nonlinear stability of a steady motion: the Birkhoff normal form of the reduced Hamiltonian
 //! to order four, Arnold's determinant, the Arnold–Moser theorem and Markeev's resonance
-//! criteria (docs/method.md §11).
+//! criteria (docs/method.md §10).
 //!
 //! The linear verdict `GyroscopicallyStabilized` of [`classify`](crate::classify) says nothing
 //! about Lyapunov stability. After the reduction the system has two degrees of freedom, and there
@@ -121,7 +121,7 @@ impl fmt::Display for NonlinearVerdict {
     }
 }
 
-/// The nonlinear stability analysis of one steady motion (docs/method.md §11).
+/// The nonlinear stability analysis of one steady motion (docs/method.md §10).
 #[derive(Debug, Clone)]
 pub struct NonlinearReport {
     /// The linear analysis (sections 4–5).
@@ -167,7 +167,7 @@ impl fmt::Display for NonlinearReport {
 }
 
 /// The reduced Hamiltonian at a steady motion and its linear symplectic normalisation
-/// (docs/method.md §11.1–11.2), for analyses beyond the verdict (e.g. to set up a
+/// (docs/method.md §10.1–11.2), for analyses beyond the verdict (e.g. to set up a
 /// small-amplitude simulation in normal coordinates).
 #[derive(Debug, Clone)]
 pub struct LinearNormalForm {

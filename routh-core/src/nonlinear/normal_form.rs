@@ -1,5 +1,5 @@
 //! Linear symplectic normalisation of `H₂` and the Birkhoff normal form to order four
-//! (docs/method.md §11.2–11.3).
+//! (docs/method.md §10.2–11.3).
 //!
 //! The quadratic part `H₂ = ½zᵀSz` (`z = (q₁, q₂, p₁, p₂)`) has the Hamiltonian matrix
 //! `K = 𝕁S`, whose eigenvalues `±iω_k` solve `λ⁴ − ½tr(K²)λ² + det K = 0`. For each `ω_k` a real
@@ -182,7 +182,9 @@ pub(crate) struct BirkhoffForm {
     pub(crate) resonant_cubic: f64,
     /// The largest modulus of a resonant quartic coefficient other than `I₁², I₁I₂, I₂²`.
     pub(crate) resonant_quartic: f64,
-    /// The largest modulus of a cubic coefficient (the scale of `resonant_cubic`).
+    /// The scale of `resonant_cubic`: the largest modulus of a cubic coefficient, or
+    /// `√(ω₁·h₄)` with `h₄` the largest quartic one when larger (the cubic terms can all vanish
+    /// by a symmetry; `h₃²/ω` has the dimension of `h₄`).
     pub(crate) cubic_scale: f64,
     /// `max |H̃₂ − Σσ_kI_k|`, a check of the normalisation.
     pub(crate) quadratic_defect: f64,
@@ -263,6 +265,8 @@ pub(crate) fn birkhoff(h: &Jet, nf: &Normalisation, tol: f64) -> BirkhoffForm {
             resonant_cubic = resonant_cubic.max(h3.c[k].norm());
         }
     }
+    let quartic_scale = h4.c.iter().fold(0.0f64, |m, c| m.max(c.norm()));
+    let cubic_scale = cubic_scale.max((nf.omega[0] * quartic_scale).sqrt());
     let mut sum3 = h3;
     sum3.add_scaled(&h3res, C::new(1.0, 0.0));
     let mut h4n = h4;

@@ -1,4 +1,4 @@
-//! Resonances and the nonlinear verdict from the normal form (docs/method.md §11.4).
+//! Resonances and the nonlinear verdict from the normal form (docs/method.md §10.4).
 
 use super::{NonlinearOptions, NonlinearVerdict, Resonance};
 
