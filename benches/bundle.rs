@@ -1,5 +1,5 @@
 //! Generated `bundle` vs a hand-written bundle vs num-dual Hessians of the same R
-//! (README, “Performance”).
+//! (docs/performance.md).
 //!
 //! Every measured function evaluates all the outputs a caller of the analysis uses at one point:
 //! `bundle(Ω, γ, p_ψ)` (R, ψ̇, ∂R/∂Ω, ∂R/∂γ, ∂R/∂p_ψ and the three Hessian blocks) and then

@@ -53,6 +53,26 @@ pub use routh_core::*;
 pub use routh_macros::Lagrangian;
 
 pub mod fluid;
+
+/// What most programs use, in one import: `use routh::prelude::*;`.
+///
+/// The derive and the model traits, the vector types, the analyses of a single model
+/// (steady motions, their stability, simulations) and of families (diagrams, atlases), with
+/// their options and results.
+pub mod prelude {
+    pub use crate::{
+        bifurcation_diagram, classified_steady_motions, classify, classify_at, continue_branch,
+        simulate_full, simulate_reduced, stability_atlas, steady_motions,
+        steady_motions_certified, AtlasOptions, BifurcationDiagram, Classified,
+        ContinuationOptions, Lagrangian, Matrix3, RouthError, Routhian, SimOptions, Stability,
+        StabilityReport, SteadyMotion, Vector3,
+    };
+}
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
 #[cfg(feature = "plot")]
 pub mod plot;
 

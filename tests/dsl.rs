@@ -1,4 +1,4 @@
-//! Every construct of the DSL (README, “The DSL in ten lines”) in one model, checked against the same
+//! Every construct of the DSL (README, “A body in ten lines”) in one model, checked against the same
 //! Lagrangian written by hand with nalgebra (the value), and its derivatives against central
 //! finite differences.
 

@@ -1,6 +1,6 @@
 //! The generated `Lagrangian` and `Routhian` impls against num-dual derivatives of the same L and
 //! of R written by hand (crate `test-models`), at random points including |γ| ≠ 1
-//! (README, "Verification"; docs/method.md §4).
+//! (docs/method.md §4).
 
 mod common;
 

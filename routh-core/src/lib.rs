@@ -16,6 +16,7 @@ pub use nalgebra;
 pub use nalgebra::{Complex, Matrix3, Vector3};
 
 pub mod certify;
+mod classified;
 mod error;
 pub mod families;
 mod krein;
@@ -28,6 +29,7 @@ pub mod steady;
 pub mod validate;
 
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
+pub use classified::{classified_steady_motions, classify_at, Classified};
 pub use error::RouthError;
 pub use families::{
     bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,

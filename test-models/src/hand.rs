@@ -1,5 +1,5 @@
 //! A hand-simplified closed form of every output of the gyrostat's Routh function: the
-//! "hand-written bundle" that the benches compare the generated code against (README, “Performance”).
+//! "hand-written bundle" that the benches compare the generated code against (docs/performance.md).
 //!
 //! For `L = ½ωᵀIω + (K + Bγ)·ω − m g r·γ` with `I` symmetric, write
 //!

@@ -1,49 +1,7 @@
 //! The analyses the examples run and print, shared with `tests/examples_facts.rs`.
 
-use routh::{
-    classify, steady_motions, RouthError, Routhian, Stability, StabilityReport, SteadyMotion,
-    Vector3,
-};
-
-/// A steady motion at the cyclic momentum `p_psi` with its stability report.
-#[derive(Debug, Clone)]
-pub struct Classified {
-    /// The cyclic momentum (9) of the family member.
-    pub p_psi: f64,
-    /// The steady motion, as found by [`steady_motions`].
-    pub motion: SteadyMotion,
-    /// Its classification by [`classify`].
-    pub report: StabilityReport,
-}
-
-/// Every steady motion at `p_psi` (global search of [`steady_motions`]), each classified.
-pub fn classified_steady_motions<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-) -> Result<Vec<Classified>, RouthError> {
-    steady_motions(model, p_psi)?
-        .into_iter()
-        .map(|motion| {
-            let report = classify(model, &motion)?;
-            Ok(Classified {
-                p_psi,
-                motion,
-                report,
-            })
-        })
-        .collect()
-}
-
-/// The classification of the steady motion at the known critical point `gamma` (e.g. a spin
-/// about a principal axis), without any search.
-pub fn report_at<M: Routhian>(
-    model: &M,
-    gamma: Vector3<f64>,
-    p_psi: f64,
-) -> Result<StabilityReport, RouthError> {
-    let motion = SteadyMotion::at(model, gamma, p_psi, true)?;
-    classify(model, &motion)
-}
+pub use routh::{classified_steady_motions, classify_at as report_at, Classified};
+use routh::{RouthError, Routhian, Stability, Vector3};
 
 /// The verdict of [`report_at`].
 pub fn verdict_at<M: Routhian>(
