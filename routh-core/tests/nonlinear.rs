@@ -516,3 +516,40 @@ fn near_a_one_to_two_resonance_small_perturbations_grow() {
     // Measured: 0.219 at the resonance, 0.0277 away (t = 1500, amplitude 0.03).
     assert!(reach[0] > 5.0 * reach[1], "{reach:?}");
 }
+
+/// The post-pass over a bifurcation diagram of the prolate Lagrange top (A = 1, C = 0.8,
+/// mgl = 1) over p_ψ ∈ [2.1, 4]: the 1:2 and 1:3 resonances of the sleeping top are located at
+/// the closed forms p² = 16/3 and 64/7 (see the check (e) test) to 1e−9, with the verdicts around
+/// them (Lyapunov stable on both sides, undecided at the 1:2 point, stable by Markeev at 1:3).
+#[test]
+fn family_post_pass_locates_the_resonances_of_the_sleeping_top() {
+    use routh_core::nonlinear::nonlinear_events;
+    use routh_core::{bifurcation_diagram, ContinuationOptions, EventKind, Resonance};
+    let top = Gyrostat::lagrange_top(1.0, 0.8, 1.0);
+    let family = |p: f64| (top.clone(), p);
+    let opts = ContinuationOptions {
+        verify_counts: false,
+        ..Default::default()
+    };
+    let d = bifurcation_diagram(family, (2.1, 4.0), &opts).unwrap();
+    let jets = |m: &Gyrostat, w: &[Jet; 3], g: &[Jet; 3], p: f64| gyrostat_r(m)(w, g, p);
+    let ev = nonlinear_events(family, jets, &d, &Default::default(), 1e-10).unwrap();
+    for e in &ev {
+        println!("{:?} {:?} at p = {:.12}: {} | {} | {}", e.kind, e.resonance, e.s, e.before, e.at, e.after);
+    }
+    let find = |r: Resonance| {
+        ev.iter()
+            .find(|e| e.kind == EventKind::Resonance && e.resonance == Some(r))
+            .unwrap_or_else(|| panic!("no {r} event in {ev:?}"))
+    };
+    let e2 = find(Resonance::OneToTwo);
+    let e3 = find(Resonance::OneToThree);
+    assert!((e2.s - (16.0f64 / 3.0).sqrt()).abs() <= 1e-9 * e2.s, "{}", e2.s);
+    assert!((e3.s - (64.0f64 / 7.0).sqrt()).abs() <= 1e-9 * e3.s, "{}", e3.s);
+    assert_eq!(e2.at, NonlinearVerdict::Undecided);
+    assert_eq!(e3.at, NonlinearVerdict::LyapunovStable);
+    for e in [e2, e3] {
+        assert_eq!(e.before, NonlinearVerdict::LyapunovStable);
+        assert_eq!(e.after, NonlinearVerdict::LyapunovStable);
+    }
+}

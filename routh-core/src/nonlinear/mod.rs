@@ -14,6 +14,7 @@
 //! Taylor jets ([`Jet`], [`RouthianJet`]): no finite differences.
 
 mod chart;
+mod events;
 mod jet;
 mod normal_form;
 mod verdict;
@@ -25,6 +26,7 @@ use crate::model::Routhian;
 use crate::stability::{classify_with, ClassifyOptions, Stability, StabilityReport};
 use crate::steady::SteadyMotion;
 
+pub use events::{nonlinear_events, NonlinearEvent};
 pub use chart::{chart, reduced_hamiltonian, tangent_frame, RouthianJet};
 pub use jet::{monomial_index, monomials, Exponents, Jet, NCOEF, NVARS, ORDER};
 
