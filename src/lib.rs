@@ -65,8 +65,8 @@ pub mod prelude {
         nonlinear_stability, simulate_full, simulate_reduced, stability_atlas, steady_motions,
         steady_motions_certified, AtlasOptions, BifurcationDiagram, Classified,
         ContinuationOptions, Lagrangian, Matrix3, NonlinearOptions, NonlinearReport,
-        NonlinearVerdict, RouthError, Routhian, SimOptions, Stability,
-        StabilityReport, SteadyMotion, Vector3,
+        NonlinearVerdict, RouthError, Routhian, SimOptions, Stability, StabilityReport,
+        SteadyMotion, Vector3,
     };
 }
 

@@ -59,11 +59,7 @@ fn indicators(rep: &NonlinearReport) -> [f64; 3] {
     let [w1, w2] = rep.frequencies;
     let [c20, c11, c02] = rep.normal_form;
     let scale = c20.abs() * w2 * w2 + c11.abs() * w1 * w2 + c02.abs() * w1 * w1;
-    [
-        rep.arnold_determinant / scale,
-        w1 / w2 - 2.0,
-        w1 / w2 - 3.0,
-    ]
+    [rep.arnold_determinant / scale, w1 / w2 - 2.0, w1 / w2 - 3.0]
 }
 
 /// The nonlinear events of the branches of `diagram` (built from `family`), `r` giving the Routh
@@ -89,13 +85,14 @@ where
             reason: format!("must be in (0, 1) (got {s_tol:e})"),
         });
     }
-    let analyse = |s: f64, guess: &Vector3<f64>| -> Result<(SteadyMotion, NonlinearReport), RouthError> {
-        let (model, p) = family(s);
-        let steady = steady_motion_near(&model, *guess, p)?;
-        let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(&model, w, g, p);
-        let rep = nonlinear_stability_with(&model, &steady, &jets as &dyn RouthianJet, opts)?;
-        Ok((steady, rep))
-    };
+    let analyse =
+        |s: f64, guess: &Vector3<f64>| -> Result<(SteadyMotion, NonlinearReport), RouthError> {
+            let (model, p) = family(s);
+            let steady = steady_motion_near(&model, *guess, p)?;
+            let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(&model, w, g, p);
+            let rep = nonlinear_stability_with(&model, &steady, &jets as &dyn RouthianJet, opts)?;
+            Ok((steady, rep))
+        };
     let mut events = Vec::new();
     for (bi, branch) in diagram.branches.iter().enumerate() {
         if !branch.isolated {
@@ -113,7 +110,7 @@ where
             if let Some((s0, g0, rep0)) = &prev {
                 let (a, b) = (indicators(rep0), indicators(&rep));
                 for k in 0..3 {
-                    if !(a[k] * b[k] < 0.0) {
+                    if a[k] * b[k] >= 0.0 || a[k].is_nan() || b[k].is_nan() {
                         continue;
                     }
                     // Bisection on s, the steady motion re-solved from the nearer end's γ.

@@ -167,7 +167,10 @@ impl Jet {
     }
     /// The partial derivative `∂^|e| f / ∂x^e` at the point.
     pub fn derivative(&self, e: Exponents) -> f64 {
-        let fact: f64 = e.iter().map(|&k| (1..=k).map(f64::from).product::<f64>()).product();
+        let fact: f64 = e
+            .iter()
+            .map(|&k| (1..=k).map(f64::from).product::<f64>())
+            .product();
         self.coeff(e) * fact
     }
     /// The homogeneous part of degree `d`.
@@ -184,9 +187,9 @@ impl Jet {
     pub fn partial(&self, v: usize) -> Jet {
         let mut out = Jet::constant(0.0);
         let exps = monomials();
-        for k in 0..NCOEF {
+        for (k, e) in exps.iter().enumerate() {
             if let Some(l) = lower_index(v, k) {
-                out.c[l] += self.c[k] * f64::from(exps[k][v]);
+                out.c[l] += self.c[k] * f64::from(e[v]);
             }
         }
         out
@@ -195,9 +198,9 @@ impl Jet {
     pub fn integrate(&self, v: usize) -> Jet {
         let mut out = Jet::constant(0.0);
         let exps = monomials();
-        for k in 0..NCOEF {
+        for (k, e) in exps.iter().enumerate() {
             if let Some(r) = raise_index(v, k) {
-                out.c[r] += self.c[k] / (f64::from(exps[k][v]) + 1.0);
+                out.c[r] += self.c[k] / (f64::from(e[v]) + 1.0);
             }
         }
         out
@@ -252,7 +255,13 @@ impl Jet {
     pub fn recip(&self) -> Jet {
         let a = self.value();
         let r = 1.0 / a;
-        self.compose([r, -r * r, 2.0 * r.powi(3), -6.0 * r.powi(4), 24.0 * r.powi(5)])
+        self.compose([
+            r,
+            -r * r,
+            2.0 * r.powi(3),
+            -6.0 * r.powi(4),
+            24.0 * r.powi(5),
+        ])
     }
     /// `√x`.
     pub fn sqrt(&self) -> Jet {

@@ -26,8 +26,8 @@ use crate::model::Routhian;
 use crate::stability::{classify_with, ClassifyOptions, Stability, StabilityReport};
 use crate::steady::SteadyMotion;
 
-pub use events::{nonlinear_events, NonlinearEvent};
 pub use chart::{chart, reduced_hamiltonian, tangent_frame, RouthianJet};
+pub use events::{nonlinear_events, NonlinearEvent};
 pub use jet::{monomial_index, monomials, Exponents, Jet, NCOEF, NVARS, ORDER};
 
 /// Tolerances of [`nonlinear_stability`], all relative.
@@ -162,7 +162,11 @@ impl fmt::Display for NonlinearReport {
             self.verdict, self.reason, self.linear.verdict, self.arnold_determinant
         )?;
         if let Some(r) = self.resonance {
-            write!(f, ", resonance {r} at distance {:.2e}", self.resonance_distance)?;
+            write!(
+                f,
+                ", resonance {r} at distance {:.2e}",
+                self.resonance_distance
+            )?;
         }
         Ok(())
     }

@@ -53,9 +53,9 @@ impl CPoly {
     fn partial(&self, v: usize) -> CPoly {
         let mut out = Self::zero();
         let exps = monomials();
-        for k in 0..NCOEF {
+        for (k, e) in exps.iter().enumerate() {
             if let Some(l) = lower_index(v, k) {
-                out.c[l] += self.c[k] * f64::from(exps[k][v]);
+                out.c[l] += self.c[k] * f64::from(e[v]);
             }
         }
         out

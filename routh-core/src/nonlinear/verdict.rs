@@ -99,7 +99,7 @@ pub(crate) fn decide(x: &Inputs, opts: &NonlinearOptions) -> (NonlinearVerdict, 
         None => {
             let [c20, c11, c02] = x.c;
             let scale = c20.abs() * w2 * w2 + c11.abs() * w1 * w2 + c02.abs() * w1 * w1;
-            if !(x.d.abs() > opts.arnold_tol * scale) {
+            if x.d.abs() <= opts.arnold_tol * scale || x.d.is_nan() {
                 (
                     NonlinearVerdict::Undecided,
                     format!(
