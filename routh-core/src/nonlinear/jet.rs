@@ -128,8 +128,9 @@ pub(crate) fn raise_index(v: usize, k: usize) -> Option<usize> {
 /// let (x, y) = (Jet::variable(0.0, 0), Jet::variable(0.0, 1));
 /// let f = x.exp() * y.sin();
 /// assert!((f.coeff([1, 1, 0, 0]) - 1.0).abs() < 1e-15);
-/// // and of x² y³: (1/2!)·(−1/3!).
-/// assert!((f.coeff([2, 3, 0, 0]) + 1.0 / 12.0).abs() < 1e-15);
+/// // and of x y³: 1·(−1/3!); degree 5 and above is truncated.
+/// assert!((f.coeff([1, 3, 0, 0]) + 1.0 / 6.0).abs() < 1e-15);
+/// assert_eq!(f.coeff([2, 3, 0, 0]), 0.0);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Jet {
