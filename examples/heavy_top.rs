@@ -171,6 +171,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             EventKind::HamiltonianHopf => ("Maievskii p² = 4A₁mgl", Some(formula)),
             EventKind::BranchPoint => ("secular p² = mglC²/(C − A₁)", top.secular_p()),
             EventKind::Fold => ("fold of the tilted circles", None),
+            EventKind::ArnoldDegenerate | EventKind::Resonance => ("nonlinear event", None),
         };
         let exact = exact.unwrap_or(f64::NAN);
         println!(

@@ -65,9 +65,11 @@ pub mod fluid;
 pub mod prelude {
     pub use crate::{
         bifurcation_diagram, classified_steady_motions, classify, classify_at, continue_branch,
-        simulate_full, simulate_reduced, stability_atlas, steady_motions, steady_motions_certified,
-        AtlasOptions, BifurcationDiagram, Classified, ContinuationOptions, Lagrangian, Matrix3,
-        RouthError, Routhian, SimOptions, Stability, StabilityReport, SteadyMotion, Vector3,
+        nonlinear_stability, simulate_full, simulate_reduced, stability_atlas, steady_motions,
+        steady_motions_certified, AtlasOptions, BifurcationDiagram, Classified,
+        ContinuationOptions, Lagrangian, Matrix3, NonlinearOptions, NonlinearReport,
+        NonlinearVerdict, RouthError, Routhian, SimOptions, Stability, StabilityReport,
+        Model, ModelError, Param, SteadyMotion, Vector3,
     };
 }
 

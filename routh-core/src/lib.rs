@@ -23,6 +23,7 @@ pub mod families;
 mod formulas;
 mod krein;
 mod model;
+pub mod nonlinear;
 pub mod sim;
 mod sphere;
 pub mod stability;
@@ -41,6 +42,10 @@ pub use formulas::LatexFormulas;
 pub use model::{
     DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
     RouthBundle, Routhian,
+};
+pub use nonlinear::{
+    nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport,
+    NonlinearVerdict, Resonance,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};

@@ -80,7 +80,7 @@ pub(super) fn draw_rings(root: &Root, pts: &[Px], color: RGBColor) -> Result<(),
 }
 
 /// The marker of an event at `c`, black on a white halo: ▲ fold, ● branch point, ■
-/// Hamiltonian–Hopf.
+/// Hamiltonian–Hopf, ○ Arnold-degenerate (D = 0), ✕ resonance.
 pub(super) fn draw_event_marker(root: &Root, c: Px, kind: EventKind) -> Result<(), PlotError> {
     let halo = WHITE.filled();
     let ink = BLACK.filled();
@@ -102,6 +102,13 @@ pub(super) fn draw_event_marker(root: &Root, c: Px, kind: EventKind) -> Result<(
                     ink,
                 ))
             }),
+        // Nonlinear events (the post-pass of routh_core::nonlinear): ○ D = 0, ◆-ish ✕ resonance.
+        EventKind::ArnoldDegenerate => root
+            .draw(&Circle::new(c, 7, halo))
+            .and_then(|_| root.draw(&Circle::new(c, 5, BLACK.stroke_width(2)))),
+        EventKind::Resonance => root
+            .draw(&Circle::new(c, 7, halo))
+            .and_then(|_| root.draw(&Cross::new(c, 5, BLACK.stroke_width(2)))),
     };
     r.map_err(drawing_error)
 }

@@ -80,6 +80,7 @@ pub(super) fn boundary_stroke(k: EventKind) -> Stroke {
         EventKind::Fold => Stroke::Solid(3),
         EventKind::BranchPoint => Stroke::Dashed(3, 12, 5),
         EventKind::HamiltonianHopf => Stroke::Dashed(3, 3, 4),
+        EventKind::ArnoldDegenerate | EventKind::Resonance => Stroke::Dashed(2, 2, 2),
     }
 }
 
@@ -88,6 +89,7 @@ pub(super) fn boundary_color(k: EventKind, mono: bool) -> RGBColor {
         EventKind::Fold => BLACK,
         EventKind::BranchPoint => RGBColor(90, 0, 130),
         EventKind::HamiltonianHopf => RGBColor(150, 50, 0),
+        EventKind::ArnoldDegenerate | EventKind::Resonance => RGBColor(0, 90, 150),
     };
     ink(color, mono)
 }

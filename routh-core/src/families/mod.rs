@@ -336,6 +336,13 @@ pub enum EventKind {
     /// roots of `f₂` collide on the imaginary axis and leave it (gyroscopic stabilisation is lost
     /// or gained).
     HamiltonianHopf,
+    /// A zero of Arnold's determinant `D` on a gyroscopically stabilised stretch: the
+    /// Arnold–Moser test is inconclusive there (docs/method.md §10). Found only by the nonlinear
+    /// post-pass ([`nonlinear_events`](crate::nonlinear::nonlinear_events)).
+    ArnoldDegenerate,
+    /// A 1:2 or 1:3 resonance between the two frequencies on a gyroscopically stabilised
+    /// stretch (docs/method.md §10). Found only by the nonlinear post-pass.
+    Resonance,
 }
 
 impl fmt::Display for EventKind {
@@ -344,6 +351,8 @@ impl fmt::Display for EventKind {
             EventKind::Fold => "fold",
             EventKind::BranchPoint => "branch point",
             EventKind::HamiltonianHopf => "Hamiltonian–Hopf",
+            EventKind::ArnoldDegenerate => "Arnold-degenerate (D = 0)",
+            EventKind::Resonance => "resonance",
         })
     }
 }
