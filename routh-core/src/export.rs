@@ -48,12 +48,15 @@ pub fn verdict_name(v: Stability) -> &'static str {
     }
 }
 
-/// The CSV word for an event kind: `fold`, `branch_point`, `hamiltonian_hopf`.
+/// The CSV word for an event kind: `fold`, `branch_point`, `hamiltonian_hopf`,
+/// `arnold_degenerate`, `resonance`.
 pub fn event_name(k: EventKind) -> &'static str {
     match k {
         EventKind::Fold => "fold",
         EventKind::BranchPoint => "branch_point",
         EventKind::HamiltonianHopf => "hamiltonian_hopf",
+        EventKind::ArnoldDegenerate => "arnold_degenerate",
+        EventKind::Resonance => "resonance",
     }
 }
 

@@ -189,6 +189,7 @@ impl BifurcationDiagram {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum StopReason {
     /// [`ContinuationOptions::max_steps`] ran out on a branch at `(s, gamma)`; that branch ends
     /// there, the others are complete.

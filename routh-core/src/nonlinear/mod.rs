@@ -217,14 +217,21 @@ pub fn nonlinear_stability<M: Routhian>(
     steady: &SteadyMotion,
     opts: &NonlinearOptions,
 ) -> Result<NonlinearReport, RouthError> {
-    let _ = (model, steady);
     opts.validate()?;
-    Err(RouthError::InvalidModel {
-        what: "Routh function tape",
-        reason: "the nonlinear test needs a derived or run-time model (R as an expression \
-                 tape); for a hand-written model use nonlinear_stability_with and a RouthianJet"
-            .into(),
-    })
+    let Some(tape) = model.routh_tape() else {
+        return Err(RouthError::InvalidModel {
+            what: "Routh function tape",
+            reason: "the nonlinear test needs a derived or run-time model (R as an expression \
+                     tape); for a hand-written model use nonlinear_stability_with and a RouthianJet"
+                .into(),
+        });
+    };
+    // R at jets from the model's own expression DAG (the tape the derive or the run-time model
+    // built): its Taylor coefficients are the exact derivatives, no finite differences.
+    let r = |big_omega: &[Jet; 3], gamma: &[Jet; 3], p_psi: f64| {
+        tape.routhian(big_omega, gamma, Jet::constant(p_psi))
+    };
+    nonlinear_stability_with(model, steady, &r, opts)
 }
 
 /// [`nonlinear_stability`] with the Routh function evaluated at jets by `r`, which must be the
