@@ -1,0 +1,95 @@
+//! The command line's grammar (clap derive): `routh SUBCOMMAND MODEL.toml [options]`.
+
+use crate::args::{self, NamedRange};
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+/// Steady motions, stability and bifurcations of a rigid body about a fixed point, read from a
+/// TOML model file (docs/models.md). Routh reduction after Bourov & Chevallier, ZAMM 1998.
+///
+/// Exit codes: 0 success, 2 bad input (usage, unreadable or invalid model, bad range), 1 a
+/// failed computation.
+#[derive(Debug, Parser)]
+#[command(name = "routh", version, about, long_about)]
+pub struct Cli {
+    /// What to compute.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// The steady motions (relative equilibria) at the cyclic momentum p_ψ = P: γ, ψ̇, the
+    /// multiplier μ, the amended potential U_r and the energy.
+    Steady(AtMomentum),
+    /// The steady motions at p_ψ = P with their stability reports: the verdict (secularly
+    /// stable, gyroscopically stabilized, unstable), the eigenvalues of the restricted second
+    /// variation of U_r, the degree of instability and the roots of f₂.
+    Classify(AtMomentum),
+    /// A bifurcation diagram: the branches of steady motions and their events (folds, branch
+    /// points, Hamiltonian–Hopf) over the momentum (`--momentum LO..HI`) or over a parameter
+    /// (`--parameter NAME=LO..HI --momentum P`).
+    Diagram(Diagram),
+    /// The derived formulas: the Lagrangian, the amended potential U_r(γ, p_ψ) and ψ̇(0, γ, p_ψ).
+    Formulas(Formulas),
+}
+
+/// The model file and the output format, common to every subcommand.
+#[derive(Debug, Args)]
+pub struct Output {
+    /// Print JSON (the library's result types) instead of a table.
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print CSV instead of a table.
+    #[arg(long)]
+    pub csv: bool,
+}
+
+/// `steady` and `classify`.
+#[derive(Debug, Args)]
+pub struct AtMomentum {
+    /// The model file (TOML, see docs/models.md), e.g. examples/models/heavy_top.toml.
+    pub model: PathBuf,
+    /// The cyclic momentum p_ψ.
+    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: f64,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `diagram`.
+#[derive(Debug, Args)]
+pub struct Diagram {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// `LO..HI`: follow the steady motions over this momentum range; with `--parameter`, a
+    /// single value P (the fixed momentum).
+    #[arg(long, short = 'p', allow_hyphen_values = true)]
+    pub momentum: String,
+    /// `NAME=LO..HI`: follow the steady motions over this scalar parameter of the model, at the
+    /// fixed momentum given by `--momentum P`.
+    #[arg(long, value_parser = args::named_range, allow_hyphen_values = true)]
+    pub parameter: Option<NamedRange>,
+    /// Draw the diagram (γ₃ of the steady motions over the swept quantity, coloured by
+    /// stability, events marked) into this SVG file.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+    /// Draw the energy–momentum diagram (E over p_ψ) into this SVG file.
+    #[arg(long, value_name = "FILE")]
+    pub energy_momentum_svg: Option<PathBuf>,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `formulas`.
+#[derive(Debug, Args)]
+pub struct Formulas {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
