@@ -55,7 +55,6 @@ pub fn named_range(s: &str) -> Result<NamedRange, String> {
 }
 
 /// A vector `X,Y,Z` of finite numbers.
-#[cfg_attr(not(test), allow(dead_code))] // for `atlas --gamma` and `simulate`
 pub fn vec3(s: &str) -> Result<[f64; 3], String> {
     let parts: Vec<&str> = s.split(',').collect();
     if parts.len() != 3 {

@@ -3,10 +3,13 @@
 #![forbid(unsafe_code)]
 
 mod args;
+mod atlas;
+mod certify;
 mod cli;
 mod commands;
 mod diagram;
 mod error;
+mod simulate;
 mod table;
 
 use clap::Parser;
@@ -19,6 +22,9 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Steady(a) => commands::steady(a),
         Command::Classify(a) => commands::classify(a),
         Command::Diagram(d) => diagram::diagram(d),
+        Command::Atlas(a) => atlas::atlas(a),
+        Command::Simulate(s) => simulate::simulate(s),
+        Command::Certify(c) => certify::certify(c),
         Command::Formulas(f) => commands::formulas(f),
     }
 }

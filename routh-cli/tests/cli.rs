@@ -233,3 +233,158 @@ fn bad_input_exits_with_code_2_and_names_the_problem() {
     rejects(&["classify", bad_arg, "-p", "1"], "line");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn atlas_boundaries_are_the_classical_curves() {
+    // Over (mgl, p): Maievskii's p² = 4A₁mgl and the secular bound p² = mglC²/(C − A₁)
+    // = 6.25 mgl (A₁ = 1, C = 1.25).
+    let dir = std::env::temp_dir().join(format!("routh-cli-atlas-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("a.svg");
+    let v = json(&routh(&[
+        "atlas",
+        TOP,
+        "--x",
+        "mass=0.5..1.5",
+        "--y",
+        "momentum=0..5",
+        "--gamma",
+        "0,0,1",
+        "--nx",
+        "11",
+        "--ny",
+        "11",
+        "--json",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]));
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    std::fs::remove_dir_all(&dir).ok();
+    let curves = v["boundaries"].as_array().unwrap();
+    for (kind, factor) in [("HamiltonianHopf", 4.0), ("BranchPoint", 6.25)] {
+        let c = curves
+            .iter()
+            .find(|c| c["kind"] == kind)
+            .unwrap_or_else(|| panic!("no {kind} curve"));
+        let points = c["points"].as_array().unwrap();
+        assert!(points.len() > 5);
+        for p in points {
+            let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+            assert!((y * y - factor * x).abs() < 1e-4, "{kind}: ({x}, {y})");
+        }
+    }
+}
+
+#[test]
+fn simulate_keeps_the_invariants_of_the_lagrange_top() {
+    let g3 = (1.0f64 - 0.01).sqrt();
+    let gamma = format!("0,0.1,{g3}");
+    let v = json(&routh(&[
+        "simulate", TOP, "--omega", "0,0,5", "--gamma", &gamma, "--t-end", "10", "--json",
+    ]));
+    let t = v["t"].as_array().unwrap();
+    assert_eq!(t.last().and_then(|t| t.as_f64()), Some(10.0));
+    // Euler's third equation: ω₃ constant; E = ½Cω₃² + mgl γ₃ and p_ψ = Cω₃γ₃ at the start.
+    for w in v["omega"].as_array().unwrap() {
+        assert!((w[2].as_f64().unwrap() - 5.0).abs() < 1e-9);
+    }
+    let e0 = 0.5 * 1.25 * 25.0 + g3;
+    for e in v["energy"].as_array().unwrap() {
+        assert!((e.as_f64().unwrap() - e0).abs() < 1e-8);
+    }
+    let p0 = 1.25 * 5.0 * g3;
+    assert!((v["p_psi"][0].as_f64().unwrap() - p0).abs() < 1e-12);
+
+    // The reduced equations at p = 3 started at rest on the upright steady motion stay there.
+    let o = routh(&[
+        "simulate",
+        TOP,
+        "--omega",
+        "0,0,0",
+        "--gamma",
+        "0,0,1",
+        "--t-end",
+        "5",
+        "--reduced",
+        "--momentum",
+        "3",
+        "--csv",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let csv = stdout(&o);
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let col = header
+        .iter()
+        .position(|h| *h == "psi_dot")
+        .expect("psi_dot column");
+    for line in csv.lines().skip(1) {
+        let psi_dot: f64 = line.split(',').nth(col).unwrap().parse().unwrap();
+        assert!((psi_dot - 3.0 / 1.25).abs() < 1e-9, "ψ̇ = p/C");
+    }
+
+    rejects(
+        &[
+            "simulate", TOP, "--omega", "0,0,5", "--gamma", "0,0,2", "--t-end", "1",
+        ],
+        "unit vector",
+    );
+    rejects(
+        &[
+            "simulate", TOP, "--omega", "0,5", "--gamma", "0,0,1", "--t-end", "1",
+        ],
+        "X,Y,Z",
+    );
+    rejects(
+        &[
+            "simulate",
+            TOP,
+            "--omega",
+            "0,0,5",
+            "--gamma",
+            "0,0,1",
+            "--t-end",
+            "1",
+            "--reduced",
+        ],
+        "--momentum",
+    );
+}
+
+#[test]
+fn certify_proves_the_two_vertical_motions_alone_below_the_family() {
+    // At p = 1.5 the tilted family does not exist (p²(C − A₁)γ₃ < mgl(A₁ + (C − A₁)γ₃²)² on
+    // [−1, 1]): the steady motions are exactly γ = ±e₃.
+    let v = json(&routh(&["certify", TOP, "--momentum", "1.5", "--json"]));
+    assert_eq!(v["complete"], true, "{v}");
+    let motions = v["motions"].as_array().unwrap();
+    assert_eq!(motions.len(), 2);
+    for m in motions {
+        assert!((m["gamma"][2].as_f64().unwrap().abs() - 1.0).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn atlas_bad_axes_are_bad_input() {
+    let base = ["atlas", TOP, "--gamma", "0,0,1"];
+    let with = |extra: &[&'static str]| -> Vec<&'static str> { [&base[..], extra].concat() };
+    rejects(
+        &with(&["--x", "mass=0.5..1.5", "--y", "momentum=0..5", "-p", "1"]),
+        "already `momentum`",
+    );
+    rejects(
+        &with(&["--x", "mass=0.5..1.5", "--y", "c=1..2"]),
+        "--momentum P",
+    );
+    rejects(
+        &with(&["--x", "zz=0.5..1.5", "--y", "momentum=0..5"]),
+        "unknown parameter `zz`",
+    );
+    rejects(
+        &with(&["--x", "mass=1.5..0.5", "--y", "momentum=0..5"]),
+        "inverted",
+    );
+    rejects(
+        &with(&["--x", "mass=0.5..1.5", "--y", "momentum=0..5", "--nx", "1"]),
+        "--nx",
+    );
+}
