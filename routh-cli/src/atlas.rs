@@ -66,6 +66,7 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
         ny: a.ny.into(),
         ..AtlasOptions::default()
     };
+    let _spinner = crate::progress::Spinner::start("classifying the grid");
     let failure: RefCell<Option<ModelError>> = RefCell::new(None);
     let family = |x: f64, y: f64| match point(&model, names, [x, y], momentum) {
         Ok(mp) => mp,

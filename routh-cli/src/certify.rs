@@ -9,6 +9,7 @@ use routh::{steady_motions_certified, CertifyOptions};
 /// Runs `routh certify` and returns what it prints.
 pub fn certify(c: &Certify) -> Result<String, CliError> {
     let model = load(&c.model)?;
+    let _spinner = crate::progress::Spinner::start("certifying");
     let cert = steady_motions_certified(&model, c.momentum, &CertifyOptions::default())?;
     if c.json {
         let v = serde_json::json!({

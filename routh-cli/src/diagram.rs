@@ -13,6 +13,7 @@ use std::cell::RefCell;
 pub fn diagram(d: &Diagram) -> Result<String, CliError> {
     let model = load(&d.model)?;
     let opts = ContinuationOptions::default();
+    let _spinner = crate::progress::Spinner::start("following the branches");
     let bad = |e: String| CliError::Input(format!("--momentum: {e}"));
     let (result, x_label) = match &d.parameter {
         None => {

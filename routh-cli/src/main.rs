@@ -9,6 +9,7 @@ mod cli;
 mod commands;
 mod diagram;
 mod error;
+mod progress;
 mod simulate;
 mod table;
 
