@@ -1,7 +1,7 @@
 //! `routh atlas`: stability atlases over two quantities (paper §6).
 
 use crate::cli::Atlas;
-use crate::commands::load;
+use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::table::Table;
 use routh::export::verdict_name;
@@ -54,7 +54,7 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
     };
     // Check both names and shapes up front: bad input, exit code 2.
     point(&model, names, [a.x.range.0, a.y.range.0], momentum)
-        .map_err(|e| CliError::Input(format!("--x/--y: {e}")))?;
+        .map_err(|e| CliError::Input(format!("--x/--y: {}", describe(&e, None))))?;
     let gamma = Vector3::from(a.gamma);
     if gamma.norm() == 0.0 {
         return Err(CliError::Input(
@@ -77,7 +77,7 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
     };
     let result = stability_atlas(family, gamma.normalize(), a.x.range, a.y.range, &opts)?;
     if let Some(e) = failure.into_inner() {
-        return Err(CliError::Compute(e.to_string()));
+        return Err(CliError::Compute(describe(&e, None)));
     }
     if let Some(path) = &a.svg {
         let opts = PlotOptions {

@@ -3,13 +3,32 @@
 use crate::cli::{AtMomentum, Formulas};
 use crate::error::CliError;
 use crate::table::{num, vec3, Table};
-use routh::{classified_steady_motions, steady_motions, Model};
+use routh::{classified_steady_motions, steady_motions, Model, ModelError};
 use std::path::Path;
 
 /// Reads a model file; any failure (missing file, TOML or DSL error, with its position) is bad
 /// input.
 pub fn load(path: &Path) -> Result<Model, CliError> {
-    Model::from_file(path).map_err(|e| CliError::Input(e.to_string()))
+    Model::from_file(path).map_err(|e| CliError::Input(describe(&e, Some(path))))
+}
+
+/// A model error as one message: with its position, source line and caret when it has one (and
+/// the file's name), else its message alone.
+pub fn describe(e: &ModelError, path: Option<&Path>) -> String {
+    let full = e.to_string();
+    if full.lines().count() <= 2 && e.line() <= 1 && e.column() <= 1 {
+        return match path {
+            Some(p) if !e.message().contains(&*p.to_string_lossy()) => {
+                format!("{}: {}", p.display(), e.message())
+            }
+            _ => e.message().to_string(),
+        };
+    }
+    let full = full.strip_prefix("error: ").unwrap_or(&full).to_string();
+    match path {
+        Some(p) => full.replacen(" --> line", &format!(" --> {}: line", p.display()), 1),
+        None => full,
+    }
 }
 
 /// `routh steady`: the steady motions at `p_ψ = P` (paper §4, (36)–(38)).

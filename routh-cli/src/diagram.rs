@@ -2,7 +2,7 @@
 
 use crate::args;
 use crate::cli::Diagram;
-use crate::commands::load;
+use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::table::{num, vec3, Table};
 use routh::plot::{bifurcation_diagram_svg, energy_momentum_svg, PlotOptions};
@@ -27,7 +27,7 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             // Check the name and shape once, up front: bad input, exit code 2.
             model
                 .with(&par.name, par.range.0)
-                .map_err(|e| CliError::Input(format!("--parameter: {e}")))?;
+                .map_err(|e| CliError::Input(format!("--parameter: {}", describe(&e, None))))?;
             let failure: RefCell<Option<ModelError>> = RefCell::new(None);
             let family = |s: f64| match model.with(&par.name, s) {
                 Ok(m) => (m, p),
@@ -38,7 +38,11 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             };
             let diagram = bifurcation_diagram(family, par.range, &opts)?;
             if let Some(e) = failure.into_inner() {
-                return Err(CliError::Compute(format!("{}: {e}", par.name)));
+                return Err(CliError::Compute(format!(
+                    "{}: {}",
+                    par.name,
+                    describe(&e, None)
+                )));
             }
             (diagram, par.name.clone())
         }

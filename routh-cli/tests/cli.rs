@@ -218,6 +218,18 @@ fn bad_input_exits_with_code_2_and_names_the_problem() {
         "inverted",
     );
     rejects(&["frobnicate", TOP], "frobnicate");
+    let gyrostat = TOP.replace("heavy_top", "gyrostat");
+    rejects(
+        &[
+            "diagram",
+            &gyrostat,
+            "--parameter",
+            "com=0..1",
+            "--momentum",
+            "1",
+        ],
+        "parameter `com` is a Vector3<f64>, not a f64",
+    );
     // Model files with errors: the message carries the position.
     let dir = std::env::temp_dir().join(format!("routh-cli-bad-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -228,7 +240,11 @@ fn bad_input_exits_with_code_2_and_names_the_problem() {
         "[model]\nlagrangian = \"kinetic = 0.5 * a1 * omega.x * omega.x + zz, potential = gamma.z\"\n[parameters]\na1 = 1.0\n",
     )
     .unwrap();
-    rejects(&["steady", bad_arg, "-p", "1"], "zz");
+    rejects(&["steady", bad_arg, "-p", "1"], "unknown name `zz`");
+    rejects(
+        &["steady", bad_arg, "-p", "1"],
+        "bad.toml: line 2, column 56",
+    );
     std::fs::write(&bad, "[model\n").unwrap();
     rejects(&["classify", bad_arg, "-p", "1"], "line");
     std::fs::remove_dir_all(&dir).ok();
@@ -386,5 +402,23 @@ fn atlas_bad_axes_are_bad_input() {
     rejects(
         &with(&["--x", "mass=0.5..1.5", "--y", "momentum=0..5", "--nx", "1"]),
         "--nx",
+    );
+}
+
+#[test]
+fn an_unwritable_figure_is_a_failed_run_exit_code_1() {
+    let o = routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "0..5",
+        "--svg",
+        "/nonexistent-dir/routh/d.svg",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("cannot draw the figure"),
+        "{}",
+        stderr(&o)
     );
 }
