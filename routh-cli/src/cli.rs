@@ -84,8 +84,9 @@ pub struct Diagram {
     /// stability, events marked) into this SVG file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
-    /// Draw the energy–momentum diagram (E over p_ψ) into this SVG file.
-    #[arg(long, value_name = "FILE")]
+    /// Draw the energy–momentum diagram (E over p_ψ) into this SVG file (a sweep over the
+    /// momentum only).
+    #[arg(long, value_name = "FILE", conflicts_with = "parameter")]
     pub energy_momentum_svg: Option<PathBuf>,
     /// Output format.
     #[command(flatten)]

@@ -149,6 +149,32 @@ fn diagram_over_momentum_finds_the_two_classical_bounds() {
     let table = stdout(&routh(&["diagram", TOP, "--momentum", "0..5"]));
     assert!(table.contains("Hamiltonian–Hopf  2.000000"), "{table}");
     assert!(table.contains("branch point      2.500000"), "{table}");
+    let em = std::env::temp_dir().join(format!("routh-cli-em-{}.svg", std::process::id()));
+    let em_arg = em.to_str().unwrap();
+    let o = routh(&[
+        "diagram",
+        TOP,
+        "-p",
+        "0..5",
+        "--energy-momentum-svg",
+        em_arg,
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(&em).unwrap().contains("p_ψ"));
+    std::fs::remove_file(&em).ok();
+    rejects(
+        &[
+            "diagram",
+            TOP,
+            "--parameter",
+            "c=1..2",
+            "-p",
+            "3",
+            "--energy-momentum-svg",
+            em_arg,
+        ],
+        "cannot be used with",
+    );
     let csv = stdout(&routh(&["diagram", TOP, "--momentum", "0..5", "--csv"]));
     assert!(csv.lines().count() > 50, "{csv}");
 }
