@@ -1,0 +1,179 @@
+//! The command line's grammar (clap derive): `routh SUBCOMMAND MODEL.toml [options]`.
+
+use crate::args::{self, NamedRange};
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+/// Steady motions, stability and bifurcations of a rigid body about a fixed point, read from a
+/// TOML model file (docs/models.md). Routh reduction after Bourov & Chevallier, ZAMM 1998.
+///
+/// Exit codes: 0 success, 2 bad input (usage, unreadable or invalid model, bad range), 1 a
+/// failed computation.
+#[derive(Debug, Parser)]
+#[command(name = "routh", version, about, long_about)]
+pub struct Cli {
+    /// What to compute.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// The steady motions (relative equilibria) at the cyclic momentum p_ψ = P: γ, ψ̇, the
+    /// multiplier μ, the amended potential U_r and the energy.
+    Steady(AtMomentum),
+    /// The steady motions at p_ψ = P with their stability reports: the verdict (secularly
+    /// stable, gyroscopically stabilized, unstable), the eigenvalues of the restricted second
+    /// variation of U_r, the degree of instability and the roots of f₂.
+    Classify(AtMomentum),
+    /// A bifurcation diagram: the branches of steady motions and their events (folds, branch
+    /// points, Hamiltonian–Hopf) over the momentum (`--momentum LO..HI`) or over a parameter
+    /// (`--parameter NAME=LO..HI --momentum P`).
+    Diagram(Diagram),
+    /// A stability atlas: the verdict of the steady motion followed from `--gamma` over a grid
+    /// of two quantities (parameters of the model, or `momentum`), with the boundary curves.
+    Atlas(Atlas),
+    /// Integrate the full equations (Euler–Poisson, from ω and γ) or, with `--reduced`, the
+    /// reduced ones (Routh, from Ω, γ and p_ψ); prints samples and the drift of the invariants.
+    Simulate(Simulate),
+    /// The steady motions at p_ψ = P with an interval-arithmetic certificate that none is missed.
+    Certify(Certify),
+    /// The derived formulas: the Lagrangian, the amended potential U_r(γ, p_ψ) and ψ̇(0, γ, p_ψ).
+    Formulas(Formulas),
+}
+
+/// The model file and the output format, common to every subcommand.
+#[derive(Debug, Args)]
+pub struct Output {
+    /// Print JSON (the library's result types) instead of a table.
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print CSV instead of a table.
+    #[arg(long)]
+    pub csv: bool,
+}
+
+/// `steady` and `classify`.
+#[derive(Debug, Args)]
+pub struct AtMomentum {
+    /// The model file (TOML, see docs/models.md), e.g. examples/models/heavy_top.toml.
+    pub model: PathBuf,
+    /// The cyclic momentum p_ψ.
+    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: f64,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `diagram`.
+#[derive(Debug, Args)]
+pub struct Diagram {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// `LO..HI`: follow the steady motions over this momentum range; with `--parameter`, a
+    /// single value P (the fixed momentum).
+    #[arg(long, short = 'p', allow_hyphen_values = true)]
+    pub momentum: String,
+    /// `NAME=LO..HI`: follow the steady motions over this scalar parameter of the model, at the
+    /// fixed momentum given by `--momentum P`.
+    #[arg(long, value_parser = args::named_range, allow_hyphen_values = true)]
+    pub parameter: Option<NamedRange>,
+    /// Draw the diagram (γ₃ of the steady motions over the swept quantity, coloured by
+    /// stability, events marked) into this SVG file.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+    /// Draw the energy–momentum diagram (E over p_ψ) into this SVG file (a sweep over the
+    /// momentum only).
+    #[arg(long, value_name = "FILE", conflicts_with = "parameter")]
+    pub energy_momentum_svg: Option<PathBuf>,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `formulas`.
+#[derive(Debug, Args)]
+pub struct Formulas {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `atlas`.
+#[derive(Debug, Args)]
+pub struct Atlas {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// `NAME=LO..HI`: the horizontal axis, a scalar parameter or `momentum`.
+    #[arg(long, value_parser = args::named_range, allow_hyphen_values = true)]
+    pub x: NamedRange,
+    /// `NAME=LO..HI`: the vertical axis, a scalar parameter or `momentum`.
+    #[arg(long, value_parser = args::named_range, allow_hyphen_values = true)]
+    pub y: NamedRange,
+    /// The momentum p_ψ when neither axis is `momentum`.
+    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: Option<f64>,
+    /// `X,Y,Z`: γ of the steady motion to follow (a first guess at the grid's corner).
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub gamma: [f64; 3],
+    /// Grid columns.
+    #[arg(long, default_value_t = 41, value_parser = clap::value_parser!(u16).range(2..=2000))]
+    pub nx: u16,
+    /// Grid rows.
+    #[arg(long, default_value_t = 41, value_parser = clap::value_parser!(u16).range(2..=2000))]
+    pub ny: u16,
+    /// Draw the atlas into this SVG file.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `simulate`.
+#[derive(Debug, Args)]
+pub struct Simulate {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// `X,Y,Z`: the initial angular velocity ω (with `--reduced`, the reduced Ω).
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub omega: [f64; 3],
+    /// `X,Y,Z`: the initial vertical γ in the body frame (a unit vector).
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub gamma: [f64; 3],
+    /// The final time.
+    #[arg(long, value_parser = args::finite)]
+    pub t_end: f64,
+    /// Integrate the reduced (Routh) equations at `--momentum P` instead of the full ones.
+    #[arg(long, requires = "momentum")]
+    pub reduced: bool,
+    /// The cyclic momentum p_ψ of `--reduced`.
+    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: Option<f64>,
+    /// Relative tolerance of the integrator.
+    #[arg(long, value_parser = args::finite)]
+    pub rtol: Option<f64>,
+    /// Absolute tolerance of the integrator.
+    #[arg(long, value_parser = args::finite)]
+    pub atol: Option<f64>,
+    /// Output format (`--csv` and `--json`: every recorded step).
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `certify`.
+#[derive(Debug, Args)]
+pub struct Certify {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// The cyclic momentum p_ψ.
+    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: f64,
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}

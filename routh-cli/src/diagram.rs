@@ -1,0 +1,103 @@
+//! `routh diagram`: bifurcation diagrams over the momentum or over a parameter (paper §6).
+
+use crate::args;
+use crate::cli::Diagram;
+use crate::commands::{describe, load};
+use crate::error::CliError;
+use crate::table::{num, vec3, Table};
+use routh::plot::{bifurcation_diagram_svg, energy_momentum_svg, PlotOptions};
+use routh::{bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError};
+use std::cell::RefCell;
+
+/// Runs `routh diagram` and returns what it prints.
+pub fn diagram(d: &Diagram) -> Result<String, CliError> {
+    let model = load(&d.model)?;
+    let opts = ContinuationOptions::default();
+    let _spinner = crate::progress::Spinner::start("following the branches");
+    let bad = |e: String| CliError::Input(format!("--momentum: {e}"));
+    let (result, x_label) = match &d.parameter {
+        None => {
+            let range = args::range(&d.momentum).map_err(bad)?;
+            let diagram = bifurcation_diagram(|p| (model.clone(), p), range, &opts)?;
+            (diagram, "p_ψ".to_string())
+        }
+        Some(par) => {
+            let p = args::finite(&d.momentum)
+                .map_err(|e| bad(format!("{e} (with --parameter, a single momentum P)")))?;
+            // Check the name and shape once, up front: bad input, exit code 2.
+            model
+                .with(&par.name, par.range.0)
+                .map_err(|e| CliError::Input(format!("--parameter: {}", describe(&e, None))))?;
+            let failure: RefCell<Option<ModelError>> = RefCell::new(None);
+            let family = |s: f64| match model.with(&par.name, s) {
+                Ok(m) => (m, p),
+                Err(e) => {
+                    failure.borrow_mut().get_or_insert(e);
+                    (model.clone(), p)
+                }
+            };
+            let diagram = bifurcation_diagram(family, par.range, &opts)?;
+            if let Some(e) = failure.into_inner() {
+                return Err(CliError::Compute(format!(
+                    "{}: {}",
+                    par.name,
+                    describe(&e, None)
+                )));
+            }
+            (diagram, par.name.clone())
+        }
+    };
+    if let Some(path) = &d.svg {
+        let opts = PlotOptions {
+            x_label: x_label.clone(),
+            ..PlotOptions::default()
+        };
+        bifurcation_diagram_svg(&result, path, &opts)?;
+    }
+    if let Some(path) = &d.energy_momentum_svg {
+        energy_momentum_svg(&result, path, &PlotOptions::default())?;
+    }
+    if d.output.json {
+        return Ok(serde_json::to_string_pretty(&result)? + "\n");
+    }
+    if d.output.csv {
+        return Ok(result.to_csv());
+    }
+    Ok(render(&result, &x_label))
+}
+
+/// The diagram as two tables: its branches, then its events.
+fn render(d: &BifurcationDiagram, x_label: &str) -> String {
+    let mut branches = Table::new(&["branch", "points", "from", "to", "kind"]);
+    for (i, b) in d.branches.iter().enumerate() {
+        let (from, to) = match (b.points.first(), b.points.last()) {
+            (Some(f), Some(l)) => (num(f.s), num(l.s)),
+            _ => ("-".into(), "-".into()),
+        };
+        branches.row(vec![
+            i.to_string(),
+            b.points.len().to_string(),
+            from,
+            to,
+            if b.isolated { "isolated" } else { "family" }.to_string(),
+        ]);
+    }
+    let mut events = Table::new(&["event", x_label, "gamma", "branch", "before", "after"]);
+    for e in &d.events {
+        events.row(vec![
+            e.kind.to_string(),
+            format!("{:.9}", e.s),
+            vec3(&e.gamma),
+            e.branch.to_string(),
+            e.before.to_string(),
+            e.after.to_string(),
+        ]);
+    }
+    format!(
+        "{} branch(es) over {x_label}\n{}\n{} event(s)\n{}",
+        d.branches.len(),
+        branches.render(),
+        d.events.len(),
+        events.render()
+    )
+}

@@ -1,0 +1,47 @@
+//! `routh`: the command line of the routh toolkit (steady motions, stability, bifurcation
+//! diagrams of a model read from a TOML file). Run `routh --help`.
+#![forbid(unsafe_code)]
+
+mod args;
+mod atlas;
+mod certify;
+mod cli;
+mod commands;
+mod diagram;
+mod error;
+mod progress;
+mod simulate;
+mod table;
+
+use clap::Parser;
+use cli::{Cli, Command};
+use error::CliError;
+use std::io::Write;
+
+fn run(cli: &Cli) -> Result<String, CliError> {
+    match &cli.command {
+        Command::Steady(a) => commands::steady(a),
+        Command::Classify(a) => commands::classify(a),
+        Command::Diagram(d) => diagram::diagram(d),
+        Command::Atlas(a) => atlas::atlas(a),
+        Command::Simulate(s) => simulate::simulate(s),
+        Command::Certify(c) => certify::certify(c),
+        Command::Formulas(f) => commands::formulas(f),
+    }
+}
+
+fn main() {
+    // Usage errors: clap prints them and exits with code 2.
+    let cli = Cli::parse();
+    match run(&cli) {
+        Ok(text) => {
+            let mut out = std::io::stdout().lock();
+            // A closed pipe (`| head`) is not an error worth a message.
+            let _ = out.write_all(text.as_bytes()).and_then(|()| out.flush());
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            std::process::exit(e.exit_code());
+        }
+    }
+}

@@ -1,0 +1,450 @@
+//! The `routh` binary run as a user would, its numbers checked against closed forms of the
+//! Lagrange top (A₁ = 1, C = 1.25, mgl = 1 in examples/models/heavy_top.toml).
+
+use std::process::{Command, Output};
+
+const TOP: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../examples/models/heavy_top.toml"
+);
+
+fn routh(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_routh"))
+        .args(args)
+        .output()
+        .expect("the routh binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn json(o: &Output) -> serde_json::Value {
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(o));
+    serde_json::from_slice(&o.stdout).expect("valid JSON")
+}
+
+/// A bad input: exit code 2 and a message on stderr containing `needle`, no panic.
+fn rejects(args: &[&str], needle: &str) {
+    let o = routh(args);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: stderr {}", stderr(&o));
+    assert!(
+        stderr(&o).contains(needle),
+        "{args:?}: stderr {:?} lacks {needle:?}",
+        stderr(&o)
+    );
+    assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
+}
+
+#[test]
+fn steady_json_matches_closed_forms_of_the_lagrange_top() {
+    // With I(γ₃) = A₁ + (C − A₁)γ₃²: ψ̇ = p/I, U_r = mgl γ₃ + p²/(2I) (40); the two vertical
+    // motions γ = ±e₃, and the tilted family where ∂U_r/∂γ ∥ γ: p²(C − A₁)γ₃ = mgl I².
+    let v = json(&routh(&["steady", TOP, "--momentum", "3", "--json"]));
+    let motions = v.as_array().expect("an array");
+    assert_eq!(motions.len(), 3);
+    let (a1, c, mgl, p) = (1.0, 1.25, 1.0, 3.0);
+    let mut vertical = 0;
+    for m in motions {
+        let g3 = m["gamma"][2].as_f64().unwrap();
+        let inertia = a1 + (c - a1) * g3 * g3;
+        let psi_dot = m["psi_dot"].as_f64().unwrap();
+        assert!((psi_dot - p / inertia).abs() < 1e-9, "ψ̇ = p/I");
+        let u_r = m["amended_potential"].as_f64().unwrap();
+        assert!(
+            (u_r - (mgl * g3 + 0.5 * p * p / inertia)).abs() < 1e-9,
+            "U_r (40)"
+        );
+        if (g3.abs() - 1.0).abs() < 1e-9 {
+            vertical += 1;
+        } else {
+            let lhs = p * p * (c - a1) * g3;
+            assert!((lhs - mgl * inertia * inertia).abs() < 1e-8, "tilted: {g3}");
+        }
+    }
+    assert_eq!(vertical, 2);
+}
+
+#[test]
+fn steady_table_and_csv() {
+    let o = routh(&["steady", TOP, "--momentum", "3"]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = stdout(&o);
+    assert!(
+        text.starts_with("3 steady motion(s) at p_psi = 3"),
+        "{text}"
+    );
+    assert!(text.contains("psi_dot"));
+    let csv = stdout(&routh(&["steady", TOP, "--momentum", "3", "--csv"]));
+    assert_eq!(csv.lines().count(), 4, "{csv}");
+    let row: Vec<f64> = csv
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(|f| f.parse().unwrap())
+        .collect();
+    assert_eq!(row.len(), 8);
+    assert_eq!(row[0], 3.0);
+}
+
+#[test]
+fn classify_verdicts_follow_maievskii_and_the_secular_bound() {
+    // The upright top (γ = +e₃) is unstable below p = 2 (p² = 4A₁mgl), gyroscopically
+    // stabilised between 2 and 2.5 (p² = mglC²/(C − A₁)), secularly stable above.
+    for (p, verdict) in [
+        ("1.5", "Unstable"),
+        ("2.25", "GyroscopicallyStabilized"),
+        ("3", "SecularlyStable"),
+    ] {
+        let v = json(&routh(&["classify", TOP, "--momentum", p, "--json"]));
+        let up = v
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| (c["motion"]["gamma"][2].as_f64().unwrap() - 1.0).abs() < 1e-9)
+            .expect("the upright motion");
+        assert_eq!(up["report"]["verdict"], verdict, "p = {p}");
+        assert_eq!(up["p_psi"].as_f64(), Some(p.parse().unwrap()));
+    }
+    let o = routh(&["classify", TOP, "-p", "3"]);
+    assert!(stdout(&o).contains("secularly stable"), "{}", stdout(&o));
+}
+
+#[test]
+fn diagram_over_momentum_finds_the_two_classical_bounds() {
+    let dir = std::env::temp_dir().join(format!("routh-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("d.svg");
+    let svg_arg = svg.to_str().unwrap();
+    let v = json(&routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "0..5",
+        "--json",
+        "--svg",
+        svg_arg,
+    ]));
+    let events = v["events"].as_array().unwrap();
+    let at = |kind: &str| {
+        events
+            .iter()
+            .find(|e| e["kind"] == kind)
+            .and_then(|e| e["s"].as_f64())
+            .unwrap_or_else(|| panic!("no {kind} event in {events:?}"))
+    };
+    let (a1, c, mgl) = (1.0f64, 1.25f64, 1.0f64);
+    // Maievskii: p² = 4A₁mgl; the secular bound: p² = mglC²/(C − A₁).
+    assert!((at("HamiltonianHopf") - (4.0 * a1 * mgl).sqrt()).abs() < 1e-6);
+    assert!((at("BranchPoint") - (mgl * c * c / (c - a1)).sqrt()).abs() < 1e-6);
+    let figure = std::fs::read_to_string(&svg).expect("the SVG was written");
+    assert!(figure.contains("<svg"));
+    std::fs::remove_dir_all(&dir).ok();
+
+    let table = stdout(&routh(&["diagram", TOP, "--momentum", "0..5"]));
+    assert!(table.contains("Hamiltonian–Hopf  2.000000"), "{table}");
+    assert!(table.contains("branch point      2.500000"), "{table}");
+    let em = std::env::temp_dir().join(format!("routh-cli-em-{}.svg", std::process::id()));
+    let em_arg = em.to_str().unwrap();
+    let o = routh(&[
+        "diagram",
+        TOP,
+        "-p",
+        "0..5",
+        "--energy-momentum-svg",
+        em_arg,
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(&em).unwrap().contains("p_ψ"));
+    std::fs::remove_file(&em).ok();
+    rejects(
+        &[
+            "diagram",
+            TOP,
+            "--parameter",
+            "c=1..2",
+            "-p",
+            "3",
+            "--energy-momentum-svg",
+            em_arg,
+        ],
+        "cannot be used with",
+    );
+    let csv = stdout(&routh(&["diagram", TOP, "--momentum", "0..5", "--csv"]));
+    assert!(csv.lines().count() > 50, "{csv}");
+}
+
+#[test]
+fn diagram_over_a_parameter() {
+    // At p = 3 the secular bound p² = mglC²/(C − A₁) in C (A₁ = mgl = 1): C² − 9C + 9 = 0,
+    // C = (9 − √45)/2 ≈ 1.1459 in 1.05..1.6 (the other root, 7.85, is outside).
+    let v = json(&routh(&[
+        "diagram",
+        TOP,
+        "--parameter",
+        "c=1.05..1.6",
+        "--momentum",
+        "3",
+        "--json",
+    ]));
+    let bp: Vec<f64> = v["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == "BranchPoint")
+        .map(|e| e["s"].as_f64().unwrap())
+        .collect();
+    let expected = (9.0 - 45f64.sqrt()) / 2.0;
+    assert!(
+        bp.iter().any(|s| (s - expected).abs() < 1e-6),
+        "{bp:?} vs {expected}"
+    );
+}
+
+#[test]
+fn formulas_give_the_amended_potential_of_the_model() {
+    let v = json(&routh(&["formulas", TOP, "--json"]));
+    let u = v["amended_potential"].as_str().unwrap();
+    assert!(u.contains("p_ψ") && u.contains("γ₃"), "{u}");
+}
+
+#[test]
+fn bad_input_exits_with_code_2_and_names_the_problem() {
+    rejects(
+        &["steady", "no/such/model.toml", "-p", "1"],
+        "no/such/model.toml",
+    );
+    rejects(&["steady", TOP], "--momentum");
+    rejects(&["steady", TOP, "-p", "NaN"], "not a finite number");
+    rejects(&["steady", TOP, "-p", "x"], "not a number");
+    rejects(&["diagram", TOP, "--momentum", "5..0"], "inverted");
+    rejects(
+        &["diagram", TOP, "--momentum", "0..inf"],
+        "not a finite number",
+    );
+    rejects(&["diagram", TOP, "--momentum", "3"], "not a range");
+    rejects(
+        &[
+            "diagram",
+            TOP,
+            "--parameter",
+            "nope=1..2",
+            "--momentum",
+            "3",
+        ],
+        "unknown parameter `nope`",
+    );
+    rejects(
+        &["diagram", TOP, "--parameter", "c=2..1", "--momentum", "3"],
+        "inverted",
+    );
+    rejects(&["frobnicate", TOP], "frobnicate");
+    let gyrostat = TOP.replace("heavy_top", "gyrostat");
+    rejects(
+        &[
+            "diagram",
+            &gyrostat,
+            "--parameter",
+            "com=0..1",
+            "--momentum",
+            "1",
+        ],
+        "parameter `com` is a Vector3<f64>, not a f64",
+    );
+    // Model files with errors: the message carries the position.
+    let dir = std::env::temp_dir().join(format!("routh-cli-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.toml");
+    let bad_arg = bad.to_str().unwrap();
+    std::fs::write(
+        &bad,
+        "[model]\nlagrangian = \"kinetic = 0.5 * a1 * omega.x * omega.x + zz, potential = gamma.z\"\n[parameters]\na1 = 1.0\n",
+    )
+    .unwrap();
+    rejects(&["steady", bad_arg, "-p", "1"], "unknown name `zz`");
+    rejects(
+        &["steady", bad_arg, "-p", "1"],
+        "bad.toml: line 2, column 56",
+    );
+    std::fs::write(&bad, "[model\n").unwrap();
+    rejects(&["classify", bad_arg, "-p", "1"], "line");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn atlas_boundaries_are_the_classical_curves() {
+    // Over (mgl, p): Maievskii's p² = 4A₁mgl and the secular bound p² = mglC²/(C − A₁)
+    // = 6.25 mgl (A₁ = 1, C = 1.25).
+    let dir = std::env::temp_dir().join(format!("routh-cli-atlas-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("a.svg");
+    let v = json(&routh(&[
+        "atlas",
+        TOP,
+        "--x",
+        "mass=0.5..1.5",
+        "--y",
+        "momentum=0..5",
+        "--gamma",
+        "0,0,1",
+        "--nx",
+        "11",
+        "--ny",
+        "11",
+        "--json",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]));
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    std::fs::remove_dir_all(&dir).ok();
+    let curves = v["boundaries"].as_array().unwrap();
+    for (kind, factor) in [("HamiltonianHopf", 4.0), ("BranchPoint", 6.25)] {
+        let c = curves
+            .iter()
+            .find(|c| c["kind"] == kind)
+            .unwrap_or_else(|| panic!("no {kind} curve"));
+        let points = c["points"].as_array().unwrap();
+        assert!(points.len() > 5);
+        for p in points {
+            let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+            assert!((y * y - factor * x).abs() < 1e-4, "{kind}: ({x}, {y})");
+        }
+    }
+}
+
+#[test]
+fn simulate_keeps_the_invariants_of_the_lagrange_top() {
+    let g3 = (1.0f64 - 0.01).sqrt();
+    let gamma = format!("0,0.1,{g3}");
+    let v = json(&routh(&[
+        "simulate", TOP, "--omega", "0,0,5", "--gamma", &gamma, "--t-end", "10", "--json",
+    ]));
+    let t = v["t"].as_array().unwrap();
+    assert_eq!(t.last().and_then(|t| t.as_f64()), Some(10.0));
+    // Euler's third equation: ω₃ constant; E = ½Cω₃² + mgl γ₃ and p_ψ = Cω₃γ₃ at the start.
+    for w in v["omega"].as_array().unwrap() {
+        assert!((w[2].as_f64().unwrap() - 5.0).abs() < 1e-9);
+    }
+    let e0 = 0.5 * 1.25 * 25.0 + g3;
+    for e in v["energy"].as_array().unwrap() {
+        assert!((e.as_f64().unwrap() - e0).abs() < 1e-8);
+    }
+    let p0 = 1.25 * 5.0 * g3;
+    assert!((v["p_psi"][0].as_f64().unwrap() - p0).abs() < 1e-12);
+
+    // The reduced equations at p = 3 started at rest on the upright steady motion stay there.
+    let o = routh(&[
+        "simulate",
+        TOP,
+        "--omega",
+        "0,0,0",
+        "--gamma",
+        "0,0,1",
+        "--t-end",
+        "5",
+        "--reduced",
+        "--momentum",
+        "3",
+        "--csv",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let csv = stdout(&o);
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let col = header
+        .iter()
+        .position(|h| *h == "psi_dot")
+        .expect("psi_dot column");
+    for line in csv.lines().skip(1) {
+        let psi_dot: f64 = line.split(',').nth(col).unwrap().parse().unwrap();
+        assert!((psi_dot - 3.0 / 1.25).abs() < 1e-9, "ψ̇ = p/C");
+    }
+
+    rejects(
+        &[
+            "simulate", TOP, "--omega", "0,0,5", "--gamma", "0,0,2", "--t-end", "1",
+        ],
+        "unit vector",
+    );
+    rejects(
+        &[
+            "simulate", TOP, "--omega", "0,5", "--gamma", "0,0,1", "--t-end", "1",
+        ],
+        "X,Y,Z",
+    );
+    rejects(
+        &[
+            "simulate",
+            TOP,
+            "--omega",
+            "0,0,5",
+            "--gamma",
+            "0,0,1",
+            "--t-end",
+            "1",
+            "--reduced",
+        ],
+        "--momentum",
+    );
+}
+
+#[test]
+fn certify_proves_the_two_vertical_motions_alone_below_the_family() {
+    // At p = 1.5 the tilted family does not exist (p²(C − A₁)γ₃ < mgl(A₁ + (C − A₁)γ₃²)² on
+    // [−1, 1]): the steady motions are exactly γ = ±e₃.
+    let v = json(&routh(&["certify", TOP, "--momentum", "1.5", "--json"]));
+    assert_eq!(v["complete"], true, "{v}");
+    let motions = v["motions"].as_array().unwrap();
+    assert_eq!(motions.len(), 2);
+    for m in motions {
+        assert!((m["gamma"][2].as_f64().unwrap().abs() - 1.0).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn atlas_bad_axes_are_bad_input() {
+    let base = ["atlas", TOP, "--gamma", "0,0,1"];
+    let with = |extra: &[&'static str]| -> Vec<&'static str> { [&base[..], extra].concat() };
+    rejects(
+        &with(&["--x", "mass=0.5..1.5", "--y", "momentum=0..5", "-p", "1"]),
+        "already `momentum`",
+    );
+    rejects(
+        &with(&["--x", "mass=0.5..1.5", "--y", "c=1..2"]),
+        "--momentum P",
+    );
+    rejects(
+        &with(&["--x", "zz=0.5..1.5", "--y", "momentum=0..5"]),
+        "unknown parameter `zz`",
+    );
+    rejects(
+        &with(&["--x", "mass=1.5..0.5", "--y", "momentum=0..5"]),
+        "inverted",
+    );
+    rejects(
+        &with(&["--x", "mass=0.5..1.5", "--y", "momentum=0..5", "--nx", "1"]),
+        "--nx",
+    );
+}
+
+#[test]
+fn an_unwritable_figure_is_a_failed_run_exit_code_1() {
+    let o = routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "0..5",
+        "--svg",
+        "/nonexistent-dir/routh/d.svg",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("cannot draw the figure"),
+        "{}",
+        stderr(&o)
+    );
+}
