@@ -135,6 +135,13 @@ impl Model {
         Ok(self.get()?.lagrangian_text().to_string())
     }
 
+    /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector).
+    fn amended_potential(&self, gamma: &Bound<'_, PyAny>, p_psi: f64) -> PyResult<f64> {
+        use routh::Routhian;
+        let g = vector3("gamma", gamma)?;
+        Ok(self.get()?.amended_potential(&g, p_psi))
+    }
+
     /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)).
     fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
         let m = self.get()?;
