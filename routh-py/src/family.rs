@@ -82,17 +82,11 @@ impl PyFamily {
         let (m, _) = extract(out.bind(py))?;
         let progress = if progress {
             match py.import("tqdm") {
-                Ok(t) => Some(
-                    t.getattr("tqdm")?
-                        .call(
-                            (),
-                            Some(&pyo3::types::PyDict::from_sequence(
-                                &pyo3::types::PyList::new(py, [("desc", "family evaluations")])?
-                                    .into_any(),
-                            )?),
-                        )?
-                        .unbind(),
-                ),
+                Ok(t) => {
+                    let kw = pyo3::types::PyDict::new(py);
+                    kw.set_item("desc", "family evaluations")?;
+                    Some(t.getattr("tqdm")?.call((), Some(&kw))?.unbind())
+                }
                 Err(_) => None,
             }
         } else {

@@ -201,6 +201,7 @@ impl Model {
 
     /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end`.
     #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None))]
+    #[allow(clippy::too_many_arguments)]
     fn simulate(
         &self,
         py: Python<'_>,

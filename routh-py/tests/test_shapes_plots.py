@@ -71,3 +71,12 @@ def test_example_script_end_to_end(tmp_path):
     assert "branch_point at p_psi = 2.5000" in r.stdout
     assert "gyroscopically_stabilized" in r.stdout
     assert (tmp_path / "d.png").stat().st_size > 1000
+
+
+def test_progress_flag_and_packaged_stubs(top):
+    import pathlib
+
+    d = routh.bifurcation_diagram(lambda s: (top, s), (0.0, 5.0), progress=True)
+    assert len(d.events) == 2
+    pkg = pathlib.Path(routh.__file__).parent
+    assert (pkg / "py.typed").exists() and (pkg / "__init__.pyi").exists()
