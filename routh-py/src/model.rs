@@ -129,6 +129,27 @@ impl Model {
         Ok(d)
     }
 
+    /// The LaTeX symbols of the TOML file's `[latex]` table (name → symbol).
+    #[getter]
+    fn latex_symbols(&self) -> PyResult<std::collections::BTreeMap<String, String>> {
+        Ok(self.get()?.latex_symbols().clone())
+    }
+
+    /// The simplified formulas as text: `{"L": ..., "U_r": ..., "psi_dot": ...}` (the
+    /// Lagrangian, the amended potential (34) and ψ̇ at rest (38)).
+    #[getter]
+    fn formulas(&self) -> PyResult<std::collections::BTreeMap<&'static str, String>> {
+        let m = self.get()?;
+        let [l, u, p] = m.formulas();
+        Ok([
+            ("L", l.to_string()),
+            ("U_r", u.to_string()),
+            ("psi_dot", p.to_string()),
+        ]
+        .into_iter()
+        .collect())
+    }
+
     /// The Lagrangian's text.
     #[getter]
     fn lagrangian(&self) -> PyResult<String> {

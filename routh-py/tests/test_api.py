@@ -191,3 +191,12 @@ def test_certify(gyrostat):
     found = gyrostat.steady_motions(4.0)
     for m in c.motions:
         assert min(np.linalg.norm(m.gamma - f.gamma) for f in found) < 1e-6
+
+
+def test_toml_latex_table_and_formulas(gyrostat):
+    # The [latex] table of examples/models/gyrostat.toml.
+    assert gyrostat.latex_symbols == {
+        "inertia": "I", "rotor": "K", "coupling": "B", "com": "r_c", "mass": "m",
+    }
+    f = gyrostat.formulas
+    assert set(f) == {"L", "U_r", "psi_dot"} and all(isinstance(v, str) and v for v in f.values())
