@@ -1,0 +1,62 @@
+"""routh: Routh reduction for rigid-body dynamics (Bourov & Chevallier, ZAMM 1998) in Python.
+
+A model is a Lagrangian written in the language of ``#[derive(Lagrangian)]`` and its
+parameters; every analysis of the Rust crate runs on it, with numpy arrays in and out.
+
+>>> import routh
+>>> top = routh.Model(
+...     "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+...     {"inertia": [1.0, 1.0, 1.25], "mgl": 1.0})
+>>> sleeping = [m for m in top.steady_motions(3.0) if abs(m.gamma[2] - 1) < 1e-9][0]
+>>> top.classify(sleeping).verdict
+'secularly_stable'
+"""
+
+from ._routh import (
+    Atlas,
+    Boundary,
+    Branch,
+    Certificate,
+    Diagram,
+    Event,
+    Model,
+    ModelError,
+    ReducedTrajectory,
+    RouthError,
+    StabilityReport,
+    SteadyMotion,
+    Trajectory,
+    bifurcation_diagram,
+    stability_atlas,
+)
+
+#: The name the architecture gives the diagram class.
+BifurcationDiagram = Diagram
+#: The name the architecture gives the atlas class.
+StabilityAtlas = Atlas
+
+VERDICTS = ("secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate")
+EVENT_KINDS = ("fold", "branch_point", "hamiltonian_hopf")
+
+__all__ = [
+    "Atlas",
+    "BifurcationDiagram",
+    "Boundary",
+    "Branch",
+    "Certificate",
+    "Diagram",
+    "Event",
+    "Model",
+    "ModelError",
+    "ReducedTrajectory",
+    "RouthError",
+    "StabilityAtlas",
+    "StabilityReport",
+    "SteadyMotion",
+    "Trajectory",
+    "bifurcation_diagram",
+    "stability_atlas",
+    "VERDICTS",
+    "EVENT_KINDS",
+]
+__version__ = "0.1.0"

@@ -1,0 +1,132 @@
+//! Conversions between Python values and routh's: parameters, vectors, errors.
+
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
+use pyo3::create_exception;
+use pyo3::exceptions::PyException;
+use pyo3::prelude::*;
+use routh::{Matrix3, Param, Stability, Vector3};
+
+create_exception!(
+    routh,
+    RouthError,
+    PyException,
+    "An error of routh's analyses (the Rust `RouthError`); `str(e)` is its message."
+);
+create_exception!(
+    routh,
+    ModelError,
+    RouthError,
+    "A mistake in a model's text or parameters; `e.line`, `e.column` locate it (from 1)."
+);
+
+/// A Rust `RouthError` as a Python `routh.RouthError` (with `kind`, the variant's name).
+pub fn routh_err(py: Python<'_>, e: &routh::RouthError) -> PyErr {
+    let err = RouthError::new_err(e.to_string());
+    let debug = format!("{e:?}");
+    let kind: String = debug
+        .chars()
+        .take_while(|c| c.is_alphanumeric() || *c == '_')
+        .collect();
+    let _ = err.value(py).setattr("kind", kind);
+    err
+}
+
+/// A Rust `ModelError` as a Python `routh.ModelError` (with `line`, `column`, `message`).
+pub fn model_err(py: Python<'_>, e: &routh::ModelError) -> PyErr {
+    let err = ModelError::new_err(e.to_string());
+    let v = err.value(py);
+    let _ = v.setattr("line", e.line());
+    let _ = v.setattr("column", e.column());
+    let _ = v.setattr("message", e.message().to_string());
+    err
+}
+
+/// A parameter value: a number, a 3-sequence or a 3×3 nested sequence (numpy arrays included).
+pub fn param(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Param> {
+    if let Ok(x) = value.extract::<f64>() {
+        return Ok(Param::Scalar(x));
+    }
+    if let Ok(v) = value.extract::<Vec<f64>>() {
+        if v.len() == 3 {
+            return Ok(Param::Vector(Vector3::new(v[0], v[1], v[2])));
+        }
+    }
+    if let Ok(rows) = value.extract::<Vec<Vec<f64>>>() {
+        if rows.len() == 3 && rows.iter().all(|r| r.len() == 3) {
+            return Ok(Param::Matrix(Matrix3::from_fn(|i, j| rows[i][j])));
+        }
+    }
+    Err(ModelError::new_err(format!(
+        "parameter `{name}`: expected a number, a 3-vector or a 3x3 matrix"
+    )))
+}
+
+/// A parameter value as a Python object (float, (3,) or (3, 3) array).
+pub fn param_to_py(py: Python<'_>, p: &Param) -> Py<PyAny> {
+    match p {
+        Param::Scalar(x) => x
+            .into_pyobject(py)
+            .map(|o| o.into_any().unbind())
+            .unwrap_or_else(|_| py.None()),
+        Param::Vector(v) => vec3(py, v).into_any().unbind(),
+        Param::Matrix(m) => {
+            let rows: Vec<Vec<f64>> = (0..3)
+                .map(|i| (0..3).map(|j| m[(i, j)]).collect())
+                .collect();
+            match PyArray2::from_vec2(py, &rows) {
+                Ok(a) => a.into_any().unbind(),
+                Err(_) => py.None(),
+            }
+        }
+    }
+}
+
+/// A 3-vector from a Python sequence or numpy array.
+pub fn vector3(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Vector3<f64>> {
+    let v: Vec<f64> = value
+        .extract()
+        .map_err(|_| RouthError::new_err(format!("{name}: expected a sequence of 3 numbers")))?;
+    if v.len() != 3 {
+        return Err(RouthError::new_err(format!(
+            "{name}: expected 3 numbers, got {}",
+            v.len()
+        )));
+    }
+    Ok(Vector3::new(v[0], v[1], v[2]))
+}
+
+/// A (3,) float64 array.
+pub fn vec3<'py>(py: Python<'py>, v: &Vector3<f64>) -> Bound<'py, PyArray1<f64>> {
+    PyArray1::from_slice(py, v.as_slice())
+}
+
+/// An (n, 3) float64 array from a list of vectors.
+pub fn vecs<'py>(py: Python<'py>, vs: &[Vector3<f64>]) -> Bound<'py, PyArray2<f64>> {
+    let flat: Vec<f64> = vs.iter().flat_map(|v| [v.x, v.y, v.z]).collect();
+    let a = PyArray1::from_vec(py, flat);
+    // (3n,) → (n, 3): a reshape of a contiguous array cannot fail.
+    match a.reshape([vs.len(), 3]) {
+        Ok(r) => r,
+        Err(_) => PyArray2::zeros(py, [vs.len(), 3], false),
+    }
+}
+
+/// The verdict's name: "secularly_stable", "gyroscopically_stabilized", "unstable",
+/// "degenerate".
+pub fn verdict(s: Stability) -> &'static str {
+    match s {
+        Stability::SecularlyStable => "secularly_stable",
+        Stability::GyroscopicallyStabilized => "gyroscopically_stabilized",
+        Stability::Unstable => "unstable",
+        Stability::Degenerate => "degenerate",
+    }
+}
+
+/// The event's name: "fold", "branch_point", "hamiltonian_hopf".
+pub fn event_kind(k: routh::EventKind) -> &'static str {
+    match k {
+        routh::EventKind::Fold => "fold",
+        routh::EventKind::BranchPoint => "branch_point",
+        routh::EventKind::HamiltonianHopf => "hamiltonian_hopf",
+    }
+}

@@ -1,0 +1,261 @@
+//! Families given as Python callables: `routh.bifurcation_diagram` and `routh.stability_atlas`.
+//!
+//! The Rust continuation runs with the GIL released; each evaluation of the family re-acquires
+//! it to call Python. A Python exception raised by the family stops the work (every later
+//! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
+
+use crate::convert::{routh_err, vector3};
+use crate::model::Model;
+use crate::results::{Atlas, Diagram};
+use pyo3::prelude::*;
+use routh::{AtlasOptions, ContinuationOptions};
+use std::sync::Mutex;
+
+/// The keyword options of a continuation (None: the Rust default).
+pub struct ContinuationKw {
+    pub initial_step: Option<f64>,
+    pub max_step: Option<f64>,
+    pub min_step: Option<f64>,
+    pub max_steps: Option<usize>,
+    pub max_branches: Option<usize>,
+    pub newton_tol: Option<f64>,
+    pub event_tol: Option<f64>,
+    pub seeds: Option<usize>,
+    pub verify_counts: Option<bool>,
+}
+
+/// The Rust defaults with the given keywords applied.
+pub fn continuation_options(kw: ContinuationKw) -> ContinuationOptions {
+    let mut o = ContinuationOptions::default();
+    if let Some(v) = kw.initial_step {
+        o.initial_step = v;
+    }
+    if let Some(v) = kw.max_step {
+        o.max_step = v;
+    }
+    if let Some(v) = kw.min_step {
+        o.min_step = v;
+    }
+    if let Some(v) = kw.max_steps {
+        o.max_steps = v;
+    }
+    if let Some(v) = kw.max_branches {
+        o.max_branches = v;
+    }
+    if let Some(v) = kw.newton_tol {
+        o.newton_tol = v;
+    }
+    if let Some(v) = kw.event_tol {
+        o.event_tol = v;
+    }
+    if let Some(v) = kw.seeds {
+        o.seeds = v;
+    }
+    if let Some(v) = kw.verify_counts {
+        o.verify_counts = v;
+    }
+    o
+}
+
+/// A Python family `f(*args) -> (Model, p_psi)` made callable from Rust threads.
+struct PyFamily {
+    f: Py<PyAny>,
+    fallback: routh::Model,
+    error: Mutex<Option<PyErr>>,
+    progress: Option<Py<PyAny>>,
+}
+
+impl PyFamily {
+    /// Call once with the GIL held (errors surface at once, and give the fallback model).
+    fn new(
+        py: Python<'_>,
+        f: Py<PyAny>,
+        first: (f64, f64),
+        two: bool,
+        progress: bool,
+    ) -> PyResult<PyFamily> {
+        let out = if two {
+            f.call1(py, first)?
+        } else {
+            f.call1(py, (first.0,))?
+        };
+        let (m, _) = extract(out.bind(py))?;
+        let progress = if progress {
+            match py.import("tqdm") {
+                Ok(t) => {
+                    let kw = pyo3::types::PyDict::new(py);
+                    kw.set_item("desc", "family evaluations")?;
+                    Some(t.getattr("tqdm")?.call((), Some(&kw))?.unbind())
+                }
+                Err(_) => None,
+            }
+        } else {
+            None
+        };
+        Ok(PyFamily {
+            f,
+            fallback: m,
+            error: Mutex::new(None),
+            progress,
+        })
+    }
+
+    fn failed(&self) -> bool {
+        self.error.lock().map(|e| e.is_some()).unwrap_or(true)
+    }
+
+    fn call(&self, args: (f64, f64), two: bool) -> (routh::Model, f64) {
+        if self.failed() {
+            return (self.fallback.clone(), f64::NAN);
+        }
+        Python::attach(|py| {
+            let out = if two {
+                self.f.call1(py, args)
+            } else {
+                self.f.call1(py, (args.0,))
+            };
+            if let Some(p) = &self.progress {
+                let _ = p.call_method1(py, "update", (1,));
+            }
+            match out.and_then(|o| extract(o.bind(py))) {
+                Ok(r) => r,
+                Err(e) => {
+                    if let Ok(mut slot) = self.error.lock() {
+                        slot.get_or_insert(e);
+                    }
+                    (self.fallback.clone(), f64::NAN)
+                }
+            }
+        })
+    }
+
+    /// The family's exception if it raised one, else `other`.
+    fn finish(self, py: Python<'_>, other: PyErr) -> PyErr {
+        self.close(py);
+        match self.error.into_inner() {
+            Ok(Some(e)) => e,
+            _ => other,
+        }
+    }
+
+    fn close(&self, py: Python<'_>) {
+        if let Some(p) = &self.progress {
+            let _ = p.call_method0(py, "close");
+        }
+    }
+
+    fn take_error(&self) -> Option<PyErr> {
+        self.error.lock().ok().and_then(|mut e| e.take())
+    }
+}
+
+fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
+    let (m, p): (Bound<'_, Model>, f64) = o.extract().map_err(|_| {
+        pyo3::exceptions::PyTypeError::new_err(
+            "the family must return a tuple (routh.Model, p_psi)",
+        )
+    })?;
+    Ok((m.get().get()?, p))
+}
+
+/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`.
+#[pyfunction]
+#[pyo3(signature = (family, range, *, initial_step=None, max_step=None, min_step=None,
+                    max_steps=None, max_branches=None, newton_tol=None, event_tol=None,
+                    seeds=None, verify_counts=None, progress=false))]
+#[allow(clippy::too_many_arguments)]
+pub fn bifurcation_diagram(
+    py: Python<'_>,
+    family: Py<PyAny>,
+    range: (f64, f64),
+    initial_step: Option<f64>,
+    max_step: Option<f64>,
+    min_step: Option<f64>,
+    max_steps: Option<usize>,
+    max_branches: Option<usize>,
+    newton_tol: Option<f64>,
+    event_tol: Option<f64>,
+    seeds: Option<usize>,
+    verify_counts: Option<bool>,
+    progress: bool,
+) -> PyResult<Diagram> {
+    let opts = continuation_options(ContinuationKw {
+        initial_step,
+        max_step,
+        min_step,
+        max_steps,
+        max_branches,
+        newton_tol,
+        event_tol,
+        seeds,
+        verify_counts,
+    });
+    let fam = PyFamily::new(py, family, (range.0, 0.0), false, progress)?;
+    let r = py.detach(|| routh::bifurcation_diagram(|s| fam.call((s, 0.0), false), range, &opts));
+    match r {
+        Ok(d) => {
+            fam.close(py);
+            if let Some(e) = fam.take_error() {
+                return Err(e);
+            }
+            Diagram::new(py, &d)
+        }
+        Err(e) => {
+            let other = routh_err(py, &e);
+            Err(fam.finish(py, other))
+        }
+    }
+}
+
+/// The stability atlas of a family `(x, y) -> (Model, p_psi)` over `[x0, x1] × [y0, y1]`,
+/// following the steady motion near `gamma_guess`.
+#[pyfunction]
+#[pyo3(signature = (family, gamma_guess, x, y, *, nx=None, ny=None, curve_tol=None,
+                    curve_step=None, max_curve_points=None, progress=false))]
+#[allow(clippy::too_many_arguments)]
+pub fn stability_atlas(
+    py: Python<'_>,
+    family: Py<PyAny>,
+    gamma_guess: &Bound<'_, PyAny>,
+    x: (f64, f64),
+    y: (f64, f64),
+    nx: Option<usize>,
+    ny: Option<usize>,
+    curve_tol: Option<f64>,
+    curve_step: Option<f64>,
+    max_curve_points: Option<usize>,
+    progress: bool,
+) -> PyResult<Atlas> {
+    let g = vector3("gamma_guess", gamma_guess)?;
+    let mut opts = AtlasOptions::default();
+    if let Some(v) = nx {
+        opts.nx = v;
+    }
+    if let Some(v) = ny {
+        opts.ny = v;
+    }
+    if let Some(v) = curve_tol {
+        opts.curve_tol = v;
+    }
+    if let Some(v) = curve_step {
+        opts.curve_step = v;
+    }
+    if let Some(v) = max_curve_points {
+        opts.max_curve_points = v;
+    }
+    let fam = PyFamily::new(py, family, (x.0, y.0), true, progress)?;
+    let r = py.detach(|| routh::stability_atlas(|a, b| fam.call((a, b), true), g, x, y, &opts));
+    match r {
+        Ok(a) => {
+            fam.close(py);
+            if let Some(e) = fam.take_error() {
+                return Err(e);
+            }
+            Atlas::new(py, &a)
+        }
+        Err(e) => {
+            let other = routh_err(py, &e);
+            Err(fam.finish(py, other))
+        }
+    }
+}

@@ -1,0 +1,49 @@
+//! `routh._routh`: the compiled half of the Python package `routh` (ARCHITECTURE §5e).
+//!
+//! Every analysis of `routh` is exposed on the run-time [`routh::Model`]: steady motions (paper
+//! (45)–(46)), their classification (section 4–5, errata E5/E8), bifurcation diagrams and
+//! stability atlases of families, simulation of the full (1)–(2) and reduced (39) equations, and
+//! certified enumeration. Vectors go in and out as numpy arrays; errors become the Python
+//! exceptions `routh.RouthError` and `routh.ModelError`; long work releases the GIL.
+//!
+//! The pure-Python layer (`python/routh/__init__.py`) adds plots and reprs.
+
+#![forbid(unsafe_code)]
+
+mod convert;
+mod family;
+mod results;
+
+use pyo3::prelude::*;
+
+pub use convert::{ModelError, RouthError};
+use results::{
+    Atlas, Boundary, Branch, Certificate, Diagram, Event, ReducedTrajectory, StabilityReport,
+    SteadyMotion, Trajectory,
+};
+
+mod model;
+use model::Model;
+
+/// The extension module `routh._routh`.
+#[pymodule]
+fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("RouthError", py.get_type::<RouthError>())?;
+    m.add("ModelError", py.get_type::<ModelError>())?;
+    m.add_class::<Model>()?;
+    m.add_class::<SteadyMotion>()?;
+    m.add_class::<StabilityReport>()?;
+    m.add_class::<Diagram>()?;
+    m.add_class::<Branch>()?;
+    m.add_class::<Event>()?;
+    m.add_class::<Atlas>()?;
+    m.add_class::<Boundary>()?;
+    m.add_class::<Trajectory>()?;
+    m.add_class::<ReducedTrajectory>()?;
+    m.add_class::<Certificate>()?;
+    m.add_function(wrap_pyfunction!(family::bifurcation_diagram, m)?)?;
+    m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
+    m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,326 @@
+//! `routh.Model`: the run-time model and the analyses on it.
+
+use crate::convert::{model_err, param, param_to_py, routh_err, vector3};
+use crate::family::{continuation_options, ContinuationKw};
+use crate::results::{
+    Certificate, Diagram, ReducedTrajectory, StabilityReport, SteadyMotion, Trajectory,
+};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use routh::{CertifyOptions, Param, SimOptions};
+
+/// A rigid-body model: a Lagrangian in the language of `#[derive(Lagrangian)]` and the values
+/// of its parameters (float, 3-sequence or 3x3 nested sequence / numpy array).
+///
+/// >>> top = routh.Model("kinetic = 0.5 * omega.dot(diag(inertia) * omega), "
+/// ...                   "potential = mgl * gamma.z", {"inertia": [1, 1, 1.25], "mgl": 1.0})
+/// >>> [m.gamma for m in top.steady_motions(3.0)]
+#[pyclass(module = "routh", frozen)]
+pub struct Model {
+    pub(crate) inner: std::sync::RwLock<routh::Model>,
+}
+
+impl Model {
+    pub(crate) fn get(&self) -> PyResult<routh::Model> {
+        self.inner
+            .read()
+            .map(|m| m.clone())
+            .map_err(|_| crate::RouthError::new_err("the model's lock is poisoned"))
+    }
+    pub(crate) fn wrap(m: routh::Model) -> Model {
+        Model {
+            inner: std::sync::RwLock::new(m),
+        }
+    }
+}
+
+fn sim_options(rtol: f64, atol: f64, max_steps: Option<usize>) -> SimOptions {
+    let mut o = SimOptions {
+        rtol,
+        atol,
+        ..SimOptions::default()
+    };
+    if let Some(n) = max_steps {
+        o.max_steps = n;
+    }
+    o
+}
+
+#[pymethods]
+impl Model {
+    #[new]
+    #[pyo3(signature = (lagrangian, parameters=None))]
+    fn new(
+        py: Python<'_>,
+        lagrangian: &str,
+        parameters: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Model> {
+        let mut params: Vec<(String, Param)> = Vec::new();
+        if let Some(d) = parameters {
+            for (k, v) in d.iter() {
+                let name: String = k.extract()?;
+                let p = param(&name, &v)?;
+                params.push((name, p));
+            }
+        }
+        let refs: Vec<(&str, Param)> = params.iter().map(|(n, p)| (n.as_str(), *p)).collect();
+        let text = lagrangian.to_string();
+        let m = py
+            .detach(move || routh::Model::new(&text, &refs))
+            .map_err(|e| model_err(py, &e))?;
+        Ok(Model::wrap(m))
+    }
+
+    /// A model from the text of a TOML file (`[model] lagrangian = ...`, `[parameters]`).
+    #[staticmethod]
+    fn from_toml(py: Python<'_>, text: &str) -> PyResult<Model> {
+        let t = text.to_string();
+        let m = py
+            .detach(move || routh::Model::from_toml(&t))
+            .map_err(|e| model_err(py, &e))?;
+        Ok(Model::wrap(m))
+    }
+
+    /// A model from a TOML file.
+    #[staticmethod]
+    fn load(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Model> {
+        let m = py
+            .detach(move || routh::Model::from_file(&path))
+            .map_err(|e| model_err(py, &e))?;
+        Ok(Model::wrap(m))
+    }
+
+    /// Set a parameter in place (same shape as before).
+    fn set(&self, py: Python<'_>, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+        let p = param(name, value)?;
+        let mut g = self
+            .inner
+            .write()
+            .map_err(|_| crate::RouthError::new_err("the model's lock is poisoned"))?;
+        g.set(name, p).map_err(|e| model_err(py, &e))
+    }
+
+    /// A copy with some parameters changed: `m.with_params(mgl=2.0)`.
+    #[pyo3(signature = (**kw))]
+    fn with_params(&self, py: Python<'_>, kw: Option<&Bound<'_, PyDict>>) -> PyResult<Model> {
+        let mut m = self.get()?;
+        if let Some(d) = kw {
+            for (k, v) in d.iter() {
+                let name: String = k.extract()?;
+                let p = param(&name, &v)?;
+                m.set(&name, p).map_err(|e| model_err(py, &e))?;
+            }
+        }
+        Ok(Model::wrap(m))
+    }
+
+    /// The value of a parameter (float or numpy array), or None.
+    fn get_param(&self, py: Python<'_>, name: &str) -> PyResult<Option<Py<PyAny>>> {
+        Ok(self.get()?.get(name).map(|p| param_to_py(py, &p)))
+    }
+
+    /// The parameters as a dict.
+    #[getter]
+    fn parameters<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (n, p) in self.get()?.parameters() {
+            d.set_item(n, param_to_py(py, p))?;
+        }
+        Ok(d)
+    }
+
+    /// The LaTeX symbols of the TOML file's `[latex]` table (name → symbol).
+    #[getter]
+    fn latex_symbols(&self) -> PyResult<std::collections::BTreeMap<String, String>> {
+        Ok(self.get()?.latex_symbols().clone())
+    }
+
+    /// The simplified formulas as text: `{"L": ..., "U_r": ..., "psi_dot": ...}` (the
+    /// Lagrangian, the amended potential (34) and ψ̇ at rest (38)).
+    #[getter]
+    fn formulas(&self) -> PyResult<std::collections::BTreeMap<&'static str, String>> {
+        let m = self.get()?;
+        let [l, u, p] = m.formulas();
+        Ok([
+            ("L", l.to_string()),
+            ("U_r", u.to_string()),
+            ("psi_dot", p.to_string()),
+        ]
+        .into_iter()
+        .collect())
+    }
+
+    /// The Lagrangian's text.
+    #[getter]
+    fn lagrangian(&self) -> PyResult<String> {
+        Ok(self.get()?.lagrangian_text().to_string())
+    }
+
+    /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector).
+    fn amended_potential(&self, gamma: &Bound<'_, PyAny>, p_psi: f64) -> PyResult<f64> {
+        use routh::Routhian;
+        let g = vector3("gamma", gamma)?;
+        Ok(self.get()?.amended_potential(&g, p_psi))
+    }
+
+    /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)).
+    fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
+        let m = self.get()?;
+        let r = py.detach(|| routh::steady_motions(&m, p_psi));
+        match r {
+            Ok(v) => Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect()),
+            Err(e) => Err(routh_err(py, &e)),
+        }
+    }
+
+    /// The stability of a steady motion (sections 4–5).
+    fn classify(&self, py: Python<'_>, motion: &SteadyMotion) -> PyResult<StabilityReport> {
+        let m = self.get()?;
+        let s = motion.inner.clone();
+        let r = py
+            .detach(|| routh::classify(&m, &s))
+            .map_err(|e| routh_err(py, &e))?;
+        Ok(StabilityReport::new(py, &r))
+    }
+
+    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi).
+    #[pyo3(signature = (range, *, initial_step=None, max_step=None, min_step=None, max_steps=None,
+                        max_branches=None, newton_tol=None, event_tol=None, seeds=None,
+                        verify_counts=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn bifurcation_diagram(
+        &self,
+        py: Python<'_>,
+        range: (f64, f64),
+        initial_step: Option<f64>,
+        max_step: Option<f64>,
+        min_step: Option<f64>,
+        max_steps: Option<usize>,
+        max_branches: Option<usize>,
+        newton_tol: Option<f64>,
+        event_tol: Option<f64>,
+        seeds: Option<usize>,
+        verify_counts: Option<bool>,
+    ) -> PyResult<Diagram> {
+        let opts = continuation_options(ContinuationKw {
+            initial_step,
+            max_step,
+            min_step,
+            max_steps,
+            max_branches,
+            newton_tol,
+            event_tol,
+            seeds,
+            verify_counts,
+        });
+        let m = self.get()?;
+        let d = py
+            .detach(|| routh::bifurcation_diagram(|p| (m.clone(), p), range, &opts))
+            .map_err(|e| routh_err(py, &e))?;
+        Diagram::new(py, &d)
+    }
+
+    /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end`.
+    #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn simulate(
+        &self,
+        py: Python<'_>,
+        omega0: &Bound<'_, PyAny>,
+        gamma0: &Bound<'_, PyAny>,
+        t_end: f64,
+        rtol: f64,
+        atol: f64,
+        max_steps: Option<usize>,
+    ) -> PyResult<Trajectory> {
+        let w = vector3("omega0", omega0)?;
+        let g = vector3("gamma0", gamma0)?;
+        let m = self.get()?;
+        let opts = sim_options(rtol, atol, max_steps);
+        let t = py
+            .detach(|| routh::simulate_full(&m, w, g, t_end, &opts))
+            .map_err(|e| routh_err(py, &e))?;
+        Ok(Trajectory::new(py, &t))
+    }
+
+    /// Integrate the reduced equations (39) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`.
+    #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn simulate_reduced(
+        &self,
+        py: Python<'_>,
+        big_omega0: &Bound<'_, PyAny>,
+        gamma0: &Bound<'_, PyAny>,
+        p_psi: f64,
+        t_end: f64,
+        rtol: f64,
+        atol: f64,
+        max_steps: Option<usize>,
+    ) -> PyResult<ReducedTrajectory> {
+        let w = vector3("big_omega0", big_omega0)?;
+        let g = vector3("gamma0", gamma0)?;
+        let m = self.get()?;
+        let opts = sim_options(rtol, atol, max_steps);
+        let t = py
+            .detach(|| routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts))
+            .map_err(|e| routh_err(py, &e))?;
+        Ok(ReducedTrajectory::new(py, &t))
+    }
+
+    /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic).
+    fn certify(&self, py: Python<'_>, p_psi: f64) -> PyResult<Certificate> {
+        let m = self.get()?;
+        let c = py
+            .detach(|| routh::steady_motions_certified(&m, p_psi, &CertifyOptions::default()))
+            .map_err(|e| routh_err(py, &e))?;
+        let mut motions = Vec::with_capacity(c.motions.len());
+        for cm in &c.motions {
+            motions.push(Py::new(
+                py,
+                SteadyMotion {
+                    inner: cm.steady.clone(),
+                },
+            )?);
+        }
+        Ok(Certificate {
+            complete: c.complete,
+            motions,
+            p_psi: c.p_psi,
+            boxes: c.boxes,
+            undecided: c.undecided.len(),
+        })
+    }
+
+    fn __repr__(&self) -> PyResult<String> {
+        let m = self.get()?;
+        let names: Vec<&str> = m.parameters().iter().map(|(n, _)| n.as_str()).collect();
+        Ok(format!("routh.Model(parameters={names:?})"))
+    }
+
+    fn __copy__(&self) -> PyResult<Model> {
+        Ok(Model::wrap(self.get()?))
+    }
+
+    #[pyo3(signature = (*_args))]
+    fn __deepcopy__(&self, _args: &Bound<'_, PyTuple>) -> PyResult<Model> {
+        Ok(Model::wrap(self.get()?))
+    }
+}
+
+/// Seconds per call of `steady_motions` + `classify` of every motion, timed in Rust (for the
+/// benchmark of docs/performance.md): `n` repetitions at `p_psi`.
+#[pyfunction]
+pub fn _bench_rust(py: Python<'_>, model: &Model, p_psi: f64, n: usize) -> PyResult<f64> {
+    let m = model.get()?;
+    py.detach(|| {
+        let start = std::time::Instant::now();
+        for _ in 0..n.max(1) {
+            let ms = routh::steady_motions(&m, p_psi)?;
+            for s in &ms {
+                std::hint::black_box(routh::classify(&m, s)?);
+            }
+        }
+        Ok(start.elapsed().as_secs_f64() / n.max(1) as f64)
+    })
+    .map_err(|e: routh::RouthError| routh_err(py, &e))
+}

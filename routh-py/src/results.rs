@@ -1,0 +1,399 @@
+//! The result classes: steady motions, reports, diagrams, atlases, trajectories, certificates.
+//! Arrays are built once, when the result is made, and handed out as numpy arrays.
+
+use crate::convert::{event_kind, vec3, vecs, verdict};
+use numpy::{Complex64, PyArray1, PyArray2};
+use pyo3::prelude::*;
+
+/// A steady motion (paper (45)–(46)): the vertical `gamma` (body frame, (3,) array), the cyclic
+/// momentum `p_psi`, the spin `psi_dot` (38), the multiplier `mu`, the `energy` (3), the amended
+/// potential `amended_potential` (42) and whether it is `isolated` (not on a circle of them).
+#[pyclass(module = "routh", frozen)]
+pub struct SteadyMotion {
+    pub(crate) inner: routh::SteadyMotion,
+}
+
+#[pymethods]
+impl SteadyMotion {
+    /// The vertical in the body frame, a unit (3,) float64 array.
+    #[getter]
+    fn gamma<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        vec3(py, &self.inner.gamma)
+    }
+    /// The cyclic momentum p_ψ (9).
+    #[getter]
+    fn p_psi(&self) -> f64 {
+        self.inner.p_psi
+    }
+    /// The spin ψ̇ about the vertical (38).
+    #[getter]
+    fn psi_dot(&self) -> f64 {
+        self.inner.psi_dot
+    }
+    /// The Lagrange multiplier μ of |γ|² = 1 in (45).
+    #[getter]
+    fn mu(&self) -> f64 {
+        self.inner.mu
+    }
+    /// The energy (3) of the steady motion.
+    #[getter]
+    fn energy(&self) -> f64 {
+        self.inner.energy
+    }
+    /// The amended potential U_r(γ, p_ψ) (42).
+    #[getter]
+    fn amended_potential(&self) -> f64 {
+        self.inner.amended_potential
+    }
+    /// Whether the steady motion is isolated (false on a circle of steady motions).
+    #[getter]
+    fn isolated(&self) -> bool {
+        self.inner.isolated
+    }
+    fn __repr__(&self) -> String {
+        let g = self.inner.gamma;
+        format!(
+            "SteadyMotion(gamma=[{:.6}, {:.6}, {:.6}], p_psi={}, psi_dot={:.6}, energy={:.6}, isolated={})",
+            g.x,
+            g.y,
+            g.z,
+            self.inner.p_psi,
+            self.inner.psi_dot,
+            self.inner.energy,
+            if self.inner.isolated { "True" } else { "False" }
+        )
+    }
+}
+
+/// The stability of a steady motion (sections 4–5): `verdict` ("secularly_stable",
+/// "gyroscopically_stabilized", "unstable", "degenerate"), `degree_of_instability`,
+/// `restricted_hessian_eigenvalues` ((2,) float64) and `f2_roots` ((4,) complex128).
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct StabilityReport {
+    /// One of "secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate".
+    pub verdict: &'static str,
+    /// The number of negative eigenvalues of the restricted second variation (62)–(63).
+    pub degree_of_instability: usize,
+    /// The eigenvalues of the restricted second variation, (2,) float64.
+    pub restricted_hessian_eigenvalues: Py<PyAny>,
+    /// The roots λ of the characteristic polynomial f₂, (4,) complex128.
+    pub f2_roots: Py<PyAny>,
+}
+
+impl StabilityReport {
+    pub(crate) fn new(py: Python<'_>, r: &routh::StabilityReport) -> StabilityReport {
+        let roots: Vec<Complex64> = r
+            .f2_roots
+            .iter()
+            .map(|z| Complex64::new(z.re, z.im))
+            .collect();
+        StabilityReport {
+            verdict: verdict(r.verdict),
+            degree_of_instability: r.degree_of_instability,
+            restricted_hessian_eigenvalues: PyArray1::from_slice(
+                py,
+                &r.restricted_hessian_eigenvalues,
+            )
+            .into_any()
+            .unbind(),
+            f2_roots: PyArray1::from_vec(py, roots).into_any().unbind(),
+        }
+    }
+}
+
+#[pymethods]
+impl StabilityReport {
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let eig = self
+            .restricted_hessian_eigenvalues
+            .bind(py)
+            .repr()
+            .map(|r| r.to_string())
+            .unwrap_or_default();
+        format!(
+            "StabilityReport(verdict='{}', degree_of_instability={}, restricted_hessian_eigenvalues={})",
+            self.verdict, self.degree_of_instability, eig
+        )
+    }
+}
+
+/// One branch of a bifurcation diagram: the parameter `s` (n,), the verticals `gamma` (n, 3),
+/// the `verdicts` (list of n strings) and whether its motions are `isolated`.
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct Branch {
+    /// The parameter along the branch, (n,) float64.
+    pub s: Py<PyAny>,
+    /// The vertical γ at each point, (n, 3) float64.
+    pub gamma: Py<PyAny>,
+    /// The verdict at each point.
+    pub verdicts: Vec<&'static str>,
+    /// False on a branch of circles of steady motions.
+    pub isolated: bool,
+}
+
+#[pymethods]
+impl Branch {
+    fn __repr__(&self) -> String {
+        format!(
+            "Branch(n={}, isolated={})",
+            self.verdicts.len(),
+            self.isolated
+        )
+    }
+    fn __len__(&self) -> usize {
+        self.verdicts.len()
+    }
+}
+
+/// An event on a branch: `kind` ("fold", "branch_point", "hamiltonian_hopf"), where (`s`,
+/// `gamma`), on which `branch`, and the verdicts `before` and `after`.
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct Event {
+    /// "fold", "branch_point" or "hamiltonian_hopf".
+    pub kind: &'static str,
+    /// The parameter at the event.
+    pub s: f64,
+    /// The vertical at the event, (3,) float64.
+    pub gamma: Py<PyAny>,
+    /// The index of the branch in `diagram.branches`.
+    pub branch: usize,
+    /// The verdict just before the event.
+    pub before: &'static str,
+    /// The verdict just after.
+    pub after: &'static str,
+}
+
+#[pymethods]
+impl Event {
+    fn __repr__(&self) -> String {
+        format!(
+            "Event(kind='{}', s={:.8}, branch={}, before='{}', after='{}')",
+            self.kind, self.s, self.branch, self.before, self.after
+        )
+    }
+}
+
+/// A bifurcation diagram: `branches` and `events`. `plot(ax=None)` draws it with matplotlib.
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct Diagram {
+    /// The branches of steady motions.
+    pub branches: Vec<Py<Branch>>,
+    /// The folds, branch points and Hamiltonian–Hopf points.
+    pub events: Vec<Py<Event>>,
+}
+
+impl Diagram {
+    pub(crate) fn new(py: Python<'_>, d: &routh::BifurcationDiagram) -> PyResult<Diagram> {
+        let mut branches = Vec::with_capacity(d.branches.len());
+        for b in &d.branches {
+            let s: Vec<f64> = b.points.iter().map(|p| p.s).collect();
+            let g: Vec<_> = b.points.iter().map(|p| p.steady.gamma).collect();
+            branches.push(Py::new(
+                py,
+                Branch {
+                    s: PyArray1::from_vec(py, s).into_any().unbind(),
+                    gamma: vecs(py, &g).into_any().unbind(),
+                    verdicts: b.points.iter().map(|p| verdict(p.report.verdict)).collect(),
+                    isolated: b.isolated,
+                },
+            )?);
+        }
+        let mut events = Vec::with_capacity(d.events.len());
+        for e in &d.events {
+            events.push(Py::new(
+                py,
+                Event {
+                    kind: event_kind(e.kind),
+                    s: e.s,
+                    gamma: vec3(py, &e.gamma).into_any().unbind(),
+                    branch: e.branch,
+                    before: verdict(e.before),
+                    after: verdict(e.after),
+                },
+            )?);
+        }
+        Ok(Diagram { branches, events })
+    }
+}
+
+#[pymethods]
+impl Diagram {
+    /// Draw the diagram (s against γ₃; stable solid, unstable dashed, events marked and named).
+    #[pyo3(signature = (ax=None, component=2))]
+    fn plot(slf: &Bound<'_, Self>, ax: Option<Py<PyAny>>, component: usize) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let f = py.import("routh._plot")?.getattr("plot_diagram")?;
+        Ok(f.call1((slf, ax, component))?.unbind())
+    }
+    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        Ok(py
+            .import("routh._plot")?
+            .getattr("svg_of")?
+            .call1((slf,))?
+            .unbind())
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "BifurcationDiagram({} branches, {} events)",
+            self.branches.len(),
+            self.events.len()
+        )
+    }
+}
+
+/// A boundary curve of a stability atlas: `kind` and its `points` ((n, 2) float64 of (x, y)).
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct Boundary {
+    /// "fold", "branch_point" or "hamiltonian_hopf".
+    pub kind: &'static str,
+    /// The points (x, y) of the curve, (n, 2) float64.
+    pub points: Py<PyAny>,
+}
+
+/// A stability atlas over a 2-parameter family: grid `x` (nx,), `y` (ny,), `verdicts` (nx lists
+/// of ny strings or None where no steady motion was followed) and the `boundaries`.
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct Atlas {
+    /// The grid in the first parameter, (nx,) float64.
+    pub x: Py<PyAny>,
+    /// The grid in the second parameter, (ny,) float64.
+    pub y: Py<PyAny>,
+    /// `verdicts[i][j]` at (x[i], y[j]); None where the branch was lost.
+    pub verdicts: Vec<Vec<Option<&'static str>>>,
+    /// The curves where the verdict changes.
+    pub boundaries: Vec<Py<Boundary>>,
+}
+
+impl Atlas {
+    pub(crate) fn new(py: Python<'_>, a: &routh::StabilityAtlas) -> PyResult<Atlas> {
+        let mut boundaries = Vec::new();
+        for b in &a.boundaries {
+            let rows: Vec<Vec<f64>> = b.points.iter().map(|&(x, y)| vec![x, y]).collect();
+            let points = if rows.is_empty() {
+                PyArray2::<f64>::zeros(py, [0, 2], false)
+                    .into_any()
+                    .unbind()
+            } else {
+                PyArray2::from_vec2(py, &rows)?.into_any().unbind()
+            };
+            boundaries.push(Py::new(
+                py,
+                Boundary {
+                    kind: event_kind(b.kind),
+                    points,
+                },
+            )?);
+        }
+        Ok(Atlas {
+            x: PyArray1::from_slice(py, &a.x).into_any().unbind(),
+            y: PyArray1::from_slice(py, &a.y).into_any().unbind(),
+            verdicts: a
+                .verdicts
+                .iter()
+                .map(|col| col.iter().map(|v| v.map(verdict)).collect())
+                .collect(),
+            boundaries,
+        })
+    }
+}
+
+#[pymethods]
+impl Atlas {
+    /// Draw the atlas (verdict regions coloured, boundary curves drawn and named).
+    #[pyo3(signature = (ax=None))]
+    fn plot(slf: &Bound<'_, Self>, ax: Option<Py<PyAny>>) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let f = py.import("routh._plot")?.getattr("plot_atlas")?;
+        Ok(f.call1((slf, ax))?.unbind())
+    }
+    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        Ok(py
+            .import("routh._plot")?
+            .getattr("svg_of")?
+            .call1((slf,))?
+            .unbind())
+    }
+}
+
+/// A solution of the full equations (1)–(2): `t` (n,), `omega` (n, 3), `gamma` (n, 3), and the
+/// recorded integrals `energy` (n,), `p_psi` (n,).
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct Trajectory {
+    /// Times, (n,).
+    pub t: Py<PyAny>,
+    /// Angular velocity in the body frame, (n, 3).
+    pub omega: Py<PyAny>,
+    /// The vertical in the body frame, (n, 3).
+    pub gamma: Py<PyAny>,
+    /// The energy (3) at each time, (n,).
+    pub energy: Py<PyAny>,
+    /// The cyclic momentum (9) at each time, (n,).
+    pub p_psi: Py<PyAny>,
+}
+
+impl Trajectory {
+    pub(crate) fn new(py: Python<'_>, t: &routh::Trajectory) -> Trajectory {
+        Trajectory {
+            t: PyArray1::from_slice(py, &t.t).into_any().unbind(),
+            omega: vecs(py, &t.omega).into_any().unbind(),
+            gamma: vecs(py, &t.gamma).into_any().unbind(),
+            energy: PyArray1::from_slice(py, &t.energy).into_any().unbind(),
+            p_psi: PyArray1::from_slice(py, &t.p_psi).into_any().unbind(),
+        }
+    }
+}
+
+/// A solution of the reduced equations (39): `t`, `big_omega` (n, 3), `gamma` (n, 3), the
+/// reconstructed `psi`, `psi_dot`, `omega` (n, 3), and `energy`, `p_psi`.
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct ReducedTrajectory {
+    /// Times, (n,).
+    pub t: Py<PyAny>,
+    /// The reduced velocity Ω, (n, 3).
+    pub big_omega: Py<PyAny>,
+    /// The vertical, (n, 3).
+    pub gamma: Py<PyAny>,
+    /// The cyclic angle ψ, (n,).
+    pub psi: Py<PyAny>,
+    /// ψ̇ (38), (n,).
+    pub psi_dot: Py<PyAny>,
+    /// The angular velocity ω = Ω + ψ̇γ, (n, 3).
+    pub omega: Py<PyAny>,
+    /// The energy, (n,).
+    pub energy: Py<PyAny>,
+    /// The cyclic momentum, (n,).
+    pub p_psi: Py<PyAny>,
+}
+
+impl ReducedTrajectory {
+    pub(crate) fn new(py: Python<'_>, t: &routh::ReducedTrajectory) -> ReducedTrajectory {
+        ReducedTrajectory {
+            t: PyArray1::from_slice(py, &t.t).into_any().unbind(),
+            big_omega: vecs(py, &t.big_omega).into_any().unbind(),
+            gamma: vecs(py, &t.gamma).into_any().unbind(),
+            psi: PyArray1::from_slice(py, &t.psi).into_any().unbind(),
+            psi_dot: PyArray1::from_slice(py, &t.psi_dot).into_any().unbind(),
+            omega: vecs(py, &t.omega).into_any().unbind(),
+            energy: PyArray1::from_slice(py, &t.energy).into_any().unbind(),
+            p_psi: PyArray1::from_slice(py, &t.p_psi).into_any().unbind(),
+        }
+    }
+}
+
+/// A certified enumeration of the steady motions at one momentum: `complete` (every steady
+/// motion is in `motions`, proven by interval arithmetic), `motions`, `p_psi`, `boxes`.
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct Certificate {
+    /// Whether the enumeration is proven complete.
+    pub complete: bool,
+    /// The certified steady motions.
+    pub motions: Vec<Py<SteadyMotion>>,
+    /// The momentum.
+    pub p_psi: f64,
+    /// How many boxes the search examined.
+    pub boxes: usize,
+    /// How many regions were left undecided.
+    pub undecided: usize,
+}

@@ -1,0 +1,88 @@
+"""numpy shapes and dtypes, reprs, figures, and the notebook-style example end to end."""
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import routh
+from conftest import ROOT
+
+
+def test_report_shapes(top):
+    m = top.steady_motions(2.2)[0]
+    assert m.gamma.shape == (3,) and m.gamma.dtype == np.float64
+    r = top.classify(m)
+    assert r.restricted_hessian_eigenvalues.shape == (2,)
+    assert r.restricted_hessian_eigenvalues.dtype == np.float64
+    assert r.f2_roots.shape == (4,) and r.f2_roots.dtype == np.complex128
+    assert isinstance(r.degree_of_instability, int)
+    assert "StabilityReport" in repr(r) and "SteadyMotion" in repr(m)
+
+
+def test_gil_released_during_work(top):
+    # A Python thread can only run while the diagram is computed if the GIL is released:
+    # some of its timestamps fall strictly inside the call.
+    import threading
+    import time
+
+    ticks = []
+    stop = threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            stop.wait(0.001)
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    time.sleep(0.01)
+    t0 = time.perf_counter()
+    top.bifurcation_diagram((0.0, 5.0))
+    t1 = time.perf_counter()
+    stop.set()
+    t.join()
+    assert any(t0 < x < t1 for x in ticks), (t1 - t0, len(ticks))
+
+
+def test_plots_and_svg(top):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    d = top.bifurcation_diagram((0.0, 5.0))
+    ax = d.plot()
+    styles = {l.get_linestyle() for l in ax.get_lines()}
+    assert "--" in styles and "-" in styles  # unstable dashed, stable solid
+    names = {t.get_text() for t in ax.texts}
+    assert {"Hamiltonian–Hopf", "branch point"} <= names
+    svg = d._repr_svg_()
+    assert svg.lstrip().startswith("<?xml") and "<svg" in svg
+    base = top
+    atlas = routh.stability_atlas(lambda mgl, p: (base.with_params(mgl=mgl), p), [0, 0, 1],
+                                  (0.5, 2.0), (0.5, 5.0), nx=6, ny=6)
+    assert atlas.plot() is not None
+    assert "<svg" in atlas._repr_svg_()
+
+
+def test_example_script_end_to_end(tmp_path):
+    pytest.importorskip("matplotlib")
+    env = dict(os.environ, MPLBACKEND="Agg", ROUTH_FIGURE=str(tmp_path / "d.png"))
+    r = subprocess.run([sys.executable, str(ROOT / "examples" / "python" / "heavy_top.py")],
+                       capture_output=True, text=True, timeout=300, env=env)
+    assert r.returncode == 0, r.stderr
+    assert "hamiltonian_hopf at p_psi = 2.0000" in r.stdout
+    assert "branch_point at p_psi = 2.5000" in r.stdout
+    assert "gyroscopically_stabilized" in r.stdout
+    assert (tmp_path / "d.png").stat().st_size > 1000
+
+
+def test_progress_flag_and_packaged_stubs(top):
+    import pathlib
+
+    d = routh.bifurcation_diagram(lambda s: (top, s), (0.0, 5.0), progress=True)
+    assert len(d.events) == 2
+    pkg = pathlib.Path(routh.__file__).parent
+    assert (pkg / "py.typed").exists() and (pkg / "__init__.pyi").exists()
