@@ -67,9 +67,9 @@ pub mod prelude {
         bifurcation_diagram, classified_steady_motions, classify, classify_at, continue_branch,
         nonlinear_stability, simulate_full, simulate_reduced, stability_atlas, steady_motions,
         steady_motions_certified, AtlasOptions, BifurcationDiagram, Classified,
-        ContinuationOptions, Lagrangian, Matrix3, NonlinearOptions, NonlinearReport,
-        NonlinearVerdict, RouthError, Routhian, SimOptions, Stability, StabilityReport,
-        Model, ModelError, Param, SteadyMotion, Vector3,
+        ContinuationOptions, Lagrangian, Matrix3, Model, ModelError, NonlinearOptions,
+        NonlinearReport, NonlinearVerdict, Param, RouthError, Routhian, SimOptions, Stability,
+        StabilityReport, SteadyMotion, Vector3,
     };
 }
 

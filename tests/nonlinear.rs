@@ -59,7 +59,11 @@ fn the_tape_gives_the_hand_written_normal_form() {
             assert_eq!(rep.krein_signs, hand.krein_signs);
             assert_eq!(rep.resonance, hand.resonance);
             for k in 0..2 {
-                assert!(close(rep.frequencies[k], hand.frequencies[k], hand.frequencies[0]));
+                assert!(close(
+                    rep.frequencies[k],
+                    hand.frequencies[k],
+                    hand.frequencies[0]
+                ));
             }
             let scale = hand.normal_form.iter().fold(0.0f64, |m, c| m.max(c.abs()));
             for k in 0..3 {

@@ -122,11 +122,8 @@ pub fn verdict(s: Stability) -> &'static str {
     }
 }
 
-/// The event's name: "fold", "branch_point", "hamiltonian_hopf".
+/// The event's name: "fold", "branch_point", "hamiltonian_hopf" (and "arnold_degenerate",
+/// "resonance"), the same words as the library's CSV export.
 pub fn event_kind(k: routh::EventKind) -> &'static str {
-    match k {
-        routh::EventKind::Fold => "fold",
-        routh::EventKind::BranchPoint => "branch_point",
-        routh::EventKind::HamiltonianHopf => "hamiltonian_hopf",
-    }
+    routh::export::event_name(k)
 }

@@ -227,9 +227,9 @@ impl Model {
             })
             .collect();
         let put = |s: &str| {
-            symbols
-                .iter()
-                .fold(s.to_string(), |acc, (from, to)| acc.replace(from.as_str(), to))
+            symbols.iter().fold(s.to_string(), |acc, (from, to)| {
+                acc.replace(from.as_str(), to)
+            })
         };
         let t = &self.compiled.latex;
         routh_core::LatexFormulas {

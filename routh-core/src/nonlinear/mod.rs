@@ -221,9 +221,10 @@ pub fn nonlinear_stability<M: Routhian>(
     let Some(tape) = model.routh_tape() else {
         return Err(RouthError::InvalidModel {
             what: "Routh function tape",
-            reason: "the nonlinear test needs a derived or run-time model (R as an expression \
+            reason:
+                "the nonlinear test needs a derived or run-time model (R as an expression \
                      tape); for a hand-written model use nonlinear_stability_with and a RouthianJet"
-                .into(),
+                    .into(),
         });
     };
     // R at jets from the model's own expression DAG (the tape the derive or the run-time model
