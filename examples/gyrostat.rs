@@ -30,6 +30,7 @@ use routh::{
 pub struct Gyrostat {
     /// Inertia tensor `I` about the fixed point (symmetric: only its upper triangle is read).
     #[lagrangian(symmetric)]
+    #[lagrangian(latex = "I")]
     pub inertia: Matrix3<f64>,
     /// Constant part `K` of `a(γ)` (the rotor's momentum).
     pub rotor: Vector3<f64>,
