@@ -12,10 +12,11 @@ use std::error::Error;
 use std::time::Instant;
 
 use common::plot::{verdict_series, Figure, Series, Style};
-use common::{linspace, lpad, rpad, stability_threshold, verdict_label};
+use common::{linspace, lpad, rpad, verdict_label};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::fluid::{kirchhoff_lagrangian, FluidError, FluidParameters};
 use routh::plot::{self, Overlay, PlotOptions};
+use routh::stability_threshold;
 use routh::{
     classified_steady_motions, classify_at, simulate_full, stability_atlas, AtlasOptions,
     Lagrangian, Matrix3, SimOptions, Vector3,

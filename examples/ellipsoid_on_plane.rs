@@ -74,9 +74,10 @@ use std::error::Error;
 use std::time::Instant;
 
 use common::plot::{verdict_series, Figure};
-use common::{linspace, num, stability_threshold, verdict_label};
+use common::{linspace, num, verdict_label};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use routh::plot::{self, Overlay, PlotOptions};
+use routh::stability_threshold;
 use routh::{
     classified_steady_motions, classify_at, stability_atlas, AtlasOptions, Lagrangian, Matrix3,
     Routhian, Stability, Vector3,

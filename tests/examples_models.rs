@@ -160,15 +160,6 @@ fn fluid_example_declares_the_model_that_examples_facts_checks() {
 }
 
 #[test]
-fn examples_stability_threshold_is_the_one_examples_facts_checks() {
-    let ex = functions(&parse_file("examples/common/mod.rs"));
-    let derived = functions(&parse_file("test-models/derived/src/analysis.rs"));
-    let f = "stability_threshold";
-    assert!(ex.contains_key(f), "examples/common/mod.rs has no {f}");
-    assert_eq!(ex.get(f), derived.get(f), "{f} differs");
-}
-
-#[test]
 fn examples_do_not_use_derived_models() {
     // heavy_top.rs is left to its own rewrite; op_counts.rs measures the bench models' expansion
     // and takes their source text from derived-models on purpose.

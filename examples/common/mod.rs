@@ -9,7 +9,7 @@ pub mod plot;
 
 use std::path::PathBuf;
 
-use routh::{Classified, RouthError, Routhian, Stability, Vector3};
+use routh::{Classified, Stability, Vector3};
 
 /// A number with at most `digits` decimals, trailing zeros removed (`0.5`, `9.81`, `-2`).
 pub fn num(x: f64, digits: usize) -> String {
@@ -132,30 +132,4 @@ pub fn print_steady_table(rows: &[Classified], axis: &Vector3<f64>, axis_name: &
             if r.motion.isolated { "" } else { " (one of a circle)" }
         );
     }
-}
-
-/// The `p_ψ` in `[lo, hi]` where the steady motion through the critical point `gamma` (at `lo`)
-/// stops being `Unstable`, by continuation of its branch over `p_ψ`
-/// ([`routh::continue_branch`]): the first event on the branch, within `1e−9` of `gamma`, whose
-/// verdict goes from `Unstable` to a stable one. Its location is solved from the event's defining
-/// equation (a zero eigenvalue of the restricted second variation, or a zero discriminant of
-/// `f₂`), not bisected.
-pub fn stability_threshold<M: Routhian + Clone>(
-    model: &M,
-    gamma: Vector3<f64>,
-    lo: f64,
-    hi: f64,
-) -> Result<Option<f64>, RouthError> {
-    let d = routh::continue_branch(
-        |p| (model.clone(), p),
-        gamma,
-        lo,
-        (lo, hi),
-        &routh::ContinuationOptions::default(),
-    )?;
-    Ok(d.events
-        .iter()
-        .filter(|e| (e.gamma - gamma).norm() < 1e-9)
-        .find(|e| e.before == Stability::Unstable && e.after != Stability::Unstable)
-        .map(|e| e.s))
 }

@@ -2,15 +2,17 @@
 //!
 //! [`classified_steady_motions`] runs the global search of [`steady_motions`] (33) and
 //! [`classify`] (62)–(64) on each motion found; [`classify_at`] classifies the steady motion at a
-//! known critical point (a spin about a principal axis, say) without any search.
+//! known critical point (a spin about a principal axis, say) without any search;
+//! [`stability_threshold`] the momentum where such a motion becomes stable.
 
 use std::fmt;
 
 use nalgebra::Vector3;
 
 use crate::error::RouthError;
+use crate::families::{continue_branch, ContinuationOptions};
 use crate::model::Routhian;
-use crate::stability::{classify, StabilityReport};
+use crate::stability::{classify, Stability, StabilityReport};
 use crate::steady::{steady_motions, SteadyMotion};
 
 /// A steady motion with its stability report.
@@ -84,4 +86,41 @@ pub fn classify_at<M: Routhian>(
 ) -> Result<StabilityReport, RouthError> {
     let motion = SteadyMotion::at(model, gamma, p_psi, true)?;
     classify(model, &motion)
+}
+
+/// The `p_ψ` in `[lo, hi]` where the steady motion through the critical point `gamma` (at `lo`)
+/// stops being `Unstable`, by continuation of its branch over `p_ψ` ([`continue_branch`]): the
+/// first event on the branch, within `1e−9` of `gamma`, whose verdict goes from `Unstable` to a
+/// stable one. Its location is solved from the event's defining equation (a zero eigenvalue of
+/// the restricted second variation, or a zero discriminant of `f₂`), not bisected. `None` when
+/// the motion does not become stable in the range.
+///
+/// ```
+/// # use routh_core::*;
+/// # use test_models::Gyrostat;
+/// // The sleeping Lagrange top becomes gyroscopically stable at Maievskii's bound
+/// // p² = 4A₁mgl: p = 2 for A₁ = 1, mgl = 1.
+/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+/// let p = stability_threshold(&top, Vector3::z(), 0.5, 4.0)?.unwrap();
+/// assert!((p - 2.0).abs() < 1e-9);
+/// # Ok::<(), RouthError>(())
+/// ```
+pub fn stability_threshold<M: Routhian + Clone>(
+    model: &M,
+    gamma: Vector3<f64>,
+    lo: f64,
+    hi: f64,
+) -> Result<Option<f64>, RouthError> {
+    let d = continue_branch(
+        |p| (model.clone(), p),
+        gamma,
+        lo,
+        (lo, hi),
+        &ContinuationOptions::default(),
+    )?;
+    Ok(d.events
+        .iter()
+        .filter(|e| (e.gamma - gamma).norm() < 1e-9)
+        .find(|e| e.before == Stability::Unstable && e.after != Stability::Unstable)
+        .map(|e| e.s))
 }

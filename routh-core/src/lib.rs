@@ -31,7 +31,7 @@ pub mod steady;
 pub mod validate;
 
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
-pub use classified::{classified_steady_motions, classify_at, Classified};
+pub use classified::{classified_steady_motions, classify_at, stability_threshold, Classified};
 pub use error::RouthError;
 pub use families::{
     bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,

@@ -1,6 +1,8 @@
 //! The analyses the examples run and print, shared with `tests/examples_facts.rs`.
 
-pub use routh::{classified_steady_motions, classify_at as report_at, Classified};
+pub use routh::{
+    classified_steady_motions, classify_at as report_at, stability_threshold, Classified,
+};
 use routh::{RouthError, Routhian, Stability, Vector3};
 
 /// The verdict of [`report_at`].
@@ -52,30 +54,4 @@ pub fn instability_threshold<M: Routhian>(
     bisect(lo, hi, rel_tol, |p| {
         Ok(verdict_at(model, gamma, p)? == Stability::Unstable)
     })
-}
-
-/// The `p_ψ` in `[lo, hi]` where the steady motion through the critical point `gamma` (at `lo`)
-/// stops being `Unstable`, by continuation of its branch over `p_ψ`
-/// ([`routh::continue_branch`]): the first event on the branch, within `1e−9` of `gamma`, whose
-/// verdict goes from `Unstable` to a stable one. Its location is solved from the event's defining
-/// equation (a zero eigenvalue of the restricted second variation, or a zero discriminant of
-/// `f₂`), not bisected.
-pub fn stability_threshold<M: Routhian + Clone>(
-    model: &M,
-    gamma: Vector3<f64>,
-    lo: f64,
-    hi: f64,
-) -> Result<Option<f64>, RouthError> {
-    let d = routh::continue_branch(
-        |p| (model.clone(), p),
-        gamma,
-        lo,
-        (lo, hi),
-        &routh::ContinuationOptions::default(),
-    )?;
-    Ok(d.events
-        .iter()
-        .filter(|e| (e.gamma - gamma).norm() < 1e-9)
-        .find(|e| e.before == Stability::Unstable && e.after != Stability::Unstable)
-        .map(|e| e.s))
 }
