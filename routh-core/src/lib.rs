@@ -24,6 +24,7 @@ mod formulas;
 mod krein;
 mod model;
 pub mod nonlinear;
+mod norm;
 pub mod sim;
 mod sphere;
 pub mod stability;

@@ -2,6 +2,7 @@
 //! second variation (62)–(63), the closed-form 2×2 symmetric eigen-decomposition, the local scale
 //! of the amended potential and a Fibonacci grid of starting points.
 
+use crate::norm::stable_norm;
 use std::borrow::Cow;
 use std::sync::OnceLock;
 
@@ -226,27 +227,6 @@ fn norm2(v: &Vector2<f64>) -> f64 {
     } else {
         stable_norm(v.as_slice())
     }
-}
-
-/// The Euclidean norm of `xs` without overflow or underflow: the plain `√Σx²` when that sum is a
-/// normal number (then the same value as nalgebra's `norm`), otherwise scaled by the largest
-/// magnitude. NaN if an entry is NaN, `+∞` if one is infinite.
-pub(crate) fn stable_norm(xs: &[f64]) -> f64 {
-    let s: f64 = xs.iter().map(|x| x * x).sum();
-    if s.is_normal() {
-        return s.sqrt();
-    }
-    let m = xs.iter().fold(0.0f64, |m, x| {
-        if x.is_nan() || x.abs() > m {
-            x.abs()
-        } else {
-            m
-        }
-    });
-    if m == 0.0 || !m.is_finite() {
-        return m;
-    }
-    m * xs.iter().map(|x| (x / m).powi(2)).sum::<f64>().sqrt()
 }
 
 /// The restricted second variation `Pᵀ(μE − ∂²R/∂γ²)P` (62)–(63), symmetrised.

@@ -2,6 +2,7 @@
 //! [`simulate_reduced`](super::simulate_reduced): the chosen [`Method`], the error weights of
 //! [`SimOptions`] and the [`Output`] points.
 
+use crate::norm::stable_norm;
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 use super::{attitude, dop853, lie, Method, Output, SimOptions, SimStats};
@@ -54,7 +55,10 @@ where
             // Per-3-vector weights (see `SimOptions`): y[0..3] is the angular velocity, y[3..6]
             // γ, any further component (ψ) is weighted on its own.
             let weights = move |y0: &SVector<f64, N>, y1: &SVector<f64, N>| {
-                let len = |at| stable_norm(&split3(y0, at)).max(stable_norm(&split3(y1, at)));
+                let len = |at| {
+                    stable_norm(split3(y0, at).as_slice())
+                        .max(stable_norm(split3(y1, at).as_slice()))
+                };
                 let (w_rate, w_gamma) = (rate_atol + rtol * len(0), atol + rtol * len(3));
                 SVector::<f64, N>::from_fn(|i, _| match i {
                     0..=2 => w_rate,
@@ -165,22 +169,6 @@ where
             Ok(stats)
         }
     }
-}
-
-/// `|v|` without overflow or underflow, as `validate::stable_norm`, inlined here because the
-/// weights are computed at every step: `√(v·v)` where `v·v` is safely in range (equal to the
-/// scaled form up to round-off), else `m·|v/m|` with `m = max|vᵢ|`.
-#[inline]
-fn stable_norm(v: &Vector3<f64>) -> f64 {
-    let sq = v.norm_squared();
-    if (1e-290..1e290).contains(&sq) {
-        return sq.sqrt();
-    }
-    let m = v.amax();
-    if m == 0.0 || !m.is_finite() {
-        return m;
-    }
-    m * (v / m).norm()
 }
 
 #[inline]

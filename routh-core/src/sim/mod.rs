@@ -31,7 +31,8 @@ use field::{FullField, ReducedField};
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
-use crate::validate::{check_finite, stable_norm, unit_gamma};
+use crate::norm::stable_norm;
+use crate::validate::{check_finite, unit_gamma};
 use crate::{Lagrangian, RouthError, Routhian};
 
 /// The integration method.
@@ -500,7 +501,7 @@ pub fn simulate_full<M: Lagrangian>(
     };
     if !finite_at(&omega0)? {
         return Err(if finite_at(&Vector3::zeros())? {
-            too_large("omega0", stable_norm(&omega0), "(8)")
+            too_large("omega0", stable_norm(omega0.as_slice()), "(8)")
         } else {
             RouthError::NonFiniteModel {
                 what: "full vector field (8) at omega = 0",
@@ -698,7 +699,7 @@ pub fn simulate_reduced<M: Routhian>(
         } else if !finite_at(&zero, p_psi)? {
             too_large("p_psi", p_psi.abs(), "(13)")
         } else {
-            too_large("big_omega0", stable_norm(&big_omega0), "(13)")
+            too_large("big_omega0", stable_norm(big_omega0.as_slice()), "(13)")
         });
     }
     let mut y0 = SVector::<f64, 7>::zeros();

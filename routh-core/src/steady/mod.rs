@@ -15,7 +15,8 @@ use nalgebra::Vector3;
 
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::validate::{check_finite, check_kinetic, check_model_finite, stable_norm, unit_gamma};
+use crate::norm::stable_norm;
+use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
 
 /// One steady motion (31)–(34): the body at rest in the frame that turns uniformly about the
 /// vertical at the rate `psi_dot`, with body-frame vertical `gamma`.
@@ -412,7 +413,7 @@ pub fn steady_motion_near<M: Routhian>(
 ) -> Result<SteadyMotion, RouthError> {
     check_finite("p_psi", &[p_psi])?;
     check_finite("gamma_guess", gamma_guess.as_slice())?;
-    let norm = stable_norm(&gamma_guess);
+    let norm = stable_norm(gamma_guess.as_slice());
     if norm == 0.0 {
         return Err(RouthError::NonUnitGamma {
             what: "gamma_guess",
