@@ -29,6 +29,7 @@ pub mod sim;
 mod sphere;
 pub mod stability;
 pub mod steady;
+#[doc(hidden)]
 pub mod validate;
 
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
@@ -40,13 +41,17 @@ pub use families::{
     EventKind, StabilityAtlas, StopReason,
 };
 pub use formulas::LatexFormulas;
-pub use model::{
-    DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
-    RouthBundle, Routhian,
-};
+pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
+/// What the generated code fills in for the integrators (the equations (8) and (13) with their
+/// structure); users do not name them.
+#[doc(hidden)]
+pub use model::{FullEquations, RankOneInertia, ReducedEquations};
+/// [`nonlinear_stability`] with a jet of the Routh function given by the caller (the run-time
+/// models pass their own); users call [`nonlinear_stability`].
+#[doc(hidden)]
+pub use nonlinear::nonlinear_stability_with;
 pub use nonlinear::{
-    nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport,
-    NonlinearVerdict, Resonance,
+    nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};

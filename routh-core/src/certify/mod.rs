@@ -31,11 +31,16 @@
 mod interval;
 mod tape;
 
+/// The interval arithmetic and the tape's scalar interface behind the certificate: public for
+/// the tests that check them against exact arithmetic, not an API of routh.
+#[doc(hidden)]
 pub use interval::{Interval, LIBM_ULPS};
+#[doc(hidden)]
 pub use routh_tape::{Func, GradHess, TapeScalar};
 
 /// `∂R/∂γ` and `∂²R/∂γ²` at `Ω = 0` of a derived model, with the model's parameter values bound:
 /// what [`crate::Routhian::certification_tape`] returns (the typed tape of `routh-tape`).
+#[doc(hidden)]
 pub type RouthTape = routh_tape::CertificationTape;
 
 use crate::error::RouthError;

@@ -26,8 +26,13 @@ use crate::model::Routhian;
 use crate::stability::{classify_with, ClassifyOptions, Stability, StabilityReport};
 use crate::steady::SteadyMotion;
 
-pub use chart::{chart, reduced_hamiltonian, tangent_frame, RouthianJet};
+pub use chart::RouthianJet;
+/// The chart, the reduced Hamiltonian and the truncated power series behind the normal form:
+/// public for the tests that check them by hand, not an API of routh.
+#[doc(hidden)]
+pub use chart::{chart, reduced_hamiltonian, tangent_frame};
 pub use events::{nonlinear_events, NonlinearEvent};
+#[doc(hidden)]
 pub use jet::{monomial_index, monomials, Exponents, Jet, NCOEF, NVARS, ORDER};
 
 /// Tolerances of [`nonlinear_stability`], all relative.
