@@ -8,7 +8,7 @@ use derived_models::{AsymmetricTop, LagrangeTop};
 use routh::certify::{steady_motions_certified, CertifyOptions};
 use routh::families::{bifurcation_diagram_checked, BifurcationDiagram};
 use routh::stability::classify_with_krein;
-use routh::steady::{steady_motions_checked, SearchOptions};
+use routh::steady::{steady_motions_with, SearchOptions};
 use routh::{
     bifurcation_diagram, classify, simulate_full, simulate_reduced, stability_atlas,
     steady_motions, AtlasOptions, ClassifyOptions, ContinuationOptions, GyroscopicSystem,
@@ -72,7 +72,7 @@ fn steady_motions_reports_and_matrices_round_trip() {
     round_trip(&motions);
     round_trip(&SearchOptions::default());
     round_trip(&ClassifyOptions::default());
-    round_trip(&steady_motions_checked(&model, 3.0).unwrap());
+    round_trip(&steady_motions_with(&model, 3.0, &SearchOptions::default()).unwrap());
     for s in &motions {
         let r = classify(&model, s).unwrap();
         round_trip(&r);

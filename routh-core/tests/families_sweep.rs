@@ -10,7 +10,7 @@
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use routh_core::steady::steady_motions_checked;
+use routh_core::steady::{steady_motions_with, SearchOptions};
 use routh_core::{bifurcation_diagram, ContinuationOptions, Matrix3, Vector3};
 use test_models::HeavyTop;
 
@@ -140,7 +140,7 @@ fn sweep(n: usize, seed: u64) -> Vec<String> {
                 continue;
             }
             done += 1;
-            let found = steady_motions_checked(&case.top, s).unwrap();
+            let found = steady_motions_with(&case.top, s, &SearchOptions::default()).unwrap();
             if !found.consistent {
                 // The search itself is unsure here: no reference to compare with.
                 continue;

@@ -409,7 +409,7 @@ fn search_options_and_errors() {
         starts: 20,
         ..SearchOptions::default()
     };
-    let poles = steady_motions_with(&top, 0.1, &few).unwrap();
+    let poles = steady_motions_with(&top, 0.1, &few).unwrap().motions;
     assert!(
         poles.iter().filter(|s| s.isolated).count() == 2,
         "{poles:#?}"

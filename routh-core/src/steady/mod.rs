@@ -328,19 +328,47 @@ impl SearchOptions {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 pub fn steady_motions<M: Routhian>(model: &M, p_psi: f64) -> Result<Vec<SteadyMotion>, RouthError> {
-    steady_motions_with(model, p_psi, &SearchOptions::default())
+    Ok(steady_motions_with(model, p_psi, &SearchOptions::default())?.motions)
 }
 
-/// [`steady_motions`] with explicit [`SearchOptions`].
+/// [`steady_motions`] with explicit [`SearchOptions`], and with the search's self-check: the
+/// motions together with the index sum of the Morse relation and whether it is reconciled with
+/// χ(S²) = 2 ([`SearchResult`]). Use it whenever completeness of the list matters (check
+/// [`SearchResult::consistent`]); [`steady_motions`] returns the same motions without the flag.
 ///
 /// Errors: as [`steady_motions`], plus [`RouthError::InvalidOption`] for zero starts or zero
 /// iterations.
+///
+/// ```
+/// use routh_core::steady::{steady_motions_with, SearchOptions};
+/// use routh_core::Vector3;
+/// # use test_models::Gyrostat;
+/// // A heavy asymmetric top, centre of mass on its third axis: the Morse relation closes.
+/// let top = Gyrostat::heavy_top(Vector3::new(1.0, 2.0, 3.0), Vector3::z(), 1.0, 1.0);
+/// let found = steady_motions_with(&top, 0.5, &SearchOptions::default())?;
+/// assert!(found.consistent);
+/// assert_eq!(found.euler_characteristic, Some(2));
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
 pub fn steady_motions_with<M: Routhian>(
     model: &M,
     p_psi: f64,
     opts: &SearchOptions,
-) -> Result<Vec<SteadyMotion>, RouthError> {
-    Ok(steady_motions_checked_with(model, p_psi, opts)?.motions)
+) -> Result<SearchResult, RouthError> {
+    check_finite("p_psi", &[p_psi])?;
+    opts.validate()?;
+    let outcome = search::global(model, p_psi, opts)?;
+    let mut motions = Vec::with_capacity(outcome.points.len());
+    for (gamma, isolated) in outcome.points {
+        check_kinetic(model, &gamma)?;
+        motions.push(record(model, &gamma, p_psi, isolated)?);
+    }
+    motions.sort_by(|a, b| a.amended_potential.total_cmp(&b.amended_potential));
+    Ok(SearchResult {
+        motions,
+        euler_characteristic: outcome.euler,
+        consistent: outcome.consistent,
+    })
 }
 
 /// The steady motions of [`steady_motions`] with the outcome of its Morse self-check.
@@ -363,40 +391,23 @@ pub struct SearchResult {
     pub consistent: bool,
 }
 
-/// [`steady_motions`] with its self-check: the motions with the index sum of the Morse relation
-/// and whether it is reconciled with χ(S²) = 2 ([`SearchResult`]). Use it whenever completeness of
-/// the list matters; [`steady_motions`] returns the same motions without the flag.
-///
-/// Errors: as [`steady_motions`].
+/// [`steady_motions_with`] at the default options.
+#[deprecated(note = "use `steady_motions_with(model, p_psi, &SearchOptions::default())`")]
 pub fn steady_motions_checked<M: Routhian>(
     model: &M,
     p_psi: f64,
 ) -> Result<SearchResult, RouthError> {
-    steady_motions_checked_with(model, p_psi, &SearchOptions::default())
+    steady_motions_with(model, p_psi, &SearchOptions::default())
 }
 
-/// [`steady_motions_checked`] with explicit [`SearchOptions`].
-///
-/// Errors: as [`steady_motions_with`].
+/// The former name of [`steady_motions_with`].
+#[deprecated(note = "use `steady_motions_with`, which now returns the `SearchResult`")]
 pub fn steady_motions_checked_with<M: Routhian>(
     model: &M,
     p_psi: f64,
     opts: &SearchOptions,
 ) -> Result<SearchResult, RouthError> {
-    check_finite("p_psi", &[p_psi])?;
-    opts.validate()?;
-    let outcome = search::global(model, p_psi, opts)?;
-    let mut motions = Vec::with_capacity(outcome.points.len());
-    for (gamma, isolated) in outcome.points {
-        check_kinetic(model, &gamma)?;
-        motions.push(record(model, &gamma, p_psi, isolated)?);
-    }
-    motions.sort_by(|a, b| a.amended_potential.total_cmp(&b.amended_potential));
-    Ok(SearchResult {
-        motions,
-        euler_characteristic: outcome.euler,
-        consistent: outcome.consistent,
-    })
+    steady_motions_with(model, p_psi, opts)
 }
 
 /// The steady motion nearest (in the sense of Newton's method on the sphere) to the guess

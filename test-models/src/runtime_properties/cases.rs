@@ -185,7 +185,7 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
                 "steady::steady_motions_with",
                 || format!("{model:?}, p_psi = {p:e}, {o:?}"),
                 || steady::steady_motions_with(model, p, &o),
-                |v| v.iter().find_map(steady_defect),
+                |r| r.motions.iter().find_map(steady_defect),
             );
         }
         10 => {
@@ -202,6 +202,8 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
             h.check(
                 "steady::steady_motions_checked",
                 || format!("{model:?}, p_psi = {p:e}"),
+                // The deprecated alias, kept working.
+                #[allow(deprecated)]
                 || steady::steady_motions_checked(model, p),
                 |r| r.motions.iter().find_map(steady_defect),
             );
@@ -301,6 +303,7 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
             h.check(
                 "steady::steady_motions_checked_with",
                 || format!("{model:?}, p_psi = {p:e}, {o:?}"),
+                #[allow(deprecated)]
                 || steady::steady_motions_checked_with(model, p, &o),
                 |r| r.motions.iter().find_map(steady_defect),
             );

@@ -137,6 +137,6 @@ pub(crate) fn regression_cases(h: &mut Harness) {
         "regression: steady_motions_with, probes of a curve",
         || format!("{gyro:?}, {o:?}"),
         || steady::steady_motions_with(&gyro, 1.1865574957550809e4, &o),
-        |v| v.iter().find_map(steady_defect),
+        |r| r.motions.iter().find_map(steady_defect),
     );
 }

@@ -130,7 +130,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// branch (or the search failed to converge).
     fn seed_at(&mut self, s: f64) -> Result<bool, RouthError> {
         let (m, p) = member(self.family, s)?;
-        let motions = match steady_motions_with(&m, p, &self.opts.search) {
+        let motions = match steady_motions_with(&m, p, &self.opts.search).map(|r| r.motions) {
             Ok(v) => v,
             Err(RouthError::NoConvergence { .. }) => return Ok(false),
             Err(e) => return Err(at(s, e)),
@@ -375,6 +375,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             let (m, p) = member(self.family, s)?;
             let found = steady_motions_with(&m, p, &self.opts.search)
                 .map_err(|e| at(s, e))?
+                .motions
                 .len();
             out.push(CountCheck {
                 s,
