@@ -11,11 +11,11 @@ use std::path::Path;
 use std::time::Instant;
 
 use common::{num, verdict_label};
-use routh::families::bifurcation_diagram_checked;
+
 use routh::plot::{self, PlotOptions};
 use routh::{
-    classified_steady_motions, classify_at, continue_branch, ContinuationOptions, DerivedFormulas,
-    EventKind, Lagrangian, Matrix3, Routhian, Vector3,
+    bifurcation_diagram, classified_steady_motions, classify_at, continue_branch,
+    ContinuationOptions, DerivedFormulas, EventKind, Lagrangian, Matrix3, Routhian, Vector3,
 };
 
 /// A heavy gyrostat about a fixed point, `L = ½(Iω, ω) + (a(γ), ω) − U(γ)` (35), with
@@ -230,19 +230,19 @@ fn describe(name: &str, body: &Gyrostat) {
 }
 
 /// Smale's energy–momentum diagram of `body` over `range` of p_ψ: every branch of steady motions
-/// by continuation ([`bifurcation_diagram_checked`]), its events, and the figure.
+/// by continuation ([`bifurcation_diagram`], which checks its counts), its events, and the figure.
 fn energy_momentum(
     body: &Gyrostat,
     title: &str,
     path: &Path,
     range: (f64, f64),
 ) -> Result<(), Box<dyn Error>> {
-    let checked = bifurcation_diagram_checked(
+    let checked = bifurcation_diagram(
         |p| (body.clone(), p),
         range,
         &ContinuationOptions::default(),
     )?;
-    let d = &checked.diagram;
+    let d = &checked;
     println!(
         "\nEnergy–momentum diagram over p_ψ ∈ [{}, {}]: {} branches, {} points; events:",
         range.0,

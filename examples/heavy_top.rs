@@ -17,12 +17,12 @@ use common::plot::{Figure, Series, Style};
 use common::{linspace, verdict_label};
 use derived_models::{classified_steady_motions, report_at};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
-use routh::families::bifurcation_diagram_checked;
+
 use routh::plot::{self, DiagramAxis, Overlay, PlotOptions};
 use routh::sim::attitude::{classify_apex_locus, ApexLocus};
 use routh::{
-    simulate_full, stability_atlas_parallel, AtlasOptions, ContinuationOptions, EventKind,
-    Lagrangian, Routhian, SimOptions, Vector3,
+    bifurcation_diagram, simulate_full, stability_atlas_parallel, AtlasOptions,
+    ContinuationOptions, EventKind, Lagrangian, Routhian, SimOptions, Vector3,
 };
 
 // The body, declared here: `#[derive(Lagrangian)]` differentiates L at build time.
@@ -138,8 +138,8 @@ fn main() -> Result<(), Box<dyn Error>> {
     let formula = top.maievskii_p();
     let range = (0.0, 5.0);
     let checked =
-        bifurcation_diagram_checked(|p| (top.clone(), p), range, &ContinuationOptions::default())?;
-    let diagram = &checked.diagram;
+        bifurcation_diagram(|p| (top.clone(), p), range, &ContinuationOptions::default())?;
+    let diagram = &checked;
     println!(
         "\nBifurcation diagram over p_ψ ∈ [{}, {}] (pseudo-arclength continuation, events located \
          by their defining equations)",

@@ -402,14 +402,14 @@ fn kelvin_energy_momentum_diagram_events_are_zeros_of_the_second_variation() {
         body.mass,
         body.g,
     );
-    let checked = routh::families::bifurcation_diagram_checked(
+    let checked = routh::bifurcation_diagram(
         |p| (body.clone(), p),
         (-6.0, 9.0),
         &routh::ContinuationOptions::default(),
     )
     .unwrap();
     assert!(checked.consistent(), "{:#?}", checked.checks);
-    let d = &checked.diagram;
+    let d = &checked;
     let mut zeros = 0;
     for e in d
         .events

@@ -152,7 +152,7 @@ fn full_diagram() -> BifurcationDiagram {
             ),
             event(EventKind::Fold, 5.0, 2.0, 2, Unstable, SecularlyStable),
         ],
-        stop: None,
+        ..Default::default()
     }
 }
 
@@ -462,7 +462,7 @@ fn errors() {
             isolated: true,
         }],
         events: vec![],
-        stop: None,
+        ..Default::default()
     };
     assert!(matches!(
         energy_momentum_svg(&hollow, &path, &opts),

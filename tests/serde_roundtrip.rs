@@ -6,7 +6,7 @@
 
 use derived_models::{AsymmetricTop, LagrangeTop};
 use routh::certify::{steady_motions_certified, CertifyOptions};
-use routh::families::{bifurcation_diagram_checked, BifurcationDiagram};
+use routh::families::BifurcationDiagram;
 use routh::stability::classify_with_krein;
 use routh::steady::{steady_motions_with, SearchOptions};
 use routh::{
@@ -98,7 +98,7 @@ fn diagrams_and_atlases_round_trip() {
     assert!(!d.branches.is_empty() && !d.events.is_empty());
     round_trip(&d);
     round_trip(&d.events[0].kind);
-    let checked = bifurcation_diagram_checked(
+    let checked = bifurcation_diagram(
         |p| (top.clone(), p),
         (0.5, 6.0),
         &ContinuationOptions::default(),

@@ -10,7 +10,7 @@
 mod common;
 
 use common::HeavyTop;
-use routh_core::families::bifurcation_diagram_checked;
+
 use routh_core::nalgebra::{Matrix4, Vector6};
 use routh_core::stability::classify_with_krein;
 use routh_core::{
@@ -73,13 +73,13 @@ fn lagrange_tops_have_exactly_the_closed_form_events() {
         let maievskii = (4.0 * a1 * mgl).sqrt();
         let secular = (mgl * c * c / (c - a1)).sqrt();
         let hi = (1.4 * secular).max(5.0);
-        let checked = bifurcation_diagram_checked(
+        let checked = bifurcation_diagram(
             |p| (top.clone(), p),
             (0.0, hi),
             &ContinuationOptions::default(),
         )
         .unwrap();
-        let d = &checked.diagram;
+        let d = &checked;
         let what = format!("A₁ = {a1}, C = {c}, mgl = {mgl}");
         let hh = events(d, EventKind::HamiltonianHopf);
         assert_eq!(hh.len(), 1, "{what}: {:#?}", d.events);
@@ -138,13 +138,13 @@ fn asymmetric_top_branch_points_and_fold() {
     // K = diag(p²(C − A)/C² − mgl, p²(C − B)/C² − mgl), zero at p² = mglC²/(C − A), mglC²/(C − B).
     let (a, b, c, mgl) = (1.0, 1.2, 1.5, 1.0);
     let top = asymmetric(a, b, c, mgl);
-    let checked = bifurcation_diagram_checked(
+    let checked = bifurcation_diagram(
         |p| (top.clone(), p),
         (0.0, 4.0),
         &ContinuationOptions::default(),
     )
     .unwrap();
-    let d = &checked.diagram;
+    let d = &checked;
     let bp = events(d, EventKind::BranchPoint);
     assert_eq!(bp.len(), 2, "{:#?}", d.events);
     assert_located(bp[0], (mgl * c * c / (c - a)).sqrt(), "first branch point");

@@ -305,7 +305,7 @@ fn label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
 /// let diagram = BifurcationDiagram {
 ///     branches: vec![Branch { points: (0..=40).map(|i| point(0.1 * i as f64)).collect(), isolated: true }],
 ///     events: vec![],
-///     stop: None,
+///     ..Default::default()
 /// };
 /// let path = std::env::temp_dir().join("routh-doc-bifurcation.svg");
 /// let opts = PlotOptions { x_label: "p_ψ".into(), ..PlotOptions::default() };
@@ -367,7 +367,7 @@ pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
 /// let diagram = BifurcationDiagram {
 ///     branches: vec![Branch { points: (0..=20).map(|i| point(0.2 * i as f64)).collect(), isolated: true }],
 ///     events: vec![],
-///     stop: None,
+///     ..Default::default()
 /// };
 /// let path = std::env::temp_dir().join("routh-doc-energy-momentum.svg");
 /// energy_momentum_svg(&diagram, &path, &PlotOptions::default())?;

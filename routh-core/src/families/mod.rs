@@ -38,9 +38,9 @@ use crate::stability::{ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{SearchOptions, SteadyMotion};
 
 pub use atlas::{stability_atlas, stability_atlas_parallel};
-pub use diagram::{
-    bifurcation_diagram, bifurcation_diagram_checked, continue_branch, CheckedDiagram, CountCheck,
-};
+#[allow(deprecated)]
+pub use diagram::bifurcation_diagram_checked;
+pub use diagram::{bifurcation_diagram, continue_branch, CheckedDiagram, CountCheck};
 
 /// Options of [`bifurcation_diagram`] and [`continue_branch`].
 ///
@@ -139,9 +139,29 @@ pub struct BifurcationDiagram {
     /// `None` when the diagram is complete; otherwise why it stopped early (a budget of
     /// [`ContinuationOptions`] ran out): the branches and events are those computed so far.
     pub stop: Option<StopReason>,
+    /// The diagram's self-check: between consecutive events, the number of steady motions on the
+    /// branches against a global search ([`CountCheck`]; empty when
+    /// [`ContinuationOptions::verify_counts`] is off). See [`BifurcationDiagram::consistent`].
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub checks: Vec<CountCheck>,
 }
 
 impl BifurcationDiagram {
+    /// Whether every count check agreed (`true` when none was made).
+    ///
+    /// ```
+    /// # use routh_core::*;
+    /// # use test_models::Gyrostat;
+    /// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+    /// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+    /// assert!(d.consistent());
+    /// assert_eq!(d.checks.len(), d.events.len() + 1);
+    /// # Ok::<(), routh_core::RouthError>(())
+    /// ```
+    pub fn consistent(&self) -> bool {
+        self.checks.iter().all(|c| c.on_branches == c.searched)
+    }
+
     /// The number of steady motions at `s` according to the branches: the number of segments of
     /// the branches' polylines that cross `s` (a circle of steady motions counts once, as it is
     /// one point of its branch).

@@ -294,6 +294,8 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
             h.check(
                 "families::bifurcation_diagram_checked",
                 || format!("{model:?}, p_psi = {p:e}, {r:?}, {o:?}"),
+                // The deprecated alias, kept working.
+                #[allow(deprecated)]
                 || families::bifurcation_diagram_checked(|s| (model.scaled(s), p), r, &o),
                 |c| diagram_defect(&c.diagram),
             );

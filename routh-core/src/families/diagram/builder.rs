@@ -459,6 +459,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 .collect(),
             events: self.events,
             stop: self.stop,
+            checks: Vec::new(),
         }
     }
 }

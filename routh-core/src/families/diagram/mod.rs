@@ -16,16 +16,15 @@ use crate::steady::steady_motion_near;
 use crate::validate::check_finite;
 use builder::{show, Builder, NotStarted};
 
-/// One comparison of [`bifurcation_diagram_checked`]: the number of steady motions that the
+/// One comparison of [`BifurcationDiagram::checks`]: the number of steady motions that the
 /// branches give at `s` against the number that [`steady_motions`](crate::steady_motions) finds.
 ///
 /// ```
 /// # use routh_core::*;
 /// # use test_models::Gyrostat;
 /// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
-/// let c = families::bifurcation_diagram_checked(
-///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
-/// let first: &families::CountCheck = &c.checks[0];
+/// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
+/// let first: &families::CountCheck = &d.checks[0];
 /// assert_eq!(first.on_branches, first.searched); // the hanging and the sleeping top
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
@@ -40,18 +39,8 @@ pub struct CountCheck {
     pub searched: usize,
 }
 
-/// A diagram with the count checks made while building it.
-///
-/// ```
-/// # use routh_core::*;
-/// # use test_models::Gyrostat;
-/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
-/// let c: families::CheckedDiagram = families::bifurcation_diagram_checked(
-///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
-/// assert!(c.consistent());
-/// assert_eq!(c.checks.len(), c.diagram.events.len() + 1);
-/// # Ok::<(), routh_core::RouthError>(())
-/// ```
+/// A diagram with the count checks made while building it: what the deprecated
+/// [`bifurcation_diagram_checked`] returns (the checks are now [`BifurcationDiagram::checks`]).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CheckedDiagram {
@@ -79,7 +68,7 @@ impl CheckedDiagram {
 /// `isolated: false`). Events are located by solving their defining equation to
 /// `|Δs| ≤ event_tol·max(1, |s|)`. Between consecutive events the number of steady motions on the
 /// branches is compared with a global search, and missing branches are seeded there
-/// ([`bifurcation_diagram_checked`] returns the comparisons).
+/// ([`BifurcationDiagram::checks`] holds the comparisons).
 ///
 /// Seed values that fall on an event (a branch point at a round parameter value, as `p = 2` of
 /// the Kovalevskaya top) are moved off it, never fatal; points of a branch next to an event are
@@ -123,30 +112,6 @@ pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
     range: (f64, f64),
     opts: &ContinuationOptions,
 ) -> Result<BifurcationDiagram, RouthError> {
-    bifurcation_diagram_checked(family, range, opts).map(|c| c.diagram)
-}
-
-/// [`bifurcation_diagram`] with the count checks it made.
-///
-/// Errors: as [`bifurcation_diagram`].
-///
-/// ```
-/// # use routh_core::*;
-/// # use test_models::Gyrostat;
-/// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
-/// let c = families::bifurcation_diagram_checked(
-///     |p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
-/// for check in &c.checks {
-///     println!("s = {}: {} on branches, {} searched", check.s, check.on_branches, check.searched);
-/// }
-/// assert!(c.consistent());
-/// # Ok::<(), routh_core::RouthError>(())
-/// ```
-pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
-    family: F,
-    range: (f64, f64),
-    opts: &ContinuationOptions,
-) -> Result<CheckedDiagram, RouthError> {
     validate(range, opts)?;
     let mut b = Builder::new(&family, range, opts);
     let n = opts.seeds.max(2);
@@ -173,9 +138,27 @@ pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
             b.switch_all()?;
         }
     }
+    let mut diagram = b.finish();
+    diagram.checks = checks;
+    Ok(diagram)
+}
+
+/// The former form of [`bifurcation_diagram`] with its count checks, which are now
+/// [`BifurcationDiagram::checks`].
+///
+/// Errors: as [`bifurcation_diagram`].
+#[deprecated(
+    note = "use `bifurcation_diagram`: its result carries the checks (`checks`, `consistent()`)"
+)]
+pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    family: F,
+    range: (f64, f64),
+    opts: &ContinuationOptions,
+) -> Result<CheckedDiagram, RouthError> {
+    let diagram = bifurcation_diagram(family, range, opts)?;
     Ok(CheckedDiagram {
-        diagram: b.finish(),
-        checks,
+        checks: diagram.checks.clone(),
+        diagram,
     })
 }
 
