@@ -8,7 +8,7 @@ use routh::plot::{
     PlotOptions,
 };
 use routh::{
-    BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, Complex, EventKind,
+    BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchSample, Complex, EventKind,
     Stability, StabilityAtlas, StabilityReport, SteadyMotion, Vector3,
 };
 
@@ -54,10 +54,10 @@ fn strokes(svg: &str, color: &str, width: u32) -> usize {
         .count()
 }
 
-fn point(s: f64, p_psi: f64, tilt: f64, verdict: Stability, isolated: bool) -> BranchPoint {
+fn point(s: f64, p_psi: f64, tilt: f64, verdict: Stability, isolated: bool) -> BranchSample {
     let gamma = Vector3::new(tilt.sin(), 0.0, tilt.cos());
     let energy = 1.0 + 0.5 * p_psi * p_psi / (1.0 + tilt.sin().powi(2)) + gamma.z;
-    BranchPoint {
+    BranchSample {
         s,
         steady: SteadyMotion {
             p_psi,
@@ -546,4 +546,13 @@ fn overlays_are_drawn_and_named() {
     let path = out("overlay_far.svg");
     routh::plot::stability_atlas_svg(&all_verdicts_atlas(), &path, &far).unwrap();
     assert!(!has_text(&read_svg(&path), "far away"));
+}
+
+/// The sample type's former name still names the same type (code written against it compiles).
+#[test]
+#[allow(deprecated)]
+fn branch_point_is_the_deprecated_name_of_branch_sample() {
+    let old: routh::BranchPoint = point(1.0, 1.0, 0.0, Stability::SecularlyStable, true);
+    let new: BranchSample = old.clone();
+    assert_eq!(old, new);
 }

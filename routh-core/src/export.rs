@@ -235,7 +235,7 @@ fn attitude_fields(tb: &mut Table, q: &nalgebra::UnitQuaternion<f64>, e: &[f64; 
 }
 
 impl BifurcationDiagram {
-    /// The branches' samples as CSV text, one row per [`BranchPoint`](crate::BranchPoint)
+    /// The branches' samples as CSV text, one row per [`BranchSample`](crate::BranchPoint)
     /// (columns in the [module documentation](crate::export)).
     pub fn to_csv(&self) -> String {
         let mut tb = Table::new(&[

@@ -35,9 +35,11 @@ pub mod validate;
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
 pub use classified::{classified_steady_motions, classify_at, stability_threshold, Classified};
 pub use error::RouthError;
+#[allow(deprecated)]
+pub use families::BranchPoint;
 pub use families::{
     bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,
-    BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchPoint, ContinuationOptions,
+    BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchSample, ContinuationOptions,
     EventKind, StabilityAtlas, StopReason,
 };
 pub use formulas::LatexFormulas;

@@ -10,7 +10,7 @@ use super::legend::{Entry, Swatch};
 use super::marks::{draw_event_marker, draw_rings, stroke_path, Px};
 use super::style::{verdict_color, verdict_stroke, KINDS, VERDICTS};
 use super::{drawing_error, PlotError, PlotOptions};
-use crate::{BifurcationDiagram, BranchEvent, BranchPoint, EventKind, Stability};
+use crate::{BifurcationDiagram, BranchEvent, BranchSample, EventKind, Stability};
 
 /// A run of equal verdict along a branch, in data coordinates.
 struct Run {
@@ -21,7 +21,7 @@ struct Run {
 
 /// Splits each branch into runs of equal verdict (a change of verdict between two points is put
 /// at their midpoint), breaking at non-finite values.
-fn runs(diagram: &BifurcationDiagram, map: &impl Fn(&BranchPoint) -> (f64, f64)) -> Vec<Run> {
+fn runs(diagram: &BifurcationDiagram, map: &impl Fn(&BranchSample) -> (f64, f64)) -> Vec<Run> {
     let mut out = Vec::new();
     for branch in &diagram.branches {
         let run = |verdict: Stability, points: Vec<(f64, f64)>| Run {
@@ -61,13 +61,13 @@ fn event_position(
     diagram: &BifurcationDiagram,
     e: &BranchEvent,
     s_scale: f64,
-    map: &impl Fn(&BranchPoint) -> (f64, f64),
+    map: &impl Fn(&BranchSample) -> (f64, f64),
 ) -> Option<(f64, f64)> {
     let candidates: Vec<&crate::Branch> = match diagram.branches.get(e.branch) {
         Some(b) if !b.points.is_empty() => vec![b],
         _ => diagram.branches.iter().collect(),
     };
-    let key = |p: &BranchPoint| -> [f64; 4] {
+    let key = |p: &BranchSample| -> [f64; 4] {
         [
             p.s / s_scale,
             p.steady.gamma.x,
@@ -113,7 +113,7 @@ pub(super) fn branch_figure(
     diagram: &BifurcationDiagram,
     path: &Path,
     opts: &PlotOptions,
-    map: impl Fn(&BranchPoint) -> (f64, f64),
+    map: impl Fn(&BranchSample) -> (f64, f64),
     exact_event: impl Fn(&BranchEvent) -> (Option<f64>, Option<f64>),
     x_label: &str,
     y_label: &str,

@@ -283,12 +283,12 @@ fn label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
 /// ```
 /// use routh::plot::{bifurcation_diagram_svg, PlotOptions};
 /// use routh::{
-///     BifurcationDiagram, Branch, BranchPoint, Complex, Stability, StabilityReport,
+///     BifurcationDiagram, Branch, BranchSample, Complex, Stability, StabilityReport,
 ///     SteadyMotion, Vector3,
 /// };
 ///
 /// // The sleeping top: stable for p_ψ > 2, unstable below.
-/// let point = |p: f64| BranchPoint {
+/// let point = |p: f64| BranchSample {
 ///     s: p,
 ///     steady: SteadyMotion {
 ///         // C = 1: ψ̇ = p/C (38), U_r = ½p²/C + mgl with mgl = 1.
@@ -346,11 +346,11 @@ pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
 /// ```
 /// use routh::plot::{energy_momentum_svg, PlotOptions};
 /// use routh::{
-///     BifurcationDiagram, Branch, BranchPoint, Complex, Stability, StabilityReport,
+///     BifurcationDiagram, Branch, BranchSample, Complex, Stability, StabilityReport,
 ///     SteadyMotion, Vector3,
 /// };
 ///
-/// let point = |p: f64| BranchPoint {
+/// let point = |p: f64| BranchSample {
 ///     s: p,
 ///     steady: SteadyMotion {
 ///         // C = 1: ψ̇ = p/C (38), U_r = ½p²/C + mgl with mgl = 1.

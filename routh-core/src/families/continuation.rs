@@ -15,7 +15,7 @@ use std::cell::Cell;
 use nalgebra::{DMatrix, DVector, Matrix2x3, Vector2, Vector3};
 
 use super::equations::{chart_eval, member, relative_discriminant, restricted_eigen, Local};
-use super::{BranchPoint, ContinuationOptions};
+use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::sphere::tangent_basis;
@@ -38,7 +38,7 @@ pub(crate) struct Node {
     pub eig: [f64; 2],
     /// Relative discriminant of `f₂` in `λ²`.
     pub disc: f64,
-    pub point: BranchPoint,
+    pub point: BranchSample,
     /// Newton iterations the corrector needed.
     pub iterations: usize,
     /// The 2×3 Jacobian `[∂F/∂ξ | ∂F/∂σ]` at the point (chart at the point itself).
@@ -279,7 +279,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             tau_s,
             eig: [eig[0] / sc, eig[1] / sc],
             disc,
-            point: BranchPoint { s, steady, report },
+            point: BranchSample { s, steady, report },
             iterations,
             jac,
         }))

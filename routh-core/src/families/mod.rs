@@ -279,26 +279,28 @@ impl fmt::Display for StopReason {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Branch {
     /// The points, in arclength order along the branch.
-    pub points: Vec<BranchPoint>,
+    pub points: Vec<BranchSample>,
     /// `false` for a branch of circles of steady motions (a symmetric body's tilted precessions):
     /// each point is one representative of its circle.
     pub isolated: bool,
 }
 
-/// One point of a branch.
+/// One sample of a branch: the steady motion at one value of the parameter, with its stability.
+/// (Formerly `BranchPoint`, a name that clashed with the event [`EventKind::BranchPoint`]; the
+/// old name remains as a deprecated alias.)
 ///
 /// ```
 /// # use routh_core::*;
 /// # use test_models::Gyrostat;
 /// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
 /// let d = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &ContinuationOptions::default())?;
-/// let q: &BranchPoint = &d.branches[0].points[0];
+/// let q: &BranchSample = &d.branches[0].points[0];
 /// assert_eq!(q.steady.p_psi, q.s); // the family follows p_ψ itself
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BranchPoint {
+pub struct BranchSample {
     /// The parameter.
     pub s: f64,
     /// The steady motion (its `p_psi` is the family's at `s`).
@@ -306,6 +308,10 @@ pub struct BranchPoint {
     /// Its stability.
     pub report: StabilityReport,
 }
+
+/// The former name of [`BranchSample`].
+#[deprecated(note = "renamed `BranchSample` (`EventKind::BranchPoint` is the bifurcation)")]
+pub type BranchPoint = BranchSample;
 
 /// An event on a branch, located by solving its defining equation.
 ///
