@@ -137,21 +137,30 @@ fn sleeping_lagrange_top_normal_form_matches_the_hand_derivation() {
             for k in 0..3 {
                 let e = rel(rep.normal_form[k], cs[k], c_scale);
                 worst = worst.max(e);
-                assert!(e <= 1e-8, "c[{k}] = {} by hand {}", rep.normal_form[k], cs[k]);
+                assert!(
+                    e <= 1e-8,
+                    "c[{k}] = {} by hand {}",
+                    rep.normal_form[k],
+                    cs[k]
+                );
             }
             for k in 0..2 {
                 let e = rel(rep.frequencies[k], w[k], w[0]);
                 worst = worst.max(e);
-                assert!(e <= 1e-8, "ω[{k}] = {} by hand {}", rep.frequencies[k], w[k]);
+                assert!(
+                    e <= 1e-8,
+                    "ω[{k}] = {} by hand {}",
+                    rep.frequencies[k],
+                    w[k]
+                );
             }
             assert_eq!(
                 f64::from(rep.krein_signs[0] * rep.krein_signs[1]),
                 s12,
                 "{rep}"
             );
-            let d_scale = cs[0].abs() * w[1] * w[1]
-                + cs[1].abs() * w[0] * w[1]
-                + cs[2].abs() * w[0] * w[0];
+            let d_scale =
+                cs[0].abs() * w[1] * w[1] + cs[1].abs() * w[0] * w[1] + cs[2].abs() * w[0] * w[0];
             let e = rel(rep.arnold_determinant, d, d_scale);
             worst = worst.max(e);
             assert!(e <= 1e-8, "D = {} by hand {d}", rep.arnold_determinant);
@@ -166,4 +175,153 @@ fn sleeping_lagrange_top_normal_form_matches_the_hand_derivation() {
         }
     }
     println!("largest relative difference from the hand derivation: {worst:.2e}");
+}
+
+/// The indicators of the nonlinear events, computed here from a report: `D/scale`,
+/// `ω₁/ω₂ − 2`, `ω₁/ω₂ − 3`.
+fn event_indicators(rep: &routh::NonlinearReport) -> [f64; 3] {
+    let [w1, w2] = rep.frequencies;
+    let [c20, c11, c02] = rep.normal_form;
+    let scale = c20.abs() * w2 * w2 + c11.abs() * w1 * w2 + c02.abs() * w1 * w1;
+    [rep.arnold_determinant / scale, w1 / w2 - 2.0, w1 / w2 - 3.0]
+}
+
+/// `ContinuationOptions::nonlinear` on the sleeping asymmetric prolate top I = diag(2, 2.5, 1.5),
+/// mgl = 1, over p_ψ ∈ [3, 12]: (1) with the option off the diagram is the same as before (the
+/// option on adds events and changes nothing else: same branches, same linear events); (2) the
+/// nonlinear events are those of the post-pass `nonlinear_events` fed by a hand-written R; (3)
+/// each lies within 1e−9·max(1, |s|) of an independent location: a scan of the sleeping top's
+/// `nonlinear_stability` over 181 momenta for sign changes of D/scale and ω₁/ω₂ − k, each then
+/// bisected 60 times in p_ψ (the steady motion is γ = e₃ at every p_ψ, no continuation).
+#[test]
+fn diagram_option_locates_the_nonlinear_events() {
+    use routh::nonlinear::nonlinear_events;
+    use routh::{bifurcation_diagram, ContinuationOptions, EventKind};
+    let top = Top {
+        inertia: Vector3::new(2.0, 2.5, 1.5),
+        l: 1.0,
+    };
+    let family = |p: f64| (top.clone(), p);
+    let range = (3.0, 12.0);
+    let off = ContinuationOptions {
+        verify_counts: false,
+        ..Default::default()
+    };
+    let on = ContinuationOptions {
+        nonlinear: Some(NonlinearOptions::default()),
+        ..off.clone()
+    };
+    let t0 = std::time::Instant::now();
+    let d_off = bifurcation_diagram(family, range, &off).unwrap();
+    let t1 = std::time::Instant::now();
+    let d_on = bifurcation_diagram(family, range, &on).unwrap();
+    let t2 = std::time::Instant::now();
+    println!(
+        "diagram: {:.2} s without the option, {:.2} s with it",
+        (t1 - t0).as_secs_f64(),
+        (t2 - t1).as_secs_f64()
+    );
+    let nonlinear_kind =
+        |k: EventKind| matches!(k, EventKind::ArnoldDegenerate | EventKind::Resonance);
+    // (1) Off: no nonlinear event; on: the same diagram plus the nonlinear events.
+    assert!(d_off
+        .events
+        .iter()
+        .all(|e| !nonlinear_kind(e.kind) && e.nonlinear.is_none()));
+    assert_eq!(d_on.branches, d_off.branches);
+    assert_eq!(d_on.stop, d_off.stop);
+    let linear: Vec<_> = d_on
+        .events
+        .iter()
+        .filter(|e| !nonlinear_kind(e.kind))
+        .cloned()
+        .collect();
+    assert_eq!(linear, d_off.events);
+    let added: Vec<_> = d_on
+        .events
+        .iter()
+        .filter(|e| nonlinear_kind(e.kind))
+        .collect();
+    for e in &added {
+        println!("{e}");
+        assert!(e.nonlinear.is_some());
+    }
+    assert!(d_on.events.windows(2).all(|w| w[0].s <= w[1].s));
+    // (2) The post-pass with a hand-written R finds the same events.
+    let jets = |m: &Top, w: &[Jet; 3], g: &[Jet; 3], p: f64| hand_r(m)(w, g, p);
+    let post = nonlinear_events(family, jets, &d_off, &NonlinearOptions::default(), 1e-10).unwrap();
+    assert_eq!(post.len(), added.len(), "{post:?}");
+    for (a, b) in post.iter().zip(&added) {
+        assert_eq!(a.kind, b.kind);
+        assert_eq!(a.branch, b.branch);
+        assert_eq!(Some(a.verdicts()), b.nonlinear);
+        assert!(
+            (a.s - b.s).abs() <= 1e-9 * a.s.abs().max(1.0),
+            "{} vs {}",
+            a.s,
+            b.s
+        );
+    }
+    // (3) An independent location on the sleeping top.
+    let opts = NonlinearOptions::default();
+    let at = |p: f64| {
+        let s = SteadyMotion::at(&top, Vector3::z(), p, true).unwrap();
+        let rep = nonlinear_stability(&top, &s, &opts).unwrap();
+        (rep.linear.verdict == Stability::GyroscopicallyStabilized).then(|| event_indicators(&rep))
+    };
+    let mut expected = Vec::new();
+    let grid: Vec<f64> = (0..=180)
+        .map(|k| range.0 + (range.1 - range.0) * f64::from(k) / 180.0)
+        .collect();
+    for w in grid.windows(2) {
+        let (Some(a), Some(b)) = (at(w[0]), at(w[1])) else {
+            continue;
+        };
+        for k in 0..3 {
+            if a[k] * b[k] >= 0.0 {
+                continue;
+            }
+            let (mut lo, mut hi) = (w[0], w[1]);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                match at(mid) {
+                    Some(v) if v[k] * a[k] > 0.0 => lo = mid,
+                    _ => hi = mid,
+                }
+            }
+            let s = 0.5 * (lo + hi);
+            // A zero of D, not a pole: D/scale small there.
+            if k == 0 && at(s).is_none_or(|v| v[0].abs() > 1e-6) {
+                continue;
+            }
+            expected.push((k, s));
+        }
+    }
+    println!("independent scan: {expected:?}");
+    let on_sleeping: Vec<_> = added.iter().filter(|e| e.gamma.z > 0.999).collect();
+    assert!(!expected.is_empty());
+    assert_eq!(on_sleeping.len(), expected.len(), "{on_sleeping:?}");
+    for (e, (k, s)) in on_sleeping.iter().zip(&expected) {
+        let kind = if *k == 0 {
+            EventKind::ArnoldDegenerate
+        } else {
+            EventKind::Resonance
+        };
+        assert_eq!(e.kind, kind);
+        let r = e.nonlinear.unwrap().resonance;
+        assert_eq!(
+            r,
+            [
+                None,
+                Some(routh::Resonance::OneToTwo),
+                Some(routh::Resonance::OneToThree)
+            ][*k]
+        );
+        let err = (e.s - s).abs() / s.abs().max(1.0);
+        println!(
+            "{} at {:.12}: independent {s:.12}, |Δs|/max(1, s) = {err:.1e}",
+            e.kind, e.s
+        );
+        assert!(err <= 1e-9);
+    }
 }

@@ -130,6 +130,7 @@ fn full_diagram() -> BifurcationDiagram {
         branch,
         before,
         after,
+        nonlinear: None,
     };
     BifurcationDiagram {
         branches: vec![upright, circles, fold],

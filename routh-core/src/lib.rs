@@ -44,8 +44,8 @@ pub use model::{
     RouthBundle, Routhian,
 };
 pub use nonlinear::{
-    nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport,
-    NonlinearVerdict, Resonance,
+    nonlinear_stability, nonlinear_stability_with, NonlinearCurve, NonlinearEventVerdicts,
+    NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};

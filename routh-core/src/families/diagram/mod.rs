@@ -173,10 +173,9 @@ pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
             b.switch_all()?;
         }
     }
-    Ok(CheckedDiagram {
-        diagram: b.finish(),
-        checks,
-    })
+    let mut diagram = b.finish();
+    crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
+    Ok(CheckedDiagram { diagram, checks })
 }
 
 /// The branch through the steady motion nearest `gamma_guess` at `s0` (found by Newton on the
@@ -265,7 +264,9 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
         }
     }
     b.switch_all()?;
-    Ok(b.finish())
+    let mut diagram = b.finish();
+    crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
+    Ok(diagram)
 }
 
 fn validate(range: (f64, f64), opts: &ContinuationOptions) -> Result<(), RouthError> {
