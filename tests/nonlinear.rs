@@ -325,3 +325,71 @@ fn diagram_option_locates_the_nonlinear_events() {
         assert!(err <= 1e-9);
     }
 }
+
+/// `AtlasOptions::nonlinear` on the sleeping prolate Lagrange top A = 1, C = 0.8 over
+/// (mgl, p_ψ) ∈ [0.5, 1.5] × [1.5, 4]: the 1:2 and 1:3 curves against their closed forms
+/// (§10.5: ω₁/ω₂ = (λp + d)/(λp − d), λ = 1.5, d² = p² − 4A·mgl, so 1:2 at p² = 16·mgl/3 and 1:3
+/// at p² = 64·mgl/7), every crossing to 1e−8; no D = 0 curve (D > 0, §10.8); the segments join
+/// crossings of the same curve; and with the option off the atlas is the same without curves.
+#[test]
+fn atlas_option_draws_the_resonance_curves_of_the_lagrange_top() {
+    use routh::{stability_atlas, AtlasOptions, EventKind, Resonance};
+    let family = |mgl: f64, p: f64| {
+        (
+            Top {
+                inertia: Vector3::new(1.0, 1.0, 0.8),
+                l: mgl,
+            },
+            p,
+        )
+    };
+    let off = AtlasOptions {
+        nx: 9,
+        ny: 11,
+        ..Default::default()
+    };
+    let on = AtlasOptions {
+        nonlinear: Some(NonlinearOptions::default()),
+        ..off.clone()
+    };
+    let (x, y) = ((0.5, 1.5), (1.5, 4.0));
+    let a_off = stability_atlas(family, Vector3::z(), x, y, &off).unwrap();
+    let a_on = stability_atlas(family, Vector3::z(), x, y, &on).unwrap();
+    assert!(a_off.nonlinear.is_empty());
+    let mut stripped = a_on.clone();
+    stripped.nonlinear.clear();
+    assert_eq!(stripped, a_off);
+    assert!(a_on
+        .nonlinear
+        .iter()
+        .all(|c| c.kind != EventKind::ArnoldDegenerate));
+    for (res, k) in [
+        (Resonance::OneToTwo, 16.0 / 3.0),
+        (Resonance::OneToThree, 64.0 / 7.0),
+    ] {
+        let curve = a_on
+            .nonlinear
+            .iter()
+            .find(|c| c.resonance == Some(res))
+            .unwrap_or_else(|| panic!("no {res} curve"));
+        assert_eq!(curve.kind, EventKind::Resonance);
+        // p = √(k·mgl) crosses every column x = mgl in the range: at least one crossing each.
+        assert!(curve.crossings.len() >= 9, "{res}: {:?}", curve.crossings);
+        let mut worst = 0.0f64;
+        for &(mgl, p) in &curve.crossings {
+            worst = worst.max((p * p / (k * mgl) - 1.0).abs());
+        }
+        println!(
+            "{res}: {} crossings, {} segments, largest |p²/(k·mgl) − 1| = {worst:.1e}",
+            curve.crossings.len(),
+            curve.segments.len()
+        );
+        assert!(worst <= 1e-8, "{res}: {worst:e}");
+        assert!(curve.segments.len() >= curve.crossings.len() - 2);
+        for s in &curve.segments {
+            for q in s {
+                assert!(curve.crossings.contains(q));
+            }
+        }
+    }
+}
