@@ -393,3 +393,75 @@ fn atlas_option_draws_the_resonance_curves_of_the_lagrange_top() {
         }
     }
 }
+
+/// `ContinuationOptions::nonlinear` on the oblate Lagrange top A = 1, C = 1.25, mgl = 1 over
+/// p_ψ ∈ [1.5, 3], against closed forms only: on its gyroscopic stretch 2 < p < 2.5 (Maievskii,
+/// secular bound) ω₁/ω₂ = (λp + d)/(λp − d), λ = 0.6, so 1:2 at p² = 4/0.96 and 1:3 at
+/// p² = 4/0.91; and D of the hand derivation (§10.8) vanishes once, at the root of the closed
+/// form found here by bisection (p* ≈ 2.438052). Each event to 1e−9·max(1, |s|); the verdicts:
+/// undecided at D = 0 and at 1:2 (no resonant term: the symmetry), Lyapunov stable at 1:3 and on
+/// both sides of each.
+#[test]
+fn diagram_option_on_the_oblate_lagrange_top_matches_the_closed_forms() {
+    use routh::{bifurcation_diagram, ContinuationOptions, EventKind, Resonance};
+    let (a, c, g) = (1.0, 1.25, 1.0);
+    let top = Top {
+        inertia: Vector3::new(a, a, c),
+        l: g,
+    };
+    let opts = ContinuationOptions {
+        verify_counts: false,
+        nonlinear: Some(NonlinearOptions::default()),
+        ..Default::default()
+    };
+    let d = bifurcation_diagram(|p: f64| (top.clone(), p), (1.5, 3.0), &opts).unwrap();
+    // The zero of D by bisection of the closed form on (2.3, 2.5 − 1e−9).
+    let dd = |p: f64| lagrange_top_by_hand(a, c, g, p).3;
+    let (mut lo, mut hi) = (2.3, 2.5 - 1e-9);
+    assert!(dd(lo) > 0.0 && dd(hi) < 0.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if dd(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let expected = [
+        (
+            EventKind::Resonance,
+            Some(Resonance::OneToTwo),
+            (4.0f64 / 0.96).sqrt(),
+        ),
+        (
+            EventKind::Resonance,
+            Some(Resonance::OneToThree),
+            (4.0f64 / 0.91).sqrt(),
+        ),
+        (EventKind::ArnoldDegenerate, None, 0.5 * (lo + hi)),
+    ];
+    let found: Vec<_> = d.events.iter().filter(|e| e.nonlinear.is_some()).collect();
+    for e in &found {
+        println!("{e}");
+    }
+    assert_eq!(found.len(), expected.len());
+    for (e, (kind, res, s)) in found.iter().zip(expected) {
+        let n = e.nonlinear.unwrap();
+        assert_eq!((e.kind, n.resonance), (kind, res));
+        let err = (e.s - s).abs() / s.max(1.0);
+        println!(
+            "{kind} {res:?}: {:.12} against the closed form {s:.12}: {err:.1e}",
+            e.s
+        );
+        assert!(err <= 1e-9, "{err:e}");
+        assert!(e.gamma.z > 1.0 - 1e-12);
+        let at = if res == Some(Resonance::OneToThree) {
+            NonlinearVerdict::LyapunovStable
+        } else {
+            NonlinearVerdict::Undecided
+        };
+        assert_eq!(n.at, at, "{e}");
+        assert_eq!(n.before, NonlinearVerdict::LyapunovStable);
+        assert_eq!(n.after, NonlinearVerdict::LyapunovStable);
+    }
+}

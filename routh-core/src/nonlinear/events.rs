@@ -179,11 +179,22 @@ pub(crate) fn bisect(
     Some((0.5 * (lo + hi), last))
 }
 
+/// A point of a gyroscopically stabilised stretch: `s`, γ and the nonlinear report.
+type Probe = (f64, Vector3<f64>, NonlinearReport);
+
+/// Fractions of a step at which a stretch's end is probed, nearest the end first.
+const END_PROBES: [f64; 3] = [1e-6, 1e-4, 1e-2];
+
 /// The engine: the nonlinear events of the isolated branches of `diagram` (built from
 /// `family`), the steady motions analysed by `analyse`, located to `|Δs| ≤ s_tol·max(1, |s|)`.
-/// A branch point whose analysis fails with [`RouthError::NotASteadyMotion`] (next to a linear
-/// event, where the diagram classified it on the corrector's word) interrupts the stretch; other
-/// errors are returned.
+///
+/// A stretch is scanned from its first to its last gyroscopically stabilised branch point and,
+/// beyond them, to a point probed next to the linear event or verdict change that ends it (at
+/// `10⁻⁶`, else `10⁻⁴`, `10⁻²` of the step from there): a resonance between a Hamiltonian–Hopf
+/// point (ω₁ = ω₂) and the first point of the stretch is found too. A branch point whose
+/// analysis fails with [`RouthError::NotASteadyMotion`] (next to a linear event, where the
+/// diagram classified it on the corrector's word) interrupts the stretch; other errors are
+/// returned.
 pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
     family: &F,
     analyse: &Analyse<'_, M>,
@@ -197,15 +208,59 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
         Ok((steady, rep))
     };
     let done = |lo: f64, hi: f64| (hi - lo).abs() <= s_tol * hi.abs().max(1.0);
+    let gyroscopic = |rep: &NonlinearReport| {
+        rep.linear.verdict == Stability::GyroscopicallyStabilized
+            && rep.frequencies.iter().all(|w| w.is_finite())
+    };
+    // A point of the stretch next to the branch point `end` that bounds it, towards `(s, γ)`.
+    let probe = |end: &crate::families::BranchPoint, s: f64, g: &Vector3<f64>| -> Option<Probe> {
+        END_PROBES.iter().find_map(|&f| {
+            let at = end.s + f * (s - end.s);
+            let guess = (end.steady.gamma + f * (g - end.steady.gamma)).normalize();
+            let (st, rep) = solve(at, &guess).ok()?;
+            gyroscopic(&rep).then_some((at, st.gamma, rep))
+        })
+    };
+    // The events between two points of a stretch, in the order `a` → `b` of the branch.
+    let scan = |bi: usize, a: &Probe, b: &Probe, events: &mut Vec<NonlinearEvent>| {
+        let (ia, ib) = (indicators(&a.2), indicators(&b.2));
+        for k in 0..3 {
+            if ia[k] * ib[k] >= 0.0 || ia[k].is_nan() || ib[k].is_nan() {
+                continue;
+            }
+            let Some((s, (st, rm))) = bisect(&solve, k, (a.0, a.1), (b.0, b.1), ia[k], &done)
+            else {
+                continue;
+            };
+            let (kind, resonance) = indicator_kind(k);
+            events.push(NonlinearEvent {
+                kind,
+                resonance,
+                s,
+                gamma: st.gamma,
+                branch: bi,
+                before: a.2.verdict,
+                at: rm.verdict,
+                after: b.2.verdict,
+            });
+        }
+    };
     let mut events = Vec::new();
     for (bi, branch) in diagram.branches.iter().enumerate() {
         if !branch.isolated {
             continue;
         }
-        let mut prev: Option<(f64, Vector3<f64>, NonlinearReport)> = None;
+        let mut prev: Option<Probe> = None;
+        let mut last: Option<&crate::families::BranchPoint> = None;
         for q in &branch.points {
             if q.report.verdict != Stability::GyroscopicallyStabilized {
-                prev = None;
+                // The stretch ends between `prev` and `q`: scan up to a probe next to `q`.
+                if let Some(p0) = prev.take() {
+                    if let Some(end) = probe(q, p0.0, &p0.1) {
+                        scan(bi, &p0, &end, &mut events);
+                    }
+                }
+                last = Some(q);
                 continue;
             }
             let (model, _) = family(q.s);
@@ -213,35 +268,23 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
                 Ok(rep) => rep,
                 Err(RouthError::NotASteadyMotion { .. }) => {
                     prev = None;
+                    last = None;
                     continue;
                 }
                 Err(e) => return Err(e),
             };
-            if let Some((s0, g0, rep0)) = &prev {
-                let (a, b) = (indicators(rep0), indicators(&rep));
-                for k in 0..3 {
-                    if a[k] * b[k] >= 0.0 || a[k].is_nan() || b[k].is_nan() {
-                        continue;
-                    }
-                    let Some((s, (st, rm))) =
-                        bisect(&solve, k, (*s0, *g0), (q.s, q.steady.gamma), a[k], &done)
-                    else {
-                        continue;
-                    };
-                    let (kind, resonance) = indicator_kind(k);
-                    events.push(NonlinearEvent {
-                        kind,
-                        resonance,
-                        s,
-                        gamma: st.gamma,
-                        branch: bi,
-                        before: rep0.verdict,
-                        at: rm.verdict,
-                        after: rep.verdict,
-                    });
-                }
+            let cur = (q.s, q.steady.gamma, rep);
+            if prev.is_none() {
+                // The stretch starts between `last` and `q`: from a probe next to `last`.
+                prev = last
+                    .filter(|l| l.report.verdict != Stability::GyroscopicallyStabilized)
+                    .and_then(|l| probe(l, q.s, &q.steady.gamma));
             }
-            prev = Some((q.s, q.steady.gamma, rep));
+            if let Some(p0) = &prev {
+                scan(bi, p0, &cur, &mut events);
+            }
+            prev = Some(cur);
+            last = Some(q);
         }
     }
     events.sort_by(|a, b| a.s.total_cmp(&b.s));
