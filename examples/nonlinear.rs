@@ -74,14 +74,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         "\nNonlinear events on gyroscopically stabilised stretches (|Δp_ψ| ≤ 1e−10·p_ψ; \
          diagram in {took:.2} s):"
     );
-    println!("  (verdicts: at the branch point before | at the event | at the point after)");
-    for e in &diagram.events {
-        let Some(n) = &e.nonlinear else { continue };
-        println!(
-            "  {n:<62} at p_ψ = {:.10}, branch {}, γ = ({:+.4}, {:+.4}, {:+.4})",
-            e.s, e.branch, e.gamma.x, e.gamma.y, e.gamma.z
-        );
-    }
+    print_nonlinear_events(&diagram);
     let path = out.join("sleeping_top_nonlinear.svg");
     plot::bifurcation_diagram_svg(
         &diagram,
@@ -94,6 +87,28 @@ fn main() -> Result<(), Box<dyn Error>> {
         },
     )?;
     println!("\nwrote {}", path.display());
+
+    // An oblate Lagrange top, whose D vanishes once on its gyroscopic stretch (docs/method.md
+    // §10.8): the point is marked ○ on its diagram.
+    let lagrange = Top {
+        inertia: Vector3::new(1.0, 1.0, 1.25),
+        mgl: 1.0,
+    };
+    let diagram = bifurcation_diagram(|p: f64| (lagrange.clone(), p), (1.5, 3.0), &copts)?;
+    println!("\nOblate Lagrange top A = 1, C = 1.25, mgl = 1 (gyroscopic for 2 < p_ψ < 2.5):");
+    print_nonlinear_events(&diagram);
+    let path = out.join("oblate_lagrange_top_nonlinear.svg");
+    plot::bifurcation_diagram_svg(
+        &diagram,
+        &path,
+        &PlotOptions {
+            title: "Oblate Lagrange top: resonances (✕) and D = 0 (○) on the sleeping top".into(),
+            x_label: "cyclic momentum p_ψ".into(),
+            y: DiagramAxis::Tilt,
+            ..PlotOptions::default()
+        },
+    )?;
+    println!("wrote {}", path.display());
 
     // The atlas of the sleeping top over (mgl, p_ψ), with the curves of the nonlinear test.
     let aopts = AtlasOptions {
@@ -138,4 +153,16 @@ fn main() -> Result<(), Box<dyn Error>> {
     )?;
     println!("wrote {}", path.display());
     Ok(())
+}
+
+/// The nonlinear events of a diagram, one a line.
+fn print_nonlinear_events(diagram: &routh::BifurcationDiagram) {
+    println!("  (nonlinear verdicts: at the branch point before | at the event | after)");
+    for e in &diagram.events {
+        let Some(n) = &e.nonlinear else { continue };
+        println!(
+            "  p_ψ = {:.10} (branch {}, γ = ({:+.4}, {:+.4}, {:+.4})): {n}",
+            e.s, e.branch, e.gamma.x, e.gamma.y, e.gamma.z
+        );
+    }
 }

@@ -223,11 +223,23 @@ pub(super) fn branch_figure(
         }
         overlays.draw(root, px)?;
         let font = ("sans-serif", 14).into_font().color(&BLACK);
+        // Names above their markers, raised row by row where they would overlap one another.
+        let mut placed: Vec<(i32, i32, i32)> = Vec::new(); // left, right, top
         for (kind, q, name) in &events {
             let c = chart.backend_coord(q);
             draw_event_marker(root, c, *kind)?;
             if let Some(name) = name {
-                root.draw(&Text::new(name.clone(), (c.0 + 9, c.1 - 22), font.clone()))
+                let w = 8 * name.chars().count() as i32;
+                let (left, right) = (c.0 + 6, c.0 + 6 + w);
+                let mut top = c.1 - 22;
+                while placed
+                    .iter()
+                    .any(|&(l, r, t)| left < r + 4 && l < right + 4 && (top - t).abs() < 16)
+                {
+                    top -= 16;
+                }
+                placed.push((left, right, top));
+                root.draw(&Text::new(name.clone(), (left, top), font.clone()))
                     .map_err(drawing_error)?;
             }
         }
