@@ -70,9 +70,16 @@ fn main() -> Result<(), Box<dyn Error>> {
     let t0 = Instant::now();
     let diagram = bifurcation_diagram(family, range, &copts)?;
     let took = t0.elapsed().as_secs_f64();
+    let t0 = Instant::now();
+    let linear_only = ContinuationOptions {
+        nonlinear: None,
+        ..copts.clone()
+    };
+    bifurcation_diagram(family, range, &linear_only)?;
+    let took_linear = t0.elapsed().as_secs_f64();
     println!(
         "\nNonlinear events on gyroscopically stabilised stretches (|Δp_ψ| ≤ 1e−10·p_ψ; \
-         diagram in {took:.2} s):"
+         diagram in {took:.3} s, {took_linear:.3} s without them):"
     );
     print_nonlinear_events(&diagram);
     let path = out.join("sleeping_top_nonlinear.svg");
@@ -126,7 +133,23 @@ fn main() -> Result<(), Box<dyn Error>> {
         &aopts,
     )?;
     let took = t0.elapsed().as_secs_f64();
-    println!("\nAtlas of the sleeping top over (mgl, p_ψ), 21 × 25 nodes, in {took:.2} s:");
+    let t0 = Instant::now();
+    let linear_only = AtlasOptions {
+        nonlinear: None,
+        ..aopts.clone()
+    };
+    stability_atlas(
+        |mgl, p| (Top { mgl, ..top.clone() }, p),
+        Vector3::z(),
+        (0.5, 2.0),
+        range,
+        &linear_only,
+    )?;
+    let took_linear = t0.elapsed().as_secs_f64();
+    println!(
+        "\nAtlas of the sleeping top over (mgl, p_ψ), 21 × 25 nodes, in {took:.2} s ({took_linear:.2} s \
+         without the nonlinear curves):"
+    );
     for c in &atlas.nonlinear {
         let kind = if c.kind == EventKind::Resonance {
             "resonance"
