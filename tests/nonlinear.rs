@@ -134,25 +134,15 @@ fn sleeping_lagrange_top_normal_form_matches_the_hand_derivation() {
             println!("A = {a}, C = {c}, mgl = {g}, p = {p}: {rep}");
             let rel = |x: f64, y: f64, scale: f64| (x - y).abs() / scale;
             let c_scale = cs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-            for k in 0..3 {
-                let e = rel(rep.normal_form[k], cs[k], c_scale);
+            for (k, (&code, &hand)) in rep.normal_form.iter().zip(&cs).enumerate() {
+                let e = rel(code, hand, c_scale);
                 worst = worst.max(e);
-                assert!(
-                    e <= 1e-8,
-                    "c[{k}] = {} by hand {}",
-                    rep.normal_form[k],
-                    cs[k]
-                );
+                assert!(e <= 1e-8, "c[{k}] = {code} by hand {hand}");
             }
-            for k in 0..2 {
-                let e = rel(rep.frequencies[k], w[k], w[0]);
+            for (k, (&code, &hand)) in rep.frequencies.iter().zip(&w).enumerate() {
+                let e = rel(code, hand, w[0]);
                 worst = worst.max(e);
-                assert!(
-                    e <= 1e-8,
-                    "ω[{k}] = {} by hand {}",
-                    rep.frequencies[k],
-                    w[k]
-                );
+                assert!(e <= 1e-8, "ω[{k}] = {code} by hand {hand}");
             }
             assert_eq!(
                 f64::from(rep.krein_signs[0] * rep.krein_signs[1]),

@@ -20,6 +20,12 @@ use crate::model::Routhian;
 use crate::stability::Stability;
 use crate::steady::{steady_motion_near, SteadyMotion};
 
+/// The followed steady motion at a grid node: γ and the linear verdict, if it exists there.
+pub(crate) type GridNode = Option<(Vector3<f64>, Stability)>;
+
+/// γ and the three indicators at a gyroscopically stabilised node.
+type Indicated = Option<(Vector3<f64>, [f64; 3])>;
+
 /// Crossings are located to this fraction of their grid edge.
 const EDGE_TOL: f64 = 1e-9;
 
@@ -75,13 +81,13 @@ pub(crate) fn atlas_curves<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     family: &F,
     xs: &[f64],
     ys: &[f64],
-    nodes: &[Vec<Option<(Vector3<f64>, Stability)>>],
+    nodes: &[Vec<GridNode>],
     opts: &NonlinearOptions,
 ) -> Result<Vec<NonlinearCurve>, RouthError> {
     opts.validate()?;
     let (nx, ny) = (xs.len(), ys.len());
     // The indicators at the gyroscopically stabilised nodes.
-    let mut ind: Vec<Vec<Option<(Vector3<f64>, [f64; 3])>>> = vec![vec![None; nx]; ny];
+    let mut ind: Vec<Vec<Indicated>> = vec![vec![None; nx]; ny];
     let mut checked = false;
     for (j, row) in nodes.iter().enumerate().take(ny) {
         for (i, node) in row.iter().enumerate().take(nx) {
@@ -107,7 +113,7 @@ pub(crate) fn atlas_curves<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     let crossing = |a: (usize, usize), b: (usize, usize), k: usize| -> Option<(f64, f64)> {
         let (ga, va) = ind[a.1][a.0]?;
         let (gb, vb) = ind[b.1][b.0]?;
-        if !(va[k] * vb[k] < 0.0) {
+        if va[k] * vb[k] >= 0.0 || va[k].is_nan() || vb[k].is_nan() {
             return None;
         }
         let (pa, pb) = ((xs[a.0], ys[a.1]), (xs[b.0], ys[b.1]));

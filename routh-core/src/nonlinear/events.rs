@@ -133,6 +133,9 @@ pub(crate) fn indicator_kind(k: usize) -> (EventKind, Option<Resonance>) {
 /// A steady motion re-solved at a parameter, with its nonlinear report.
 pub(crate) type Solved = (SteadyMotion, NonlinearReport);
 
+/// Re-solves the steady motion at a parameter from a guess of γ, and analyses it.
+pub(crate) type Solve<'a> = dyn Fn(f64, &Vector3<f64>) -> Result<Solved, RouthError> + 'a;
+
 /// The nonlinear analysis of a member's steady motion.
 pub(crate) type Analyse<'a, M> =
     dyn Fn(&M, &SteadyMotion) -> Result<NonlinearReport, RouthError> + 'a;
@@ -144,7 +147,7 @@ pub(crate) type Analyse<'a, M> =
 /// or when a sign change of D is a pole; else the midpoint of the last bracket and the solution
 /// at the last midpoint evaluated.
 pub(crate) fn bisect(
-    solve: &dyn Fn(f64, &Vector3<f64>) -> Result<Solved, RouthError>,
+    solve: &Solve<'_>,
     k: usize,
     (mut lo, mut glo): (f64, Vector3<f64>),
     (mut hi, mut ghi): (f64, Vector3<f64>),
