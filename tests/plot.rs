@@ -130,6 +130,7 @@ fn full_diagram() -> BifurcationDiagram {
         branch,
         before,
         after,
+        nonlinear: None,
     };
     BifurcationDiagram {
         branches: vec![upright, circles, fold],
@@ -555,4 +556,102 @@ fn branch_point_is_the_deprecated_name_of_branch_sample() {
     let old: routh::BranchPoint = point(1.0, 1.0, 0.0, Stability::SecularlyStable, true);
     let new: BranchSample = old.clone();
     assert_eq!(old, new);
+}
+
+/// The nonlinear events of a diagram (as `ContinuationOptions::nonlinear` adds them) are marked
+/// ○ and ✕, named in the legend, and each carries its name beside it (`1:2`, `1:3`, `D = 0`).
+#[test]
+fn nonlinear_events_are_marked_and_named() {
+    use routh::{NonlinearEventVerdicts, NonlinearVerdict, Resonance};
+    use Stability::GyroscopicallyStabilized as G;
+    let mut d = full_diagram();
+    let verdicts = |resonance| NonlinearEventVerdicts {
+        resonance,
+        before: NonlinearVerdict::LyapunovStable,
+        at: NonlinearVerdict::Undecided,
+        after: NonlinearVerdict::LyapunovStable,
+    };
+    for (kind, s, res) in [
+        (EventKind::Resonance, 2.5, Some(Resonance::OneToTwo)),
+        (EventKind::Resonance, 3.0, Some(Resonance::OneToThree)),
+        (EventKind::ArnoldDegenerate, 3.5, None),
+    ] {
+        d.events.push(BranchEvent {
+            kind,
+            s,
+            gamma: Vector3::z(),
+            branch: 0,
+            before: G,
+            after: G,
+            nonlinear: Some(verdicts(res)),
+        });
+    }
+    d.events.sort_by(|a, b| a.s.total_cmp(&b.s));
+    let path = out("nonlinear-events.svg");
+    bifurcation_diagram_svg(&d, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    for name in ["1:2", "1:3", "D = 0"] {
+        assert!(has_text(&svg, name), "{name}");
+    }
+    assert!(has_text(&svg, &EventKind::Resonance.to_string()));
+    assert!(has_text(&svg, &EventKind::ArnoldDegenerate.to_string()));
+    // Without them: no such names.
+    let path = out("no-nonlinear-events.svg");
+    bifurcation_diagram_svg(&full_diagram(), &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert!(!has_text(&svg, "1:2") && !has_text(&svg, &EventKind::Resonance.to_string()));
+}
+
+/// The nonlinear curves of an atlas are stroked (dashed, one pattern each), named in the
+/// legend and labelled on the curve (so that they read without colour), in colour and in
+/// monochrome.
+#[test]
+fn atlas_nonlinear_curves_are_drawn_and_named() {
+    use routh::{NonlinearCurve, Resonance};
+    let mut atlas = all_verdicts_atlas();
+    let curve = |resonance: Option<Resonance>, y0: f64| {
+        let pts: Vec<(f64, f64)> = (0..=10)
+            .map(|i| (1.0 + 0.1 * i as f64, y0 + 0.02 * i as f64))
+            .collect();
+        NonlinearCurve {
+            kind: if resonance.is_some() {
+                EventKind::Resonance
+            } else {
+                EventKind::ArnoldDegenerate
+            },
+            resonance,
+            segments: pts.windows(2).map(|w| [w[0], w[1]]).collect(),
+            crossings: pts,
+        }
+    };
+    atlas.nonlinear = vec![
+        curve(Some(Resonance::OneToTwo), 0.6),
+        curve(Some(Resonance::OneToThree), 0.8),
+        curve(None, 1.0),
+    ];
+    for mono in [false, true] {
+        let path = out(&format!("atlas-nonlinear-{mono}.svg"));
+        let opts = PlotOptions {
+            monochrome: mono,
+            ..PlotOptions::default()
+        };
+        stability_atlas_svg(&atlas, &path, &opts).unwrap();
+        let svg = read_svg(&path);
+        for (legend, label) in [
+            ("1:2 resonance", "1:2"),
+            ("1:3 resonance", "1:3"),
+            ("D = 0 (Arnold-degenerate)", "D = 0"),
+        ] {
+            assert!(has_text(&svg, legend), "{legend}");
+            assert!(has_text(&svg, label), "{label}");
+        }
+        // Dashed: many short pieces (plotters writes each dash as a polyline).
+        if !mono {
+            assert!(
+                strokes(&svg, "#005A96", 2) > 60,
+                "{}",
+                strokes(&svg, "#005A96", 2)
+            );
+        }
+    }
 }

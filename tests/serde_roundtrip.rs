@@ -131,3 +131,50 @@ fn certificates_round_trip() {
     let json = round_trip_json(&cert);
     assert!(json.contains("\"enclosure\""));
 }
+
+/// The nonlinear options and results (`ContinuationOptions::nonlinear`, `BranchEvent::nonlinear`,
+/// `AtlasOptions::nonlinear`, `StabilityAtlas::nonlinear`) survive the round trip; JSON without
+/// the new fields (written before they existed) still reads, as `None` / empty.
+#[test]
+fn nonlinear_events_and_curves_round_trip() {
+    use routh::{EventKind, NonlinearOptions};
+    let top = LagrangeTop::example();
+    let copts = ContinuationOptions {
+        verify_counts: false,
+        nonlinear: Some(NonlinearOptions::default()),
+        ..ContinuationOptions::default()
+    };
+    round_trip(&copts);
+    let d = bifurcation_diagram(|p| (top.clone(), p), (1.5, 3.0), &copts).unwrap();
+    assert!(d
+        .events
+        .iter()
+        .any(|e| e.kind == EventKind::ArnoldDegenerate && e.nonlinear.is_some()));
+    round_trip(&d);
+    let aopts = AtlasOptions {
+        nx: 9,
+        ny: 9,
+        nonlinear: Some(NonlinearOptions::default()),
+        ..AtlasOptions::default()
+    };
+    round_trip(&aopts);
+    let atlas = stability_atlas(
+        |mgl: f64, p: f64| (LagrangeTop::with_mgl(1.0, 1.25, mgl), p),
+        Vector3::z(),
+        (0.5, 2.0),
+        (0.5, 5.0),
+        &aopts,
+    )
+    .unwrap();
+    assert!(!atlas.nonlinear.is_empty());
+    round_trip(&atlas);
+    // Old JSON: drop the new keys.
+    let mut v = serde_json::to_value(ContinuationOptions::default()).unwrap();
+    v.as_object_mut().unwrap().remove("nonlinear");
+    let back: ContinuationOptions = serde_json::from_value(v).unwrap();
+    assert_eq!(back, ContinuationOptions::default());
+    let mut v = serde_json::to_value(&d.events[0]).unwrap();
+    v.as_object_mut().unwrap().remove("nonlinear");
+    let back: routh::BranchEvent = serde_json::from_value(v).unwrap();
+    assert_eq!(back.nonlinear, None);
+}

@@ -53,7 +53,8 @@ pub use model::{FullEquations, RankOneInertia, ReducedEquations};
 #[doc(hidden)]
 pub use nonlinear::nonlinear_stability_with;
 pub use nonlinear::{
-    nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
+    nonlinear_stability, NonlinearCurve, NonlinearEventVerdicts, NonlinearOptions, NonlinearReport,
+    NonlinearVerdict, Resonance,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};

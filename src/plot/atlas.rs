@@ -6,10 +6,10 @@ use plotters::prelude::*;
 
 use super::frame::{clip_polyline, draw_figure, Chart, Frame, Overlays, Polyline};
 use super::legend::{Entry, Swatch};
-use super::marks::{draw_cross, shade_cell, stroke_boundary, Px, Root};
-use super::style::{KINDS, VERDICTS};
+use super::marks::{draw_cross, shade_cell, stroke_boundary, stroke_path, Px, Root};
+use super::style::{boundary_color, nonlinear_stroke, KINDS, VERDICTS};
 use super::{drawing_error, label_or, PlotError, PlotOptions};
-use crate::{BoundaryCurve, Stability, StabilityAtlas};
+use crate::{BoundaryCurve, NonlinearCurve, Stability, StabilityAtlas};
 
 /// Cell edges around grid nodes: midpoints between nodes, the end nodes themselves at the ends.
 fn edges(nodes: &[f64]) -> Vec<f64> {
@@ -103,6 +103,21 @@ pub(super) fn atlas_figure(
             .filter(|&&k| curves.iter().any(|c| c.0.kind == k))
             .map(|&k| (Swatch::Boundary(k), format!("{k} boundary"))),
     );
+    // The nonlinear curves (D = 0, 1:2, 1:3), when the atlas was asked for them.
+    let nonlinear: Vec<&NonlinearCurve> = atlas
+        .nonlinear
+        .iter()
+        .filter(|c| !c.segments.is_empty())
+        .collect();
+    legend.extend(nonlinear.iter().map(|c| {
+        (
+            Swatch::Line(boundary_color(c.kind, mono), nonlinear_stroke(c.resonance)),
+            match c.resonance {
+                Some(r) => format!("{r} resonance"),
+                None => "D = 0 (Arnold-degenerate)".to_string(),
+            },
+        )
+    }));
     let overlays = Overlays::clip(opts, &frame);
     legend.extend(overlays.legend());
 
@@ -115,6 +130,7 @@ pub(super) fn atlas_figure(
             let parts: Vec<Vec<Px>> = parts.iter().map(|p| px(p)).collect();
             stroke_boundary(root, &parts, curve.kind, mono)?;
         }
+        draw_nonlinear(root, chart, &nonlinear, mono)?;
         overlays.draw(root, px)?;
         let (a, b) = (
             chart.backend_coord(&(frame.x.0, frame.y.1)),
@@ -123,6 +139,38 @@ pub(super) fn atlas_figure(
         root.draw(&Rectangle::new([a, b], BLACK.stroke_width(1)))
             .map_err(drawing_error)
     })
+}
+
+/// Strokes the nonlinear curves segment by segment, each with its name (`D = 0`, `1:2`, `1:3`)
+/// on a white ground beside its middle segment.
+fn draw_nonlinear(
+    root: &Root,
+    chart: &Chart,
+    curves: &[&NonlinearCurve],
+    mono: bool,
+) -> Result<(), PlotError> {
+    let font = ("sans-serif", 14).into_font().color(&BLACK);
+    for c in curves {
+        let color = boundary_color(c.kind, mono);
+        let stroke = nonlinear_stroke(c.resonance);
+        for s in &c.segments {
+            let pts = [chart.backend_coord(&s[0]), chart.backend_coord(&s[1])];
+            stroke_path(root, &pts, color, stroke)?;
+        }
+        let mid = &c.segments[c.segments.len() / 2];
+        let (a, b) = (chart.backend_coord(&mid[0]), chart.backend_coord(&mid[1]));
+        let at = ((a.0 + b.0) / 2 + 6, (a.1 + b.1) / 2 - 8);
+        let label = c.label();
+        let w = 8 * label.chars().count() as i32;
+        root.draw(&Rectangle::new(
+            [(at.0 - 2, at.1 - 1), (at.0 + w, at.1 + 16)],
+            WHITE.mix(0.85).filled(),
+        ))
+        .map_err(drawing_error)?;
+        root.draw(&Text::new(label, at, font.clone()))
+            .map_err(drawing_error)?;
+    }
+    Ok(())
 }
 
 /// Shades the cells of the grid, whose edges are `ex × ey`, by verdict; a small × in each cell

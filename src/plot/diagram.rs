@@ -107,6 +107,19 @@ fn event_position(
     best.map(|(_, q)| q)
 }
 
+/// The name written beside a nonlinear event: `1:2`, `1:3` or `D = 0`.
+fn event_name(e: &BranchEvent) -> Option<String> {
+    match e.kind {
+        EventKind::Resonance => Some(
+            e.nonlinear
+                .and_then(|n| n.resonance)
+                .map_or_else(|| "resonance".to_string(), |r| r.to_string()),
+        ),
+        EventKind::ArnoldDegenerate => Some("D = 0".into()),
+        _ => None,
+    }
+}
+
 /// A diagram of branches and events with `map` giving the position of each point, and
 /// `exact_event` the coordinates of an event known without interpolation (if any).
 pub(super) fn branch_figure(
@@ -136,7 +149,7 @@ pub(super) fn branch_figure(
     )
     .map(|(lo, hi)| (hi - lo).max(1e-12 * lo.abs().max(1.0)))
     .unwrap_or(1.0);
-    let events: Vec<(EventKind, (f64, f64))> = diagram
+    let events: Vec<(EventKind, (f64, f64), Option<String>)> = diagram
         .events
         .iter()
         .filter_map(|e| {
@@ -144,7 +157,7 @@ pub(super) fn branch_figure(
             let q = event_position(diagram, e, s_scale, &map);
             let x = ex.or(q.map(|q| q.0))?;
             let y = ey.or(q.map(|q| q.1))?;
-            (x.is_finite() && y.is_finite()).then_some((e.kind, (x, y)))
+            (x.is_finite() && y.is_finite()).then(|| (e.kind, (x, y), event_name(e)))
         })
         .collect();
     let all = || {
@@ -209,8 +222,26 @@ pub(super) fn branch_figure(
             }
         }
         overlays.draw(root, px)?;
-        for &(kind, q) in &events {
-            draw_event_marker(root, chart.backend_coord(&q), kind)?;
+        let font = ("sans-serif", 14).into_font().color(&BLACK);
+        // Names above their markers, raised row by row where they would overlap one another.
+        let mut placed: Vec<(i32, i32, i32)> = Vec::new(); // left, right, top
+        for (kind, q, name) in &events {
+            let c = chart.backend_coord(q);
+            draw_event_marker(root, c, *kind)?;
+            if let Some(name) = name {
+                let w = 8 * name.chars().count() as i32;
+                let (left, right) = (c.0 + 6, c.0 + 6 + w);
+                let mut top = c.1 - 22;
+                while placed
+                    .iter()
+                    .any(|&(l, r, t)| left < r + 4 && l < right + 4 && (top - t).abs() < 16)
+                {
+                    top -= 16;
+                }
+                placed.push((left, right, top));
+                root.draw(&Text::new(name.clone(), (left, top), font.clone()))
+                    .map_err(drawing_error)?;
+            }
         }
         Ok(())
     })

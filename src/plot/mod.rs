@@ -8,10 +8,15 @@
 //!   **dashed** where [`Stability::Unstable`] and **dotted** where [`Stability::Degenerate`];
 //!   branches of circles of steady motions (`isolated == false`) carry open rings along them;
 //! - events are marked by shape: ▲ [`EventKind::Fold`], ● [`EventKind::BranchPoint`],
-//!   ■ [`EventKind::HamiltonianHopf`];
+//!   ■ [`EventKind::HamiltonianHopf`], and the nonlinear events (when
+//!   [`ContinuationOptions::nonlinear`](crate::ContinuationOptions::nonlinear) asked for them)
+//!   ○ [`EventKind::ArnoldDegenerate`] and ✕ [`EventKind::Resonance`], each with its name beside
+//!   it (`D = 0`, `1:2`, `1:3`);
 //! - in an atlas, each verdict has its own grey level *and* pattern (plain, dots, diagonal
 //!   hatching, cross-hatching), nodes where the steady motion does not exist are white with a
-//!   small ×, and the boundary curves are drawn on top, solid, dashed or dotted by kind.
+//!   small ×, and the boundary curves are drawn on top, solid, dashed or dotted by kind; the
+//!   nonlinear curves ([`StabilityAtlas::nonlinear`](crate::StabilityAtlas::nonlinear)) are thin,
+//!   dotted (D = 0), medium-dashed (1:2) or long-dashed (1:3), each labelled with its name.
 //!
 //! A legend to the right of the axes names every line style, marker and shading that occurs.
 //! Colour is added on top (switch it off with [`PlotOptions::monochrome`]).

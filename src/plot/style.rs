@@ -4,7 +4,7 @@
 
 use plotters::style::{RGBColor, BLACK};
 
-use crate::{EventKind, Stability};
+use crate::{EventKind, Resonance, Stability};
 
 /// The verdicts in the order of the legend (and the reverse of the drawing order).
 pub(super) const VERDICTS: [Stability; 4] = [
@@ -14,11 +14,14 @@ pub(super) const VERDICTS: [Stability; 4] = [
     Stability::Degenerate,
 ];
 
-/// The event kinds in the order of the legend.
-pub(super) const KINDS: [EventKind; 3] = [
+/// The event kinds in the order of the legend (the last two, the nonlinear events, only when
+/// [`ContinuationOptions::nonlinear`](crate::ContinuationOptions::nonlinear) asked for them).
+pub(super) const KINDS: [EventKind; 5] = [
     EventKind::Fold,
     EventKind::BranchPoint,
     EventKind::HamiltonianHopf,
+    EventKind::ArnoldDegenerate,
+    EventKind::Resonance,
 ];
 
 /// How a polyline is stroked.
@@ -81,6 +84,18 @@ pub(super) fn boundary_stroke(k: EventKind) -> Stroke {
         EventKind::BranchPoint => Stroke::Dashed(3, 12, 5),
         EventKind::HamiltonianHopf => Stroke::Dashed(3, 3, 4),
         EventKind::ArnoldDegenerate | EventKind::Resonance => Stroke::Dashed(2, 2, 2),
+    }
+}
+
+/// The stroke of a nonlinear curve of an atlas ([`StabilityAtlas::nonlinear`]): thin, with dashes
+/// of its own for D = 0 (dots), 1:2 (medium dashes) and 1:3 (long dashes), and a label on it.
+///
+/// [`StabilityAtlas::nonlinear`]: crate::StabilityAtlas::nonlinear
+pub(super) fn nonlinear_stroke(resonance: Option<Resonance>) -> Stroke {
+    match resonance {
+        None => Stroke::Dashed(2, 2, 3),
+        Some(Resonance::OneToTwo) => Stroke::Dashed(2, 7, 4),
+        Some(_) => Stroke::Dashed(2, 16, 4),
     }
 }
 

@@ -34,6 +34,7 @@ use std::fmt;
 
 use nalgebra::Vector3;
 
+use crate::nonlinear::{NonlinearCurve, NonlinearEventVerdicts, NonlinearOptions};
 use crate::stability::{ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{SearchOptions, SteadyMotion};
 
@@ -94,6 +95,28 @@ pub struct ContinuationOptions {
     pub search: SearchOptions,
     /// Tolerances of the verdicts at each point.
     pub classify: ClassifyOptions,
+    /// When `Some`, the diagram also locates, on the gyroscopically stabilised stretches of its
+    /// isolated branches, the zeros of Arnold's determinant ([`EventKind::ArnoldDegenerate`]) and
+    /// the 1:2 and 1:3 resonances ([`EventKind::Resonance`]) with the nonlinear test
+    /// ([`nonlinear_stability`](crate::nonlinear_stability)) and these options, each to
+    /// `|Δs| ≤ event_tol·max(1, |s|)`, with the nonlinear verdicts around it in
+    /// [`BranchEvent::nonlinear`] (docs/method.md §10.7). The branches are the same as without
+    /// it, and the count checks ignore these events. Needs a model with a Routh-function tape
+    /// (derived or run-time; for a hand-written one use
+    /// [`nonlinear_events`](crate::nonlinear::nonlinear_events)). Default `None`: no nonlinear
+    /// test, the diagram of the linear verdicts alone.
+    ///
+    /// ```
+    /// # use routh_core::*;
+    /// let opts = ContinuationOptions {
+    ///     nonlinear: Some(NonlinearOptions::default()),
+    ///     ..Default::default()
+    /// };
+    /// assert_eq!(ContinuationOptions::default().nonlinear, None);
+    /// # let _ = opts;
+    /// ```
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub nonlinear: Option<NonlinearOptions>,
 }
 
 impl Default for ContinuationOptions {
@@ -110,6 +133,7 @@ impl Default for ContinuationOptions {
             verify_counts: true,
             search: SearchOptions::default(),
             classify: ClassifyOptions::default(),
+            nonlinear: None,
         }
     }
 }
@@ -342,6 +366,11 @@ pub struct BranchEvent {
     pub before: Stability,
     /// The verdict just after.
     pub after: Stability,
+    /// For the nonlinear events ([`EventKind::ArnoldDegenerate`], [`EventKind::Resonance`],
+    /// added when [`ContinuationOptions::nonlinear`] asks), the nonlinear verdicts around the
+    /// event and which resonance; `None` for the others.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub nonlinear: Option<NonlinearEventVerdicts>,
 }
 
 /// The kinds of [`BranchEvent`] and [`BoundaryCurve`].
@@ -364,11 +393,13 @@ pub enum EventKind {
     /// or gained).
     HamiltonianHopf,
     /// A zero of Arnold's determinant `D` on a gyroscopically stabilised stretch: the
-    /// Arnold–Moser test is inconclusive there (docs/method.md §10). Found only by the nonlinear
-    /// post-pass ([`nonlinear_events`](crate::nonlinear::nonlinear_events)).
+    /// Arnold–Moser test is inconclusive there (docs/method.md §10). Reported only when
+    /// [`ContinuationOptions::nonlinear`] asks (or by the post-pass
+    /// [`nonlinear_events`](crate::nonlinear::nonlinear_events)).
     ArnoldDegenerate,
     /// A 1:2 or 1:3 resonance between the two frequencies on a gyroscopically stabilised
-    /// stretch (docs/method.md §10). Found only by the nonlinear post-pass.
+    /// stretch (docs/method.md §10); [`BranchEvent::nonlinear`] says which. Reported only when
+    /// [`ContinuationOptions::nonlinear`] asks (or by the post-pass).
     Resonance,
 }
 
@@ -397,7 +428,11 @@ impl fmt::Display for BranchEvent {
             self.gamma.z,
             self.before,
             self.after
-        )
+        )?;
+        if let Some(n) = &self.nonlinear {
+            write!(f, "; nonlinear: {n}")?;
+        }
+        Ok(())
     }
 }
 
@@ -446,6 +481,12 @@ pub struct AtlasOptions {
     pub threads: usize,
     /// Tolerances of the verdicts at each node.
     pub classify: ClassifyOptions,
+    /// When `Some`, the atlas also marks, on its gyroscopically stabilised cells, the curves
+    /// where Arnold's determinant vanishes and the 1:2 and 1:3 resonances
+    /// ([`StabilityAtlas::nonlinear`]), with the nonlinear test and these options. Needs a model
+    /// with a Routh-function tape (derived or run-time). Default `None`.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub nonlinear: Option<NonlinearOptions>,
 }
 
 impl Default for AtlasOptions {
@@ -460,6 +501,7 @@ impl Default for AtlasOptions {
             max_guess_angle: 0.35,
             threads: 0,
             classify: ClassifyOptions::default(),
+            nonlinear: None,
         }
     }
 }
@@ -498,6 +540,10 @@ pub struct StabilityAtlas {
     pub lost: Vec<Vec<bool>>,
     /// `None` when the atlas is complete; otherwise why it stopped early (a budget ran out).
     pub stop: Option<StopReason>,
+    /// The curves D = 0 and the 1:2, 1:3 resonances on the gyroscopically stabilised cells,
+    /// when [`AtlasOptions::nonlinear`] asks (empty otherwise).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub nonlinear: Vec<NonlinearCurve>,
 }
 
 /// A curve in the parameter plane where the verdict of the followed steady motion changes.

@@ -1,23 +1,69 @@
-//! Nonlinear events along the branches of a finished bifurcation diagram (docs/method.md
-//! §10.7): on gyroscopically stabilised stretches, the zeros of Arnold's determinant
+//! Nonlinear events along the branches of a bifurcation diagram (docs/method.md §10.7): on
+//! gyroscopically stabilised stretches, the zeros of Arnold's determinant
 //! ([`EventKind::ArnoldDegenerate`]) and the 1:2 and 1:3 resonances ([`EventKind::Resonance`]).
 //!
-//! A post-pass: sign changes of `D/scale`, `ω₁/ω₂ − 2` and `ω₁/ω₂ − 3` between consecutive
-//! points of a branch are bracketed and bisected to `|Δs| ≤ s_tol·max(1, |s|)`, re-solving the
-//! steady motion at each intermediate `s` by Newton from the interpolated γ. A sign change of D
-//! through a pole (D has small divisors at a 1:2 resonance) is not a zero and is dropped: the
-//! located point must have `|D| ≤ 1e−6·scale`.
+//! One engine for the post-pass [`nonlinear_events`] and for
+//! [`ContinuationOptions::nonlinear`](crate::ContinuationOptions::nonlinear): sign changes of
+//! `D/scale`, `ω₁/ω₂ − 2` and `ω₁/ω₂ − 3` between consecutive points of a branch are bracketed and
+//! bisected to `|Δs| ≤ s_tol·max(1, |s|)`, re-solving the steady motion at each intermediate `s`
+//! by Newton from the interpolated γ. A sign change of D through a pole (D has small divisors at
+//! a 1:2 resonance) is not a zero and is dropped: the located point must have
+//! `|D| ≤ 1e−6·scale`. The same bisection ([`bisect`]) locates the curves of the atlas
+//! (`nonlinear/atlas.rs`).
 
 use nalgebra::Vector3;
 
 use super::jet::Jet;
-use super::{nonlinear_stability_with, NonlinearOptions, NonlinearReport, NonlinearVerdict};
-use super::{Resonance, RouthianJet};
+use super::{nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport};
+use super::{NonlinearVerdict, Resonance, RouthianJet};
 use crate::error::RouthError;
-use crate::families::{BifurcationDiagram, BranchEvent, EventKind};
+use crate::families::{BifurcationDiagram, BranchEvent, ContinuationOptions, EventKind};
 use crate::model::Routhian;
-use crate::stability::Stability;
+use crate::stability::{ClassifyOptions, Stability};
 use crate::steady::{steady_motion_near, SteadyMotion};
+
+/// A located zero of `D` is kept only if `|D|/scale` is below this there (else it was a pole).
+const POLE_CUT: f64 = 1e-6;
+
+/// The nonlinear verdicts around a nonlinear event of a diagram: what
+/// [`BranchEvent::nonlinear`] carries for [`EventKind::ArnoldDegenerate`] and
+/// [`EventKind::Resonance`] (the linear verdicts `before`, `after` of the event are
+/// `GyroscopicallyStabilized` on both sides).
+///
+/// ```
+/// use routh_core::nonlinear::NonlinearEventVerdicts;
+/// use routh_core::{NonlinearVerdict, Resonance};
+/// let v = NonlinearEventVerdicts {
+///     resonance: Some(Resonance::OneToTwo),
+///     before: NonlinearVerdict::LyapunovStable,
+///     at: NonlinearVerdict::Unstable,
+///     after: NonlinearVerdict::LyapunovStable,
+/// };
+/// assert_eq!(v.to_string(), "1:2 resonance: Lyapunov stable | unstable | Lyapunov stable");
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct NonlinearEventVerdicts {
+    /// Which resonance, for [`EventKind::Resonance`]; `None` for a zero of D.
+    pub resonance: Option<Resonance>,
+    /// The nonlinear verdict at the branch point just before (in the branch's point order).
+    pub before: NonlinearVerdict,
+    /// The verdict at the event itself (e.g. `Unstable` at a 1:2 resonance with a non-zero
+    /// resonant term, `Undecided` where D = 0).
+    pub at: NonlinearVerdict,
+    /// The nonlinear verdict at the branch point just after.
+    pub after: NonlinearVerdict,
+}
+
+impl std::fmt::Display for NonlinearEventVerdicts {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.resonance {
+            Some(r) => write!(f, "{r} resonance")?,
+            None => f.write_str("D = 0")?,
+        }
+        write!(f, ": {} | {} | {}", self.before, self.at, self.after)
+    }
+}
 
 /// A nonlinear event on a branch, with the nonlinear verdicts on either side.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,14 +80,25 @@ pub struct NonlinearEvent {
     pub branch: usize,
     /// The nonlinear verdict at the branch point just before (in the branch's point order).
     pub before: NonlinearVerdict,
-    /// The verdict at the verdict at the event itself (e.g. `Unstable` at a 1:2 resonance).
+    /// The verdict at the event itself (e.g. `Unstable` at a 1:2 resonance).
     pub at: NonlinearVerdict,
     /// The nonlinear verdict at the branch point just after.
     pub after: NonlinearVerdict,
 }
 
 impl NonlinearEvent {
-    /// The event as a [`BranchEvent`] of the diagram (linear verdicts on both sides).
+    /// The nonlinear verdicts around the event.
+    pub fn verdicts(&self) -> NonlinearEventVerdicts {
+        NonlinearEventVerdicts {
+            resonance: self.resonance,
+            before: self.before,
+            at: self.at,
+            after: self.after,
+        }
+    }
+
+    /// The event as a [`BranchEvent`] of the diagram: linear verdicts on both sides
+    /// (`GyroscopicallyStabilized`), the nonlinear ones in [`BranchEvent::nonlinear`].
     pub fn to_branch_event(&self) -> BranchEvent {
         BranchEvent {
             kind: self.kind,
@@ -50,20 +107,199 @@ impl NonlinearEvent {
             branch: self.branch,
             before: Stability::GyroscopicallyStabilized,
             after: Stability::GyroscopicallyStabilized,
+            nonlinear: Some(self.verdicts()),
         }
     }
 }
 
-/// The three functions whose zeros are the events.
-fn indicators(rep: &NonlinearReport) -> [f64; 3] {
+/// The three functions whose zeros are the events: `D/scale`, `ω₁/ω₂ − 2`, `ω₁/ω₂ − 3` (NaN
+/// off the gyroscopic stretches).
+pub(crate) fn indicators(rep: &NonlinearReport) -> [f64; 3] {
     let [w1, w2] = rep.frequencies;
     let [c20, c11, c02] = rep.normal_form;
     let scale = c20.abs() * w2 * w2 + c11.abs() * w1 * w2 + c02.abs() * w1 * w1;
     [rep.arnold_determinant / scale, w1 / w2 - 2.0, w1 / w2 - 3.0]
 }
 
+/// The kind and resonance of indicator `k`.
+pub(crate) fn indicator_kind(k: usize) -> (EventKind, Option<Resonance>) {
+    match k {
+        0 => (EventKind::ArnoldDegenerate, None),
+        1 => (EventKind::Resonance, Some(Resonance::OneToTwo)),
+        _ => (EventKind::Resonance, Some(Resonance::OneToThree)),
+    }
+}
+
+/// A steady motion re-solved at a parameter, with its nonlinear report.
+pub(crate) type Solved = (SteadyMotion, NonlinearReport);
+
+/// Re-solves the steady motion at a parameter from a guess of γ, and analyses it.
+pub(crate) type Solve<'a> = dyn Fn(f64, &Vector3<f64>) -> Result<Solved, RouthError> + 'a;
+
+/// The nonlinear analysis of a member's steady motion.
+pub(crate) type Analyse<'a, M> =
+    dyn Fn(&M, &SteadyMotion) -> Result<NonlinearReport, RouthError> + 'a;
+
+/// Bisects indicator `k` between `lo` and `hi` (parameter `t` and the steady motion's γ there),
+/// the indicator having the sign of `sign_lo` at `lo` and the opposite at `hi`. `solve(t, guess)`
+/// re-solves the steady motion at `t` from `guess`; the bisection stops when `done(lo, hi)`
+/// (after at least one midpoint). `None` when a re-solve fails or leaves the gyroscopic stretch,
+/// or when a sign change of D is a pole; else the midpoint of the last bracket and the solution
+/// at the last midpoint evaluated.
+pub(crate) fn bisect(
+    solve: &Solve<'_>,
+    k: usize,
+    (mut lo, mut glo): (f64, Vector3<f64>),
+    (mut hi, mut ghi): (f64, Vector3<f64>),
+    sign_lo: f64,
+    done: &dyn Fn(f64, f64) -> bool,
+) -> Option<(f64, Solved)> {
+    let mut last: Option<Solved> = None;
+    while last.is_none() || !done(lo, hi) {
+        let mid = 0.5 * (lo + hi);
+        if mid == lo || mid == hi {
+            break; // the bracket is down to adjacent floats
+        }
+        let guess = (glo + ghi).normalize();
+        let (st, rep) = solve(mid, &guess).ok()?;
+        let v = indicators(&rep)[k];
+        if v.is_nan() {
+            return None;
+        }
+        if v * sign_lo > 0.0 {
+            lo = mid;
+            glo = st.gamma;
+        } else {
+            hi = mid;
+            ghi = st.gamma;
+        }
+        last = Some((st, rep));
+    }
+    let last = last?;
+    if k == 0 && indicators(&last.1)[0].abs() > POLE_CUT {
+        return None; // a pole of D, not a zero
+    }
+    Some((0.5 * (lo + hi), last))
+}
+
+/// A point of a gyroscopically stabilised stretch: `s`, γ and the nonlinear report.
+type Probe = (f64, Vector3<f64>, NonlinearReport);
+
+/// Fractions of a step at which a stretch's end is probed, nearest the end first.
+const END_PROBES: [f64; 3] = [1e-6, 1e-4, 1e-2];
+
+/// The engine: the nonlinear events of the isolated branches of `diagram` (built from
+/// `family`), the steady motions analysed by `analyse`, located to `|Δs| ≤ s_tol·max(1, |s|)`.
+///
+/// A stretch is scanned from its first to its last gyroscopically stabilised branch point and,
+/// beyond them, to a point probed next to the linear event or verdict change that ends it (at
+/// `10⁻⁶`, else `10⁻⁴`, `10⁻²` of the step from there): a resonance between a Hamiltonian–Hopf
+/// point (ω₁ = ω₂) and the first point of the stretch is found too. A branch point whose
+/// analysis fails with [`RouthError::NotASteadyMotion`] (next to a linear event, where the
+/// diagram classified it on the corrector's word) interrupts the stretch; other errors are
+/// returned.
+pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    family: &F,
+    analyse: &Analyse<'_, M>,
+    diagram: &BifurcationDiagram,
+    s_tol: f64,
+) -> Result<Vec<NonlinearEvent>, RouthError> {
+    let solve = |s: f64, guess: &Vector3<f64>| -> Result<Solved, RouthError> {
+        let (model, p) = family(s);
+        let steady = steady_motion_near(&model, *guess, p)?;
+        let rep = analyse(&model, &steady)?;
+        Ok((steady, rep))
+    };
+    let done = |lo: f64, hi: f64| (hi - lo).abs() <= s_tol * hi.abs().max(1.0);
+    let gyroscopic = |rep: &NonlinearReport| {
+        rep.linear.verdict == Stability::GyroscopicallyStabilized
+            && rep.frequencies.iter().all(|w| w.is_finite())
+    };
+    // A point of the stretch next to the branch point `end` that bounds it, towards `(s, γ)`.
+    let probe = |end: &crate::families::BranchSample, s: f64, g: &Vector3<f64>| -> Option<Probe> {
+        END_PROBES.iter().find_map(|&f| {
+            let at = end.s + f * (s - end.s);
+            let guess = (end.steady.gamma + f * (g - end.steady.gamma)).normalize();
+            let (st, rep) = solve(at, &guess).ok()?;
+            gyroscopic(&rep).then_some((at, st.gamma, rep))
+        })
+    };
+    // The events between two points of a stretch, in the order `a` → `b` of the branch.
+    let scan = |bi: usize, a: &Probe, b: &Probe, events: &mut Vec<NonlinearEvent>| {
+        let (ia, ib) = (indicators(&a.2), indicators(&b.2));
+        for k in 0..3 {
+            if ia[k] * ib[k] >= 0.0 || ia[k].is_nan() || ib[k].is_nan() {
+                continue;
+            }
+            let Some((s, (st, rm))) = bisect(&solve, k, (a.0, a.1), (b.0, b.1), ia[k], &done)
+            else {
+                continue;
+            };
+            let (kind, resonance) = indicator_kind(k);
+            events.push(NonlinearEvent {
+                kind,
+                resonance,
+                s,
+                gamma: st.gamma,
+                branch: bi,
+                before: a.2.verdict,
+                at: rm.verdict,
+                after: b.2.verdict,
+            });
+        }
+    };
+    let mut events = Vec::new();
+    for (bi, branch) in diagram.branches.iter().enumerate() {
+        if !branch.isolated {
+            continue;
+        }
+        let mut prev: Option<Probe> = None;
+        let mut last: Option<&crate::families::BranchSample> = None;
+        for q in &branch.points {
+            if q.report.verdict != Stability::GyroscopicallyStabilized {
+                // The stretch ends between `prev` and `q`: scan up to a probe next to `q`.
+                if let Some(p0) = prev.take() {
+                    if let Some(end) = probe(q, p0.0, &p0.1) {
+                        scan(bi, &p0, &end, &mut events);
+                    }
+                }
+                last = Some(q);
+                continue;
+            }
+            let (model, _) = family(q.s);
+            let rep = match analyse(&model, &q.steady) {
+                Ok(rep) => rep,
+                Err(RouthError::NotASteadyMotion { .. }) => {
+                    prev = None;
+                    last = None;
+                    continue;
+                }
+                Err(e) => return Err(e),
+            };
+            let cur = (q.s, q.steady.gamma, rep);
+            if prev.is_none() {
+                // The stretch starts between `last` and `q`: from a probe next to `last`.
+                prev = last
+                    .filter(|l| l.report.verdict != Stability::GyroscopicallyStabilized)
+                    .and_then(|l| probe(l, q.s, &q.steady.gamma));
+            }
+            if let Some(p0) = &prev {
+                scan(bi, p0, &cur, &mut events);
+            }
+            prev = Some(cur);
+            last = Some(q);
+        }
+    }
+    events.sort_by(|a, b| a.s.total_cmp(&b.s));
+    Ok(events)
+}
+
 /// The nonlinear events of the branches of `diagram` (built from `family`), `r` giving the Routh
 /// function of the family's model at jets. Each is located to `|Δs| ≤ s_tol·max(1, |s|)`.
+///
+/// A post-pass over a finished diagram, for models without a Routh-function tape (hand-written
+/// ones); for derived and run-time models [`ContinuationOptions::nonlinear`] adds the same events
+/// to the diagram itself.
 ///
 /// Errors: those of [`nonlinear_stability_with`] at a branch point, [`RouthError::InvalidOption`]
 /// for `s_tol` outside `(0, 1)`.
@@ -85,86 +321,73 @@ where
             reason: format!("must be in (0, 1) (got {s_tol:e})"),
         });
     }
-    let analyse =
-        |s: f64, guess: &Vector3<f64>| -> Result<(SteadyMotion, NonlinearReport), RouthError> {
-            let (model, p) = family(s);
-            let steady = steady_motion_near(&model, *guess, p)?;
-            let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(&model, w, g, p);
-            let rep = nonlinear_stability_with(&model, &steady, &jets as &dyn RouthianJet, opts)?;
-            Ok((steady, rep))
-        };
-    let mut events = Vec::new();
-    for (bi, branch) in diagram.branches.iter().enumerate() {
-        if !branch.isolated {
-            continue;
+    opts.validate()?;
+    let analyse = |model: &M, steady: &SteadyMotion| {
+        let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(model, w, g, p);
+        nonlinear_stability_with(model, steady, &jets as &dyn RouthianJet, opts)
+    };
+    branch_events(&family, &analyse, diagram, s_tol)
+}
+
+/// [`nonlinear_stability`], and where the steady motion is next to a linear event (the diagram
+/// and the atlas classify such points on their corrector's word) with the tolerance of (33)
+/// relaxed as they do.
+pub(crate) fn analyse_with_tape<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    opts: &NonlinearOptions,
+) -> Result<NonlinearReport, RouthError> {
+    match nonlinear_stability(model, steady, opts) {
+        Err(RouthError::NotASteadyMotion { .. }) => {
+            let relaxed = NonlinearOptions {
+                classify: ClassifyOptions {
+                    steady_tol: 0.5,
+                    ..opts.classify.clone()
+                },
+                ..opts.clone()
+            };
+            nonlinear_stability(model, steady, &relaxed)
         }
-        let mut prev: Option<(f64, Vector3<f64>, NonlinearReport)> = None;
-        for q in &branch.points {
-            if q.report.verdict != Stability::GyroscopicallyStabilized {
-                prev = None;
-                continue;
-            }
-            let (model, _) = family(q.s);
-            let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(&model, w, g, p);
-            let rep = nonlinear_stability_with(&model, &q.steady, &jets as &dyn RouthianJet, opts)?;
-            if let Some((s0, g0, rep0)) = &prev {
-                let (a, b) = (indicators(rep0), indicators(&rep));
-                for k in 0..3 {
-                    if a[k] * b[k] >= 0.0 || a[k].is_nan() || b[k].is_nan() {
-                        continue;
-                    }
-                    // Bisection on s, the steady motion re-solved from the nearer end's γ.
-                    let (mut lo, mut hi) = (*s0, q.s);
-                    let (mut glo, mut ghi) = (*g0, q.steady.gamma);
-                    let mut at = None;
-                    let mut failed = false;
-                    while (hi - lo).abs() > s_tol * hi.abs().max(1.0) {
-                        let mid = 0.5 * (lo + hi);
-                        let guess = (glo + ghi).normalize();
-                        let Ok((st, rm)) = analyse(mid, &guess) else {
-                            failed = true;
-                            break;
-                        };
-                        let v = indicators(&rm)[k];
-                        if v * a[k] > 0.0 {
-                            lo = mid;
-                            glo = st.gamma;
-                        } else {
-                            hi = mid;
-                            ghi = st.gamma;
-                        }
-                        at = Some((st, rm));
-                    }
-                    let Some((st, rm)) = at else { continue };
-                    if failed {
-                        continue;
-                    }
-                    if k == 0 && indicators(&rm)[0].abs() > 1e-6 {
-                        continue; // a pole of D, not a zero
-                    }
-                    events.push(NonlinearEvent {
-                        kind: if k == 0 {
-                            EventKind::ArnoldDegenerate
-                        } else {
-                            EventKind::Resonance
-                        },
-                        resonance: match k {
-                            1 => Some(Resonance::OneToTwo),
-                            2 => Some(Resonance::OneToThree),
-                            _ => None,
-                        },
-                        s: 0.5 * (lo + hi),
-                        gamma: st.gamma,
-                        branch: bi,
-                        before: rep0.verdict,
-                        at: rm.verdict,
-                        after: rep.verdict,
-                    });
-                }
-            }
-            prev = Some((q.s, q.steady.gamma, rep));
-        }
+        r => r,
     }
-    events.sort_by(|a, b| a.s.total_cmp(&b.s));
-    Ok(events)
+}
+
+/// The error of a model without a Routh-function tape asked for the nonlinear test along a
+/// family.
+pub(crate) fn needs_tape<M: Routhian>(model: &M, what: &'static str) -> Result<(), RouthError> {
+    if model.routh_tape().is_some() {
+        return Ok(());
+    }
+    Err(RouthError::InvalidModel {
+        what: "Routh function tape",
+        reason: format!(
+            "{what} needs a derived or run-time model (R as an expression tape); for a \
+             hand-written model use nonlinear::nonlinear_events with a RouthianJet"
+        ),
+    })
+}
+
+/// What [`ContinuationOptions::nonlinear`] adds to a finished diagram: its nonlinear events as
+/// [`BranchEvent`]s (the diagram's events stay sorted by `s`), located to `event_tol`. Nothing
+/// when the option is off.
+pub(crate) fn add_to_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    family: &F,
+    diagram: &mut BifurcationDiagram,
+    opts: &ContinuationOptions,
+) -> Result<(), RouthError> {
+    let Some(nl) = &opts.nonlinear else {
+        return Ok(());
+    };
+    nl.validate()?;
+    let Some(first) = diagram.branches.iter().find_map(|b| b.points.first()) else {
+        return Ok(());
+    };
+    needs_tape(&family(first.s).0, "ContinuationOptions::nonlinear")?;
+    let analyse = |model: &M, steady: &SteadyMotion| analyse_with_tape(model, steady, nl);
+    let events = branch_events(family, &analyse, diagram, opts.event_tol)?;
+    diagram
+        .events
+        .extend(events.iter().map(NonlinearEvent::to_branch_event));
+    diagram.events.sort_by(|a, b| a.s.total_cmp(&b.s));
+    Ok(())
 }

@@ -13,6 +13,7 @@
 //! The derivatives of order three and four come from evaluating the model's Routh function at
 //! Taylor jets ([`Jet`], [`RouthianJet`]): no finite differences.
 
+mod atlas;
 mod chart;
 mod events;
 mod jet;
@@ -26,17 +27,21 @@ use crate::model::Routhian;
 use crate::stability::{classify_with, ClassifyOptions, Stability, StabilityReport};
 use crate::steady::SteadyMotion;
 
+pub(crate) use atlas::atlas_curves;
+pub use atlas::NonlinearCurve;
 pub use chart::RouthianJet;
 /// The chart, the reduced Hamiltonian and the truncated power series behind the normal form:
 /// public for the tests that check them by hand, not an API of routh.
 #[doc(hidden)]
 pub use chart::{chart, reduced_hamiltonian, tangent_frame};
-pub use events::{nonlinear_events, NonlinearEvent};
+pub(crate) use events::add_to_diagram;
+pub use events::{nonlinear_events, NonlinearEvent, NonlinearEventVerdicts};
 #[doc(hidden)]
 pub use jet::{monomial_index, monomials, Exponents, Jet, NCOEF, NVARS, ORDER};
 
 /// Tolerances of [`nonlinear_stability`], all relative.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NonlinearOptions {
     /// Options of the linear classification that comes first.
     pub classify: ClassifyOptions,
@@ -83,6 +88,7 @@ impl NonlinearOptions {
 
 /// A resonance `k₁ω₁ = k₂ω₂` of order `|k₁| + |k₂| ≤ 4` between the two frequencies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Resonance {
     /// `ω₁ = ω₂` (orders 2 and 4).
     OneToOne,
@@ -104,6 +110,7 @@ impl fmt::Display for Resonance {
 
 /// The nonlinear verdict.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum NonlinearVerdict {
     /// `H₂` definite (the amended potential has a strict minimum): Lyapunov stable by the
     /// energy integral.

@@ -369,6 +369,20 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     let (rows, lost): (Vec<Vec<Option<Node>>>, Vec<Vec<bool>>) = lines.into_iter().unzip();
 
     let boundaries = ctx.boundaries(&xs, &ys, &rows)?;
+    let nonlinear = match &opts.nonlinear {
+        Some(nl) => {
+            let nodes: Vec<Vec<_>> = rows
+                .iter()
+                .map(|r| {
+                    r.iter()
+                        .map(|n| n.as_ref().map(|n| (n.gamma, n.report.verdict)))
+                        .collect()
+                })
+                .collect();
+            crate::nonlinear::atlas_curves(family, &xs, &ys, &nodes, nl)?
+        }
+        None => Vec::new(),
+    };
     let verdicts = rows
         .iter()
         .map(|r| {
@@ -395,6 +409,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
         boundaries,
         lost,
         stop,
+        nonlinear,
     })
 }
 

@@ -282,6 +282,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 branch,
                 before,
                 after,
+                nonlinear: None,
             });
         }
     }

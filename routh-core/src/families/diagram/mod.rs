@@ -139,6 +139,7 @@ pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
         }
     }
     let mut diagram = b.finish();
+    crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
     diagram.checks = checks;
     Ok(diagram)
 }
@@ -248,7 +249,9 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
         }
     }
     b.switch_all()?;
-    Ok(b.finish())
+    let mut diagram = b.finish();
+    crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
+    Ok(diagram)
 }
 
 fn validate(range: (f64, f64), opts: &ContinuationOptions) -> Result<(), RouthError> {
