@@ -16,7 +16,7 @@
 
 use crate::equations::Equations;
 use crate::inertia::RankOne;
-use crate::layout::{Bundle, EquationTerms, Gyroscopic};
+use crate::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
 use routh_symbolic::{Func, Graph, Id, Node, Plan, Var};
@@ -265,6 +265,36 @@ fn flat_m(m: &M3) -> Vec<Id> {
     m.iter().flatten().copied().collect()
 }
 
+/// `__RouthBundle { .. }` from the tokens naming each output.
+fn bundle_literal(s: &mut String, b: &Bundle<String>) {
+    let _ = write!(
+        s,
+        "__RouthBundle {{\nrouthian: {},\npsi_dot: {},\ndr_domega: ",
+        b.routhian, b.psi_dot
+    );
+    construct(s, "__Vector3", &b.dr_domega);
+    s.push_str(",\ndr_dgamma: ");
+    construct(s, "__Vector3", &b.dr_dgamma);
+    let _ = write!(s, ",\ndr_dp: {},\nd2r_domega2: ", b.dr_dp);
+    construct(s, "__Matrix3", b.d2r_domega2.as_flattened());
+    s.push_str(",\nd2r_domega_dgamma: ");
+    construct(s, "__Matrix3", b.d2r_domega_dgamma.as_flattened());
+    s.push_str(",\nd2r_dgamma2: ");
+    construct(s, "__Matrix3", b.d2r_dgamma2.as_flattened());
+    s.push_str(",\n}");
+}
+
+/// `__GyroscopicSystem { .. }` from the tokens naming `A`, `G`, `C`.
+fn system_literal(s: &mut String, m: &Gyroscopic<String>) {
+    s.push_str("__GyroscopicSystem {\na: ");
+    construct(s, "__Matrix3", m.a.as_flattened());
+    s.push_str(",\ng: ");
+    construct(s, "__Matrix3", m.g.as_flattened());
+    s.push_str(",\nc: ");
+    construct(s, "__Matrix3", m.c.as_flattened());
+    s.push_str(",\n}");
+}
+
 /// One generated method: outputs, then how to assemble them.
 enum Ret {
     Scalar(Id),
@@ -398,36 +428,29 @@ impl Emitter<'_> {
         // bundle: every output from one straight-line body.
         let _ = writeln!(s, "#[inline]\nfn bundle(&self{ROUTH}) -> __RouthBundle {{");
         let outs = self.body(s, &o.bundle().flatten(), r);
-        let b = Bundle::from_flat(outs);
-        let _ = write!(
-            s,
-            "__RouthBundle {{\nrouthian: {},\npsi_dot: {},\ndr_domega: ",
-            b.routhian, b.psi_dot
-        );
-        construct(s, "__Vector3", &b.dr_domega);
-        s.push_str(",\ndr_dgamma: ");
-        construct(s, "__Vector3", &b.dr_dgamma);
-        let _ = write!(s, ",\ndr_dp: {},\nd2r_domega2: ", b.dr_dp);
-        construct(s, "__Matrix3", b.d2r_domega2.as_flattened());
-        s.push_str(",\nd2r_domega_dgamma: ");
-        construct(s, "__Matrix3", b.d2r_domega_dgamma.as_flattened());
-        s.push_str(",\nd2r_dgamma2: ");
-        construct(s, "__Matrix3", b.d2r_dgamma2.as_flattened());
-        s.push_str(",\n}\n}\n");
+        bundle_literal(s, &Bundle::from_flat(outs));
+        s.push_str("\n}\n");
 
         let _ = writeln!(
             s,
             "#[inline]\nfn gyroscopic_system(&self{REST}) -> __GyroscopicSystem {{"
         );
         let outs = self.body(s, &o.gyroscopic().flatten(), r);
-        let m = Gyroscopic::from_flat(outs);
-        s.push_str("__GyroscopicSystem {\na: ");
-        construct(s, "__Matrix3", m.a.as_flattened());
-        s.push_str(",\ng: ");
-        construct(s, "__Matrix3", m.g.as_flattened());
-        s.push_str(",\nc: ");
-        construct(s, "__Matrix3", m.c.as_flattened());
-        s.push_str(",\n}\n}\n");
+        system_literal(s, &Gyroscopic::from_flat(outs));
+        s.push_str("\n}\n");
+
+        // bundle_and_system: the bundle and A, G, C of (64) built from its nodes, one body.
+        let _ = writeln!(
+            s,
+            "#[inline]\nfn bundle_and_system(&self{ROUTH}) -> (__RouthBundle, __GyroscopicSystem) {{"
+        );
+        let outs = self.body(s, &o.bundle_and_system().flatten(), r);
+        let f = BundleAndSystem::from_flat(outs);
+        s.push('(');
+        bundle_literal(s, &f.bundle);
+        s.push_str(", ");
+        system_literal(s, &f.system);
+        s.push_str(")\n}\n");
 
         let terms = EquationTerms {
             inertia: o.d2l_domega2,

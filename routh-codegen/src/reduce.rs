@@ -2,7 +2,7 @@
 //! impls, derived symbolically from `L = kinetic + linear − potential` for any model the DSL
 //! accepts (paper (8)–(19), section 5, with errata E4–E6).
 
-use crate::layout::{Bundle, Gyroscopic};
+use crate::layout::{Bundle, BundleAndSystem, Gyroscopic};
 use crate::lower::Lowered;
 use routh_symbolic::shape::{dot3, matmul3, skew3, transpose3};
 use routh_symbolic::{degree, extra_cost, Degree, Graph, Id, Var};
@@ -46,6 +46,12 @@ pub struct Outputs {
     pub gyro_a: M3,
     pub gyro_g: M3,
     pub gyro_c: M3,
+    /// `G` of (64) formed from the bundle's own nodes at `(Ω, γ, p_ψ)` (not substituted at
+    /// rest): what `GyroscopicSystem::from_bundle` forms from `bundle`, for
+    /// `bundle_and_system`. Its `A` is [`Outputs::d2r_domega2`].
+    pub system_g: M3,
+    /// `C` of (64) formed from the bundle's own nodes, as [`Outputs::system_g`].
+    pub system_c: M3,
 }
 
 /// `∂f/∂x_i` for the three variables `x`.
@@ -105,6 +111,19 @@ impl Outputs {
     /// The outputs of `bundle`, in the order of [`Bundle::flatten`].
     pub fn bundle_ids(&self) -> Vec<Id> {
         self.bundle().flatten()
+    }
+
+    /// The outputs of `bundle_and_system`, by name: the bundle, then `A`, `G`, `C` of (64)
+    /// built from its nodes in the same graph.
+    pub fn bundle_and_system(&self) -> BundleAndSystem<Id> {
+        BundleAndSystem {
+            bundle: self.bundle(),
+            system: Gyroscopic {
+                a: self.d2r_domega2,
+                g: self.system_g,
+                c: self.system_c,
+            },
+        }
     }
 
     /// The outputs of `gyroscopic_system`, by name.
@@ -318,6 +337,15 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     } = Bundle::from_flat(subst_vec(g, &rest.flatten(), &at_rest));
     let amended_potential = g.neg(r0);
     let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dg0, &mx0, &h0);
+    // The same formulas on the bundle itself, for `bundle_and_system` (17) and (64): built last,
+    // so that the nodes of every other method keep their ids (and their generated text).
+    let (system_g, system_c) = gyroscopic(
+        g,
+        &gm,
+        &bundle.dr_dgamma,
+        &bundle.d2r_domega_dgamma,
+        &bundle.d2r_dgamma2,
+    );
 
     Outputs {
         lagrangian,
@@ -342,6 +370,8 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         gyro_a: a0,
         gyro_g,
         gyro_c,
+        system_g,
+        system_c,
     }
 }
 
