@@ -195,8 +195,18 @@ fn check_fused<G: Routhian, H: Routhian + test_models::GenericModel>(
         let mut checks: Vec<(&str, Vec<f64>, Vec<f64>, f64)> = vec![
             ("R vs bundle", s(fb.routhian), s(b.routhian), round_off),
             ("psi_dot vs bundle", s(fb.psi_dot), s(b.psi_dot), round_off),
-            ("dR/dΩ vs bundle", v(fb.dr_domega), v(b.dr_domega), round_off),
-            ("dR/dγ vs bundle", v(fb.dr_dgamma), v(b.dr_dgamma), round_off),
+            (
+                "dR/dΩ vs bundle",
+                v(fb.dr_domega),
+                v(b.dr_domega),
+                round_off,
+            ),
+            (
+                "dR/dγ vs bundle",
+                v(fb.dr_dgamma),
+                v(b.dr_dgamma),
+                round_off,
+            ),
             ("dR/dp vs bundle", s(fb.dr_dp), s(b.dr_dp), round_off),
             (
                 "d2R/dΩ2 vs bundle",

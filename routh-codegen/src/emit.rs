@@ -220,8 +220,27 @@ impl<'a> Emitter<'a> {
 
     /// Writes the statements computing `outputs`; returns the text naming each output.
     pub fn body(&self, out: &mut String, outputs: &[Id], inputs: Inputs) -> Vec<String> {
+        self.body_in_parts(out, &[outputs], inputs, |_, _, _| {})
+            .into_iter()
+            .flatten()
+            .collect()
+    }
+
+    /// [`Emitter::body`] for outputs given in parts, with `close(out, k, names)` called as soon
+    /// as the statements of part `k` are written (before those that only later parts need):
+    /// one plan, so every shared value is still computed once, but a caller can assemble part
+    /// `k` (a struct literal into a local) there, so that its values need not stay live through
+    /// the statements of the parts after it. Returns the names of each part's outputs.
+    pub fn body_in_parts(
+        &self,
+        out: &mut String,
+        parts: &[&[Id]],
+        inputs: Inputs,
+        mut close: impl FnMut(&mut String, usize, &[String]),
+    ) -> Vec<Vec<String>> {
         let g = self.g();
-        let plan = Plan::new(g, outputs);
+        let all: Vec<Id> = parts.iter().flat_map(|p| p.iter().copied()).collect();
+        let plan = Plan::new(g, &all);
         // Inputs first (only those read), then the nodes in order.
         for (i, _) in plan.emit.iter().enumerate().filter(|(_, &e)| e) {
             if let Node::Var(v) = g.node(Id::from_index(i)) {
@@ -235,21 +254,37 @@ impl<'a> Emitter<'a> {
         // Statements are untyped: every operand is an input local declared `__F64`, a literal
         // suffixed `f64` or an earlier statement, so each type is inferred, and the text has two
         // tokens fewer per statement (lexing this text is most of what expansion costs).
-        for id in plan.statements(g) {
-            out.push_str("let ");
-            local(out, id);
-            out.push_str(" = ");
-            self.expr(out, id, &plan);
-            out.push_str(";\n");
+        // Every node a part needs has an id at most that of the part's largest output (children
+        // come before parents), so writing the statements in id order up to it completes the
+        // part.
+        let mut statements = plan.statements(g).peekable();
+        let mut names = Vec::with_capacity(parts.len());
+        for (k, part) in parts.iter().enumerate() {
+            // The last part takes whatever is left.
+            let last = part.iter().max().copied().filter(|_| k + 1 < parts.len());
+            while let Some(&id) = statements.peek() {
+                if last.is_some_and(|l| id > l) {
+                    break;
+                }
+                out.push_str("let ");
+                local(out, id);
+                out.push_str(" = ");
+                self.expr(out, id, &plan);
+                out.push_str(";\n");
+                statements.next();
+            }
+            let part_names: Vec<String> = part
+                .iter()
+                .map(|&o| {
+                    let mut s = String::new();
+                    self.operand(&mut s, o);
+                    s
+                })
+                .collect();
+            close(out, k, &part_names);
+            names.push(part_names);
         }
-        outputs
-            .iter()
-            .map(|&o| {
-                let mut s = String::new();
-                self.operand(&mut s, o);
-                s
-            })
-            .collect()
+        names
     }
 }
 
@@ -444,12 +479,20 @@ impl Emitter<'_> {
             s,
             "#[inline]\nfn bundle_and_system(&self{ROUTH}) -> (__RouthBundle, __GyroscopicSystem) {{"
         );
-        let outs = self.body(s, &o.bundle_and_system().flatten(), r);
-        let f = BundleAndSystem::from_flat(outs);
-        s.push('(');
-        bundle_literal(s, &f.bundle);
-        s.push_str(", ");
-        system_literal(s, &f.system);
+        // The bundle is assembled into a local as soon as its statements are written, before
+        // those of A, G, C: its 36 values need not stay live through the rest.
+        let BundleAndSystem { bundle, system } = o.bundle_and_system();
+        let (bundle, system) = (bundle.flatten(), system.flatten());
+        let outs = self.body_in_parts(s, &[&bundle, &system], r, |s, k, names| {
+            if k == 0 {
+                s.push_str("let __bundle = ");
+                bundle_literal(s, &Bundle::from_flat(names.iter().cloned()));
+                s.push_str(";\n");
+            }
+        });
+        let system = Gyroscopic::from_flat(outs.into_iter().nth(1).unwrap_or_default());
+        s.push_str("(__bundle, ");
+        system_literal(s, &system);
         s.push_str(")\n}\n");
 
         let terms = EquationTerms {

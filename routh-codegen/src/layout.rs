@@ -246,7 +246,10 @@ mod tests {
     fn bundle_and_system_round_trips_in_field_order() {
         let f = BundleAndSystem::from_flat(0..63);
         assert_eq!((f.bundle.routhian, f.bundle.d2r_dgamma2[2][2]), (0, 35));
-        assert_eq!((f.system.a[0][0], f.system.g[0][0], f.system.c[2][2]), (36, 45, 62));
+        assert_eq!(
+            (f.system.a[0][0], f.system.g[0][0], f.system.c[2][2]),
+            (36, 45, 62)
+        );
         assert_eq!(f.flatten(), (0..63).collect::<Vec<_>>());
     }
 

@@ -339,7 +339,8 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dg0, &mx0, &h0);
     // The same formulas on the bundle itself, for `bundle_and_system` (17) and (64): built last,
     // so that the nodes of every other method keep their ids (and their generated text).
-    let (system_g, system_c) = gyroscopic(
+    let system_g = half_trace_skew(g, &gm, &bundle.d2r_domega_dgamma);
+    let (_, system_c) = gyroscopic(
         g,
         &gm,
         &bundle.dr_dgamma,
@@ -440,6 +441,17 @@ fn part(v: &[Id; 6], start: usize) -> V3 {
 /// `col`.
 fn block(h: &[[Id; 6]; 6], row: usize, col: usize) -> M3 {
     std::array::from_fn(|i| part(&h[row + i], col))
+}
+
+/// `G = ½(tr M)[γ]×` (see [`gyroscopic`]) written as `h_i = γ_i·(½ tr M)` and `−h_i`: one
+/// multiplication for ½ and one per component, where `g.mul` would pull the constant out of
+/// every entry (`0.5·(γ_i tr M)` and `(−0.5)·(γ_i tr M)`, two per component).
+fn half_trace_skew(g: &mut Graph, gm: &V3, mx: &M3) -> M3 {
+    let tr = g.sum([mx[0][0], mx[1][1], mx[2][2]]);
+    let h: V3 = gm.map(|gi| g.mul_scaled(gi, 0.5, tr));
+    let n: V3 = h.map(|hi| g.neg(hi));
+    let z = g.zero();
+    [[z, n[2], h[1]], [h[2], z, n[0]], [n[1], h[0], z]]
 }
 
 /// errata E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these
