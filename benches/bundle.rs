@@ -1,20 +1,24 @@
-//! Generated `bundle` vs a hand-written bundle vs num-dual Hessians of the same R
-//! (docs/performance.md).
+//! Generated `bundle_and_system` vs the expert's hand-written one vs num-dual Hessians of the
+//! same R (docs/performance.md).
 //!
 //! Every measured function evaluates all the outputs a caller of the analysis uses at one point:
-//! `bundle(Ω, γ, p_ψ)` (R, ψ̇, ∂R/∂Ω, ∂R/∂γ, ∂R/∂p_ψ and the three Hessian blocks) and then
-//! `GyroscopicSystem::from_bundle` (A, G, C). One iteration is one evaluation, cycling through 64
-//! precomputed random points, so criterion's time per iteration is ns/eval.
+//! the bundle (R, ψ̇, ∂R/∂Ω, ∂R/∂γ, ∂R/∂p_ψ and the three Hessian blocks) and A, G, C of (64)
+//! formed from it. One iteration is one evaluation, cycling through 64 precomputed random
+//! points, so criterion's time per iteration is ns/eval.
 //!
-//! - `M1_gyrostat/{generated,hand,numdual}`: gyrostat with full symmetric I, K, general B,
-//!   U = m g r·γ; `hand` is `test_models::hand_gyrostat_system` (every output of the bundle
-//!   written out by hand, then the same `from_bundle`, whose A, G, C are the closed form that
-//!   used to be written by hand beside it: the baseline of the generated `bundle`), `numdual` is
-//!   `test_models::numdual_bundle` (one second-order num-dual Hessian over (Ω, γ)).
-//! - `M2_ellipsoid/{generated,numdual}`: heavy ellipsoid on a plane with diagonal I.
+//! - `M1_gyrostat/{generated,hand,generated_composed,hand_composed,numdual}`: gyrostat with full
+//!   symmetric I, K, general B, U = m g r·γ. `generated` is the derived `bundle_and_system` (one
+//!   straight-line body); `hand` is `test_models::hand_gyrostat_bundle_and_system` (every output
+//!   written out by hand, A, G, C inline from its locals: the expert baseline);
+//!   `*_composed` are the same bundles followed by `GyroscopicSystem::from_bundle` (the path
+//!   every caller took before `bundle_and_system`, and the default for hand-written models);
+//!   `numdual` is `test_models::numdual_bundle` (one second-order num-dual Hessian over (Ω, γ))
+//!   then `from_bundle`.
+//! - `M2_ellipsoid/{generated,generated_composed,numdual}`: heavy ellipsoid on a plane with
+//!   diagonal I.
 //!
 //! After criterion, `same-run ratios` times every variant again in this process (interleaved,
-//! median of 31 samples) and prints the ratios.
+//! median of 301 samples) and prints the ratios.
 
 mod common;
 
@@ -24,7 +28,7 @@ use std::time::Instant;
 use common::Point;
 use criterion::{criterion_group, BenchmarkGroup, Criterion};
 use routh::{GyroscopicSystem, RouthBundle, Routhian};
-use test_models::{hand_gyrostat_system, numdual_bundle};
+use test_models::{hand_gyrostat_bundle_and_system, hand_gyrostat_system, numdual_bundle};
 
 const N_POINTS: usize = 64;
 
@@ -63,9 +67,16 @@ impl Setup {
     }
 
     fn m1_generated(&self, pt: &Point) -> Output {
-        with_system(self.m1.bundle(&pt.big_omega, &pt.gamma, pt.p_psi), pt)
+        self.m1
+            .bundle_and_system(&pt.big_omega, &pt.gamma, pt.p_psi)
     }
     fn m1_hand(&self, pt: &Point) -> Output {
+        hand_gyrostat_bundle_and_system(&self.m1_twin, &pt.big_omega, &pt.gamma, pt.p_psi)
+    }
+    fn m1_generated_composed(&self, pt: &Point) -> Output {
+        with_system(self.m1.bundle(&pt.big_omega, &pt.gamma, pt.p_psi), pt)
+    }
+    fn m1_hand_composed(&self, pt: &Point) -> Output {
         hand_gyrostat_system(&self.m1_twin, &pt.big_omega, &pt.gamma, pt.p_psi)
     }
     fn m1_numdual(&self, pt: &Point) -> Output {
@@ -75,6 +86,10 @@ impl Setup {
         )
     }
     fn m2_generated(&self, pt: &Point) -> Output {
+        self.m2
+            .bundle_and_system(&pt.big_omega, &pt.gamma, pt.p_psi)
+    }
+    fn m2_generated_composed(&self, pt: &Point) -> Output {
         with_system(self.m2.bundle(&pt.big_omega, &pt.gamma, pt.p_psi), pt)
     }
     fn m2_numdual(&self, pt: &Point) -> Output {
@@ -116,22 +131,37 @@ impl Setup {
             let m1 = self.m1_numdual(pt);
             assert_close("M1 generated", &self.m1_generated(pt), &m1);
             assert_close("M1 hand", &self.m1_hand(pt), &m1);
-            assert_close("M2 generated", &self.m2_generated(pt), &self.m2_numdual(pt));
+            assert_close(
+                "M1 generated composed",
+                &self.m1_generated_composed(pt),
+                &m1,
+            );
+            assert_close("M1 hand composed", &self.m1_hand_composed(pt), &m1);
+            let m2 = self.m2_numdual(pt);
+            assert_close("M2 generated", &self.m2_generated(pt), &m2);
+            assert_close(
+                "M2 generated composed",
+                &self.m2_generated_composed(pt),
+                &m2,
+            );
         }
     }
 }
 
-/// One measured function: a bundle of one model at one point, then `from_bundle`.
+/// One measured function: the bundle and A, G, C of one model at one point.
 type Eval = fn(&Setup, &Point) -> Output;
 type Variant = (&'static str, Eval);
 
-const M1_VARIANTS: [Variant; 3] = [
+const M1_VARIANTS: [Variant; 5] = [
     ("generated", Setup::m1_generated),
     ("hand", Setup::m1_hand),
+    ("generated_composed", Setup::m1_generated_composed),
+    ("hand_composed", Setup::m1_hand_composed),
     ("numdual", Setup::m1_numdual),
 ];
-const M2_VARIANTS: [Variant; 2] = [
+const M2_VARIANTS: [Variant; 3] = [
     ("generated", Setup::m2_generated),
+    ("generated_composed", Setup::m2_generated_composed),
     ("numdual", Setup::m2_numdual),
 ];
 
@@ -210,17 +240,44 @@ fn same_run_ratios() {
     println!();
     println!(
         "same-run ratios ({SAMPLES} interleaved samples of ~{:.0} us each; \
-         ns per bundle + from_bundle):",
+         ns per bundle + A, G, C):",
         SAMPLE_NS / 1e3
     );
-    println!("  {:<16} {:>10} {:>10}", "", "median", "min");
+    println!("  {:<24} {:>10} {:>10}", "", "median", "min");
     for (i, (name, _)) in variants.iter().enumerate() {
-        println!("  {name:<16} {:>10.1} {:>10.1}", med[i], min[i]);
+        println!("  {name:<24} {:>10.1} {:>10.1}", med[i], min[i]);
     }
     for (label, num, den) in [
-        ("M1 generated / hand    ", "M1 generated", "M1 hand"),
-        ("M2 num-dual / generated", "M2 numdual", "M2 generated"),
-        ("M1 num-dual / generated", "M1 numdual", "M1 generated"),
+        (
+            "M1 generated / hand                  ",
+            "M1 generated",
+            "M1 hand",
+        ),
+        (
+            "M1 generated composed / hand         ",
+            "M1 generated_composed",
+            "M1 hand",
+        ),
+        (
+            "M1 hand composed / hand              ",
+            "M1 hand_composed",
+            "M1 hand",
+        ),
+        (
+            "M2 generated composed / generated    ",
+            "M2 generated_composed",
+            "M2 generated",
+        ),
+        (
+            "M2 num-dual / generated              ",
+            "M2 numdual",
+            "M2 generated",
+        ),
+        (
+            "M1 num-dual / generated              ",
+            "M1 numdual",
+            "M1 generated",
+        ),
     ] {
         let (n, d) = (idx(num), idx(den));
         println!(

@@ -38,6 +38,8 @@ fn main() {
         );
         println!("  bundle             {}", op_counts(g, &bundle));
         println!("  gyroscopic_system  {}", op_counts(g, &gyro));
+        let fused = o.bundle_and_system().flatten();
+        println!("  bundle_and_system  {}", op_counts(g, &fused));
         println!("  routhian           {}", op_counts(g, &[o.routhian]));
         println!("  lagrangian         {}", op_counts(g, &[o.lagrangian]));
     }

@@ -8,7 +8,7 @@ use common::{close, m, s, v};
 use derived_models::{Ellipsoid, Gyrostat};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use routh::{Lagrangian, Routhian, Vector3};
+use routh::{GyroscopicSystem, Lagrangian, Matrix3, Routhian, Vector3};
 
 const POINTS: usize = 150;
 
@@ -159,6 +159,112 @@ fn check_routhian<G: Routhian, H: Routhian + test_models::GenericModel>(
     worst
 }
 
+/// The generated `bundle_and_system` (one straight-line body for the bundle and A, G, C of (64))
+/// against, at every point: the generated `bundle` followed by `GyroscopicSystem::from_bundle`
+/// (to round-off: the same formulas, evaluated through memory instead of registers); the
+/// matrix products of errata E6 on the num-dual bundle of the twin, `A = ∂²R/∂Ω²`,
+/// `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×`, `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` (normwise, `tol`); and at
+/// `Ω = 0`, where (64) is the linearisation, the generated `gyroscopic_system` (a separate body
+/// specialised at rest).
+fn check_fused<G: Routhian, H: Routhian + test_models::GenericModel>(
+    gen: &G,
+    reference: &H,
+    rng: &mut ChaCha8Rng,
+    tol: f64,
+) -> f64 {
+    let mut worst = 0.0f64;
+    for k in 0..POINTS {
+        let g = test_models::random_gamma(rng);
+        let p = rng.gen_range(-5.0..5.0);
+        // Every other point at rest.
+        let w = if k % 2 == 0 {
+            Vector3::zeros()
+        } else {
+            test_models::random_vector(rng, 2.0)
+        };
+        let (fb, fs) = gen.bundle_and_system(&w, &g, p);
+        let b = gen.bundle(&w, &g, p);
+        let composed = GyroscopicSystem::from_bundle(&b, &g);
+        let nd = test_models::numdual_bundle(reference, &w, &g, p);
+        let gx = g.cross_matrix();
+        let mx = nd.d2r_domega_dgamma;
+        let want_g = 0.5 * (mx * gx + gx * mx.transpose() - nd.dr_domega.cross_matrix());
+        let mu = nd.dr_dgamma.dot(&g);
+        let want_c = gx.transpose() * (Matrix3::from_diagonal_element(mu) - nd.d2r_dgamma2) * gx;
+        let round_off = 1e-14;
+        let mut checks: Vec<(&str, Vec<f64>, Vec<f64>, f64)> = vec![
+            ("R vs bundle", s(fb.routhian), s(b.routhian), round_off),
+            ("psi_dot vs bundle", s(fb.psi_dot), s(b.psi_dot), round_off),
+            (
+                "dR/dΩ vs bundle",
+                v(fb.dr_domega),
+                v(b.dr_domega),
+                round_off,
+            ),
+            (
+                "dR/dγ vs bundle",
+                v(fb.dr_dgamma),
+                v(b.dr_dgamma),
+                round_off,
+            ),
+            ("dR/dp vs bundle", s(fb.dr_dp), s(b.dr_dp), round_off),
+            (
+                "d2R/dΩ2 vs bundle",
+                m(fb.d2r_domega2),
+                m(b.d2r_domega2),
+                round_off,
+            ),
+            (
+                "d2R/dΩdγ vs bundle",
+                m(fb.d2r_domega_dgamma),
+                m(b.d2r_domega_dgamma),
+                round_off,
+            ),
+            (
+                "d2R/dγ2 vs bundle",
+                m(fb.d2r_dgamma2),
+                m(b.d2r_dgamma2),
+                round_off,
+            ),
+            ("A vs from_bundle", m(fs.a), m(composed.a), round_off),
+            ("G vs from_bundle", m(fs.g), m(composed.g), round_off),
+            ("C vs from_bundle", m(fs.c), m(composed.c), round_off),
+            ("R vs num-dual", s(fb.routhian), s(nd.routhian), tol),
+            ("dR/dγ vs num-dual", v(fb.dr_dgamma), v(nd.dr_dgamma), tol),
+            (
+                "d2R/dΩdγ vs num-dual",
+                m(fb.d2r_domega_dgamma),
+                m(nd.d2r_domega_dgamma),
+                tol,
+            ),
+            ("A vs num-dual", m(fs.a), m(nd.d2r_domega2), tol),
+            ("G vs num-dual (E6)", m(fs.g), m(want_g), tol),
+            ("C vs num-dual (E6)", m(fs.c), m(want_c), tol),
+        ];
+        if k % 2 == 0 {
+            let rest = gen.gyroscopic_system(&g, p);
+            checks.push(("A vs gyroscopic_system", m(fs.a), m(rest.a), tol));
+            checks.push(("G vs gyroscopic_system", m(fs.g), m(rest.g), tol));
+            checks.push(("C vs gyroscopic_system", m(fs.c), m(rest.c), tol));
+        }
+        for (name, a, b, t) in checks {
+            let e = close(&a, &b, t, 1e-12)
+                .unwrap_or_else(|e| panic!("{name} at Ω={w:?} γ={g:?} p={p}: {e}"));
+            worst = worst.max(e);
+        }
+        // The structure of (64): G skew, C symmetric, both annihilate γ (errata E5).
+        assert_eq!(fs.g, -fs.g.transpose());
+        assert_eq!(fs.c, fs.c.transpose());
+        // Round-off relative to the sizes of the terms: |tr M|·|γ|² for Gγ, and for Cγ
+        // ‖μE − ∂²R/∂γ²‖·|γ|³ (C is a sandwich of that matrix and may be much smaller).
+        let g_scale = fs.g.amax() * g.norm();
+        let c_scale = (mu.abs() + fb.d2r_dgamma2.amax()) * g.norm_squared() * g.norm();
+        assert!((fs.g * g).amax() <= 1e-14 * g_scale, "Gγ = {}", fs.g * g);
+        assert!((fs.c * g).amax() <= 1e-13 * c_scale, "Cγ = {}", fs.c * g);
+    }
+    worst
+}
+
 /// Runs `check` on four random twins drawn by `twin` (seeded with `seed`), each against its
 /// derived model, and reports the worst error.
 fn over_random_twins<T, G>(
@@ -199,6 +305,16 @@ fn gyrostat_routhian_matches_numdual() {
 #[test]
 fn ellipsoid_routhian_matches_numdual() {
     over_random_twins::<_, Ellipsoid>(4, test_models::Ellipsoid::random, check_routhian, 1e-12);
+}
+
+#[test]
+fn gyrostat_bundle_and_system_matches_numdual_and_the_composed_path() {
+    over_random_twins::<_, Gyrostat>(9, test_models::Gyrostat::random, check_fused, 1e-12);
+}
+
+#[test]
+fn ellipsoid_bundle_and_system_matches_numdual_and_the_composed_path() {
+    over_random_twins::<_, Ellipsoid>(10, test_models::Ellipsoid::random, check_fused, 1e-12);
 }
 
 /// The generated one-body vector-field terms, `full_equations` (8) and `reduced_equations` (13),

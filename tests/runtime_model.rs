@@ -150,6 +150,17 @@ fn compare<A: Routhian, B: Routhian>(
         check("A", m(ga.a), m(gb.a));
         check("G", m(ga.g), m(gb.g));
         check("C", m(ga.c), m(gb.c));
+        // bundle_and_system: the trait's default (bundle, then from_bundle) on one side, the
+        // derive's fused body on the other.
+        let ((fa, sa), (fb, sb)) = (
+            a.bundle_and_system(&w, &g, p),
+            b.bundle_and_system(&w, &g, p),
+        );
+        check("fused bundle dR/dγ", v(fa.dr_dgamma), v(fb.dr_dgamma));
+        check("fused bundle d2R/dγ2", m(fa.d2r_dgamma2), m(fb.d2r_dgamma2));
+        check("fused A", m(sa.a), m(sb.a));
+        check("fused G", m(sa.g), m(sb.g));
+        check("fused C", m(sa.c), m(sb.c));
         let (ea, eb) = (
             a.reduced_equations(&w, &g, p),
             b.reduced_equations(&w, &g, p),

@@ -16,7 +16,7 @@
 
 use crate::equations::Equations;
 use crate::inertia::RankOne;
-use crate::layout::{Bundle, EquationTerms, Gyroscopic};
+use crate::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic};
 use crate::lower::{Access, Symbols};
 use crate::reduce::{Outputs, M3, V3};
 use routh_symbolic::{Func, Graph, Id, Node, Plan, Var};
@@ -220,8 +220,27 @@ impl<'a> Emitter<'a> {
 
     /// Writes the statements computing `outputs`; returns the text naming each output.
     pub fn body(&self, out: &mut String, outputs: &[Id], inputs: Inputs) -> Vec<String> {
+        self.body_in_parts(out, &[outputs], inputs, |_, _, _| {})
+            .into_iter()
+            .flatten()
+            .collect()
+    }
+
+    /// [`Emitter::body`] for outputs given in parts, with `close(out, k, names)` called as soon
+    /// as the statements of part `k` are written (before those that only later parts need):
+    /// one plan, so every shared value is still computed once, but a caller can assemble part
+    /// `k` (a struct literal into a local) there, so that its values need not stay live through
+    /// the statements of the parts after it. Returns the names of each part's outputs.
+    pub fn body_in_parts(
+        &self,
+        out: &mut String,
+        parts: &[&[Id]],
+        inputs: Inputs,
+        mut close: impl FnMut(&mut String, usize, &[String]),
+    ) -> Vec<Vec<String>> {
         let g = self.g();
-        let plan = Plan::new(g, outputs);
+        let all: Vec<Id> = parts.iter().flat_map(|p| p.iter().copied()).collect();
+        let plan = Plan::new(g, &all);
         // Inputs first (only those read), then the nodes in order.
         for (i, _) in plan.emit.iter().enumerate().filter(|(_, &e)| e) {
             if let Node::Var(v) = g.node(Id::from_index(i)) {
@@ -235,21 +254,37 @@ impl<'a> Emitter<'a> {
         // Statements are untyped: every operand is an input local declared `__F64`, a literal
         // suffixed `f64` or an earlier statement, so each type is inferred, and the text has two
         // tokens fewer per statement (lexing this text is most of what expansion costs).
-        for id in plan.statements(g) {
-            out.push_str("let ");
-            local(out, id);
-            out.push_str(" = ");
-            self.expr(out, id, &plan);
-            out.push_str(";\n");
+        // Every node a part needs has an id at most that of the part's largest output (children
+        // come before parents), so writing the statements in id order up to it completes the
+        // part.
+        let mut statements = plan.statements(g).peekable();
+        let mut names = Vec::with_capacity(parts.len());
+        for (k, part) in parts.iter().enumerate() {
+            // The last part takes whatever is left.
+            let last = part.iter().max().copied().filter(|_| k + 1 < parts.len());
+            while let Some(&id) = statements.peek() {
+                if last.is_some_and(|l| id > l) {
+                    break;
+                }
+                out.push_str("let ");
+                local(out, id);
+                out.push_str(" = ");
+                self.expr(out, id, &plan);
+                out.push_str(";\n");
+                statements.next();
+            }
+            let part_names: Vec<String> = part
+                .iter()
+                .map(|&o| {
+                    let mut s = String::new();
+                    self.operand(&mut s, o);
+                    s
+                })
+                .collect();
+            close(out, k, &part_names);
+            names.push(part_names);
         }
-        outputs
-            .iter()
-            .map(|&o| {
-                let mut s = String::new();
-                self.operand(&mut s, o);
-                s
-            })
-            .collect()
+        names
     }
 }
 
@@ -263,6 +298,36 @@ fn construct(out: &mut String, ty: &str, t: &[String]) {
 
 fn flat_m(m: &M3) -> Vec<Id> {
     m.iter().flatten().copied().collect()
+}
+
+/// `__RouthBundle { .. }` from the tokens naming each output.
+fn bundle_literal(s: &mut String, b: &Bundle<String>) {
+    let _ = write!(
+        s,
+        "__RouthBundle {{\nrouthian: {},\npsi_dot: {},\ndr_domega: ",
+        b.routhian, b.psi_dot
+    );
+    construct(s, "__Vector3", &b.dr_domega);
+    s.push_str(",\ndr_dgamma: ");
+    construct(s, "__Vector3", &b.dr_dgamma);
+    let _ = write!(s, ",\ndr_dp: {},\nd2r_domega2: ", b.dr_dp);
+    construct(s, "__Matrix3", b.d2r_domega2.as_flattened());
+    s.push_str(",\nd2r_domega_dgamma: ");
+    construct(s, "__Matrix3", b.d2r_domega_dgamma.as_flattened());
+    s.push_str(",\nd2r_dgamma2: ");
+    construct(s, "__Matrix3", b.d2r_dgamma2.as_flattened());
+    s.push_str(",\n}");
+}
+
+/// `__GyroscopicSystem { .. }` from the tokens naming `A`, `G`, `C`.
+fn system_literal(s: &mut String, m: &Gyroscopic<String>) {
+    s.push_str("__GyroscopicSystem {\na: ");
+    construct(s, "__Matrix3", m.a.as_flattened());
+    s.push_str(",\ng: ");
+    construct(s, "__Matrix3", m.g.as_flattened());
+    s.push_str(",\nc: ");
+    construct(s, "__Matrix3", m.c.as_flattened());
+    s.push_str(",\n}");
 }
 
 /// One generated method: outputs, then how to assemble them.
@@ -398,36 +463,37 @@ impl Emitter<'_> {
         // bundle: every output from one straight-line body.
         let _ = writeln!(s, "#[inline]\nfn bundle(&self{ROUTH}) -> __RouthBundle {{");
         let outs = self.body(s, &o.bundle().flatten(), r);
-        let b = Bundle::from_flat(outs);
-        let _ = write!(
-            s,
-            "__RouthBundle {{\nrouthian: {},\npsi_dot: {},\ndr_domega: ",
-            b.routhian, b.psi_dot
-        );
-        construct(s, "__Vector3", &b.dr_domega);
-        s.push_str(",\ndr_dgamma: ");
-        construct(s, "__Vector3", &b.dr_dgamma);
-        let _ = write!(s, ",\ndr_dp: {},\nd2r_domega2: ", b.dr_dp);
-        construct(s, "__Matrix3", b.d2r_domega2.as_flattened());
-        s.push_str(",\nd2r_domega_dgamma: ");
-        construct(s, "__Matrix3", b.d2r_domega_dgamma.as_flattened());
-        s.push_str(",\nd2r_dgamma2: ");
-        construct(s, "__Matrix3", b.d2r_dgamma2.as_flattened());
-        s.push_str(",\n}\n}\n");
+        bundle_literal(s, &Bundle::from_flat(outs));
+        s.push_str("\n}\n");
 
         let _ = writeln!(
             s,
             "#[inline]\nfn gyroscopic_system(&self{REST}) -> __GyroscopicSystem {{"
         );
         let outs = self.body(s, &o.gyroscopic().flatten(), r);
-        let m = Gyroscopic::from_flat(outs);
-        s.push_str("__GyroscopicSystem {\na: ");
-        construct(s, "__Matrix3", m.a.as_flattened());
-        s.push_str(",\ng: ");
-        construct(s, "__Matrix3", m.g.as_flattened());
-        s.push_str(",\nc: ");
-        construct(s, "__Matrix3", m.c.as_flattened());
-        s.push_str(",\n}\n}\n");
+        system_literal(s, &Gyroscopic::from_flat(outs));
+        s.push_str("\n}\n");
+
+        // bundle_and_system: the bundle and A, G, C of (64) built from its nodes, one body.
+        let _ = writeln!(
+            s,
+            "#[inline]\nfn bundle_and_system(&self{ROUTH}) -> (__RouthBundle, __GyroscopicSystem) {{"
+        );
+        // The bundle is assembled into a local as soon as its statements are written, before
+        // those of A, G, C: its 36 values need not stay live through the rest.
+        let BundleAndSystem { bundle, system } = o.bundle_and_system();
+        let (bundle, system) = (bundle.flatten(), system.flatten());
+        let outs = self.body_in_parts(s, &[&bundle, &system], r, |s, k, names| {
+            if k == 0 {
+                s.push_str("let __bundle = ");
+                bundle_literal(s, &Bundle::from_flat(names.iter().cloned()));
+                s.push_str(";\n");
+            }
+        });
+        let system = Gyroscopic::from_flat(outs.into_iter().nth(1).unwrap_or_default());
+        s.push_str("(__bundle, ");
+        system_literal(s, &system);
+        s.push_str(")\n}\n");
 
         let terms = EquationTerms {
             inertia: o.d2l_domega2,

@@ -1,6 +1,7 @@
 //! The layouts of the methods that return many outputs from one straight-line body,
-//! `Routhian::bundle`, `Routhian::gyroscopic_system`, `Lagrangian::full_equations` and
-//! `Routhian::reduced_equations`: which output is which, by name.
+//! `Routhian::bundle`, `Routhian::gyroscopic_system`, `Routhian::bundle_and_system`,
+//! `Lagrangian::full_equations` and `Routhian::reduced_equations`: which output is which, by
+//! name.
 //!
 //! [`reduce`](crate::reduce) derives the outputs as nodes and [`emit`](crate::emit) writes one
 //! body for all of them, which hands back one token per node in the order it was given. Both
@@ -94,6 +95,42 @@ impl<T> Gyroscopic<T> {
             a: take33(it),
             g: take33(it),
             c: take33(it),
+        })
+    }
+}
+
+/// The number of scalars of a [`Bundle`]: R, ψ̇, two 3-vectors, ∂R/∂p_ψ and three 3×3 blocks.
+const BUNDLE_LEN: usize = 2 + 3 + 3 + 1 + 3 * 9;
+/// The number of scalars of a [`Gyroscopic`].
+const GYROSCOPIC_LEN: usize = 3 * 9;
+
+/// What `Routhian::bundle_and_system` returns: the bundle at `(Ω, γ, p_ψ)` and `A`, `G`, `C`
+/// of (64) formed from it, in the order of the tuple `(routh::RouthBundle,
+/// routh::GyroscopicSystem)`.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub struct BundleAndSystem<T> {
+    /// The 36 scalars of the bundle.
+    pub bundle: Bundle<T>,
+    /// The 27 scalars of `A`, `G`, `C`.
+    pub system: Gyroscopic<T>,
+}
+
+impl<T> BundleAndSystem<T> {
+    /// The scalars in layout order: [`Bundle::flatten`], then [`Gyroscopic::flatten`].
+    pub fn flatten(self) -> Vec<T> {
+        let mut out = self.bundle.flatten();
+        out.extend(self.system.flatten());
+        out
+    }
+
+    /// The inverse of [`BundleAndSystem::flatten`].
+    ///
+    /// # Panics
+    /// If `flat` does not hold exactly 36 + 27 scalars.
+    pub fn from_flat(flat: impl IntoIterator<Item = T>) -> Self {
+        read_exactly(flat, |it| BundleAndSystem {
+            bundle: Bundle::from_flat(it.by_ref().take(BUNDLE_LEN)),
+            system: Gyroscopic::from_flat(it.by_ref().take(GYROSCOPIC_LEN)),
         })
     }
 }
@@ -203,6 +240,29 @@ mod tests {
         let s = Gyroscopic::from_flat(0..27);
         assert_eq!((s.a[0][1], s.g[0][0], s.c[2][2]), (1, 9, 26));
         assert_eq!(s.flatten(), (0..27).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn bundle_and_system_round_trips_in_field_order() {
+        let f = BundleAndSystem::from_flat(0..63);
+        assert_eq!((f.bundle.routhian, f.bundle.d2r_dgamma2[2][2]), (0, 35));
+        assert_eq!(
+            (f.system.a[0][0], f.system.g[0][0], f.system.c[2][2]),
+            (36, 45, 62)
+        );
+        assert_eq!(f.flatten(), (0..63).collect::<Vec<_>>());
+    }
+
+    #[test]
+    #[should_panic(expected = "fewer scalars")]
+    fn a_short_fused_run_is_a_bug() {
+        let _ = BundleAndSystem::from_flat(0..62);
+    }
+
+    #[test]
+    #[should_panic(expected = "more scalars")]
+    fn a_long_fused_run_is_a_bug() {
+        let _ = BundleAndSystem::from_flat(0..64);
     }
 
     #[test]

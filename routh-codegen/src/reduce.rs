@@ -2,7 +2,7 @@
 //! impls, derived symbolically from `L = kinetic + linear − potential` for any model the DSL
 //! accepts (paper (8)–(19), section 5, with errata E4–E6).
 
-use crate::layout::{Bundle, Gyroscopic};
+use crate::layout::{Bundle, BundleAndSystem, Gyroscopic};
 use crate::lower::Lowered;
 use routh_symbolic::shape::{dot3, matmul3, skew3, transpose3};
 use routh_symbolic::{degree, extra_cost, Degree, Graph, Id, Var};
@@ -46,6 +46,12 @@ pub struct Outputs {
     pub gyro_a: M3,
     pub gyro_g: M3,
     pub gyro_c: M3,
+    /// `G` of (64) formed from the bundle's own nodes at `(Ω, γ, p_ψ)` (not substituted at
+    /// rest): what `GyroscopicSystem::from_bundle` forms from `bundle`, for
+    /// `bundle_and_system`. Its `A` is [`Outputs::d2r_domega2`].
+    pub system_g: M3,
+    /// `C` of (64) formed from the bundle's own nodes, as [`Outputs::system_g`].
+    pub system_c: M3,
 }
 
 /// `∂f/∂x_i` for the three variables `x`.
@@ -105,6 +111,19 @@ impl Outputs {
     /// The outputs of `bundle`, in the order of [`Bundle::flatten`].
     pub fn bundle_ids(&self) -> Vec<Id> {
         self.bundle().flatten()
+    }
+
+    /// The outputs of `bundle_and_system`, by name: the bundle, then `A`, `G`, `C` of (64)
+    /// built from its nodes in the same graph.
+    pub fn bundle_and_system(&self) -> BundleAndSystem<Id> {
+        BundleAndSystem {
+            bundle: self.bundle(),
+            system: Gyroscopic {
+                a: self.d2r_domega2,
+                g: self.system_g,
+                c: self.system_c,
+            },
+        }
     }
 
     /// The outputs of `gyroscopic_system`, by name.
@@ -318,6 +337,16 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     } = Bundle::from_flat(subst_vec(g, &rest.flatten(), &at_rest));
     let amended_potential = g.neg(r0);
     let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dg0, &mx0, &h0);
+    // The same formulas on the bundle itself, for `bundle_and_system` (17) and (64): built last,
+    // so that the nodes of every other method keep their ids (and their generated text).
+    let system_g = half_trace_skew(g, &gm, &bundle.d2r_domega_dgamma);
+    let (_, system_c) = gyroscopic(
+        g,
+        &gm,
+        &bundle.dr_dgamma,
+        &bundle.d2r_domega_dgamma,
+        &bundle.d2r_dgamma2,
+    );
 
     Outputs {
         lagrangian,
@@ -342,6 +371,8 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
         gyro_a: a0,
         gyro_g,
         gyro_c,
+        system_g,
+        system_c,
     }
 }
 
@@ -410,6 +441,17 @@ fn part(v: &[Id; 6], start: usize) -> V3 {
 /// `col`.
 fn block(h: &[[Id; 6]; 6], row: usize, col: usize) -> M3 {
     std::array::from_fn(|i| part(&h[row + i], col))
+}
+
+/// `G = ½(tr M)[γ]×` (see [`gyroscopic`]) written as `h_i = γ_i·(½ tr M)` and `−h_i`: one
+/// multiplication for ½ and one per component, where `g.mul` would pull the constant out of
+/// every entry (`0.5·(γ_i tr M)` and `(−0.5)·(γ_i tr M)`, two per component).
+fn half_trace_skew(g: &mut Graph, gm: &V3, mx: &M3) -> M3 {
+    let tr = g.sum([mx[0][0], mx[1][1], mx[2][2]]);
+    let h: V3 = gm.map(|gi| g.mul_scaled(gi, 0.5, tr));
+    let n: V3 = h.map(|hi| g.neg(hi));
+    let z = g.zero();
+    [[z, n[2], h[1]], [h[2], z, n[0]], [n[1], h[0], z]]
 }
 
 /// errata E6: `2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×` and `C = [γ]×ᵀ(μE − H)[γ]×`, μ = (∂R/∂γ, γ); these

@@ -159,6 +159,10 @@ impl GyroscopicSystem {
     ///   bundle that violates (17) is not the derivatives of a Routh function;
     /// - `C = [γ]×ᵀ K [γ]×`, `K = μE − ∂²R/∂γ²`, as `Y = K[γ]×` and `C = [γ]×ᵀY` with the zeros of
     ///   `[γ]×` skipped and only the upper triangle of the symmetric `C` formed.
+    ///
+    /// `#[inline]`: a caller in another crate (the default [`Routhian::bundle_and_system`], a
+    /// bench) would otherwise call it out of line and reload the bundle from memory.
+    #[inline]
     pub fn from_bundle(bundle: &RouthBundle, gamma: &Vector3<f64>) -> Self {
         let (g0, g1, g2) = (gamma.x, gamma.y, gamma.z);
         let m = &bundle.d2r_domega_dgamma;
@@ -255,6 +259,86 @@ pub trait Routhian: Lagrangian {
             d2r_domega_dgamma: self.d2r_domega_dgamma(big_omega, gamma, p_psi),
             d2r_dgamma2: self.d2r_dgamma2(big_omega, gamma, p_psi),
         }
+    }
+    /// [`Routhian::bundle`] and the matrices `A`, `G`, `C` of (64) formed from it, from one
+    /// evaluation: what [`classify`](crate::classify) needs at a steady motion (call it with
+    /// `Ω = 0`, where (64) is the linearisation, errata E5–E6).
+    ///
+    /// The system is [`GyroscopicSystem::from_bundle`] of the bundle at the same point:
+    /// `A = ∂²R/∂Ω²`, `2G = (tr M)[γ]×` with `M = ∂²R/∂Ω∂γ` (by Theorem 2's identity (17),
+    /// `(∂R/∂Ω, γ) ≡ p_ψ`, differentiated by γ: `Mᵀγ = −∂R/∂Ω`), and
+    /// `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with `μ = (∂R/∂γ, γ)`. At `Ω ≠ 0` the same formulas are
+    /// applied to the bundle there.
+    ///
+    /// The default is exactly `bundle` then `from_bundle`, so a hand-written model (or
+    /// `routh::Model`) gets it for free; `#[derive(Lagrangian)]` emits one straight-line body
+    /// for all 62 outputs, with `A`, `G`, `C` formed from the values the bundle already holds
+    /// in registers.
+    ///
+    /// ```
+    /// # use routh_core::{GyroscopicSystem, Lagrangian, Routhian, Matrix3, Vector3};
+    /// # struct Free;
+    /// # fn j() -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(2.0, 2.0, 1.0)) }
+    /// # impl Lagrangian for Free {
+    /// #     fn lagrangian(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> f64 {
+    /// #         0.5 * w.dot(&(j() * w))
+    /// #     }
+    /// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { j() * w }
+    /// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+    /// #         Vector3::zeros()
+    /// #     }
+    /// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { j() }
+    /// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+    /// #         Matrix3::zeros()
+    /// #     }
+    /// # }
+    /// # impl Routhian for Free {
+    /// #     fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
+    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+    /// #         0.5 * w.dot(&(j() * w)) - 0.5 * q * q / n
+    /// #     }
+    /// #     fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+    /// #         j() * w + (q / n) * (j() * g)
+    /// #     }
+    /// #     fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
+    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+    /// #         (q / n) * (j() * w) + (q * q / (n * n)) * (j() * g)
+    /// #     }
+    /// #     fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
+    /// #         let n = g.dot(&(j() * g));
+    /// #         j() - (j() * g) * (j() * g).transpose() / n
+    /// #     }
+    /// #     fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+    /// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
+    /// #         (j() * g) * dqn.transpose() + (q / n) * j()
+    /// #     }
+    /// #     fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
+    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
+    /// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
+    /// #         (j() * w) * dqn.transpose() + (q * q / (n * n)) * j()
+    /// #             + (2.0 * q / n) * (j() * g) * dqn.transpose()
+    /// #     }
+    /// # }
+    /// // A free symmetric body J = diag(2, 2, 1) spinning about its axis, p_ψ = 1.
+    /// let gamma = Vector3::z();
+    /// let (bundle, system) = Free.bundle_and_system(&Vector3::zeros(), &gamma, 1.0);
+    /// assert_eq!(system, GyroscopicSystem::from_bundle(&bundle, &gamma));
+    /// // ψ̇ = p_ψ/(γᵀJγ) = 1 (38); M = ψ̇J − 2ψ̇ (Jγ)(Jγ)ᵀ/(γᵀJγ) has trace 5 − 2 = 3, and
+    /// // 2G = (tr M)[γ]×, so G₂₁ = 3/2.
+    /// assert_eq!(bundle.psi_dot, 1.0);
+    /// assert!((system.g[(1, 0)] - 1.5).abs() < 1e-15);
+    /// ```
+    fn bundle_and_system(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> (RouthBundle, GyroscopicSystem) {
+        let bundle = self.bundle(big_omega, gamma, p_psi);
+        let system = GyroscopicSystem::from_bundle(&bundle, gamma);
+        (bundle, system)
     }
     /// The amended potential (34): `U_r(γ, p_ψ) = −R(0, γ, p_ψ)`.
     fn amended_potential(&self, gamma: &Vector3<f64>, p_psi: f64) -> f64 {

@@ -9,7 +9,7 @@ use nalgebra::{Complex, Matrix2, Vector3};
 
 use crate::error::RouthError;
 use crate::krein::krein_signatures;
-use crate::model::Routhian;
+use crate::model::{GyroscopicSystem, Routhian};
 use crate::sphere::{sym2_eigen, tangent_basis, Tangential};
 use crate::steady::SteadyMotion;
 use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
@@ -148,7 +148,8 @@ impl fmt::Display for StabilityReport {
 ///    [`StabilityReport::restricted_hessian_eigenvalues`]; the number of negative ones is the
 ///    degree of instability (section 5).
 /// 2. The characteristic polynomial of the linearised reduced system (65) on the tangent plane is
-///    `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` with `A`, `G`, `C` of [`Routhian::gyroscopic_system`]
+///    `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` with `A`, `G`, `C` of [`Routhian::gyroscopic_system`],
+///    here from the same evaluation as step 1 ([`Routhian::bundle_and_system`] at `Ω = 0`)
 ///    (errata E5: the printed 3×3 `f(λ)` of (64) vanishes identically). With `a = PᵀAP`,
 ///    `c = PᵀCP` symmetric and `PᵀGP = [[0, g], [−g, 0]]`, it is the even quartic
 ///    `f₂(λ) = c₄λ⁴ + c₂λ² + c₀`, `c₄ = det a`, `c₂ = a₁₁c₂₂ + a₂₂c₁₁ − 2a₁₂c₁₂ + 4g²`,
@@ -271,14 +272,27 @@ pub fn classify_with<M: Routhian>(
     steady: &SteadyMotion,
     opts: &ClassifyOptions,
 ) -> Result<StabilityReport, RouthError> {
+    classify_parts(model, steady, opts).map(|(report, _)| report)
+}
+
+/// [`classify_with`], with the tangent-plane parts of (64) it found (for the Krein signatures).
+///
+/// The model is evaluated once: [`Routhian::bundle_and_system`] at `Ω = 0` gives both the
+/// derivatives of (62)–(63) and `A`, `G`, `C` of (64).
+fn classify_parts<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    opts: &ClassifyOptions,
+) -> Result<(StabilityReport, F2Parts), RouthError> {
     opts.validate()?;
     let p_psi = steady.p_psi;
     check_finite("steady.p_psi", &[p_psi])?;
     let gamma = unit_gamma("steady.gamma", &steady.gamma)?;
     check_kinetic(model, &gamma)?;
 
-    // (62)–(63): the restricted second variation of the amended potential.
-    let bundle = model.bundle(&Vector3::zeros(), &gamma, p_psi);
+    // (62)–(63): the restricted second variation of the amended potential; (64) from the same
+    // evaluation.
+    let (bundle, system) = model.bundle_and_system(&Vector3::zeros(), &gamma, p_psi);
     check_model_finite("dr_dgamma", bundle.dr_dgamma.as_slice(), &gamma)?;
     check_model_finite("d2r_dgamma2", bundle.d2r_dgamma2.as_slice(), &gamma)?;
     let tan = Tangential::new(
@@ -305,7 +319,7 @@ pub fn classify_with<M: Routhian>(
     // (64) on the tangent plane (errata E5), in the scaled variable μ = λ/ω (see `F2Parts`):
     // the coefficients are O(1) whatever the units of the model, so neither they nor the
     // discriminant overflow or underflow (p_ψ = 1e±150).
-    let parts = f2_parts(model, &gamma, p_psi)?;
+    let parts = f2_parts_of(&system, gamma)?;
     let [c4, c2, c0] = parts.scaled;
     let a_norm = parts.a_hat.norm();
     let mut roots = quartic_roots(c4, c2, c0, opts.double_root_tol);
@@ -343,12 +357,13 @@ pub fn classify_with<M: Routhian>(
             _ => Stability::Unstable,
         }
     };
-    Ok(StabilityReport {
+    let report = StabilityReport {
         restricted_hessian_eigenvalues: eigs,
         degree_of_instability: degree,
         f2_roots: roots.lambda,
         verdict,
-    })
+    };
+    Ok((report, parts))
 }
 
 /// A [`StabilityReport`] with the Krein signatures of the roots of `f₂`, from
@@ -418,8 +433,7 @@ pub fn classify_with_krein<M: Routhian>(
     steady: &SteadyMotion,
     opts: &ClassifyOptions,
 ) -> Result<KreinReport, RouthError> {
-    let report = classify_with(model, steady, opts)?;
-    let parts = f2_parts(model, &steady.gamma, steady.p_psi)?;
+    let (report, parts) = classify_parts(model, steady, opts)?;
     // The signatures of f₂ scaled (`F2Parts`): the modes of λ = ωμ are those of μ and the
     // energies are multiplied by αω² > 0, so the signs are the same, without overflow.
     let mu = report.f2_roots.map(|l| l / parts.omega);
@@ -507,7 +521,11 @@ fn f2_parts<M: Routhian>(
     check_finite("p_psi", &[p_psi])?;
     let gamma = unit_gamma("gamma", gamma)?;
     check_kinetic(model, &gamma)?;
-    let sys = model.gyroscopic_system(&gamma, p_psi);
+    f2_parts_of(&model.gyroscopic_system(&gamma, p_psi), gamma)
+}
+
+/// [`F2Parts`] of `A`, `G`, `C` of (64) at the unit vector `gamma` (checked by the caller).
+fn f2_parts_of(sys: &GyroscopicSystem, gamma: Vector3<f64>) -> Result<F2Parts, RouthError> {
     for m in [&sys.a, &sys.g, &sys.c] {
         check_model_finite("A, G, C of (64)", m.as_slice(), &gamma)?;
     }

@@ -27,11 +27,16 @@
 //! one addition after `u` (three more operations than `(h + uw) + uw`, which would reuse the
 //! sum `∂R/∂γ` needs but is three dependent steps); `∂²R/∂Ω∂γ` reads `t` rather than `z = ρt`.
 //!
-//! A, G, C of (64) come from [`GyroscopicSystem::from_bundle`], which writes them in closed form
-//! for any model: differentiating (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω`
-//! (`M = ∂²R/∂Ω∂γ`), and `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for any `M`, so `2G = (tr M)[γ]×`;
-//! `C` is the symmetric sandwich `[γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×` with the zeros of `[γ]×` skipped.
-//! (That closed form was first written here, by hand; it now serves every model.)
+//! A, G, C of (64) are written inline, from the locals above, as an expert would
+//! ([`hand_gyrostat_bundle_and_system`]): `A = ∂²R/∂Ω²` is the block already formed;
+//! differentiating (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω` (`M = ∂²R/∂Ω∂γ`), and
+//! `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` for any `M`, so `2G = (tr M)[γ]×` with the trace read
+//! off the diagonal locals of `M`; and since `[γ]×ᵀ = −[γ]×`,
+//! `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]× = [γ]× N [γ]×` with `N = ∂²R/∂γ² − μE`, `μ = (∂R/∂γ, γ)`: the
+//! off-diagonal entries of `N` are the Hessian's own locals (no negation, no symmetrisation),
+//! and the sandwich skips the zeros of `[γ]×` and forms only the upper triangle of `C`.
+//! [`hand_gyrostat_system`] is the composed path instead: the bundle, then
+//! [`GyroscopicSystem::from_bundle`].
 
 use nalgebra::{Matrix3, Vector3};
 use routh_core::{GyroscopicSystem, RouthBundle};
@@ -52,6 +57,25 @@ pub fn hand_gyrostat_bundle(
     gamma: &Vector3<f64>,
     p_psi: f64,
 ) -> RouthBundle {
+    // Inlined, the unused A, G, C are dead code and are not computed.
+    hand_gyrostat_bundle_and_system(m, big_omega, gamma, p_psi).0
+}
+
+/// Every output of the gyrostat's Routh function at `(Ω, γ, p_ψ)` and A, G, C of (64) formed
+/// from them, in one body written by hand (see the module documentation): the expert's
+/// counterpart of the generated `Routhian::bundle_and_system`. Same conditions as
+/// [`hand_gyrostat_bundle`].
+///
+/// `#[inline(always)]`, as the generated code is inlined: so that the bench compares equal
+/// call paths, and so that [`hand_gyrostat_bundle`], which keeps only the bundle, does not
+/// compute A, G, C.
+#[inline(always)]
+pub fn hand_gyrostat_bundle_and_system(
+    m: &Gyrostat,
+    big_omega: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+    p_psi: f64,
+) -> (RouthBundle, GyroscopicSystem) {
     let (o0, o1, o2) = (big_omega.x, big_omega.y, big_omega.z);
     let (g0, g1, g2) = (gamma.x, gamma.y, gamma.z);
 
@@ -172,7 +196,42 @@ pub fn hand_gyrostat_bundle(
         cc02, cc12, cc22,
     );
 
-    RouthBundle {
+    // 2G = (tr M)[γ]×, the trace from the diagonal of ∂²R/∂Ω∂γ.
+    let half_tr = 0.5 * ((p00 - rw0 * t0) + (p11 - rw1 * t1) + (p22 - rw2 * t2));
+    let (hg0, hg1, hg2) = (half_tr * g0, half_tr * g1, half_tr * g2);
+    #[rustfmt::skip]
+    let g = Matrix3::new(
+        0.0, -hg2, hg1,
+        hg2, 0.0, -hg0,
+        -hg1, hg0, 0.0,
+    );
+
+    // C = [γ]× N [γ]×, N = ∂²R/∂γ² − μE, μ = (∂R/∂γ, γ): Y = N[γ]× (Y₀₀ is not read), then
+    // the upper triangle of [γ]×Y. Rows of [γ]×: (0, −g2, g1), (g2, 0, −g0), (−g1, g0, 0).
+    let mu = dr_dgamma.x * g0 + dr_dgamma.y * g1 + dr_dgamma.z * g2;
+    let (n00, n11, n22) = (cc00 - mu, cc11 - mu, cc22 - mu);
+    let y01 = cc02 * g0 - n00 * g2;
+    let y02 = n00 * g1 - cc01 * g0;
+    let y10 = n11 * g2 - cc12 * g1;
+    let y11 = cc12 * g0 - cc01 * g2;
+    let y12 = cc01 * g1 - n11 * g0;
+    let y20 = cc12 * g2 - n22 * g1;
+    let y21 = n22 * g0 - cc02 * g2;
+    let y22 = cc02 * g1 - cc12 * g0;
+    let k00 = g1 * y20 - g2 * y10;
+    let k01 = g1 * y21 - g2 * y11;
+    let k02 = g1 * y22 - g2 * y12;
+    let k11 = g2 * y01 - g0 * y21;
+    let k12 = g2 * y02 - g0 * y22;
+    let k22 = g0 * y12 - g1 * y02;
+    #[rustfmt::skip]
+    let c = Matrix3::new(
+        k00, k01, k02,
+        k01, k11, k12,
+        k02, k12, k22,
+    );
+
+    let bundle = RouthBundle {
         routhian,
         psi_dot: u,
         dr_domega,
@@ -181,11 +240,18 @@ pub fn hand_gyrostat_bundle(
         d2r_domega2,
         d2r_domega_dgamma,
         d2r_dgamma2,
-    }
+    };
+    let system = GyroscopicSystem {
+        a: d2r_domega2,
+        g,
+        c,
+    };
+    (bundle, system)
 }
 
-/// Every output of the gyrostat at `(Ω, γ, p_ψ)` and A, G, C of (64) there: the hand-written
-/// counterpart of `bundle` followed by [`GyroscopicSystem::from_bundle`].
+/// Every output of the gyrostat at `(Ω, γ, p_ψ)` and A, G, C of (64) there through the composed
+/// path: the hand-written bundle, then [`GyroscopicSystem::from_bundle`] (what the default
+/// `Routhian::bundle_and_system` does for a hand-written model).
 #[inline]
 pub fn hand_gyrostat_system(
     m: &Gyrostat,
@@ -266,15 +332,30 @@ mod tests {
                     want.d2r_dgamma2.as_slice(),
                 ),
             ];
-            // A, G, C: the closed forms against `from_bundle` of the num-dual bundle.
-            let (bundle, sys) = hand_gyrostat_system(&model, &omega, &gamma, p);
+            // A, G, C written inline against the matrix products of errata E6 on the num-dual
+            // bundle (not the closed forms either side uses): 2G = M[γ]× + [γ]×Mᵀ − [∂R/∂Ω]×,
+            // C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]×.
+            let (bundle, sys) = hand_gyrostat_bundle_and_system(&model, &omega, &gamma, p);
             assert_eq!(bundle, got);
-            let want_sys = GyroscopicSystem::from_bundle(&want, &gamma);
+            let gx = gamma.cross_matrix();
+            let mx = want.d2r_domega_dgamma;
+            let want_g = 0.5 * (mx * gx + gx * mx.transpose() - want.dr_domega.cross_matrix());
+            let mu = want.dr_dgamma.dot(&gamma);
+            let want_c =
+                gx.transpose() * (Matrix3::from_diagonal_element(mu) - want.d2r_dgamma2) * gx;
             let systems: [(&str, &[f64], &[f64]); 3] = [
-                ("A", sys.a.as_slice(), want_sys.a.as_slice()),
-                ("G", sys.g.as_slice(), want_sys.g.as_slice()),
-                ("C", sys.c.as_slice(), want_sys.c.as_slice()),
+                ("A", sys.a.as_slice(), want.d2r_domega2.as_slice()),
+                ("G", sys.g.as_slice(), want_g.as_slice()),
+                ("C", sys.c.as_slice(), want_c.as_slice()),
             ];
+            // The composed path (hand bundle, then from_bundle) gives the same to round-off.
+            let (bundle2, composed) = hand_gyrostat_system(&model, &omega, &gamma, p);
+            assert_eq!(bundle2, got);
+            for (name, fused, comp) in [("G", &sys.g, &composed.g), ("C", &sys.c, &composed.c)] {
+                let e = rel_err(fused.as_slice(), comp.as_slice());
+                assert!(e <= 1e-13, "point {k}: fused {name} vs from_bundle: {e:e}");
+            }
+            assert_eq!(sys.a, composed.a);
             for (name, g, w) in outputs.into_iter().chain(systems) {
                 let e = rel_err(g, w);
                 assert!(

@@ -31,7 +31,7 @@
 mod ellipsoid;
 mod gyrostat;
 mod hand;
-pub use hand::{hand_gyrostat_bundle, hand_gyrostat_system};
+pub use hand::{hand_gyrostat_bundle, hand_gyrostat_bundle_and_system, hand_gyrostat_system};
 mod heavy_top;
 pub mod identities;
 pub mod jacobian;
