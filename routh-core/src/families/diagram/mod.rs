@@ -2,6 +2,7 @@
 //! by continuation, switched at branch points, with their events, and a count check.
 
 mod builder;
+mod join;
 mod switch;
 mod trace;
 

@@ -151,7 +151,13 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 // through the tip of a pitchfork on another branch.
                 let e = ctx.locate(&a, &b, h, &|n| n.tau_s)?;
                 if ctx.isolated {
-                    located.push(e.clone());
+                    // Next to the tip the hyperplanes of the corrector also cut the other branch,
+                    // and a located point can slide onto it (its tangent is then along s, not
+                    // across): not a point of this branch. `finish` joins the tip to the branch
+                    // point located on the other branch.
+                    if e.tau_s.abs() <= 0.5 {
+                        located.push(e.clone());
+                    }
                     out.switches.push(Switch {
                         node: e,
                         isolated: true,
