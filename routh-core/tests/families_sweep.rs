@@ -116,8 +116,16 @@ mod closed_form {
         let k = pieces.len();
         for (i, nu_of) in pieces.iter().enumerate() {
             // The values of log h at the ends of the monotone pieces of this interval.
-            let left = if i == 0 { f64::NEG_INFINITY } else { f64::INFINITY };
-            let right = if i == k - 1 { f64::NEG_INFINITY } else { f64::INFINITY };
+            let left = if i == 0 {
+                f64::NEG_INFINITY
+            } else {
+                f64::INFINITY
+            };
+            let right = if i == k - 1 {
+                f64::NEG_INFINITY
+            } else {
+                f64::INFINITY
+            };
             let mut ends = vec![left];
             let samples = 4000;
             let dh = |t: f64| log_h(&j, &m, nu_of(t)).1;

@@ -107,8 +107,19 @@ fn event_position(
     best.map(|(_, q)| q)
 }
 
+/// Whether [`branch_figure`] writes each event's name next to its marker (the energy–momentum
+/// diagram, where branches cross at cusps and the markers alone are hard to read).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum EventNames {
+    /// Markers only (the legend names them).
+    Legend,
+    /// Markers with their names beside them, too.
+    Beside,
+}
+
 /// A diagram of branches and events with `map` giving the position of each point, and
 /// `exact_event` the coordinates of an event known without interpolation (if any).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn branch_figure(
     diagram: &BifurcationDiagram,
     path: &Path,
@@ -117,6 +128,7 @@ pub(super) fn branch_figure(
     exact_event: impl Fn(&BranchEvent) -> (Option<f64>, Option<f64>),
     x_label: &str,
     y_label: &str,
+    names: EventNames,
 ) -> Result<(), PlotError> {
     opts.check()?;
     if diagram.branches.iter().all(|b| b.points.is_empty()) {
@@ -211,6 +223,18 @@ pub(super) fn branch_figure(
         overlays.draw(root, px)?;
         for &(kind, q) in &events {
             draw_event_marker(root, chart.backend_coord(&q), kind)?;
+        }
+        if names == EventNames::Beside {
+            let font = ("sans-serif", 13).into_font().color(&BLACK);
+            for &(kind, q) in &events {
+                let c = chart.backend_coord(&q);
+                root.draw(&Text::new(
+                    kind.to_string(),
+                    (c.0 + 9, c.1 - 20),
+                    font.clone(),
+                ))
+                .map_err(drawing_error)?;
+            }
         }
         Ok(())
     })

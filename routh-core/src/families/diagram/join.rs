@@ -37,12 +37,12 @@ enum Join {
 
 /// The interior node of `nodes` that is the tip of a pitchfork born at `e`: a local extremum of
 /// `s`, closer to `e` in γ than a step to its neighbours (or `1e−2`), such that the event lies
-/// beyond both its neighbours in `s` (the tip is the extreme `s` of the branch there). A node
-/// that coincides with `e` in γ is replaced when its `s` is off by at most a step: a turning
-/// point located on a step across the other branch can slide onto that branch (where the two
-/// meet, the pseudo-arclength hyperplane cuts both). Otherwise `e` must lie within
-/// `1e−4·max(1, |s|)` of the node in `s`, and is inserted next to it, on the side of the
-/// neighbour nearer in γ. Nodes in `fixed` (other events' points) are left alone.
+/// beyond both its neighbours in `s` (the tip is the extreme `s` of the branch there) but beyond
+/// the node by at most the rise from it to its neighbours (plus `1e−4·max(1, |s|)`). A node that
+/// coincides with `e` in γ is replaced: a turning point located on a step across the other
+/// branch can slide onto that branch (where the two meet, the pseudo-arclength hyperplane cuts
+/// both). Otherwise `e` is inserted next to the node, on the side of the neighbour nearer in γ.
+/// Nodes in `fixed` (other events' points) are left alone.
 fn tip_join(nodes: &[Node], e: &BranchEvent, fixed: &[(f64, Vector3<f64>)]) -> Option<Join> {
     let tol = 1e-4 * e.s.abs().max(1.0);
     let mut best: Option<(f64, Join)> = None;
@@ -58,12 +58,14 @@ fn tip_join(nodes: &[Node], e: &BranchEvent, fixed: &[(f64, Vector3<f64>)]) -> O
         if dg > step.max(1e-2) {
             continue;
         }
-        let span = (sp - sk).abs().max((sn - sk).abs());
-        let same = dg <= SAME_POINT && (e.s - sk).abs() <= span;
+        // The tip lies beyond the extreme node by at most the rise to its neighbours (three
+        // samples of a parabola whose vertex lies between the outer two).
+        let span = (sp - sk).abs().max((sn - sk).abs()) + tol;
+        let same = dg <= SAME_POINT;
         let valid = if sk <= sp && sk <= sn {
-            e.s < sp.min(sn) && (same || e.s >= sk - tol)
+            e.s < sp.min(sn) && e.s >= sk - span
         } else if sk >= sp && sk >= sn {
-            e.s > sp.max(sn) && (same || e.s <= sk + tol)
+            e.s > sp.max(sn) && e.s <= sk + span
         } else {
             false
         };

@@ -3,6 +3,7 @@
 
 mod builder;
 mod join;
+mod smooth;
 mod switch;
 mod trace;
 
@@ -174,6 +175,8 @@ pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
             b.switch_all()?;
         }
     }
+    b.join_at_branch_points();
+    b.smooth()?;
     Ok(CheckedDiagram {
         diagram: b.finish(),
         checks,
@@ -266,6 +269,8 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
         }
     }
     b.switch_all()?;
+    b.join_at_branch_points();
+    b.smooth()?;
     Ok(b.finish())
 }
 
@@ -296,6 +301,15 @@ fn validate(range: (f64, f64), opts: &ContinuationOptions) -> Result<(), RouthEr
         return invalid(
             "initial_step",
             "need min_step ≤ initial_step ≤ max_step".to_string(),
+        );
+    }
+    if !(opts.em_turn_degrees.is_finite() && opts.em_turn_degrees >= 0.0) {
+        return invalid(
+            "em_turn_degrees",
+            format!(
+                "must be finite and ≥ 0 (got {}; 0 turns the smoothing off)",
+                opts.em_turn_degrees
+            ),
         );
     }
     if opts.max_steps == 0 || opts.max_branches == 0 {
