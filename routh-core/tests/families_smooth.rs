@@ -165,3 +165,44 @@ fn refinement_is_refused_with_a_negative_angle() {
     let err = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &opts).unwrap_err();
     assert!(err.to_string().contains("em_turn_degrees"), "{err}");
 }
+
+/// The cost of the refinement: the best of 5 diagrams of the Lagrange top over `[0, 5]` (default
+/// options) with and without it, and of a heavy asymmetric top with pitchforks over `[1, 4]`.
+#[test]
+#[ignore = "timing: run with -- --ignored --nocapture"]
+fn cost_of_the_refinement() {
+    use routh_core::{Matrix3, Vector3};
+    use test_models::HeavyTop;
+    let lagrange = Gyrostat::lagrange_top(A, C, MGL);
+    let asym = HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(2.0, 2.3, 1.2)),
+        mgr: Vector3::new(0.0, 0.0, 1.0),
+    };
+    let best = |f: &dyn Fn() -> usize| {
+        let mut t = f64::INFINITY;
+        let mut n = 0;
+        for _ in 0..5 {
+            let t0 = std::time::Instant::now();
+            n = f();
+            t = t.min(t0.elapsed().as_secs_f64());
+        }
+        (t * 1e3, n)
+    };
+    let points = |d: BifurcationDiagram| d.branches.iter().map(|b| b.points.len()).sum::<usize>();
+    for deg in [0.0, 3.0] {
+        let opts = ContinuationOptions {
+            em_turn_degrees: deg,
+            ..Default::default()
+        };
+        let (t1, n1) = best(&|| {
+            points(bifurcation_diagram(|p| (lagrange.clone(), p), (0.0, 5.0), &opts).unwrap())
+        });
+        let (t2, n2) = best(&|| {
+            points(bifurcation_diagram(|p| (asym.clone(), p), (1.0, 4.0), &opts).unwrap())
+        });
+        println!(
+            "em_turn_degrees = {deg}: Lagrange top {t1:.1} ms ({n1} points), asymmetric top \
+             {t2:.1} ms ({n2} points)"
+        );
+    }
+}
