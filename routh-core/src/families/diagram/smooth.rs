@@ -43,7 +43,7 @@ impl<M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'_, M, F> {
         let len = self.len;
         let (dg, ds) = (b.gamma - a.gamma, (b.s - a.s) / len);
         let l = (dg.norm_squared() + ds * ds).sqrt();
-        if !(l > 0.0) {
+        if l.is_nan() || l <= 0.0 {
             return Ok(None);
         }
         let orient = |n: &Node| {
@@ -161,7 +161,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// Errors: those of the family and the model at the new points.
     pub(super) fn smooth(&mut self) -> Result<(), RouthError> {
         let max_turn = self.opts.em_turn_degrees.to_radians();
-        if !(max_turn > 0.0) || self.stop.is_some() {
+        if max_turn.is_nan() || max_turn <= 0.0 || self.stop.is_some() {
             return Ok(());
         }
         let energies = self
