@@ -341,6 +341,27 @@ fn energy_momentum_diagram() {
         assert!(has_text(&svg, &v.to_string()), "legend lacks {v}");
     }
     assert!(has_text(&svg, &EventKind::HamiltonianHopf.to_string()));
+    // Each event is named beside its marker, besides the legend's entry for its kind.
+    let named = |kind: EventKind| {
+        texts(&svg)
+            .iter()
+            .filter(|t| **t == kind.to_string())
+            .count()
+    };
+    for kind in [
+        EventKind::Fold,
+        EventKind::BranchPoint,
+        EventKind::HamiltonianHopf,
+    ] {
+        let events = full_diagram()
+            .events
+            .iter()
+            .filter(|e| e.kind == kind)
+            .count();
+        if events > 0 {
+            assert_eq!(named(kind), events + 1, "{kind}");
+        }
+    }
     assert!(strokes(&svg, "#CD1E1E", 2) > 10);
 
     let opts = PlotOptions {

@@ -120,8 +120,19 @@ fn event_name(e: &BranchEvent) -> Option<String> {
     }
 }
 
+/// Whether [`branch_figure`] writes each event's name next to its marker (the energy–momentum
+/// diagram, where branches cross at cusps and the markers alone are hard to read).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum EventNames {
+    /// Markers only (the legend names them).
+    Legend,
+    /// Markers with their names beside them, too.
+    Beside,
+}
+
 /// A diagram of branches and events with `map` giving the position of each point, and
 /// `exact_event` the coordinates of an event known without interpolation (if any).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn branch_figure(
     diagram: &BifurcationDiagram,
     path: &Path,
@@ -130,6 +141,7 @@ pub(super) fn branch_figure(
     exact_event: impl Fn(&BranchEvent) -> (Option<f64>, Option<f64>),
     x_label: &str,
     y_label: &str,
+    names: EventNames,
 ) -> Result<(), PlotError> {
     opts.check()?;
     if diagram.branches.iter().all(|b| b.points.is_empty()) {
@@ -157,7 +169,11 @@ pub(super) fn branch_figure(
             let q = event_position(diagram, e, s_scale, &map);
             let x = ex.or(q.map(|q| q.0))?;
             let y = ey.or(q.map(|q| q.1))?;
-            (x.is_finite() && y.is_finite()).then(|| (e.kind, (x, y), event_name(e)))
+            // The name beside the marker: a nonlinear event's always (`1:2`, `D = 0`), every
+            // event's when the figure asks for names.
+            let name =
+                event_name(e).or_else(|| (names == EventNames::Beside).then(|| e.kind.to_string()));
+            (x.is_finite() && y.is_finite()).then_some((e.kind, (x, y), name))
         })
         .collect();
     let all = || {

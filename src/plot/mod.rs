@@ -332,6 +332,7 @@ pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
         |e| (Some(e.s), axis.of_gamma(&e.gamma)),
         &opts.x_label,
         label_or(&opts.y_label, axis.label()),
+        diagram::EventNames::Legend,
     )
 }
 
@@ -341,8 +342,12 @@ pub fn bifurcation_diagram_svg<P: AsRef<Path>>(
 /// For a diagram over `p_ψ` this is the diagram's own curves seen in the `(p_ψ, E)` plane; for a
 /// diagram over a parameter of the body at fixed `p_ψ`, the branches stand on one vertical line.
 /// Line styles, markers and legend are those of [`bifurcation_diagram_svg`] (events are placed
-/// by interpolation along their branch). The horizontal axis is labelled
-/// [`PlotOptions::x_label`], or `"p_ψ"` when that is the default `"s"` or empty.
+/// by interpolation along their branch), and each event's name is written beside its marker.
+/// The curves are the branches' polylines: smooth when the diagram was computed with
+/// [`ContinuationOptions::em_turn_degrees`](crate::ContinuationOptions::em_turn_degrees) on (the
+/// default: the curve `(s, E)` turns by at most 3° between successive chords, but at its cusps).
+/// The horizontal axis is labelled [`PlotOptions::x_label`], or `"p_ψ"` when that is the default
+/// `"s"` or empty.
 ///
 /// # Errors
 ///
@@ -397,6 +402,7 @@ pub fn energy_momentum_svg<P: AsRef<Path>>(
         |_| (None, None),
         x_label,
         label_or(&opts.y_label, DiagramAxis::Energy.label()),
+        diagram::EventNames::Beside,
     )
 }
 

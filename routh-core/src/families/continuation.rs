@@ -398,7 +398,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
 
 /// The unit normal `γ × τ` of the meridian plane spanned by γ and the tangent direction `tau`
 /// (the direction along a circle of steady motions), if `tau` has a tangential part.
-fn meridian_normal(gamma: &Vector3<f64>, tau: &Vector3<f64>) -> Option<Vector3<f64>> {
+pub(crate) fn meridian_normal(gamma: &Vector3<f64>, tau: &Vector3<f64>) -> Option<Vector3<f64>> {
     let g = gamma.normalize();
     let n = g.cross(tau);
     (n.norm() > 1e-6 * tau.norm().max(1e-300)).then(|| n.normalize())

@@ -91,6 +91,15 @@ pub struct ContinuationOptions {
     /// steady motions equals what [`steady_motions`](crate::steady_motions) finds there, and seeds
     /// the missing branches if not (default `true`).
     pub verify_counts: bool,
+    /// Largest turning angle, in degrees, between successive chords of each branch's energy
+    /// curve `(s, E)` in plot-normalised coordinates (`s` over the range, `E` over its extent on
+    /// the diagram) (default `3`; `0` turns it off). After continuation, points corrected onto
+    /// the branch are inserted where the curve turns faster, down to chords of `2e−4`, so that
+    /// the energy–momentum curves are drawn smooth whatever the continuation step; the turning
+    /// points of the curve in `s` (its cusps at folds and pitchfork tips) are left as they are.
+    /// Not done on a diagram that stopped early ([`BifurcationDiagram::stop`]).
+    #[cfg_attr(feature = "serde", serde(default = "default_em_turn_degrees"))]
+    pub em_turn_degrees: f64,
     /// Options of the global searches.
     pub search: SearchOptions,
     /// Tolerances of the verdicts at each point.
@@ -119,6 +128,13 @@ pub struct ContinuationOptions {
     pub nonlinear: Option<NonlinearOptions>,
 }
 
+/// The default of [`ContinuationOptions::em_turn_degrees`] (also for options serialised before
+/// it existed).
+#[cfg(feature = "serde")]
+fn default_em_turn_degrees() -> f64 {
+    ContinuationOptions::default().em_turn_degrees
+}
+
 impl Default for ContinuationOptions {
     fn default() -> Self {
         ContinuationOptions {
@@ -131,6 +147,7 @@ impl Default for ContinuationOptions {
             event_tol: 1e-10,
             seeds: 5,
             verify_counts: true,
+            em_turn_degrees: 3.0,
             search: SearchOptions::default(),
             classify: ClassifyOptions::default(),
             nonlinear: None,

@@ -387,65 +387,6 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         Ok(out)
     }
 
-    /// Joins the branches born at a branch point to the located event point: the node of each
-    /// other branch nearest to it (a turning point located to `event_tol` in `s`, hence only to
-    /// about `√event_tol` in γ at a pitchfork tip) is replaced by the event point, and a branch
-    /// of circles that ends next to its axis gets the event point as its end.
-    fn join_at_branch_points(&mut self) {
-        for e in &self.events {
-            if e.kind != EventKind::BranchPoint {
-                continue;
-            }
-            let Some(event_node) = self
-                .branches
-                .iter()
-                .flat_map(|(nodes, _)| nodes.iter())
-                .find(|n| n.s == e.s && n.gamma == e.gamma)
-                .cloned()
-            else {
-                continue;
-            };
-            let len = self.range.1 - self.range.0;
-            for (i, (nodes, isolated)) in self.branches.iter_mut().enumerate() {
-                if i == e.branch || nodes.is_empty() {
-                    continue;
-                }
-                let (ds_tol, dg_tol) = join_tolerances(*isolated, e.s, len);
-                let near =
-                    |n: &Node| (n.s - e.s).abs() <= ds_tol && (n.gamma - e.gamma).norm() <= dg_tol;
-                let Some((k, _)) =
-                    nodes
-                        .iter()
-                        .enumerate()
-                        .filter(|(_, n)| near(n))
-                        .min_by(|x, y| {
-                            let dx = (x.1.gamma - e.gamma).norm();
-                            let dy = (y.1.gamma - e.gamma).norm();
-                            dx.total_cmp(&dy)
-                        })
-                else {
-                    continue;
-                };
-                let last = nodes.len() - 1;
-                let exact = |n: &Node| n.s == e.s && n.gamma == e.gamma;
-                if exact(&nodes[k]) {
-                    continue;
-                }
-                let close = (nodes[k].gamma - e.gamma).norm() <= 1e-4;
-                if (k == 0 || k == last) && !close {
-                    // An end next to the point: extend the branch to it.
-                    if k == 0 {
-                        nodes.insert(0, event_node.clone());
-                    } else {
-                        nodes.push(event_node.clone());
-                    }
-                } else if close {
-                    nodes[k] = event_node.clone();
-                }
-            }
-        }
-    }
-
     pub(super) fn finish(mut self) -> BifurcationDiagram {
         self.join_at_branch_points();
         self.events.sort_by(|a, b| a.s.total_cmp(&b.s));
@@ -462,19 +403,6 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             stop: self.stop,
             checks: Vec::new(),
         }
-    }
-}
-
-/// How far (in `s`, in γ) a point of a branch may be from a branch point to be joined to it:
-/// `1e−4·max(1, |s|)` and `1e−2` for a pitchfork's tip (located to `event_tol` in `s`); for the end
-/// of a branch of circles next to its axis (where the continuation stops before the circle
-/// direction is lost) `1e−2` of the range and `0.1` rad: along such a branch `s` is monotone up to
-/// the axis (the circles shrink as `√|s − s*|`), so the segment to the axis counts right.
-pub(super) fn join_tolerances(isolated: bool, s: f64, len: f64) -> (f64, f64) {
-    if isolated {
-        (1e-4 * s.abs().max(1.0), 1e-2)
-    } else {
-        (1e-2 * len, 0.1)
     }
 }
 

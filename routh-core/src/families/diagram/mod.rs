@@ -2,6 +2,8 @@
 //! by continuation, switched at branch points, with their events, and a count check.
 
 mod builder;
+mod join;
+mod smooth;
 mod switch;
 mod trace;
 
@@ -138,6 +140,8 @@ pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
             b.switch_all()?;
         }
     }
+    b.join_at_branch_points();
+    b.smooth()?;
     let mut diagram = b.finish();
     crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
     diagram.checks = checks;
@@ -249,6 +253,8 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
         }
     }
     b.switch_all()?;
+    b.join_at_branch_points();
+    b.smooth()?;
     let mut diagram = b.finish();
     crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
     Ok(diagram)
@@ -281,6 +287,15 @@ fn validate(range: (f64, f64), opts: &ContinuationOptions) -> Result<(), RouthEr
         return invalid(
             "initial_step",
             "need min_step ≤ initial_step ≤ max_step".to_string(),
+        );
+    }
+    if !(opts.em_turn_degrees.is_finite() && opts.em_turn_degrees >= 0.0) {
+        return invalid(
+            "em_turn_degrees",
+            format!(
+                "must be finite and ≥ 0 (got {}; 0 turns the smoothing off)",
+                opts.em_turn_degrees
+            ),
         );
     }
     if opts.max_steps == 0 || opts.max_branches == 0 {

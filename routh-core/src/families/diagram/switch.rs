@@ -4,7 +4,8 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::builder::{join_tolerances, Builder};
+use super::builder::Builder;
+use super::join::join_tolerances;
 use crate::error::RouthError;
 use crate::families::continuation::{Constraint, Node};
 use crate::families::StopReason;

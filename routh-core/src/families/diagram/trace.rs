@@ -15,6 +15,18 @@ fn near_axis(scale: f64, n: &Node) -> bool {
     n.eig.iter().all(|e| e.abs() <= 1e-5) && n.jac.norm() <= 1e-2 * scale
 }
 
+/// Whether a point of a branch of circles has the zero eigenvalue of `K` of a circle: below
+/// `1e−6` relative to the branch's scale, or below `1e−3` of the other eigenvalue (a
+/// near-spherical body, whose `K` is small altogether: the point of the pole next to the axis has
+/// two nearly equal eigenvalues instead).
+fn circle_point(n: &Node) -> bool {
+    let (lo, hi) = (
+        n.eig[0].abs().min(n.eig[1].abs()),
+        n.eig[0].abs().max(n.eig[1].abs()),
+    );
+    lo <= 1e-6 || lo <= 1e-3 * hi
+}
+
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// Follows one direction from `start`, with at most `budget` steps, until the branch leaves
     /// the range (it then ends exactly on the range's end), closes, or meets another branch (a
@@ -45,6 +57,8 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             stop: None,
         };
         let mut h = opts.initial_step;
+        // The largest eigenvalue of K met along the way (in modulus).
+        let mut widest = start.eig[0].abs().max(start.eig[1].abs());
         loop {
             let a = out.nodes.last().unwrap().clone();
             if out.steps >= budget {
@@ -83,8 +97,8 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             // pole (where K is a multiple of the identity), and a step can slide onto that
             // branch: a point with no zero eigenvalue is not a circle. Shorter steps, and next to
             // the axis the end (`finish` appends the point on the axis).
-            if !ctx.isolated && b.eig.iter().all(|e| e.abs() > 1e-6) {
-                if a.eig.iter().all(|e| e.abs() <= 1e-3) || h <= 4.0 * opts.min_step {
+            if !ctx.isolated && !circle_point(&b) {
+                if h <= 4.0 * opts.min_step {
                     break;
                 }
                 h *= 0.5;
@@ -151,7 +165,13 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 // through the tip of a pitchfork on another branch.
                 let e = ctx.locate(&a, &b, h, &|n| n.tau_s)?;
                 if ctx.isolated {
-                    located.push(e.clone());
+                    // Next to the tip the hyperplanes of the corrector also cut the other branch,
+                    // and a located point can slide onto it (its tangent is then along s, not
+                    // across): not a point of this branch. `finish` joins the tip to the branch
+                    // point located on the other branch.
+                    if e.tau_s.abs() <= 0.5 {
+                        located.push(e.clone());
+                    }
                     out.switches.push(Switch {
                         node: e,
                         isolated: true,
@@ -173,9 +193,13 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             if end {
                 break;
             }
-            if !ctx.isolated && near_axis(ctx.scale, &b) {
+            let hi = b.eig[0].abs().max(b.eig[1].abs());
+            widest = widest.max(hi);
+            if !ctx.isolated && near_axis(ctx.scale, &b) && hi <= 1e-3 * widest {
                 // Next to the axis the steps would shrink without end (the circle direction is
-                // lost in round-off): end here; `finish` appends the point on the axis.
+                // lost in round-off): end here; `finish` appends the point on the axis. (The
+                // eigenvalues of `K` must also have shrunk along the branch: a near-spherical
+                // body has small ones all along.)
                 out.nodes.push(b);
                 break;
             }
@@ -213,12 +237,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         }
         if !ctx.isolated {
             // A located end that slid onto the branch of the pole is no point of a circle.
-            while out.nodes.len() > 1
-                && out
-                    .nodes
-                    .last()
-                    .is_some_and(|n| n.eig.iter().all(|e| e.abs() > 1e-6))
-            {
+            while out.nodes.len() > 1 && out.nodes.last().is_some_and(|n| !circle_point(n)) {
                 out.nodes.pop();
             }
         }
