@@ -2,9 +2,11 @@
 
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3};
 use crate::family::{continuation_options, ContinuationKw};
-use crate::results::{
-    Certificate, Diagram, ReducedTrajectory, StabilityReport, SteadyMotion, Trajectory,
-};
+use crate::guard::detached;
+use crate::latex::{aligned, LatexFormulas};
+use crate::progress::Progress;
+use crate::results::{Certificate, Diagram, StabilityReport, SteadyMotion};
+use crate::trajectory::{ReducedTrajectory, Trajectory};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use routh::{CertifyOptions, Param, SimOptions};
@@ -34,10 +36,11 @@ impl Model {
     }
 }
 
-fn sim_options(rtol: f64, atol: f64, max_steps: Option<usize>) -> SimOptions {
+fn sim_options(rtol: f64, atol: f64, max_steps: Option<usize>, attitude: bool) -> SimOptions {
     let mut o = SimOptions {
         rtol,
         atol,
+        attitude,
         ..SimOptions::default()
     };
     if let Some(n) = max_steps {
@@ -65,8 +68,7 @@ impl Model {
         }
         let refs: Vec<(&str, Param)> = params.iter().map(|(n, p)| (n.as_str(), *p)).collect();
         let text = lagrangian.to_string();
-        let m = py
-            .detach(move || routh::Model::new(&text, &refs))
+        let m = detached(py, move || routh::Model::new(&text, &refs))?
             .map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
     }
@@ -75,17 +77,15 @@ impl Model {
     #[staticmethod]
     fn from_toml(py: Python<'_>, text: &str) -> PyResult<Model> {
         let t = text.to_string();
-        let m = py
-            .detach(move || routh::Model::from_toml(&t))
-            .map_err(|e| model_err(py, &e))?;
+        let m =
+            detached(py, move || routh::Model::from_toml(&t))?.map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
     }
 
     /// A model from a TOML file.
     #[staticmethod]
     fn load(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Model> {
-        let m = py
-            .detach(move || routh::Model::from_file(&path))
+        let m = detached(py, move || routh::Model::from_file(&path))?
             .map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
     }
@@ -166,27 +166,22 @@ impl Model {
     /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)).
     fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
         let m = self.get()?;
-        let r = py.detach(|| routh::steady_motions(&m, p_psi));
-        match r {
-            Ok(v) => Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect()),
-            Err(e) => Err(routh_err(py, &e)),
-        }
+        let v = detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
+        Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect())
     }
 
     /// The stability of a steady motion (sections 4–5).
     fn classify(&self, py: Python<'_>, motion: &SteadyMotion) -> PyResult<StabilityReport> {
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r = py
-            .detach(|| routh::classify(&m, &s))
-            .map_err(|e| routh_err(py, &e))?;
+        let r = detached(py, || routh::classify(&m, &s))?.map_err(|e| routh_err(py, &e))?;
         Ok(StabilityReport::new(py, &r))
     }
 
     /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi).
     #[pyo3(signature = (range, *, initial_step=None, max_step=None, min_step=None, max_steps=None,
                         max_branches=None, newton_tol=None, event_tol=None, seeds=None,
-                        verify_counts=None))]
+                        verify_counts=None, progress=false))]
     #[allow(clippy::too_many_arguments)]
     fn bifurcation_diagram(
         &self,
@@ -201,6 +196,7 @@ impl Model {
         event_tol: Option<f64>,
         seeds: Option<usize>,
         verify_counts: Option<bool>,
+        progress: bool,
     ) -> PyResult<Diagram> {
         let opts = continuation_options(ContinuationKw {
             initial_step,
@@ -214,14 +210,28 @@ impl Model {
             verify_counts,
         });
         let m = self.get()?;
-        let d = py
-            .detach(|| routh::bifurcation_diagram(|p| (m.clone(), p), range, &opts))
-            .map_err(|e| routh_err(py, &e))?;
-        Diagram::new(py, &d)
+        let bar = Progress::new(py, progress, "steady-motion evaluations")?;
+        let d = detached(py, || {
+            routh::bifurcation_diagram(
+                |p| {
+                    if let Some(b) = &bar {
+                        b.tick();
+                    }
+                    (m.clone(), p)
+                },
+                range,
+                &opts,
+            )
+        });
+        if let Some(b) = &bar {
+            b.close(py);
+        }
+        Diagram::new(py, &d?.map_err(|e| routh_err(py, &e))?)
     }
 
     /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end`.
-    #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None))]
+    #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None,
+                        attitude=false))]
     #[allow(clippy::too_many_arguments)]
     fn simulate(
         &self,
@@ -232,19 +242,20 @@ impl Model {
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
+        attitude: bool,
     ) -> PyResult<Trajectory> {
         let w = vector3("omega0", omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps);
-        let t = py
-            .detach(|| routh::simulate_full(&m, w, g, t_end, &opts))
+        let opts = sim_options(rtol, atol, max_steps, attitude);
+        let t = detached(py, || routh::simulate_full(&m, w, g, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(Trajectory::new(py, &t))
     }
 
     /// Integrate the reduced equations (39) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`.
-    #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None))]
+    #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, rtol=1e-10, atol=1e-12,
+                        max_steps=None, attitude=false))]
     #[allow(clippy::too_many_arguments)]
     fn simulate_reduced(
         &self,
@@ -256,13 +267,13 @@ impl Model {
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
+        attitude: bool,
     ) -> PyResult<ReducedTrajectory> {
         let w = vector3("big_omega0", big_omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps);
-        let t = py
-            .detach(|| routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts))
+        let opts = sim_options(rtol, atol, max_steps, attitude);
+        let t = detached(py, || routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(ReducedTrajectory::new(py, &t))
     }
@@ -270,9 +281,10 @@ impl Model {
     /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic).
     fn certify(&self, py: Python<'_>, p_psi: f64) -> PyResult<Certificate> {
         let m = self.get()?;
-        let c = py
-            .detach(|| routh::steady_motions_certified(&m, p_psi, &CertifyOptions::default()))
-            .map_err(|e| routh_err(py, &e))?;
+        let c = detached(py, || {
+            routh::steady_motions_certified(&m, p_psi, &CertifyOptions::default())
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         let mut motions = Vec::with_capacity(c.motions.len());
         for cm in &c.motions {
             motions.push(Py::new(
@@ -289,6 +301,21 @@ impl Model {
             boxes: c.boxes,
             undecided: c.undecided.len(),
         })
+    }
+
+    /// The derived formulas in LaTeX (`routh.LatexFormulas`: `lagrangian`, `psi_dot`,
+    /// `routhian`, `amended_potential`, `a`, `g`, `c`), with the TOML's `[latex]` symbols.
+    ///
+    /// >>> f = top.latex()
+    /// >>> print(f.amended_potential)
+    fn latex(&self) -> PyResult<LatexFormulas> {
+        Ok(LatexFormulas::new(self.get()?.latex()))
+    }
+
+    /// Jupyter shows a model as its Routh function R (14) and amended potential U_r (34).
+    fn _repr_latex_(&self) -> PyResult<String> {
+        let f = self.get()?.latex();
+        Ok(aligned(&[("R", &f.routhian), ("U_r", &f.amended_potential)]))
     }
 
     fn __repr__(&self) -> PyResult<String> {
@@ -312,7 +339,7 @@ impl Model {
 #[pyfunction]
 pub fn _bench_rust(py: Python<'_>, model: &Model, p_psi: f64, n: usize) -> PyResult<f64> {
     let m = model.get()?;
-    py.detach(|| {
+    detached(py, || {
         let start = std::time::Instant::now();
         for _ in 0..n.max(1) {
             let ms = routh::steady_motions(&m, p_psi)?;
@@ -321,6 +348,6 @@ pub fn _bench_rust(py: Python<'_>, model: &Model, p_psi: f64, n: usize) -> PyRes
             }
         }
         Ok(start.elapsed().as_secs_f64() / n.max(1) as f64)
-    })
+    })?
     .map_err(|e: routh::RouthError| routh_err(py, &e))
 }

@@ -1,7 +1,7 @@
 //! The result classes: steady motions, reports, diagrams, atlases, trajectories, certificates.
 //! Arrays are built once, when the result is made, and handed out as numpy arrays.
 
-use crate::convert::{event_kind, vec3, vecs, verdict};
+use crate::convert::{event_kind, helper, vec3, vecs, verdict};
 use numpy::{Complex64, PyArray1, PyArray2};
 use pyo3::prelude::*;
 
@@ -49,6 +49,10 @@ impl SteadyMotion {
     #[getter]
     fn isolated(&self) -> bool {
         self.inner.isolated
+    }
+    /// A small HTML table (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "motion_html", (slf,))
     }
     fn __repr__(&self) -> String {
         let g = self.inner.gamma;
@@ -103,6 +107,10 @@ impl StabilityReport {
 
 #[pymethods]
 impl StabilityReport {
+    /// A small HTML table (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "report_html", (slf,))
+    }
     fn __repr__(&self, py: Python<'_>) -> String {
         let eig = self
             .restricted_hessian_eigenvalues
@@ -225,13 +233,13 @@ impl Diagram {
         let f = py.import("routh._plot")?.getattr("plot_diagram")?;
         Ok(f.call1((slf, ax, component))?.unbind())
     }
+    /// The figure of `plot()` as SVG (Jupyter).
     fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        Ok(py
-            .import("routh._plot")?
-            .getattr("svg_of")?
-            .call1((slf,))?
-            .unbind())
+        helper(slf.py(), "routh._plot", "svg_of", (slf,))
+    }
+    /// The branches and events as HTML tables, with the figure (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "diagram_html", (slf,))
     }
     fn __repr__(&self) -> String {
         format!(
@@ -249,6 +257,14 @@ pub struct Boundary {
     pub kind: &'static str,
     /// The points (x, y) of the curve, (n, 2) float64.
     pub points: Py<PyAny>,
+}
+
+#[pymethods]
+impl Boundary {
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let n = self.points.bind(py).len().unwrap_or(0);
+        format!("Boundary(kind='{}', points={n})", self.kind)
+    }
 }
 
 /// A stability atlas over a 2-parameter family: grid `x` (nx,), `y` (ny,), `verdicts` (nx lists
@@ -307,78 +323,21 @@ impl Atlas {
         let f = py.import("routh._plot")?.getattr("plot_atlas")?;
         Ok(f.call1((slf, ax))?.unbind())
     }
+    /// The figure of `plot()` as SVG (Jupyter).
     fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        Ok(py
-            .import("routh._plot")?
-            .getattr("svg_of")?
-            .call1((slf,))?
-            .unbind())
+        helper(slf.py(), "routh._plot", "svg_of", (slf,))
     }
-}
-
-/// A solution of the full equations (1)–(2): `t` (n,), `omega` (n, 3), `gamma` (n, 3), and the
-/// recorded integrals `energy` (n,), `p_psi` (n,).
-#[pyclass(module = "routh", frozen, get_all)]
-pub struct Trajectory {
-    /// Times, (n,).
-    pub t: Py<PyAny>,
-    /// Angular velocity in the body frame, (n, 3).
-    pub omega: Py<PyAny>,
-    /// The vertical in the body frame, (n, 3).
-    pub gamma: Py<PyAny>,
-    /// The energy (3) at each time, (n,).
-    pub energy: Py<PyAny>,
-    /// The cyclic momentum (9) at each time, (n,).
-    pub p_psi: Py<PyAny>,
-}
-
-impl Trajectory {
-    pub(crate) fn new(py: Python<'_>, t: &routh::Trajectory) -> Trajectory {
-        Trajectory {
-            t: PyArray1::from_slice(py, &t.t).into_any().unbind(),
-            omega: vecs(py, &t.omega).into_any().unbind(),
-            gamma: vecs(py, &t.gamma).into_any().unbind(),
-            energy: PyArray1::from_slice(py, &t.energy).into_any().unbind(),
-            p_psi: PyArray1::from_slice(py, &t.p_psi).into_any().unbind(),
-        }
+    /// The verdict counts and boundaries as HTML, with the figure (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "atlas_html", (slf,))
     }
-}
-
-/// A solution of the reduced equations (39): `t`, `big_omega` (n, 3), `gamma` (n, 3), the
-/// reconstructed `psi`, `psi_dot`, `omega` (n, 3), and `energy`, `p_psi`.
-#[pyclass(module = "routh", frozen, get_all)]
-pub struct ReducedTrajectory {
-    /// Times, (n,).
-    pub t: Py<PyAny>,
-    /// The reduced velocity Ω, (n, 3).
-    pub big_omega: Py<PyAny>,
-    /// The vertical, (n, 3).
-    pub gamma: Py<PyAny>,
-    /// The cyclic angle ψ, (n,).
-    pub psi: Py<PyAny>,
-    /// ψ̇ (38), (n,).
-    pub psi_dot: Py<PyAny>,
-    /// The angular velocity ω = Ω + ψ̇γ, (n, 3).
-    pub omega: Py<PyAny>,
-    /// The energy, (n,).
-    pub energy: Py<PyAny>,
-    /// The cyclic momentum, (n,).
-    pub p_psi: Py<PyAny>,
-}
-
-impl ReducedTrajectory {
-    pub(crate) fn new(py: Python<'_>, t: &routh::ReducedTrajectory) -> ReducedTrajectory {
-        ReducedTrajectory {
-            t: PyArray1::from_slice(py, &t.t).into_any().unbind(),
-            big_omega: vecs(py, &t.big_omega).into_any().unbind(),
-            gamma: vecs(py, &t.gamma).into_any().unbind(),
-            psi: PyArray1::from_slice(py, &t.psi).into_any().unbind(),
-            psi_dot: PyArray1::from_slice(py, &t.psi_dot).into_any().unbind(),
-            omega: vecs(py, &t.omega).into_any().unbind(),
-            energy: PyArray1::from_slice(py, &t.energy).into_any().unbind(),
-            p_psi: PyArray1::from_slice(py, &t.p_psi).into_any().unbind(),
-        }
+    fn __repr__(&self) -> String {
+        format!(
+            "StabilityAtlas({}x{} grid, {} boundaries)",
+            self.verdicts.len(),
+            self.verdicts.first().map_or(0, Vec::len),
+            self.boundaries.len()
+        )
     }
 }
 
@@ -396,4 +355,22 @@ pub struct Certificate {
     pub boxes: usize,
     /// How many regions were left undecided.
     pub undecided: usize,
+}
+
+#[pymethods]
+impl Certificate {
+    /// A small HTML table (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "certificate_html", (slf,))
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "Certificate(complete={}, motions={}, p_psi={}, boxes={}, undecided={})",
+            if self.complete { "True" } else { "False" },
+            self.motions.len(),
+            self.p_psi,
+            self.boxes,
+            self.undecided
+        )
+    }
 }
