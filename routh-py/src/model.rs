@@ -9,6 +9,7 @@ use crate::results::{Certificate, Diagram, StabilityReport, SteadyMotion};
 use crate::trajectory::{ReducedTrajectory, Trajectory};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
+use routh::sim::Output;
 use routh::{CertifyOptions, Param, SimOptions};
 
 /// A rigid-body model: a Lagrangian in the language of `#[derive(Lagrangian)]` and the values
@@ -36,13 +37,23 @@ impl Model {
     }
 }
 
-fn sim_options(rtol: f64, atol: f64, max_steps: Option<usize>, attitude: bool) -> SimOptions {
+/// The Rust `SimOptions` with the keywords of `simulate` applied (None: the Rust default).
+fn sim_options(
+    rtol: f64,
+    atol: f64,
+    max_steps: Option<usize>,
+    attitude: bool,
+    times: Option<Vec<f64>>,
+) -> SimOptions {
     let mut o = SimOptions {
         rtol,
         atol,
         attitude,
         ..SimOptions::default()
     };
+    if let Some(t) = times {
+        o.output = Output::Times(t);
+    }
     if let Some(n) = max_steps {
         o.max_steps = n;
     }
@@ -73,7 +84,10 @@ impl Model {
         Ok(Model::wrap(m))
     }
 
-    /// A model from the text of a TOML file (`[model] lagrangian = ...`, `[parameters]`).
+    /// A model from the text of a TOML file (`[model] lagrangian = ...`, `[parameters]`,
+    /// optional `[latex]` symbols). Raises `ModelError` with the line and column.
+    ///
+    /// >>> m = routh.Model.from_toml(open("examples/models/heavy_top.toml").read())
     #[staticmethod]
     fn from_toml(py: Python<'_>, text: &str) -> PyResult<Model> {
         let t = text.to_string();
@@ -82,7 +96,9 @@ impl Model {
         Ok(Model::wrap(m))
     }
 
-    /// A model from a TOML file.
+    /// A model from a TOML file (see `from_toml`).
+    ///
+    /// >>> gyrostat = routh.Model.load("examples/models/gyrostat.toml")
     #[staticmethod]
     fn load(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Model> {
         let m = detached(py, move || routh::Model::from_file(&path))?
@@ -90,7 +106,9 @@ impl Model {
         Ok(Model::wrap(m))
     }
 
-    /// Set a parameter in place (same shape as before).
+    /// Set a parameter in place (same shape as before: float, 3-vector or 3x3).
+    ///
+    /// >>> top.set("mgl", 2.0)
     fn set(&self, py: Python<'_>, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let p = param(name, value)?;
         let mut g = self
@@ -100,7 +118,9 @@ impl Model {
         g.set(name, p).map_err(|e| model_err(py, &e))
     }
 
-    /// A copy with some parameters changed: `m.with_params(mgl=2.0)`.
+    /// A copy with some parameters changed; the model itself is unchanged.
+    ///
+    /// >>> heavier = top.with_params(mgl=2.0, inertia=[1.0, 1.0, 1.5])
     #[pyo3(signature = (**kw))]
     fn with_params(&self, py: Python<'_>, kw: Option<&Bound<'_, PyDict>>) -> PyResult<Model> {
         let mut m = self.get()?;
@@ -157,20 +177,28 @@ impl Model {
     }
 
     /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector).
+    ///
+    /// >>> top.amended_potential([0, 0, 1], 2.0)      # p²/(2C) + mgl
+    /// 2.6
     fn amended_potential(&self, gamma: &Bound<'_, PyAny>, p_psi: f64) -> PyResult<f64> {
         use routh::Routhian;
         let g = vector3("gamma", gamma)?;
         Ok(self.get()?.amended_potential(&g, p_psi))
     }
 
-    /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)).
+    /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)): the critical points of
+    /// U_r on the sphere |γ| = 1, as a list of `SteadyMotion`.
+    ///
+    /// >>> [m.gamma for m in top.steady_motions(3.0)]
     fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
         let m = self.get()?;
         let v = detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
         Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect())
     }
 
-    /// The stability of a steady motion (sections 4–5).
+    /// The stability of a steady motion (sections 4–5, errata E5/E8) as a `StabilityReport`.
+    ///
+    /// >>> top.classify(top.steady_motions(3.0)[0]).verdict
     fn classify(&self, py: Python<'_>, motion: &SteadyMotion) -> PyResult<StabilityReport> {
         let m = self.get()?;
         let s = motion.inner.clone();
@@ -178,7 +206,13 @@ impl Model {
         Ok(StabilityReport::new(py, &r))
     }
 
-    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi).
+    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi). Keywords default to the Rust
+    /// `ContinuationOptions::default()`; `progress=True` shows the count of evaluations (tqdm
+    /// if installed, else a line on stderr). The GIL is released during the work.
+    ///
+    /// >>> d = top.bifurcation_diagram((0.0, 5.0))
+    /// >>> [(e.kind, round(e.s, 6)) for e in d.events]
+    /// [('hamiltonian_hopf', 2.0), ('branch_point', 2.5)]
     #[pyo3(signature = (range, *, initial_step=None, max_step=None, min_step=None, max_steps=None,
                         max_branches=None, newton_tol=None, event_tol=None, seeds=None,
                         verify_counts=None, progress=false))]
@@ -229,9 +263,17 @@ impl Model {
         Diagram::new(py, &d?.map_err(|e| routh_err(py, &e))?)
     }
 
-    /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end`.
+    /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end` (DOP853, the Rust
+    /// `SimOptions` defaults). `times`: record exactly at these times (dense output) instead of
+    /// at every step; `attitude=True`: also integrate the attitude (`tr.attitude`, quaternions
+    /// (x, y, z, w), `tr.euler_angles()`, `tr.plot_apex()`).
+    ///
+    /// >>> tr = top.simulate([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0, attitude=True,
+    /// ...                   times=np.linspace(0, 10, 2001))
+    /// >>> tr.omega.shape
+    /// (2001, 3)
     #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None,
-                        attitude=false))]
+                        attitude=false, times=None))]
     #[allow(clippy::too_many_arguments)]
     fn simulate(
         &self,
@@ -243,19 +285,26 @@ impl Model {
         atol: f64,
         max_steps: Option<usize>,
         attitude: bool,
+        times: Option<Vec<f64>>,
     ) -> PyResult<Trajectory> {
         let w = vector3("omega0", omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps, attitude);
+        let opts = sim_options(rtol, atol, max_steps, attitude, times);
         let t = detached(py, || routh::simulate_full(&m, w, g, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(Trajectory::new(py, &t))
     }
 
-    /// Integrate the reduced equations (39) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`.
+    /// Integrate the reduced equations (39) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`, and
+    /// reconstruct ψ, ψ̇, ω = Ω + ψ̇γ (and the attitude with `attitude=True`, by (15)).
+    /// Keywords as `simulate`.
+    ///
+    /// >>> red = top.simulate_reduced([0, 0.3, 0], [0.6, 0, 0.8], 3.0, 10.0)
+    /// >>> red.big_omega.shape == (len(red.t), 3)
+    /// True
     #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, rtol=1e-10, atol=1e-12,
-                        max_steps=None, attitude=false))]
+                        max_steps=None, attitude=false, times=None))]
     #[allow(clippy::too_many_arguments)]
     fn simulate_reduced(
         &self,
@@ -268,17 +317,23 @@ impl Model {
         atol: f64,
         max_steps: Option<usize>,
         attitude: bool,
+        times: Option<Vec<f64>>,
     ) -> PyResult<ReducedTrajectory> {
         let w = vector3("big_omega0", big_omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps, attitude);
+        let opts = sim_options(rtol, atol, max_steps, attitude, times);
         let t = detached(py, || routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(ReducedTrajectory::new(py, &t))
     }
 
-    /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic).
+    /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic): when
+    /// `c.complete`, `c.motions` are all the steady motions, proven.
+    ///
+    /// >>> c = top.certify(2.2)
+    /// >>> c.complete, len(c.motions)
+    /// (True, 2)
     fn certify(&self, py: Python<'_>, p_psi: f64) -> PyResult<Certificate> {
         let m = self.get()?;
         let c = detached(py, || {
