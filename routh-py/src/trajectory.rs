@@ -26,19 +26,25 @@ fn no_attitude() -> PyErr {
 /// True
 /// >>> psi, theta, phi = tr.euler_angles().T      # z-x-z, ψ and φ unwrapped
 /// >>> ax = tr.plot_apex()                         # the apex locus, seen from above
-#[pyclass(module = "routh", frozen, get_all)]
+#[pyclass(module = "routh", frozen)]
 pub struct Trajectory {
     /// Times, (n,).
+    #[pyo3(get)]
     pub t: Py<PyAny>,
     /// Angular velocity in the body frame, (n, 3).
+    #[pyo3(get)]
     pub omega: Py<PyAny>,
     /// The vertical in the body frame, (n, 3).
+    #[pyo3(get)]
     pub gamma: Py<PyAny>,
     /// The energy (3) at each time, (n,).
+    #[pyo3(get)]
     pub energy: Py<PyAny>,
     /// The cyclic momentum (9) at each time, (n,).
+    #[pyo3(get)]
     pub p_psi: Py<PyAny>,
     /// The attitude, (n, 4) unit quaternions (x, y, z, w); None without `attitude=True`.
+    #[pyo3(get)]
     pub attitude: Option<Py<PyAny>>,
     euler: Option<Py<PyAny>>,
     len: usize,
@@ -116,25 +122,34 @@ impl Trajectory {
 /// >>> red = top.simulate_reduced([0, 0.3, 0], [0.6, 0, 0.8], 3.0, 10.0, attitude=True)
 /// >>> red.euler_angles().shape == (len(red.t), 3)
 /// True
-#[pyclass(module = "routh", frozen, get_all)]
+#[pyclass(module = "routh", frozen)]
 pub struct ReducedTrajectory {
     /// Times, (n,).
+    #[pyo3(get)]
     pub t: Py<PyAny>,
     /// The reduced velocity Ω, (n, 3).
+    #[pyo3(get)]
     pub big_omega: Py<PyAny>,
     /// The vertical, (n, 3).
+    #[pyo3(get)]
     pub gamma: Py<PyAny>,
     /// The cyclic angle ψ, (n,).
+    #[pyo3(get)]
     pub psi: Py<PyAny>,
     /// ψ̇ (38), (n,).
+    #[pyo3(get)]
     pub psi_dot: Py<PyAny>,
     /// The angular velocity ω = Ω + ψ̇γ, (n, 3).
+    #[pyo3(get)]
     pub omega: Py<PyAny>,
     /// The energy, (n,).
+    #[pyo3(get)]
     pub energy: Py<PyAny>,
     /// The cyclic momentum, (n,).
+    #[pyo3(get)]
     pub p_psi: Py<PyAny>,
     /// The attitude, (n, 4) unit quaternions (x, y, z, w); None without `attitude=True`.
+    #[pyo3(get)]
     pub attitude: Option<Py<PyAny>>,
     euler: Option<Py<PyAny>>,
     len: usize,
