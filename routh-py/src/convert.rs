@@ -133,16 +133,15 @@ pub fn helper<'py, A>(py: Python<'py>, module: &str, name: &str, args: A) -> PyR
 where
     A: pyo3::call::PyCallArgs<'py>,
 {
-    Ok(py
-        .import(module)?
-        .getattr(name)?
-        .call1(args)?
-        .unbind())
+    Ok(py.import(module)?.getattr(name)?.call1(args)?.unbind())
 }
 
 /// An (n, 4) float64 array of unit quaternions in scipy's order `(x, y, z, w)` (scalar last,
 /// `scipy.spatial.transform.Rotation.from_quat`), or None when there are none.
-pub fn quaternions(py: Python<'_>, qs: &[routh::nalgebra::UnitQuaternion<f64>]) -> Option<Py<PyAny>> {
+pub fn quaternions(
+    py: Python<'_>,
+    qs: &[routh::nalgebra::UnitQuaternion<f64>],
+) -> Option<Py<PyAny>> {
     if qs.is_empty() {
         return None;
     }
@@ -158,5 +157,7 @@ pub fn rows3(py: Python<'_>, rows: &[[f64; 3]]) -> Option<Py<PyAny>> {
     }
     let flat: Vec<f64> = rows.iter().flatten().copied().collect();
     let a = PyArray1::from_vec(py, flat);
-    a.reshape([rows.len(), 3]).ok().map(|r| r.into_any().unbind())
+    a.reshape([rows.len(), 3])
+        .ok()
+        .map(|r| r.into_any().unbind())
 }

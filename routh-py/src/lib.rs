@@ -22,7 +22,9 @@ use pyo3::prelude::*;
 
 pub use convert::{ModelError, RouthError};
 use latex::LatexFormulas;
-use results::{Atlas, Boundary, Branch, Certificate, Diagram, Event, StabilityReport, SteadyMotion};
+use results::{
+    Atlas, Boundary, Branch, Certificate, Diagram, Event, StabilityReport, SteadyMotion,
+};
 use trajectory::{ReducedTrajectory, Trajectory};
 
 mod model;

@@ -101,8 +101,8 @@ impl Model {
     /// >>> gyrostat = routh.Model.load("examples/models/gyrostat.toml")
     #[staticmethod]
     fn load(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Model> {
-        let m = detached(py, move || routh::Model::from_file(&path))?
-            .map_err(|e| model_err(py, &e))?;
+        let m =
+            detached(py, move || routh::Model::from_file(&path))?.map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
     }
 
@@ -192,7 +192,8 @@ impl Model {
     /// >>> [m.gamma for m in top.steady_motions(3.0)]
     fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
         let m = self.get()?;
-        let v = detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
+        let v =
+            detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
         Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect())
     }
 
@@ -323,8 +324,10 @@ impl Model {
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
         let opts = sim_options(rtol, atol, max_steps, attitude, times);
-        let t = detached(py, || routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let t = detached(py, || {
+            routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         Ok(ReducedTrajectory::new(py, &t))
     }
 
@@ -370,7 +373,10 @@ impl Model {
     /// Jupyter shows a model as its Routh function R (14) and amended potential U_r (34).
     fn _repr_latex_(&self) -> PyResult<String> {
         let f = self.get()?.latex();
-        Ok(aligned(&[("R", &f.routhian), ("U_r", &f.amended_potential)]))
+        Ok(aligned(&[
+            ("R", &f.routhian),
+            ("U_r", &f.amended_potential),
+        ]))
     }
 
     fn __repr__(&self) -> PyResult<String> {

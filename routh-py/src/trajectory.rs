@@ -106,7 +106,11 @@ impl Trajectory {
         format!(
             "Trajectory(n={}, attitude={})",
             self.len,
-            if self.attitude.is_some() { "True" } else { "False" }
+            if self.attitude.is_some() {
+                "True"
+            } else {
+                "False"
+            }
         )
     }
 }
@@ -209,7 +213,11 @@ impl ReducedTrajectory {
         format!(
             "ReducedTrajectory(n={}, attitude={})",
             self.len,
-            if self.attitude.is_some() { "True" } else { "False" }
+            if self.attitude.is_some() {
+                "True"
+            } else {
+                "False"
+            }
         )
     }
 }

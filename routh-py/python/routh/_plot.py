@@ -39,10 +39,11 @@ def plot_diagram(diagram, ax=None, component=2):
                 seen.add(v[start])
                 ax.plot(s[start:hi], g[start:hi], color=colour, linestyle=ls, label=label)
                 start = i
-    for e in diagram.events:
+    # Names alternate above and below their marks, so that close events stay readable.
+    for k, e in enumerate(sorted(diagram.events, key=lambda e: e.s)):
         ax.plot([e.s], [e.gamma[component]], marker=EVENT_MARK[e.kind], color="k", linestyle="none")
         ax.annotate(EVENT_NAME[e.kind], (e.s, e.gamma[component]), textcoords="offset points",
-                    xytext=(4, 4), fontsize=8)
+                    xytext=(4, 6) if k % 2 == 0 else (4, -14), fontsize=8)
     ax.set_xlabel("s")
     ax.set_ylabel(f"γ{component + 1}")
     if seen:
