@@ -332,17 +332,34 @@ impl Model {
     }
 
     /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic): when
-    /// `c.complete`, `c.motions` are all the steady motions, proven.
+    /// `c.complete`, `c.motions` are all the steady motions, proven. Keywords default to the
+    /// Rust `CertifyOptions::default()` (initial_split 4, min_width 1e-3, max_boxes 400 000,
+    /// refine_iterations 30); what is left when `max_boxes` runs out is `c.undecided`.
     ///
     /// >>> c = top.certify(2.2)
     /// >>> c.complete, len(c.motions)
     /// (True, 2)
-    fn certify(&self, py: Python<'_>, p_psi: f64) -> PyResult<Certificate> {
+    #[pyo3(signature = (p_psi, *, initial_split=None, min_width=None, max_boxes=None,
+                        refine_iterations=None))]
+    fn certify(
+        &self,
+        py: Python<'_>,
+        p_psi: f64,
+        initial_split: Option<usize>,
+        min_width: Option<f64>,
+        max_boxes: Option<usize>,
+        refine_iterations: Option<usize>,
+    ) -> PyResult<Certificate> {
+        let d = CertifyOptions::default();
+        let opts = CertifyOptions {
+            initial_split: initial_split.unwrap_or(d.initial_split),
+            min_width: min_width.unwrap_or(d.min_width),
+            max_boxes: max_boxes.unwrap_or(d.max_boxes),
+            refine_iterations: refine_iterations.unwrap_or(d.refine_iterations),
+        };
         let m = self.get()?;
-        let c = detached(py, || {
-            routh::steady_motions_certified(&m, p_psi, &CertifyOptions::default())
-        })?
-        .map_err(|e| routh_err(py, &e))?;
+        let c = detached(py, || routh::steady_motions_certified(&m, p_psi, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
         let mut motions = Vec::with_capacity(c.motions.len());
         for cm in &c.motions {
             motions.push(Py::new(

@@ -248,7 +248,11 @@ class Model:
         atol: float = 1e-12, max_steps: int | None = None, attitude: bool = False,
         times: Sequence[float] | npt.NDArray[np.float64] | None = None,
     ) -> ReducedTrajectory: ...
-    def certify(self, p_psi: float) -> Certificate: ...
+    def certify(
+        self, p_psi: float, *, initial_split: int | None = None, min_width: float | None = None,
+        max_boxes: int | None = None, refine_iterations: int | None = None,
+    ) -> Certificate:
+        """A certified enumeration of the steady motions at p_psi (interval arithmetic)."""
 
 def bifurcation_diagram(
     family: Callable[[float], tuple[Model, float]],
