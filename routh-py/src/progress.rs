@@ -1,7 +1,7 @@
-//! Progress of long work (`progress=True`): a tqdm bar when tqdm is installed, else a line on
-//! `sys.stderr` rewritten in place (`routh: <what>: <n>`). Ticks come from Rust threads that do
-//! not hold the GIL; the display is refreshed at most every 0.1 s (tqdm) or 0.25 s (stderr), so
-//! the cost per tick is an atomic add and a clock read.
+//! Progress of long work (`progress=True`): a tqdm bar (`tqdm.auto`) when tqdm is installed,
+//! else a line on `sys.stderr` rewritten in place (`routh: <what>: <n>`). Ticks come from Rust
+//! threads that do not hold the GIL; the display is refreshed at most every 0.1 s (tqdm) or
+//! 0.25 s (stderr), so the cost per tick is an atomic add and a clock read.
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -24,12 +24,14 @@ impl Progress {
         if !enabled {
             return Ok(None);
         }
-        let bar = match py.import("tqdm") {
-            Ok(t) => {
+        // tqdm.auto picks the notebook widget in Jupyter, the text bar elsewhere.
+        let module = py.import("tqdm.auto").or_else(|_| py.import("tqdm"));
+        let bar = match module.and_then(|t| t.getattr("tqdm")) {
+            Ok(tqdm) => {
                 let kw = PyDict::new(py);
                 kw.set_item("desc", what)?;
                 kw.set_item("unit", "eval")?;
-                Some(t.getattr("tqdm")?.call((), Some(&kw))?.unbind())
+                Some(tqdm.call((), Some(&kw))?.unbind())
             }
             Err(_) => None,
         };

@@ -70,6 +70,7 @@ class FakeTqdm:
 def test_progress_uses_tqdm_when_installed(top, monkeypatch):
     FakeTqdm.made = []
     monkeypatch.setitem(sys.modules, "tqdm", types.SimpleNamespace(tqdm=FakeTqdm))
+    monkeypatch.setitem(sys.modules, "tqdm.auto", types.SimpleNamespace(tqdm=FakeTqdm))
     calls = []
 
     def family(s):
@@ -87,6 +88,7 @@ def test_progress_uses_tqdm_when_installed(top, monkeypatch):
 
 def test_progress_without_tqdm_writes_stderr(top, monkeypatch, capsys):
     monkeypatch.setitem(sys.modules, "tqdm", None)  # `import tqdm` raises ImportError
+    monkeypatch.setitem(sys.modules, "tqdm.auto", None)
     calls = []
 
     def family(x, y):
