@@ -154,7 +154,14 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
     Ok((m.get().get()?, p))
 }
 
-/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`.
+/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`. Keywords
+/// default to the Rust `ContinuationOptions::default()`; `progress=True` shows the count of
+/// family evaluations. The family is called with the GIL held; the continuation between calls
+/// runs without it. An exception raised by the family stops the work and is re-raised.
+///
+/// >>> d = routh.bifurcation_diagram(lambda mgl: (top.with_params(mgl=mgl), 3.0), (0.5, 3.0))
+/// >>> sorted((e.kind, round(e.s, 6)) for e in d.events)
+/// [('branch_point', 1.44), ('hamiltonian_hopf', 2.25)]
 #[pyfunction]
 #[pyo3(signature = (family, range, *, initial_step=None, max_step=None, min_step=None,
                     max_steps=None, max_branches=None, newton_tol=None, event_tol=None,
@@ -210,7 +217,12 @@ pub fn bifurcation_diagram(
 }
 
 /// The stability atlas of a family `(x, y) -> (Model, p_psi)` over `[x0, x1] × [y0, y1]`,
-/// following the steady motion near `gamma_guess`.
+/// following the steady motion near `gamma_guess`. Keywords default to the Rust
+/// `AtlasOptions::default()`; a grid of more than `MAX_ATLAS_NODES` nodes is refused.
+///
+/// >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
+/// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
+/// >>> a.verdicts[0][0], [b.kind for b in a.boundaries]
 #[pyfunction]
 #[pyo3(signature = (family, gamma_guess, x, y, *, nx=None, ny=None, curve_tol=None,
                     curve_step=None, max_curve_points=None, progress=false))]

@@ -8,6 +8,9 @@ use pyo3::prelude::*;
 /// A steady motion (paper (45)–(46)): the vertical `gamma` (body frame, (3,) array), the cyclic
 /// momentum `p_psi`, the spin `psi_dot` (38), the multiplier `mu`, the `energy` (3), the amended
 /// potential `amended_potential` (42) and whether it is `isolated` (not on a circle of them).
+///
+/// >>> m = top.steady_motions(3.0)[0]
+/// >>> m.gamma, m.psi_dot, m.energy
 #[pyclass(module = "routh", frozen)]
 pub struct SteadyMotion {
     pub(crate) inner: routh::SteadyMotion,
@@ -72,6 +75,9 @@ impl SteadyMotion {
 /// The stability of a steady motion (sections 4–5): `verdict` ("secularly_stable",
 /// "gyroscopically_stabilized", "unstable", "degenerate"), `degree_of_instability`,
 /// `restricted_hessian_eigenvalues` ((2,) float64) and `f2_roots` ((4,) complex128).
+///
+/// >>> r = top.classify(top.steady_motions(3.0)[0])
+/// >>> r.verdict, r.degree_of_instability, r.f2_roots
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct StabilityReport {
     /// One of "secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate".
@@ -181,7 +187,12 @@ impl Event {
     }
 }
 
-/// A bifurcation diagram: `branches` and `events`. `plot(ax=None)` draws it with matplotlib.
+/// A bifurcation diagram: `branches` and `events`. `plot(ax=None)` draws it with matplotlib;
+/// in Jupyter it shows its tables and figure.
+///
+/// >>> d = top.bifurcation_diagram((0.0, 5.0))
+/// >>> [(e.kind, round(e.s, 6), e.before, e.after) for e in d.events]
+/// >>> ax = d.plot()
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Diagram {
     /// The branches of steady motions.
@@ -269,6 +280,10 @@ impl Boundary {
 
 /// A stability atlas over a 2-parameter family: grid `x` (nx,), `y` (ny,), `verdicts` (nx lists
 /// of ny strings or None where no steady motion was followed) and the `boundaries`.
+///
+/// >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
+/// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
+/// >>> ax = a.plot()
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Atlas {
     /// The grid in the first parameter, (nx,) float64.
@@ -343,6 +358,9 @@ impl Atlas {
 
 /// A certified enumeration of the steady motions at one momentum: `complete` (every steady
 /// motion is in `motions`, proven by interval arithmetic), `motions`, `p_psi`, `boxes`.
+///
+/// >>> c = top.certify(2.2)
+/// >>> c.complete, [m.gamma for m in c.motions]
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Certificate {
     /// Whether the enumeration is proven complete.
