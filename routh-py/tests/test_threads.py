@@ -47,7 +47,8 @@ def test_atlas_and_simulation_release_the_gil(top):
         lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1], (0.5, 2.0), (0.5, 5.0),
         nx=8, ny=8))
     assert inside
-    _, inside = ticks_during(lambda: top.simulate([0, 0.3, 5], [0.6, 0, 0.8], 200.0))
+    # ~64 000 steps: long enough for the ticker to be scheduled on a loaded machine.
+    _, inside = ticks_during(lambda: top.simulate([0, 0.3, 5], [0.6, 0, 0.8], 5000.0))
     assert inside
 
 
