@@ -1,5 +1,6 @@
-"""The heavy (Lagrange) top from Python: its steady motions, their stability, and the
-bifurcation diagram over the cyclic momentum (as examples/heavy_top.rs).
+"""The heavy (Lagrange) top from Python: its steady motions, their stability, the bifurcation
+diagram over the cyclic momentum (as examples/heavy_top.rs), its amended potential in LaTeX,
+and the apex locus of a fast top.
 
     pip install ./routh-py matplotlib && python examples/python/heavy_top.py
 """
@@ -7,6 +8,7 @@ bifurcation diagram over the cyclic momentum (as examples/heavy_top.rs).
 import os
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -29,8 +31,23 @@ d = top.bifurcation_diagram((0.0, 5.0))
 for e in d.events:
     print(f"{e.kind} at p_psi = {e.s:.8f}: {e.before} -> {e.after}")
 
-ax = d.plot()
-ax.set_xlabel("p_psi")
+print("U_r =", top.latex().amended_potential)
+
+# A fast top released with a small transverse spin: its apex loops (Goldstein §5.7).
+tr = top.simulate([0.0, 0.3, 5.0], [0.6, 0.0, 0.8], 10.0, attitude=True,
+                  times=np.linspace(0.0, 10.0, 2001))
+psi, theta, _ = tr.euler_angles().T
+print(f"nutation between {np.degrees(theta.min()):.2f} and {np.degrees(theta.max()):.2f} deg, "
+      f"precession {np.degrees(psi[-1] - psi[0]):.1f} deg in t = 10, "
+      f"energy drift {abs(tr.energy - tr.energy[0]).max():.1e}")
+
+fig, (left, right) = plt.subplots(1, 2, figsize=(12, 5))
+d.plot(ax=left)
+left.set_xlabel("p_psi")
+left.set_title("heavy top: steady motions over p_psi")
+tr.plot_apex(ax=right)
+right.set_title("apex locus (seen from above)")
+fig.tight_layout()
 out = os.environ.get("ROUTH_FIGURE", "heavy_top_diagram.png")
-plt.savefig(out)
+fig.savefig(out)
 print(f"diagram written to {out}")

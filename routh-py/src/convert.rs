@@ -127,3 +127,37 @@ pub fn verdict(s: Stability) -> &'static str {
 pub fn event_kind(k: routh::EventKind) -> &'static str {
     routh::export::event_name(k)
 }
+
+/// Calls `routh.<module>.<name>(*args)` of the pure-Python layer (figures, HTML).
+pub fn helper<'py, A>(py: Python<'py>, module: &str, name: &str, args: A) -> PyResult<Py<PyAny>>
+where
+    A: pyo3::call::PyCallArgs<'py>,
+{
+    Ok(py.import(module)?.getattr(name)?.call1(args)?.unbind())
+}
+
+/// An (n, 4) float64 array of unit quaternions in scipy's order `(x, y, z, w)` (scalar last,
+/// `scipy.spatial.transform.Rotation.from_quat`), or None when there are none.
+pub fn quaternions(
+    py: Python<'_>,
+    qs: &[routh::nalgebra::UnitQuaternion<f64>],
+) -> Option<Py<PyAny>> {
+    if qs.is_empty() {
+        return None;
+    }
+    let flat: Vec<f64> = qs.iter().flat_map(|q| [q.i, q.j, q.k, q.w]).collect();
+    let a = PyArray1::from_vec(py, flat);
+    a.reshape([qs.len(), 4]).ok().map(|r| r.into_any().unbind())
+}
+
+/// An (n, 3) float64 array of rows, or None when there are none.
+pub fn rows3(py: Python<'_>, rows: &[[f64; 3]]) -> Option<Py<PyAny>> {
+    if rows.is_empty() {
+        return None;
+    }
+    let flat: Vec<f64> = rows.iter().flatten().copied().collect();
+    let a = PyArray1::from_vec(py, flat);
+    a.reshape([rows.len(), 3])
+        .ok()
+        .map(|r| r.into_any().unbind())
+}

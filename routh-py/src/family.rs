@@ -4,8 +4,10 @@
 //! it to call Python. A Python exception raised by the family stops the work (every later
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
-use crate::convert::{routh_err, vector3};
+use crate::convert::{routh_err, vector3, RouthError};
+use crate::guard::detached;
 use crate::model::Model;
+use crate::progress::Progress;
 use crate::results::{Atlas, Diagram};
 use pyo3::prelude::*;
 use routh::{AtlasOptions, ContinuationOptions};
@@ -62,7 +64,7 @@ struct PyFamily {
     f: Py<PyAny>,
     fallback: routh::Model,
     error: Mutex<Option<PyErr>>,
-    progress: Option<Py<PyAny>>,
+    progress: Option<Progress>,
 }
 
 impl PyFamily {
@@ -80,18 +82,10 @@ impl PyFamily {
             f.call1(py, (first.0,))?
         };
         let (m, _) = extract(out.bind(py))?;
-        let progress = if progress {
-            match py.import("tqdm") {
-                Ok(t) => {
-                    let kw = pyo3::types::PyDict::new(py);
-                    kw.set_item("desc", "family evaluations")?;
-                    Some(t.getattr("tqdm")?.call((), Some(&kw))?.unbind())
-                }
-                Err(_) => None,
-            }
-        } else {
-            None
-        };
+        let progress = Progress::new(py, progress, "family evaluations")?;
+        if let Some(p) = &progress {
+            p.tick(); // the call above (not due yet: the display was just made)
+        }
         Ok(PyFamily {
             f,
             fallback: m,
@@ -104,9 +98,14 @@ impl PyFamily {
         self.error.lock().map(|e| e.is_some()).unwrap_or(true)
     }
 
+    /// Evaluates the family at `args` from a Rust thread without the GIL: takes the GIL for
+    /// the Python call only.
     fn call(&self, args: (f64, f64), two: bool) -> (routh::Model, f64) {
         if self.failed() {
             return (self.fallback.clone(), f64::NAN);
+        }
+        if let Some(p) = &self.progress {
+            p.tick();
         }
         Python::attach(|py| {
             let out = if two {
@@ -114,9 +113,6 @@ impl PyFamily {
             } else {
                 self.f.call1(py, (args.0,))
             };
-            if let Some(p) = &self.progress {
-                let _ = p.call_method1(py, "update", (1,));
-            }
             match out.and_then(|o| extract(o.bind(py))) {
                 Ok(r) => r,
                 Err(e) => {
@@ -140,7 +136,7 @@ impl PyFamily {
 
     fn close(&self, py: Python<'_>) {
         if let Some(p) = &self.progress {
-            let _ = p.call_method0(py, "close");
+            p.close(py);
         }
     }
 
@@ -158,7 +154,14 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
     Ok((m.get().get()?, p))
 }
 
-/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`.
+/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`. Keywords
+/// default to the Rust `ContinuationOptions::default()`; `progress=True` shows the count of
+/// family evaluations. The family is called with the GIL held; the continuation between calls
+/// runs without it. An exception raised by the family stops the work and is re-raised.
+///
+/// >>> d = routh.bifurcation_diagram(lambda mgl: (top.with_params(mgl=mgl), 3.0), (0.5, 3.0))
+/// >>> sorted((e.kind, round(e.s, 6)) for e in d.events)
+/// [('branch_point', 1.44), ('hamiltonian_hopf', 2.25)]
 #[pyfunction]
 #[pyo3(signature = (family, range, *, initial_step=None, max_step=None, min_step=None,
                     max_steps=None, max_branches=None, newton_tol=None, event_tol=None,
@@ -191,7 +194,13 @@ pub fn bifurcation_diagram(
         verify_counts,
     });
     let fam = PyFamily::new(py, family, (range.0, 0.0), false, progress)?;
-    let r = py.detach(|| routh::bifurcation_diagram(|s| fam.call((s, 0.0), false), range, &opts));
+    let r = detached(py, || {
+        routh::bifurcation_diagram(|s| fam.call((s, 0.0), false), range, &opts)
+    });
+    let r = match r {
+        Ok(r) => r,
+        Err(panic) => return Err(fam.finish(py, panic)),
+    };
     match r {
         Ok(d) => {
             fam.close(py);
@@ -208,7 +217,12 @@ pub fn bifurcation_diagram(
 }
 
 /// The stability atlas of a family `(x, y) -> (Model, p_psi)` over `[x0, x1] × [y0, y1]`,
-/// following the steady motion near `gamma_guess`.
+/// following the steady motion near `gamma_guess`. Keywords default to the Rust
+/// `AtlasOptions::default()`; a grid of more than `MAX_ATLAS_NODES` nodes is refused.
+///
+/// >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
+/// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
+/// >>> a.verdicts[0][0], [b.kind for b in a.boundaries]
 #[pyfunction]
 #[pyo3(signature = (family, gamma_guess, x, y, *, nx=None, ny=None, curve_tol=None,
                     curve_step=None, max_curve_points=None, progress=false))]
@@ -243,8 +257,15 @@ pub fn stability_atlas(
     if let Some(v) = max_curve_points {
         opts.max_curve_points = v;
     }
+    check_grid(py, opts.nx, opts.ny)?;
     let fam = PyFamily::new(py, family, (x.0, y.0), true, progress)?;
-    let r = py.detach(|| routh::stability_atlas(|a, b| fam.call((a, b), true), g, x, y, &opts));
+    let r = detached(py, || {
+        routh::stability_atlas(|a, b| fam.call((a, b), true), g, x, y, &opts)
+    });
+    let r = match r {
+        Ok(r) => r,
+        Err(panic) => return Err(fam.finish(py, panic)),
+    };
     match r {
         Ok(a) => {
             fam.close(py);
@@ -256,6 +277,27 @@ pub fn stability_atlas(
         Err(e) => {
             let other = routh_err(py, &e);
             Err(fam.finish(py, other))
+        }
+    }
+}
+
+/// The largest atlas grid, `nx·ny` nodes: larger grids are refused before any allocation (the
+/// Rust atlas allocates its grid up front, and an overflowing or unallocatable size would abort
+/// the interpreter). Ten million nodes is far beyond what a classification per node can fill in
+/// a session.
+pub const MAX_ATLAS_NODES: usize = 10_000_000;
+
+/// `nx·ny ≤ MAX_ATLAS_NODES`, else a `routh.RouthError` of kind "InvalidOption".
+fn check_grid(py: Python<'_>, nx: usize, ny: usize) -> PyResult<()> {
+    match nx.checked_mul(ny) {
+        Some(n) if n <= MAX_ATLAS_NODES => Ok(()),
+        _ => {
+            let err = RouthError::new_err(format!(
+                "invalid option nx, ny: a grid of {nx} x {ny} nodes exceeds the limit of \
+                 {MAX_ATLAS_NODES} nodes"
+            ));
+            let _ = err.value(py).setattr("kind", "InvalidOption");
+            Err(err)
         }
     }
 }

@@ -12,15 +12,20 @@
 
 mod convert;
 mod family;
+mod guard;
+mod latex;
+mod progress;
 mod results;
+mod trajectory;
 
 use pyo3::prelude::*;
 
 pub use convert::{ModelError, RouthError};
+use latex::LatexFormulas;
 use results::{
-    Atlas, Boundary, Branch, Certificate, Diagram, Event, ReducedTrajectory, StabilityReport,
-    SteadyMotion, Trajectory,
+    Atlas, Boundary, Branch, Certificate, Diagram, Event, StabilityReport, SteadyMotion,
 };
+use trajectory::{ReducedTrajectory, Trajectory};
 
 mod model;
 use model::Model;
@@ -42,8 +47,10 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Trajectory>()?;
     m.add_class::<ReducedTrajectory>()?;
     m.add_class::<Certificate>()?;
+    m.add_class::<LatexFormulas>()?;
     m.add_function(wrap_pyfunction!(family::bifurcation_diagram, m)?)?;
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;
+    m.add("MAX_ATLAS_NODES", family::MAX_ATLAS_NODES)?;
     Ok(())
 }

@@ -2,11 +2,14 @@
 
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3};
 use crate::family::{continuation_options, ContinuationKw};
-use crate::results::{
-    Certificate, Diagram, ReducedTrajectory, StabilityReport, SteadyMotion, Trajectory,
-};
+use crate::guard::detached;
+use crate::latex::{aligned, LatexFormulas};
+use crate::progress::Progress;
+use crate::results::{Certificate, Diagram, StabilityReport, SteadyMotion};
+use crate::trajectory::{ReducedTrajectory, Trajectory};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
+use routh::sim::Output;
 use routh::{CertifyOptions, Param, SimOptions};
 
 /// A rigid-body model: a Lagrangian in the language of `#[derive(Lagrangian)]` and the values
@@ -34,12 +37,23 @@ impl Model {
     }
 }
 
-fn sim_options(rtol: f64, atol: f64, max_steps: Option<usize>) -> SimOptions {
+/// The Rust `SimOptions` with the keywords of `simulate` applied (None: the Rust default).
+fn sim_options(
+    rtol: f64,
+    atol: f64,
+    max_steps: Option<usize>,
+    attitude: bool,
+    times: Option<Vec<f64>>,
+) -> SimOptions {
     let mut o = SimOptions {
         rtol,
         atol,
+        attitude,
         ..SimOptions::default()
     };
+    if let Some(t) = times {
+        o.output = Output::Times(t);
+    }
     if let Some(n) = max_steps {
         o.max_steps = n;
     }
@@ -65,32 +79,36 @@ impl Model {
         }
         let refs: Vec<(&str, Param)> = params.iter().map(|(n, p)| (n.as_str(), *p)).collect();
         let text = lagrangian.to_string();
-        let m = py
-            .detach(move || routh::Model::new(&text, &refs))
+        let m = detached(py, move || routh::Model::new(&text, &refs))?
             .map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
     }
 
-    /// A model from the text of a TOML file (`[model] lagrangian = ...`, `[parameters]`).
+    /// A model from the text of a TOML file (`[model] lagrangian = ...`, `[parameters]`,
+    /// optional `[latex]` symbols). Raises `ModelError` with the line and column.
+    ///
+    /// >>> m = routh.Model.from_toml(open("examples/models/heavy_top.toml").read())
     #[staticmethod]
     fn from_toml(py: Python<'_>, text: &str) -> PyResult<Model> {
         let t = text.to_string();
-        let m = py
-            .detach(move || routh::Model::from_toml(&t))
-            .map_err(|e| model_err(py, &e))?;
+        let m =
+            detached(py, move || routh::Model::from_toml(&t))?.map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
     }
 
-    /// A model from a TOML file.
+    /// A model from a TOML file (see `from_toml`).
+    ///
+    /// >>> gyrostat = routh.Model.load("examples/models/gyrostat.toml")
     #[staticmethod]
     fn load(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Model> {
-        let m = py
-            .detach(move || routh::Model::from_file(&path))
-            .map_err(|e| model_err(py, &e))?;
+        let m =
+            detached(py, move || routh::Model::from_file(&path))?.map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
     }
 
-    /// Set a parameter in place (same shape as before).
+    /// Set a parameter in place (same shape as before: float, 3-vector or 3x3).
+    ///
+    /// >>> top.set("mgl", 2.0)
     fn set(&self, py: Python<'_>, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let p = param(name, value)?;
         let mut g = self
@@ -100,7 +118,9 @@ impl Model {
         g.set(name, p).map_err(|e| model_err(py, &e))
     }
 
-    /// A copy with some parameters changed: `m.with_params(mgl=2.0)`.
+    /// A copy with some parameters changed; the model itself is unchanged.
+    ///
+    /// >>> heavier = top.with_params(mgl=2.0, inertia=[1.0, 1.0, 1.5])
     #[pyo3(signature = (**kw))]
     fn with_params(&self, py: Python<'_>, kw: Option<&Bound<'_, PyDict>>) -> PyResult<Model> {
         let mut m = self.get()?;
@@ -157,36 +177,46 @@ impl Model {
     }
 
     /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector).
+    ///
+    /// >>> top.amended_potential([0, 0, 1], 2.0)      # p²/(2C) + mgl
+    /// 2.6
     fn amended_potential(&self, gamma: &Bound<'_, PyAny>, p_psi: f64) -> PyResult<f64> {
         use routh::Routhian;
         let g = vector3("gamma", gamma)?;
         Ok(self.get()?.amended_potential(&g, p_psi))
     }
 
-    /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)).
+    /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)): the critical points of
+    /// U_r on the sphere |γ| = 1, as a list of `SteadyMotion`.
+    ///
+    /// >>> [m.gamma for m in top.steady_motions(3.0)]
     fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
         let m = self.get()?;
-        let r = py.detach(|| routh::steady_motions(&m, p_psi));
-        match r {
-            Ok(v) => Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect()),
-            Err(e) => Err(routh_err(py, &e)),
-        }
+        let v =
+            detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
+        Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect())
     }
 
-    /// The stability of a steady motion (sections 4–5).
+    /// The stability of a steady motion (sections 4–5, errata E5/E8) as a `StabilityReport`.
+    ///
+    /// >>> top.classify(top.steady_motions(3.0)[0]).verdict
     fn classify(&self, py: Python<'_>, motion: &SteadyMotion) -> PyResult<StabilityReport> {
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r = py
-            .detach(|| routh::classify(&m, &s))
-            .map_err(|e| routh_err(py, &e))?;
+        let r = detached(py, || routh::classify(&m, &s))?.map_err(|e| routh_err(py, &e))?;
         Ok(StabilityReport::new(py, &r))
     }
 
-    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi).
+    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi). Keywords default to the Rust
+    /// `ContinuationOptions::default()`; `progress=True` shows the count of evaluations (tqdm
+    /// if installed, else a line on stderr). The GIL is released during the work.
+    ///
+    /// >>> d = top.bifurcation_diagram((0.0, 5.0))
+    /// >>> [(e.kind, round(e.s, 6)) for e in d.events]
+    /// [('hamiltonian_hopf', 2.0), ('branch_point', 2.5)]
     #[pyo3(signature = (range, *, initial_step=None, max_step=None, min_step=None, max_steps=None,
                         max_branches=None, newton_tol=None, event_tol=None, seeds=None,
-                        verify_counts=None))]
+                        verify_counts=None, progress=false))]
     #[allow(clippy::too_many_arguments)]
     fn bifurcation_diagram(
         &self,
@@ -201,6 +231,7 @@ impl Model {
         event_tol: Option<f64>,
         seeds: Option<usize>,
         verify_counts: Option<bool>,
+        progress: bool,
     ) -> PyResult<Diagram> {
         let opts = continuation_options(ContinuationKw {
             initial_step,
@@ -214,14 +245,36 @@ impl Model {
             verify_counts,
         });
         let m = self.get()?;
-        let d = py
-            .detach(|| routh::bifurcation_diagram(|p| (m.clone(), p), range, &opts))
-            .map_err(|e| routh_err(py, &e))?;
-        Diagram::new(py, &d)
+        let bar = Progress::new(py, progress, "steady-motion evaluations")?;
+        let d = detached(py, || {
+            routh::bifurcation_diagram(
+                |p| {
+                    if let Some(b) = &bar {
+                        b.tick();
+                    }
+                    (m.clone(), p)
+                },
+                range,
+                &opts,
+            )
+        });
+        if let Some(b) = &bar {
+            b.close(py);
+        }
+        Diagram::new(py, &d?.map_err(|e| routh_err(py, &e))?)
     }
 
-    /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end`.
-    #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None))]
+    /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end` (DOP853, the Rust
+    /// `SimOptions` defaults). `times`: record exactly at these times (dense output) instead of
+    /// at every step; `attitude=True`: also integrate the attitude (`tr.attitude`, quaternions
+    /// (x, y, z, w), `tr.euler_angles()`, `tr.plot_apex()`).
+    ///
+    /// >>> tr = top.simulate([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0, attitude=True,
+    /// ...                   times=np.linspace(0, 10, 2001))
+    /// >>> tr.omega.shape
+    /// (2001, 3)
+    #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None,
+                        attitude=false, times=None))]
     #[allow(clippy::too_many_arguments)]
     fn simulate(
         &self,
@@ -232,19 +285,27 @@ impl Model {
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
+        attitude: bool,
+        times: Option<Vec<f64>>,
     ) -> PyResult<Trajectory> {
         let w = vector3("omega0", omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps);
-        let t = py
-            .detach(|| routh::simulate_full(&m, w, g, t_end, &opts))
+        let opts = sim_options(rtol, atol, max_steps, attitude, times);
+        let t = detached(py, || routh::simulate_full(&m, w, g, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(Trajectory::new(py, &t))
     }
 
-    /// Integrate the reduced equations (39) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`.
-    #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None))]
+    /// Integrate the reduced equations (39) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`, and
+    /// reconstruct ψ, ψ̇, ω = Ω + ψ̇γ (and the attitude with `attitude=True`, by (15)).
+    /// Keywords as `simulate`.
+    ///
+    /// >>> red = top.simulate_reduced([0, 0.3, 0], [0.6, 0, 0.8], 3.0, 10.0)
+    /// >>> red.big_omega.shape == (len(red.t), 3)
+    /// True
+    #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, rtol=1e-10, atol=1e-12,
+                        max_steps=None, attitude=false, times=None))]
     #[allow(clippy::too_many_arguments)]
     fn simulate_reduced(
         &self,
@@ -256,22 +317,48 @@ impl Model {
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
+        attitude: bool,
+        times: Option<Vec<f64>>,
     ) -> PyResult<ReducedTrajectory> {
         let w = vector3("big_omega0", big_omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps);
-        let t = py
-            .detach(|| routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts))
-            .map_err(|e| routh_err(py, &e))?;
+        let opts = sim_options(rtol, atol, max_steps, attitude, times);
+        let t = detached(py, || {
+            routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         Ok(ReducedTrajectory::new(py, &t))
     }
 
-    /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic).
-    fn certify(&self, py: Python<'_>, p_psi: f64) -> PyResult<Certificate> {
+    /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic): when
+    /// `c.complete`, `c.motions` are all the steady motions, proven. Keywords default to the
+    /// Rust `CertifyOptions::default()` (initial_split 4, min_width 1e-3, max_boxes 400 000,
+    /// refine_iterations 30); what is left when `max_boxes` runs out is `c.undecided`.
+    ///
+    /// >>> c = top.certify(2.2)
+    /// >>> c.complete, len(c.motions)
+    /// (True, 2)
+    #[pyo3(signature = (p_psi, *, initial_split=None, min_width=None, max_boxes=None,
+                        refine_iterations=None))]
+    fn certify(
+        &self,
+        py: Python<'_>,
+        p_psi: f64,
+        initial_split: Option<usize>,
+        min_width: Option<f64>,
+        max_boxes: Option<usize>,
+        refine_iterations: Option<usize>,
+    ) -> PyResult<Certificate> {
+        let d = CertifyOptions::default();
+        let opts = CertifyOptions {
+            initial_split: initial_split.unwrap_or(d.initial_split),
+            min_width: min_width.unwrap_or(d.min_width),
+            max_boxes: max_boxes.unwrap_or(d.max_boxes),
+            refine_iterations: refine_iterations.unwrap_or(d.refine_iterations),
+        };
         let m = self.get()?;
-        let c = py
-            .detach(|| routh::steady_motions_certified(&m, p_psi, &CertifyOptions::default()))
+        let c = detached(py, || routh::steady_motions_certified(&m, p_psi, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         let mut motions = Vec::with_capacity(c.motions.len());
         for cm in &c.motions {
@@ -289,6 +376,24 @@ impl Model {
             boxes: c.boxes,
             undecided: c.undecided.len(),
         })
+    }
+
+    /// The derived formulas in LaTeX (`routh.LatexFormulas`: `lagrangian`, `psi_dot`,
+    /// `routhian`, `amended_potential`, `a`, `g`, `c`), with the TOML's `[latex]` symbols.
+    ///
+    /// >>> f = top.latex()
+    /// >>> print(f.amended_potential)
+    fn latex(&self) -> PyResult<LatexFormulas> {
+        Ok(LatexFormulas::new(self.get()?.latex()))
+    }
+
+    /// Jupyter shows a model as its Routh function R (14) and amended potential U_r (34).
+    fn _repr_latex_(&self) -> PyResult<String> {
+        let f = self.get()?.latex();
+        Ok(aligned(&[
+            ("R", &f.routhian),
+            ("U_r", &f.amended_potential),
+        ]))
     }
 
     fn __repr__(&self) -> PyResult<String> {
@@ -312,7 +417,7 @@ impl Model {
 #[pyfunction]
 pub fn _bench_rust(py: Python<'_>, model: &Model, p_psi: f64, n: usize) -> PyResult<f64> {
     let m = model.get()?;
-    py.detach(|| {
+    detached(py, || {
         let start = std::time::Instant::now();
         for _ in 0..n.max(1) {
             let ms = routh::steady_motions(&m, p_psi)?;
@@ -321,6 +426,6 @@ pub fn _bench_rust(py: Python<'_>, model: &Model, p_psi: f64, n: usize) -> PyRes
             }
         }
         Ok(start.elapsed().as_secs_f64() / n.max(1) as f64)
-    })
+    })?
     .map_err(|e: routh::RouthError| routh_err(py, &e))
 }

@@ -1,13 +1,16 @@
 //! The result classes: steady motions, reports, diagrams, atlases, trajectories, certificates.
 //! Arrays are built once, when the result is made, and handed out as numpy arrays.
 
-use crate::convert::{event_kind, vec3, vecs, verdict};
+use crate::convert::{event_kind, helper, vec3, vecs, verdict};
 use numpy::{Complex64, PyArray1, PyArray2};
 use pyo3::prelude::*;
 
 /// A steady motion (paper (45)–(46)): the vertical `gamma` (body frame, (3,) array), the cyclic
 /// momentum `p_psi`, the spin `psi_dot` (38), the multiplier `mu`, the `energy` (3), the amended
 /// potential `amended_potential` (42) and whether it is `isolated` (not on a circle of them).
+///
+/// >>> m = top.steady_motions(3.0)[0]
+/// >>> m.gamma, m.psi_dot, m.energy
 #[pyclass(module = "routh", frozen)]
 pub struct SteadyMotion {
     pub(crate) inner: routh::SteadyMotion,
@@ -50,6 +53,10 @@ impl SteadyMotion {
     fn isolated(&self) -> bool {
         self.inner.isolated
     }
+    /// A small HTML table (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "motion_html", (slf,))
+    }
     fn __repr__(&self) -> String {
         let g = self.inner.gamma;
         format!(
@@ -68,6 +75,9 @@ impl SteadyMotion {
 /// The stability of a steady motion (sections 4–5): `verdict` ("secularly_stable",
 /// "gyroscopically_stabilized", "unstable", "degenerate"), `degree_of_instability`,
 /// `restricted_hessian_eigenvalues` ((2,) float64) and `f2_roots` ((4,) complex128).
+///
+/// >>> r = top.classify(top.steady_motions(3.0)[0])
+/// >>> r.verdict, r.degree_of_instability, r.f2_roots
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct StabilityReport {
     /// One of "secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate".
@@ -103,6 +113,10 @@ impl StabilityReport {
 
 #[pymethods]
 impl StabilityReport {
+    /// A small HTML table (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "report_html", (slf,))
+    }
     fn __repr__(&self, py: Python<'_>) -> String {
         let eig = self
             .restricted_hessian_eigenvalues
@@ -173,7 +187,12 @@ impl Event {
     }
 }
 
-/// A bifurcation diagram: `branches` and `events`. `plot(ax=None)` draws it with matplotlib.
+/// A bifurcation diagram: `branches` and `events`. `plot(ax=None)` draws it with matplotlib;
+/// in Jupyter it shows its tables and figure.
+///
+/// >>> d = top.bifurcation_diagram((0.0, 5.0))
+/// >>> [(e.kind, round(e.s, 6), e.before, e.after) for e in d.events]
+/// >>> ax = d.plot()
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Diagram {
     /// The branches of steady motions.
@@ -225,13 +244,13 @@ impl Diagram {
         let f = py.import("routh._plot")?.getattr("plot_diagram")?;
         Ok(f.call1((slf, ax, component))?.unbind())
     }
+    /// The figure of `plot()` as SVG (Jupyter).
     fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        Ok(py
-            .import("routh._plot")?
-            .getattr("svg_of")?
-            .call1((slf,))?
-            .unbind())
+        helper(slf.py(), "routh._plot", "svg_of", (slf,))
+    }
+    /// The branches and events as HTML tables, with the figure (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "diagram_html", (slf,))
     }
     fn __repr__(&self) -> String {
         format!(
@@ -251,8 +270,20 @@ pub struct Boundary {
     pub points: Py<PyAny>,
 }
 
+#[pymethods]
+impl Boundary {
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let n = self.points.bind(py).len().unwrap_or(0);
+        format!("Boundary(kind='{}', points={n})", self.kind)
+    }
+}
+
 /// A stability atlas over a 2-parameter family: grid `x` (nx,), `y` (ny,), `verdicts` (nx lists
 /// of ny strings or None where no steady motion was followed) and the `boundaries`.
+///
+/// >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
+/// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
+/// >>> ax = a.plot()
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Atlas {
     /// The grid in the first parameter, (nx,) float64.
@@ -307,83 +338,29 @@ impl Atlas {
         let f = py.import("routh._plot")?.getattr("plot_atlas")?;
         Ok(f.call1((slf, ax))?.unbind())
     }
+    /// The figure of `plot()` as SVG (Jupyter).
     fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        Ok(py
-            .import("routh._plot")?
-            .getattr("svg_of")?
-            .call1((slf,))?
-            .unbind())
+        helper(slf.py(), "routh._plot", "svg_of", (slf,))
     }
-}
-
-/// A solution of the full equations (1)–(2): `t` (n,), `omega` (n, 3), `gamma` (n, 3), and the
-/// recorded integrals `energy` (n,), `p_psi` (n,).
-#[pyclass(module = "routh", frozen, get_all)]
-pub struct Trajectory {
-    /// Times, (n,).
-    pub t: Py<PyAny>,
-    /// Angular velocity in the body frame, (n, 3).
-    pub omega: Py<PyAny>,
-    /// The vertical in the body frame, (n, 3).
-    pub gamma: Py<PyAny>,
-    /// The energy (3) at each time, (n,).
-    pub energy: Py<PyAny>,
-    /// The cyclic momentum (9) at each time, (n,).
-    pub p_psi: Py<PyAny>,
-}
-
-impl Trajectory {
-    pub(crate) fn new(py: Python<'_>, t: &routh::Trajectory) -> Trajectory {
-        Trajectory {
-            t: PyArray1::from_slice(py, &t.t).into_any().unbind(),
-            omega: vecs(py, &t.omega).into_any().unbind(),
-            gamma: vecs(py, &t.gamma).into_any().unbind(),
-            energy: PyArray1::from_slice(py, &t.energy).into_any().unbind(),
-            p_psi: PyArray1::from_slice(py, &t.p_psi).into_any().unbind(),
-        }
+    /// The verdict counts and boundaries as HTML, with the figure (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "atlas_html", (slf,))
     }
-}
-
-/// A solution of the reduced equations (39): `t`, `big_omega` (n, 3), `gamma` (n, 3), the
-/// reconstructed `psi`, `psi_dot`, `omega` (n, 3), and `energy`, `p_psi`.
-#[pyclass(module = "routh", frozen, get_all)]
-pub struct ReducedTrajectory {
-    /// Times, (n,).
-    pub t: Py<PyAny>,
-    /// The reduced velocity Ω, (n, 3).
-    pub big_omega: Py<PyAny>,
-    /// The vertical, (n, 3).
-    pub gamma: Py<PyAny>,
-    /// The cyclic angle ψ, (n,).
-    pub psi: Py<PyAny>,
-    /// ψ̇ (38), (n,).
-    pub psi_dot: Py<PyAny>,
-    /// The angular velocity ω = Ω + ψ̇γ, (n, 3).
-    pub omega: Py<PyAny>,
-    /// The energy, (n,).
-    pub energy: Py<PyAny>,
-    /// The cyclic momentum, (n,).
-    pub p_psi: Py<PyAny>,
-}
-
-impl ReducedTrajectory {
-    pub(crate) fn new(py: Python<'_>, t: &routh::ReducedTrajectory) -> ReducedTrajectory {
-        ReducedTrajectory {
-            t: PyArray1::from_slice(py, &t.t).into_any().unbind(),
-            big_omega: vecs(py, &t.big_omega).into_any().unbind(),
-            gamma: vecs(py, &t.gamma).into_any().unbind(),
-            psi: PyArray1::from_slice(py, &t.psi).into_any().unbind(),
-            psi_dot: PyArray1::from_slice(py, &t.psi_dot).into_any().unbind(),
-            omega: vecs(py, &t.omega).into_any().unbind(),
-            energy: PyArray1::from_slice(py, &t.energy).into_any().unbind(),
-            p_psi: PyArray1::from_slice(py, &t.p_psi).into_any().unbind(),
-        }
+    fn __repr__(&self) -> String {
+        format!(
+            "StabilityAtlas({}x{} grid, {} boundaries)",
+            self.verdicts.len(),
+            self.verdicts.first().map_or(0, Vec::len),
+            self.boundaries.len()
+        )
     }
 }
 
 /// A certified enumeration of the steady motions at one momentum: `complete` (every steady
 /// motion is in `motions`, proven by interval arithmetic), `motions`, `p_psi`, `boxes`.
+///
+/// >>> c = top.certify(2.2)
+/// >>> c.complete, [m.gamma for m in c.motions]
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Certificate {
     /// Whether the enumeration is proven complete.
@@ -396,4 +373,22 @@ pub struct Certificate {
     pub boxes: usize,
     /// How many regions were left undecided.
     pub undecided: usize,
+}
+
+#[pymethods]
+impl Certificate {
+    /// A small HTML table (Jupyter).
+    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._display", "certificate_html", (slf,))
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "Certificate(complete={}, motions={}, p_psi={}, boxes={}, undecided={})",
+            if self.complete { "True" } else { "False" },
+            self.motions.len(),
+            self.p_psi,
+            self.boxes,
+            self.undecided
+        )
+    }
 }

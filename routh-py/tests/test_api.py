@@ -200,3 +200,14 @@ def test_toml_latex_table_and_formulas(gyrostat):
     }
     f = gyrostat.formulas
     assert set(f) == {"L", "U_r", "psi_dot"} and all(isinstance(v, str) and v for v in f.values())
+
+
+def test_certify_options(top):
+    # The sleeping top at p = 2.2 has exactly two steady motions, γ = ±e₃ (the tilted circle
+    # appears only above the secular bound p = 2.5): complete with the defaults, undecided when
+    # the box budget runs out.
+    c = top.certify(2.2)
+    assert c.complete and len(c.motions) == 2
+    assert sorted(round(m.gamma[2]) for m in c.motions) == [-1, 1]
+    short = top.certify(2.2, max_boxes=10)
+    assert not short.complete and short.boxes == 10 and short.undecided >= 1

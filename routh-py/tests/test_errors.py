@@ -84,6 +84,10 @@ calls = [
     lambda: routh.Model("kinetic = 0.5 * omega.dot(omega) / 0", {}),
     lambda: m.with_params(mgl=nan).steady_motions(1.0),
     lambda: m.certify(nan),
+    lambda: routh.stability_atlas(lambda x, y: (m, y), [0, 0, 1], (0, 1), (0, 1), nx=2**32, ny=2**32),
+    lambda: routh.stability_atlas(lambda x, y: (m, y), [0, 0, 1], (0, 1), (0, 1), nx=2**62, ny=2**62),
+    lambda: m.simulate([0, 0, 1], [0, 0, 1], 1.0, times=[]),
+    lambda: m.simulate([0, 0, 1], [0, 0, 1], 1.0, attitude=True, times=[1.0, 0.5]),
 ]
 for c in calls:
     try:
@@ -99,3 +103,66 @@ def test_no_panic_aborts_the_interpreter():
     assert r.returncode == 0, r.stderr
     assert "survived" in r.stdout
     assert "panicked" not in r.stderr
+
+
+INF, NAN = float("inf"), float("nan")
+
+# Inputs that must raise routh.RouthError in-process: a panic would surface as
+# pyo3_runtime.PanicException (a BaseException, not caught here), an abort would kill pytest.
+HOSTILE = {
+    "p_psi NaN": lambda m: m.steady_motions(NAN),
+    "p_psi -inf": lambda m: m.steady_motions(-INF),
+    "classify NaN model": lambda m: m.with_params(mgl=NAN).steady_motions(1.0),
+    "diagram inverted": lambda m: m.bifurcation_diagram((5.0, 0.0)),
+    "diagram empty range": lambda m: m.bifurcation_diagram((1.0, 1.0)),
+    "diagram NaN range": lambda m: m.bifurcation_diagram((NAN, 1.0)),
+    "diagram zero step": lambda m: m.bifurcation_diagram((0.0, 1.0), initial_step=0.0),
+    "diagram NaN options": lambda m: m.bifurcation_diagram((0.0, 1.0), max_step=NAN,
+                                                           newton_tol=NAN),
+    "family inverted": lambda m: routh.bifurcation_diagram(lambda s: (m, s), (2.0, 1.0)),
+    # nx·ny overflowed usize (a panic) or asked for 32 GiB (an abort) before the cap.
+    "atlas overflowing grid": lambda m: routh.stability_atlas(
+        lambda x, y: (m, y), [0, 0, 1], (0, 1), (0, 1), nx=2**62, ny=2**62),
+    "atlas huge grid": lambda m: routh.stability_atlas(
+        lambda x, y: (m, y), [0, 0, 1], (0, 1), (0, 1), nx=2**32, ny=2**32),
+    "atlas empty grid": lambda m: routh.stability_atlas(
+        lambda x, y: (m, y), [0, 0, 1], (0, 1), (0, 1), nx=0, ny=0),
+    "atlas inverted": lambda m: routh.stability_atlas(
+        lambda x, y: (m, y), [0, 0, 1], (1, 0), (1, 0), nx=3, ny=3),
+    "atlas NaN guess": lambda m: routh.stability_atlas(
+        lambda x, y: (m, y), [NAN, 0, 1], (0, 1), (0, 1), nx=3, ny=3),
+    "simulate zero budget": lambda m: m.simulate([0, 0, 1], [0, 0, 1], 1.0, max_steps=0),
+    "simulate small budget": lambda m: m.simulate([0, 1, 1], [0.6, 0, 0.8], 1e300,
+                                                  max_steps=1000),
+    "simulate NaN": lambda m: m.simulate([NAN, 0, 1], [0, 0, 1], 1.0),
+    "simulate inf time": lambda m: m.simulate([0, 0, 1], [0, 0, 1], INF, attitude=True),
+    "simulate times past end": lambda m: m.simulate([0, 0, 1], [0, 0, 1], 1.0, times=[0, 2.0]),
+    "simulate NaN times": lambda m: m.simulate([0, 0, 1], [0, 0, 1], 1.0, times=[NAN]),
+    "reduced zero gamma": lambda m: m.simulate_reduced([0, 0, 0], [0, 0, 0], 1.0, 1.0),
+    "certify inf": lambda m: m.certify(INF),
+    "certify zero split": lambda m: m.certify(2.2, initial_split=0),
+    "certify huge split": lambda m: m.certify(2.2, initial_split=2**40),
+    "certify NaN width": lambda m: m.certify(2.2, min_width=NAN),
+    "empty model": lambda m: routh.Model("", {}),
+    "empty toml": lambda m: routh.Model.from_toml(""),
+    "binary toml": lambda m: routh.Model.from_toml("[[[ \x00"),
+    "zero inertia": lambda m: m.with_params(inertia=[0.0, 0.0, 0.0]).steady_motions(1.0),
+}
+
+
+@pytest.mark.parametrize("name", sorted(HOSTILE))
+def test_hostile_inputs_raise_routh_errors(top, name):
+    with pytest.raises(routh.RouthError):
+        HOSTILE[name](top)
+
+
+def test_huge_budgets_are_fine(top):
+    # Budgets far beyond need are accepted and do not allocate up front.
+    d = top.bifurcation_diagram((0.0, 5.0), max_steps=2**64 - 1, max_branches=2**64 - 1)
+    assert len(d.events) == 2
+    tr = top.simulate([0, 0, 1], [0, 0, 1], 1.0, max_steps=2**64 - 1)
+    assert tr.t[-1] == 1.0
+    with pytest.raises(OverflowError):
+        top.simulate([0, 0, 1], [0, 0, 1], 1.0, max_steps=2**64)
+    with pytest.raises(OverflowError):
+        top.simulate([0, 0, 1], [0, 0, 1], 1.0, max_steps=-1)

@@ -76,6 +76,7 @@ def test_example_script_end_to_end(tmp_path):
     assert "hamiltonian_hopf at p_psi = 2.0000" in r.stdout
     assert "branch_point at p_psi = 2.5000" in r.stdout
     assert "gyroscopically_stabilized" in r.stdout
+    assert "U_r = " in r.stdout and "nutation between" in r.stdout
     assert (tmp_path / "d.png").stat().st_size > 1000
 
 
@@ -86,3 +87,20 @@ def test_progress_flag_and_packaged_stubs(top):
     assert len(d.events) == 2
     pkg = pathlib.Path(routh.__file__).parent
     assert (pkg / "py.typed").exists() and (pkg / "__init__.pyi").exists()
+
+
+@pytest.mark.parametrize("doc", ["README.md", "docs/python.md"])
+def test_documented_python_runs(doc, capsys):
+    # The notebook-style examples of the README and the guide, executed as written.
+    pytest.importorskip("matplotlib")
+    import re
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    blocks = re.findall(r"```python\n(.*?)```", (ROOT / doc).read_text(), re.S)
+    assert blocks
+    for code in blocks:
+        exec(compile(code, doc, "exec"), {})
+    out = capsys.readouterr().out
+    assert "gyroscopically_stabilized" in out

@@ -13,10 +13,13 @@ Vec3 = Union[Sequence[float], npt.NDArray[np.float64]]
 
 VERDICTS: tuple[str, ...]
 EVENT_KINDS: tuple[str, ...]
+MAX_ATLAS_NODES: int
+"""The largest atlas grid nx·ny accepted (larger ones raise RouthError before allocating)."""
 __version__: str
 
 class RouthError(Exception):
-    """An error of routh's analyses; `kind` names the Rust variant."""
+    """An error of routh's analyses; `kind` names the Rust variant ("NonFinite",
+    "InvalidOption", ...; "Panic" for an internal error caught at the boundary)."""
 
     kind: str
 
@@ -28,6 +31,12 @@ class ModelError(RouthError):
     message: str
 
 class SteadyMotion:
+    """A steady motion (45)–(46): a critical point of U_r on the sphere.
+
+    >>> m = top.steady_motions(3.0)[0]
+    >>> m.gamma, m.psi_dot, m.energy
+    """
+    def _repr_html_(self) -> str: ...
     @property
     def gamma(self) -> npt.NDArray[np.float64]: ...
     @property
@@ -44,12 +53,19 @@ class SteadyMotion:
     def isolated(self) -> bool: ...
 
 class StabilityReport:
+    """The stability of a steady motion (sections 4–5).
+
+    >>> r = top.classify(top.steady_motions(3.0)[0])
+    >>> r.verdict, r.degree_of_instability, r.f2_roots
+    """
+    def _repr_html_(self) -> str: ...
     verdict: Verdict
     degree_of_instability: int
     restricted_hessian_eigenvalues: npt.NDArray[np.float64]
     f2_roots: npt.NDArray[np.complex128]
 
 class Branch:
+    """A branch of a diagram: `s` (n,), `gamma` (n, 3), `verdicts` (n strings)."""
     s: npt.NDArray[np.float64]
     gamma: npt.NDArray[np.float64]
     verdicts: list[Verdict]
@@ -57,6 +73,7 @@ class Branch:
     def __len__(self) -> int: ...
 
 class Event:
+    """A fold, branch point or Hamiltonian–Hopf point on branch `branch`."""
     kind: EventKind
     s: float
     gamma: npt.NDArray[np.float64]
@@ -65,35 +82,71 @@ class Event:
     after: Verdict
 
 class Diagram:
+    """A bifurcation diagram; in Jupyter it shows its tables and figure.
+
+    >>> d = top.bifurcation_diagram((0.0, 5.0))
+    >>> ax = d.plot()          # stable solid, unstable dashed, events marked and named
+    """
     branches: list[Branch]
     events: list[Event]
-    def plot(self, ax: Any = None, component: int = 2) -> Any: ...
+    def plot(self, ax: Any = None, component: int = 2) -> Any:
+        """Draw s against γ[component] on `ax` (a new one if None); returns the axes."""
     def _repr_svg_(self) -> str: ...
+    def _repr_html_(self) -> str: ...
 
 BifurcationDiagram = Diagram
 
 class Boundary:
+    """A curve of an atlas where the verdict changes: `points` (n, 2) of (x, y)."""
     kind: EventKind
     points: npt.NDArray[np.float64]
 
 class Atlas:
+    """A stability atlas: `verdicts[i][j]` at (x[i], y[j]) and the `boundaries`.
+
+    >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
+    ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
+    >>> ax = a.plot()
+    """
     x: npt.NDArray[np.float64]
     y: npt.NDArray[np.float64]
     verdicts: list[list[Verdict | None]]
     boundaries: list[Boundary]
-    def plot(self, ax: Any = None) -> Any: ...
+    def plot(self, ax: Any = None) -> Any:
+        """Draw the verdict regions and the named boundary curves; returns the axes."""
     def _repr_svg_(self) -> str: ...
+    def _repr_html_(self) -> str: ...
 
 StabilityAtlas = Atlas
 
 class Trajectory:
+    """A solution of the full equations (1)–(2).
+
+    `attitude` (with `simulate(..., attitude=True)`, else None) is (n, 4): the rotation R body →
+    space as unit quaternions in the order (x, y, z, w), scalar last, as
+    `scipy.spatial.transform.Rotation.from_quat` reads them; γ = Rᵀe₃.
+
+    >>> tr = top.simulate([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0, attitude=True)
+    >>> psi, theta, phi = tr.euler_angles().T
+    >>> ax = tr.plot_apex()
+    """
     t: npt.NDArray[np.float64]
     omega: npt.NDArray[np.float64]
     gamma: npt.NDArray[np.float64]
     energy: npt.NDArray[np.float64]
     p_psi: npt.NDArray[np.float64]
+    attitude: npt.NDArray[np.float64] | None
+    def euler_angles(self) -> npt.NDArray[np.float64]:
+        """z-x-z Euler angles (ψ, θ, φ), (n, 3), ψ and φ unwrapped; RouthError without attitude."""
+    def plot_apex(self, ax: Any = None, axis: tuple[float, float, float] = (0.0, 0.0, 1.0)) -> Any:
+        """Draw the path in space of the body axis `axis`, seen from above; returns the axes."""
+    def _repr_svg_(self) -> str | None: ...
+    def _repr_html_(self) -> str: ...
+    def __len__(self) -> int: ...
 
 class ReducedTrajectory:
+    """A solution of the reduced equations (39) with the reconstruction (15); `attitude` as in
+    Trajectory (quaternions (x, y, z, w))."""
     t: npt.NDArray[np.float64]
     big_omega: npt.NDArray[np.float64]
     gamma: npt.NDArray[np.float64]
@@ -102,15 +155,51 @@ class ReducedTrajectory:
     omega: npt.NDArray[np.float64]
     energy: npt.NDArray[np.float64]
     p_psi: npt.NDArray[np.float64]
+    attitude: npt.NDArray[np.float64] | None
+    def euler_angles(self) -> npt.NDArray[np.float64]:
+        """z-x-z Euler angles (ψ, θ, φ) of the attitude (not the gauge angle `psi`)."""
+    def plot_apex(self, ax: Any = None, axis: tuple[float, float, float] = (0.0, 0.0, 1.0)) -> Any:
+        """Draw the apex locus (see Trajectory.plot_apex)."""
+    def _repr_svg_(self) -> str | None: ...
+    def _repr_html_(self) -> str: ...
+    def __len__(self) -> int: ...
 
 class Certificate:
+    """A certified enumeration: when `complete`, `motions` are all the steady motions.
+
+    >>> c = top.certify(2.2)
+    """
+    def _repr_html_(self) -> str: ...
     complete: bool
     motions: list[SteadyMotion]
     p_psi: float
     boxes: int
     undecided: int
 
+class LatexFormulas:
+    """The derived formulas in LaTeX (no delimiters); Jupyter typesets all seven.
+
+    >>> f = top.latex()
+    >>> print(f.amended_potential)
+    """
+    lagrangian: str
+    psi_dot: str
+    routhian: str
+    amended_potential: str
+    a: str
+    g: str
+    c: str
+    def as_dict(self) -> dict[str, str]: ...
+    def __getitem__(self, name: str) -> str: ...
+    def _repr_latex_(self) -> str: ...
+
 class Model:
+    """A rigid body: a Lagrangian in the derive's language and its parameters.
+
+    >>> top = routh.Model(
+    ...     "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+    ...     {"inertia": [1.0, 1.0, 1.25], "mgl": 1.0})
+    """
     def __init__(self, lagrangian: str, parameters: Mapping[str, ParamValue] | None = None) -> None: ...
     @staticmethod
     def from_toml(text: str) -> Model: ...
@@ -127,6 +216,10 @@ class Model:
     def latex_symbols(self) -> dict[str, str]: ...
     @property
     def formulas(self) -> dict[str, str]: ...
+    def latex(self) -> LatexFormulas:
+        """L, ψ̇, R, U_r, A, G, C in LaTeX."""
+    def _repr_latex_(self) -> str:
+        """R and U_r typeset (Jupyter)."""
     def amended_potential(self, gamma: Vec3, p_psi: float) -> float: ...
     def steady_motions(self, p_psi: float) -> list[SteadyMotion]: ...
     def classify(self, motion: SteadyMotion) -> StabilityReport: ...
@@ -143,16 +236,23 @@ class Model:
         event_tol: float | None = None,
         seeds: int | None = None,
         verify_counts: bool | None = None,
+        progress: bool = False,
     ) -> Diagram: ...
     def simulate(
         self, omega0: Vec3, gamma0: Vec3, t_end: float, *, rtol: float = 1e-10, atol: float = 1e-12,
-        max_steps: int | None = None,
+        max_steps: int | None = None, attitude: bool = False,
+        times: Sequence[float] | npt.NDArray[np.float64] | None = None,
     ) -> Trajectory: ...
     def simulate_reduced(
         self, big_omega0: Vec3, gamma0: Vec3, p_psi: float, t_end: float, *, rtol: float = 1e-10,
-        atol: float = 1e-12, max_steps: int | None = None,
+        atol: float = 1e-12, max_steps: int | None = None, attitude: bool = False,
+        times: Sequence[float] | npt.NDArray[np.float64] | None = None,
     ) -> ReducedTrajectory: ...
-    def certify(self, p_psi: float) -> Certificate: ...
+    def certify(
+        self, p_psi: float, *, initial_split: int | None = None, min_width: float | None = None,
+        max_boxes: int | None = None, refine_iterations: int | None = None,
+    ) -> Certificate:
+        """A certified enumeration of the steady motions at p_psi (interval arithmetic)."""
 
 def bifurcation_diagram(
     family: Callable[[float], tuple[Model, float]],

@@ -39,10 +39,11 @@ def plot_diagram(diagram, ax=None, component=2):
                 seen.add(v[start])
                 ax.plot(s[start:hi], g[start:hi], color=colour, linestyle=ls, label=label)
                 start = i
-    for e in diagram.events:
+    # Names alternate above and below their marks, so that close events stay readable.
+    for k, e in enumerate(sorted(diagram.events, key=lambda e: e.s)):
         ax.plot([e.s], [e.gamma[component]], marker=EVENT_MARK[e.kind], color="k", linestyle="none")
         ax.annotate(EVENT_NAME[e.kind], (e.s, e.gamma[component]), textcoords="offset points",
-                    xytext=(4, 4), fontsize=8)
+                    xytext=(4, 6) if k % 2 == 0 else (4, -14), fontsize=8)
     ax.set_xlabel("s")
     ax.set_ylabel(f"γ{component + 1}")
     if seen:
@@ -74,16 +75,76 @@ def plot_atlas(atlas, ax=None):
     return ax
 
 
-def svg_of(result):
-    """The SVG text of `result.plot()` (for Jupyter's `_repr_svg_`)."""
-    import matplotlib
+def svg_of(result, method="plot", size=(6, 4)):
+    """The SVG text of ``result.<method>(ax=...)`` (for Jupyter's ``_repr_svg_``), drawn on a
+    figure that is not left open in pyplot (no second copy shows in a notebook)."""
+    from matplotlib.figure import Figure
 
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(6, 4))
-    result.plot(ax=ax)
+    fig = Figure(figsize=size)
+    ax = fig.add_subplot()
+    getattr(result, method)(ax=ax)
     buf = io.StringIO()
     fig.savefig(buf, format="svg")
-    plt.close(fig)
     return buf.getvalue()
+
+
+def apex_path(attitude, axis=(0.0, 0.0, 1.0)):
+    """The points ``R(t) a`` in space of the body axis ``a`` along the attitudes, (n, 3).
+
+    ``attitude`` is an (n, 4) array of unit quaternions in scipy's order (x, y, z, w), as
+    ``Trajectory.attitude``; the rotation is ``a' = a + w t + v × t`` with ``t = 2 v × a``.
+    """
+    q = np.asarray(attitude, dtype=float)
+    a = np.asarray(axis, dtype=float)
+    norm = np.linalg.norm(a)
+    if not (norm > 0 and np.isfinite(a).all()):
+        raise ValueError(f"axis {axis!r} is not a finite non-zero vector")
+    a = a / norm
+    v, w = q[:, :3], q[:, 3:4]
+    t = 2.0 * np.cross(v, a)
+    return a + w * t + np.cross(v, t)
+
+
+def plot_apex(trajectory, ax=None, axis=(0.0, 0.0, 1.0)):
+    """Draw the apex locus of `trajectory` (which has an attitude) as the Rust SVG does
+    (``routh::plot::apex_locus_svg``): the path in space of the body axis `axis` on the unit
+    sphere, seen from above (x right, y up); the part on the upper hemisphere solid, below
+    dotted; start a ring, end a filled dot; the horizon |(x, y)| = 1 dashed where it falls in the
+    square, padded frame. Returns the axes."""
+    pts = apex_path(trajectory.attitude, axis)
+    if not np.isfinite(pts).all():
+        raise ValueError("non-finite attitude")
+    ax = _axes(ax)
+    x0, x1 = pts[:, 0].min(), pts[:, 0].max()
+    y0, y1 = pts[:, 1].min(), pts[:, 1].max()
+    half = max(0.5 * max(x1 - x0, y1 - y0), 1e-3) * 1.1
+    cx, cy = 0.5 * (x0 + x1), 0.5 * (y0 + y1)
+    xr, yr = (cx - half, cx + half), (cy - half, cy + half)
+    a = np.linspace(0.0, 2.0 * np.pi, 721)
+    hx, hy = np.cos(a), np.sin(a)
+    inside = (hx > xr[0]) & (hx < xr[1]) & (hy > yr[0]) & (hy < yr[1])
+    if inside.any():
+        ax.plot(hx, hy, color="#787878", linestyle="--", lw=1, label="horizon")
+    upper = pts[:, 2] >= 0.0
+    cuts = np.flatnonzero(np.diff(upper.astype(int))) + 1
+    labelled = set()
+    for run in np.split(np.arange(len(pts)), cuts):
+        if len(run) == 0:
+            continue
+        up = bool(upper[run[0]])
+        name = "upper hemisphere" if up else "lower hemisphere"
+        label = None if name in labelled else name
+        labelled.add(name)
+        ax.plot(pts[run, 0], pts[run, 1], color="k", lw=2 if up else 1.5,
+                linestyle="-" if up else ":", label=label)
+    ax.plot([pts[0, 0]], [pts[0, 1]], marker="o", markersize=10, markerfacecolor="none",
+            markeredgecolor="k", markeredgewidth=2, linestyle="none", label="start")
+    ax.plot([pts[-1, 0]], [pts[-1, 1]], marker="o", markersize=7, color="k", linestyle="none",
+            label="end")
+    ax.set_xlim(*xr)
+    ax.set_ylim(*yr)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (space, horizontal)")
+    ax.set_ylabel("y (space, horizontal)")
+    ax.legend(fontsize=8)
+    return ax
