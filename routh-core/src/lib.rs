@@ -24,6 +24,8 @@ mod formulas;
 mod krein;
 mod model;
 pub mod nonlinear;
+#[cfg(feature = "serde")]
+mod serde_support;
 pub mod sim;
 mod sphere;
 pub mod stability;
