@@ -83,3 +83,19 @@ mod tests {
         assert!(finite("nan").is_err());
     }
 }
+
+/// The name of a figure's axis for a quantity of the command line: `momentum` is the cyclic
+/// momentum p_ψ, anything else a parameter of the model.
+pub fn axis_name(quantity: &str) -> String {
+    if quantity == "momentum" {
+        "cyclic momentum p_ψ".to_string()
+    } else {
+        format!("parameter {quantity}")
+    }
+}
+
+/// The model's name in a figure's title: the file name without its extension.
+pub fn model_name(path: &std::path::Path) -> String {
+    path.file_stem()
+        .map_or_else(|| "model".to_string(), |s| s.to_string_lossy().into_owned())
+}
