@@ -337,7 +337,11 @@ fn main() -> Result<(), Box<dyn Error>> {
         "  {:>12}  {:>9}  {:<26}  {:>14}  {:>10}  {:>10}",
         "p_ψ/p_Maiev", "p_ψ", "verdict at e₃", "max tilt (deg)", "|ΔE|", "|Δp_ψ|"
     );
-    for (factor, color) in [(0.95, RGBColor(210, 30, 30)), (1.05, RGBColor(30, 90, 220))] {
+    // Told apart without colour too: the unstable run dashed, the stabilised one solid.
+    for (factor, color, style) in [
+        (0.95, RGBColor(210, 30, 30), Style::Dashed(2)),
+        (1.05, RGBColor(30, 90, 220), Style::Line(2)),
+    ] {
         let p = factor * formula;
         let (w0, g0) = top.perturbed_sleeping(p, eps);
         let opts = SimOptions::with_tolerances(1e-11, 1e-13).at_times(times.clone());
@@ -362,7 +366,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         fig2.series.push(Series::new(
             format!("p_ψ = {factor} × √(4A₁mgl): {}", verdict_label(verdict)),
             color,
-            Style::Line(2),
+            style,
             tilt,
         ));
     }

@@ -56,6 +56,7 @@ use routh_core::nalgebra::{Matrix3, SymmetricEigen, Vector3};
 /// The matrices of the Lagrangian `L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)` of a body in an
 /// ideal fluid with impulse of magnitude `k` (errata E3; see the [module documentation](self)).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FluidParameters {
     /// `A = a − bᵀc⁻¹b`: the kinetic matrix, `½(Aω, ω)` (symmetric positive definite).
     pub kinetic: Matrix3<f64>,

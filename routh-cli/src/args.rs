@@ -63,6 +63,22 @@ pub fn vec3(s: &str) -> Result<[f64; 3], String> {
     Ok([finite(parts[0])?, finite(parts[1])?, finite(parts[2])?])
 }
 
+/// The name of a figure's axis for a quantity of the command line: `momentum` is the cyclic
+/// momentum p_ψ, anything else a parameter of the model.
+pub fn axis_name(quantity: &str) -> String {
+    if quantity == "momentum" {
+        "cyclic momentum p_ψ".to_string()
+    } else {
+        format!("parameter {quantity}")
+    }
+}
+
+/// The model's name in a figure's title: the file name without its extension.
+pub fn model_name(path: &std::path::Path) -> String {
+    path.file_stem()
+        .map_or_else(|| "model".to_string(), |s| s.to_string_lossy().into_owned())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

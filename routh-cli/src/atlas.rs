@@ -80,9 +80,14 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
         return Err(CliError::Compute(describe(&e, None)));
     }
     if let Some(path) = &a.svg {
+        let [gx, gy, gz] = a.gamma;
         let opts = PlotOptions {
-            x_label: names[0].to_string(),
-            y_label: names[1].to_string(),
+            x_label: crate::args::axis_name(names[0]),
+            y_label: crate::args::axis_name(names[1]),
+            title: format!(
+                "{}: stability of the steady motion from γ = ({gx}, {gy}, {gz})",
+                crate::args::model_name(&a.model)
+            ),
             ..PlotOptions::default()
         };
         stability_atlas_svg(&result, path, &opts)?;

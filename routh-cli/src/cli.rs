@@ -39,7 +39,8 @@ pub enum Command {
     Simulate(Simulate),
     /// The steady motions at p_ψ = P with an interval-arithmetic certificate that none is missed.
     Certify(Certify),
-    /// The derived formulas: the Lagrangian, the amended potential U_r(γ, p_ψ) and ψ̇(0, γ, p_ψ).
+    /// The derived formulas: the Lagrangian, the amended potential U_r(γ, p_ψ) and ψ̇(0, γ, p_ψ);
+    /// with `--latex`, all seven derived formulas (L, ψ̇, R, U_r, A, G, C) in LaTeX.
     Formulas(Formulas),
 }
 
@@ -101,6 +102,11 @@ pub struct Formulas {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Print the seven derived formulas in LaTeX (`Model::latex`): L, ψ̇, the Routh function R,
+    /// the amended potential U_r and the matrices A, G, C of (64); with `--json`, the
+    /// `LatexFormulas` object.
+    #[arg(long)]
+    pub latex: bool,
 }
 
 /// `atlas`.

@@ -3,7 +3,7 @@
 use crate::cli::{AtMomentum, Formulas};
 use crate::error::CliError;
 use crate::table::{num, vec3, Table};
-use routh::{classified_steady_motions, steady_motions, Model, ModelError};
+use routh::{classified_steady_motions, steady_motions, LatexFormulas, Model, ModelError};
 use std::path::Path;
 
 /// Reads a model file; any failure (missing file, TOML or DSL error, with its position) is bad
@@ -141,6 +141,9 @@ pub fn classify(a: &AtMomentum) -> Result<String, CliError> {
 /// `routh formulas`: the derived Lagrangian, amended potential (34) and ψ̇ (38), as plain text.
 pub fn formulas(f: &Formulas) -> Result<String, CliError> {
     let model = load(&f.model)?;
+    if f.latex {
+        return latex(&model.latex(), f.json);
+    }
     let [lagrangian, amended, psi_dot] = model.formulas();
     if f.json {
         let v = serde_json::json!({
@@ -153,4 +156,47 @@ pub fn formulas(f: &Formulas) -> Result<String, CliError> {
     Ok(format!(
         "L(ω, γ) = {lagrangian}\nU_r(γ, p_ψ) = {amended}\nψ̇(0, γ, p_ψ) = {psi_dot}\n"
     ))
+}
+
+/// `routh formulas --latex`: the seven formulas of [`LatexFormulas`], each under a LaTeX comment
+/// with its field name and its meaning, as `name = formula` (math mode, no delimiters); with
+/// `json`, the `LatexFormulas` object itself.
+fn latex(l: &LatexFormulas, json: bool) -> Result<String, CliError> {
+    if json {
+        return Ok(serde_json::to_string_pretty(l)? + "\n");
+    }
+    let items = [
+        (
+            "lagrangian",
+            "the Lagrangian",
+            "L(\\omega, \\gamma)",
+            &l.lagrangian,
+        ),
+        (
+            "psi_dot",
+            "ψ̇ of (12)/(38)",
+            "\\dot\\psi(\\Omega, \\gamma, p_\\psi)",
+            &l.psi_dot,
+        ),
+        (
+            "routhian",
+            "the Routh function (14)",
+            "R(\\Omega, \\gamma, p_\\psi)",
+            &l.routhian,
+        ),
+        (
+            "amended_potential",
+            "the amended potential (34), −R(0, γ, p_ψ)",
+            "U_r(\\gamma, p_\\psi)",
+            &l.amended_potential,
+        ),
+        ("a", "∂²R/∂Ω² at Ω = 0 (64)", "A", &l.a),
+        ("g", "the gyroscopic matrix of (64) at Ω = 0", "G", &l.g),
+        ("c", "the stiffness matrix of (64) at Ω = 0", "C", &l.c),
+    ];
+    Ok(items
+        .iter()
+        .map(|(name, what, lhs, formula)| format!("% {name}: {what}\n{lhs} = {formula}\n"))
+        .collect::<Vec<_>>()
+        .join("\n"))
 }

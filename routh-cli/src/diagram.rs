@@ -47,15 +47,35 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             (diagram, par.name.clone())
         }
     };
+    let stem = crate::args::model_name(&d.model);
     if let Some(path) = &d.svg {
+        let (axis, title) = match &d.parameter {
+            None => (
+                crate::args::axis_name("momentum"),
+                format!("{stem}: steady motions over the momentum"),
+            ),
+            Some(par) => (
+                crate::args::axis_name(&par.name),
+                format!(
+                    "{stem}: steady motions over {} at p_ψ = {}",
+                    par.name, d.momentum
+                ),
+            ),
+        };
         let opts = PlotOptions {
-            x_label: x_label.clone(),
+            x_label: axis,
+            title,
             ..PlotOptions::default()
         };
         bifurcation_diagram_svg(&result, path, &opts)?;
     }
     if let Some(path) = &d.energy_momentum_svg {
-        energy_momentum_svg(&result, path, &PlotOptions::default())?;
+        let opts = PlotOptions {
+            x_label: crate::args::axis_name("momentum"),
+            title: format!("{stem}: energy–momentum diagram"),
+            ..PlotOptions::default()
+        };
+        energy_momentum_svg(&result, path, &opts)?;
     }
     if d.output.json {
         return Ok(serde_json::to_string_pretty(&result)? + "\n");

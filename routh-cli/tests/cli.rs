@@ -213,6 +213,55 @@ fn formulas_give_the_amended_potential_of_the_model() {
     assert!(u.contains("p_ψ") && u.contains("γ₃"), "{u}");
 }
 
+/// `formulas --latex` prints the seven formulas of `Model::latex` of the same file, each named;
+/// `--latex --json` is the `LatexFormulas` object. The amended potential of the Lagrange top
+/// must be `mgl γ₃ + ½(p_ψ − …)²/…` with the parameters' symbols, not an empty or elided form.
+#[test]
+fn formulas_latex_prints_the_seven_formulas_of_the_model() {
+    let model = routh::Model::from_file(TOP).unwrap();
+    let expected = model.latex();
+    let v = json(&routh(&["formulas", TOP, "--latex", "--json"]));
+    let back: routh::LatexFormulas = serde_json::from_value(v).unwrap();
+    assert_eq!(back, expected);
+    let o = routh(&["formulas", TOP, "--latex"]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let text = stdout(&o);
+    for (name, lhs, formula) in [
+        ("lagrangian", "L(\\omega, \\gamma) = ", &expected.lagrangian),
+        (
+            "psi_dot",
+            "\\dot\\psi(\\Omega, \\gamma, p_\\psi) = ",
+            &expected.psi_dot,
+        ),
+        (
+            "routhian",
+            "R(\\Omega, \\gamma, p_\\psi) = ",
+            &expected.routhian,
+        ),
+        (
+            "amended_potential",
+            "U_r(\\gamma, p_\\psi) = ",
+            &expected.amended_potential,
+        ),
+        ("a", "A = ", &expected.a),
+        ("g", "G = ", &expected.g),
+        ("c", "C = ", &expected.c),
+    ] {
+        assert!(
+            !formula.is_empty() && !formula.contains("not printed"),
+            "{name}: {formula}"
+        );
+        let line = format!("{lhs}{formula}\n");
+        assert!(
+            text.contains(&format!("% {name}: ")),
+            "{name} not named in\n{text}"
+        );
+        assert!(text.contains(&line), "{line} not in\n{text}");
+    }
+    assert!(expected.amended_potential.contains("p_\\psi"));
+    assert!(expected.a.contains("pmatrix") && expected.c.contains("pmatrix"));
+}
+
 #[test]
 fn bad_input_exits_with_code_2_and_names_the_problem() {
     rejects(

@@ -16,7 +16,8 @@ use crate::stability::{classify, Stability, StabilityReport};
 use crate::steady::{steady_motions, SteadyMotion};
 
 /// A steady motion with its stability report.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Classified {
     /// The cyclic momentum `p_ψ` (9) of the motion.
     pub p_psi: f64,

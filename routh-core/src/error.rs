@@ -5,6 +5,12 @@ use thiserror::Error;
 
 /// Everything that can go wrong at run time. Each variant says which input or which computation
 /// failed, with the offending value where there is one.
+///
+/// With the feature `serde` (default on) an error is a value like any result, for a batch of
+/// runs that records its failures next to its results: JSON
+/// `{"kind": "NonFinite", "what": "p_psi", "value": "NaN", "message": "non-finite input: p_psi = NaN"}`
+/// (the variant, its fields, non-finite numbers as strings, and the `Display` message, which is
+/// ignored when read back).
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum RouthError {

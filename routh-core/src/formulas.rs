@@ -9,8 +9,11 @@
 /// `\gamma_i`, `p_\psi`; each parameter as its name in `\mathit{…}` unless the model gives it a
 /// symbol (`#[lagrangian(latex = "I")]` on the field), components subscripted from 1
 /// (`I_{11}`, `\mathit{com}_{3}`). Functions of γ are simplified with `|γ|² = 1` where that
-/// shortens them (they are then equal to the generated code on the sphere only). A formula too
-/// large to be read is replaced by a `\text{…}` saying so.
+/// shortens them (they are then equal to the generated code on the sphere only). A long formula
+/// (more than 250 nodes of expression tree; for a matrix, in all its entries) comes with its
+/// common subexpressions named and defined after it, inner ones first:
+/// `… \quad \text{where} \quad \sigma_{1} = …,\; \sigma_{2} = …` (each definition uses only the
+/// names before it). A formula too large even so is replaced by a `\text{(… not printed)}`.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LatexFormulas {

@@ -25,6 +25,8 @@ mod krein;
 mod model;
 pub mod nonlinear;
 mod norm;
+#[cfg(feature = "serde")]
+mod serde_support;
 pub mod sim;
 mod sphere;
 pub mod stability;

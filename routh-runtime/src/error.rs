@@ -19,6 +19,7 @@ use std::fmt;
 /// An error about no particular place (a missing file, a parameter set by
 /// [`Model::set`](crate::Model::set)) is at line 1, column 1.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ModelError {
     /// What is wrong (the derive's own message for a mistake in the Lagrangian).
     pub message: String,

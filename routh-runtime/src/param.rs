@@ -12,6 +12,7 @@ use nalgebra::{Matrix3, Vector3};
 /// assert_eq!(Param::from([[1.0, 2.0, 3.0], [0.0; 3], [0.0; 3]]), Param::Matrix(Matrix3::new(1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Param {
     /// A number.
     Scalar(f64),

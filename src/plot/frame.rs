@@ -110,7 +110,7 @@ fn axes<'a, 'b>(
 }
 
 /// Tick labels as plain decimals, with as many digits as the tick spacing needs.
-fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+pub(super) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let step = ((hi - lo) / 10.0).abs().max(f64::MIN_POSITIVE);
     let digits = ((-step.log10()).ceil().max(0.0) as usize + 1).min(12);
     move |v: &f64| {

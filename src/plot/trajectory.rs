@@ -7,6 +7,7 @@ use std::path::Path;
 use plotters::element::{DashedPathElement, DottedPathElement};
 use plotters::prelude::*;
 
+use super::frame::tick_format;
 use super::{drawing_error, PlotError, PlotOptions};
 use crate::nalgebra::UnitQuaternion;
 use crate::{Trajectory, Vector3};
@@ -22,8 +23,8 @@ pub fn apex_path(attitude: &[UnitQuaternion<f64>], body_axis: &Vector3<f64>) -> 
 /// (x to the right, y up), as an SVG file.
 ///
 /// The part of the path on the upper hemisphere (z ≥ 0) is a solid line, the part below a
-/// dotted line; the start is a ring, the end a filled dot; the horizon (the equator, |x| = 1)
-/// is dashed when it falls in the frame. The frame is the locus's extent, square, padded, so the
+/// dotted line; the start is a ring, the end a filled dot (the axis caption says so); the
+/// horizon (the equator, |x| = 1) is dashed when it falls in the frame. The frame is the locus's extent, square, padded, so the
 /// loops, cusps or waves of a top show at any tilt. `opts.title` is the caption.
 ///
 /// `attitude` is [`Trajectory::attitude`] or
@@ -81,10 +82,19 @@ pub fn apex_locus_svg<P: AsRef<Path>>(
             .y_label_area_size(60)
             .build_cartesian_2d(xr.clone(), yr.clone())
             .map_err(drawing_error)?;
+        let below = pts.iter().any(|p| p.z < 0.0);
+        let key = if below {
+            "x (space, horizontal);  ○ start, ● end, dotted: below the horizon"
+        } else {
+            "x (space, horizontal);  ○ start, ● end"
+        };
+        let (fx, fy) = (tick_format(xr.start, xr.end), tick_format(yr.start, yr.end));
         chart
             .configure_mesh()
-            .x_desc("x (space, horizontal)")
+            .x_desc(key)
             .y_desc("y (space, horizontal)")
+            .x_label_formatter(&fx)
+            .y_label_formatter(&fy)
             .light_line_style(RGBColor(238, 238, 238))
             .bold_line_style(RGBColor(215, 215, 215))
             .draw()
@@ -159,9 +169,11 @@ fn check_size(opts: &PlotOptions) -> Result<(), PlotError> {
 }
 
 /// Draws the time histories of a full simulation in three panels, one above the other: γ₁, γ₂,
-/// γ₃; ω₁, ω₂, ω₃ (solid, dashed, dotted in that order); and `log₁₀` of the drifts
-/// `|E(t) − E(0)|` (solid) and `|p_ψ(t) − p_ψ(0)|` (dashed) of the energy (3) and the cyclic
-/// momentum (9), floored at 1e−18.
+/// γ₃; ω₁, ω₂, ω₃ (solid, dashed, dotted in that order); and `log₁₀` of the largest drifts so
+/// far, `max_{s ≤ t} |E(s) − E(0)|` (solid) and `max_{s ≤ t} |p_ψ(s) − p_ψ(0)|` (dashed), of the
+/// energy (3) and the cyclic momentum (9), floored at 1e−18 (the drift itself oscillates at
+/// round-off and would hide one curve behind the other). Each panel's legend is in a column to
+/// its right, clear of the curves.
 ///
 /// # Errors
 ///
@@ -179,8 +191,12 @@ pub fn time_histories_svg<P: AsRef<Path>>(
     let t = &traj.t;
     let comp = |v: &[Vector3<f64>], i: usize| -> Vec<f64> { v.iter().map(|x| x[i]).collect() };
     let drift = |x: &[f64]| -> Vec<f64> {
+        let mut worst = 1e-18_f64;
         x.iter()
-            .map(|v| (v - x[0]).abs().max(1e-18).log10())
+            .map(|v| {
+                worst = worst.max((v - x[0]).abs());
+                worst.log10()
+            })
             .collect()
     };
     let panels: [Panel; 3] = [
@@ -201,7 +217,7 @@ pub fn time_histories_svg<P: AsRef<Path>>(
             ],
         ),
         (
-            "log₁₀ drift",
+            "log₁₀ max drift",
             vec![
                 ("|E − E₀|", drift(&traj.energy)),
                 ("|p_ψ − p_ψ₀|", drift(&traj.p_psi)),
@@ -220,7 +236,11 @@ pub fn time_histories_svg<P: AsRef<Path>>(
         };
         let areas = root.split_evenly((3, 1));
         let (t0, t1) = (t[0], t[t.len() - 1].max(t[0] + 1e-12));
-        for (area, (label, curves)) in areas.iter().zip(panels) {
+        for (panel, (label, curves)) in areas.iter().zip(panels) {
+            // The legend's column, to the right of the axes.
+            let legend_width = 130.min(panel.dim_in_pixel().0 / 3);
+            let (area, key) =
+                panel.split_horizontally(panel.dim_in_pixel().0.saturating_sub(legend_width));
             let finite = curves
                 .iter()
                 .flat_map(|(_, v)| v.iter())
@@ -228,16 +248,19 @@ pub fn time_histories_svg<P: AsRef<Path>>(
             let (lo, hi) = finite.fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
             let (lo, hi) = if lo <= hi { (lo, hi) } else { (-1.0, 1.0) };
             let pad = ((hi - lo) * 0.05).max(1e-9);
-            let mut chart = ChartBuilder::on(area)
+            let mut chart = ChartBuilder::on(&area)
                 .margin(8)
                 .x_label_area_size(30)
                 .y_label_area_size(60)
                 .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
                 .map_err(drawing_error)?;
+            let (ft, fy) = (tick_format(t0, t1), tick_format(lo - pad, hi + pad));
             chart
                 .configure_mesh()
                 .x_desc("t")
                 .y_desc(label)
+                .x_label_formatter(&ft)
+                .y_label_formatter(&fy)
                 .light_line_style(RGBColor(238, 238, 238))
                 .bold_line_style(RGBColor(215, 215, 215))
                 .draw()
@@ -245,31 +268,28 @@ pub fn time_histories_svg<P: AsRef<Path>>(
             for (k, (name, ys)) in curves.into_iter().enumerate() {
                 let pts: Vec<(f64, f64)> = t.iter().copied().zip(ys).collect();
                 let style = ShapeStyle::from(&BLACK).stroke_width(if k == 0 { 2 } else { 1 });
-                let legend_style = style;
-                let drawn =
-                    match k {
-                        0 => chart.draw_series(std::iter::once(PathElement::new(pts, style))),
-                        1 => chart
-                            .draw_series(std::iter::once(DashedPathElement::new(pts, 8, 5, style))),
-                        _ => chart
-                            .draw_series(std::iter::once(DashedPathElement::new(pts, 2, 4, style))),
+                match k {
+                    0 => chart.draw_series(std::iter::once(PathElement::new(pts, style))),
+                    1 => {
+                        chart.draw_series(std::iter::once(DashedPathElement::new(pts, 8, 5, style)))
                     }
-                    .map_err(drawing_error)?;
-                drawn.label(name).legend(move |(x, y)| match k {
-                    0 => PathElement::new(vec![(x, y), (x + 20, y)], legend_style).into_dyn(),
-                    1 => DashedPathElement::new(vec![(x, y), (x + 20, y)], 8, 5, legend_style)
-                        .into_dyn(),
-                    _ => DashedPathElement::new(vec![(x, y), (x + 20, y)], 2, 4, legend_style)
-                        .into_dyn(),
-                });
-            }
-            chart
-                .configure_series_labels()
-                .background_style(WHITE.mix(0.8))
-                .border_style(BLACK)
-                .position(SeriesLabelPosition::UpperRight)
-                .draw()
+                    _ => {
+                        chart.draw_series(std::iter::once(DashedPathElement::new(pts, 2, 4, style)))
+                    }
+                }
                 .map_err(drawing_error)?;
+                // The legend entry: the line's sample and the name, one row per curve.
+                let y = 20 + 22 * k as i32;
+                let sample = vec![(6, y), (36, y)];
+                match k {
+                    0 => key.draw(&PathElement::new(sample, style)),
+                    1 => key.draw(&DashedPathElement::new(sample, 8, 5, style)),
+                    _ => key.draw(&DashedPathElement::new(sample, 2, 4, style)),
+                }
+                .map_err(drawing_error)?;
+                key.draw(&Text::new(name, (42, y - 7), ("sans-serif", 14)))
+                    .map_err(drawing_error)?;
+            }
         }
         root.present().map_err(drawing_error)?;
     }

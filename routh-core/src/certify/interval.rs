@@ -25,8 +25,10 @@ pub const LIBM_ULPS: u32 = 4;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Interval {
     /// Lower endpoint.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float"))]
     pub lo: f64,
     /// Upper endpoint.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float"))]
     pub hi: f64,
 }
 

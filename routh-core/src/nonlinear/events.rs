@@ -67,6 +67,7 @@ impl std::fmt::Display for NonlinearEventVerdicts {
 
 /// A nonlinear event on a branch, with the nonlinear verdicts on either side.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NonlinearEvent {
     /// [`EventKind::ArnoldDegenerate`] or [`EventKind::Resonance`].
     pub kind: EventKind,

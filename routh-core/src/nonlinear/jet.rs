@@ -133,8 +133,10 @@ pub(crate) fn raise_index(v: usize, k: usize) -> Option<usize> {
 /// assert_eq!(f.coeff([2, 3, 0, 0]), 0.0);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Jet {
     /// Taylor coefficients, in the order of [`monomials`].
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float::array"))]
     pub c: [f64; NCOEF],
 }
 

@@ -136,22 +136,27 @@ impl fmt::Display for NonlinearVerdict {
 }
 
 /// The nonlinear stability analysis of one steady motion (docs/method.md §10).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NonlinearReport {
     /// The linear analysis (sections 4–5).
     pub linear: StabilityReport,
     /// `ω₁ ≥ ω₂ > 0`, the roots `±iω_k` of `f₂`; NaN when linearly unstable or degenerate.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float::array"))]
     pub frequencies: [f64; 2],
     /// Krein signs `s_k`: `H₂ = s₁ω₁I₁ + s₂ω₂I₂` with `I_k = (q_k² + p_k²)/2`, `H` the reduced
     /// energy; `[0, 0]` when the frequencies are NaN.
     pub krein_signs: [i8; 2],
     /// `c₂₀, c₁₁, c₀₂` of `H₄ = c₂₀I₁² + c₁₁I₁I₂ + c₀₂I₂²` (NaN where not computed).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float::array"))]
     pub normal_form: [f64; 3],
     /// Arnold's determinant `D = c₂₀ω₂² − s₁s₂c₁₁ω₁ω₂ + c₀₂ω₁²`.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float"))]
     pub arnold_determinant: f64,
     /// A resonance of order ≤ 4 within `resonance_tol`.
     pub resonance: Option<Resonance>,
     /// The resonance's relative distance `|kω₂ − ω₁|/ω₁` (NaN without one).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float"))]
     pub resonance_distance: f64,
     /// The verdict.
     pub verdict: NonlinearVerdict,
@@ -159,6 +164,7 @@ pub struct NonlinearReport {
     pub reason: String,
     /// A check of the normalisation: `max(|TᵀJT − J|, |H₂(T·) − Σs_kω_kI_k|/ω₁)` (NaN where not
     /// computed); round-off, about 1e−12, unless near a 1:1 resonance.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float"))]
     pub normalisation_defect: f64,
 }
 
@@ -187,7 +193,8 @@ impl fmt::Display for NonlinearReport {
 /// The reduced Hamiltonian at a steady motion and its linear symplectic normalisation
 /// (docs/method.md §10.1–11.2), for analyses beyond the verdict (e.g. to set up a
 /// small-amplitude simulation in normal coordinates).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LinearNormalForm {
     /// `H(x₁, x₂, y₁, y₂)` in the chart of [`chart`] (jet variables 0–3), minus its value at the
     /// steady motion.
