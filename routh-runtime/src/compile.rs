@@ -72,6 +72,32 @@ pub(crate) struct Tapes<T> {
 }
 
 impl<T> Tapes<T> {
+    /// Every tape, in the order [`Tapes::try_map`] visits them.
+    pub fn fields(&self) -> [&T; 20] {
+        [
+            &self.lagrangian,
+            &self.dl_domega,
+            &self.dl_dgamma,
+            &self.d2l_domega2,
+            &self.d2l_domega_dgamma,
+            &self.energy,
+            &self.cyclic_momentum,
+            &self.full_equations,
+            &self.psi_dot,
+            &self.routhian,
+            &self.dr_domega,
+            &self.dr_dgamma,
+            &self.dr_dp,
+            &self.d2r_domega2,
+            &self.d2r_domega_dgamma,
+            &self.d2r_dgamma2,
+            &self.amended_potential,
+            &self.bundle,
+            &self.gyroscopic_system,
+            &self.reduced_equations,
+        ]
+    }
+
     /// Applies `f` to every tape, stopping at the first error.
     pub fn try_map<U, E>(&self, mut f: impl FnMut(&T) -> Result<U, E>) -> Result<Tapes<U>, E> {
         Ok(Tapes {
