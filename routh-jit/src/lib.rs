@@ -140,3 +140,155 @@ impl JitFunction {
         self.instructions
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use routh_tape::{Func, Op, Output};
+
+    fn out(name: &'static str, slot: u32) -> Output {
+        Output { name, slot }
+    }
+
+    #[test]
+    fn functions_are_send_sync_and_outlive_their_siblings() {
+        fn send_sync<T: Send + Sync + Clone>() {}
+        send_sync::<JitFunction>();
+        let a = Tape::new(vec![Op::Gamma(0), Op::Neg(0)], vec![out("a", 1)], 0).unwrap();
+        let b = Tape::new(vec![Op::PPsi, Op::Mul(0, 0)], vec![out("b", 1)], 0).unwrap();
+        let mut both = JitFunction::compile_all(&[&a, &b]).unwrap();
+        let g = both.pop().unwrap();
+        drop(both);
+        // The module lives while one of its functions does, on any thread.
+        let y = std::thread::spawn(move || {
+            let mut y = [0.0];
+            g.eval(&[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 3.0], &mut y)
+                .unwrap();
+            y[0]
+        })
+        .join()
+        .unwrap();
+        assert_eq!(y, 9.0);
+    }
+
+    #[test]
+    fn short_buffers_are_errors_and_nothing_is_written() {
+        let t = Tape::new(
+            vec![Op::Param(1), Op::Omega(2), Op::Add(0, 1)],
+            vec![out("a", 2), out("b", 0)],
+            2,
+        )
+        .unwrap();
+        let f = JitFunction::compile(&t).unwrap();
+        assert_eq!((f.inputs(), f.outputs()), (9, 2));
+        let mut y = [7.0; 2];
+        let e = f.eval(&[0.0; 8], &mut y).unwrap_err();
+        assert!(matches!(
+            e,
+            JitError::BufferLength {
+                inputs: 8,
+                want_inputs: 9,
+                ..
+            }
+        ));
+        assert_eq!(y, [7.0; 2]);
+        assert!(f.eval(&[0.0; 9], &mut y[..1]).is_err());
+        let x = [0.0, 0.0, 1.5, 0.0, 0.0, 0.0, 0.0, 100.0, 2.0];
+        f.eval(&x, &mut y).unwrap();
+        assert_eq!(y, [3.5, 2.0]);
+        // Longer buffers: the extra values are neither read nor written.
+        let mut z = [7.0; 3];
+        let mut xs = x.to_vec();
+        xs.push(f64::NAN);
+        f.eval(&xs, &mut z).unwrap();
+        assert_eq!(z, [3.5, 2.0, 7.0]);
+    }
+
+    /// `xⁿ` bit for bit as `f64::powi`, for exponents that take every path of the repeated
+    /// squaring (zero, one, negative, powers of two, all bits set, the extremes).
+    #[test]
+    fn powi_is_f64_powi_bit_for_bit() {
+        let ns = [
+            0,
+            1,
+            -1,
+            2,
+            3,
+            -3,
+            5,
+            7,
+            8,
+            -8,
+            13,
+            31,
+            64,
+            -77,
+            1000,
+            i32::MAX,
+            i32::MIN,
+            i32::MIN + 1,
+        ];
+        let xs = [
+            1.0000001,
+            -0.9999999,
+            0.7,
+            -1.3,
+            3.0f64.sqrt(),
+            0.0,
+            -0.0,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        for n in ns {
+            let t = Tape::new(vec![Op::Gamma(0), Op::Powi(0, n)], vec![out("y", 1)], 0).unwrap();
+            let f = JitFunction::compile(&t).unwrap();
+            for x in xs {
+                let mut y = [0.0];
+                f.eval(&[0.0, 0.0, 0.0, x, 0.0, 0.0, 0.0], &mut y).unwrap();
+                let want = x.powi(n);
+                assert!(
+                    y[0].to_bits() == want.to_bits() || (y[0].is_nan() && want.is_nan()),
+                    "{x}^{n}: jit {} f64::powi {want}",
+                    y[0]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn sign_is_the_tape_sign() {
+        let t = Tape::new(
+            vec![Op::Gamma(0), Op::Func(Func::Sign, 0)],
+            vec![out("y", 1)],
+            0,
+        )
+        .unwrap();
+        let f = JitFunction::compile(&t).unwrap();
+        for x in [
+            0.0,
+            -0.0,
+            2.5,
+            -1e-320,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ] {
+            let mut y = [9.0];
+            f.eval(&[0.0, 0.0, 0.0, x, 0.0, 0.0, 0.0], &mut y).unwrap();
+            let want = routh_tape::sign(x);
+            assert!(
+                y[0].to_bits() == want.to_bits() || (y[0].is_nan() && want.is_nan()),
+                "sign({x}): jit {} tape {want}",
+                y[0]
+            );
+        }
+    }
+
+    #[test]
+    fn a_tape_with_no_ops_or_outputs_compiles() {
+        let t = Tape::new(vec![], vec![], 0).unwrap();
+        let f = JitFunction::compile(&t).unwrap();
+        f.eval(&[0.0; 7], &mut []).unwrap();
+        assert_eq!(f.instructions(), 0);
+    }
+}

@@ -71,8 +71,32 @@ pub(crate) struct Tapes<T> {
     pub reduced_equations: T,
 }
 
+/// The methods of the tapes, in the order of [`Tapes::fields`].
+pub(crate) const TAPE_NAMES: [&str; 20] = [
+    "lagrangian",
+    "dl_domega",
+    "dl_dgamma",
+    "d2l_domega2",
+    "d2l_domega_dgamma",
+    "energy",
+    "cyclic_momentum",
+    "full_equations",
+    "psi_dot",
+    "routhian",
+    "dr_domega",
+    "dr_dgamma",
+    "dr_dp",
+    "d2r_domega2",
+    "d2r_domega_dgamma",
+    "d2r_dgamma2",
+    "amended_potential",
+    "bundle",
+    "gyroscopic_system",
+    "reduced_equations",
+];
+
 impl<T> Tapes<T> {
-    /// Every tape, in the order [`Tapes::try_map`] visits them.
+    /// Every tape, in the order [`Tapes::try_map`] visits them (named by [`TAPE_NAMES`]).
     pub fn fields(&self) -> [&T; 20] {
         [
             &self.lagrangian,

@@ -312,6 +312,34 @@ impl Model {
         self.bound.evaluation
     }
 
+    /// The tape of the generated method `method` (a method name of [`Lagrangian`] or
+    /// [`Routhian`]: `"bundle"`, `"routhian"`, `"gyroscopic_system"`, …) with its parameters
+    /// unbound: `Op::Param(k)` reads the `k`-th value of [`Model::tape_parameters`]. `None` for
+    /// another name.
+    ///
+    /// ```
+    /// use routh_runtime::Model;
+    /// let top = Model::new("kinetic = 0.5 * omega.dot(omega), potential = mgl * gamma.z",
+    ///     &[("mgl", 2.0.into())])?;
+    /// let tape = top.tape("amended_potential").expect("a generated method");
+    /// assert_eq!(tape.num_params(), 1);
+    /// assert_eq!(top.tape_parameters()?, vec![2.0]);
+    /// assert!(top.tape("no_such_method").is_none());
+    /// # Ok::<(), routh_runtime::ModelError>(())
+    /// ```
+    pub fn tape(&self, method: &str) -> Option<&Tape> {
+        let k = crate::compile::TAPE_NAMES
+            .iter()
+            .position(|n| *n == method)?;
+        Some(self.compiled.tapes.fields()[k])
+    }
+
+    /// The parameter values the unbound tapes ([`Model::tape`]) read, `Op::Param(k)` being the
+    /// `k`-th.
+    pub fn tape_parameters(&self) -> Result<Vec<f64>, ModelError> {
+        values(&self.compiled, &self.params)
+    }
+
     fn with_choice(&self, choice: Choice) -> Result<Model, ModelError> {
         let mut m = self.clone();
         m.choice = choice;
