@@ -37,6 +37,7 @@ fn analyse<M: Routhian>(model: &M, p: f64) -> Vec<routh::StabilityReport> {
 fn bench_pair<D: Routhian>(c: &mut Criterion, name: &str, derived: &D, jit: &Model, p: f64) {
     assert_eq!(jit.evaluation(), Evaluation::Jit);
     let interp = jit.interpreted().expect("interpreter");
+    let fast = jit.jit(false).expect("unoptimized JIT");
     let w = Vector3::new(0.3, -0.2, 0.5);
     let g = Vector3::new(0.36, 0.48, 0.8);
     let mut group = c.benchmark_group(format!("runtime_model/{name}"));
@@ -45,6 +46,9 @@ fn bench_pair<D: Routhian>(c: &mut Criterion, name: &str, derived: &D, jit: &Mod
     });
     group.bench_function("bundle/jit", |b| {
         b.iter(|| black_box(jit.bundle(black_box(&w), black_box(&g), black_box(p))))
+    });
+    group.bench_function("bundle/jit_unoptimized", |b| {
+        b.iter(|| black_box(fast.bundle(black_box(&w), black_box(&g), black_box(p))))
     });
     group.bench_function("bundle/interpreter", |b| {
         b.iter(|| black_box(interp.bundle(black_box(&w), black_box(&g), black_box(p))))
@@ -79,6 +83,9 @@ fn bench_pair<D: Routhian>(c: &mut Criterion, name: &str, derived: &D, jit: &Mod
     group.bench_function("steady+classify/jit", |b| {
         b.iter(|| black_box(analyse(jit, black_box(p))))
     });
+    group.bench_function("steady+classify/jit_unoptimized", |b| {
+        b.iter(|| black_box(analyse(&fast, black_box(p))))
+    });
     group.bench_function("steady+classify/interpreter", |b| {
         b.iter(|| black_box(analyse(&interp, black_box(p))))
     });
@@ -95,6 +102,7 @@ fn bench_runtime_model(c: &mut Criterion) {
     let opts = ContinuationOptions::default();
     let derived = LagrangeTop::example();
     let interp = top.interpreted().expect("interpreter");
+    let fast = top.jit(false).expect("unoptimized JIT");
     let mut group = c.benchmark_group("runtime_model/heavy_top_diagram");
     group.sample_size(10);
     group.bench_function("derive", |b| {
@@ -102,6 +110,9 @@ fn bench_runtime_model(c: &mut Criterion) {
     });
     group.bench_function("jit", |b| {
         b.iter(|| bifurcation_diagram(|p| (top.clone(), p), black_box((0.0, 5.0)), &opts))
+    });
+    group.bench_function("jit_unoptimized", |b| {
+        b.iter(|| bifurcation_diagram(|p| (fast.clone(), p), black_box((0.0, 5.0)), &opts))
     });
     group.bench_function("interpreter", |b| {
         b.iter(|| bifurcation_diagram(|p| (interp.clone(), p), black_box((0.0, 5.0)), &opts))
@@ -124,6 +135,10 @@ fn bench_runtime_model(c: &mut Criterion) {
         let (n, v) = params[0].clone();
         group.bench_function(format!("{name}/set/jit"), |b| {
             let mut m = m.clone();
+            b.iter(|| m.set(&n, black_box(v)).expect("set"))
+        });
+        group.bench_function(format!("{name}/set/jit_unoptimized"), |b| {
+            let mut m = m.jit(false).expect("unoptimized JIT");
             b.iter(|| m.set(&n, black_box(v)).expect("set"))
         });
         group.bench_function(format!("{name}/set/interpreter"), |b| {

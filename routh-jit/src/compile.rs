@@ -30,10 +30,26 @@ pub const INPUTS: usize = 7;
 /// The most parameters a tape compiled with its parameters unbound may read.
 pub const MAX_PARAMS: usize = 1 << 20;
 
-/// The host's instruction set, detected once.
-fn isa() -> Result<OwnedTargetIsa, JitError> {
-    static ISA: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
-    ISA.get_or_init(|| {
+/// How hard Cranelift optimizes.
+#[derive(Copy, Clone, PartialEq, Eq, Debug, Default)]
+pub enum OptLevel {
+    /// No optimization passes and the single-pass register allocator: the fastest to compile,
+    /// the slowest code.
+    None,
+    /// Cranelift's `speed` (e-graph rewrites, GVN, LICM; the default).
+    #[default]
+    Speed,
+}
+
+/// The host's instruction set, detected once per optimization level.
+fn isa(opt: OptLevel) -> Result<OwnedTargetIsa, JitError> {
+    static SPEED: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
+    static NONE: OnceLock<Result<OwnedTargetIsa, String>> = OnceLock::new();
+    let (cell, level) = match opt {
+        OptLevel::Speed => (&SPEED, "speed"),
+        OptLevel::None => (&NONE, "none"),
+    };
+    cell.get_or_init(|| {
         let mut flags = settings::builder();
         let set = |flags: &mut settings::Builder, name: &str, value: &str| {
             flags
@@ -43,7 +59,12 @@ fn isa() -> Result<OwnedTargetIsa, JitError> {
         // The JIT needs absolute, non-colocated calls (cranelift-jit's requirement).
         set(&mut flags, "use_colocated_libcalls", "false")?;
         set(&mut flags, "is_pic", "false")?;
-        set(&mut flags, "opt_level", "speed")?;
+        set(&mut flags, "opt_level", level)?;
+        let regalloc = match opt {
+            OptLevel::Speed => "backtracking",
+            OptLevel::None => "single_pass",
+        };
+        set(&mut flags, "regalloc_algorithm", regalloc)?;
         // The code never unwinds (the wrappers it calls cannot), and nothing walks its frames.
         set(&mut flags, "unwind_info", "false")?;
         // Check the IR in debug builds (the tests); skip it in release builds.
@@ -64,7 +85,7 @@ fn isa() -> Result<OwnedTargetIsa, JitError> {
 
 /// Whether Cranelift supports this host (its instruction set could be set up).
 pub fn is_supported() -> bool {
-    isa().is_ok()
+    isa(OptLevel::default()).is_ok()
 }
 
 fn codegen(e: impl std::fmt::Display) -> JitError {
@@ -80,8 +101,8 @@ enum Val {
 
 /// Compiles every tape into one module; the entries in the order of `tapes`, each with the
 /// number of operations it executes.
-pub(crate) fn compile_all(tapes: &[&Tape]) -> Result<Vec<(Entry, usize)>, JitError> {
-    let isa = isa()?;
+pub(crate) fn compile_all(tapes: &[&Tape], opt: OptLevel) -> Result<Vec<(Entry, usize)>, JitError> {
+    let isa = isa(opt)?;
     let mut builder = JITBuilder::with_isa(isa, cranelift_module::default_libcall_names());
     builder.symbols(libcalls::symbols());
     let mut module = JITModule::new(builder);

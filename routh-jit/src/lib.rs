@@ -40,7 +40,7 @@ mod code;
 mod compile;
 mod libcalls;
 
-pub use compile::{is_supported, INPUTS, MAX_PARAMS};
+pub use compile::{is_supported, OptLevel, INPUTS, MAX_PARAMS};
 use routh_tape::Tape;
 
 /// Why a tape could not be compiled or a compiled function not run.
@@ -95,7 +95,12 @@ impl JitFunction {
     /// Compiles several tapes at once, into one block of code (cheaper than one by one: one
     /// module, one finalization); the functions in the order of `tapes`.
     pub fn compile_all(tapes: &[&Tape]) -> Result<Vec<JitFunction>, JitError> {
-        Ok(compile::compile_all(tapes)?
+        JitFunction::compile_all_with(tapes, OptLevel::default())
+    }
+
+    /// [`JitFunction::compile_all`] at optimization level `opt`.
+    pub fn compile_all_with(tapes: &[&Tape], opt: OptLevel) -> Result<Vec<JitFunction>, JitError> {
+        Ok(compile::compile_all(tapes, opt)?
             .into_iter()
             .map(|(entry, instructions)| JitFunction {
                 entry,

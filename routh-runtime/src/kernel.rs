@@ -67,11 +67,16 @@ pub fn jit(tape: &Tape) -> Arc<dyn Kernel> {
 /// Compiles every tape (none with parameters) into one block of native code; `None` if the JIT
 /// cannot (the host is not supported, or Cranelift failed), for the caller to interpret them.
 #[cfg(feature = "jit")]
-pub(crate) fn jit_all(tapes: &[&Tape]) -> Option<Vec<Arc<dyn Kernel>>> {
+pub(crate) fn jit_all(tapes: &[&Tape], optimize: bool) -> Option<Vec<Arc<dyn Kernel>>> {
     if tapes.iter().any(|t| t.num_params() > 0) {
         return None;
     }
-    let fns = routh_jit::JitFunction::compile_all(tapes).ok()?;
+    let level = if optimize {
+        routh_jit::OptLevel::Speed
+    } else {
+        routh_jit::OptLevel::None
+    };
+    let fns = routh_jit::JitFunction::compile_all_with(tapes, level).ok()?;
     Some(
         fns.into_iter()
             .map(|f| Arc::new(Jit(f)) as Arc<dyn Kernel>)

@@ -68,11 +68,24 @@ pub enum Evaluation {
 /// The evaluation asked for.
 #[derive(Copy, Clone)]
 enum Choice {
-    /// The JIT where it is available, else the interpreter.
-    Default,
+    /// The JIT where it is available (optimizing or not), else the interpreter.
+    Jit {
+        optimize: bool,
+    },
     Interpreter,
     Backend(Backend),
 }
+
+impl Choice {
+    /// What a model does unless told otherwise.
+    const DEFAULT: Choice = Choice::Jit {
+        optimize: DEFAULT_OPTIMIZE,
+    };
+}
+
+/// Whether the JIT optimizes by default (see `docs/performance.md`: optimized code is faster to
+/// run and far slower to compile).
+const DEFAULT_OPTIMIZE: bool = true;
 
 /// A model's tapes with its parameter values bound, ready to evaluate.
 struct Bound {
@@ -143,7 +156,7 @@ impl Model {
             }
         }
         let compiled = Arc::new(compile(text, &params, &symmetric)?);
-        let choice = Choice::Default;
+        let choice = Choice::DEFAULT;
         let bound = Arc::new(bind(&compiled, &params, choice)?);
         Ok(Model {
             text: text.into(),
@@ -340,6 +353,14 @@ impl Model {
         values(&self.compiled, &self.params)
     }
 
+    /// A copy whose tapes are compiled by the JIT (the interpreter where it is not available:
+    /// see [`Model::evaluation`]), `optimize`d (Cranelift's `speed` level and backtracking
+    /// register allocator: faster code) or not (no optimization passes, single-pass register
+    /// allocator: compiles many times faster, for large models or models built often).
+    pub fn jit(&self, optimize: bool) -> Result<Model, ModelError> {
+        self.with_choice(Choice::Jit { optimize })
+    }
+
     fn with_choice(&self, choice: Choice) -> Result<Model, ModelError> {
         let mut m = self.clone();
         m.choice = choice;
@@ -365,9 +386,11 @@ fn values(compiled: &Compiled, params: &[(String, Param)]) -> Result<Vec<f64>, M
 
 /// The kernels of the bound tapes, compiled together by the JIT where it is available, else
 /// interpreted.
-fn default_kernels(tapes: &Tapes<Tape>) -> (Tapes<Arc<dyn Kernel>>, Evaluation) {
+fn jit_kernels(tapes: &Tapes<Tape>, optimize: bool) -> (Tapes<Arc<dyn Kernel>>, Evaluation) {
+    #[cfg(not(feature = "jit"))]
+    let _ = optimize;
     #[cfg(feature = "jit")]
-    if let Some(kernels) = crate::kernel::jit_all(&tapes.fields()) {
+    if let Some(kernels) = crate::kernel::jit_all(&tapes.fields(), optimize) {
         let mut each = kernels.into_iter();
         if let Ok(k) = tapes.try_map(|_| each.next().ok_or(())) {
             return (k, Evaluation::Jit);
@@ -393,7 +416,7 @@ fn bind(
         .try_map(|t: &Tape| t.bind(&values))
         .map_err(internal)?;
     let (kernels, evaluation) = match choice {
-        Choice::Default => default_kernels(&tapes),
+        Choice::Jit { optimize } => jit_kernels(&tapes, optimize),
         Choice::Interpreter => (with_backend(&tapes, interpret), Evaluation::Interpreter),
         Choice::Backend(b) => (with_backend(&tapes, b), Evaluation::Custom),
     };
