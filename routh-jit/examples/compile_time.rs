@@ -21,8 +21,8 @@ fn tape(n: usize, outputs: usize, calls: bool) -> Tape {
         let a = (i - 1 - next(i.min(6))) as u32;
         let b = next(i) as u32;
         ops.push(match next(8) {
-            0 | 1 | 2 => Op::Add(a, b),
-            3 | 4 | 5 => Op::Mul(a, b),
+            0..=2 => Op::Add(a, b),
+            3..=5 => Op::Mul(a, b),
             6 => Op::Neg(a),
             _ if calls => Op::Func(Func::Sin, a),
             _ => Op::Func(Func::Sqrt, a),
