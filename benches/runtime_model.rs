@@ -1,14 +1,20 @@
-//! `routh::Model` (the DSL read at run time, tapes evaluated by the interpreter) against the
-//! derive's generated code on the same models: one `bundle`, and `steady_motions` + `classify`,
-//! for the heavy (Lagrange) top, the Kelvin gyrostat and the spheroid on a plane; and the time
-//! to build a `Model` from text (parse, check, differentiate, reduce, tape, bind). Figures in
-//! docs/performance.md.
+//! `routh::Model` (the DSL read at run time) against the derive's generated code on the same
+//! models, in the same run: the model's tapes compiled by the JIT (the default) and interpreted
+//! (`Model::interpreted`). One `bundle`, `steady_motions` + `classify`, for the heavy (Lagrange)
+//! top, the Kelvin gyrostat and the spheroid on a plane; the bifurcation diagram of the
+//! Lagrange top; the bundle tape compiled with its parameters folded in as constants against
+//! passed by pointer; and the time to build a `Model` from text (parse, check, differentiate,
+//! reduce, tape, bind, compile) and to re-bind one parameter. Figures in docs/performance.md.
 
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use derived_models::{Ellipsoid, Gyrostat, LagrangeTop};
-use routh::{classify, steady_motions, Model, Routhian, Vector3};
+use routh::{
+    bifurcation_diagram, classify, steady_motions, ContinuationOptions, Evaluation, Model,
+    Routhian, Vector3,
+};
+use routh_jit::JitFunction;
 
 fn models() -> [(&'static str, Model); 3] {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/models/");
@@ -28,22 +34,60 @@ fn analyse<M: Routhian>(model: &M, p: f64) -> Vec<routh::StabilityReport> {
         .collect()
 }
 
-fn bench_pair<D: Routhian>(c: &mut Criterion, name: &str, derived: &D, runtime: &Model, p: f64) {
+fn bench_pair<D: Routhian>(c: &mut Criterion, name: &str, derived: &D, jit: &Model, p: f64) {
+    assert_eq!(jit.evaluation(), Evaluation::Jit);
+    let interp = jit.interpreted().expect("interpreter");
+    let fast = jit.jit(false).expect("unoptimized JIT");
     let w = Vector3::new(0.3, -0.2, 0.5);
     let g = Vector3::new(0.36, 0.48, 0.8);
     let mut group = c.benchmark_group(format!("runtime_model/{name}"));
     group.bench_function("bundle/derive", |b| {
         b.iter(|| black_box(derived.bundle(black_box(&w), black_box(&g), black_box(p))))
     });
-    group.bench_function("bundle/runtime", |b| {
-        b.iter(|| black_box(runtime.bundle(black_box(&w), black_box(&g), black_box(p))))
+    group.bench_function("bundle/jit", |b| {
+        b.iter(|| black_box(jit.bundle(black_box(&w), black_box(&g), black_box(p))))
+    });
+    group.bench_function("bundle/jit_unoptimized", |b| {
+        b.iter(|| black_box(fast.bundle(black_box(&w), black_box(&g), black_box(p))))
+    });
+    group.bench_function("bundle/interpreter", |b| {
+        b.iter(|| black_box(interp.bundle(black_box(&w), black_box(&g), black_box(p))))
+    });
+    // The bundle's tape alone, called directly: parameters folded in (what a Model does)
+    // against read from the input buffer at run time.
+    let tape = jit.tape("bundle").expect("bundle tape");
+    let values = jit.tape_parameters().expect("parameters");
+    let folded = JitFunction::compile(&tape.bind(&values).expect("bind")).expect("jit");
+    let open = JitFunction::compile(tape).expect("jit");
+    let x = [w.x, w.y, w.z, g.x, g.y, g.z, p];
+    let mut with_params = x.to_vec();
+    with_params.extend_from_slice(&values);
+    group.bench_function("bundle_tape/params_folded", |b| {
+        let mut out = [0.0; 36];
+        b.iter(|| {
+            folded.eval(black_box(&x), &mut out).expect("eval");
+            black_box(out[0])
+        })
+    });
+    group.bench_function("bundle_tape/params_by_pointer", |b| {
+        let mut out = [0.0; 36];
+        b.iter(|| {
+            open.eval(black_box(&with_params), &mut out).expect("eval");
+            black_box(out[0])
+        })
     });
     group.sample_size(10);
     group.bench_function("steady+classify/derive", |b| {
         b.iter(|| black_box(analyse(derived, black_box(p))))
     });
-    group.bench_function("steady+classify/runtime", |b| {
-        b.iter(|| black_box(analyse(runtime, black_box(p))))
+    group.bench_function("steady+classify/jit", |b| {
+        b.iter(|| black_box(analyse(jit, black_box(p))))
+    });
+    group.bench_function("steady+classify/jit_unoptimized", |b| {
+        b.iter(|| black_box(analyse(&fast, black_box(p))))
+    });
+    group.bench_function("steady+classify/interpreter", |b| {
+        b.iter(|| black_box(analyse(&interp, black_box(p))))
     });
     group.finish();
 }
@@ -53,6 +97,27 @@ fn bench_runtime_model(c: &mut Criterion) {
     bench_pair(c, "heavy_top", &LagrangeTop::example(), &top, 2.2);
     bench_pair(c, "gyrostat", &Gyrostat::kelvin(), &gyro, 3.5);
     bench_pair(c, "ellipsoid", &Ellipsoid::spheroid(), &ell, 5.0);
+
+    // The bifurcation diagram of the Lagrange top over p_ψ ∈ [0, 5], count checks included.
+    let opts = ContinuationOptions::default();
+    let derived = LagrangeTop::example();
+    let interp = top.interpreted().expect("interpreter");
+    let fast = top.jit(false).expect("unoptimized JIT");
+    let mut group = c.benchmark_group("runtime_model/heavy_top_diagram");
+    group.sample_size(10);
+    group.bench_function("derive", |b| {
+        b.iter(|| bifurcation_diagram(|p| (derived.clone(), p), black_box((0.0, 5.0)), &opts))
+    });
+    group.bench_function("jit", |b| {
+        b.iter(|| bifurcation_diagram(|p| (top.clone(), p), black_box((0.0, 5.0)), &opts))
+    });
+    group.bench_function("jit_unoptimized", |b| {
+        b.iter(|| bifurcation_diagram(|p| (fast.clone(), p), black_box((0.0, 5.0)), &opts))
+    });
+    group.bench_function("interpreter", |b| {
+        b.iter(|| bifurcation_diagram(|p| (interp.clone(), p), black_box((0.0, 5.0)), &opts))
+    });
+    group.finish();
 
     let mut group = c.benchmark_group("runtime_model/build");
     group.sample_size(10);
@@ -67,9 +132,17 @@ fn bench_runtime_model(c: &mut Criterion) {
                 black_box(Model::with_symmetric(black_box(&text), &p, &sym).expect("model"))
             })
         });
-        group.bench_function(format!("{name}/set"), |b| {
+        let (n, v) = params[0].clone();
+        group.bench_function(format!("{name}/set/jit"), |b| {
             let mut m = m.clone();
-            let (n, v) = params[0].clone();
+            b.iter(|| m.set(&n, black_box(v)).expect("set"))
+        });
+        group.bench_function(format!("{name}/set/jit_unoptimized"), |b| {
+            let mut m = m.jit(false).expect("unoptimized JIT");
+            b.iter(|| m.set(&n, black_box(v)).expect("set"))
+        });
+        group.bench_function(format!("{name}/set/interpreter"), |b| {
+            let mut m = m.interpreted().expect("interpreter");
             b.iter(|| m.set(&n, black_box(v)).expect("set"))
         });
     }

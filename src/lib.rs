@@ -53,7 +53,7 @@ pub use routh_core::*;
 pub use routh_macros::Lagrangian;
 /// Models read at run time: the derive's language as text or TOML (`routh::Model`,
 /// docs/models.md).
-pub use routh_runtime::{Model, ModelError, Param};
+pub use routh_runtime::{Evaluation, Model, ModelError, Param};
 
 pub mod fluid;
 

@@ -71,7 +71,57 @@ pub(crate) struct Tapes<T> {
     pub reduced_equations: T,
 }
 
+/// The methods of the tapes, in the order of [`Tapes::fields`].
+pub(crate) const TAPE_NAMES: [&str; 20] = [
+    "lagrangian",
+    "dl_domega",
+    "dl_dgamma",
+    "d2l_domega2",
+    "d2l_domega_dgamma",
+    "energy",
+    "cyclic_momentum",
+    "full_equations",
+    "psi_dot",
+    "routhian",
+    "dr_domega",
+    "dr_dgamma",
+    "dr_dp",
+    "d2r_domega2",
+    "d2r_domega_dgamma",
+    "d2r_dgamma2",
+    "amended_potential",
+    "bundle",
+    "gyroscopic_system",
+    "reduced_equations",
+];
+
 impl<T> Tapes<T> {
+    /// Every tape, in the order [`Tapes::try_map`] visits them (named by [`TAPE_NAMES`]).
+    pub fn fields(&self) -> [&T; 20] {
+        [
+            &self.lagrangian,
+            &self.dl_domega,
+            &self.dl_dgamma,
+            &self.d2l_domega2,
+            &self.d2l_domega_dgamma,
+            &self.energy,
+            &self.cyclic_momentum,
+            &self.full_equations,
+            &self.psi_dot,
+            &self.routhian,
+            &self.dr_domega,
+            &self.dr_dgamma,
+            &self.dr_dp,
+            &self.d2r_domega2,
+            &self.d2r_domega_dgamma,
+            &self.d2r_dgamma2,
+            &self.amended_potential,
+            &self.bundle,
+            &self.gyroscopic_system,
+            &self.reduced_equations,
+        ]
+    }
+
     /// Applies `f` to every tape, stopping at the first error.
     pub fn try_map<U, E>(&self, mut f: impl FnMut(&T) -> Result<U, E>) -> Result<Tapes<U>, E> {
         Ok(Tapes {

@@ -1,5 +1,10 @@
-//! Evaluation of a model's tapes behind one small interface, [`Kernel`], so that a compiled
-//! backend (a JIT) can replace the interpreter tape by tape.
+//! Evaluation of a model's tapes behind one small interface, [`Kernel`]: compiled to native code
+//! by Cranelift ([`Jit`], feature `jit`, the default) or interpreted ([`Interpreter`]).
+//!
+//! With the feature `jit` a [`Model`](crate::Model) compiles all its tapes at once into one
+//! block of machine code ([`routh_jit`]); the code computes with the same IEEE operations as
+//! the interpreter, so the two give the same bits. Without the feature, or on a host Cranelift
+//! does not support, the interpreter evaluates them.
 //!
 //! The interpreter ([`Interpreter`]) is register based: the tape, its parameters already folded
 //! into constants ([`routh_tape::Tape::bind`]), is folded once more (every operation of
@@ -33,6 +38,75 @@ pub type Backend = fn(&Tape) -> Arc<dyn Kernel>;
 /// The interpreter's [`Backend`].
 pub fn interpret(tape: &Tape) -> Arc<dyn Kernel> {
     Arc::new(Interpreter::new(tape))
+}
+
+/// Whether models compile their tapes to native code: the feature `jit` is on and Cranelift
+/// supports this host.
+pub fn jit_supported() -> bool {
+    #[cfg(feature = "jit")]
+    return routh_jit::is_supported();
+    #[cfg(not(feature = "jit"))]
+    return false;
+}
+
+/// The JIT's [`Backend`]: `tape` compiled to native code on its own, or the interpreter if it
+/// cannot be (a host Cranelift does not support, or a tape that still has parameters).
+/// A [`Model`](crate::Model) compiles its tapes together instead (one block of code), which
+/// builds faster.
+#[cfg(feature = "jit")]
+pub fn jit(tape: &Tape) -> Arc<dyn Kernel> {
+    if tape.num_params() > 0 {
+        return interpret(tape);
+    }
+    match routh_jit::JitFunction::compile(tape) {
+        Ok(f) => Arc::new(Jit(f)),
+        Err(_) => interpret(tape),
+    }
+}
+
+/// Compiles every tape (none with parameters) into one block of native code; `None` if the JIT
+/// cannot (the host is not supported, or Cranelift failed), for the caller to interpret them.
+#[cfg(feature = "jit")]
+pub(crate) fn jit_all(tapes: &[&Tape], optimize: bool) -> Option<Vec<Arc<dyn Kernel>>> {
+    if tapes.iter().any(|t| t.num_params() > 0) {
+        return None;
+    }
+    let level = if optimize {
+        routh_jit::OptLevel::Speed
+    } else {
+        routh_jit::OptLevel::None
+    };
+    let fns = routh_jit::JitFunction::compile_all_with(tapes, level).ok()?;
+    Some(
+        fns.into_iter()
+            .map(|f| Arc::new(Jit(f)) as Arc<dyn Kernel>)
+            .collect(),
+    )
+}
+
+/// One tape compiled to native code by Cranelift ([`routh_jit::JitFunction`]).
+#[cfg(feature = "jit")]
+#[derive(Clone, Debug)]
+pub struct Jit(pub routh_jit::JitFunction);
+
+#[cfg(feature = "jit")]
+impl Kernel for Jit {
+    #[inline]
+    fn eval(&self, inputs: &[f64; INPUTS], out: &mut [f64]) {
+        if self.0.eval(inputs, out).is_err() {
+            // `out` is shorter than the outputs: the first ones, through a buffer.
+            let mut all = vec![0.0; self.0.outputs()];
+            if self.0.eval(inputs, &mut all).is_ok() {
+                for (o, x) in out.iter_mut().zip(all) {
+                    *o = x;
+                }
+            }
+        }
+    }
+
+    fn outputs(&self) -> usize {
+        self.0.outputs()
+    }
 }
 
 /// An instruction; the result goes to the next register.

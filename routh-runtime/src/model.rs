@@ -50,13 +50,47 @@ pub struct Model {
     symmetric: Vec<String>,
     latex: BTreeMap<String, String>,
     compiled: Arc<Compiled>,
-    backend: Backend,
+    choice: Choice,
     bound: Arc<Bound>,
 }
+
+/// How a [`Model`] evaluates its tapes ([`Model::evaluation`]).
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub enum Evaluation {
+    /// Compiled to native code by Cranelift (feature `jit`, the default).
+    Jit,
+    /// By the interpreter ([`crate::kernel::Interpreter`]).
+    Interpreter,
+    /// By a backend given to [`Model::with_backend`].
+    Custom,
+}
+
+/// The evaluation asked for.
+#[derive(Copy, Clone)]
+enum Choice {
+    /// The JIT where it is available (optimizing or not), else the interpreter.
+    Jit {
+        optimize: bool,
+    },
+    Interpreter,
+    Backend(Backend),
+}
+
+impl Choice {
+    /// What a model does unless told otherwise.
+    const DEFAULT: Choice = Choice::Jit {
+        optimize: DEFAULT_OPTIMIZE,
+    };
+}
+
+/// Whether the JIT optimizes by default (see `docs/performance.md`: optimized code is faster to
+/// run and far slower to compile).
+const DEFAULT_OPTIMIZE: bool = true;
 
 /// A model's tapes with its parameter values bound, ready to evaluate.
 struct Bound {
     kernels: Tapes<Arc<dyn Kernel>>,
+    evaluation: Evaluation,
     constant_inertia: Option<Matrix3<f64>>,
     certification: Option<CertificationTape>,
     routh: Option<RouthianTape>,
@@ -122,15 +156,15 @@ impl Model {
             }
         }
         let compiled = Arc::new(compile(text, &params, &symmetric)?);
-        let backend: Backend = interpret;
-        let bound = Arc::new(bind(&compiled, &params, backend)?);
+        let choice = Choice::DEFAULT;
+        let bound = Arc::new(bind(&compiled, &params, choice)?);
         Ok(Model {
             text: text.into(),
             params,
             symmetric,
             latex,
             compiled,
-            backend,
+            choice,
             bound,
         })
     }
@@ -158,7 +192,7 @@ impl Model {
             )));
         }
         slot.1 = value;
-        self.bound = Arc::new(bind(&self.compiled, &self.params, self.backend)?);
+        self.bound = Arc::new(bind(&self.compiled, &self.params, self.choice)?);
         Ok(())
     }
 
@@ -250,12 +284,87 @@ impl Model {
         [&f[0], &f[1], &f[2]]
     }
 
-    /// Replaces the evaluation of every tape by `backend` (e.g. a JIT compiler); the default is
-    /// the interpreter, [`crate::kernel::interpret`].
+    /// Replaces the evaluation of every tape by `backend`, tape by tape (e.g.
+    /// [`crate::kernel::interpret`], or [`crate::kernel::jit`] to compile each tape on its
+    /// own); the default compiles all the tapes together to native code (feature `jit`), or
+    /// interprets them.
     pub fn with_backend(&self, backend: Backend) -> Result<Model, ModelError> {
+        self.with_choice(Choice::Backend(backend))
+    }
+
+    /// A copy that interprets its tapes ([`crate::kernel::Interpreter`]) instead of compiling
+    /// them: what a model does without the feature `jit`.
+    ///
+    /// ```
+    /// use routh_runtime::{Evaluation, Model};
+    /// let top = Model::new("kinetic = 0.5 * omega.dot(omega), potential = gamma.z", &[])?;
+    /// let slow = top.interpreted()?;
+    /// assert_eq!(slow.evaluation(), Evaluation::Interpreter);
+    /// let g = routh_core::Vector3::new(0.6, 0.0, 0.8);
+    /// use routh_core::Routhian;
+    /// // The same IEEE operations: the same bits.
+    /// assert_eq!(top.amended_potential(&g, 1.5), slow.amended_potential(&g, 1.5));
+    /// # Ok::<(), routh_runtime::ModelError>(())
+    /// ```
+    pub fn interpreted(&self) -> Result<Model, ModelError> {
+        self.with_choice(Choice::Interpreter)
+    }
+
+    /// How the tapes are evaluated: [`Evaluation::Jit`] by default where the feature `jit` is
+    /// on and Cranelift supports the host, else [`Evaluation::Interpreter`].
+    ///
+    /// ```
+    /// use routh_runtime::{Evaluation, Model};
+    /// let top = Model::new("kinetic = 0.5 * omega.dot(omega), potential = gamma.z", &[])?;
+    /// if routh_runtime::kernel::jit_supported() {
+    ///     assert_eq!(top.evaluation(), Evaluation::Jit);
+    /// }
+    /// # Ok::<(), routh_runtime::ModelError>(())
+    /// ```
+    pub fn evaluation(&self) -> Evaluation {
+        self.bound.evaluation
+    }
+
+    /// The tape of the generated method `method` (a method name of [`Lagrangian`] or
+    /// [`Routhian`]: `"bundle"`, `"routhian"`, `"gyroscopic_system"`, …) with its parameters
+    /// unbound: `Op::Param(k)` reads the `k`-th value of [`Model::tape_parameters`]. `None` for
+    /// another name.
+    ///
+    /// ```
+    /// use routh_runtime::Model;
+    /// let top = Model::new("kinetic = 0.5 * omega.dot(omega), potential = mgl * gamma.z",
+    ///     &[("mgl", 2.0.into())])?;
+    /// let tape = top.tape("amended_potential").expect("a generated method");
+    /// assert_eq!(tape.num_params(), 1);
+    /// assert_eq!(top.tape_parameters()?, vec![2.0]);
+    /// assert!(top.tape("no_such_method").is_none());
+    /// # Ok::<(), routh_runtime::ModelError>(())
+    /// ```
+    pub fn tape(&self, method: &str) -> Option<&Tape> {
+        let k = crate::compile::TAPE_NAMES
+            .iter()
+            .position(|n| *n == method)?;
+        Some(self.compiled.tapes.fields()[k])
+    }
+
+    /// The parameter values the unbound tapes ([`Model::tape`]) read, `Op::Param(k)` being the
+    /// `k`-th.
+    pub fn tape_parameters(&self) -> Result<Vec<f64>, ModelError> {
+        values(&self.compiled, &self.params)
+    }
+
+    /// A copy whose tapes are compiled by the JIT (the interpreter where it is not available:
+    /// see [`Model::evaluation`]), `optimize`d (Cranelift's `speed` level and backtracking
+    /// register allocator: faster code) or not (no optimization passes, single-pass register
+    /// allocator: compiles many times faster, for large models or models built often).
+    pub fn jit(&self, optimize: bool) -> Result<Model, ModelError> {
+        self.with_choice(Choice::Jit { optimize })
+    }
+
+    fn with_choice(&self, choice: Choice) -> Result<Model, ModelError> {
         let mut m = self.clone();
-        m.backend = backend;
-        m.bound = Arc::new(bind(&m.compiled, &m.params, backend)?);
+        m.choice = choice;
+        m.bound = Arc::new(bind(&m.compiled, &m.params, choice)?);
         Ok(m)
     }
 }
@@ -275,17 +384,42 @@ fn values(compiled: &Compiled, params: &[(String, Param)]) -> Result<Vec<f64>, M
         .collect()
 }
 
+/// The kernels of the bound tapes, compiled together by the JIT where it is available, else
+/// interpreted.
+fn jit_kernels(tapes: &Tapes<Tape>, optimize: bool) -> (Tapes<Arc<dyn Kernel>>, Evaluation) {
+    #[cfg(not(feature = "jit"))]
+    let _ = optimize;
+    #[cfg(feature = "jit")]
+    if let Some(kernels) = crate::kernel::jit_all(&tapes.fields(), optimize) {
+        let mut each = kernels.into_iter();
+        if let Ok(k) = tapes.try_map(|_| each.next().ok_or(())) {
+            return (k, Evaluation::Jit);
+        }
+    }
+    (with_backend(tapes, interpret), Evaluation::Interpreter)
+}
+
+fn with_backend(tapes: &Tapes<Tape>, backend: Backend) -> Tapes<Arc<dyn Kernel>> {
+    let Ok(k) = tapes.try_map(|t| Ok::<_, std::convert::Infallible>(backend(t)));
+    k
+}
+
 fn bind(
     compiled: &Compiled,
     params: &[(String, Param)],
-    backend: Backend,
+    choice: Choice,
 ) -> Result<Bound, ModelError> {
     let values = values(compiled, params)?;
     let internal = |e: routh_tape::TapeError| ModelError::general(format!("internal error: {e}"));
-    let kernels = compiled
+    let tapes = compiled
         .tapes
-        .try_map(|t: &Tape| t.bind(&values).map(|b| backend(&b)))
+        .try_map(|t: &Tape| t.bind(&values))
         .map_err(internal)?;
+    let (kernels, evaluation) = match choice {
+        Choice::Jit { optimize } => jit_kernels(&tapes, optimize),
+        Choice::Interpreter => (with_backend(&tapes, interpret), Evaluation::Interpreter),
+        Choice::Backend(b) => (with_backend(&tapes, b), Evaluation::Custom),
+    };
     let constant_inertia = match &compiled.constant_inertia {
         Some(t) => {
             let mut out = [0.0; 9];
@@ -301,6 +435,7 @@ fn bind(
     };
     Ok(Bound {
         kernels,
+        evaluation,
         constant_inertia,
         certification: CertificationTape::new(compiled.certification.clone(), values.clone()).ok(),
         routh: RouthianTape::new(compiled.routh.clone(), values).ok(),
