@@ -566,3 +566,38 @@ fn the_start_and_the_angle_from_the_guess() {
         Err(RouthError::InvalidOption { what: "start", .. })
     ));
 }
+
+/// Grids and seed counts too large to run are bad input (an `InvalidOption` naming the option),
+/// not a crash on allocation or a computation that never ends (found from Python: 2³² × 2³²
+/// nodes aborted the interpreter, 2⁴⁰ seeds hung).
+#[test]
+fn oversized_grids_and_seed_counts_are_refused() {
+    use routh_core::{bifurcation_diagram, ContinuationOptions, RouthError, Vector3};
+    let top = test_models::Gyrostat::lagrange_top(1.0, 1.25, 1.0);
+    let family = |mgl: f64, p: f64| (test_models::Gyrostat::lagrange_top(1.0, 1.25, mgl), p);
+    for (nx, ny) in [
+        (1usize << 32, 1usize << 32),
+        (usize::MAX, 2),
+        (20_000, 20_000),
+    ] {
+        let opts = AtlasOptions {
+            nx,
+            ny,
+            ..Default::default()
+        };
+        let r = stability_atlas(family, Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts);
+        assert!(
+            matches!(r, Err(RouthError::InvalidOption { what: "nx", .. })),
+            "{nx} × {ny}: {r:?}"
+        );
+    }
+    let opts = ContinuationOptions {
+        seeds: 1 << 40,
+        ..Default::default()
+    };
+    let r = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &opts);
+    assert!(
+        matches!(r, Err(RouthError::InvalidOption { what: "seeds", .. })),
+        "{r:?}"
+    );
+}

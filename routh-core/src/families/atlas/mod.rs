@@ -91,6 +91,9 @@ use crate::model::Routhian;
 use crate::steady::steady_motion_near;
 use grid::{Line, Node};
 
+/// The largest grid `nx · ny` an atlas accepts.
+pub const MAX_ATLAS_NODES: usize = 100_000_000;
+
 /// Singular values below this fraction of the largest (or of the local scale) are zero.
 const PINV_CUT: f64 = 1e-10;
 /// Central-difference steps: parameters (relative to the range) and chart coordinates (rad).
@@ -434,6 +437,21 @@ fn validate(x: (f64, f64), y: (f64, f64), opts: &AtlasOptions) -> Result<(), Rou
         return invalid(
             "ny",
             format!("at least 2 nodes are needed (got {})", opts.ny),
+        );
+    }
+    // The grid is allocated up front: a grid that cannot be allocated is bad input, not a crash
+    // (2^32 × 2^32 nodes overflowed the allocation; 10^8 nodes are hours of work at best).
+    if opts
+        .nx
+        .checked_mul(opts.ny)
+        .is_none_or(|n| n > MAX_ATLAS_NODES)
+    {
+        return invalid(
+            "nx",
+            format!(
+                "the grid of {} × {} nodes exceeds {MAX_ATLAS_NODES} nodes",
+                opts.nx, opts.ny
+            ),
         );
     }
     if !(opts.curve_tol > 0.0 && opts.curve_tol < 1.0) {

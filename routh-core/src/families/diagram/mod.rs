@@ -260,6 +260,9 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
     Ok(diagram)
 }
 
+/// The largest [`ContinuationOptions::seeds`] a diagram accepts.
+pub const MAX_SEEDS: usize = 100_000;
+
 fn validate(range: (f64, f64), opts: &ContinuationOptions) -> Result<(), RouthError> {
     check_finite("range", &[range.0, range.1])?;
     let invalid = |what, reason: String| Err(RouthError::InvalidOption { what, reason });
@@ -296,6 +299,13 @@ fn validate(range: (f64, f64), opts: &ContinuationOptions) -> Result<(), RouthEr
                 "must be finite and ≥ 0 (got {}; 0 turns the smoothing off)",
                 opts.em_turn_degrees
             ),
+        );
+    }
+    // Each seed is a global search: a million of them is hours; 2^40 never ends.
+    if opts.seeds > MAX_SEEDS {
+        return invalid(
+            "seeds",
+            format!("at most {MAX_SEEDS} seed values (got {})", opts.seeds),
         );
     }
     if opts.max_steps == 0 || opts.max_branches == 0 {
