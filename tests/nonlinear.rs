@@ -185,7 +185,7 @@ fn event_indicators(rep: &routh::NonlinearReport) -> [f64; 3] {
 /// bisected 60 times in p_ψ (the steady motion is γ = e₃ at every p_ψ, no continuation).
 #[test]
 fn diagram_option_locates_the_nonlinear_events() {
-    use routh::nonlinear::nonlinear_events;
+    use routh::families::nonlinear_events;
     use routh::{bifurcation_diagram, ContinuationOptions, EventKind};
     let top = Top {
         inertia: Vector3::new(2.0, 2.5, 1.5),

@@ -23,7 +23,7 @@
 //! | `AtlasOptions`, `StabilityAtlas`, `BoundaryCurve` | `stability_atlas` | `diagrams_and_atlases_round_trip` |
 //! | `CertifyOptions`, `Certificate`, `CertifiedMotion`, `UndecidedRegion`, `Interval` | `steady_motions_certified` | `certificates_round_trip` |
 //! | `NonlinearOptions`, `NonlinearReport`, `NonlinearVerdict`, `Resonance` | `nonlinear_stability` | `nonlinear_reports_and_events_round_trip` |
-//! | `NonlinearEvent` | `nonlinear::nonlinear_events` | `nonlinear_reports_and_events_round_trip` |
+//! | `NonlinearEvent` | `families::nonlinear_events` | `nonlinear_reports_and_events_round_trip` |
 //! | `LinearNormalForm`, `Jet` | `nonlinear::linear_normal_form` | `nonlinear_reports_and_events_round_trip` |
 //! | `RouthError` (tagged, with its message) | every fallible function | `errors_round_trip` |
 //! | `LatexFormulas` | `DerivedFormulas::latex`, `Model::latex` | `formulas_models_and_their_errors_round_trip` |
@@ -38,8 +38,9 @@
 
 use derived_models::{AsymmetricTop, LagrangeTop};
 use routh::certify::{steady_motions_certified, CertifyOptions, Interval};
+use routh::families::nonlinear_events;
 use routh::families::BifurcationDiagram;
-use routh::nonlinear::{linear_normal_form, nonlinear_events, Jet};
+use routh::nonlinear::{linear_normal_form, Jet};
 use routh::sim::attitude::classify_apex_locus;
 use routh::stability::classify_with_krein;
 use routh::steady::{steady_motions_with, SearchOptions};

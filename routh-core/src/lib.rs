@@ -42,7 +42,7 @@ pub use families::BranchPoint;
 pub use families::{
     bifurcation_diagram, continue_branch, stability_atlas, stability_atlas_parallel, AtlasOptions,
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchSample, ContinuationOptions,
-    EventKind, StabilityAtlas, StopReason,
+    EventKind, NonlinearCurve, NonlinearEventVerdicts, StabilityAtlas, StopReason,
 };
 pub use formulas::LatexFormulas;
 pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
@@ -55,8 +55,7 @@ pub use model::{FullEquations, RankOneInertia, ReducedEquations};
 #[doc(hidden)]
 pub use nonlinear::nonlinear_stability_with;
 pub use nonlinear::{
-    nonlinear_stability, NonlinearCurve, NonlinearEventVerdicts, NonlinearOptions, NonlinearReport,
-    NonlinearVerdict, Resonance,
+    nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};

@@ -540,7 +540,7 @@ fn near_a_one_to_two_resonance_small_perturbations_grow() {
 /// them (Lyapunov stable on both sides, undecided at the 1:2 point, stable by Markeev at 1:3).
 #[test]
 fn family_post_pass_locates_the_resonances_of_the_sleeping_top() {
-    use routh_core::nonlinear::nonlinear_events;
+    use routh_core::families::nonlinear_events;
     use routh_core::{bifurcation_diagram, ContinuationOptions, EventKind, Resonance};
     let top = Gyrostat::lagrange_top(1.0, 0.8, 1.0);
     let family = |p: f64| (top.clone(), p);

@@ -29,12 +29,13 @@ mod atlas;
 mod continuation;
 mod diagram;
 mod equations;
+mod nonlinear;
 
 use std::fmt;
 
 use nalgebra::Vector3;
 
-use crate::nonlinear::{NonlinearCurve, NonlinearEventVerdicts, NonlinearOptions};
+use crate::nonlinear::NonlinearOptions;
 use crate::stability::{ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{SearchOptions, SteadyMotion};
 
@@ -42,6 +43,7 @@ pub use atlas::{stability_atlas, stability_atlas_parallel};
 #[allow(deprecated)]
 pub use diagram::bifurcation_diagram_checked;
 pub use diagram::{bifurcation_diagram, continue_branch, CheckedDiagram, CountCheck};
+pub use nonlinear::{nonlinear_events, NonlinearCurve, NonlinearEvent, NonlinearEventVerdicts};
 
 /// Options of [`bifurcation_diagram`] and [`continue_branch`].
 ///
@@ -112,7 +114,7 @@ pub struct ContinuationOptions {
     /// [`BranchEvent::nonlinear`] (docs/method.md §10.7). The branches are the same as without
     /// it, and the count checks ignore these events. Needs a model with a Routh-function tape
     /// (derived or run-time; for a hand-written one use
-    /// [`nonlinear_events`](crate::nonlinear::nonlinear_events)). Default `None`: no nonlinear
+    /// [`nonlinear_events`](crate::families::nonlinear_events)). Default `None`: no nonlinear
     /// test, the diagram of the linear verdicts alone.
     ///
     /// ```
@@ -412,7 +414,7 @@ pub enum EventKind {
     /// A zero of Arnold's determinant `D` on a gyroscopically stabilised stretch: the
     /// Arnold–Moser test is inconclusive there (docs/method.md §10). Reported only when
     /// [`ContinuationOptions::nonlinear`] asks (or by the post-pass
-    /// [`nonlinear_events`](crate::nonlinear::nonlinear_events)).
+    /// [`nonlinear_events`](crate::families::nonlinear_events)).
     ArnoldDegenerate,
     /// A 1:2 or 1:3 resonance between the two frequencies on a gyroscopically stabilised
     /// stretch (docs/method.md §10); [`BranchEvent::nonlinear`] says which. Reported only when

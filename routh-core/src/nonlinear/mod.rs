@@ -13,9 +13,7 @@
 //! The derivatives of order three and four come from evaluating the model's Routh function at
 //! Taylor jets ([`Jet`], [`RouthianJet`]): no finite differences.
 
-mod atlas;
 mod chart;
-mod events;
 mod jet;
 mod normal_form;
 mod verdict;
@@ -27,15 +25,11 @@ use crate::model::Routhian;
 use crate::stability::{classify_with, ClassifyOptions, Stability, StabilityReport};
 use crate::steady::SteadyMotion;
 
-pub(crate) use atlas::atlas_curves;
-pub use atlas::NonlinearCurve;
 pub use chart::RouthianJet;
 /// The chart, the reduced Hamiltonian and the truncated power series behind the normal form:
 /// public for the tests that check them by hand, not an API of routh.
 #[doc(hidden)]
 pub use chart::{chart, reduced_hamiltonian, tangent_frame};
-pub(crate) use events::add_to_diagram;
-pub use events::{nonlinear_events, NonlinearEvent, NonlinearEventVerdicts};
 #[doc(hidden)]
 pub use jet::{monomial_index, monomials, Exponents, Jet, NCOEF, NVARS, ORDER};
 
@@ -69,7 +63,7 @@ impl Default for NonlinearOptions {
 }
 
 impl NonlinearOptions {
-    fn validate(&self) -> Result<(), RouthError> {
+    pub(crate) fn validate(&self) -> Result<(), RouthError> {
         for (what, v) in [
             ("resonance_tol", self.resonance_tol),
             ("arnold_tol", self.arnold_tol),

@@ -382,7 +382,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
                         .collect()
                 })
                 .collect();
-            crate::nonlinear::atlas_curves(family, &xs, &ys, &nodes, nl)?
+            super::nonlinear::atlas_curves(family, &xs, &ys, &nodes, nl)?
         }
         None => Vec::new(),
     };

@@ -143,7 +143,7 @@ pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
     b.join_at_branch_points();
     b.smooth()?;
     let mut diagram = b.finish();
-    crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
+    super::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
     diagram.checks = checks;
     Ok(diagram)
 }
@@ -256,7 +256,7 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
     b.join_at_branch_points();
     b.smooth()?;
     let mut diagram = b.finish();
-    crate::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
+    super::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
     Ok(diagram)
 }
 

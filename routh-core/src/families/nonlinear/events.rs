@@ -13,12 +13,14 @@
 
 use nalgebra::Vector3;
 
-use super::jet::Jet;
-use super::{nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport};
-use super::{NonlinearVerdict, Resonance, RouthianJet};
 use crate::error::RouthError;
 use crate::families::{BifurcationDiagram, BranchEvent, ContinuationOptions, EventKind};
 use crate::model::Routhian;
+use crate::nonlinear::Jet;
+use crate::nonlinear::{
+    nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport,
+};
+use crate::nonlinear::{NonlinearVerdict, Resonance, RouthianJet};
 use crate::stability::{ClassifyOptions, Stability};
 use crate::steady::{steady_motion_near, SteadyMotion};
 
@@ -31,7 +33,7 @@ const POLE_CUT: f64 = 1e-6;
 /// `GyroscopicallyStabilized` on both sides).
 ///
 /// ```
-/// use routh_core::nonlinear::NonlinearEventVerdicts;
+/// use routh_core::families::NonlinearEventVerdicts;
 /// use routh_core::{NonlinearVerdict, Resonance};
 /// let v = NonlinearEventVerdicts {
 ///     resonance: Some(Resonance::OneToTwo),
@@ -363,7 +365,7 @@ pub(crate) fn needs_tape<M: Routhian>(model: &M, what: &'static str) -> Result<(
         what: "Routh function tape",
         reason: format!(
             "{what} needs a derived or run-time model (R as an expression tape); for a \
-             hand-written model use nonlinear::nonlinear_events with a RouthianJet"
+             hand-written model use families::nonlinear_events with a RouthianJet"
         ),
     })
 }

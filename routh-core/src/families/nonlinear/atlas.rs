@@ -13,10 +13,10 @@
 use nalgebra::Vector3;
 
 use super::events::{analyse_with_tape, bisect, indicator_kind, indicators, needs_tape, Solved};
-use super::{NonlinearOptions, Resonance};
 use crate::error::RouthError;
 use crate::families::EventKind;
 use crate::model::Routhian;
+use crate::nonlinear::{NonlinearOptions, Resonance};
 use crate::stability::Stability;
 use crate::steady::{steady_motion_near, SteadyMotion};
 
@@ -34,7 +34,7 @@ const EDGE_TOL: f64 = 1e-9;
 /// in 1:2 or 1:3 resonance ([`EventKind::Resonance`]).
 ///
 /// ```
-/// use routh_core::nonlinear::NonlinearCurve;
+/// use routh_core::families::NonlinearCurve;
 /// use routh_core::{EventKind, Resonance};
 /// let c = NonlinearCurve {
 ///     kind: EventKind::Resonance,
@@ -76,7 +76,7 @@ impl NonlinearCurve {
 /// other than [`RouthError::NotASteadyMotion`] (next to a boundary curve, where the atlas
 /// classified the node on its corrector's word; such a node is left out).
 ///
-/// [`nonlinear_stability`]: super::nonlinear_stability
+/// [`nonlinear_stability`]: crate::nonlinear::nonlinear_stability
 pub(crate) fn atlas_curves<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     family: &F,
     xs: &[f64],

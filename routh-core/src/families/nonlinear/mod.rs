@@ -1,0 +1,12 @@
+//! The nonlinear events of a family (issue 25, docs/method.md §10.7): where, on linearly stable
+//! stretches of a branch or over an atlas, Arnold's determinant vanishes or the frequencies are in
+//! 1:2 or 1:3 resonance. Per point the verdict is [`crate::nonlinear`]'s; this module locates
+//! where it changes.
+
+mod atlas;
+mod events;
+
+pub(crate) use atlas::atlas_curves;
+pub use atlas::NonlinearCurve;
+pub(crate) use events::add_to_diagram;
+pub use events::{nonlinear_events, NonlinearEvent, NonlinearEventVerdicts};
