@@ -176,14 +176,38 @@ impl Model {
         Ok(self.get()?.lagrangian_text().to_string())
     }
 
-    /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector).
+    /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector; the formula
+    /// is evaluated as written, so off the unit sphere it is not the energy of a motion).
+    /// Raises `RouthError` for a non-finite input (kind "NonFinite") or where the formula has
+    /// no finite value, e.g. γ = 0 where γᵀJγ vanishes (kind "NonFiniteModel").
     ///
     /// >>> top.amended_potential([0, 0, 1], 2.0)      # p²/(2C) + mgl
     /// 2.6
-    fn amended_potential(&self, gamma: &Bound<'_, PyAny>, p_psi: f64) -> PyResult<f64> {
+    fn amended_potential(
+        &self,
+        py: Python<'_>,
+        gamma: &Bound<'_, PyAny>,
+        p_psi: f64,
+    ) -> PyResult<f64> {
         use routh::Routhian;
         let g = vector3("gamma", gamma)?;
-        Ok(self.get()?.amended_potential(&g, p_psi))
+        let non_finite =
+            |what: &'static str, value: f64| routh::RouthError::NonFinite { what, value };
+        if let Some(&x) = g.iter().find(|x| !x.is_finite()) {
+            return Err(routh_err(py, &non_finite("gamma", x)));
+        }
+        if !p_psi.is_finite() {
+            return Err(routh_err(py, &non_finite("p_psi", p_psi)));
+        }
+        let u = self.get()?.amended_potential(&g, p_psi);
+        if !u.is_finite() {
+            let e = routh::RouthError::NonFiniteModel {
+                what: "amended_potential",
+                gamma: [g.x, g.y, g.z],
+            };
+            return Err(routh_err(py, &e));
+        }
+        Ok(u)
     }
 
     /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)): the critical points of

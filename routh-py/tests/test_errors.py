@@ -166,3 +166,14 @@ def test_huge_budgets_are_fine(top):
         top.simulate([0, 0, 1], [0, 0, 1], 1.0, max_steps=2**64)
     with pytest.raises(OverflowError):
         top.simulate([0, 0, 1], [0, 0, 1], 1.0, max_steps=-1)
+
+
+def test_amended_potential_refuses_what_has_no_value(top):
+    # U_r = mgl γ₃ + p²/(2 γᵀJγ): at γ = 0 the denominator vanishes.
+    with pytest.raises(routh.RouthError) as info:
+        top.amended_potential([0.0, 0.0, 0.0], 2.0)
+    assert info.value.kind == "NonFiniteModel"
+    for gamma, p in [([float("nan"), 0.0, 1.0], 2.0), ([0.0, 0.0, 1.0], float("inf"))]:
+        with pytest.raises(routh.RouthError) as info:
+            top.amended_potential(gamma, p)
+        assert info.value.kind == "NonFinite"
