@@ -20,7 +20,7 @@ use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use cranelift_jit::{JITBuilder, JITModule};
 use cranelift_module::{FuncId, Linkage, Module};
-use routh_tape::{Func, Op, Tape, TapeScalar};
+use routh_tape::{Func, Op, Tape};
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
@@ -201,19 +201,9 @@ fn body(
             Val::Const(x) => Some(x),
             Val::Ssa(_) => None,
         };
-        // Operations of constants, computed as the interpreter computes them.
-        let folded = match *op {
-            Op::Const(bits) => Some(f64::from_bits(bits)),
-            Op::Omega(_) | Op::Gamma(_) | Op::PPsi | Op::Param(_) => None,
-            Op::Add(a, x) => c(a).zip(c(x)).map(|(x, y)| x + y),
-            Op::Mul(a, x) if a == x => c(a).map(|x| x.powi(2)),
-            Op::Mul(a, x) => c(a).zip(c(x)).map(|(x, y)| x * y),
-            Op::Neg(a) => c(a).map(|x| -x),
-            Op::Recip(a) => c(a).map(|x| 1.0 / x),
-            Op::Powi(a, n) => c(a).map(|x| x.powi(n)),
-            Op::Powf(a, x) => c(a).zip(c(x)).map(|(x, y)| x.powf(y)),
-            Op::Func(f, a) => c(a).map(|x| x.func(f)),
-        };
+        // Operations of constants, folded by the tape's one rule (as the interpreter folds them);
+        // a parameter is read from the input buffer.
+        let folded = op.fold(c);
         if let Some(x) = folded {
             slots.push(Val::Const(x));
             continue;

@@ -14,7 +14,7 @@
 //! register. An evaluation copies the inputs and constants in and runs the instructions; its
 //! working storage is per thread and reused, so an evaluation does not allocate.
 
-use routh_tape::{Func, Op, Tape, TapeScalar};
+use routh_tape::{Func, Op, Tape};
 use std::cell::RefCell;
 use std::fmt;
 use std::sync::Arc;
@@ -154,19 +154,11 @@ impl Interpreter {
                 Loc::Const(x) => Some(x),
                 _ => None,
             };
-            // Fold operations of constants, with the very operation the evaluation would do.
+            // Fold operations of constants by the tape's one rule (the JIT folds the same way);
+            // a parameter still in the tape reads NaN.
             let folded = match *op {
-                Op::Const(bits) => Some(f64::from_bits(bits)),
                 Op::Param(_) => Some(f64::NAN),
-                Op::Omega(_) | Op::Gamma(_) | Op::PPsi => None,
-                Op::Add(a, b) => c(a).zip(c(b)).map(|(x, y)| x + y),
-                Op::Mul(a, b) if a == b => c(a).map(|x| x.powi(2)),
-                Op::Mul(a, b) => c(a).zip(c(b)).map(|(x, y)| x * y),
-                Op::Neg(a) => c(a).map(|x| -x),
-                Op::Recip(a) => c(a).map(|x| 1.0 / x),
-                Op::Powi(a, n) => c(a).map(|x| x.powi(n)),
-                Op::Powf(a, b) => c(a).zip(c(b)).map(|(x, y)| x.powf(y)),
-                Op::Func(f, a) => c(a).map(|x| x.func(f)),
+                _ => op.fold(c),
             };
             let l = match (folded, *op) {
                 (Some(x), _) => Loc::Const(x),

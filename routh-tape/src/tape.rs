@@ -51,6 +51,27 @@ impl Op {
         };
         a.into_iter().chain(b)
     }
+
+    /// The value of this operation when its operands are known constants (`known(slot)`),
+    /// computed with the very `f64` operations of [`Tape::eval`] (`x·x` as `powi(2)`, `1/x` as a
+    /// division): the one constant-folding rule of the interpreter and of the JIT, so that both
+    /// hold the same bits. `Some` for a constant; `None` for an input, a parameter, or an
+    /// operation with an operand that is not known.
+    pub fn fold(&self, known: impl Fn(u32) -> Option<f64>) -> Option<f64> {
+        let c = known;
+        match *self {
+            Op::Const(bits) => Some(f64::from_bits(bits)),
+            Op::Omega(_) | Op::Gamma(_) | Op::PPsi | Op::Param(_) => None,
+            Op::Add(a, b) => c(a).zip(c(b)).map(|(x, y)| x + y),
+            Op::Mul(a, b) if a == b => c(a).map(|x| x.powi(2)),
+            Op::Mul(a, b) => c(a).zip(c(b)).map(|(x, y)| x * y),
+            Op::Neg(a) => c(a).map(|x| -x),
+            Op::Recip(a) => c(a).map(TapeScalar::recip),
+            Op::Powi(a, n) => c(a).map(|x| x.powi(n)),
+            Op::Powf(a, b) => c(a).zip(c(b)).map(|(x, y)| x.powf(y)),
+            Op::Func(f, a) => c(a).map(|x| x.func(f)),
+        }
+    }
 }
 
 /// A named output: the slot holding it.
