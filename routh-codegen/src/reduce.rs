@@ -501,19 +501,17 @@ fn stiffness_sandwich(g: &mut Graph, gm: &V3, mu: Id, h: &M3) -> M3 {
     };
     // [γ]×Y: C_0k = γ₁Y_2k − γ₂Y_1k, C_1k = γ₂Y_0k − γ₀Y_2k, C_2k = γ₀Y_1k − γ₁Y_0k.
     let mut c = [[mu; 3]; 3];
-    for i in 0..3 {
-        for k in i..3 {
-            let (ga, ra, gb, rb) = match i {
-                0 => (g1, 2, g2, 1),
-                1 => (g2, 0, g0, 2),
-                _ => (g0, 1, g1, 0),
-            };
-            let ya = y(g, ra, k);
-            let yb = y(g, rb, k);
-            let e = cross(g, ga, ya, gb, yb);
-            c[i][k] = e;
-            c[k][i] = e;
-        }
+    for (i, k) in [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)] {
+        let (ga, ra, gb, rb) = match i {
+            0 => (g1, 2, g2, 1),
+            1 => (g2, 0, g0, 2),
+            _ => (g0, 1, g1, 0),
+        };
+        let ya = y(g, ra, k);
+        let yb = y(g, rb, k);
+        let e = cross(g, ga, ya, gb, yb);
+        c[i][k] = e;
+        c[k][i] = e;
     }
     c
 }

@@ -55,7 +55,7 @@ fn stiffness_is_the_matrix_product_without_negations() {
     // μ (5), N's diagonal (3), eight entries of Y and six of C (3 each, one product shared).
     assert!(all.total() - base.total() <= 50, "C costs {all} − {base}");
 
-    let mut rng = ChaCha8Rng::seed_from_u64(0x5717_ff);
+    let mut rng = ChaCha8Rng::seed_from_u64(0x0057_17ff);
     let mut roots = flat(&o.system_c);
     roots.extend(flat(&o.d2r_dgamma2));
     roots.extend(o.dr_dgamma);
