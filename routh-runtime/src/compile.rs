@@ -10,7 +10,7 @@ use crate::error::ModelError;
 use crate::Param;
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
-use routh_codegen::layout::{Bundle, EquationTerms, Gyroscopic};
+use routh_codegen::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic};
 use routh_codegen::lower::Access;
 use routh_symbolic::Id;
 use routh_tape::Tape;
@@ -69,10 +69,11 @@ pub(crate) struct Tapes<T> {
     pub bundle: T,
     pub gyroscopic_system: T,
     pub reduced_equations: T,
+    pub bundle_and_system: T,
 }
 
 /// The methods of the tapes, in the order of [`Tapes::fields`].
-pub(crate) const TAPE_NAMES: [&str; 20] = [
+pub(crate) const TAPE_NAMES: [&str; TAPES] = [
     "lagrangian",
     "dl_domega",
     "dl_dgamma",
@@ -93,11 +94,40 @@ pub(crate) const TAPE_NAMES: [&str; 20] = [
     "bundle",
     "gyroscopic_system",
     "reduced_equations",
+    "bundle_and_system",
 ];
 
+/// The number of tapes of a model (one per generated method).
+pub(crate) const TAPES: usize = 21;
+
+/// The position of each tape in [`Tapes::fields`] and [`TAPE_NAMES`].
+pub(crate) mod index {
+    pub const LAGRANGIAN: usize = 0;
+    pub const DL_DOMEGA: usize = 1;
+    pub const DL_DGAMMA: usize = 2;
+    pub const D2L_DOMEGA2: usize = 3;
+    pub const D2L_DOMEGA_DGAMMA: usize = 4;
+    pub const ENERGY: usize = 5;
+    pub const CYCLIC_MOMENTUM: usize = 6;
+    pub const FULL_EQUATIONS: usize = 7;
+    pub const PSI_DOT: usize = 8;
+    pub const ROUTHIAN: usize = 9;
+    pub const DR_DOMEGA: usize = 10;
+    pub const DR_DGAMMA: usize = 11;
+    pub const DR_DP: usize = 12;
+    pub const D2R_DOMEGA2: usize = 13;
+    pub const D2R_DOMEGA_DGAMMA: usize = 14;
+    pub const D2R_DGAMMA2: usize = 15;
+    pub const AMENDED_POTENTIAL: usize = 16;
+    pub const BUNDLE: usize = 17;
+    pub const GYROSCOPIC_SYSTEM: usize = 18;
+    pub const REDUCED_EQUATIONS: usize = 19;
+    pub const BUNDLE_AND_SYSTEM: usize = 20;
+}
+
 impl<T> Tapes<T> {
-    /// Every tape, in the order [`Tapes::try_map`] visits them (named by [`TAPE_NAMES`]).
-    pub fn fields(&self) -> [&T; 20] {
+    /// Every tape, in the order of [`TAPE_NAMES`] (indices in [`index`]).
+    pub fn fields(&self) -> [&T; TAPES] {
         [
             &self.lagrangian,
             &self.dl_domega,
@@ -119,33 +149,8 @@ impl<T> Tapes<T> {
             &self.bundle,
             &self.gyroscopic_system,
             &self.reduced_equations,
+            &self.bundle_and_system,
         ]
-    }
-
-    /// Applies `f` to every tape, stopping at the first error.
-    pub fn try_map<U, E>(&self, mut f: impl FnMut(&T) -> Result<U, E>) -> Result<Tapes<U>, E> {
-        Ok(Tapes {
-            lagrangian: f(&self.lagrangian)?,
-            dl_domega: f(&self.dl_domega)?,
-            dl_dgamma: f(&self.dl_dgamma)?,
-            d2l_domega2: f(&self.d2l_domega2)?,
-            d2l_domega_dgamma: f(&self.d2l_domega_dgamma)?,
-            energy: f(&self.energy)?,
-            cyclic_momentum: f(&self.cyclic_momentum)?,
-            full_equations: f(&self.full_equations)?,
-            psi_dot: f(&self.psi_dot)?,
-            routhian: f(&self.routhian)?,
-            dr_domega: f(&self.dr_domega)?,
-            dr_dgamma: f(&self.dr_dgamma)?,
-            dr_dp: f(&self.dr_dp)?,
-            d2r_domega2: f(&self.d2r_domega2)?,
-            d2r_domega_dgamma: f(&self.d2r_domega_dgamma)?,
-            d2r_dgamma2: f(&self.d2r_dgamma2)?,
-            amended_potential: f(&self.amended_potential)?,
-            bundle: f(&self.bundle)?,
-            gyroscopic_system: f(&self.gyroscopic_system)?,
-            reduced_equations: f(&self.reduced_equations)?,
-        })
     }
 }
 
@@ -406,6 +411,18 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
                 terms(eq.reduced, Some(o.psi_dot)).flatten(),
             ),
         )?,
+        // The derive's fused body: A, G, C of (64) formed from the bundle's own nodes.
+        bundle_and_system: tape(
+            sym,
+            &zip(
+                BundleAndSystem {
+                    bundle: bundle_names,
+                    system: gyro_names,
+                }
+                .flatten(),
+                o.bundle_and_system().flatten(),
+            ),
+        )?,
     };
     let constant_inertia = rank_one
         .map(|r| nine(m33!("constant_inertia"), r.constant))
@@ -428,4 +445,57 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
         formulas,
         latex: routh_codegen::latex::latex_formulas(m, &[]),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The indices name the tapes they index, in [`TAPE_NAMES`].
+    #[test]
+    fn indices_name_their_tapes() {
+        let pairs = [
+            (index::LAGRANGIAN, "lagrangian"),
+            (index::DL_DOMEGA, "dl_domega"),
+            (index::DL_DGAMMA, "dl_dgamma"),
+            (index::D2L_DOMEGA2, "d2l_domega2"),
+            (index::D2L_DOMEGA_DGAMMA, "d2l_domega_dgamma"),
+            (index::ENERGY, "energy"),
+            (index::CYCLIC_MOMENTUM, "cyclic_momentum"),
+            (index::FULL_EQUATIONS, "full_equations"),
+            (index::PSI_DOT, "psi_dot"),
+            (index::ROUTHIAN, "routhian"),
+            (index::DR_DOMEGA, "dr_domega"),
+            (index::DR_DGAMMA, "dr_dgamma"),
+            (index::DR_DP, "dr_dp"),
+            (index::D2R_DOMEGA2, "d2r_domega2"),
+            (index::D2R_DOMEGA_DGAMMA, "d2r_domega_dgamma"),
+            (index::D2R_DGAMMA2, "d2r_dgamma2"),
+            (index::AMENDED_POTENTIAL, "amended_potential"),
+            (index::BUNDLE, "bundle"),
+            (index::GYROSCOPIC_SYSTEM, "gyroscopic_system"),
+            (index::REDUCED_EQUATIONS, "reduced_equations"),
+            (index::BUNDLE_AND_SYSTEM, "bundle_and_system"),
+        ];
+        assert_eq!(pairs.len(), TAPES);
+        for (k, name) in pairs {
+            assert_eq!(TAPE_NAMES[k], name);
+        }
+        // And the tapes' own output names agree: compile a model and look.
+        let c = compile(
+            "kinetic = 0.5 * omega.dot(omega), potential = gamma.z",
+            &[],
+            &[],
+        )
+        .expect("a model");
+        let f = c.tapes.fields();
+        assert_eq!(f[index::BUNDLE].outputs()[0].name, "routhian");
+        assert_eq!(f[index::GYROSCOPIC_SYSTEM].outputs()[0].name, "a[0][0]");
+        assert_eq!(f[index::BUNDLE_AND_SYSTEM].outputs().len(), 63);
+        assert_eq!(
+            f[index::AMENDED_POTENTIAL].outputs()[0].name,
+            "amended_potential"
+        );
+        assert_eq!(f[index::DR_DP].outputs()[0].name, "dr_dp");
+    }
 }
