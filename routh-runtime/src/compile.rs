@@ -167,6 +167,9 @@ pub(crate) struct Compiled {
     pub rank_one: bool,
     pub certification: Tape,
     pub routh: Tape,
+    /// Each tape of [`Compiled::tapes`] (in the order of [`Tapes::fields`]) cut into its
+    /// parameter-only part and the rest ([`crate::hoist`]): what the kernels evaluate.
+    pub split: Vec<crate::hoist::Split>,
     /// `L`, `U_r` and `ψ̇` at rest after simplification, as the derive's `DerivedFormulas`.
     pub formulas: [String; 3],
     /// The formulas in LaTeX, every parameter printed as `\mathit{name}` (the model's own
@@ -435,8 +438,14 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
     let graph = &sym.graph;
     let formulas = [o.lagrangian, o.amended_potential, o.psi_dot_at_rest]
         .map(|id| routh_symbolic::to_infix(graph, id));
+    let split = tapes
+        .fields()
+        .into_iter()
+        .map(crate::hoist::split)
+        .collect::<Result<_, _>>()?;
     Ok(Compiled {
         reads,
+        split,
         tapes,
         constant_inertia,
         rank_one: rank_one.is_some(),

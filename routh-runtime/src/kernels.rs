@@ -107,7 +107,9 @@ impl Kernels {
     }
 
     /// Evaluates tape `which` (an index of [`crate::compile::index`]) at `inputs` with the
-    /// parameter values `params`, making its kernel first if it is the first evaluation.
+    /// parameter values `params` (the tape's hoisted values, [`crate::hoist::Split::main_params`];
+    /// ignored by a custom backend, whose tapes are bound), making its kernel first if it is
+    /// the first evaluation.
     #[inline]
     pub(crate) fn eval(
         &self,
@@ -124,10 +126,13 @@ impl Kernels {
 
     #[cold]
     fn make(&self, which: usize) -> Runner {
-        let fields = self.compiled.tapes.fields();
         // `which` indexes `cells`, which has one cell per tape: never the empty tape.
         static EMPTY: routh_tape::Tape = routh_tape::Tape::from_static(&[], &[], 0);
-        let tape = fields.get(which).copied().unwrap_or(&EMPTY);
+        let fields = self.compiled.tapes.fields();
+        let unbound = fields.get(which).copied().unwrap_or(&EMPTY);
+        // The JIT and the interpreter evaluate the tape without its parameter-only part
+        // (computed once per set of values: `Model::hoisted`).
+        let tape = self.compiled.split.get(which).map_or(&EMPTY, |s| &s.main);
         match &self.maker {
             #[cfg(feature = "jit")]
             Maker::Jit { optimize } => {
@@ -145,10 +150,10 @@ impl Kernels {
                 }
             }
             Maker::Interpreter => Runner::Interpreter(Interpreter::new(tape)),
-            Maker::Custom { backend, values } => match tape.bind(values) {
+            Maker::Custom { backend, values } => match unbound.bind(values) {
                 Ok(bound) => Runner::Custom(backend(&bound)),
-                // Cannot happen (the values are the tapes' own): the unbound tape, interpreted.
-                Err(_) => Runner::Interpreter(Interpreter::new(tape)),
+                // Cannot happen (the values are the tapes' own): the tape interpreted.
+                Err(_) => Runner::Interpreter(Interpreter::new(unbound)),
             },
         }
     }

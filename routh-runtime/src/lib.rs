@@ -39,6 +39,7 @@
 
 mod compile;
 mod error;
+mod hoist;
 pub mod kernel;
 mod kernels;
 mod model;

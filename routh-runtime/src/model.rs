@@ -55,6 +55,9 @@ pub struct Model {
     compiled: Arc<Compiled>,
     /// The values `Op::Param(k)` reads, `values[k]` (see [`Model::tape_parameters`]).
     values: Arc<[f64]>,
+    /// The values each tape's kernel reads: its parameter-only subexpressions at `values`
+    /// ([`crate::hoist`]), one list per tape.
+    hoisted: Arc<[Vec<f64>]>,
     /// `J₀` of `J = J₀ + c v vᵀ` at these values.
     constant_inertia: Option<Matrix3<f64>>,
     kernels: Arc<Kernels>,
@@ -142,6 +145,7 @@ impl Model {
         let compiled = Arc::new(compile(text, &params, &symmetric)?);
         let values: Arc<[f64]> = values(&compiled, &params)?.into();
         let constant_inertia = constant_inertia(&compiled, &values);
+        let hoisted = hoisted(&compiled, &values);
         let kernels = Arc::new(Kernels::new(Arc::clone(&compiled), default_maker()));
         Ok(Model {
             text: text.into(),
@@ -150,6 +154,7 @@ impl Model {
             latex,
             compiled,
             values,
+            hoisted,
             constant_inertia,
             kernels,
         })
@@ -191,6 +196,7 @@ impl Model {
             }
         };
         self.constant_inertia = constant_inertia(&self.compiled, &values);
+        self.hoisted = hoisted(&self.compiled, &values);
         if let Maker::Custom { backend, .. } = self.kernels.maker() {
             // A custom backend's kernels are made from the bound tapes: made again.
             let maker = Maker::Custom {
@@ -427,6 +433,15 @@ fn values(compiled: &Compiled, params: &[(String, Param)]) -> Result<Vec<f64>, M
         .collect()
 }
 
+/// The values each tape's kernel reads at the parameter values `values`.
+fn hoisted(compiled: &Compiled, values: &[f64]) -> Arc<[Vec<f64>]> {
+    compiled
+        .split
+        .iter()
+        .map(|s| s.main_params(values))
+        .collect()
+}
+
 /// `J₀` of `J = J₀ + c v vᵀ` at the parameter values `values` (a tape of parameters only).
 fn constant_inertia(compiled: &Compiled, values: &[f64]) -> Option<Matrix3<f64>> {
     let t = compiled.constant_inertia.as_ref()?;
@@ -457,7 +472,8 @@ impl Model {
     #[inline]
     fn eval<const N: usize>(&self, which: usize, x: [f64; INPUTS]) -> [f64; N] {
         let mut out = [0.0; N];
-        self.kernels.eval(which, &x, &self.values, &mut out);
+        let params = self.hoisted.get(which).map_or(&[][..], |v| &v[..]);
+        self.kernels.eval(which, &x, params, &mut out);
         out
     }
 
