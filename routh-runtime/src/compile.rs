@@ -173,20 +173,48 @@ pub(crate) struct Compiled {
     /// `L`, `U_r` and `ψ̇` at rest after simplification, as the derive's `DerivedFormulas`.
     pub formulas: [String; 3],
     /// The formulas in LaTeX, every parameter printed as `\mathit{name}` (the model's own
-    /// symbols are put in by [`Model::latex`](crate::Model::latex)).
-    pub latex: routh_codegen::latex::LatexText,
+    /// symbols are put in by [`Model::latex`](crate::Model::latex)): printed the first time
+    /// they are asked for ([`latex`]), as printing them costs a third of a build.
+    pub latex: std::sync::OnceLock<routh_codegen::latex::LatexText>,
 }
 
 /// The deepest nesting of brackets accepted: deeper texts are refused before they are lexed
 /// (the parsers recurse on nesting).
 const MAX_NESTING: usize = 64;
 
-/// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
+/// Reduces `text` with `params` as the struct's fields to the tapes of a model.
 pub(crate) fn compile(
     text: &str,
     params: &[(String, Param)],
     symmetric: &[String],
 ) -> Result<Compiled, ModelError> {
+    let model = analyse(text, params, symmetric)?;
+    build(&model).map_err(|e| {
+        ModelError::general(format!(
+            "internal error: the reduced model does not make a valid tape ({e})"
+        ))
+    })
+}
+
+/// The LaTeX of the formulas of the model of `text` (every parameter as `\mathit{name}`): the
+/// text analysed again (it was when the model was built, so it cannot fail; empty formulas if
+/// it did), as the analysed model cannot be kept in a `Send + Sync` `Model`.
+pub(crate) fn latex(
+    text: &str,
+    params: &[(String, Param)],
+    symmetric: &[String],
+) -> routh_codegen::latex::LatexText {
+    analyse(text, params, symmetric)
+        .map(|m| routh_codegen::latex::latex_formulas(&m, &[]))
+        .unwrap_or_default()
+}
+
+/// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
+fn analyse(
+    text: &str,
+    params: &[(String, Param)],
+    symmetric: &[String],
+) -> Result<routh_codegen::Model, ModelError> {
     check_nesting(text)?;
     let body: TokenStream = text.parse().map_err(|e: proc_macro2::LexError| {
         let s = e.span();
@@ -245,12 +273,7 @@ pub(crate) fn compile(
         struct RuntimeModel { #(#fields,)* }
     };
     let di: syn::DeriveInput = syn::parse2(tokens).map_err(|e| to_model_error(&e, text, params))?;
-    let model = routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))?;
-    build(&model).map_err(|e| {
-        ModelError::general(format!(
-            "internal error: the reduced model does not make a valid tape ({e})"
-        ))
-    })
+    routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))
 }
 
 /// Refuses texts nested deeper than [`MAX_NESTING`], at the first bracket too deep.
@@ -452,7 +475,7 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
         certification: routh_codegen::tape::certification(sym, o)?,
         routh: routh_codegen::tape::routhian(sym, o)?,
         formulas,
-        latex: routh_codegen::latex::latex_formulas(m, &[]),
+        latex: std::sync::OnceLock::new(),
     })
 }
 

@@ -44,6 +44,7 @@ pub mod kernel;
 mod kernels;
 mod model;
 mod param;
+mod results;
 mod toml_file;
 
 pub use error::ModelError;

@@ -4,9 +4,10 @@ use crate::compile::{compile, index, Compiled};
 use crate::error::ModelError;
 use crate::kernel::{Backend, INPUTS};
 use crate::kernels::{Kernels, Maker};
+use crate::results::{gyroscopic, routh_bundle, BUNDLE_LEN};
 use crate::Param;
 use nalgebra::{Matrix3, Vector3};
-use routh_codegen::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic, TermsShape};
+use routh_codegen::layout::{EquationTerms, TermsShape};
 use routh_core::{
     FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations, RouthBundle,
     Routhian,
@@ -279,7 +280,10 @@ impl Model {
                 acc.replace(from.as_str(), to)
             })
         };
-        let t = &self.compiled.latex;
+        let t = self
+            .compiled
+            .latex
+            .get_or_init(|| crate::compile::latex(&self.text, &self.params, &self.symmetric));
         routh_core::LatexFormulas {
             lagrangian: put(&t.lagrangian),
             psi_dot: put(&t.psi_dot),
@@ -499,27 +503,6 @@ fn matrix(m: [[f64; 3]; 3]) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| m[i][j])
 }
 
-fn routh_bundle(b: Bundle<f64>) -> RouthBundle {
-    RouthBundle {
-        routhian: b.routhian,
-        psi_dot: b.psi_dot,
-        dr_domega: Vector3::from(b.dr_domega),
-        dr_dgamma: Vector3::from(b.dr_dgamma),
-        dr_dp: b.dr_dp,
-        d2r_domega2: matrix(b.d2r_domega2),
-        d2r_domega_dgamma: matrix(b.d2r_domega_dgamma),
-        d2r_dgamma2: matrix(b.d2r_dgamma2),
-    }
-}
-
-fn gyroscopic(s: Gyroscopic<f64>) -> GyroscopicSystem {
-    GyroscopicSystem {
-        a: matrix(s.a),
-        g: matrix(s.g),
-        c: matrix(s.c),
-    }
-}
-
 impl Lagrangian for Model {
     fn lagrangian(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
         self.eval::<1>(index::LAGRANGIAN, inputs(omega, gamma, 0.0))[0]
@@ -607,8 +590,8 @@ impl Routhian for Model {
         m3(&self.eval::<9>(index::D2R_DGAMMA2, inputs(big_omega, gamma, p_psi)))
     }
     fn bundle(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> RouthBundle {
-        let o = self.eval::<36>(index::BUNDLE, inputs(big_omega, gamma, p_psi));
-        routh_bundle(Bundle::from_flat(o))
+        let o = self.eval::<BUNDLE_LEN>(index::BUNDLE, inputs(big_omega, gamma, p_psi));
+        routh_bundle(&o, 0)
     }
     /// One tape for the bundle and `A`, `G`, `C` of (64) formed from its nodes: the derive's
     /// fused body (`routh_codegen`'s `bundle_and_system` outputs of the same DAG).
@@ -618,9 +601,9 @@ impl Routhian for Model {
         gamma: &Vector3<f64>,
         p_psi: f64,
     ) -> (RouthBundle, GyroscopicSystem) {
-        let o = self.eval::<63>(index::BUNDLE_AND_SYSTEM, inputs(big_omega, gamma, p_psi));
-        let BundleAndSystem { bundle, system } = BundleAndSystem::from_flat(o);
-        (routh_bundle(bundle), gyroscopic(system))
+        let x = inputs(big_omega, gamma, p_psi);
+        let o = self.eval::<{ BUNDLE_LEN + 27 }>(index::BUNDLE_AND_SYSTEM, x);
+        (routh_bundle(&o, 0), gyroscopic(&o, BUNDLE_LEN))
     }
     fn amended_potential(&self, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
         let x = inputs(&Vector3::zeros(), gamma, p_psi);
@@ -628,9 +611,7 @@ impl Routhian for Model {
     }
     fn gyroscopic_system(&self, gamma: &Vector3<f64>, p_psi: f64) -> GyroscopicSystem {
         let x = inputs(&Vector3::zeros(), gamma, p_psi);
-        gyroscopic(Gyroscopic::from_flat(
-            self.eval::<27>(index::GYROSCOPIC_SYSTEM, x),
-        ))
+        gyroscopic(&self.eval::<27>(index::GYROSCOPIC_SYSTEM, x), 0)
     }
     fn reduced_equations(
         &self,
