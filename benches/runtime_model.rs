@@ -3,8 +3,11 @@
 //! (`Model::interpreted`). One `bundle`, `steady_motions` + `classify`, for the heavy (Lagrange)
 //! top, the Kelvin gyrostat and the spheroid on a plane; the bifurcation diagram of the
 //! Lagrange top; the bundle tape compiled with its parameters folded in as constants against
-//! passed by pointer; and the time to build a `Model` from text (parse, check, differentiate,
-//! reduce, tape, bind, compile) and to re-bind one parameter. Figures in docs/performance.md.
+//! passed by pointer (what a `Model` does); the time to build a `Model` from text (parse,
+//! check, differentiate, reduce, tape: nothing is compiled until a tape is first evaluated),
+//! to build it and evaluate a first `bundle` (which compiles the bundle's tape) or a first
+//! analysis, and to change one parameter (`set`, `with`: values only). Figures in
+//! docs/performance.md.
 
 use std::hint::black_box;
 
@@ -53,8 +56,14 @@ fn bench_pair<D: Routhian>(c: &mut Criterion, name: &str, derived: &D, jit: &Mod
     group.bench_function("bundle/interpreter", |b| {
         b.iter(|| black_box(interp.bundle(black_box(&w), black_box(&g), black_box(p))))
     });
-    // The bundle's tape alone, called directly: parameters folded in (what a Model does)
-    // against read from the input buffer at run time.
+    group.bench_function("bundle_and_system/derive", |b| {
+        b.iter(|| black_box(derived.bundle_and_system(black_box(&w), black_box(&g), black_box(p))))
+    });
+    group.bench_function("bundle_and_system/jit", |b| {
+        b.iter(|| black_box(jit.bundle_and_system(black_box(&w), black_box(&g), black_box(p))))
+    });
+    // The bundle's tape alone, called directly: parameters folded in as constants against read
+    // from the input buffer at run time (what a Model does).
     let tape = jit.tape("bundle").expect("bundle tape");
     let values = jit.tape_parameters().expect("parameters");
     let folded = JitFunction::compile(&tape.bind(&values).expect("bind")).expect("jit");
@@ -125,21 +134,32 @@ fn bench_runtime_model(c: &mut Criterion) {
         let text = m.lagrangian_text().to_string();
         let params: Vec<(String, routh::Param)> = m.parameters().to_vec();
         let sym: Vec<&str> = m.symmetric().iter().map(String::as_str).collect();
-        group.bench_function(name, |b| {
+        let build = || {
+            let p: Vec<(&str, routh::Param)> =
+                params.iter().map(|(n, v)| (n.as_str(), *v)).collect();
+            Model::with_symmetric(black_box(&text), &p, &sym).expect("model")
+        };
+        group.bench_function(name, |b| b.iter(|| black_box(build())));
+        let w = Vector3::new(0.3, -0.2, 0.5);
+        let g = Vector3::new(0.36, 0.48, 0.8);
+        // Build, then the first bundle: the bundle's tape compiled on the way.
+        group.bench_function(format!("{name}/first_bundle"), |b| {
             b.iter(|| {
-                let p: Vec<(&str, routh::Param)> =
-                    params.iter().map(|(n, v)| (n.as_str(), *v)).collect();
-                black_box(Model::with_symmetric(black_box(&text), &p, &sym).expect("model"))
+                let m = build();
+                black_box(m.bundle(&w, &g, 2.0))
             })
+        });
+        // Build, then steady motions and their classification: the tapes they use compiled.
+        group.bench_function(format!("{name}/first_analysis"), |b| {
+            b.iter(|| black_box(analyse(&build(), 2.0)))
         });
         let (n, v) = params[0].clone();
         group.bench_function(format!("{name}/set/jit"), |b| {
             let mut m = m.clone();
             b.iter(|| m.set(&n, black_box(v)).expect("set"))
         });
-        group.bench_function(format!("{name}/set/jit_unoptimized"), |b| {
-            let mut m = m.jit(false).expect("unoptimized JIT");
-            b.iter(|| m.set(&n, black_box(v)).expect("set"))
+        group.bench_function(format!("{name}/with/jit"), |b| {
+            b.iter(|| black_box(m.with(&n, black_box(v)).expect("with")))
         });
         group.bench_function(format!("{name}/set/interpreter"), |b| {
             let mut m = m.interpreted().expect("interpreter");

@@ -12,8 +12,11 @@ use std::fmt;
 use std::mem::ManuallyDrop;
 use std::sync::Arc;
 
-/// The signature of a compiled tape: `f(inputs, out)`.
-type RawFn = unsafe extern "C" fn(*const f64, *mut f64);
+/// The signature of a compiled tape: `f(inputs, params, out)`.
+type RawFn = unsafe extern "C" fn(*const f64, *const f64, *mut f64);
+
+/// The number of inputs before the parameters (`ω`, `γ`, `p_ψ`), read by every function.
+const INPUTS: usize = crate::compile::INPUTS;
 
 /// A finalized `JITModule`: its code and constants stay mapped until this is dropped.
 pub(crate) struct Code {
@@ -39,12 +42,13 @@ impl Code {
     }
 
     /// The entry point of function `id` of this module, compiled with the signature
-    /// `f(inputs: *const f64, out: *mut f64)`, reading `inputs` values and writing `outputs`.
+    /// `f(inputs: *const f64, params: *const f64, out: *mut f64)`, reading [`INPUTS`] values of
+    /// `inputs`, `params` values of `params` and writing `outputs` values of `out`.
     ///
     /// The caller guarantees (it is the compiler of this crate, `crate::compile`) that `id` is
     /// a function of this module, defined with that signature, that reads only
-    /// `inputs[0..inputs]` and writes only `out[0..outputs]`.
-    pub(crate) fn entry(self: &Arc<Code>, id: FuncId, inputs: usize, outputs: usize) -> Entry {
+    /// `inputs[0..INPUTS]` and `params[0..params]` and writes only `out[0..outputs]`.
+    pub(crate) fn entry(self: &Arc<Code>, id: FuncId, params: usize, outputs: usize) -> Entry {
         let ptr = self.module.get_finalized_function(id);
         // SAFETY: `ptr` is the start of the finalized (executable) code of function `id`, whose
         // signature is `RawFn` under the host's default calling convention, which is the one
@@ -54,7 +58,7 @@ impl Code {
         Entry {
             code: Arc::clone(self),
             f,
-            inputs,
+            params,
             outputs,
         }
     }
@@ -76,14 +80,14 @@ pub(crate) struct Entry {
     /// Keeps the code mapped while the entry lives.
     code: Arc<Code>,
     f: RawFn,
-    inputs: usize,
+    params: usize,
     outputs: usize,
 }
 
 impl fmt::Debug for Entry {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("Entry")
-            .field("inputs", &self.inputs)
+            .field("params", &self.params)
             .field("outputs", &self.outputs)
             .field("modules", &Arc::strong_count(&self.code))
             .finish()
@@ -91,26 +95,27 @@ impl fmt::Debug for Entry {
 }
 
 impl Entry {
-    /// Runs the function on `inputs`, writing the first [`Entry::outputs`] values of `out`, if
-    /// the buffers are at least as long as the function reads and writes; returns whether it
-    /// ran.
+    /// Runs the function on `inputs` (`[ω, γ, p_ψ]`) and `params`, writing the first
+    /// [`Entry::outputs`] values of `out`, if `params` and `out` are at least as long as the
+    /// function reads and writes; returns whether it ran.
     #[inline]
-    pub(crate) fn call(&self, inputs: &[f64], out: &mut [f64]) -> bool {
-        if inputs.len() < self.inputs || out.len() < self.outputs {
+    pub(crate) fn call(&self, inputs: &[f64; INPUTS], params: &[f64], out: &mut [f64]) -> bool {
+        if params.len() < self.params || out.len() < self.outputs {
             return false;
         }
         // SAFETY: the code is mapped while `self.code` lives (it does for this call). The
-        // function reads `inputs[0..self.inputs]` and writes `out[0..self.outputs]` only (the
-        // contract of `Code::entry`), and both slices were just checked to be at least that
-        // long; `out` is a unique borrow, so nothing else reads it while it is written. The
-        // code calls only the `extern "C"` wrappers of `crate::libcalls`, which cannot unwind.
-        unsafe { (self.f)(inputs.as_ptr(), out.as_mut_ptr()) };
+        // function reads `inputs[0..INPUTS]` (an array of that length), `params[0..self.params]`
+        // and writes `out[0..self.outputs]` only (the contract of `Code::entry`), and both
+        // slices were just checked to be at least that long; `out` is a unique borrow, so
+        // nothing else reads it while it is written. The code calls only the `extern "C"`
+        // wrappers of `crate::libcalls`, which cannot unwind.
+        unsafe { (self.f)(inputs.as_ptr(), params.as_ptr(), out.as_mut_ptr()) };
         true
     }
 
-    /// The number of input values read.
-    pub(crate) fn inputs(&self) -> usize {
-        self.inputs
+    /// The number of parameter values read.
+    pub(crate) fn params(&self) -> usize {
+        self.params
     }
 
     /// The number of outputs written.

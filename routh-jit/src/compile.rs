@@ -1,7 +1,8 @@
 //! From a tape to Cranelift IR and machine code (no `unsafe` here: the call into the code is in
 //! `crate::code`).
 //!
-//! Each tape becomes one function `f(inputs: *const f64, out: *mut f64)`: one basic block of
+//! Each tape becomes one function `f(inputs: *const f64, params: *const f64, out: *mut f64)`
+//! (`inputs` = `[ω, γ, p_ψ]`, `params` the tape's parameter values): one basic block of
 //! straight-line SSA, in the tape's children-first order (already free of common
 //! subexpressions). Operations of constants are computed here, with the very `f64` operations
 //! the interpreter of `routh-runtime` folds them with, so both hold the same constants. The
@@ -110,6 +111,7 @@ pub(crate) fn compile_all(tapes: &[&Tape], opt: OptLevel) -> Result<Vec<(Entry, 
     let mut sig = module.make_signature();
     sig.params.push(AbiParam::new(ptr));
     sig.params.push(AbiParam::new(ptr));
+    sig.params.push(AbiParam::new(ptr));
 
     let mut unary = module.make_signature();
     unary.params.push(AbiParam::new(types::F64));
@@ -144,13 +146,13 @@ pub(crate) fn compile_all(tapes: &[&Tape], opt: OptLevel) -> Result<Vec<(Entry, 
             .map_err(codegen)?;
         module.define_function(id, &mut ctx).map_err(codegen)?;
         module.clear_context(&mut ctx);
-        made.push((id, INPUTS + tape.num_params(), tape.outputs().len(), count));
+        made.push((id, tape.num_params(), tape.outputs().len(), count));
     }
     module.finalize_definitions().map_err(codegen)?;
     let code = Code::new(module);
     Ok(made
         .into_iter()
-        .map(|(id, inputs, outputs, count)| (code.entry(id, inputs, outputs), count))
+        .map(|(id, params, outputs, count)| (code.entry(id, params, outputs), count))
         .collect())
 }
 
@@ -168,9 +170,9 @@ fn body(
     b.append_block_params_for_function_params(block);
     b.switch_to_block(block);
     b.seal_block(block);
-    let (inputs, out) = match b.block_params(block) {
-        [i, o] => (*i, *o),
-        _ => return Err(codegen("the function does not take two pointers")),
+    let (inputs, params, out) = match b.block_params(block) {
+        [i, p, o] => (*i, *p, *o),
+        _ => return Err(codegen("the function does not take three pointers")),
     };
     // Reads of the caller's buffers: aligned, in bounds (checked before every call), never
     // trapping.
@@ -212,16 +214,19 @@ fn body(
             Val::Const(x) => b.ins().f64const(x),
             Val::Ssa(v) => v,
         };
+        // k < INPUTS, or k < MAX_PARAMS for a parameter: the offset fits an i32.
         let load = |b: &mut FunctionBuilder, k: usize| {
-            // k < INPUTS + MAX_PARAMS: the offset fits an i32.
             b.ins().load(types::F64, flags, inputs, (8 * k) as i32)
+        };
+        let load_param = |b: &mut FunctionBuilder, k: usize| {
+            b.ins().load(types::F64, flags, params, (8 * k) as i32)
         };
         count += 1;
         let y = match *op {
             Op::Omega(k) => load(&mut b, usize::from(k)),
             Op::Gamma(k) => load(&mut b, 3 + usize::from(k)),
             Op::PPsi => load(&mut b, 6),
-            Op::Param(k) => load(&mut b, INPUTS + k as usize),
+            Op::Param(k) => load_param(&mut b, k as usize),
             Op::Add(a, x) => {
                 let (a, x) = (v(&mut b, a), v(&mut b, x));
                 b.ins().fadd(a, x)

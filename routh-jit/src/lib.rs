@@ -2,13 +2,15 @@
 //! [`routh_tape::Tape`].
 //!
 //! [`JitFunction::compile`] turns a tape into one machine-code function
-//! `f(inputs: *const f64, out: *mut f64)`, straight-line, in the tape's children-first order
-//! (which is already free of common subexpressions), operations of constants computed at
-//! compile time. `inputs` is `[ω₀, ω₁, ω₂, γ₀, γ₁, γ₂, p_ψ]` (`Ω` for the Routh function's
-//! tapes) followed by the tape's parameter values, if it still has parameters
-//! ([`Op::Param`](routh_tape::Op::Param) `k` reads `inputs[7 + k]`); a tape whose parameters
-//! are bound ([`Tape::bind`]) has them as constants. [`JitFunction::eval`] checks the buffers'
-//! lengths before every call.
+//! `f(inputs: *const f64, params: *const f64, out: *mut f64)`, straight-line, in the tape's
+//! children-first order (which is already free of common subexpressions), operations of
+//! constants computed at compile time. `inputs` is `[ω₀, ω₁, ω₂, γ₀, γ₁, γ₂, p_ψ]` (`Ω` for the
+//! Routh function's tapes) and `params` the tape's parameter values, if it still has parameters
+//! ([`Op::Param`](routh_tape::Op::Param) `k` reads `params[k]`), so that one compiled function
+//! serves every set of parameter values ([`JitFunction::eval_params`]); [`JitFunction::eval`]
+//! takes both in one buffer, the parameters after the inputs. A tape whose parameters are bound
+//! ([`Tape::bind`]) has them as constants. Both check the buffers' lengths before every
+//! call.
 //!
 //! The functions compute what the interpreter of `routh-runtime` and [`Tape::eval`] compute,
 //! with the same IEEE operations (squares as `x·x`, `xⁿ` by the same repeated squaring as
@@ -117,21 +119,70 @@ impl JitFunction {
     /// or `out` shorter than [`JitFunction::outputs`] (nothing is written then).
     #[inline]
     pub fn eval(&self, inputs: &[f64], out: &mut [f64]) -> Result<(), JitError> {
-        if self.entry.call(inputs, out) {
+        let ran = match inputs.split_first_chunk::<INPUTS>() {
+            Some((x, params)) => self.entry.call(x, params, out),
+            None => false,
+        };
+        if ran {
             Ok(())
         } else {
-            Err(JitError::BufferLength {
-                inputs: inputs.len(),
-                outputs: out.len(),
-                want_inputs: self.entry.inputs(),
-                want_outputs: self.entry.outputs(),
-            })
+            Err(self.length_error(inputs.len(), out.len()))
+        }
+    }
+
+    /// Evaluates the outputs at `inputs = [ω, γ, p_ψ]` with the parameter values `params`
+    /// (`Op::Param(k)` reads `params[k]`) into `out`: [`JitFunction::eval`] without copying the
+    /// parameters next to the inputs, so that one compiled function serves every set of
+    /// parameter values.
+    ///
+    /// ```
+    /// use routh_jit::JitFunction;
+    /// use routh_tape::{Op, Output, Tape};
+    /// // k · γ₀
+    /// let tape = Tape::new(vec![Op::Param(0), Op::Gamma(0), Op::Mul(0, 1)],
+    ///     vec![Output { name: "f", slot: 2 }], 1)?;
+    /// let f = JitFunction::compile(&tape)?;
+    /// let (x, mut out) = ([0.0, 0.0, 0.0, 1.5, 0.0, 0.0, 0.0], [0.0]);
+    /// f.eval_params(&x, &[2.0], &mut out)?;
+    /// assert_eq!(out[0], 3.0);
+    /// f.eval_params(&x, &[4.0], &mut out)?;
+    /// assert_eq!(out[0], 6.0);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// Errors: [`JitError::BufferLength`] if `params` is shorter than [`JitFunction::params`]
+    /// or `out` shorter than [`JitFunction::outputs`] (nothing is written then).
+    #[inline]
+    pub fn eval_params(
+        &self,
+        inputs: &[f64; INPUTS],
+        params: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), JitError> {
+        if self.entry.call(inputs, params, out) {
+            Ok(())
+        } else {
+            Err(self.length_error(INPUTS + params.len(), out.len()))
+        }
+    }
+
+    fn length_error(&self, inputs: usize, outputs: usize) -> JitError {
+        JitError::BufferLength {
+            inputs,
+            outputs,
+            want_inputs: self.inputs(),
+            want_outputs: self.entry.outputs(),
         }
     }
 
     /// The number of input values read: [`INPUTS`] plus the tape's parameters.
     pub fn inputs(&self) -> usize {
-        self.entry.inputs()
+        INPUTS + self.entry.params()
+    }
+
+    /// The number of parameter values read (the tape's [`Tape::num_params`]).
+    pub fn params(&self) -> usize {
+        self.entry.params()
     }
 
     /// The number of outputs written.

@@ -10,7 +10,7 @@ use crate::error::ModelError;
 use crate::Param;
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
-use routh_codegen::layout::{Bundle, EquationTerms, Gyroscopic};
+use routh_codegen::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic};
 use routh_codegen::lower::Access;
 use routh_symbolic::Id;
 use routh_tape::Tape;
@@ -69,10 +69,11 @@ pub(crate) struct Tapes<T> {
     pub bundle: T,
     pub gyroscopic_system: T,
     pub reduced_equations: T,
+    pub bundle_and_system: T,
 }
 
 /// The methods of the tapes, in the order of [`Tapes::fields`].
-pub(crate) const TAPE_NAMES: [&str; 20] = [
+pub(crate) const TAPE_NAMES: [&str; TAPES] = [
     "lagrangian",
     "dl_domega",
     "dl_dgamma",
@@ -93,11 +94,40 @@ pub(crate) const TAPE_NAMES: [&str; 20] = [
     "bundle",
     "gyroscopic_system",
     "reduced_equations",
+    "bundle_and_system",
 ];
 
+/// The number of tapes of a model (one per generated method).
+pub(crate) const TAPES: usize = 21;
+
+/// The position of each tape in [`Tapes::fields`] and [`TAPE_NAMES`].
+pub(crate) mod index {
+    pub const LAGRANGIAN: usize = 0;
+    pub const DL_DOMEGA: usize = 1;
+    pub const DL_DGAMMA: usize = 2;
+    pub const D2L_DOMEGA2: usize = 3;
+    pub const D2L_DOMEGA_DGAMMA: usize = 4;
+    pub const ENERGY: usize = 5;
+    pub const CYCLIC_MOMENTUM: usize = 6;
+    pub const FULL_EQUATIONS: usize = 7;
+    pub const PSI_DOT: usize = 8;
+    pub const ROUTHIAN: usize = 9;
+    pub const DR_DOMEGA: usize = 10;
+    pub const DR_DGAMMA: usize = 11;
+    pub const DR_DP: usize = 12;
+    pub const D2R_DOMEGA2: usize = 13;
+    pub const D2R_DOMEGA_DGAMMA: usize = 14;
+    pub const D2R_DGAMMA2: usize = 15;
+    pub const AMENDED_POTENTIAL: usize = 16;
+    pub const BUNDLE: usize = 17;
+    pub const GYROSCOPIC_SYSTEM: usize = 18;
+    pub const REDUCED_EQUATIONS: usize = 19;
+    pub const BUNDLE_AND_SYSTEM: usize = 20;
+}
+
 impl<T> Tapes<T> {
-    /// Every tape, in the order [`Tapes::try_map`] visits them (named by [`TAPE_NAMES`]).
-    pub fn fields(&self) -> [&T; 20] {
+    /// Every tape, in the order of [`TAPE_NAMES`] (indices in [`index`]).
+    pub fn fields(&self) -> [&T; TAPES] {
         [
             &self.lagrangian,
             &self.dl_domega,
@@ -119,33 +149,8 @@ impl<T> Tapes<T> {
             &self.bundle,
             &self.gyroscopic_system,
             &self.reduced_equations,
+            &self.bundle_and_system,
         ]
-    }
-
-    /// Applies `f` to every tape, stopping at the first error.
-    pub fn try_map<U, E>(&self, mut f: impl FnMut(&T) -> Result<U, E>) -> Result<Tapes<U>, E> {
-        Ok(Tapes {
-            lagrangian: f(&self.lagrangian)?,
-            dl_domega: f(&self.dl_domega)?,
-            dl_dgamma: f(&self.dl_dgamma)?,
-            d2l_domega2: f(&self.d2l_domega2)?,
-            d2l_domega_dgamma: f(&self.d2l_domega_dgamma)?,
-            energy: f(&self.energy)?,
-            cyclic_momentum: f(&self.cyclic_momentum)?,
-            full_equations: f(&self.full_equations)?,
-            psi_dot: f(&self.psi_dot)?,
-            routhian: f(&self.routhian)?,
-            dr_domega: f(&self.dr_domega)?,
-            dr_dgamma: f(&self.dr_dgamma)?,
-            dr_dp: f(&self.dr_dp)?,
-            d2r_domega2: f(&self.d2r_domega2)?,
-            d2r_domega_dgamma: f(&self.d2r_domega_dgamma)?,
-            d2r_dgamma2: f(&self.d2r_dgamma2)?,
-            amended_potential: f(&self.amended_potential)?,
-            bundle: f(&self.bundle)?,
-            gyroscopic_system: f(&self.gyroscopic_system)?,
-            reduced_equations: f(&self.reduced_equations)?,
-        })
     }
 }
 
@@ -162,23 +167,54 @@ pub(crate) struct Compiled {
     pub rank_one: bool,
     pub certification: Tape,
     pub routh: Tape,
+    /// Each tape of [`Compiled::tapes`] (in the order of [`Tapes::fields`]) cut into its
+    /// parameter-only part and the rest ([`crate::hoist`]): what the kernels evaluate.
+    pub split: Vec<crate::hoist::Split>,
     /// `L`, `U_r` and `ψ̇` at rest after simplification, as the derive's `DerivedFormulas`.
     pub formulas: [String; 3],
     /// The formulas in LaTeX, every parameter printed as `\mathit{name}` (the model's own
-    /// symbols are put in by [`Model::latex`](crate::Model::latex)).
-    pub latex: routh_codegen::latex::LatexText,
+    /// symbols are put in by [`Model::latex`](crate::Model::latex)): printed the first time
+    /// they are asked for ([`latex`]), as printing them costs a third of a build.
+    pub latex: std::sync::OnceLock<routh_codegen::latex::LatexText>,
 }
 
 /// The deepest nesting of brackets accepted: deeper texts are refused before they are lexed
 /// (the parsers recurse on nesting).
 const MAX_NESTING: usize = 64;
 
-/// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
+/// Reduces `text` with `params` as the struct's fields to the tapes of a model.
 pub(crate) fn compile(
     text: &str,
     params: &[(String, Param)],
     symmetric: &[String],
 ) -> Result<Compiled, ModelError> {
+    let model = analyse(text, params, symmetric)?;
+    build(&model).map_err(|e| {
+        ModelError::general(format!(
+            "internal error: the reduced model does not make a valid tape ({e})"
+        ))
+    })
+}
+
+/// The LaTeX of the formulas of the model of `text` (every parameter as `\mathit{name}`): the
+/// text analysed again (it was when the model was built, so it cannot fail; empty formulas if
+/// it did), as the analysed model cannot be kept in a `Send + Sync` `Model`.
+pub(crate) fn latex(
+    text: &str,
+    params: &[(String, Param)],
+    symmetric: &[String],
+) -> routh_codegen::latex::LatexText {
+    analyse(text, params, symmetric)
+        .map(|m| routh_codegen::latex::latex_formulas(&m, &[]))
+        .unwrap_or_default()
+}
+
+/// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
+fn analyse(
+    text: &str,
+    params: &[(String, Param)],
+    symmetric: &[String],
+) -> Result<routh_codegen::Model, ModelError> {
     check_nesting(text)?;
     let body: TokenStream = text.parse().map_err(|e: proc_macro2::LexError| {
         let s = e.span();
@@ -237,12 +273,7 @@ pub(crate) fn compile(
         struct RuntimeModel { #(#fields,)* }
     };
     let di: syn::DeriveInput = syn::parse2(tokens).map_err(|e| to_model_error(&e, text, params))?;
-    let model = routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))?;
-    build(&model).map_err(|e| {
-        ModelError::general(format!(
-            "internal error: the reduced model does not make a valid tape ({e})"
-        ))
-    })
+    routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))
 }
 
 /// Refuses texts nested deeper than [`MAX_NESTING`], at the first bracket too deep.
@@ -406,6 +437,18 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
                 terms(eq.reduced, Some(o.psi_dot)).flatten(),
             ),
         )?,
+        // The derive's fused body: A, G, C of (64) formed from the bundle's own nodes.
+        bundle_and_system: tape(
+            sym,
+            &zip(
+                BundleAndSystem {
+                    bundle: bundle_names,
+                    system: gyro_names,
+                }
+                .flatten(),
+                o.bundle_and_system().flatten(),
+            ),
+        )?,
     };
     let constant_inertia = rank_one
         .map(|r| nine(m33!("constant_inertia"), r.constant))
@@ -418,14 +461,73 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
     let graph = &sym.graph;
     let formulas = [o.lagrangian, o.amended_potential, o.psi_dot_at_rest]
         .map(|id| routh_symbolic::to_infix(graph, id));
+    let split = tapes
+        .fields()
+        .into_iter()
+        .map(crate::hoist::split)
+        .collect::<Result<_, _>>()?;
     Ok(Compiled {
         reads,
+        split,
         tapes,
         constant_inertia,
         rank_one: rank_one.is_some(),
         certification: routh_codegen::tape::certification(sym, o)?,
         routh: routh_codegen::tape::routhian(sym, o)?,
         formulas,
-        latex: routh_codegen::latex::latex_formulas(m, &[]),
+        latex: std::sync::OnceLock::new(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The indices name the tapes they index, in [`TAPE_NAMES`].
+    #[test]
+    fn indices_name_their_tapes() {
+        let pairs = [
+            (index::LAGRANGIAN, "lagrangian"),
+            (index::DL_DOMEGA, "dl_domega"),
+            (index::DL_DGAMMA, "dl_dgamma"),
+            (index::D2L_DOMEGA2, "d2l_domega2"),
+            (index::D2L_DOMEGA_DGAMMA, "d2l_domega_dgamma"),
+            (index::ENERGY, "energy"),
+            (index::CYCLIC_MOMENTUM, "cyclic_momentum"),
+            (index::FULL_EQUATIONS, "full_equations"),
+            (index::PSI_DOT, "psi_dot"),
+            (index::ROUTHIAN, "routhian"),
+            (index::DR_DOMEGA, "dr_domega"),
+            (index::DR_DGAMMA, "dr_dgamma"),
+            (index::DR_DP, "dr_dp"),
+            (index::D2R_DOMEGA2, "d2r_domega2"),
+            (index::D2R_DOMEGA_DGAMMA, "d2r_domega_dgamma"),
+            (index::D2R_DGAMMA2, "d2r_dgamma2"),
+            (index::AMENDED_POTENTIAL, "amended_potential"),
+            (index::BUNDLE, "bundle"),
+            (index::GYROSCOPIC_SYSTEM, "gyroscopic_system"),
+            (index::REDUCED_EQUATIONS, "reduced_equations"),
+            (index::BUNDLE_AND_SYSTEM, "bundle_and_system"),
+        ];
+        assert_eq!(pairs.len(), TAPES);
+        for (k, name) in pairs {
+            assert_eq!(TAPE_NAMES[k], name);
+        }
+        // And the tapes' own output names agree: compile a model and look.
+        let c = compile(
+            "kinetic = 0.5 * omega.dot(omega), potential = gamma.z",
+            &[],
+            &[],
+        )
+        .expect("a model");
+        let f = c.tapes.fields();
+        assert_eq!(f[index::BUNDLE].outputs()[0].name, "routhian");
+        assert_eq!(f[index::GYROSCOPIC_SYSTEM].outputs()[0].name, "a[0][0]");
+        assert_eq!(f[index::BUNDLE_AND_SYSTEM].outputs().len(), 63);
+        assert_eq!(
+            f[index::AMENDED_POTENTIAL].outputs()[0].name,
+            "amended_potential"
+        );
+        assert_eq!(f[index::DR_DP].outputs()[0].name, "dr_dp");
+    }
 }

@@ -1,18 +1,21 @@
 //! Evaluation of a model's tapes behind one small interface, [`Kernel`]: compiled to native code
 //! by Cranelift ([`Jit`], feature `jit`, the default) or interpreted ([`Interpreter`]).
 //!
-//! With the feature `jit` a [`Model`](crate::Model) compiles all its tapes at once into one
-//! block of machine code ([`routh_jit`]); the code computes with the same IEEE operations as
-//! the interpreter, so the two give the same bits. Without the feature, or on a host Cranelift
-//! does not support, the interpreter evaluates them.
+//! A [`Model`](crate::Model) keeps its tapes unbound: `Op::Param(k)` reads the `k`-th value of
+//! a parameter slice passed with the inputs ([`Kernel::eval_params`]), so a tape is compiled
+//! once, the first time it is evaluated, and serves every set of parameter values
+//! (`Model::set` and `Model::with` change values only). The JIT's code computes with the same
+//! IEEE operations as the interpreter, so the two give the same bits. Without the feature, or on
+//! a host Cranelift does not support, the interpreter evaluates the tapes.
 //!
-//! The interpreter ([`Interpreter`]) is register based: the tape, its parameters already folded
-//! into constants ([`routh_tape::Tape::bind`]), is folded once more (every operation of
-//! constants is computed when the kernel is built, as the derive's code would compute it at
-//! run time, with the same `f64` operations) and laid out as a register file
-//! `[inputs | constants | results]` and a list of instructions, each writing the next result
-//! register. An evaluation copies the inputs and constants in and runs the instructions; its
-//! working storage is per thread and reused, so an evaluation does not allocate.
+//! The interpreter ([`Interpreter`]) is register based: the tape is folded (every operation of
+//! constants is computed when the kernel is built, as the derive's code would compute it at run
+//! time, with the same `f64` operations; operations of parameters are not, their values being
+//! known only at evaluation) and laid out as a register file
+//! `[inputs | parameters | constants | results]` and a list of instructions, each writing the
+//! next result register. An evaluation copies the inputs, parameters and constants in and runs
+//! the instructions; its working storage is per thread and reused, so an evaluation does not
+//! allocate.
 
 use routh_tape::{Func, Op, Tape};
 use std::cell::RefCell;
@@ -26,9 +29,17 @@ pub const INPUTS: usize = 7;
 pub trait Kernel: Send + Sync + fmt::Debug {
     /// Evaluates the outputs at `inputs = [ω₀, ω₁, ω₂, γ₀, γ₁, γ₂, p_ψ]` (`Ω` for the Routh
     /// function's tapes) into `out` (output `k` to `out[k]`; `out` holds [`Kernel::outputs`]).
+    /// A parameter the tape still reads is NaN.
     fn eval(&self, inputs: &[f64; INPUTS], out: &mut [f64]);
     /// The number of outputs.
     fn outputs(&self) -> usize;
+    /// [`Kernel::eval`] with the tape's parameter values: `Op::Param(k)` reads `params[k]`
+    /// (NaN past its end). The default ignores `params`: the kernel of a tape whose parameters
+    /// are bound (folded in as constants), as a [`Backend`] receives them.
+    fn eval_params(&self, inputs: &[f64; INPUTS], params: &[f64], out: &mut [f64]) {
+        let _ = params;
+        self.eval(inputs, out);
+    }
 }
 
 /// Builds the kernel of a tape without parameters (all folded into constants): the
@@ -49,39 +60,15 @@ pub fn jit_supported() -> bool {
     return false;
 }
 
-/// The JIT's [`Backend`]: `tape` compiled to native code on its own, or the interpreter if it
-/// cannot be (a host Cranelift does not support, or a tape that still has parameters).
-/// A [`Model`](crate::Model) compiles its tapes together instead (one block of code), which
-/// builds faster.
+/// The JIT's [`Backend`]: `tape` compiled to native code on its own (its parameters, if it
+/// still has some, read from [`Kernel::eval_params`]'s slice), or the interpreter if it cannot
+/// be (a host Cranelift does not support, or Cranelift failed).
 #[cfg(feature = "jit")]
 pub fn jit(tape: &Tape) -> Arc<dyn Kernel> {
-    if tape.num_params() > 0 {
-        return interpret(tape);
-    }
     match routh_jit::JitFunction::compile(tape) {
         Ok(f) => Arc::new(Jit(f)),
         Err(_) => interpret(tape),
     }
-}
-
-/// Compiles every tape (none with parameters) into one block of native code; `None` if the JIT
-/// cannot (the host is not supported, or Cranelift failed), for the caller to interpret them.
-#[cfg(feature = "jit")]
-pub(crate) fn jit_all(tapes: &[&Tape], optimize: bool) -> Option<Vec<Arc<dyn Kernel>>> {
-    if tapes.iter().any(|t| t.num_params() > 0) {
-        return None;
-    }
-    let level = if optimize {
-        routh_jit::OptLevel::Speed
-    } else {
-        routh_jit::OptLevel::None
-    };
-    let fns = routh_jit::JitFunction::compile_all_with(tapes, level).ok()?;
-    Some(
-        fns.into_iter()
-            .map(|f| Arc::new(Jit(f)) as Arc<dyn Kernel>)
-            .collect(),
-    )
 }
 
 /// One tape compiled to native code by Cranelift ([`routh_jit::JitFunction`]).
@@ -90,22 +77,44 @@ pub(crate) fn jit_all(tapes: &[&Tape], optimize: bool) -> Option<Vec<Arc<dyn Ker
 pub struct Jit(pub routh_jit::JitFunction);
 
 #[cfg(feature = "jit")]
+impl Jit {
+    /// [`Kernel::eval_params`], inlined: the call into the code when the buffers are long
+    /// enough (the hot path of a `Model`), else through buffers of the right length.
+    #[inline]
+    pub fn run(&self, inputs: &[f64; INPUTS], params: &[f64], out: &mut [f64]) {
+        if self.0.eval_params(inputs, params, out).is_err() {
+            self.run_padded(inputs, params, out);
+        }
+    }
+
+    /// Missing parameters as NaN, and only the first outputs written to a short `out`.
+    #[cold]
+    fn run_padded(&self, inputs: &[f64; INPUTS], params: &[f64], out: &mut [f64]) {
+        let mut p = params.to_vec();
+        p.resize(p.len().max(self.0.params()), f64::NAN);
+        let mut all = vec![0.0; self.0.outputs().max(out.len())];
+        if self.0.eval_params(inputs, &p, &mut all).is_ok() {
+            for (o, x) in out.iter_mut().zip(all) {
+                *o = x;
+            }
+        }
+    }
+}
+
+#[cfg(feature = "jit")]
 impl Kernel for Jit {
     #[inline]
     fn eval(&self, inputs: &[f64; INPUTS], out: &mut [f64]) {
-        if self.0.eval(inputs, out).is_err() {
-            // `out` is shorter than the outputs: the first ones, through a buffer.
-            let mut all = vec![0.0; self.0.outputs()];
-            if self.0.eval(inputs, &mut all).is_ok() {
-                for (o, x) in out.iter_mut().zip(all) {
-                    *o = x;
-                }
-            }
-        }
+        self.run(inputs, &[], out);
     }
 
     fn outputs(&self) -> usize {
         self.0.outputs()
+    }
+
+    #[inline]
+    fn eval_params(&self, inputs: &[f64; INPUTS], params: &[f64], out: &mut [f64]) {
+        self.run(inputs, params, out);
     }
 }
 
@@ -125,9 +134,11 @@ enum Ins {
 /// The register-based interpreter of one tape (see the module documentation).
 #[derive(Clone, Debug)]
 pub struct Interpreter {
-    /// The constants, registers `INPUTS..INPUTS + consts.len()`.
+    /// The number of parameters, registers `INPUTS..INPUTS + params`.
+    params: usize,
+    /// The constants, the registers after the parameters.
     consts: Vec<f64>,
-    /// The instructions, writing registers `INPUTS + consts.len()` onwards.
+    /// The instructions, writing the registers after the constants.
     code: Vec<Ins>,
     /// The register of each output.
     outputs: Vec<u32>,
@@ -138,8 +149,10 @@ thread_local! {
 }
 
 impl Interpreter {
-    /// The interpreter of `tape`. A parameter still in the tape ([`Op::Param`]) reads NaN.
+    /// The interpreter of `tape`; its parameters ([`Op::Param`]) are read from the slice given
+    /// to [`Kernel::eval_params`] (NaN for [`Kernel::eval`]).
     pub fn new(tape: &Tape) -> Interpreter {
+        let params = tape.num_params();
         // Where each slot of the tape lives: an input, a constant, or a result.
         #[derive(Copy, Clone)]
         enum Loc {
@@ -155,13 +168,11 @@ impl Interpreter {
                 _ => None,
             };
             // Fold operations of constants by the tape's one rule (the JIT folds the same way);
-            // a parameter still in the tape reads NaN.
-            let folded = match *op {
-                Op::Param(_) => Some(f64::NAN),
-                _ => op.fold(c),
-            };
+            // a parameter is a register, known at evaluation only.
+            let folded = op.fold(c);
             let l = match (folded, *op) {
                 (Some(x), _) => Loc::Const(x),
+                (None, Op::Param(k)) => Loc::Input((INPUTS + k as usize) as u32),
                 (None, Op::Omega(k)) => Loc::Input(u32::from(k)),
                 (None, Op::Gamma(k)) => Loc::Input(3 + u32::from(k)),
                 (None, Op::PPsi) => Loc::Input(6),
@@ -190,7 +201,7 @@ impl Interpreter {
         let mut reg_of_const = |x: f64, consts: &mut Vec<f64>| -> u32 {
             *const_reg.entry(x.to_bits()).or_insert_with(|| {
                 consts.push(x);
-                (INPUTS + consts.len() - 1) as u32
+                (INPUTS + params + consts.len() - 1) as u32
             })
         };
         let mut reg = vec![0u32; loc.len()];
@@ -201,7 +212,7 @@ impl Interpreter {
                 Loc::Result(_) => 0,
             };
         }
-        let base = INPUTS + consts.len();
+        let base = INPUTS + params + consts.len();
         for (s, l) in loc.iter().enumerate() {
             if let Loc::Result(k) = *l {
                 reg[s] = (base + k) as u32;
@@ -223,6 +234,7 @@ impl Interpreter {
             .collect();
         let outputs = tape.outputs().iter().map(|o| r(o.slot)).collect();
         Interpreter {
+            params,
             consts,
             code,
             outputs,
@@ -234,10 +246,13 @@ impl Interpreter {
         self.code.len()
     }
 
-    fn run(&self, regs: &mut Vec<f64>, inputs: &[f64; INPUTS], out: &mut [f64]) {
-        let base = INPUTS + self.consts.len();
+    fn run(&self, regs: &mut Vec<f64>, inputs: &[f64; INPUTS], params: &[f64], out: &mut [f64]) {
+        let base = INPUTS + self.params + self.consts.len();
         regs.clear();
         regs.extend_from_slice(inputs);
+        let given = params.len().min(self.params);
+        regs.extend_from_slice(&params[..given]);
+        regs.resize(INPUTS + self.params, f64::NAN);
         regs.extend_from_slice(&self.consts);
         regs.reserve(self.code.len());
         for ins in &self.code {
@@ -263,15 +278,19 @@ impl Interpreter {
 
 impl Kernel for Interpreter {
     fn eval(&self, inputs: &[f64; INPUTS], out: &mut [f64]) {
-        REGISTERS.with(|cell| match cell.try_borrow_mut() {
-            Ok(mut regs) => self.run(&mut regs, inputs, out),
-            // Re-entered on this thread (cannot happen: `run` calls nothing back): own storage.
-            Err(_) => self.run(&mut Vec::new(), inputs, out),
-        });
+        self.eval_params(inputs, &[], out);
     }
 
     fn outputs(&self) -> usize {
         self.outputs.len()
+    }
+
+    fn eval_params(&self, inputs: &[f64; INPUTS], params: &[f64], out: &mut [f64]) {
+        REGISTERS.with(|cell| match cell.try_borrow_mut() {
+            Ok(mut regs) => self.run(&mut regs, inputs, params, out),
+            // Re-entered on this thread (cannot happen: `run` calls nothing back): own storage.
+            Err(_) => self.run(&mut Vec::new(), inputs, params, out),
+        });
     }
 }
 

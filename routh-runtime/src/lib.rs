@@ -6,9 +6,9 @@
 //! ([`Model::from_toml`], [`Model::from_file`]; docs/models.md). The text goes through the
 //! derive's own parser, checks, lowering and reduction, so the errors are the derive's, with
 //! their line and column ([`ModelError`]), and the expressions are the ones the derive would
-//! generate code for. They are evaluated as tapes ([`routh_tape::Tape`]), with the parameter
-//! values folded in, compiled to native code by Cranelift (feature `jit`, the default) or by a
-//! register-based interpreter ([`kernel`], [`Model::evaluation`]); a `Model` implements
+//! generate code for. They are evaluated as tapes ([`routh_tape::Tape`]) that read the parameter
+//! values at run time, each compiled to native code by Cranelift the first time it is used
+//! (feature `jit`, the default) or evaluated by a register-based interpreter ([`kernel`], [`Model::evaluation`]); a `Model` implements
 //! [`Lagrangian`](routh_core::Lagrangian) and [`Routhian`](routh_core::Routhian), so every
 //! analysis of `routh` takes it unchanged.
 //!
@@ -39,9 +39,12 @@
 
 mod compile;
 mod error;
+mod hoist;
 pub mod kernel;
+mod kernels;
 mod model;
 mod param;
+mod results;
 mod toml_file;
 
 pub use error::ModelError;

@@ -1,11 +1,13 @@
 //! [`Model`]: a model read at run time, and its implementations of the model traits.
 
-use crate::compile::{compile, Compiled, Tapes};
+use crate::compile::{compile, index, Compiled};
 use crate::error::ModelError;
-use crate::kernel::{interpret, Backend, Kernel, INPUTS};
+use crate::kernel::{Backend, INPUTS};
+use crate::kernels::{Kernels, Maker};
+use crate::results::{gyroscopic, routh_bundle, BUNDLE_LEN};
 use crate::Param;
 use nalgebra::{Matrix3, Vector3};
-use routh_codegen::layout::{Bundle, EquationTerms, Gyroscopic, TermsShape};
+use routh_codegen::layout::{EquationTerms, TermsShape};
 use routh_core::{
     FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations, RouthBundle,
     Routhian,
@@ -20,8 +22,10 @@ use std::sync::Arc;
 ///
 /// The text is parsed, checked, differentiated and reduced by the derive's own code (the same
 /// expression DAG, simplifications and error messages), and each method of [`Lagrangian`] and
-/// [`Routhian`] evaluates a tape of that DAG with the parameter values folded in, so every
-/// analysis takes a `Model` as it takes a derived struct.
+/// [`Routhian`] evaluates a tape of that DAG, so every analysis takes a `Model` as it takes a
+/// derived struct. The tapes read the parameter values from the model's list of values: a tape
+/// is compiled (feature `jit`) the first time it is evaluated, once, and [`Model::set`] and
+/// [`Model::with`] change values only (a copy made by `with` shares the compiled code).
 ///
 /// ```
 /// use routh_runtime::Model;
@@ -38,7 +42,7 @@ use std::sync::Arc;
 /// assert!((top.amended_potential(&gamma, p) - (p * p / 2.5 + 1.0)).abs() < 1e-14);
 /// let motions = steady_motions(&top, p)?;
 /// assert!(!motions.is_empty());
-/// // Parameters can be changed (the tapes are re-bound, not re-derived).
+/// // Parameters can be changed (the values only: nothing is re-derived or recompiled).
 /// let heavier = top.with("mgl", 2.0)?;
 /// assert!((heavier.amended_potential(&gamma, p) - (p * p / 2.5 + 2.0)).abs() < 1e-14);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -50,8 +54,14 @@ pub struct Model {
     symmetric: Vec<String>,
     latex: BTreeMap<String, String>,
     compiled: Arc<Compiled>,
-    choice: Choice,
-    bound: Arc<Bound>,
+    /// The values `Op::Param(k)` reads, `values[k]` (see [`Model::tape_parameters`]).
+    values: Arc<[f64]>,
+    /// The values each tape's kernel reads: its parameter-only subexpressions at `values`
+    /// ([`crate::hoist`]), one list per tape.
+    hoisted: Arc<[Vec<f64>]>,
+    /// `J₀` of `J = J₀ + c v vᵀ` at these values.
+    constant_inertia: Option<Matrix3<f64>>,
+    kernels: Arc<Kernels>,
 }
 
 /// How a [`Model`] evaluates its tapes ([`Model::evaluation`]).
@@ -65,35 +75,13 @@ pub enum Evaluation {
     Custom,
 }
 
-/// The evaluation asked for.
-#[derive(Copy, Clone)]
-enum Choice {
-    /// The JIT where it is available (optimizing or not), else the interpreter.
-    Jit {
-        optimize: bool,
-    },
-    Interpreter,
-    Backend(Backend),
-}
-
-impl Choice {
-    /// What a model does unless told otherwise.
-    const DEFAULT: Choice = Choice::Jit {
-        optimize: DEFAULT_OPTIMIZE,
-    };
-}
-
-/// Whether the JIT optimizes by default (see `docs/performance.md`: optimized code is faster to
-/// run and far slower to compile).
-const DEFAULT_OPTIMIZE: bool = true;
-
-/// A model's tapes with its parameter values bound, ready to evaluate.
-struct Bound {
-    kernels: Tapes<Arc<dyn Kernel>>,
-    evaluation: Evaluation,
-    constant_inertia: Option<Matrix3<f64>>,
-    certification: Option<CertificationTape>,
-    routh: Option<RouthianTape>,
+/// The JIT where it is available, optimizing (see `docs/performance.md`: optimized code is
+/// faster to run and slower to compile; a model compiles a tape only when it is first used).
+fn default_maker() -> Maker {
+    #[cfg(feature = "jit")]
+    return Maker::Jit { optimize: true };
+    #[cfg(not(feature = "jit"))]
+    return Maker::Interpreter;
 }
 
 impl fmt::Debug for Model {
@@ -156,21 +144,26 @@ impl Model {
             }
         }
         let compiled = Arc::new(compile(text, &params, &symmetric)?);
-        let choice = Choice::DEFAULT;
-        let bound = Arc::new(bind(&compiled, &params, choice)?);
+        let values: Arc<[f64]> = values(&compiled, &params)?.into();
+        let constant_inertia = constant_inertia(&compiled, &values);
+        let hoisted = hoisted(&compiled, &values);
+        let kernels = Arc::new(Kernels::new(Arc::clone(&compiled), default_maker()));
         Ok(Model {
             text: text.into(),
             params,
             symmetric,
             latex,
             compiled,
-            choice,
-            bound,
+            values,
+            hoisted,
+            constant_inertia,
+            kernels,
         })
     }
 
-    /// Sets parameter `name` to `value` (of the shape it has) and re-binds the tapes: no
-    /// re-derivation, the reduced expressions do not depend on the values.
+    /// Sets parameter `name` to `value` (of the shape it has): the values the tapes read change,
+    /// nothing else (no re-derivation, no recompilation: the reduced expressions and their
+    /// compiled code do not depend on the values).
     pub fn set(&mut self, name: &str, value: impl Into<Param>) -> Result<(), ModelError> {
         let value = value.into();
         let Some(slot) = self.params.iter_mut().find(|(n, _)| n == name) else {
@@ -191,12 +184,34 @@ impl Model {
                 value.shape_name()
             )));
         }
+        let old = slot.1;
         slot.1 = value;
-        self.bound = Arc::new(bind(&self.compiled, &self.params, self.choice)?);
+        let values: Arc<[f64]> = match values(&self.compiled, &self.params) {
+            Ok(v) => v.into(),
+            Err(e) => {
+                // Cannot happen (every parameter the tapes read has a value): left unchanged.
+                if let Some(slot) = self.params.iter_mut().find(|(n, _)| n == name) {
+                    slot.1 = old;
+                }
+                return Err(e);
+            }
+        };
+        self.constant_inertia = constant_inertia(&self.compiled, &values);
+        self.hoisted = hoisted(&self.compiled, &values);
+        if let Maker::Custom { backend, .. } = self.kernels.maker() {
+            // A custom backend's kernels are made from the bound tapes: made again.
+            let maker = Maker::Custom {
+                backend: *backend,
+                values: Arc::clone(&values),
+            };
+            self.kernels = Arc::new(Kernels::new(Arc::clone(&self.compiled), maker));
+        }
+        self.values = values;
         Ok(())
     }
 
-    /// A copy with parameter `name` set to `value` (see [`Model::set`]).
+    /// A copy with parameter `name` set to `value` (see [`Model::set`]); it shares the
+    /// compiled code of the tapes with `self`.
     pub fn with(&self, name: &str, value: impl Into<Param>) -> Result<Model, ModelError> {
         let mut m = self.clone();
         m.set(name, value)?;
@@ -265,7 +280,10 @@ impl Model {
                 acc.replace(from.as_str(), to)
             })
         };
-        let t = &self.compiled.latex;
+        let t = self
+            .compiled
+            .latex
+            .get_or_init(|| crate::compile::latex(&self.text, &self.params, &self.symmetric));
         routh_core::LatexFormulas {
             lagrangian: put(&t.lagrangian),
             psi_dot: put(&t.psi_dot),
@@ -288,8 +306,14 @@ impl Model {
     /// [`crate::kernel::interpret`], or [`crate::kernel::jit`] to compile each tape on its
     /// own); the default compiles all the tapes together to native code (feature `jit`), or
     /// interprets them.
+    ///
+    /// The backend receives each tape with the parameter values bound (folded in as
+    /// constants), the first time the tape is evaluated, and again after [`Model::set`].
     pub fn with_backend(&self, backend: Backend) -> Result<Model, ModelError> {
-        self.with_choice(Choice::Backend(backend))
+        Ok(self.with_maker(Maker::Custom {
+            backend,
+            values: Arc::clone(&self.values),
+        }))
     }
 
     /// A copy that interprets its tapes ([`crate::kernel::Interpreter`]) instead of compiling
@@ -307,7 +331,7 @@ impl Model {
     /// # Ok::<(), routh_runtime::ModelError>(())
     /// ```
     pub fn interpreted(&self) -> Result<Model, ModelError> {
-        self.with_choice(Choice::Interpreter)
+        Ok(self.with_maker(Maker::Interpreter))
     }
 
     /// How the tapes are evaluated: [`Evaluation::Jit`] by default where the feature `jit` is
@@ -322,7 +346,29 @@ impl Model {
     /// # Ok::<(), routh_runtime::ModelError>(())
     /// ```
     pub fn evaluation(&self) -> Evaluation {
-        self.bound.evaluation
+        self.kernels.evaluation()
+    }
+
+    /// How many of the model's tapes have been compiled (or prepared for the interpreter) so
+    /// far: a tape is, the first time one of its methods is evaluated, once for the model, its
+    /// clones and the copies [`Model::with`] makes (they share the code).
+    ///
+    /// ```
+    /// use routh_runtime::Model;
+    /// use routh_core::{Routhian, Vector3};
+    /// let top = Model::new("kinetic = 0.5 * omega.dot(omega), potential = mgl * gamma.z",
+    ///     &[("mgl", 1.0.into())])?;
+    /// assert_eq!(top.tapes_made(), 0); // building compiles nothing
+    /// let g = Vector3::new(0.0, 0.6, 0.8);
+    /// top.amended_potential(&g, 1.0);
+    /// assert_eq!(top.tapes_made(), 1);
+    /// let heavier = top.with("mgl", 2.0)?;
+    /// heavier.amended_potential(&g, 1.0);
+    /// assert_eq!(top.tapes_made(), 1); // the copy used the same code
+    /// # Ok::<(), routh_runtime::ModelError>(())
+    /// ```
+    pub fn tapes_made(&self) -> usize {
+        self.kernels.made()
     }
 
     /// The tape of the generated method `method` (a method name of [`Lagrangian`] or
@@ -350,7 +396,7 @@ impl Model {
     /// The parameter values the unbound tapes ([`Model::tape`]) read, `Op::Param(k)` being the
     /// `k`-th.
     pub fn tape_parameters(&self) -> Result<Vec<f64>, ModelError> {
-        values(&self.compiled, &self.params)
+        Ok(self.values.to_vec())
     }
 
     /// A copy whose tapes are compiled by the JIT (the interpreter where it is not available:
@@ -358,14 +404,21 @@ impl Model {
     /// register allocator: faster code) or not (no optimization passes, single-pass register
     /// allocator: compiles many times faster, for large models or models built often).
     pub fn jit(&self, optimize: bool) -> Result<Model, ModelError> {
-        self.with_choice(Choice::Jit { optimize })
+        #[cfg(feature = "jit")]
+        let maker = Maker::Jit { optimize };
+        #[cfg(not(feature = "jit"))]
+        let maker = {
+            let _ = optimize;
+            Maker::Interpreter
+        };
+        Ok(self.with_maker(maker))
     }
 
-    fn with_choice(&self, choice: Choice) -> Result<Model, ModelError> {
+    /// A copy whose kernels are made by `maker` (none made yet).
+    fn with_maker(&self, maker: Maker) -> Model {
         let mut m = self.clone();
-        m.choice = choice;
-        m.bound = Arc::new(bind(&m.compiled, &m.params, choice)?);
-        Ok(m)
+        m.kernels = Arc::new(Kernels::new(Arc::clone(&self.compiled), maker));
+        m
     }
 }
 
@@ -384,62 +437,26 @@ fn values(compiled: &Compiled, params: &[(String, Param)]) -> Result<Vec<f64>, M
         .collect()
 }
 
-/// The kernels of the bound tapes, compiled together by the JIT where it is available, else
-/// interpreted.
-fn jit_kernels(tapes: &Tapes<Tape>, optimize: bool) -> (Tapes<Arc<dyn Kernel>>, Evaluation) {
-    #[cfg(not(feature = "jit"))]
-    let _ = optimize;
-    #[cfg(feature = "jit")]
-    if let Some(kernels) = crate::kernel::jit_all(&tapes.fields(), optimize) {
-        let mut each = kernels.into_iter();
-        if let Ok(k) = tapes.try_map(|_| each.next().ok_or(())) {
-            return (k, Evaluation::Jit);
-        }
-    }
-    (with_backend(tapes, interpret), Evaluation::Interpreter)
+/// The values each tape's kernel reads at the parameter values `values`.
+fn hoisted(compiled: &Compiled, values: &[f64]) -> Arc<[Vec<f64>]> {
+    compiled
+        .split
+        .iter()
+        .map(|s| s.main_params(values))
+        .collect()
 }
 
-fn with_backend(tapes: &Tapes<Tape>, backend: Backend) -> Tapes<Arc<dyn Kernel>> {
-    let Ok(k) = tapes.try_map(|t| Ok::<_, std::convert::Infallible>(backend(t)));
-    k
-}
-
-fn bind(
-    compiled: &Compiled,
-    params: &[(String, Param)],
-    choice: Choice,
-) -> Result<Bound, ModelError> {
-    let values = values(compiled, params)?;
-    let internal = |e: routh_tape::TapeError| ModelError::general(format!("internal error: {e}"));
-    let tapes = compiled
-        .tapes
-        .try_map(|t: &Tape| t.bind(&values))
-        .map_err(internal)?;
-    let (kernels, evaluation) = match choice {
-        Choice::Jit { optimize } => jit_kernels(&tapes, optimize),
-        Choice::Interpreter => (with_backend(&tapes, interpret), Evaluation::Interpreter),
-        Choice::Backend(b) => (with_backend(&tapes, b), Evaluation::Custom),
+/// `J₀` of `J = J₀ + c v vᵀ` at the parameter values `values` (a tape of parameters only).
+fn constant_inertia(compiled: &Compiled, values: &[f64]) -> Option<Matrix3<f64>> {
+    let t = compiled.constant_inertia.as_ref()?;
+    let mut out = [0.0; 9];
+    let zero = routh_tape::Inputs {
+        omega: [0.0; 3],
+        gamma: [0.0; 3],
+        p_psi: 0.0,
     };
-    let constant_inertia = match &compiled.constant_inertia {
-        Some(t) => {
-            let mut out = [0.0; 9];
-            let zero = routh_tape::Inputs {
-                omega: [0.0; 3],
-                gamma: [0.0; 3],
-                p_psi: 0.0,
-            };
-            t.eval(&zero, &values, &mut Vec::new(), &mut out);
-            Some(Matrix3::from_row_slice(&out))
-        }
-        None => None,
-    };
-    Ok(Bound {
-        kernels,
-        evaluation,
-        constant_inertia,
-        certification: CertificationTape::new(compiled.certification.clone(), values.clone()).ok(),
-        routh: RouthianTape::new(compiled.routh.clone(), values).ok(),
-    })
+    t.eval(&zero, values, &mut Vec::new(), &mut out);
+    Some(Matrix3::from_row_slice(&out))
 }
 
 fn inputs(w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> [f64; INPUTS] {
@@ -455,19 +472,17 @@ fn m3(o: &[f64]) -> Matrix3<f64> {
 }
 
 impl Model {
-    fn k(&self) -> &Tapes<Arc<dyn Kernel>> {
-        &self.bound.kernels
-    }
-
-    fn eval<const N: usize>(&self, k: &Arc<dyn Kernel>, x: [f64; INPUTS]) -> [f64; N] {
+    /// Tape `which` (an index of [`crate::compile::index`]) at `x`, its `N` outputs.
+    #[inline]
+    fn eval<const N: usize>(&self, which: usize, x: [f64; INPUTS]) -> [f64; N] {
         let mut out = [0.0; N];
-        k.eval(&x, &mut out);
+        let params = self.hoisted.get(which).map_or(&[][..], |v| &v[..]);
+        self.kernels.eval(which, &x, params, &mut out);
         out
     }
 
-    fn terms(&self, k: &Arc<dyn Kernel>, x: [f64; INPUTS], psi_dot: bool) -> EquationTerms<f64> {
-        let mut out = [0.0; 17];
-        k.eval(&x, &mut out);
+    fn terms(&self, which: usize, x: [f64; INPUTS], psi_dot: bool) -> EquationTerms<f64> {
+        let out = self.eval::<17>(which, x);
         let shape = TermsShape {
             psi_dot,
             rank_one: self.compiled.rank_one,
@@ -490,32 +505,32 @@ fn matrix(m: [[f64; 3]; 3]) -> Matrix3<f64> {
 
 impl Lagrangian for Model {
     fn lagrangian(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
-        self.eval::<1>(&self.k().lagrangian, inputs(omega, gamma, 0.0))[0]
+        self.eval::<1>(index::LAGRANGIAN, inputs(omega, gamma, 0.0))[0]
     }
     fn dl_domega(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Vector3<f64> {
-        v3(&self.eval::<3>(&self.k().dl_domega, inputs(omega, gamma, 0.0)))
+        v3(&self.eval::<3>(index::DL_DOMEGA, inputs(omega, gamma, 0.0)))
     }
     fn dl_dgamma(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Vector3<f64> {
-        v3(&self.eval::<3>(&self.k().dl_dgamma, inputs(omega, gamma, 0.0)))
+        v3(&self.eval::<3>(index::DL_DGAMMA, inputs(omega, gamma, 0.0)))
     }
     fn d2l_domega2(&self, gamma: &Vector3<f64>) -> Matrix3<f64> {
         let x = inputs(&Vector3::zeros(), gamma, 0.0);
-        m3(&self.eval::<9>(&self.k().d2l_domega2, x))
+        m3(&self.eval::<9>(index::D2L_DOMEGA2, x))
     }
     fn d2l_domega_dgamma(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> Matrix3<f64> {
-        m3(&self.eval::<9>(&self.k().d2l_domega_dgamma, inputs(omega, gamma, 0.0)))
+        m3(&self.eval::<9>(index::D2L_DOMEGA_DGAMMA, inputs(omega, gamma, 0.0)))
     }
     fn energy(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
-        self.eval::<1>(&self.k().energy, inputs(omega, gamma, 0.0))[0]
+        self.eval::<1>(index::ENERGY, inputs(omega, gamma, 0.0))[0]
     }
     fn cyclic_momentum(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> f64 {
-        self.eval::<1>(&self.k().cyclic_momentum, inputs(omega, gamma, 0.0))[0]
+        self.eval::<1>(index::CYCLIC_MOMENTUM, inputs(omega, gamma, 0.0))[0]
     }
     fn constant_inertia(&self) -> Option<Matrix3<f64>> {
-        self.bound.constant_inertia
+        self.constant_inertia
     }
     fn full_equations(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> FullEquations {
-        let t = self.terms(&self.k().full_equations, inputs(omega, gamma, 0.0), false);
+        let t = self.terms(index::FULL_EQUATIONS, inputs(omega, gamma, 0.0), false);
         FullEquations {
             inertia: matrix(t.inertia),
             right_side: Vector3::from(t.right_side),
@@ -526,10 +541,10 @@ impl Lagrangian for Model {
 
 impl Routhian for Model {
     fn psi_dot(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
-        self.eval::<1>(&self.k().psi_dot, inputs(big_omega, gamma, p_psi))[0]
+        self.eval::<1>(index::PSI_DOT, inputs(big_omega, gamma, p_psi))[0]
     }
     fn routhian(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
-        self.eval::<1>(&self.k().routhian, inputs(big_omega, gamma, p_psi))[0]
+        self.eval::<1>(index::ROUTHIAN, inputs(big_omega, gamma, p_psi))[0]
     }
     fn dr_domega(
         &self,
@@ -537,7 +552,7 @@ impl Routhian for Model {
         gamma: &Vector3<f64>,
         p_psi: f64,
     ) -> Vector3<f64> {
-        v3(&self.eval::<3>(&self.k().dr_domega, inputs(big_omega, gamma, p_psi)))
+        v3(&self.eval::<3>(index::DR_DOMEGA, inputs(big_omega, gamma, p_psi)))
     }
     fn dr_dgamma(
         &self,
@@ -545,10 +560,10 @@ impl Routhian for Model {
         gamma: &Vector3<f64>,
         p_psi: f64,
     ) -> Vector3<f64> {
-        v3(&self.eval::<3>(&self.k().dr_dgamma, inputs(big_omega, gamma, p_psi)))
+        v3(&self.eval::<3>(index::DR_DGAMMA, inputs(big_omega, gamma, p_psi)))
     }
     fn dr_dp(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
-        self.eval::<1>(&self.k().dr_dp, inputs(big_omega, gamma, p_psi))[0]
+        self.eval::<1>(index::DR_DP, inputs(big_omega, gamma, p_psi))[0]
     }
     fn d2r_domega2(
         &self,
@@ -556,7 +571,7 @@ impl Routhian for Model {
         gamma: &Vector3<f64>,
         p_psi: f64,
     ) -> Matrix3<f64> {
-        m3(&self.eval::<9>(&self.k().d2r_domega2, inputs(big_omega, gamma, p_psi)))
+        m3(&self.eval::<9>(index::D2R_DOMEGA2, inputs(big_omega, gamma, p_psi)))
     }
     fn d2r_domega_dgamma(
         &self,
@@ -564,7 +579,7 @@ impl Routhian for Model {
         gamma: &Vector3<f64>,
         p_psi: f64,
     ) -> Matrix3<f64> {
-        m3(&self.eval::<9>(&self.k().d2r_domega_dgamma, inputs(big_omega, gamma, p_psi)))
+        m3(&self.eval::<9>(index::D2R_DOMEGA_DGAMMA, inputs(big_omega, gamma, p_psi)))
     }
     fn d2r_dgamma2(
         &self,
@@ -572,34 +587,31 @@ impl Routhian for Model {
         gamma: &Vector3<f64>,
         p_psi: f64,
     ) -> Matrix3<f64> {
-        m3(&self.eval::<9>(&self.k().d2r_dgamma2, inputs(big_omega, gamma, p_psi)))
+        m3(&self.eval::<9>(index::D2R_DGAMMA2, inputs(big_omega, gamma, p_psi)))
     }
     fn bundle(&self, big_omega: &Vector3<f64>, gamma: &Vector3<f64>, p_psi: f64) -> RouthBundle {
-        let o = self.eval::<36>(&self.k().bundle, inputs(big_omega, gamma, p_psi));
-        let b = Bundle::from_flat(o);
-        RouthBundle {
-            routhian: b.routhian,
-            psi_dot: b.psi_dot,
-            dr_domega: Vector3::from(b.dr_domega),
-            dr_dgamma: Vector3::from(b.dr_dgamma),
-            dr_dp: b.dr_dp,
-            d2r_domega2: matrix(b.d2r_domega2),
-            d2r_domega_dgamma: matrix(b.d2r_domega_dgamma),
-            d2r_dgamma2: matrix(b.d2r_dgamma2),
-        }
+        let o = self.eval::<BUNDLE_LEN>(index::BUNDLE, inputs(big_omega, gamma, p_psi));
+        routh_bundle(&o, 0)
+    }
+    /// One tape for the bundle and `A`, `G`, `C` of (64) formed from its nodes: the derive's
+    /// fused body (`routh_codegen`'s `bundle_and_system` outputs of the same DAG).
+    fn bundle_and_system(
+        &self,
+        big_omega: &Vector3<f64>,
+        gamma: &Vector3<f64>,
+        p_psi: f64,
+    ) -> (RouthBundle, GyroscopicSystem) {
+        let x = inputs(big_omega, gamma, p_psi);
+        let o = self.eval::<{ BUNDLE_LEN + 27 }>(index::BUNDLE_AND_SYSTEM, x);
+        (routh_bundle(&o, 0), gyroscopic(&o, BUNDLE_LEN))
     }
     fn amended_potential(&self, gamma: &Vector3<f64>, p_psi: f64) -> f64 {
         let x = inputs(&Vector3::zeros(), gamma, p_psi);
-        self.eval::<1>(&self.k().amended_potential, x)[0]
+        self.eval::<1>(index::AMENDED_POTENTIAL, x)[0]
     }
     fn gyroscopic_system(&self, gamma: &Vector3<f64>, p_psi: f64) -> GyroscopicSystem {
         let x = inputs(&Vector3::zeros(), gamma, p_psi);
-        let s = Gyroscopic::from_flat(self.eval::<27>(&self.k().gyroscopic_system, x));
-        GyroscopicSystem {
-            a: matrix(s.a),
-            g: matrix(s.g),
-            c: matrix(s.c),
-        }
+        gyroscopic(&self.eval::<27>(index::GYROSCOPIC_SYSTEM, x), 0)
     }
     fn reduced_equations(
         &self,
@@ -608,7 +620,7 @@ impl Routhian for Model {
         p_psi: f64,
     ) -> ReducedEquations {
         let x = inputs(big_omega, gamma, p_psi);
-        let t = self.terms(&self.k().reduced_equations, x, true);
+        let t = self.terms(index::REDUCED_EQUATIONS, x, true);
         ReducedEquations {
             inertia: matrix(t.inertia),
             right_side: Vector3::from(t.right_side),
@@ -617,10 +629,10 @@ impl Routhian for Model {
         }
     }
     fn certification_tape(&self) -> Option<CertificationTape> {
-        self.bound.certification.clone()
+        CertificationTape::new(self.compiled.certification.clone(), self.values.to_vec()).ok()
     }
     fn routh_tape(&self) -> Option<RouthianTape> {
-        self.bound.routh.clone()
+        RouthianTape::new(self.compiled.routh.clone(), self.values.to_vec()).ok()
     }
 }
 

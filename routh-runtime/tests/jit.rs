@@ -252,3 +252,46 @@ fn short_output_buffers_get_the_first_outputs() {
     let mut none: [f64; 0] = [];
     jit.eval(&x, &mut none);
 }
+
+/// Unbound tapes, as a `Model` evaluates them: the JIT's and the interpreter's kernels given
+/// the parameter values with the inputs ([`Kernel::eval_params`]) equal the tape's own
+/// evaluation bit for bit, for several sets of values through the same compiled code.
+#[test]
+fn kernels_with_parameter_slices_equal_the_tape() {
+    let mut rng = ChaCha8Rng::seed_from_u64(31);
+    for case in 0..150 {
+        let np = rng.gen_range(1..6);
+        let n = rng.gen_range(4..100);
+        let tape = random_tape(&mut rng, n, np);
+        let jit = Jit(JitFunction::compile(&tape).expect("compiles"));
+        let interp = Interpreter::new(&tape);
+        for _ in 0..4 {
+            let params: Vec<f64> = (0..np).map(|_| value(&mut rng)).collect();
+            let x = inputs(&mut rng);
+            let (mut a, mut b) = (vec![0.0; jit.outputs()], vec![0.0; interp.outputs()]);
+            jit.eval_params(&x, &params, &mut a);
+            interp.eval_params(&x, &params, &mut b);
+            let c = generic(&tape, &x, &params);
+            for k in 0..c.len() {
+                assert!(
+                    same(a[k], c[k]) && same(b[k], c[k]),
+                    "case {case}, output {k}: jit {} interpreter {} tape {}",
+                    a[k],
+                    b[k],
+                    c[k]
+                );
+            }
+            // Missing parameters read NaN, in both.
+            let (mut a, mut b) = (vec![0.0; jit.outputs()], vec![0.0; interp.outputs()]);
+            jit.eval(&x, &mut a);
+            interp.eval(&x, &mut b);
+            let c = generic(&tape, &x, &[]);
+            for k in 0..c.len() {
+                assert!(
+                    same(a[k], c[k]) && same(b[k], c[k]),
+                    "case {case}: no parameters"
+                );
+            }
+        }
+    }
+}
