@@ -194,6 +194,7 @@ impl Tangential {
     }
 
     /// The zero test of the eigenvalues of `K`: `|k| ≤` [`Self::zero_tol`].
+    #[inline(always)]
     pub(crate) fn zero_test(&self) -> ZeroTest {
         ZeroTest { tol: self.zero_tol }
     }

@@ -34,14 +34,14 @@ pub(crate) struct ZeroTest {
 
 impl ZeroTest {
     /// Zero relative to `scale`: `|x| ≤ rel · scale`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn relative(rel: f64, scale: f64) -> Self {
         ZeroTest { tol: rel * scale }
     }
 
     /// Zero relative to `scale`, never below the round-off `floor`: `|x| ≤ max(rel · scale,
     /// floor)`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn with_floor(rel: f64, scale: f64, floor: f64) -> Self {
         ZeroTest {
             tol: (rel * scale).max(floor),
@@ -49,13 +49,13 @@ impl ZeroTest {
     }
 
     /// Whether `x` is zero.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn is_zero(&self, x: f64) -> bool {
         x.abs() <= self.tol
     }
 
     /// How many of `xs` are zero.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn count(&self, xs: &[f64]) -> usize {
         xs.iter().filter(|&&x| self.is_zero(x)).count()
     }
