@@ -27,6 +27,10 @@ pub enum Command {
     /// stable, gyroscopically stabilized, unstable), the eigenvalues of the restricted second
     /// variation of U_r, the degree of instability and the roots of f₂.
     Classify(AtMomentum),
+    /// The nonlinear (Lyapunov) stability of the steady motions at p_ψ = P: the Birkhoff
+    /// normal form to order four, Arnold's determinant D, resonances of order ≤ 4 and the
+    /// verdict (secularly stable, Lyapunov stable, unstable, undecided) with its reason.
+    Nonlinear(AtMomentum),
     /// A bifurcation diagram: the branches of steady motions and their events (folds, branch
     /// points, Hamiltonian–Hopf) over the momentum (`--momentum LO..HI`) or over a parameter
     /// (`--parameter NAME=LO..HI --momentum P`).
@@ -89,6 +93,10 @@ pub struct Diagram {
     /// momentum only).
     #[arg(long, value_name = "FILE", conflicts_with = "parameter")]
     pub energy_momentum_svg: Option<PathBuf>,
+    /// Also locate the nonlinear events on gyroscopically stabilised stretches: Arnold's
+    /// D = 0 and the 1:2, 1:3 resonances (slower: a normal form at every step there).
+    #[arg(long)]
+    pub nonlinear: bool,
     /// Output format.
     #[command(flatten)]
     pub output: Output,

@@ -6,13 +6,18 @@ use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::table::{num, vec3, Table};
 use routh::plot::{bifurcation_diagram_svg, energy_momentum_svg, PlotOptions};
-use routh::{bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError};
+use routh::{
+    bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError, NonlinearOptions,
+};
 use std::cell::RefCell;
 
 /// Runs `routh diagram` and returns what it prints.
 pub fn diagram(d: &Diagram) -> Result<String, CliError> {
     let model = load(&d.model)?;
-    let opts = ContinuationOptions::default();
+    let opts = ContinuationOptions {
+        nonlinear: d.nonlinear.then(NonlinearOptions::default),
+        ..Default::default()
+    };
     let _spinner = crate::progress::Spinner::start("following the branches");
     let bad = |e: String| CliError::Input(format!("--momentum: {e}"));
     let (result, x_label) = match &d.parameter {
@@ -104,8 +109,19 @@ fn render(d: &BifurcationDiagram, x_label: &str) -> String {
     }
     let mut events = Table::new(&["event", x_label, "gamma", "branch", "before", "after"]);
     for e in &d.events {
+        // A nonlinear event names its resonance and its nonlinear verdicts (before → after).
+        let kind = match &e.nonlinear {
+            Some(n) => format!(
+                "{}{} ({} -> {})",
+                e.kind,
+                n.resonance.map_or(String::new(), |r| format!(" {r}")),
+                n.before,
+                n.after
+            ),
+            None => e.kind.to_string(),
+        };
         events.row(vec![
-            e.kind.to_string(),
+            kind,
             format!("{:.9}", e.s),
             vec3(&e.gamma),
             e.branch.to_string(),

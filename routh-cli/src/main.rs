@@ -9,6 +9,7 @@ mod cli;
 mod commands;
 mod diagram;
 mod error;
+mod nonlinear;
 mod progress;
 mod simulate;
 mod table;
@@ -22,6 +23,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
     match &cli.command {
         Command::Steady(a) => commands::steady(a),
         Command::Classify(a) => commands::classify(a),
+        Command::Nonlinear(a) => nonlinear::nonlinear(a),
         Command::Diagram(d) => diagram::diagram(d),
         Command::Atlas(a) => atlas::atlas(a),
         Command::Simulate(s) => simulate::simulate(s),

@@ -497,3 +497,109 @@ fn an_unwritable_figure_is_a_failed_run_exit_code_1() {
         stderr(&o)
     );
 }
+
+/// Arnold's determinant D of the upright Lagrange top A₁ = 1, C = 1.25, mgl = 1 at momentum
+/// `p`, from the normal form derived by hand in docs/method.md §10.8.
+fn arnold_determinant_by_hand(p: f64) -> f64 {
+    let (a, c, g) = (1.0f64, 1.25f64, 1.0f64);
+    let d = (p * p - 4.0 * a * g).sqrt();
+    let a1 = (p * p + 2.0 * a * g) / (12.0 * a * d * d);
+    let a2 = p / (4.0 * a * d);
+    let a3 = (3.0 * a - 2.0 * c) / (6.0 * a * c);
+    let cs = [a1 + a2 + a3, 4.0 * a1 - 2.0 * a3, a1 - a2 + a3];
+    let lambda = (2.0 * a - c) / c;
+    let (w1, sigma2) = ((lambda * p + d) / (2.0 * a), (d - lambda * p) / (2.0 * a));
+    let s12 = sigma2.signum();
+    let w2 = sigma2.abs();
+    cs[0] * w2 * w2 - s12 * cs[1] * w1 * w2 + cs[2] * w1 * w1
+}
+
+#[test]
+fn nonlinear_verdicts_and_arnold_determinant_of_the_upright_top() {
+    // Gyroscopically stabilised at p = 2.25 (2 < p < 2.5) with D > 0 and no resonance of order
+    // ≤ 4 (ω₁/ω₂ ≈ 7.5): Lyapunov stable by Arnold–Moser; secularly stable at p = 3.
+    for (p, verdict) in [(2.25, "LyapunovStable"), (3.0, "SecularlyStable")] {
+        let v = json(&routh(&[
+            "nonlinear",
+            TOP,
+            "--momentum",
+            &p.to_string(),
+            "--json",
+        ]));
+        let up = v
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| (c["motion"]["gamma"][2].as_f64().unwrap() - 1.0).abs() < 1e-9)
+            .expect("the upright motion");
+        assert_eq!(up["report"]["verdict"], verdict, "p = {p}: {up}");
+        if p == 2.25 {
+            let d = up["report"]["arnold_determinant"].as_f64().unwrap();
+            let hand = arnold_determinant_by_hand(p);
+            assert!(
+                (d - hand).abs() <= 1e-8 * hand.abs(),
+                "D = {d}, by hand {hand}"
+            );
+        }
+    }
+    let o = routh(&["nonlinear", TOP, "-p", "2.25", "--csv"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).starts_with("p_psi,gamma1"), "{}", stdout(&o));
+    assert!(stdout(&o).contains("lyapunov_stable"), "{}", stdout(&o));
+}
+
+#[test]
+fn diagram_nonlinear_locates_arnolds_degenerate_point() {
+    // D of the upright top changes sign once in (2.4, 2.45) (method.md §10.8): bisect the hand
+    // formula, and find the same point as an ArnoldDegenerate event of `diagram --nonlinear`.
+    let (mut lo, mut hi) = (2.4f64, 2.45f64);
+    assert!(arnold_determinant_by_hand(lo) > 0.0 && arnold_determinant_by_hand(hi) < 0.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if arnold_determinant_by_hand(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let plain = json(&routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "2.2..2.48",
+        "--json",
+    ]));
+    let v = json(&routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "2.2..2.48",
+        "--nonlinear",
+        "--json",
+    ]));
+    let kinds = |v: &serde_json::Value| -> Vec<String> {
+        v["events"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|e| e["kind"].as_str().unwrap().to_string())
+            .collect()
+    };
+    assert!(!kinds(&plain).iter().any(|k| k == "ArnoldDegenerate"));
+    let found: Vec<f64> = v["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == "ArnoldDegenerate")
+        .map(|e| e["s"].as_f64().unwrap())
+        .collect();
+    assert_eq!(found.len(), 1, "{:?}", kinds(&v));
+    assert!(
+        (found[0] - lo).abs() < 1e-8,
+        "D = 0 at {} by hand, {} found",
+        lo,
+        found[0]
+    );
+    let table = stdout(&routh(&["diagram", TOP, "-p", "2.2..2.48", "--nonlinear"]));
+    assert!(table.contains("Lyapunov stable -> "), "{table}");
+}

@@ -34,6 +34,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::families::{BifurcationDiagram, EventKind, StabilityAtlas};
+use crate::nonlinear::NonlinearVerdict;
 use crate::sim::{ReducedTrajectory, Trajectory};
 use crate::stability::Stability;
 
@@ -57,6 +58,17 @@ pub fn event_name(k: EventKind) -> &'static str {
         EventKind::HamiltonianHopf => "hamiltonian_hopf",
         EventKind::ArnoldDegenerate => "arnold_degenerate",
         EventKind::Resonance => "resonance",
+    }
+}
+
+/// The word for a nonlinear verdict: `secularly_stable`, `lyapunov_stable`, `unstable`,
+/// `undecided`.
+pub fn nonlinear_verdict_name(v: NonlinearVerdict) -> &'static str {
+    match v {
+        NonlinearVerdict::SecularlyStable => "secularly_stable",
+        NonlinearVerdict::LyapunovStable => "lyapunov_stable",
+        NonlinearVerdict::Unstable => "unstable",
+        NonlinearVerdict::Undecided => "undecided",
     }
 }
 

@@ -59,5 +59,8 @@ pub use nonlinear::{
     nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
-pub use stability::{classify, ClassifyOptions, Stability, StabilityReport};
-pub use steady::{steady_motion_near, steady_motions, SearchOptions, SteadyMotion};
+pub use stability::{classify, classify_with, ClassifyOptions, Stability, StabilityReport};
+pub use steady::{
+    steady_motion_near, steady_motions, steady_motions_with, SearchOptions, SearchResult,
+    SteadyMotion,
+};

@@ -682,3 +682,32 @@ fn counts_between_events_match_the_search_and_the_closed_form() {
         }
     }
 }
+
+#[test]
+fn continue_branch_uses_the_search_options_for_its_first_point() {
+    // The first point comes from Newton on the sphere from the guess, with the budget of
+    // `opts.search`: one iteration (two in `near`) cannot reach the sleeping top from a guess
+    // 0.6 rad away, the default budget does.
+    let top = HeavyTop::lagrange(1.0, 1.25, 1.0);
+    let guess = Vector3::new(0.5, 0.3, 0.8);
+    let family = |p: f64| (top.clone(), p);
+    let d = continue_branch(
+        family,
+        guess,
+        3.0,
+        (2.8, 3.2),
+        &ContinuationOptions::default(),
+    );
+    assert!(d.is_ok(), "{d:?}");
+    let mut opts = ContinuationOptions::default();
+    opts.search.max_iterations = 1;
+    let e = continue_branch(family, guess, 3.0, (2.8, 3.2), &opts);
+    let Err(RouthError::AtParameter { s, source }) = e else {
+        panic!("{e:?}");
+    };
+    assert_eq!(s, 3.0);
+    assert!(
+        matches!(*source, RouthError::NoConvergence { .. }),
+        "{source:?}"
+    );
+}

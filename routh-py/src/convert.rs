@@ -114,12 +114,13 @@ pub fn vecs<'py>(py: Python<'py>, vs: &[Vector3<f64>]) -> Bound<'py, PyArray2<f6
 /// The verdict's name: "secularly_stable", "gyroscopically_stabilized", "unstable",
 /// "degenerate".
 pub fn verdict(s: Stability) -> &'static str {
-    match s {
-        Stability::SecularlyStable => "secularly_stable",
-        Stability::GyroscopicallyStabilized => "gyroscopically_stabilized",
-        Stability::Unstable => "unstable",
-        Stability::Degenerate => "degenerate",
-    }
+    routh::export::verdict_name(s)
+}
+
+/// The nonlinear verdict's name: "secularly_stable", "lyapunov_stable", "unstable",
+/// "undecided".
+pub fn nonlinear_verdict(v: routh::NonlinearVerdict) -> &'static str {
+    routh::export::nonlinear_verdict_name(v)
 }
 
 /// The event's name: "fold", "branch_point", "hamiltonian_hopf" (and "arnold_degenerate",

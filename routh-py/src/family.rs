@@ -24,6 +24,8 @@ pub struct ContinuationKw {
     pub event_tol: Option<f64>,
     pub seeds: Option<usize>,
     pub verify_counts: Option<bool>,
+    /// Also locate the nonlinear events (Arnold's D = 0, 1:2 and 1:3 resonances).
+    pub nonlinear: bool,
 }
 
 /// The Rust defaults with the given keywords applied.
@@ -55,6 +57,9 @@ pub fn continuation_options(kw: ContinuationKw) -> ContinuationOptions {
     }
     if let Some(v) = kw.verify_counts {
         o.verify_counts = v;
+    }
+    if kw.nonlinear {
+        o.nonlinear = Some(routh::NonlinearOptions::default());
     }
     o
 }
@@ -165,7 +170,7 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
 #[pyfunction]
 #[pyo3(signature = (family, range, *, initial_step=None, max_step=None, min_step=None,
                     max_steps=None, max_branches=None, newton_tol=None, event_tol=None,
-                    seeds=None, verify_counts=None, progress=false))]
+                    seeds=None, verify_counts=None, nonlinear=false, progress=false))]
 #[allow(clippy::too_many_arguments)]
 pub fn bifurcation_diagram(
     py: Python<'_>,
@@ -180,6 +185,7 @@ pub fn bifurcation_diagram(
     event_tol: Option<f64>,
     seeds: Option<usize>,
     verify_counts: Option<bool>,
+    nonlinear: bool,
     progress: bool,
 ) -> PyResult<Diagram> {
     let opts = continuation_options(ContinuationKw {
@@ -192,6 +198,7 @@ pub fn bifurcation_diagram(
         event_tol,
         seeds,
         verify_counts,
+        nonlinear,
     });
     let fam = PyFamily::new(py, family, (range.0, 0.0), false, progress)?;
     let r = detached(py, || {

@@ -14,6 +14,7 @@ mod convert;
 mod family;
 mod guard;
 mod latex;
+mod nonlinear;
 mod progress;
 mod results;
 mod trajectory;
@@ -48,6 +49,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ReducedTrajectory>()?;
     m.add_class::<Certificate>()?;
     m.add_class::<LatexFormulas>()?;
+    m.add_class::<nonlinear::NonlinearReport>()?;
     m.add_function(wrap_pyfunction!(family::bifurcation_diagram, m)?)?;
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;

@@ -4,6 +4,7 @@ use crate::convert::{model_err, param, param_to_py, routh_err, vector3};
 use crate::family::{continuation_options, ContinuationKw};
 use crate::guard::detached;
 use crate::latex::{aligned, LatexFormulas};
+use crate::nonlinear::NonlinearReport;
 use crate::progress::Progress;
 use crate::results::{Certificate, Diagram, StabilityReport, SteadyMotion};
 use crate::trajectory::{ReducedTrajectory, Trajectory};
@@ -231,6 +232,40 @@ impl Model {
         Ok(StabilityReport::new(py, &r))
     }
 
+    /// The nonlinear (Lyapunov) stability of a steady motion from the Birkhoff normal form of
+    /// the reduced Hamiltonian to order four: Arnold–Moser away from resonances, Markeev's
+    /// criteria at 1:2 and 1:3, as a `NonlinearReport`. Tolerances default to the Rust
+    /// `NonlinearOptions::default()`.
+    ///
+    /// >>> m = top.steady_motions(2.2)[0]     # sleeping, gyroscopically stabilised
+    /// >>> top.nonlinear_stability(m).verdict
+    /// 'lyapunov_stable'
+    #[pyo3(signature = (motion, *, resonance_tol=None, arnold_tol=None, criterion_tol=None))]
+    fn nonlinear_stability(
+        &self,
+        py: Python<'_>,
+        motion: &SteadyMotion,
+        resonance_tol: Option<f64>,
+        arnold_tol: Option<f64>,
+        criterion_tol: Option<f64>,
+    ) -> PyResult<NonlinearReport> {
+        let mut opts = routh::NonlinearOptions::default();
+        if let Some(v) = resonance_tol {
+            opts.resonance_tol = v;
+        }
+        if let Some(v) = arnold_tol {
+            opts.arnold_tol = v;
+        }
+        if let Some(v) = criterion_tol {
+            opts.criterion_tol = v;
+        }
+        let m = self.get()?;
+        let s = motion.inner.clone();
+        let r = detached(py, || routh::nonlinear_stability(&m, &s, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
+        NonlinearReport::new(py, &r)
+    }
+
     /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi). Keywords default to the Rust
     /// `ContinuationOptions::default()`; `progress=True` shows the count of evaluations (tqdm
     /// if installed, else a line on stderr). The GIL is released during the work.
@@ -240,7 +275,7 @@ impl Model {
     /// [('hamiltonian_hopf', 2.0), ('branch_point', 2.5)]
     #[pyo3(signature = (range, *, initial_step=None, max_step=None, min_step=None, max_steps=None,
                         max_branches=None, newton_tol=None, event_tol=None, seeds=None,
-                        verify_counts=None, progress=false))]
+                        verify_counts=None, nonlinear=false, progress=false))]
     #[allow(clippy::too_many_arguments)]
     fn bifurcation_diagram(
         &self,
@@ -255,6 +290,7 @@ impl Model {
         event_tol: Option<f64>,
         seeds: Option<usize>,
         verify_counts: Option<bool>,
+        nonlinear: bool,
         progress: bool,
     ) -> PyResult<Diagram> {
         let opts = continuation_options(ContinuationKw {
@@ -267,6 +303,7 @@ impl Model {
             event_tol,
             seeds,
             verify_counts,
+            nonlinear,
         });
         let m = self.get()?;
         let bar = Progress::new(py, progress, "steady-motion evaluations")?;

@@ -1,7 +1,7 @@
 //! The result classes: steady motions, reports, diagrams, atlases, trajectories, certificates.
 //! Arrays are built once, when the result is made, and handed out as numpy arrays.
 
-use crate::convert::{event_kind, helper, vec3, vecs, verdict};
+use crate::convert::{event_kind, helper, nonlinear_verdict, vec3, vecs, verdict};
 use numpy::{Complex64, PyArray1, PyArray2};
 use pyo3::prelude::*;
 
@@ -159,11 +159,13 @@ impl Branch {
     }
 }
 
-/// An event on a branch: `kind` ("fold", "branch_point", "hamiltonian_hopf"), where (`s`,
-/// `gamma`), on which `branch`, and the verdicts `before` and `after`.
+/// An event on a branch: `kind` ("fold", "branch_point", "hamiltonian_hopf"; with
+/// `nonlinear=True` also "arnold_degenerate", "resonance"), where (`s`, `gamma`), on which
+/// `branch`, the verdicts `before` and `after`, and for the nonlinear events their `resonance`
+/// and `nonlinear` verdicts.
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Event {
-    /// "fold", "branch_point" or "hamiltonian_hopf".
+    /// "fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate" or "resonance".
     pub kind: &'static str,
     /// The parameter at the event.
     pub s: f64,
@@ -175,6 +177,12 @@ pub struct Event {
     pub before: &'static str,
     /// The verdict just after.
     pub after: &'static str,
+    /// For a "resonance" event, "1:2" or "1:3"; else None.
+    pub resonance: Option<String>,
+    /// For the nonlinear events ("arnold_degenerate", "resonance", with `nonlinear=True`): the
+    /// nonlinear verdicts (before, at, after), e.g. ("lyapunov_stable", "undecided",
+    /// "lyapunov_stable"); else None.
+    pub nonlinear: Option<(&'static str, &'static str, &'static str)>,
 }
 
 #[pymethods]
@@ -228,6 +236,18 @@ impl Diagram {
                     branch: e.branch,
                     before: verdict(e.before),
                     after: verdict(e.after),
+                    resonance: e
+                        .nonlinear
+                        .as_ref()
+                        .and_then(|n| n.resonance)
+                        .map(|r| r.to_string()),
+                    nonlinear: e.nonlinear.as_ref().map(|n| {
+                        (
+                            nonlinear_verdict(n.before),
+                            nonlinear_verdict(n.at),
+                            nonlinear_verdict(n.after),
+                        )
+                    }),
                 },
             )?);
         }
@@ -264,7 +284,7 @@ impl Diagram {
 /// A boundary curve of a stability atlas: `kind` and its `points` ((n, 2) float64 of (x, y)).
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Boundary {
-    /// "fold", "branch_point" or "hamiltonian_hopf".
+    /// "fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate" or "resonance".
     pub kind: &'static str,
     /// The points (x, y) of the curve, (n, 2) float64.
     pub points: Py<PyAny>,

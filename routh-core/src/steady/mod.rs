@@ -422,6 +422,17 @@ pub fn steady_motion_near<M: Routhian>(
     gamma_guess: Vector3<f64>,
     p_psi: f64,
 ) -> Result<SteadyMotion, RouthError> {
+    steady_motion_near_with(model, gamma_guess, p_psi, &SearchOptions::default())
+}
+
+/// [`steady_motion_near`] with the search's tolerances and budgets (what `continue_branch` uses
+/// with its `ContinuationOptions::search`).
+pub(crate) fn steady_motion_near_with<M: Routhian>(
+    model: &M,
+    gamma_guess: Vector3<f64>,
+    p_psi: f64,
+    opts: &SearchOptions,
+) -> Result<SteadyMotion, RouthError> {
     check_finite("p_psi", &[p_psi])?;
     check_finite("gamma_guess", gamma_guess.as_slice())?;
     let norm = stable_norm(gamma_guess.as_slice());
@@ -434,7 +445,7 @@ pub fn steady_motion_near<M: Routhian>(
     }
     let g0 = gamma_guess / norm;
     check_kinetic(model, &g0)?;
-    let (gamma, isolated) = search::near(model, &g0, p_psi, &SearchOptions::default())?;
+    let (gamma, isolated) = search::near(model, &g0, p_psi, opts)?;
     check_kinetic(model, &gamma)?;
     record(model, &gamma, p_psi, isolated)
 }

@@ -23,6 +23,7 @@ from ._routh import (
     MAX_ATLAS_NODES,
     Model,
     ModelError,
+    NonlinearReport,
     ReducedTrajectory,
     RouthError,
     StabilityReport,
@@ -38,7 +39,8 @@ BifurcationDiagram = Diagram
 StabilityAtlas = Atlas
 
 VERDICTS = ("secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate")
-EVENT_KINDS = ("fold", "branch_point", "hamiltonian_hopf")
+EVENT_KINDS = ("fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate", "resonance")
+NONLINEAR_VERDICTS = ("secularly_stable", "lyapunov_stable", "unstable", "undecided")
 
 __all__ = [
     "Atlas",
@@ -52,6 +54,8 @@ __all__ = [
     "MAX_ATLAS_NODES",
     "Model",
     "ModelError",
+    "NONLINEAR_VERDICTS",
+    "NonlinearReport",
     "ReducedTrajectory",
     "RouthError",
     "StabilityAtlas",

@@ -7,12 +7,14 @@ import numpy as np
 import numpy.typing as npt
 
 Verdict = Literal["secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate"]
-EventKind = Literal["fold", "branch_point", "hamiltonian_hopf"]
+EventKind = Literal["fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate", "resonance"]
+NonlinearVerdict = Literal["secularly_stable", "lyapunov_stable", "unstable", "undecided"]
 ParamValue = Union[float, Sequence[float], Sequence[Sequence[float]], npt.ArrayLike]
 Vec3 = Union[Sequence[float], npt.NDArray[np.float64]]
 
 VERDICTS: tuple[str, ...]
 EVENT_KINDS: tuple[str, ...]
+NONLINEAR_VERDICTS: tuple[str, ...]
 MAX_ATLAS_NODES: int
 """The largest atlas grid nx·ny accepted (larger ones raise RouthError before allocating)."""
 __version__: str
@@ -73,13 +75,34 @@ class Branch:
     def __len__(self) -> int: ...
 
 class Event:
-    """A fold, branch point or Hamiltonian–Hopf point on branch `branch`."""
+    """A fold, branch point or Hamiltonian–Hopf point on branch `branch` (with
+    `nonlinear=True` also Arnold's D = 0 and the 1:2, 1:3 resonances)."""
     kind: EventKind
     s: float
     gamma: npt.NDArray[np.float64]
     branch: int
     before: Verdict
     after: Verdict
+    resonance: str | None
+    """"1:2" or "1:3" for a resonance event, else None."""
+    nonlinear: tuple[NonlinearVerdict, NonlinearVerdict, NonlinearVerdict] | None
+    """The nonlinear verdicts (before, at, after) of a nonlinear event, else None."""
+
+class NonlinearReport:
+    """The nonlinear stability of a steady motion (Birkhoff normal form, Arnold–Moser).
+
+    >>> r = top.nonlinear_stability(top.steady_motions(2.2)[0])
+    >>> r.verdict, r.arnold_determinant, r.resonance
+    """
+    verdict: NonlinearVerdict
+    reason: str
+    linear: StabilityReport
+    frequencies: npt.NDArray[np.float64]
+    krein_signs: tuple[int, int]
+    normal_form: npt.NDArray[np.float64]
+    arnold_determinant: float
+    resonance: str | None
+    resonance_distance: float
 
 class Diagram:
     """A bifurcation diagram; in Jupyter it shows its tables and figure.
@@ -223,6 +246,14 @@ class Model:
     def amended_potential(self, gamma: Vec3, p_psi: float) -> float: ...
     def steady_motions(self, p_psi: float) -> list[SteadyMotion]: ...
     def classify(self, motion: SteadyMotion) -> StabilityReport: ...
+    def nonlinear_stability(
+        self,
+        motion: SteadyMotion,
+        *,
+        resonance_tol: float | None = None,
+        arnold_tol: float | None = None,
+        criterion_tol: float | None = None,
+    ) -> NonlinearReport: ...
     def bifurcation_diagram(
         self,
         range: tuple[float, float],
@@ -236,6 +267,7 @@ class Model:
         event_tol: float | None = None,
         seeds: int | None = None,
         verify_counts: bool | None = None,
+        nonlinear: bool = False,
         progress: bool = False,
     ) -> Diagram: ...
     def simulate(
@@ -267,6 +299,7 @@ def bifurcation_diagram(
     event_tol: float | None = None,
     seeds: int | None = None,
     verify_counts: bool | None = None,
+    nonlinear: bool = False,
     progress: bool = False,
 ) -> Diagram: ...
 def stability_atlas(

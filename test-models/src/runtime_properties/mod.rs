@@ -3,8 +3,8 @@
 //!
 //! - never panic (each call runs under `catch_unwind`),
 //! - never hang (a watchdog aborts the run if one call takes longer than [`WATCHDOG`], and the
-//!   test fails if one call takes longer than [`CALL_BUDGET`]: a hang detector, not a timing
-//!   assertion on speed),
+//!   test fails if one call uses more than [`CALL_BUDGET`] of CPU time on its thread: a hang
+//!   detector, not a timing assertion on speed, and one the machine's load does not trip),
 //! - on `Err`, name the input or computation that failed (non-empty `Display`; for
 //!   `RouthError::NonFinite` a known input name and a non-finite value; for
 //!   `RouthError::InvalidOption` a non-empty name),
@@ -65,7 +65,8 @@ pub const DEFAULT_CASES: u64 = 125_000;
 pub const MIN_INPUTS_HAND: u64 = 100_000;
 /// The minimum number of inputs the derived part must exercise.
 pub const MIN_INPUTS_DERIVED: u64 = 10_000;
-/// A single call slower than this fails the test (test profile, opt-level 1).
+/// A single call using more CPU time than this (on its own thread) fails the test (test profile,
+/// opt-level 1): a hang detector that the load of the machine does not trip.
 pub const CALL_BUDGET: Duration = Duration::from_secs(2);
 /// A single call slower than this is a hang: the watchdog reports it and ends the process.
 pub const WATCHDOG: Duration = Duration::from_secs(30);

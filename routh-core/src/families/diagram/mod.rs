@@ -14,7 +14,7 @@ use crate::error::RouthError;
 use crate::families::continuation::CORRECTOR_MAX_ITER;
 use crate::families::equations::{at, member};
 use crate::model::Routhian;
-use crate::steady::steady_motion_near;
+use crate::steady::steady_motion_near_with;
 use crate::validate::check_finite;
 use builder::{show, Builder, NotStarted};
 
@@ -172,7 +172,7 @@ pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
 /// split off it at its branch points.
 ///
 /// Errors: as [`bifurcation_diagram`], plus
-/// - the errors of [`steady_motion_near`] at `s0` (e.g. [`RouthError::NoConvergence`] when
+/// - the errors of [`steady_motion_near`](crate::steady::steady_motion_near) at `s0` (e.g. [`RouthError::NoConvergence`] when
 ///   Newton's method does not converge from the guess), wrapped in
 ///   [`RouthError::AtParameter`] with `s: s0`;
 /// - [`RouthError::InvalidOption`] naming `s0` when it is outside the range, or when the steady
@@ -215,7 +215,8 @@ pub fn continue_branch<M: Routhian, F: Fn(f64) -> (M, f64)>(
         });
     }
     let (m, p) = member(&family, s0)?;
-    let steady = steady_motion_near(&m, gamma_guess, p).map_err(|e| at(s0, e))?;
+    let steady =
+        steady_motion_near_with(&m, gamma_guess, p, &opts.search).map_err(|e| at(s0, e))?;
     let mut b = Builder::new(&family, range, opts);
     let not_regular = |why: &str| RouthError::InvalidOption {
         what: "s0",
