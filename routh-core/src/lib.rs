@@ -33,6 +33,7 @@ pub mod stability;
 pub mod steady;
 #[doc(hidden)]
 pub mod validate;
+mod zero;
 
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
 pub use classified::{classified_steady_motions, classify_at, stability_threshold, Classified};

@@ -3,6 +3,7 @@
 //! of the amended potential and a Fibonacci grid of starting points.
 
 use crate::norm::stable_norm;
+use crate::zero::ZeroTest;
 use std::borrow::Cow;
 use std::sync::OnceLock;
 
@@ -129,7 +130,7 @@ impl Tangential {
         // floor of ε‖H‖ would call K = 0 long before the point is reached.
         let pth = pth.unwrap_or_else(|| hnorm_tangential(&basis, d2r_dgamma2));
         let k_terms = mu.abs().max(pth).max(64.0 * f64::EPSILON * hnorm);
-        let zero_tol = (rel * knorm).max(ROUND * k_terms);
+        let zero_tol = ZeroTest::with_floor(rel, knorm, ROUND * k_terms).tol;
         let gf = ROUND * raw_grad;
         let mut step = Vector2::zeros();
         for i in 0..2 {
@@ -189,10 +190,13 @@ impl Tangential {
 
     /// Number of eigenvalues of `K` that are zero within [`Self::zero_tol`].
     pub(crate) fn zero_count(&self) -> usize {
-        self.values
-            .iter()
-            .filter(|k| k.abs() <= self.zero_tol)
-            .count()
+        self.zero_test().count(&self.values)
+    }
+
+    /// The zero test of the eigenvalues of `K`: `|k| ≤` [`Self::zero_tol`].
+    #[inline(always)]
+    pub(crate) fn zero_test(&self) -> ZeroTest {
+        ZeroTest { tol: self.zero_tol }
     }
 }
 

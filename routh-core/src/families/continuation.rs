@@ -18,9 +18,10 @@ use super::equations::{chart_eval, member, relative_discriminant, restricted_eig
 use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::sphere::tangent_basis;
+use crate::sphere::{tangent_basis, NOISE};
 use crate::stability::{classify_with, ClassifyOptions, Stability};
 use crate::steady::record;
+use crate::zero::{ZeroTest, DOUBLE_REL, EIGEN_REL};
 
 /// Newton iterations of the corrector before it gives up.
 pub(crate) const CORRECTOR_MAX_ITER: usize = 16;
@@ -53,6 +54,11 @@ impl Node {
     /// by `f₂`.
     pub fn degree_two(&self) -> bool {
         self.point.report.degree_of_instability == 2 && self.verdict() != Stability::Degenerate
+    }
+    /// How many eigenvalues of `K` are zero: below [`EIGEN_REL`] relative to the tangential
+    /// scale of the branch (`eig` is already divided by it; docs/method.md §5).
+    pub fn eig_zeros(&self) -> usize {
+        ZeroTest::relative(EIGEN_REL, 1.0).count(&self.eig)
     }
     pub fn dot_tangent(&self, g: &Vector3<f64>, s: f64) -> f64 {
         self.tau_g.dot(g) + self.tau_s * s
@@ -155,13 +161,16 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             let cres = a_xi.dot(&xi) + constraint.a_s * (sigma - sigma_p) - c0;
             let cir = circle.map_or(0.0, |c| c.dot(&xi));
             // Converged: the residual within tolerance, or within a hundred times it once the
-            // Newton steps have reached round-off.
+            // Newton steps have reached round-off; never below the round-off of `F` itself, a
+            // difference of terms of the size of `|∇U_r|` (radial part included: a constant
+            // `k|γ|²` on the sphere adds `2kγ` to it).
             let tol = if last_step <= 1e-13 {
                 100.0 * self.opts.newton_tol
             } else {
                 self.opts.newton_tol
             };
-            if f.norm() <= tol && cres.abs() <= 1e-13 && cir.abs() <= 1e-13 {
+            let zero = ZeroTest::with_floor(tol, 1.0, NOISE * e.local.grad.norm() / sc);
+            if zero.is_zero(f.norm()) && cres.abs() <= 1e-13 && cir.abs() <= 1e-13 {
                 return Ok(Some((e.gamma, sigma * self.len, it)));
             }
             let mut a = DMatrix::zeros(rows, 3);
@@ -392,7 +401,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         }
         let sv = n.jac.svd(false, false).singular_values;
         let (big, small) = (sv.max(), sv.min());
-        small.is_nan() || small <= 1e-6 * big || (n.eig[0].abs() <= 1e-8 && n.eig[1].abs() <= 1e-8)
+        small.is_nan()
+            || ZeroTest::relative(1e-6, big).is_zero(small)
+            || ZeroTest::relative(DOUBLE_REL, 1.0).count(&n.eig) == 2
     }
 }
 

@@ -23,6 +23,7 @@ use crate::model::Routhian;
 use crate::sphere::{restricted_hessian, sym2_eigen, tangent_basis};
 use crate::stability::f2_coefficients_scaled;
 use crate::validate::{check_finite, check_kinetic, check_model_finite};
+use crate::zero::tangential_scale;
 
 /// The family member at `s`, with errors that name `s`.
 pub(crate) fn member<M: Routhian, F: Fn(f64) -> (M, f64)>(
@@ -90,21 +91,11 @@ impl Local {
         restricted_hessian(&p, -self.grad.dot(&self.gamma), &(-self.hess))
     }
 
-    /// The size of the derivatives, `max(|∇U_r|, ‖H‖_F)` (radial parts included): the terms whose
-    /// differences form the tangential gradient and `K`, hence the scale of their round-off.
-    pub fn raw_scale(&self) -> f64 {
-        self.grad.norm().max(self.hess.norm())
-    }
-
-    /// A scale of the tangential quantities: `‖K‖` plus the tangential gradient's norm, or the
-    /// size of `H` where both vanish.
+    /// The local tangential scale [`tangential_scale`] at this point: linear in the units of the
+    /// Lagrangian and unchanged by adding `k|γ|²` to `U` (docs/method.md §5). The residual of the
+    /// corrector and the test functions of the atlas are relative to it.
     pub fn scale(&self) -> f64 {
-        let k = self.restricted().norm() + self.tangential().norm();
-        if k > 0.0 {
-            k
-        } else {
-            self.hess.norm()
-        }
+        tangential_scale(&self.gamma, &self.grad, &self.hess)
     }
 }
 

@@ -108,7 +108,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 let pb = tangent_basis(gamma);
                 let v = [pb * e.vectors[0], pb * e.vectors[1]];
                 let i = usize::from(v[1].dot(r).abs() > v[0].dot(r).abs());
-                let scale = l.raw_scale();
+                let scale = l.scale();
                 Ok((e.values[i] / scale, v[i]))
             }
             Test::Hopf => Ok((relative_discriminant(&m, gamma, p)?, Vector3::zeros())),
@@ -126,7 +126,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         let xi = Vector2::new(w[0], w[1]);
         let (x, y) = self.unscale(w[2], w[3]);
         let ce = chart_eval(&|s| (self.family)(s, y), base, basis, &xi, x, self.hx)?;
-        let scale = ce.local.raw_scale();
+        let scale = ce.local.scale();
         if !(scale > 0.0 && scale.is_finite()) {
             return Err(RouthError::NoConvergence {
                 what: "boundary curve (zero local scale)",

@@ -76,7 +76,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             let (g, dg) = chart(base, basis, &xi);
             let l = Local::at(m, &g, p).ok()?;
             let f = basis.transpose() * l.tangential();
-            let scale = l.raw_scale();
+            let scale = l.scale();
             if !(scale > 0.0 && scale.is_finite()) {
                 return None;
             }
@@ -116,7 +116,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             let Ok(ce) = chart_eval(&seg, &gamma, &basis, &Vector2::zeros(), s, SEGMENT_DS) else {
                 return lost(s, gamma);
             };
-            let scale = ce.local.raw_scale();
+            let scale = ce.local.scale();
             let kappa0 = sym2_eigen(&ce.local.restricted()).values;
             let jxi = ce.jac.fixed_view::<2, 2>(0, 0).into_owned();
             let js = ce.jac.column(2).into_owned();
@@ -132,7 +132,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 let ok = p.is_finite()
                     && match Self::newton(&m, p, &gamma, &basis, pred) {
                         Some((xi, l)) => {
-                            let scale1 = l.raw_scale();
+                            let scale1 = l.scale();
                             let kappa1 = sym2_eigen(&l.restricted()).values;
                             let near = (xi - pred).norm() <= JUMP_RATIO * pred.norm() + JUMP_FLOOR;
                             let smooth = (0..2).all(|i| {
@@ -187,7 +187,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         match Local::at(&m, &gamma, p) {
             Ok(l) => {
                 let k = sym2_eigen(&l.restricted()).values;
-                k[0].abs().min(k[1].abs()) > FOLD_EIGEN * l.raw_scale()
+                k[0].abs().min(k[1].abs()) > FOLD_EIGEN * l.scale()
             }
             Err(_) => true,
         }

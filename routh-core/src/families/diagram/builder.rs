@@ -152,8 +152,8 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     pub(super) fn scale_at(&self, gamma: &Vector3<f64>, s: f64) -> Result<f64, RouthError> {
         let (m, p) = member(self.family, s)?;
         let l = Local::at(&m, gamma, p).map_err(|e| at(s, e))?;
-        let sc = l.restricted().norm().max(l.hess.norm());
-        Ok(if sc > 0.0 { sc } else { 1.0 })
+        let sc = l.scale();
+        Ok(if sc > 0.0 && sc.is_finite() { sc } else { 1.0 })
     }
 
     /// Starts a branch at the steady motion `(gamma, s)` and follows it both ways; `Ok(Some(_))`
@@ -180,7 +180,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         };
         // A degenerate point is not a regular point of an isolated branch, and a circle needs
         // its zero eigenvalue.
-        let zero = start.eig.iter().any(|e| e.abs() <= 1e-6);
+        let zero = start.eig_zeros() > 0;
         if isolated == zero {
             return Ok(Some(NotStarted::Degenerate));
         }
@@ -192,7 +192,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             let mut circle = false;
             for h in [1e-2, 1e-3] {
                 if let Some(next) = ctx.advance(&start, h)? {
-                    circle = next.eig.iter().any(|e| e.abs() <= 1e-6);
+                    circle = next.eig_zeros() > 0;
                     break;
                 }
             }

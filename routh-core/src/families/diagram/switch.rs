@@ -39,7 +39,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 continue;
             }
             self.done_switches.push((n.s, n.gamma));
-            let both_zero = n.eig[0].abs() <= 1e-6 && n.eig[1].abs() <= 1e-6;
+            let both_zero = n.eig_zeros() == 2;
             let basis = tangent_basis(&n.gamma);
             let eps = 1e-3;
             let mut candidates: Vec<(Vector3<f64>, f64, bool)> = Vec::new();
@@ -128,7 +128,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         };
         // Branches of circles need a zero eigenvalue along them; isolated ones must not be
         // circles.
-        let zero = start.eig.iter().any(|e| e.abs() <= 1e-6);
+        let zero = start.eig_zeros() > 0;
         if isolated == zero {
             return Ok(());
         }

@@ -6,13 +6,14 @@ use crate::error::RouthError;
 use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
 use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
+use crate::zero::{ZeroTest, AXIS_REL, EIGEN_REL};
 
 /// Whether a point of a branch of circles is next to the axis of its circles, where they shrink
 /// to a pole: both eigenvalues of `K` below `1e−5` and the whole Jacobian `[K | F_s]` below
 /// `1e−2`, relative to the branch's scale (at the pole both vanish by symmetry; at a fold of
 /// circles `F_s` does not).
 fn near_axis(scale: f64, n: &Node) -> bool {
-    n.eig.iter().all(|e| e.abs() <= 1e-5) && n.jac.norm() <= 1e-2 * scale
+    ZeroTest::relative(AXIS_REL, 1.0).count(&n.eig) == 2 && n.jac.norm() <= 1e-2 * scale
 }
 
 /// Whether a point of a branch of circles has the zero eigenvalue of `K` of a circle: below
@@ -24,7 +25,7 @@ fn circle_point(n: &Node) -> bool {
         n.eig[0].abs().min(n.eig[1].abs()),
         n.eig[0].abs().max(n.eig[1].abs()),
     );
-    lo <= 1e-6 || lo <= 1e-3 * hi
+    ZeroTest::relative(EIGEN_REL, 1.0).is_zero(lo) || ZeroTest::relative(1e-3, hi).is_zero(lo)
 }
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {

@@ -545,7 +545,7 @@ impl<M: Routhian> Search<'_, M> {
                     // Along a zero eigenvalue with a gradient component within round-off (the
                     // tangent of a curve of critical points) there is nothing to correct: a step
                     // of noise/noise would slide along the curve.
-                    if k.abs() <= cur.t.zero_tol && gi.abs() <= cur.t.grad_floor() {
+                    if cur.t.zero_test().is_zero(k) && gi.abs() <= cur.t.grad_floor() {
                         continue;
                     }
                     let (k, gi) = (k / unit, gi / unit);
