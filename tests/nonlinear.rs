@@ -79,24 +79,16 @@ fn the_tape_gives_the_hand_written_normal_form() {
     }
 }
 
-/// The Birkhoff coefficients of the sleeping Lagrange top `I = diag(A, A, C)`, `m g l = g`, at
-/// `p_ψ = p`, derived by hand in docs/method.md §10.8 (polar chart, circular modes, average of
-/// H₄): with `d = √(p² − 4Ag)`, `a₁ = (p² + 2Ag)/(12A d²)`, `a₂ = p/(4Ad)`,
-/// `a₃ = (3A − 2C)/(6AC)`: `c₂₀ = a₁ + a₂ + a₃`, `c₁₁ = 4a₁ − 2a₃`, `c₀₂ = a₁ − a₂ + a₃`, and
-/// `ω₁ = (λp + d)/2A`, `σ₂ = (d − λp)/2A` (`λ = (2A − C)/C`, `ω₂ = |σ₂|`, `s₂ = sign σ₂`).
-/// Returns `([c₂₀, c₁₁, c₀₂], [ω₁, ω₂], s₁s₂, D)`.
+/// The hand derivation (docs/method.md §10.8, `test_models::birkhoff`) as
+/// `([c₂₀, c₁₁, c₀₂], [ω₁, ω₂], s₁s₂, D)`.
 fn lagrange_top_by_hand(a: f64, c: f64, g: f64, p: f64) -> ([f64; 3], [f64; 2], f64, f64) {
-    let d = (p * p - 4.0 * a * g).sqrt();
-    let a1 = (p * p + 2.0 * a * g) / (12.0 * a * d * d);
-    let a2 = p / (4.0 * a * d);
-    let a3 = (3.0 * a - 2.0 * c) / (6.0 * a * c);
-    let cs = [a1 + a2 + a3, 4.0 * a1 - 2.0 * a3, a1 - a2 + a3];
-    let lambda = (2.0 * a - c) / c;
-    let (w1, sigma2) = ((lambda * p + d) / (2.0 * a), (d - lambda * p) / (2.0 * a));
-    let w2 = sigma2.abs();
-    let s12 = sigma2.signum();
-    let dd = cs[0] * w2 * w2 - s12 * cs[1] * w1 * w2 + cs[2] * w1 * w1;
-    (cs, [w1, w2], s12, dd)
+    let h = test_models::birkhoff::sleeping_top_normal_form(a, c, g, p);
+    (
+        h.normal_form,
+        h.frequencies,
+        h.sign_product,
+        h.arnold_determinant,
+    )
 }
 
 /// Check (c): `nonlinear_stability` (the derive's R tape, and a run-time model's) on the sleeping

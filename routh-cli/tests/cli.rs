@@ -501,17 +501,7 @@ fn an_unwritable_figure_is_a_failed_run_exit_code_1() {
 /// Arnold's determinant D of the upright Lagrange top A₁ = 1, C = 1.25, mgl = 1 at momentum
 /// `p`, from the normal form derived by hand in docs/method.md §10.8.
 fn arnold_determinant_by_hand(p: f64) -> f64 {
-    let (a, c, g) = (1.0f64, 1.25f64, 1.0f64);
-    let d = (p * p - 4.0 * a * g).sqrt();
-    let a1 = (p * p + 2.0 * a * g) / (12.0 * a * d * d);
-    let a2 = p / (4.0 * a * d);
-    let a3 = (3.0 * a - 2.0 * c) / (6.0 * a * c);
-    let cs = [a1 + a2 + a3, 4.0 * a1 - 2.0 * a3, a1 - a2 + a3];
-    let lambda = (2.0 * a - c) / c;
-    let (w1, sigma2) = ((lambda * p + d) / (2.0 * a), (d - lambda * p) / (2.0 * a));
-    let s12 = sigma2.signum();
-    let w2 = sigma2.abs();
-    cs[0] * w2 * w2 - s12 * cs[1] * w1 * w2 + cs[2] * w1 * w1
+    test_models::birkhoff::sleeping_top_normal_form(1.0, 1.25, 1.0, p).arnold_determinant
 }
 
 #[test]

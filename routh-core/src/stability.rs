@@ -312,8 +312,11 @@ fn classify_parts<M: Routhian>(
         });
     }
     let eigs = tan.values;
-    let zero_tol = tan.zero_tol;
-    let any_zero = eigs.iter().any(|e| e.abs() <= zero_tol);
+    // The one zero test (crate::zero) on the search's tangential scale: a zero eigenvalue here
+    // is one the search calls zero too.
+    let zero = tan.zero_test();
+    let zero_tol = zero.tol;
+    let any_zero = zero.count(&eigs) > 0;
     let degree = eigs.iter().filter(|&&e| e < -zero_tol).count();
 
     // (64) on the tangent plane (errata E5), in the scaled variable μ = λ/ω (see `F2Parts`):

@@ -32,6 +32,7 @@ mod ellipsoid;
 mod gyrostat;
 mod hand;
 pub use hand::{hand_gyrostat_bundle, hand_gyrostat_bundle_and_system, hand_gyrostat_system};
+pub mod birkhoff;
 mod heavy_top;
 pub mod identities;
 pub mod jacobian;
