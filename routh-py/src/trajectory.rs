@@ -12,6 +12,62 @@ fn no_attitude() -> PyErr {
     RouthError::new_err("no attitude: simulate with attitude=True")
 }
 
+/// The methods both trajectory classes share (their fields `attitude`, `euler`, `len` have the
+/// same meaning): Euler angles, the apex locus, the Jupyter reprs, `len` and `repr`. A macro
+/// because a `#[pyclass]` cannot inherit methods from a Rust base.
+macro_rules! attitude_methods {
+    ($class:ident, $name:literal) => {
+        #[pymethods]
+        impl $class {
+            /// The z-x-z Euler angles (ψ, θ, φ) of the attitude, (n, 3): `R = R_z(ψ) R_x(θ)
+            /// R_z(φ)`, ψ the precession, θ the nutation (γ₃ = cos θ), φ the proper rotation; ψ
+            /// and φ unwrapped. Raises `RouthError` when the attitude was not integrated
+            /// (`attitude=True`).
+            fn euler_angles(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                self.euler
+                    .as_ref()
+                    .map(|e| e.clone_ref(py))
+                    .ok_or_else(no_attitude)
+            }
+            /// Draws the apex locus with matplotlib: the path in space of the body axis `axis`
+            /// (the symmetry axis e₃ of a top by default) on the unit sphere, seen from above, as
+            /// the Rust SVG (`routh::plot::apex_locus_svg`): upper hemisphere solid, lower
+            /// dotted, start ring, end dot, horizon dashed. Returns the axes. Needs
+            /// `attitude=True`.
+            #[pyo3(signature = (ax=None, axis=(0.0, 0.0, 1.0)))]
+            fn plot_apex(
+                slf: &Bound<'_, Self>,
+                ax: Option<Py<PyAny>>,
+                axis: (f64, f64, f64),
+            ) -> PyResult<Py<PyAny>> {
+                if slf.get().attitude.is_none() {
+                    return Err(no_attitude());
+                }
+                helper(slf.py(), "routh._plot", "plot_apex", (slf, ax, axis))
+            }
+            /// The apex locus as SVG (Jupyter), None without attitude.
+            fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+                helper(slf.py(), "routh._display", "trajectory_svg", (slf,))
+            }
+            /// A summary table (and the apex locus) as HTML (Jupyter).
+            fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+                helper(slf.py(), "routh._display", "trajectory_html", (slf,))
+            }
+            fn __len__(&self) -> usize {
+                self.len
+            }
+            fn __repr__(&self) -> String {
+                let attitude = if self.attitude.is_some() {
+                    "True"
+                } else {
+                    "False"
+                };
+                format!(concat!($name, "(n={}, attitude={})"), self.len, attitude)
+            }
+        }
+    };
+}
+
 /// A solution of the full equations (1)–(2): `t` (n,), `omega` (n, 3), `gamma` (n, 3), the
 /// recorded integrals `energy` (n,) and `p_psi` (n,), and with `attitude=True` the attitude
 /// `attitude` (n, 4).
@@ -65,55 +121,7 @@ impl Trajectory {
     }
 }
 
-#[pymethods]
-impl Trajectory {
-    /// The z-x-z Euler angles (ψ, θ, φ) of the attitude, (n, 3): `R = R_z(ψ) R_x(θ) R_z(φ)`,
-    /// ψ the precession, θ the nutation (γ₃ = cos θ), φ the proper rotation; ψ and φ unwrapped.
-    /// Raises `RouthError` when the attitude was not integrated (`attitude=True`).
-    fn euler_angles(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        self.euler
-            .as_ref()
-            .map(|e| e.clone_ref(py))
-            .ok_or_else(no_attitude)
-    }
-    /// Draws the apex locus with matplotlib: the path in space of the body axis `axis` (the
-    /// symmetry axis e₃ of a top by default) on the unit sphere, seen from above, as the Rust
-    /// SVG (`routh::plot::apex_locus_svg`): upper hemisphere solid, lower dotted, start ring,
-    /// end dot, horizon dashed. Returns the axes. Needs `attitude=True`.
-    #[pyo3(signature = (ax=None, axis=(0.0, 0.0, 1.0)))]
-    fn plot_apex(
-        slf: &Bound<'_, Self>,
-        ax: Option<Py<PyAny>>,
-        axis: (f64, f64, f64),
-    ) -> PyResult<Py<PyAny>> {
-        if slf.get().attitude.is_none() {
-            return Err(no_attitude());
-        }
-        helper(slf.py(), "routh._plot", "plot_apex", (slf, ax, axis))
-    }
-    /// The apex locus as SVG (Jupyter), None without attitude.
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        helper(slf.py(), "routh._display", "trajectory_svg", (slf,))
-    }
-    /// A summary table (and the apex locus) as HTML (Jupyter).
-    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        helper(slf.py(), "routh._display", "trajectory_html", (slf,))
-    }
-    fn __len__(&self) -> usize {
-        self.len
-    }
-    fn __repr__(&self) -> String {
-        format!(
-            "Trajectory(n={}, attitude={})",
-            self.len,
-            if self.attitude.is_some() {
-                "True"
-            } else {
-                "False"
-            }
-        )
-    }
-}
+attitude_methods!(Trajectory, "Trajectory");
 
 /// A solution of the reduced equations (39): `t`, `big_omega` (n, 3), `gamma` (n, 3), the
 /// reconstructed `psi`, `psi_dot`, `omega` (n, 3), `energy`, `p_psi`, and with `attitude=True`
@@ -177,47 +185,4 @@ impl ReducedTrajectory {
     }
 }
 
-#[pymethods]
-impl ReducedTrajectory {
-    /// The z-x-z Euler angles (ψ, θ, φ) of the attitude, (n, 3), as `Trajectory.euler_angles`.
-    fn euler_angles(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        self.euler
-            .as_ref()
-            .map(|e| e.clone_ref(py))
-            .ok_or_else(no_attitude)
-    }
-    /// Draws the apex locus (see `Trajectory.plot_apex`). Needs `attitude=True`.
-    #[pyo3(signature = (ax=None, axis=(0.0, 0.0, 1.0)))]
-    fn plot_apex(
-        slf: &Bound<'_, Self>,
-        ax: Option<Py<PyAny>>,
-        axis: (f64, f64, f64),
-    ) -> PyResult<Py<PyAny>> {
-        if slf.get().attitude.is_none() {
-            return Err(no_attitude());
-        }
-        helper(slf.py(), "routh._plot", "plot_apex", (slf, ax, axis))
-    }
-    /// The apex locus as SVG (Jupyter), None without attitude.
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        helper(slf.py(), "routh._display", "trajectory_svg", (slf,))
-    }
-    /// A summary table (and the apex locus) as HTML (Jupyter).
-    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
-        helper(slf.py(), "routh._display", "trajectory_html", (slf,))
-    }
-    fn __len__(&self) -> usize {
-        self.len
-    }
-    fn __repr__(&self) -> String {
-        format!(
-            "ReducedTrajectory(n={}, attitude={})",
-            self.len,
-            if self.attitude.is_some() {
-                "True"
-            } else {
-                "False"
-            }
-        )
-    }
-}
+attitude_methods!(ReducedTrajectory, "ReducedTrajectory");
