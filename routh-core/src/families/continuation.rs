@@ -12,18 +12,22 @@
 
 use std::cell::Cell;
 
-use nalgebra::{DMatrix, DVector, Matrix2x3, Vector2, Vector3};
+use nalgebra::{Matrix2x3, Matrix4, Vector2, Vector3, Vector4};
 
-use super::equations::{chart_eval, member, relative_discriminant, restricted_eigen, Local};
+use super::equations::{
+    chart_eval, member, relative_discriminant, restricted_eigen, ChartEval, Local,
+};
 use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::sphere::newton::{Linearised, Newton, Row};
 use crate::sphere::{tangent_basis, NOISE};
 use crate::stability::{classify_with, ClassifyOptions, Stability};
 use crate::steady::record;
 use crate::zero::{ZeroTest, DOUBLE_REL, EIGEN_REL};
 
-/// Newton iterations of the corrector before it gives up.
+/// Evaluations of `F` by the corrector before it gives up ([`Newton::continuation`] takes one
+/// step fewer).
 pub(crate) const CORRECTOR_MAX_ITER: usize = 16;
 
 /// A converged point of a branch with its tangent and test functions.
@@ -133,78 +137,64 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             }
         };
         let a_xi = basis.transpose() * constraint.a_g;
-        // The constraint is linear in (ξ, σ) around the predicted point.
+        // The constraint is linear in (ξ, σ) around the predicted point; the unknowns are
+        // w = (ξ, σ − σ_p).
         let c0 = constraint.c
             - constraint.a_g.dot(&(gamma_p - constraint.gamma_ref))
             - constraint.a_s * (sigma_p - constraint.sigma_ref);
-        let mut xi = Vector2::zeros();
-        let mut sigma = sigma_p;
-        let rows = if circle.is_some() { 4 } else { 3 };
-        let mut last_step = f64::INFINITY;
-        let mut best = f64::NAN;
+        let c = circle.unwrap_or_default();
+        let rows = [
+            Row {
+                a: Vector4::new(a_xi.x, a_xi.y, constraint.a_s, 0.0),
+                b: c0,
+            },
+            Row {
+                a: Vector4::new(c.x, c.y, 0.0, 0.0),
+                b: 0.0,
+            },
+        ];
+        let rows = &rows[..1 + usize::from(circle.is_some())];
+        // F and its Jacobian relative to the residual scale; the round-off floor of `F` is that
+        // of a difference of terms of the size of `|∇U_r|` (radial part included: a constant
+        // `k|γ|²` on the sphere adds `2kγ` to it).
+        let eval = |w: &Vector4<f64>| -> Result<Option<(ChartEval, Linearised)>, RouthError> {
+            let xi = Vector2::new(w[0], w[1]);
+            let sigma = sigma_p + w[2];
+            // The chart around the predicted point is trusted within 0.5 rad.
+            if xi.norm() > 0.5 || !sigma.is_finite() {
+                return Ok(None);
+            }
+            let e = chart_eval(self.family, gamma_p, &basis, &xi, sigma * self.len, self.ds())?;
+            let sc = self.scale.max(e.local.scale()).max(f64::MIN_POSITIVE);
+            let mut jac = Matrix4::zeros();
+            for i in 0..2 {
+                jac[(i, 0)] = e.jac[(i, 0)] / sc;
+                jac[(i, 1)] = e.jac[(i, 1)] / sc;
+                jac[(i, 2)] = e.jac[(i, 2)] * self.len / sc;
+            }
+            let f = Vector4::new(e.f.x / sc, e.f.y / sc, 0.0, 0.0);
+            let l = Linearised::new(f, jac, NOISE * e.local.grad.norm() / sc);
+            Ok(Some((e, l)))
+        };
         let failed = |best: f64| {
             self.failed_residual.set(best);
             Ok(None)
         };
-        for it in 0..CORRECTOR_MAX_ITER {
-            let e = chart_eval(
-                self.family,
-                gamma_p,
-                &basis,
-                &xi,
-                sigma * self.len,
-                self.ds(),
-            )?;
-            let sc = self.scale.max(e.local.scale()).max(f64::MIN_POSITIVE);
-            let f = e.f / sc;
-            best = best.min(f.norm());
-            let cres = a_xi.dot(&xi) + constraint.a_s * (sigma - sigma_p) - c0;
-            let cir = circle.map_or(0.0, |c| c.dot(&xi));
-            // Converged: the residual within tolerance, or within a hundred times it once the
-            // Newton steps have reached round-off; never below the round-off of `F` itself, a
-            // difference of terms of the size of `|∇U_r|` (radial part included: a constant
-            // `k|γ|²` on the sphere adds `2kγ` to it).
-            let tol = if last_step <= 1e-13 {
-                100.0 * self.opts.newton_tol
-            } else {
-                self.opts.newton_tol
-            };
-            let zero = ZeroTest::with_floor(tol, 1.0, NOISE * e.local.grad.norm() / sc);
-            if zero.is_zero(f.norm()) && cres.abs() <= 1e-13 && cir.abs() <= 1e-13 {
-                return Ok(Some((e.gamma, sigma * self.len, it)));
-            }
-            let mut a = DMatrix::zeros(rows, 3);
-            let mut r = DVector::zeros(rows);
-            for i in 0..2 {
-                a[(i, 0)] = e.jac[(i, 0)] / sc;
-                a[(i, 1)] = e.jac[(i, 1)] / sc;
-                a[(i, 2)] = e.jac[(i, 2)] * self.len / sc;
-                r[i] = f[i];
-            }
-            a[(2, 0)] = a_xi.x;
-            a[(2, 1)] = a_xi.y;
-            a[(2, 2)] = constraint.a_s;
-            r[2] = cres;
-            if let Some(c) = circle {
-                a[(3, 0)] = c.x;
-                a[(3, 1)] = c.y;
-                r[3] = cir;
-            }
-            let svd = a.svd(true, true);
-            let Ok(step) = svd.solve(&r, 1e-12) else {
-                return failed(best);
-            };
-            if !step.iter().all(|v| v.is_finite()) {
-                return failed(best);
-            }
-            last_step = step.norm();
-            xi -= Vector2::new(step[0], step[1]);
-            sigma -= step[2];
-            if xi.norm() > 0.5 || !sigma.is_finite() {
-                return failed(best);
-            }
+        let Some(start) = eval(&Vector4::zeros())? else {
+            return failed(f64::NAN);
+        };
+        let out = Newton::continuation(self.opts.newton_tol).solve(
+            Vector4::zeros(),
+            rows,
+            start,
+            |p| p.1,
+            |_, w, _| eval(w),
+            |_| false,
+        )?;
+        match out {
+            Ok(s) => Ok(Some((s.point.0.gamma, (sigma_p + s.w[2]) * self.len, s.iterations))),
+            Err(stop) => failed(stop.best_residual),
         }
-        failed(best)
     }
 
     /// The node at a converged `(gamma, s)`: tangent oriented along `prev` (if any), test

@@ -3,20 +3,20 @@
 //! E5) — their Jacobian in `(ξ, u, v)` and the Gauss–Newton corrector onto them (see the module
 //! docs of [`super`], "The boundary curves").
 
+use std::convert::Infallible;
+
 use nalgebra::{Matrix3x2, Matrix3x4, Matrix4, Vector2, Vector3, Vector4};
 
 use super::super::equations::{chart, chart_eval, relative_discriminant, Local};
-use super::{Ctx, PINV_CUT};
+use super::Ctx;
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::sphere::newton::{Linearised, Newton, Row};
 use crate::sphere::{sym2_eigen, tangent_basis};
 
 const XI_FD: f64 = 1e-6;
 /// Singular values of the curve Jacobian below this fraction of the largest span its null space.
 const NULL_CUT: f64 = 1e-8;
-const CURVE_MAX_ITER: usize = 10;
-/// Largest Gauss–Newton step on a curve (unit-square units and rad).
-const CURVE_MAX_CORRECTION: f64 = 0.25;
 
 /// A test function whose zeros are a boundary curve.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -180,8 +180,8 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         })
     }
 
-    /// Gauss–Newton with minimum-norm steps on the curve equations, plus the linear equation
-    /// `a·w = b` if given, from `w0` in the chart around `base`.
+    /// Gauss–Newton with minimum-norm steps ([`Newton::curve`]) on the curve equations, plus the
+    /// linear equation `a·w = b` if given, from `w0` in the chart around `base`.
     pub(super) fn correct(
         &self,
         test: &Test,
@@ -190,49 +190,22 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         w0: Vector4<f64>,
         extra: Option<(Vector4<f64>, f64)>,
     ) -> Option<(Vector4<f64>, Ext, usize)> {
-        let tol = self.opts.curve_tol;
-        let mut w = w0;
-        let mut last_step = f64::INFINITY;
-        for it in 0..=CURVE_MAX_ITER {
-            let e = self.ext(test, base, basis, &w).ok()?;
-            let res = e.g.amax();
-            let extra_res = extra.map_or(0.0, |(a, b)| a.dot(&w) - b);
-            let converged = extra_res.abs() <= 1e-13
-                && (res <= 0.01 * tol || (last_step <= 1e-13 && res <= tol));
-            if converged {
-                return Some((w, e, it));
-            }
-            if it == CURVE_MAX_ITER || !e.g.iter().all(|v| v.is_finite()) {
-                break;
-            }
-            let d = match extra {
-                Some((a, _)) => {
-                    let mut m = Matrix4::zeros();
-                    m.fixed_view_mut::<3, 4>(0, 0).copy_from(&e.jac);
-                    m.set_row(3, &a.transpose());
-                    if !m.iter().all(|v| v.is_finite()) {
-                        return None;
-                    }
-                    let rhs = Vector4::new(-e.g.x, -e.g.y, -e.g.z, -extra_res);
-                    let svd = m.svd(true, true);
-                    let cut = PINV_CUT * svd.singular_values[0];
-                    svd.solve(&rhs, cut).ok()?
-                }
-                None => {
-                    if !e.jac.iter().all(|v| v.is_finite()) {
-                        return None;
-                    }
-                    let svd = e.jac.svd(true, true);
-                    let cut = PINV_CUT * svd.singular_values[0];
-                    svd.solve(&(-e.g), cut).ok()?
-                }
+        // The residual is the largest of the three equations (each relative to its own scale).
+        let eval = |w: &Vector4<f64>| -> Result<Option<(Ext, Linearised)>, Infallible> {
+            let Ok(e) = self.ext(test, base, basis, w) else {
+                return Ok(None);
             };
-            last_step = d.norm();
-            if last_step.is_nan() || last_step > CURVE_MAX_CORRECTION {
-                return None;
-            }
-            w += d;
-        }
-        None
+            let mut jac = Matrix4::zeros();
+            jac.fixed_view_mut::<3, 4>(0, 0).copy_from(&e.jac);
+            let mut l = Linearised::new(Vector4::new(e.g.x, e.g.y, e.g.z, 0.0), jac, 0.0);
+            l.residual = e.g.amax();
+            Ok(Some((e, l)))
+        };
+        let rows = extra.map(|(a, b)| Row { a, b });
+        let start = eval(&w0).ok()??;
+        let out = Newton::curve(self.opts.curve_tol)
+            .solve(w0, rows.as_slice(), start, |p| p.1, |_, w, _| eval(w), |_| false)
+            .ok()?;
+        out.ok().map(|s| (s.w, s.point.0, s.iterations))
     }
 }

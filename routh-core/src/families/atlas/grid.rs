@@ -2,23 +2,19 @@
 //! and Newton's method on the sphere, and its verdict at every node (see the module docs of
 //! [`super`], "The grid").
 
-use nalgebra::{Matrix2, Matrix3x2, Vector2, Vector3};
+use std::convert::Infallible;
+
+use nalgebra::{Matrix2, Matrix3x2, Matrix4, Vector2, Vector3, Vector4};
 
 use super::super::equations::{chart, chart_eval, relative_discriminant, Local};
 use super::{at_xy, Ctx, PINV_CUT};
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{sym2_eigen, tangent_basis};
 use crate::stability::{classify_with, StabilityReport};
 use crate::steady::SteadyMotion;
 
-/// Newton on the sphere: converged when `|P_bᵀt| ≤ NEWTON_TOL ·` local scale.
-const NEWTON_TOL: f64 = 1e-11;
-/// … and polished until this (or one more step after `NEWTON_TOL`).
-const NEWTON_POLISH: f64 = 1e-14;
-const NEWTON_MAX_ITER: usize = 12;
-/// Largest Newton step on the sphere (rad).
-const NEWTON_MAX_STEP: f64 = 0.5;
 /// Central-difference step in the segment parameter of the grid continuation.
 const SEGMENT_DS: f64 = 1e-6;
 /// Smallest step (fraction of a segment) of the grid continuation.
@@ -49,7 +45,8 @@ pub(super) struct Follow {
     pub(super) last: (f64, Vector3<f64>),
 }
 
-/// Minimum-norm solution of `j·d = b`, singular values `≤ cut` taken as zero.
+/// Minimum-norm solution of `j·d = b`, singular values `≤ cut` taken as zero (the tangent
+/// predictor of [`Ctx::follow`]).
 pub(super) fn pinv_solve2(j: &Matrix2<f64>, b: &Vector2<f64>, cut: f64) -> Option<Vector2<f64>> {
     if !j.iter().all(|v| v.is_finite()) || !b.iter().all(|v| v.is_finite()) {
         return None;
@@ -61,8 +58,8 @@ pub(super) fn pinv_solve2(j: &Matrix2<f64>, b: &Vector2<f64>, cut: f64) -> Optio
 }
 
 impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
-    /// Newton's method on the sphere for the member `(m, p)`, in the chart around `base`, from
-    /// `xi0`. `None` if it does not converge.
+    /// Newton's method on the sphere ([`Newton::grid`]) for the member `(m, p)`, in the chart
+    /// around `base`, from `xi0`. `None` if it does not converge.
     pub(super) fn newton(
         m: &M,
         p: f64,
@@ -70,29 +67,29 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         basis: &Matrix3x2<f64>,
         xi0: Vector2<f64>,
     ) -> Option<(Vector2<f64>, Local)> {
-        let mut xi = xi0;
-        let mut polished = false;
-        for _ in 0..NEWTON_MAX_ITER {
-            let (g, dg) = chart(base, basis, &xi);
-            let l = Local::at(m, &g, p).ok()?;
-            let f = basis.transpose() * l.tangential();
+        // `P_bᵀt` and its Jacobian relative to the local scale.
+        let eval = |w: &Vector4<f64>| -> Result<Option<(Local, Linearised)>, Infallible> {
+            let (g, dg) = chart(base, basis, &Vector2::new(w[0], w[1]));
+            let Ok(l) = Local::at(m, &g, p) else {
+                return Ok(None);
+            };
             let scale = l.scale();
             if !(scale > 0.0 && scale.is_finite()) {
-                return None;
+                return Ok(None);
             }
-            let r = f.norm() / scale;
-            if r <= NEWTON_POLISH || (polished && r <= NEWTON_TOL) {
-                return Some((xi, l));
-            }
-            polished = r <= NEWTON_TOL;
-            let j = basis.transpose() * l.dt_dgamma() * dg;
-            let d = pinv_solve2(&j, &(-f), PINV_CUT * scale)?;
-            if d.norm() > NEWTON_MAX_STEP {
-                return None;
-            }
-            xi += d;
-        }
-        None
+            let f = basis.transpose() * l.tangential() / scale;
+            let j = basis.transpose() * l.dt_dgamma() * dg / scale;
+            let mut jac = Matrix4::zeros();
+            jac.fixed_view_mut::<2, 2>(0, 0).copy_from(&j);
+            let lin = Linearised::new(Vector4::new(f.x, f.y, 0.0, 0.0), jac, 0.0);
+            Ok(Some((l, lin)))
+        };
+        let w0 = Vector4::new(xi0.x, xi0.y, 0.0, 0.0);
+        let start = eval(&w0).ok()??;
+        let out = Newton::grid()
+            .solve(w0, &[], start, |p| p.1, |_, w, _| eval(w), |_| false)
+            .ok()?;
+        out.ok().map(|s| (Vector2::new(s.w[0], s.w[1]), s.point.0))
     }
 
     /// Follows the motion from `γ_a` at `a` to `b` along the segment.
