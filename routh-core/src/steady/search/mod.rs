@@ -6,11 +6,14 @@
 //! and the restricted form `K`, see [`Tangential`]) with each other, never with a scale taken over
 //! the whole sphere, and never with the raw `∂R/∂γ`, `∂²R/∂γ²` except as a round-off floor.
 
-use nalgebra::{Vector2, Vector3};
+use std::convert::Infallible;
+
+use nalgebra::{Vector2, Vector3, Vector4};
 
 use super::SearchOptions;
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::sphere::newton::{Jacobian, Linearised, Newton, Why};
 use crate::sphere::{fibonacci_grid, tangent_basis, Tangential, NOISE, ROUND};
 use crate::validate::check_kinetic;
 
@@ -20,8 +23,6 @@ use curves::{curve_axis, Curve};
 /// Two values of `U_r` are equal when they differ by at most this much relative to the larger of
 /// `|U_r|` and the raw scale (round-off in `U_r` is a few `ε` of the terms that form it).
 const LEVEL_TOL: f64 = 1e-10;
-/// Longest step of the Newton iteration on the sphere, in radians.
-const MAX_STEP: f64 = 0.5;
 /// First step of the continuation along a curve of non-isolated critical points, in radians.
 const TRACE_STEP: f64 = 0.05;
 /// Number of continuation step lengths tried, each a quarter of the previous one (down to
@@ -34,12 +35,6 @@ const MIN_CLOSED_VERTICES: usize = 12;
 /// Fewest vertices (besides the start) of a curve that does not close: fewer is a degenerate
 /// isolated point.
 const MIN_OPEN_VERTICES: usize = 4;
-/// Largest number of Levenberg–Marquardt retries (growing λ) within one iteration.
-const MAX_LM_RETRIES: usize = 14;
-/// The iteration stops when the Newton step is below this fraction of
-/// [`SearchOptions::gradient_tol`] (or below the tolerance itself when convergence is only
-/// linear, at a degenerate critical point).
-const STOP_FACTOR: f64 = 1e-2;
 /// Two converged points are the same when they are closer than this multiple of the sum of their
 /// estimated distances to the exact critical point (the Newton step, or the round-off radius).
 /// Newton converges linearly with ratio `(n−2)/(n−1)` to a critical point of order `n`, whose
@@ -233,6 +228,24 @@ impl Local {
             t,
             u_r: -b.routhian,
         })
+    }
+
+    /// The equations of the search for the corrector: the Riemannian gradient `g` with its
+    /// Jacobian `K` (62)–(63) by its eigen-decomposition, the residual being the Newton step as a
+    /// distance on the sphere (`|K⁻¹g|`, see [`Tangential::step_len`]).
+    #[inline(always)]
+    fn linearised(&self) -> Linearised {
+        Linearised {
+            rows: Vector4::new(self.t.grad.x, self.t.grad.y, 0.0, 0.0),
+            jac: Jacobian::Symmetric2 {
+                values: self.t.values,
+                vectors: self.t.vectors,
+            },
+            noise: self.t.grad_floor(),
+            zero: self.t.zero_tol,
+            residual: self.step_len(),
+            floor: 0.0,
+        }
     }
 
     /// Number of zero eigenvalues of `K` (relative to `‖K‖` with a round-off floor).
@@ -485,110 +498,42 @@ impl<M: Routhian> Search<'_, M> {
         Local::at(self.model, gamma, self.p_psi, self.zero_rel)
     }
 
-    /// Safeguarded Newton (Levenberg–Marquardt) on the sphere from `gamma0`; `None` if the model
-    /// is not finite at `gamma0`. With `capture = Some((known, ratio))` (`known` the γ of the known
-    /// non-degenerate critical points) the iteration stops as soon as its Newton step heads into
-    /// one of them (lands within `ratio` times its distance to it). No allocation.
+    /// Safeguarded Newton (Levenberg–Marquardt, [`Newton::search`]) on the sphere from `gamma0`;
+    /// `None` if the model is not finite at `gamma0`. With `capture = Some((known, ratio))`
+    /// (`known` the γ of the known non-degenerate critical points) the iteration stops as soon as
+    /// its Newton step heads into one of them (lands within `ratio` times its distance to it). No
+    /// allocation.
     fn refine(
         &self,
         gamma0: &Vector3<f64>,
         capture: Option<(&[Vector3<f64>], f64)>,
     ) -> Option<Refined> {
-        let mut cur = self.local(gamma0)?;
-        let mut lambda = 0.0f64;
-        let mut prev = f64::INFINITY;
-        for _ in 0..self.max_iterations {
-            // Iterate down to round-off, past the acceptance floor of `residual`, so that copies
-            // of one critical point coincide to a few ulps.
-            let d = cur.step_len();
-            // Converged: to round-off (quadratic convergence overshoots the tolerance), or to
-            // the tolerance when convergence is only linear (a degenerate critical point).
-            if d <= STOP_FACTOR * self.gradient_tol || (d <= self.gradient_tol && d > 0.1 * prev) {
-                break;
-            }
-            if let Some((known, ratio)) = capture {
+        let start = self.local(gamma0)?;
+        // Each step is taken in the tangent plane at the current point, then retracted onto the
+        // sphere: the chart moves with the iterate.
+        let next = |cur: &Local, _: &Vector4<f64>, d: &Vector4<f64>| {
+            let gamma = (cur.gamma + cur.t.basis * Vector2::new(d[0], d[1])).normalize();
+            Ok::<_, Infallible>(self.local(&gamma))
+        };
+        let joined = |cur: &Local| {
+            capture.is_some_and(|(known, ratio)| {
                 let target = cur.gamma + cur.t.basis * cur.t.step;
-                let joined = known.iter().any(|p| {
+                known.iter().any(|p| {
                     let dp = (cur.gamma - p).norm();
                     dp <= CAPTURE_RADIUS && (target - p).norm() <= ratio * dp
-                });
-                if joined {
-                    return Some(Refined::Captured);
-                }
-            }
-            prev = d;
-            let gn = cur.t.grad_norm;
-            // Within round-off already: one plain Newton try, no Levenberg–Marquardt retries.
-            let retries = if gn <= cur.t.grad_floor() {
-                1
-            } else {
-                MAX_LM_RETRIES
-            };
-            // The system is solved in units of the largest |eigenvalue| of K, and λ is
-            // relative to its square, so that K² cannot overflow (K of order 1e300 at
-            // p_ψ = 1e150 in units of the inertia) or underflow.
-            let kmax = cur.t.values[0].abs().max(cur.t.values[1].abs());
-            let unit = if kmax > 0.0 && kmax.is_finite() {
-                kmax
-            } else {
-                1.0
-            };
-            let kmax2 = (kmax / unit).powi(2);
-            let lambda_min = (ROUND * cur.t.raw / unit).powi(2);
-            let mut accepted = None;
-            for _ in 0..retries {
-                // (K² + λE) ξ = −K g in the eigenbasis of K.
-                let mut xi = Vector2::zeros();
-                for i in 0..2 {
-                    let (k, v) = (cur.t.values[i], cur.t.vectors[i]);
-                    let gi = cur.t.grad.dot(&v);
-                    // Along a zero eigenvalue with a gradient component within round-off (the
-                    // tangent of a curve of critical points) there is nothing to correct: a step
-                    // of noise/noise would slide along the curve.
-                    if cur.t.zero_test().is_zero(k) && gi.abs() <= cur.t.grad_floor() {
-                        continue;
-                    }
-                    let (k, gi) = (k / unit, gi / unit);
-                    let den = k * k + lambda;
-                    if den > 0.0 {
-                        xi -= (k * gi / den) * v;
-                    }
-                }
-                let len = xi.norm();
-                if len.is_finite() && len > 0.0 {
-                    if len > MAX_STEP {
-                        xi *= MAX_STEP / len;
-                    }
-                    let next = (cur.gamma + cur.t.basis * xi).normalize();
-                    if let Some(n) = self.local(&next) {
-                        if n.t.grad_norm < gn {
-                            accepted = Some(n);
-                            break;
-                        }
-                    }
-                }
-                let grown = if lambda == 0.0 {
-                    (1e-6 * kmax2).max(lambda_min)
-                } else {
-                    lambda * 10.0
-                };
-                if grown <= lambda || !grown.is_finite() {
-                    break;
-                }
-                lambda = grown;
-            }
-            match accepted {
-                Some(n) => {
-                    cur = n;
-                    lambda = if lambda <= 1e-6 * kmax2 {
-                        0.0
-                    } else {
-                        lambda / 10.0
-                    };
-                }
-                None => break,
-            }
-        }
+                })
+            })
+        };
+        let newton = Newton::search(self.max_iterations, self.gradient_tol);
+        let out = match newton.solve(Vector4::zeros(), &[], start, Local::linearised, next, joined) {
+            Ok(out) => out,
+            Err(never) => match never {},
+        };
+        let cur = match out {
+            Ok(solved) => solved.point,
+            Err(stop) if stop.why == Why::Interrupted => return Some(Refined::Captured),
+            Err(stop) => stop.last,
+        };
         Some(if cur.residual() <= self.gradient_tol {
             Refined::Converged(cur)
         } else {
