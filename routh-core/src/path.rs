@@ -147,8 +147,6 @@ pub(crate) struct Prediction<const N: usize> {
     pub point: SVector<f64, N>,
     /// The normal `a` of the row `a·(w − w_pred) = 0` (`None` for [`Row::Free`]).
     pub normal: Option<SVector<f64, N>>,
-    /// The step.
-    pub h: f64,
     /// Whether the step was cut to the caller's limit (the end of the curve's domain).
     pub at_limit: bool,
 }
@@ -299,7 +297,6 @@ impl<const N: usize> Path<N> {
         let pred = Prediction {
             point: (self.retract)(raw),
             normal,
-            h,
             at_limit,
         };
         let Some(c) = correct(&pred)? else {

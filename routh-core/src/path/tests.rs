@@ -38,7 +38,11 @@ fn circle(p: &Prediction<2>) -> Result<Option<Corrected<2, ()>>, Infallible> {
 }
 
 fn fold(p: &Prediction<2>) -> Result<Option<Corrected<2, ()>>, Infallible> {
-    Ok(newton2(p, |w| w.x - w.y * w.y, |w| Vector2::new(1.0, -2.0 * w.y)))
+    Ok(newton2(
+        p,
+        |w| w.x - w.y * w.y,
+        |w| Vector2::new(1.0, -2.0 * w.y),
+    ))
 }
 
 /// The unit tangent of `x = y²` at `w`, along `prev`.
@@ -86,7 +90,10 @@ fn circle_steps_advance_by_asin_h_and_close() {
         assert!(path.h() <= 0.2 && steps < 1000);
     }
     // Closed: back at the start after a full turn.
-    assert!((w - Vector2::new(1.0, 0.0)).norm() <= 0.2, "{w} after {steps} steps");
+    assert!(
+        (w - Vector2::new(1.0, 0.0)).norm() <= 0.2,
+        "{w} after {steps} steps"
+    );
 }
 
 #[test]
@@ -95,9 +102,14 @@ fn natural_parameter_stalls_at_the_fold() {
     let mut w = Vector2::new(1.0, 1.0);
     let mut t = -fold_tangent(&w, &Vector2::new(1.0, 0.0));
     let failure = loop {
-        let out = run(path.step(&w, &t, f64::INFINITY, fold, |c| Ok(Some(c.bare())), |_, _| {
-            Check::Accept
-        }));
+        let out = run(path.step(
+            &w,
+            &t,
+            f64::INFINITY,
+            fold,
+            |c| Ok(Some(c.bare())),
+            |_, _| Check::Accept,
+        ));
         match out {
             Outcome::Accepted { point, .. } => {
                 assert!((point.point.x - point.point.y.powi(2)).abs() < 1e-13);
@@ -132,7 +144,10 @@ fn pseudo_arclength_passes_the_fold() {
             panic!("the fold is a regular point of the curve: {out:?}");
         };
         assert!((point.point.x - point.point.y.powi(2)).abs() < 1e-13);
-        assert!(point.point.y < w.y, "y decreases monotonically along the curve");
+        assert!(
+            point.point.y < w.y,
+            "y decreases monotonically along the curve"
+        );
         min_x = min_x.min(point.point.x);
         (w, t) = (point.point, point.tangent.unwrap());
         assert!(path.attempts() < 1000);
@@ -154,9 +169,14 @@ fn jumps_turns_checks_and_budget() {
             value: (),
         }))
     };
-    let out = run(path.step(&w, &t, f64::INFINITY, jump, |c| Ok(Some(c.bare())), |_, _| {
-        Check::Accept
-    }));
+    let out = run(path.step(
+        &w,
+        &t,
+        f64::INFINITY,
+        jump,
+        |c| Ok(Some(c.bare())),
+        |_, _| Check::Accept,
+    ));
     assert!(matches!(out, Outcome::Stalled(Failure::Moved)));
     // 0.1, 0.05, …, 0.0015625 ≥ 1e−3: seven attempts.
     assert_eq!(path.attempts(), 7);
@@ -199,14 +219,26 @@ fn jumps_turns_checks_and_budget() {
     assert!(matches!(out, Outcome::Stopped(_)));
     // The budget counts every attempt; the limit cuts the step.
     let mut path = Path::<2>::new(opts, 0.1).with_budget(1);
-    let out = run(path.step(&w, &t, 0.03, circle, |c| Ok(Some(c.bare())), |_, h| {
-        assert_eq!(h, 0.03);
-        Check::Accept
-    }));
+    let out = run(path.step(
+        &w,
+        &t,
+        0.03,
+        circle,
+        |c| Ok(Some(c.bare())),
+        |_, h| {
+            assert_eq!(h, 0.03);
+            Check::Accept
+        },
+    ));
     assert!(matches!(out, Outcome::Accepted { .. }));
-    let out = run(path.step(&w, &t, f64::INFINITY, circle, |c| Ok(Some(c.bare())), |_, _| {
-        Check::Accept
-    }));
+    let out = run(path.step(
+        &w,
+        &t,
+        f64::INFINITY,
+        circle,
+        |c| Ok(Some(c.bare())),
+        |_, _| Check::Accept,
+    ));
     assert!(matches!(out, Outcome::Exhausted));
     // Easy convergences grow the step by 1.5 up to the cap.
     let mut path = Path::<2>::new(opts, 0.1);
@@ -218,9 +250,14 @@ fn jumps_turns_checks_and_budget() {
         }))
     };
     for expected in [0.15, 0.2, 0.2] {
-        let out = run(path.step(&w, &t, f64::INFINITY, easy, |c| Ok(Some(c.bare())), |_, _| {
-            Check::Accept
-        }));
+        let out = run(path.step(
+            &w,
+            &t,
+            f64::INFINITY,
+            easy,
+            |c| Ok(Some(c.bare())),
+            |_, _| Check::Accept,
+        ));
         assert!(matches!(out, Outcome::Accepted { .. }));
         assert!((path.h() - expected).abs() < 1e-15, "{}", path.h());
     }

@@ -77,7 +77,11 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             let check = |p: &Point<4, Node>, h: f64| {
                 let b = &p.value;
                 if !ctx.isolated && !circle_point(b) {
-                    return if h <= short { Check::Stop } else { Check::Shorten };
+                    return if h <= short {
+                        Check::Stop
+                    } else {
+                        Check::Shorten
+                    };
                 }
                 let ch = changes(&a, b, ctx.isolated);
                 let eigen = ch.iter().filter(|c| matches!(c, Change::Eigen(_))).count();
