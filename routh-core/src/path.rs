@@ -337,7 +337,7 @@ impl<const N: usize> Path<N> {
                         let waived = h <= o.relax * o.h_min || o.min_cos == f64::NEG_INFINITY;
                         match p.tangent {
                             None if !waived => Failure::Tangent,
-                            Some(tn) if !waived && !(tn.dot(t) >= o.min_cos) => Failure::Turned,
+                            Some(tn) if !waived && turned(tn.dot(t), o.min_cos) => Failure::Turned,
                             _ => match check(&p, h) {
                                 Check::Accept => {
                                     self.h = if p.iterations <= o.easy {
@@ -362,6 +362,11 @@ impl<const N: usize> Path<N> {
             }
         }
     }
+}
+
+/// Whether a cosine between consecutive tangents is below `min` (or not a number).
+fn turned(cos: f64, min: f64) -> bool {
+    cos.is_nan() || cos < min
 }
 
 #[cfg(test)]

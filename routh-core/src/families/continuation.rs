@@ -74,6 +74,9 @@ impl Node {
     }
 }
 
+/// A corrected point of a branch on its path, with `(γ, s)`.
+pub(crate) type BranchCorrected = Corrected<4, (Vector3<f64>, f64)>;
+
 /// A linear constraint `a_g·(γ − γ_ref) + a_s(σ − σ_ref) = c` of the corrector.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Constraint {
@@ -315,8 +318,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
     pub fn corrector<'b>(
         &'b self,
         a: &'b Node,
-    ) -> impl FnMut(&Prediction<4>) -> Result<Option<Corrected<4, (Vector3<f64>, f64)>>, RouthError> + 'b
-    {
+    ) -> impl FnMut(&Prediction<4>) -> Result<Option<BranchCorrected>, RouthError> + 'b {
         move |p| {
             let g_p = p.point.fixed_rows::<3>(0).into_owned();
             let n = p.normal.unwrap_or_else(Vector4::zeros);
@@ -343,8 +345,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
     pub fn completer<'b>(
         &'b self,
         a: &'b Node,
-    ) -> impl FnMut(Corrected<4, (Vector3<f64>, f64)>) -> Result<Option<Point<4, Node>>, RouthError> + 'b
-    {
+    ) -> impl FnMut(BranchCorrected) -> Result<Option<Point<4, Node>>, RouthError> + 'b {
         move |c| {
             let (g, s) = c.value;
             let node = self.node(&g, s, Some((&a.tau_g, a.tau_s)))?;
