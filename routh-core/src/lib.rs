@@ -25,6 +25,7 @@ mod krein;
 mod model;
 pub mod nonlinear;
 mod norm;
+mod path;
 #[cfg(feature = "serde")]
 mod serde_support;
 pub mod sim;

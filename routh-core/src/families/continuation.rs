@@ -2,9 +2,11 @@
 //! location.
 //!
 //! The unknowns are `(γ, σ)`, `σ = s/L` with `L` the length of the range, so that steps mix
-//! comparable quantities. Predictor: a step `h` along the unit tangent `τ` of the curve
-//! `{F = 0}` (the null vector of the 2×3 Jacobian `[∂F/∂ξ | ∂F/∂σ]`). Corrector: Newton in the
-//! chart around the predicted point on `F = 0` and `τ·(x − x_pred) = 0`. For a branch of circles
+//! comparable quantities. The steps are those of the crate's one predictor–corrector
+//! ([`crate::path`], [`PathOptions::diagram`]): a step `h` along the unit tangent `τ` of the curve
+//! `{F = 0}` (the null vector of the 2×3 Jacobian `[∂F/∂ξ | ∂F/∂σ]`), then Newton
+//! ([`Ctx::correct`]) in the chart around the predicted point on `F = 0` and
+//! `τ·(x − x_pred) = 0`. For a branch of circles
 //! of steady motions (`isolated: false`) the Jacobian has rank one along the whole branch (the
 //! circle direction `c`, the kernel of `K`, is a direction of solutions at fixed `s`); the
 //! corrector then also keeps `c·ξ = 0` (it stays in the meridian plane) and solves in the least
@@ -20,6 +22,7 @@ use super::equations::{
 use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::path::{sphere_head, Corrected, Failure, Path, PathOptions, Point, Prediction};
 use crate::sphere::newton::{Linearised, Newton, Row};
 use crate::sphere::{tangent_basis, NOISE};
 use crate::stability::{classify_with, ClassifyOptions, Stability};
@@ -44,8 +47,6 @@ pub(crate) struct Node {
     /// Relative discriminant of `f₂` in `λ²`.
     pub disc: f64,
     pub point: BranchSample,
-    /// Newton iterations the corrector needed.
-    pub iterations: usize,
     /// The 2×3 Jacobian `[∂F/∂ξ | ∂F/∂σ]` at the point (chart at the point itself).
     pub jac: Matrix2x3<f64>,
 }
@@ -67,7 +68,18 @@ impl Node {
     pub fn dot_tangent(&self, g: &Vector3<f64>, s: f64) -> f64 {
         self.tau_g.dot(g) + self.tau_s * s
     }
+    /// The point `(γ, σ = s/len)` on the path of the branch.
+    pub fn on_path(&self, len: f64) -> Vector4<f64> {
+        Vector4::new(self.gamma.x, self.gamma.y, self.gamma.z, self.s / len)
+    }
+    /// The unit tangent `(τ_γ, τ_σ)`.
+    pub fn tangent(&self) -> Vector4<f64> {
+        Vector4::new(self.tau_g.x, self.tau_g.y, self.tau_g.z, self.tau_s)
+    }
 }
+
+/// A corrected point of a branch on its path, with `(γ, s)`.
+pub(crate) type BranchCorrected = Corrected<4, (Vector3<f64>, f64)>;
 
 /// A linear constraint `a_g·(γ − γ_ref) + a_s(σ − σ_ref) = c` of the corrector.
 #[derive(Debug, Clone, Copy)]
@@ -204,7 +216,6 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         gamma: &Vector3<f64>,
         s: f64,
         prev: Option<(&Vector3<f64>, f64)>,
-        iterations: usize,
     ) -> Result<Option<Node>, RouthError> {
         let basis = tangent_basis(gamma);
         let e = chart_eval(self.family, gamma, &basis, &Vector2::zeros(), s, self.ds())?;
@@ -279,33 +290,86 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             eig: [eig[0] / sc, eig[1] / sc],
             disc,
             point: BranchSample { s, steady, report },
-            iterations,
             jac,
         }))
     }
 
-    /// The point at arclength `h` from `a` along its tangent (predictor + corrector + node).
-    pub fn advance(&self, a: &Node, h: f64) -> Result<Option<Node>, RouthError> {
-        let g_p = (a.gamma + h * a.tau_g).normalize();
-        let s_p = a.s / self.len + h * a.tau_s;
-        let con = Constraint {
-            a_g: a.tau_g,
-            a_s: a.tau_s,
-            gamma_ref: g_p,
-            sigma_ref: s_p,
-            c: 0.0,
-        };
-        let circle = meridian_normal(&g_p, &a.tau_g);
-        let Some((g, s, it)) = self.correct(&g_p, s_p, &con, circle)? else {
-            return Ok(None);
-        };
-        // A corrector that moved much further than the step jumped to another branch.
-        let moved = ((g - g_p).norm_squared() + ((s - s_p * self.len) / self.len).powi(2)).sqrt();
-        if moved > 0.5 * h.max(1e-9) + 1e-9 {
-            self.failed_residual.set(f64::NAN);
-            return Ok(None);
+    /// The predictor–corrector of the branches ([`PathOptions::diagram`], γ retracted to the
+    /// sphere) with at most `budget` attempts, starting with `initial_step`.
+    pub fn path(&self, budget: usize) -> Path<4> {
+        let o = self.opts;
+        Path::new(PathOptions::diagram(o.min_step, o.max_step), o.initial_step)
+            .with_retraction(sphere_head)
+            .with_budget(budget)
+    }
+
+    /// The corrector of a step from `a`: [`Ctx::correct`] on `F = 0` and the row of the path
+    /// through the prediction (plus `c·ξ = 0` on a branch of circles); the value is `(γ, s)`.
+    pub fn corrector<'b>(
+        &'b self,
+        a: &'b Node,
+    ) -> impl FnMut(&Prediction<4>) -> Result<Option<BranchCorrected>, RouthError> + 'b {
+        move |p| {
+            let g_p = p.point.fixed_rows::<3>(0).into_owned();
+            let n = p.normal.unwrap_or_else(Vector4::zeros);
+            let con = Constraint {
+                a_g: n.fixed_rows::<3>(0).into_owned(),
+                a_s: n[3],
+                gamma_ref: g_p,
+                sigma_ref: p.point[3],
+                c: 0.0,
+            };
+            let circle = meridian_normal(&g_p, &a.tau_g);
+            Ok(self
+                .correct(&g_p, p.point[3], &con, circle)?
+                .map(|(g, s, it)| Corrected {
+                    point: Vector4::new(g.x, g.y, g.z, s / self.len),
+                    iterations: it,
+                    value: (g, s),
+                }))
         }
-        self.node(&g, s, Some((&a.tau_g, a.tau_s)), it)
+    }
+
+    /// The completion of a corrected point after a step from `a`: its [`Node`] (tangent oriented
+    /// along `a`'s, test functions, classification).
+    pub fn completer<'b>(
+        &'b self,
+        a: &'b Node,
+    ) -> impl FnMut(BranchCorrected) -> Result<Option<Point<4, Node>>, RouthError> + 'b {
+        move |c| {
+            let (g, s) = c.value;
+            let node = self.node(&g, s, Some((&a.tau_g, a.tau_s)))?;
+            Ok(node.map(|n| Point {
+                point: c.point,
+                tangent: Some(n.tangent()),
+                iterations: c.iterations,
+                value: n,
+            }))
+        }
+    }
+
+    /// Records why a step failed: a corrector that jumped to another branch leaves no residual
+    /// to report.
+    pub fn failed(&self, f: Failure) {
+        if f == Failure::Moved {
+            self.failed_residual.set(f64::NAN);
+        }
+    }
+
+    /// The point at arclength `h` from `a` along its tangent: one attempt of [`Ctx::path`] (a
+    /// corrector that moves further than `h/2` from the prediction jumped to another branch).
+    pub fn advance(&self, a: &Node, h: f64) -> Result<Option<Node>, RouthError> {
+        let w = a.on_path(self.len);
+        match self
+            .path(usize::MAX)
+            .attempt(&w, &a.tangent(), h, false, &mut self.corrector(a))?
+        {
+            Ok(c) => Ok(self.completer(a)(c)?.map(|p| p.value)),
+            Err(f) => {
+                self.failed(f);
+                Ok(None)
+            }
+        }
     }
 
     /// The point of the branch at exactly `s = target`, from `a` towards `b`.
@@ -325,10 +389,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             c: 0.0,
         };
         let circle = meridian_normal(&g_p, &a.tau_g);
-        let Some((g, s, it)) = self.correct(&g_p, target / self.len, &con, circle)? else {
+        let Some((g, s, _)) = self.correct(&g_p, target / self.len, &con, circle)? else {
             return Ok(None);
         };
-        self.node(&g, s, Some((&a.tau_g, a.tau_s)), it)
+        self.node(&g, s, Some((&a.tau_g, a.tau_s)))
     }
 
     /// Locates the zero of `phi` on the step from `a` (arclength 0) to `b` (arclength `h`) by the

@@ -1,5 +1,6 @@
 //! The grid of the atlas: the steady motion followed from node to node by a tangent predictor
-//! and Newton's method on the sphere, and its verdict at every node (see the module docs of
+//! and Newton's method on the sphere (natural-parameter steps of the crate's predictor–corrector,
+//! [`PathOptions::grid_segment`]), and its verdict at every node (see the module docs of
 //! [`super`], "The grid").
 
 use std::convert::Infallible;
@@ -10,6 +11,7 @@ use super::super::equations::{chart, chart_eval, relative_discriminant, Local};
 use super::{at_xy, Ctx, PINV_CUT};
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
 use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{sym2_eigen, tangent_basis};
 use crate::stability::{classify_with, StabilityReport};
@@ -17,8 +19,6 @@ use crate::steady::SteadyMotion;
 
 /// Central-difference step in the segment parameter of the grid continuation.
 const SEGMENT_DS: f64 = 1e-6;
-/// Smallest step (fraction of a segment) of the grid continuation.
-const SEGMENT_MIN_STEP: f64 = 1e-6;
 /// Jump detection: `|ξ − ξ_pred| ≤ JUMP_RATIO·|ξ_pred| + JUMP_FLOOR`.
 const JUMP_RATIO: f64 = 0.3;
 const JUMP_FLOOR: f64 = 1e-4;
@@ -103,12 +103,13 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         };
         let mut s = 0.0;
         let mut gamma = *gamma_a;
-        let mut h: f64 = 1.0;
+        let mut path = Path::new(PathOptions::grid_segment(2), 1.0);
         let lost = |s: f64, gamma: Vector3<f64>| Follow {
             reached: None,
             last: (s, gamma),
         };
         while s < 1.0 {
+            // The point is (ξ, s) in the chart around γ, the tangent (dξ/ds, 1).
             let basis = tangent_basis(&gamma);
             let Ok(ce) = chart_eval(&seg, &gamma, &basis, &Vector2::zeros(), s, SEGMENT_DS) else {
                 return lost(s, gamma);
@@ -120,40 +121,43 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             let Some(dxi) = pinv_solve2(&jxi, &(-js), PINV_CUT * scale) else {
                 return lost(s, gamma);
             };
-            loop {
-                let last = h >= 1.0 - s;
-                let step = if last { 1.0 - s } else { h };
-                let s1 = if last { 1.0 } else { s + step };
-                let pred = dxi * step;
-                let (m, p) = seg(s1);
-                let ok = p.is_finite()
-                    && match Self::newton(&m, p, &gamma, &basis, pred) {
-                        Some((xi, l)) => {
-                            let scale1 = l.scale();
-                            let kappa1 = sym2_eigen(&l.restricted()).values;
-                            let near = (xi - pred).norm() <= JUMP_RATIO * pred.norm() + JUMP_FLOOR;
-                            let smooth = (0..2).all(|i| {
-                                (kappa1[i] - kappa0[i]).abs() <= EIGEN_JUMP * scale.max(scale1)
-                            });
-                            if near && smooth {
-                                gamma = l.gamma;
-                                true
-                            } else {
-                                false
-                            }
-                        }
-                        None => false,
-                    };
-                if ok {
-                    s = s1;
-                    h = (2.0 * step).min(1.0);
-                    break;
+            // Newton at the predicted s (exactly the end of the segment on the last step).
+            let correct = |p: &Prediction<3>| {
+                let s1 = if p.at_limit { 1.0 } else { p.point[2] };
+                let pred = Vector2::new(p.point[0], p.point[1]);
+                let (m, mp) = seg(s1);
+                let newton = mp
+                    .is_finite()
+                    .then(|| Self::newton(&m, mp, &gamma, &basis, pred));
+                Ok::<_, Infallible>(newton.flatten().map(|(xi, l)| Corrected {
+                    point: Vector3::new(xi.x, xi.y, s1),
+                    iterations: 0,
+                    value: (pred, l),
+                }))
+            };
+            // Jumps: ξ within `JUMP_RATIO` of its predicted move, the eigenvalues of K within
+            // `EIGEN_JUMP` of the local scale of their values at the start of the step.
+            let check = |p: &Point<3, (Vector2<f64>, Local)>, _| {
+                let (pred, l) = &p.value;
+                let xi = Vector2::new(p.point[0], p.point[1]);
+                let kappa1 = sym2_eigen(&l.restricted()).values;
+                let near = (xi - pred).norm() <= JUMP_RATIO * pred.norm() + JUMP_FLOOR;
+                let smooth = (0..2)
+                    .all(|i| (kappa1[i] - kappa0[i]).abs() <= EIGEN_JUMP * scale.max(l.scale()));
+                if near && smooth {
+                    Check::Accept
+                } else {
+                    Check::Shorten
                 }
-                h = step / 2.0;
-                if h < SEGMENT_MIN_STEP {
-                    return lost(s, gamma);
-                }
-            }
+            };
+            let t = Vector3::new(dxi.x, dxi.y, 1.0);
+            let w = Vector3::new(0.0, 0.0, s);
+            let Ok(step) = path.step(&w, &t, 1.0 - s, correct, |c| Ok(Some(c.bare())), check);
+            let Outcome::Accepted { point, .. } = step else {
+                return lost(s, gamma);
+            };
+            s = point.point[2];
+            gamma = point.value.1.gamma;
         }
         Follow {
             reached: Some(gamma),

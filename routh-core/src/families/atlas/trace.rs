@@ -1,24 +1,22 @@
 //! The boundary curves of the atlas followed by pseudo-arclength continuation from their starts
-//! on the grid edges, with their kind (see the module docs of [`super`], "The boundary curves").
+//! on the grid edges (the crate's predictor–corrector, [`PathOptions::atlas_boundary`]), with
+//! their kind (see the module docs of [`super`], "The boundary curves").
 
 use nalgebra::{Vector2, Vector4};
 
 use super::super::equations::chart;
 use super::super::{BoundaryCurve, EventKind, StopReason};
-use super::curve::{fold_indicator, null_tangent, CurvePoint, Test};
+use super::curve::{fold_indicator, null_tangent, CurvePoint, Ext, Test};
 use super::edge::Seed;
 use super::grid::Node;
 use super::Ctx;
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
 use crate::sphere::tangent_basis;
 
-/// Smallest curve step, relative to `curve_step`.
-const CURVE_MIN_STEP: f64 = 1e-4;
 /// A zero-eigenvalue curve is a fold where [`fold_indicator`] exceeds this.
 const FOLD_INDICATOR: f64 = 1e-6;
-/// Smallest cosine between consecutive tangents of a curve.
-const CURVE_MIN_COS: f64 = 0.8;
 /// Starts closer than this (unit square) to a traced curve of the same class are skipped.
 const DEDUP: f64 = 2e-3;
 
@@ -52,12 +50,11 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         budget: usize,
     ) -> Result<(Vec<(CurvePoint, f64)>, bool), RouthError> {
         let h_max = self.opts.curve_step * std::f64::consts::SQRT_2;
-        let h_min = CURVE_MIN_STEP * h_max;
+        let mut path = Path::new(PathOptions::atlas_boundary(h_max), h_max);
         let mut test = test0;
         let mut pts = Vec::new();
         let mut cur = start;
         let mut t = t0;
-        let mut h = h_max;
         let mut travelled = 0.0;
         let inside = |u: f64, v: f64| (0.0..=1.0).contains(&u) && (0.0..=1.0).contains(&v);
         loop {
@@ -74,27 +71,32 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             }
             let basis = tangent_basis(&cur.gamma);
             let w = Vector4::new(0.0, 0.0, cur.u, cur.v);
-            let pred = w + t * h;
-            let accepted = self
-                .correct(&test, &cur.gamma, &basis, pred, Some((t, t.dot(&pred))))
-                .and_then(|(wc, e, it)| {
-                    if (wc - pred).norm() > 0.5 * h {
-                        return None;
-                    }
-                    let tn = null_tangent(&e.jac, &t)?;
-                    if tn.dot(&t) < CURVE_MIN_COS {
-                        return None;
-                    }
-                    Some((wc, e, it, tn))
-                });
-            let Some((wc, e, it, tn)) = accepted else {
-                h /= 2.0;
-                if h < h_min {
-                    // A cusp, a crossing or the end of the motion: the curve ends here.
-                    return Ok((pts, false));
-                }
-                continue;
+            // In the chart around the current point: the corrector on the test's equations and
+            // the row of the path, the tangent from the null vector of the extended Jacobian.
+            let correct = |p: &Prediction<4>| {
+                let row = p.normal.map(|a| (a, a.dot(&p.point)));
+                Ok::<_, RouthError>(self.correct(&test, &cur.gamma, &basis, p.point, row).map(
+                    |(wc, e, it)| Corrected {
+                        point: wc,
+                        iterations: it,
+                        value: e,
+                    },
+                ))
             };
+            let complete = |c: Corrected<4, Ext>| {
+                Ok(null_tangent(&c.value.jac, &t).map(|tn| Point {
+                    tangent: Some(tn),
+                    ..c.bare()
+                }))
+            };
+            let accepted = path.step(&w, &t, f64::INFINITY, correct, complete, |_, _| {
+                Check::Accept
+            })?;
+            let Outcome::Accepted { point, .. } = accepted else {
+                // A cusp, a crossing or the end of the motion: the curve ends here.
+                return Ok((pts, false));
+            };
+            let (wc, e, tn) = (point.point, point.value, point.tangent.unwrap_or(t));
             if !inside(wc[2], wc[3]) {
                 // Solve the exit point on the edge of the square crossed first.
                 let mut best: Option<(f64, usize, f64)> = None;
@@ -149,9 +151,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 test = Test::Zero(e.pick);
             }
             pts.push((cur, fold_indicator(&e)));
-            if it <= 3 {
-                h = (1.5 * h).min(h_max);
-            }
+            let h = path.h();
             let back = (cur.u - start.u).hypot(cur.v - start.v);
             if travelled > 4.0 * h_max && back < h && (cur.gamma - start.gamma).norm() < 0.1 {
                 let beta = pts[0].1;

@@ -172,10 +172,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             sigma_ref: s / ctx.len,
             c: 0.0,
         };
-        let Some((g, s1, it)) = ctx.correct(&gamma, s / ctx.len, &con, None)? else {
+        let Some((g, s1, _)) = ctx.correct(&gamma, s / ctx.len, &con, None)? else {
             return Ok(Some(NotStarted::Corrector(ctx.failed_residual.get())));
         };
-        let Some(start) = ctx.node(&g, s1, None, it)? else {
+        let Some(start) = ctx.node(&g, s1, None)? else {
             return Ok(Some(NotStarted::Singular));
         };
         // A degenerate point is not a regular point of an isolated branch, and a circle needs

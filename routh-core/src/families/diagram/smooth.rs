@@ -71,7 +71,7 @@ impl<M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'_, M, F> {
             c: 0.0,
         };
         let circle = meridian_normal(&g_p, &ta_g);
-        let Some((g, s, it)) = self.correct(&g_p, s_p, &con, circle)? else {
+        let Some((g, s, _)) = self.correct(&g_p, s_p, &con, circle)? else {
             return Ok(None);
         };
         let moved = ((g - g_p).norm_squared() + (s / len - s_p).powi(2)).sqrt();
@@ -79,7 +79,7 @@ impl<M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'_, M, F> {
         if moved > 0.25 * l || s < a.s.min(b.s) - slack || s > a.s.max(b.s) + slack {
             return Ok(None);
         }
-        let Some(n) = self.node(&g, s, Some((&ta_g, ta_s)), it)? else {
+        let Some(n) = self.node(&g, s, Some((&ta_g, ta_s)))? else {
             return Ok(None);
         };
         let along = (n.tau_g.dot(&dg) + n.tau_s * ds) / l;

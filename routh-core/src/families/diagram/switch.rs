@@ -114,7 +114,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             sigma_ref: n.s / len,
             c: eps,
         };
-        let Some((g, s, it)) = ctx.correct(&g_p, s_p, &con, None)? else {
+        let Some((g, s, _)) = ctx.correct(&g_p, s_p, &con, None)? else {
             return Ok(());
         };
         if s < self.range.0 || s > self.range.1 || (g - n.gamma).norm() < 0.2 * eps {
@@ -123,7 +123,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         if self.covered(s, &g, isolated)? {
             return Ok(());
         }
-        let Some(start) = ctx.node(&g, s, None, it)? else {
+        let Some(start) = ctx.node(&g, s, None)? else {
             return Ok(());
         };
         // Branches of circles need a zero eigenvalue along them; isolated ones must not be

@@ -1,11 +1,13 @@
-//! One direction of one branch: predictor–corrector steps with step control, the events on
-//! each step located by their defining equations, and the ends of the branch.
+//! One direction of one branch: the steps of the crate's predictor–corrector ([`Ctx::path`]) with
+//! the branch's own checks, the events on each step located by their defining equations, and the
+//! ends of the branch.
 
 use super::builder::{dist, Builder, Switch, Traced};
 use crate::error::RouthError;
 use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
 use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
+use crate::path::{Check, Outcome, Point};
 use crate::zero::{ZeroTest, AXIS_REL, EIGEN_REL};
 
 /// Whether a point of a branch of circles is next to the axis of its circles, where they shrink
@@ -57,22 +59,62 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             steps: 0,
             stop: None,
         };
-        let mut h = opts.initial_step;
+        let mut path = ctx.path(budget);
         // The largest eigenvalue of K met along the way (in modulus).
         let mut widest = start.eig[0].abs().max(start.eig[1].abs());
+        // Below this step, events sharing a step or a verdict changing unexplained no longer
+        // shorten it (nor a tangent turning fast: `PathOptions::diagram`).
+        let short = 4.0 * opts.min_step;
         loop {
             let a = out.nodes.last().unwrap().clone();
-            if out.steps >= budget {
-                out.stop = Some(StopReason::MaxSteps {
-                    s: a.s,
-                    gamma: a.gamma,
-                });
-                break;
-            }
-            out.steps += 1;
-            let Some(b) = ctx.advance(&a, h)? else {
-                h *= 0.5;
-                if h < opts.min_step {
+            // A branch of circles has a zero eigenvalue of K all along it (the circle
+            // direction). Where its circles shrink to their axis it crosses the branch of the
+            // pole (where K is a multiple of the identity), and a step can slide onto that
+            // branch: a point with no zero eigenvalue is not a circle. Shorter steps, and next to
+            // the axis the end (`finish` appends the point on the axis).
+            // Shorten the step also when two events share it, or when the verdict changes with
+            // no test function changing sign.
+            let check = |p: &Point<4, Node>, h: f64| {
+                let b = &p.value;
+                if !ctx.isolated && !circle_point(b) {
+                    return if h <= short {
+                        Check::Stop
+                    } else {
+                        Check::Shorten
+                    };
+                }
+                let ch = changes(&a, b, ctx.isolated);
+                let eigen = ch.iter().filter(|c| matches!(c, Change::Eigen(_))).count();
+                let unexplained = ch.is_empty() && a.verdict() != b.verdict();
+                let shared = eigen > 0 && ch.contains(&Change::Discriminant);
+                if (shared || eigen > 1 || unexplained) && h > short {
+                    Check::Shorten
+                } else {
+                    Check::Accept
+                }
+            };
+            let w = a.on_path(ctx.len);
+            let step = path.step(
+                &w,
+                &a.tangent(),
+                f64::INFINITY,
+                ctx.corrector(&a),
+                ctx.completer(&a),
+                check,
+            )?;
+            out.steps = path.attempts();
+            let (b, h) = match step {
+                Outcome::Accepted { point, h } => (point.value, h),
+                Outcome::Exhausted => {
+                    out.stop = Some(StopReason::MaxSteps {
+                        s: a.s,
+                        gamma: a.gamma,
+                    });
+                    break;
+                }
+                Outcome::Stopped(_) => break,
+                Outcome::Stalled(f) => {
+                    ctx.failed(f);
                     // A branch of circles next to its axis (both eigenvalues of K nearly zero:
                     // the circle shrinks to the pole of the symmetry), where the circle direction
                     // is lost in round-off: the rest is the same circles again, down to the axis,
@@ -91,34 +133,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                         }),
                     });
                 }
-                continue;
             };
-            // A branch of circles has a zero eigenvalue of K all along it (the circle
-            // direction). Where its circles shrink to their axis it crosses the branch of the
-            // pole (where K is a multiple of the identity), and a step can slide onto that
-            // branch: a point with no zero eigenvalue is not a circle. Shorter steps, and next to
-            // the axis the end (`finish` appends the point on the axis).
-            if !ctx.isolated && !circle_point(&b) {
-                if h <= 4.0 * opts.min_step {
-                    break;
-                }
-                h *= 0.5;
-                continue;
-            }
-            let cos = a.tau_g.dot(&b.tau_g) + a.tau_s * b.tau_s;
             let ch = changes(&a, &b, ctx.isolated);
             let eigen = ch.iter().any(|c| matches!(c, Change::Eigen(_)));
             let disc = ch.contains(&Change::Discriminant);
-            // Shorten the step when the tangent turns too fast, when two events share it, or
-            // when the verdict changes with no test function changing sign.
-            let unexplained = ch.is_empty() && a.verdict() != b.verdict();
-            let two_eigen = ch.iter().filter(|c| matches!(c, Change::Eigen(_))).count() > 1;
-            if (cos < 0.97 || (eigen && disc) || two_eigen || unexplained)
-                && h > 4.0 * opts.min_step
-            {
-                h *= 0.5;
-                continue;
-            }
             // Leaving the range: end exactly on its boundary.
             if b.s < lo || b.s > hi {
                 let bound = if b.s < lo { lo } else { hi };
@@ -213,7 +231,6 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                     out.nodes.push(e);
                 }
             }
-            let it = b.iterations;
             out.nodes.push(b);
             let first = &out.nodes[0];
             let last = out.nodes.last().unwrap();
@@ -228,13 +245,6 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 out.nodes.push(closing);
                 break;
             }
-            h = if it <= 2 {
-                (1.5 * h).min(opts.max_step)
-            } else if it >= 6 {
-                (0.7 * h).max(opts.min_step)
-            } else {
-                h
-            };
         }
         if !ctx.isolated {
             // A located end that slid onto the branch of the pole is no point of a circle.

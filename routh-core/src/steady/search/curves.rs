@@ -1,12 +1,16 @@
 //! Curves of critical points of the amended potential (circles of steady motions of a symmetric
-//! body): tracing them by continuation of the kernel of the restricted form, testing whether a
+//! body): tracing them by continuation of the kernel of the restricted form (steps of the crate's
+//! predictor–corrector, [`PathOptions::search_curve`]), testing whether a
 //! point lies on one, their axes, and the index (winding number of the gradient) of a degenerate
 //! isolated point for the Morse self-check.
 
 use nalgebra::{Matrix3, SymmetricEigen, Vector2, Vector3};
 
+use std::convert::Infallible;
+
 use super::*;
 use crate::model::Routhian;
+use crate::path::{sphere_head, Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
 
 /// The unit normal of the least-squares plane through `vertices` (the axis of a circle on the
 /// sphere), if there are at least three.
@@ -100,28 +104,46 @@ impl<M: Routhian> Search<'_, M> {
         ((idx - idx.round()).abs() < 0.1).then_some(idx.round() as i64)
     }
 
-    /// A converged, degenerate continuation point from `from` along the direction `dir` with step
-    /// `h`: on the level of `level` and at a distance in `[h/4, 3h]` from `from`. `Err(true)` when
-    /// the iteration came back to `from` itself.
+    /// The next point of a curve from `from` along `dir`, one step of `path` (steps of exactly
+    /// its `h`, [`PathOptions::search_curve`]): Newton ([`Search::refine`]) from the prediction,
+    /// accepted when converged, degenerate, on the level of `level` and at a distance in
+    /// `[h/4, 3h]` from `from`. `Err(true)` when the iteration came back to `from` itself.
     fn continue_from(
         &self,
+        path: &mut Path<3>,
         from: &Local,
         dir: &Vector3<f64>,
-        h: f64,
         level: &Local,
     ) -> Result<Local, bool> {
-        let guess = (from.gamma + h * dir).normalize();
-        let Some(Refined::Converged(loc)) = self.refine(&guess, None) else {
-            return Err(false);
+        let mut back = false;
+        let correct = |p: &Prediction<3>| {
+            Ok::<_, Infallible>(match self.refine(&p.point, None) {
+                Some(Refined::Converged(loc)) => Some(Corrected {
+                    point: loc.gamma,
+                    iterations: 0,
+                    value: loc,
+                }),
+                _ => None,
+            })
         };
-        if same_point(&loc, from) {
-            return Err(true);
-        }
-        let d = (loc.gamma - from.gamma).norm();
-        if same_level(&loc, level) && loc.degenerate() && d >= 0.25 * h && d <= 3.0 * h {
-            Ok(loc)
-        } else {
-            Err(false)
+        let check = |p: &Point<3, Local>, h: f64| {
+            let loc = &p.value;
+            if same_point(loc, from) {
+                back = true;
+                return Check::Shorten;
+            }
+            let d = (loc.gamma - from.gamma).norm();
+            if same_level(loc, level) && loc.degenerate() && d >= 0.25 * h && d <= 3.0 * h {
+                Check::Accept
+            } else {
+                Check::Shorten
+            }
+        };
+        let complete = |c: Corrected<3, Local>| Ok(Some(c.bare()));
+        let Ok(step) = path.step(&from.gamma, dir, f64::INFINITY, correct, complete, check);
+        match step {
+            Outcome::Accepted { point, .. } => Ok(point.value),
+            _ => Err(back),
         }
     }
 
@@ -138,7 +160,9 @@ impl<M: Routhian> Search<'_, M> {
                 if closed {
                     break;
                 }
-                let first = match self.continue_from(start, &(sign * t0), h, start) {
+                let mut path =
+                    Path::new(PathOptions::search_curve(h), h).with_retraction(sphere_head);
+                let first = match self.continue_from(&mut path, start, &(sign * t0), start) {
                     Ok(first) => first,
                     Err(back) => {
                         returned += usize::from(back);
@@ -153,7 +177,7 @@ impl<M: Routhian> Search<'_, M> {
                     if t.dot(&(cur.gamma - prev)) < 0.0 {
                         t = -t;
                     }
-                    let Ok(next) = self.continue_from(&cur, &t, h, start) else {
+                    let Ok(next) = self.continue_from(&mut path, &cur, &t, start) else {
                         break;
                     };
                     branch.push(next.gamma);
