@@ -505,6 +505,8 @@ mod tests {
     /// A point of a fixed-chart test problem: the unknowns and the equations there.
     type At = (Vector4<f64>, Linearised);
 
+    // A test helper: the iterate is returned by value, as `solve` returns it.
+    #[allow(clippy::result_large_err)]
     fn run(
         newton: &Newton,
         w0: Vector4<f64>,
