@@ -176,7 +176,14 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             if xi.norm() > 0.5 || !sigma.is_finite() {
                 return Ok(None);
             }
-            let e = chart_eval(self.family, gamma_p, &basis, &xi, sigma * self.len, self.ds())?;
+            let e = chart_eval(
+                self.family,
+                gamma_p,
+                &basis,
+                &xi,
+                sigma * self.len,
+                self.ds(),
+            )?;
             let sc = self.scale.max(e.local.scale()).max(f64::MIN_POSITIVE);
             let mut jac = Matrix4::zeros();
             for i in 0..2 {
@@ -204,7 +211,11 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             |_| false,
         )?;
         match out {
-            Ok(s) => Ok(Some((s.point.0.gamma, (sigma_p + s.w[2]) * self.len, s.iterations))),
+            Ok(s) => Ok(Some((
+                s.point.0.gamma,
+                (sigma_p + s.w[2]) * self.len,
+                s.iterations,
+            ))),
             Err(stop) => failed(stop.best_residual),
         }
     }

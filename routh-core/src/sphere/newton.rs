@@ -229,6 +229,7 @@ impl Newton {
     /// iterate at `w = w(p) + d` (`Ok(None)` where it cannot: outside the chart, non-finite);
     /// `interrupt(p)` is asked before every step and stops the iteration when it returns `true`.
     /// Errors of `next` are returned as they are.
+    #[inline]
     pub(crate) fn solve<P, E>(
         &self,
         w0: Vector4<f64>,
@@ -246,7 +247,13 @@ impl Newton {
         let mut prev = f64::INFINITY;
         let mut last_step = f64::INFINITY;
         let mut lambda = 0.0f64;
-        let stop = |why, last, best| Ok(Err(Stop { why, last, best_residual: best }));
+        let stop = |why, last, best| {
+            Ok(Err(Stop {
+                why,
+                last,
+                best_residual: best,
+            }))
+        };
         for it in 0..=self.max_iter {
             if !(l.residual.is_finite() && l.rows.iter().all(|v| v.is_finite())) {
                 return stop(Why::NonFinite, cur, best);
@@ -302,8 +309,7 @@ impl Newton {
             let tries = if norm <= l.noise { 1 } else { MAX_LM_RETRIES };
             let smax2: f64 = if sys.smax > 0.0 { 1.0 } else { 0.0 };
             let lambda_min = (l.zero / sys.unit).powi(2);
-            let mut accepted = None;
-            let mut any = false;
+            let (mut accepted, mut any) = (false, false);
             for _ in 0..tries {
                 let mut d = sys.step(lambda, Some(l.noise));
                 let len = d.norm();
@@ -317,7 +323,7 @@ impl Newton {
                         if norm4(&ln.rows) < norm {
                             best = best.min(ln.residual);
                             last_step = d.norm();
-                            accepted = Some((n, ln, d));
+                            (w, cur, l, accepted) = (w + d, n, ln, true);
                             break;
                         }
                     }
@@ -332,25 +338,21 @@ impl Newton {
                 }
                 lambda = grown;
             }
-            match accepted {
-                Some((n, ln, d)) => {
-                    w += d;
-                    cur = n;
-                    l = ln;
-                    lambda = if lambda <= 1e-6 * smax2 {
-                        0.0
-                    } else {
-                        lambda / 10.0
-                    };
-                }
-                None if !any => return stop(Why::Singular, cur, best),
-                None => return stop(Why::NoDecrease, cur, best),
+            if !accepted {
+                let why = if any { Why::NoDecrease } else { Why::Singular };
+                return stop(why, cur, best);
             }
+            lambda = if lambda <= 1e-6 * smax2 {
+                0.0
+            } else {
+                lambda / 10.0
+            };
         }
         stop(Why::MaxIterations, cur, best)
     }
 
     /// The one convergence rule (module docs); `rhs[first..]` are the linear rows' residuals.
+    #[inline(always)]
     fn converged(
         &self,
         l: &Linearised,
@@ -369,12 +371,13 @@ impl Newton {
     }
 }
 
-/// The linear system of one step: singular triplets of the Jacobian (with the linear rows), in
-/// units of its largest singular value.
+/// The linear system of one step: the first `n` singular triplets of the Jacobian (with the
+/// linear rows), in units of its largest singular value.
 struct System {
-    /// Singular values / `unit`.
+    n: usize,
+    /// Singular values / `unit` (signed eigenvalues for [`Jacobian::Symmetric2`]).
     s: [f64; 4],
-    /// Left singular vectors' components of the right-hand side, / `unit`.
+    /// Components of the right-hand side along the left singular vectors, / `unit`.
     c: [f64; 4],
     /// Right singular vectors.
     v: [Vector4<f64>; 4],
@@ -387,6 +390,7 @@ struct System {
 
 impl System {
     /// `None` when the Jacobian or the right-hand side is not finite.
+    #[inline(always)]
     fn new(l: &Linearised, rows: &[Row], rhs: Vector4<f64>, cut: f64) -> Option<System> {
         if !rhs.iter().all(|v| v.is_finite()) {
             return None;
@@ -400,64 +404,76 @@ impl System {
                 let unit = if kmax > 0.0 { kmax } else { 1.0 };
                 let r = Vector2::new(rhs[0], rhs[1]);
                 let pad = |x: &Vector2<f64>| Vector4::new(x.x, x.y, 0.0, 0.0);
+                // u = sign(k)·v: the sign goes with the value, so that s·c = k·(v·r).
                 Some(System {
-                    // u = sign(k)·v: the sign goes with the component, so that s·c = k·(v·r).
+                    n: 2,
                     s: [values[0] / unit, values[1] / unit, 0.0, 0.0],
-                    c: [vectors[0].dot(&r) / unit, vectors[1].dot(&r) / unit, 0.0, 0.0],
-                    v: [pad(&vectors[0]), pad(&vectors[1]), Vector4::zeros(), Vector4::zeros()],
+                    c: [
+                        vectors[0].dot(&r) / unit,
+                        vectors[1].dot(&r) / unit,
+                        0.0,
+                        0.0,
+                    ],
+                    v: [
+                        pad(&vectors[0]),
+                        pad(&vectors[1]),
+                        Vector4::zeros(),
+                        Vector4::zeros(),
+                    ],
                     cut: (cut * kmax).max(l.zero) / unit,
                     smax: kmax / unit,
                     unit,
                 })
             }
-            _ => {
-                let mut m = l.jac.matrix();
-                let first = 4 - rows.len();
-                for (k, r) in rows.iter().enumerate() {
-                    m.set_row(first + k, &r.a.transpose());
-                }
-                let a = m.amax();
-                if !a.is_finite() {
-                    return None;
-                }
-                let scale = if a > 0.0 { a } else { 1.0 };
-                let svd = (m / scale).svd(true, true);
-                let (u, vt) = (svd.u?, svd.v_t?);
-                let sv = svd.singular_values;
-                let smax = sv.max();
-                let unit = if smax > 0.0 { smax * scale } else { scale };
-                let r = rhs / unit;
-                let mut out = System {
-                    s: [0.0; 4],
-                    c: [0.0; 4],
-                    v: [Vector4::zeros(); 4],
-                    cut: (cut * smax * scale).max(l.zero) / unit,
-                    smax: smax * scale / unit,
-                    unit,
-                };
-                for i in 0..4 {
-                    out.s[i] = sv[i] * scale / unit;
-                    out.c[i] = u.column(i).dot(&r);
-                    out.v[i] = vt.row(i).transpose();
-                }
-                Some(out)
-            }
+            _ => Self::general(l, rows, rhs, cut),
         }
+    }
+
+    /// The SVD of the padded 4×4 (rows of the caller, then the linear rows).
+    fn general(l: &Linearised, rows: &[Row], rhs: Vector4<f64>, cut: f64) -> Option<System> {
+        let mut m = l.jac.matrix();
+        let first = 4 - rows.len();
+        for (k, r) in rows.iter().enumerate() {
+            m.set_row(first + k, &r.a.transpose());
+        }
+        let a = m.amax();
+        if !a.is_finite() {
+            return None;
+        }
+        let scale = if a > 0.0 { a } else { 1.0 };
+        let svd = (m / scale).svd(true, true);
+        let (u, vt) = (svd.u?, svd.v_t?);
+        let sv = svd.singular_values;
+        let smax = sv.max();
+        let unit = if smax > 0.0 { smax * scale } else { scale };
+        let r = rhs / unit;
+        let mut out = System {
+            n: 4,
+            s: [0.0; 4],
+            c: [0.0; 4],
+            v: [Vector4::zeros(); 4],
+            cut: (cut * smax * scale).max(l.zero) / unit,
+            smax: smax * scale / unit,
+            unit,
+        };
+        for i in 0..4 {
+            out.s[i] = sv[i] * scale / unit;
+            out.c[i] = u.column(i).dot(&r);
+            out.v[i] = vt.row(i).transpose();
+        }
+        Some(out)
     }
 
     /// The step `−(JᵀJ + λ)⁺Jᵀr` (λ relative to `unit²`). A direction whose singular value is
     /// below the cut is dropped — with `noise` (damped steps), only when the residual's
     /// component along it is within the noise (a component above it is corrected, damped).
+    #[inline(always)]
     fn step(&self, lambda: f64, noise: Option<f64>) -> Vector4<f64> {
         let mut d = Vector4::zeros();
-        for i in 0..4 {
+        for i in 0..self.n {
             let (s, c) = (self.s[i], self.c[i]);
-            if s.abs() <= self.cut {
-                match noise {
-                    None => continue,
-                    Some(n) if (c * self.unit).abs() <= n => continue,
-                    Some(_) => {}
-                }
+            if s.abs() <= self.cut && noise.is_none_or(|n| (c * self.unit).abs() <= n) {
+                continue;
             }
             let den = s * s + lambda;
             if den > 0.0 {
@@ -470,7 +486,7 @@ impl System {
 
 /// `|x|` of a 4-vector without overflow or underflow, and without the cost of scaling when none
 /// is possible.
-#[inline]
+#[inline(always)]
 pub(crate) fn norm4(x: &Vector4<f64>) -> f64 {
     let s = x.norm_squared();
     if s.is_normal() || s == 0.0 && x.iter().all(|v| *v == 0.0) {
@@ -489,6 +505,8 @@ mod tests {
     /// A point of a fixed-chart test problem: the unknowns and the equations there.
     type At = (Vector4<f64>, Linearised);
 
+    // A test helper: the iterate is returned by value, as `solve` returns it.
+    #[allow(clippy::result_large_err)]
     fn run(
         newton: &Newton,
         w0: Vector4<f64>,
@@ -528,10 +546,19 @@ mod tests {
             a: Vector4::new(1.0, -1.0, 0.0, 0.0),
             b: 0.2,
         };
-        let s = run(&Newton::continuation(1e-14), Vector4::new(1.0, 0.5, 0.0, 0.0), &[row], f)
-            .expect("converges");
+        let s = run(
+            &Newton::continuation(1e-14),
+            Vector4::new(1.0, 0.5, 0.0, 0.0),
+            &[row],
+            f,
+        )
+        .expect("converges");
         let x = 0.5 * (0.2 + 1.96f64.sqrt());
-        assert!((s.w[0] - x).abs() < 1e-13 && (s.w[1] - (x - 0.2)).abs() < 1e-13, "{}", s.w);
+        assert!(
+            (s.w[0] - x).abs() < 1e-13 && (s.w[1] - (x - 0.2)).abs() < 1e-13,
+            "{}",
+            s.w
+        );
         assert!(s.iterations <= 6, "{}", s.iterations);
     }
 
@@ -573,9 +600,18 @@ mod tests {
                 floor: 0.0,
             }
         };
-        let s = run(&Newton::search(100, 1e-12), Vector4::new(-3.0, 2.0, 0.0, 0.0), &[], f)
-            .expect("converges");
-        assert!((s.w[0] - 1.0).abs() < 1e-12 && s.w[1].abs() < 1e-12, "{}", s.w);
+        let s = run(
+            &Newton::search(100, 1e-12),
+            Vector4::new(-3.0, 2.0, 0.0, 0.0),
+            &[],
+            f,
+        )
+        .expect("converges");
+        assert!(
+            (s.w[0] - 1.0).abs() < 1e-12 && s.w[1].abs() < 1e-12,
+            "{}",
+            s.w
+        );
     }
 
     /// The stops say why: a far root with a step cap (StepTooLong), no root (`x² + 1`, damped:
@@ -591,8 +627,13 @@ mod tests {
         let e = run(&Newton::grid(), Vector4::zeros(), &[], far).expect_err("capped");
         assert_eq!(e.why, Why::StepTooLong);
         let none = |w: &Vector4<f64>| lin(w[0] * w[0] + 1.0, 2.0 * w[0]);
-        let e = run(&Newton::search(50, 1e-10), Vector4::new(0.7, 0.0, 0.0, 0.0), &[], none)
-            .expect_err("no root");
+        let e = run(
+            &Newton::search(50, 1e-10),
+            Vector4::new(0.7, 0.0, 0.0, 0.0),
+            &[],
+            none,
+        )
+        .expect_err("no root");
         assert!(
             matches!(e.why, Why::NoDecrease | Why::Singular | Why::MaxIterations),
             "{:?}",
@@ -608,6 +649,12 @@ mod tests {
             |_, w, _| Ok(Some((*w, far(w)))),
             |_| true,
         );
-        assert!(matches!(r, Ok(Err(Stop { why: Why::Interrupted, .. }))));
+        assert!(matches!(
+            r,
+            Ok(Err(Stop {
+                why: Why::Interrupted,
+                ..
+            }))
+        ));
     }
 }

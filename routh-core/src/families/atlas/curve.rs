@@ -204,7 +204,14 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         let rows = extra.map(|(a, b)| Row { a, b });
         let start = eval(&w0).ok()??;
         let out = Newton::curve(self.opts.curve_tol)
-            .solve(w0, rows.as_slice(), start, |p| p.1, |_, w, _| eval(w), |_| false)
+            .solve(
+                w0,
+                rows.as_slice(),
+                start,
+                |p| p.1,
+                |_, w, _| eval(w),
+                |_| false,
+            )
             .ok()?;
         out.ok().map(|s| (s.w, s.point.0, s.iterations))
     }

@@ -525,7 +525,14 @@ impl<M: Routhian> Search<'_, M> {
             })
         };
         let newton = Newton::search(self.max_iterations, self.gradient_tol);
-        let out = match newton.solve(Vector4::zeros(), &[], start, Local::linearised, next, joined) {
+        let out = match newton.solve(
+            Vector4::zeros(),
+            &[],
+            start,
+            Local::linearised,
+            next,
+            joined,
+        ) {
             Ok(out) => out,
             Err(never) => match never {},
         };
