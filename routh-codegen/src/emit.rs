@@ -172,23 +172,26 @@ impl<'a> Emitter<'a> {
     /// the other order needs a register copy. Measured on the bench models (docs/performance.md,
     /// 2026-11-26): the gyrostat's `bundle_and_system` compiles to 501 instructions instead of
     /// 521, and its `bundle` then `from_bundle` runs 6 % faster; the ellipsoid's runs 2–3 % slower.
-    fn commutative(&self, out: &mut String, a: Id, op: &str, b: Id) {
-        let (first, second) = if a > b { (a, b) } else { (b, a) };
+    fn commutative(&self, out: &mut String, a: Id, op: &str, b: Id, rank: &[u32]) {
+        let key = |x: Id| (rank.get(x.index()).copied().unwrap_or(0), x);
+        let (first, second) = if key(a) > key(b) { (a, b) } else { (b, a) };
         self.binary(out, first, op, second);
     }
 
-    fn expr(&self, out: &mut String, id: Id, plan: &Plan) {
+    /// The right side of statement `id`; `rank[i]` is 1 + the position of statement `i` in
+    /// the body (0 for leaves), which decides the order of commutative operands.
+    fn expr(&self, out: &mut String, id: Id, plan: &Plan, rank: &[u32]) {
         let g = self.g();
         match g.node(id) {
             Node::Add(a, b) => match (plan.folds(g, id, a), plan.folds(g, id, b)) {
                 (_, Some(x)) => self.binary(out, a, " - ", x),
                 (Some(x), _) => self.binary(out, b, " - ", x),
-                _ => self.commutative(out, a, " + ", b),
+                _ => self.commutative(out, a, " + ", b, rank),
             },
             Node::Mul(a, b) => match (plan.folds(g, id, a), plan.folds(g, id, b)) {
                 (_, Some(x)) => self.binary(out, a, " / ", x),
                 (Some(x), _) => self.binary(out, b, " / ", x),
-                _ => self.commutative(out, a, " * ", b),
+                _ => self.commutative(out, a, " * ", b, rank),
             },
             Node::Neg(a) => {
                 out.push('-');
@@ -269,24 +272,21 @@ impl<'a> Emitter<'a> {
         // Statements are untyped: every operand is an input local declared `__F64`, a literal
         // suffixed `f64` or an earlier statement, so each type is inferred, and the text has two
         // tokens fewer per statement (lexing this text is most of what expansion costs).
-        // Every node a part needs has an id at most that of the part's largest output (children
-        // come before parents), so writing the statements in id order up to it completes the
-        // part.
-        let mut statements = plan.statements(g).peekable();
+        // The statements each part needs (and no earlier part did) are written before the
+        // part is closed, in latency order (`crate::order`).
+        let groups = crate::order::latency_order(g, &plan, parts);
+        let mut rank = vec![0u32; plan.emit.len()];
+        for (k, id) in groups.iter().flatten().enumerate() {
+            rank[id.index()] = k as u32 + 1;
+        }
         let mut names = Vec::with_capacity(parts.len());
         for (k, part) in parts.iter().enumerate() {
-            // The last part takes whatever is left.
-            let last = part.iter().max().copied().filter(|_| k + 1 < parts.len());
-            while let Some(&id) = statements.peek() {
-                if last.is_some_and(|l| id > l) {
-                    break;
-                }
+            for &id in groups.get(k).into_iter().flatten() {
                 out.push_str("let ");
                 local(out, id);
                 out.push_str(" = ");
-                self.expr(out, id, &plan);
+                self.expr(out, id, &plan, &rank);
                 out.push_str(";\n");
-                statements.next();
             }
             let part_names: Vec<String> = part
                 .iter()

@@ -18,6 +18,7 @@ pub mod inertia;
 pub mod latex;
 pub mod layout;
 pub mod lower;
+pub mod order;
 pub mod reduce;
 pub mod tape;
 
