@@ -106,8 +106,7 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
     let mut ready_at = vec![0u64; stmts.len()];
     let mut groups = vec![Vec::new(); parts.len().max(1)];
     // Statements whose operands are all written, by part: (ready slot, statement).
-    let mut pending: Vec<BinaryHeap<Reverse<(u64, usize)>>> =
-        vec![BinaryHeap::new(); groups.len()];
+    let mut pending: Vec<BinaryHeap<Reverse<(u64, usize)>>> = vec![BinaryHeap::new(); groups.len()];
     for (k, w) in waiting.iter().enumerate() {
         if *w == 0 {
             pending[part_of[k]].push(Reverse((0, k)));
