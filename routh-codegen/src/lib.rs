@@ -4,8 +4,9 @@
 //!
 //! Pipeline: [`attr`] parses the struct and its `#[lagrangian(...)]` items, [`check`] applies the
 //! semantic rules, [`lower`] turns the DSL's expressions into a `routh_symbolic::Graph`,
-//! [`reduce`] derives the Routh reduction, [`emit`] writes the impls ([`layout`] names the outputs
-//! of the methods that return many at once, for both). Every stage records its
+//! [`reduce`] derives the Routh reduction ([`system`]: A, G, C of (64)), [`emit`] writes the
+//! impls ([`methods`]: one generated method each; [`order`]: the order of the statements;
+//! [`layout`] names the outputs of the methods that return many at once, for both). Every stage records its
 //! errors in a [`ctxt::Ctxt`] and carries on, so all mistakes of an attribute are reported at
 //! once; on error the output is `compile_error!`s plus a stub impl, so no follow-on errors appear.
 
@@ -18,7 +19,10 @@ pub mod inertia;
 pub mod latex;
 pub mod layout;
 pub mod lower;
+pub mod methods;
+pub mod order;
 pub mod reduce;
+pub mod system;
 pub mod tape;
 
 use proc_macro2::{Ident, Span, TokenStream};
@@ -126,7 +130,7 @@ pub fn expand_with(
     let split = model.rank_one.as_ref();
     let lag_text = e.lagrangian_methods(&model.outputs, &model.equations, split);
     let mut routh_text = e.routhian_methods(&model.outputs, &model.equations, split);
-    emit::tapes(&mut routh_text, &model.lowered.sym, &model.outputs).map_err(|e| {
+    methods::tapes(&mut routh_text, &model.lowered.sym, &model.outputs).map_err(|e| {
         syn::Error::new_spanned(
             &di.ident,
             format!("internal error in #[derive(Lagrangian)]: invalid tape ({e})"),

@@ -157,8 +157,12 @@ impl GyroscopicSystem {
     ///   `Mᵀγ = −∂R/∂Ω` for every Routh function, so `2G = (tr M)[γ]×` — no matrix product
     ///   (docs/method.md §4; the same closed form as the generated `gyroscopic_system`). A
     ///   bundle that violates (17) is not the derivatives of a Routh function;
-    /// - `C = [γ]×ᵀ K [γ]×`, `K = μE − ∂²R/∂γ²`, as `Y = K[γ]×` and `C = [γ]×ᵀY` with the zeros of
-    ///   `[γ]×` skipped and only the upper triangle of the symmetric `C` formed.
+    /// - `C = [γ]×ᵀ(μE − ∂²R/∂γ²)[γ]× = [γ]× N [γ]×` with `N = ∂²R/∂γ² − μE` (the two signs
+    ///   cancel, `[γ]×ᵀ = −[γ]×`), as `Y = N[γ]×` and `C = [γ]×Y` with the zeros of `[γ]×`
+    ///   skipped, every entry one difference of two products and only the upper triangle of the
+    ///   symmetric `C` formed: the form the derive writes (`stiffness_sandwich` in
+    ///   routh-codegen), so that both give the same C. `∂²R/∂γ²` is taken as symmetric (it is a
+    ///   Hessian); its entries are read as they are.
     ///
     /// `#[inline]`: a caller in another crate (the default [`Routhian::bundle_and_system`], a
     /// bench) would otherwise call it out of line and reload the bundle from memory.
@@ -170,27 +174,26 @@ impl GyroscopicSystem {
         let g = (half_tr * gamma).cross_matrix();
         let h = &bundle.d2r_dgamma2;
         let mu = bundle.dr_dgamma.dot(gamma);
-        // K = μE − H, symmetrised (H is symmetric up to round-off).
-        let k01 = -0.5 * (h[(0, 1)] + h[(1, 0)]);
-        let k02 = -0.5 * (h[(0, 2)] + h[(2, 0)]);
-        let k12 = -0.5 * (h[(1, 2)] + h[(2, 1)]);
-        let (k00, k11, k22) = (mu - h[(0, 0)], mu - h[(1, 1)], mu - h[(2, 2)]);
-        // Y = K[γ]×, columns of [γ]×: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0); Y₀₀ is not read.
-        let y01 = k02 * g0 - k00 * g2;
-        let y02 = k00 * g1 - k01 * g0;
-        let y10 = k11 * g2 - k12 * g1;
-        let y11 = k12 * g0 - k01 * g2;
-        let y12 = k01 * g1 - k11 * g0;
-        let y20 = k12 * g2 - k22 * g1;
-        let y21 = k22 * g0 - k02 * g2;
-        let y22 = k02 * g1 - k12 * g0;
-        // C = [γ]×ᵀY, rows of [γ]×ᵀ: (0, g2, −g1), (−g2, 0, g0), (g1, −g0, 0).
-        let c00 = g2 * y10 - g1 * y20;
-        let c01 = g2 * y11 - g1 * y21;
-        let c02 = g2 * y12 - g1 * y22;
-        let c11 = g0 * y21 - g2 * y01;
-        let c12 = g0 * y22 - g2 * y02;
-        let c22 = g1 * y02 - g0 * y12;
+        // N = H − μE: the off-diagonal entries are H's own (H is symmetric).
+        let (n00, n11, n22) = (h[(0, 0)] - mu, h[(1, 1)] - mu, h[(2, 2)] - mu);
+        let (n01, n02, n10) = (h[(0, 1)], h[(0, 2)], h[(1, 0)]);
+        let (n12, n20, n21) = (h[(1, 2)], h[(2, 0)], h[(2, 1)]);
+        // Y = N[γ]×, rows of [γ]×: (0, −g2, g1), (g2, 0, −g0), (−g1, g0, 0); Y₀₀ is not read.
+        let y01 = n02 * g0 - n00 * g2;
+        let y02 = n00 * g1 - n01 * g0;
+        let y10 = n11 * g2 - n12 * g1;
+        let y11 = n12 * g0 - n10 * g2;
+        let y12 = n10 * g1 - n11 * g0;
+        let y20 = n21 * g2 - n22 * g1;
+        let y21 = n22 * g0 - n20 * g2;
+        let y22 = n20 * g1 - n21 * g0;
+        // C = [γ]×Y, upper triangle.
+        let c00 = g1 * y20 - g2 * y10;
+        let c01 = g1 * y21 - g2 * y11;
+        let c02 = g1 * y22 - g2 * y12;
+        let c11 = g2 * y01 - g0 * y21;
+        let c12 = g2 * y02 - g0 * y22;
+        let c22 = g0 * y12 - g1 * y02;
         #[rustfmt::skip]
         let c = Matrix3::new(
             c00, c01, c02,

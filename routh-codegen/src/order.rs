@@ -1,0 +1,199 @@
+//! The order in which a method's statements are written: a list scheduler over the plan's DAG
+//! by critical-path height, for latency.
+//!
+//! Any order with children before parents is a valid order for the straight-line body (every
+//! shared value is still computed once). Increasing id is one; [`latency_order`] is another:
+//! it simulates an in-order machine issuing [`ISSUE_WIDTH`] operations per cycle with the
+//! latencies of [`latency`], and at each cycle writes, among the statements whose operands are
+//! ready, the one with the longest latency-weighted path to an output. The division of `γᵀJγ`
+//! and everything it needs come first; the work independent of it fills its latency.
+
+use routh_symbolic::{Func, Graph, Id, Node, Plan};
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+/// Operations the simulated machine issues per cycle (two floating-point ports).
+pub const ISSUE_WIDTH: u32 = 2;
+
+/// Latency of a statement in cycles, as written (a product folding a reciprocal is a division):
+/// roughly those of a current x86 core (add, mul 4; div 14; sqrt 18; a call 40).
+pub fn latency(g: &Graph, plan: &Plan, id: Id) -> u32 {
+    const DIV: u32 = 14;
+    match g.node(id) {
+        Node::Add(..) => 4,
+        Node::Mul(a, b) => {
+            if plan.folds(g, id, a).is_some() || plan.folds(g, id, b).is_some() {
+                DIV
+            } else {
+                4
+            }
+        }
+        Node::Neg(_) => 1,
+        Node::Recip(_) => DIV,
+        Node::Powi(_, 2) => 4,
+        Node::Powi(_, 3) => 8,
+        Node::Func(Func::Sqrt, _) => 18,
+        Node::Func(Func::Abs | Func::Sign, _) => 2,
+        Node::Powi(..) | Node::Powf(..) | Node::Func(..) => 40,
+        Node::Const(_) | Node::Var(_) => 0,
+    }
+}
+
+/// The plan's statements, grouped by part (the statements part `k` needs that no earlier part
+/// needed), each group in latency order (see the module documentation). Every statement
+/// appears once, after the statements it reads.
+pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
+    let stmts: Vec<Id> = plan.statements(g).collect();
+    let n = plan.emit.len();
+    // Dense index of each statement; `usize::MAX` for leaves.
+    let mut slot = vec![usize::MAX; n];
+    for (k, id) in stmts.iter().enumerate() {
+        slot[id.index()] = k;
+    }
+    let operands: Vec<Vec<usize>> = stmts
+        .iter()
+        .map(|&id| {
+            let mut ops: Vec<usize> = plan
+                .operands(g, id)
+                .into_iter()
+                .map(|c| slot[c.index()])
+                .filter(|&s| s != usize::MAX)
+                .collect();
+            ops.dedup();
+            ops
+        })
+        .collect();
+    let mut users = vec![Vec::new(); stmts.len()];
+    for (k, ops) in operands.iter().enumerate() {
+        for &o in ops {
+            users[o].push(k);
+        }
+    }
+    let lat: Vec<u32> = stmts.iter().map(|&id| latency(g, plan, id)).collect();
+    // Height: the latency-weighted longest path from a statement to an output (users come
+    // after their operands in id order, so one backward sweep).
+    let mut height = vec![0u32; stmts.len()];
+    for k in (0..stmts.len()).rev() {
+        let above = users[k].iter().map(|&u| height[u]).max().unwrap_or(0);
+        height[k] = lat[k] + above;
+    }
+    // Which part first needs each statement.
+    let mut part_of = vec![usize::MAX; stmts.len()];
+    for (p, outs) in parts.iter().enumerate() {
+        let mut stack: Vec<usize> = outs
+            .iter()
+            .map(|o| slot.get(o.index()).copied().unwrap_or(usize::MAX))
+            .filter(|&s| s != usize::MAX)
+            .collect();
+        while let Some(k) = stack.pop() {
+            if part_of[k] != usize::MAX {
+                continue;
+            }
+            part_of[k] = p;
+            stack.extend(operands[k].iter().copied());
+        }
+    }
+    // Statements no part claims (none, for a plan built from the parts' outputs) go last.
+    let last = parts.len().saturating_sub(1);
+    for p in &mut part_of {
+        if *p == usize::MAX {
+            *p = last;
+        }
+    }
+
+    let mut waiting: Vec<u32> = operands.iter().map(|o| o.len() as u32).collect();
+    // Cycle (in issue slots: ISSUE_WIDTH per cycle) at which each operand's value is ready.
+    let mut ready_at = vec![0u64; stmts.len()];
+    let mut groups = vec![Vec::new(); parts.len().max(1)];
+    // Statements whose operands are all written, by part: (ready slot, statement).
+    let mut pending: Vec<BinaryHeap<Reverse<(u64, usize)>>> = vec![BinaryHeap::new(); groups.len()];
+    for (k, w) in waiting.iter().enumerate() {
+        if *w == 0 {
+            pending[part_of[k]].push(Reverse((0, k)));
+        }
+    }
+    let width = u64::from(ISSUE_WIDTH);
+    let mut now = 0u64;
+    for p in 0..groups.len() {
+        // Ready statements of this part: highest first, then the smaller id.
+        let mut ready: BinaryHeap<(u32, Reverse<usize>)> = BinaryHeap::new();
+        loop {
+            while let Some(&Reverse((at, k))) = pending[p].peek() {
+                if at > now {
+                    break;
+                }
+                pending[p].pop();
+                ready.push((height[k], Reverse(k)));
+            }
+            let Some((_, Reverse(k))) = ready.pop() else {
+                match pending[p].peek() {
+                    Some(&Reverse((at, _))) => {
+                        now = at;
+                        continue;
+                    }
+                    None => break,
+                }
+            };
+            groups[p].push(stmts[k]);
+            let done = now + u64::from(lat[k]) * width;
+            now += 1;
+            for &u in &users[k] {
+                ready_at[u] = ready_at[u].max(done);
+                waiting[u] -= 1;
+                if waiting[u] == 0 {
+                    // A later part's statement waits for its part (and is ready by then).
+                    pending[part_of[u]].push(Reverse((ready_at[u], u)));
+                }
+            }
+        }
+    }
+    groups
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use routh_symbolic::Graph;
+
+    /// Every statement once, after its operands; the division's chain first; parts in order.
+    #[test]
+    fn valid_order_with_the_division_first() {
+        let mut g = Graph::new();
+        let x = g.var("x");
+        let y = g.var("y");
+        let z = g.var("z");
+        // s = x·x + y·y (the chain to the division), r = 1/s; independent work w = (y·z + z)·z.
+        let xx = g.mul(x, x);
+        let yy = g.mul(y, y);
+        let s = g.add(xx, yy);
+        let yz = g.mul(y, z);
+        let w0 = g.add(yz, z);
+        let w = g.mul(w0, z);
+        let r = g.recip(s);
+        let out = g.mul(r, w);
+        let side = g.add(w, x);
+        let plan = Plan::new(&g, &[out, side]);
+        let groups = latency_order(&g, &plan, &[&[side], &[out]]);
+        // `side` needs w0, yz, w: part 0; the rest part 1.
+        let pos = |id: Id| {
+            groups
+                .iter()
+                .flatten()
+                .position(|&s| s == id)
+                .expect("every statement written")
+        };
+        let all: Vec<Id> = groups.iter().flatten().copied().collect();
+        let stmts: Vec<Id> = plan.statements(&g).collect();
+        assert_eq!(all.len(), stmts.len());
+        for &id in &all {
+            for c in plan.operands(&g, id) {
+                if stmts.contains(&c) {
+                    assert!(pos(c) < pos(id), "operand after its user");
+                }
+            }
+        }
+        assert!(groups[0].contains(&side) && !groups[0].contains(&out));
+        // Part 1 starts with the chain to the division, not with what is already done.
+        assert_eq!(groups[1][0], xx.min(yy));
+    }
+}
