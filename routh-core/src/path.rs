@@ -7,9 +7,9 @@
 //!   ([`Row::Arclength`], `h` an arclength), a fixed parameter `w_k = w_pred,k` ([`Row::Parameter`],
 //!   natural-parameter stepping, `h` a step in `w_k`), or none ([`Row::Free`]: the curve is a set
 //!   of solutions of a square system and the corrector slides to the nearest one).
-//! - **Corrector**: a closure of the caller (each analysis has its own Newton on its own
-//!   equations), then a second closure that completes an accepted point (its tangent, its test
-//!   functions).
+//! - **Corrector**: a closure of the caller (each analysis's own equations, solved by the one
+//!   Newton corrector, `sphere::newton`), then a second closure that completes an accepted point
+//!   (its tangent, its test functions).
 //! - **Acceptance**: the distance from the prediction at most `max_move·h + move_floor` (a larger
 //!   move is a jump to another curve), the cosine between consecutive tangents at least
 //!   `min_cos`, and the caller's check (jumps of its test functions, events sharing a step).
