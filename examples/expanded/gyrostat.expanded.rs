@@ -512,60 +512,60 @@ const _: () = {
             let __t114 = __t113 + __t112;
             let __t116 = __t76 * __v27;
             let __t122 = __t121 + __t120;
-            let __t1423 = __v4 * __v2;
-            let __t1424 = __v5 * __v1;
-            let __t1427 = __v5 * __v0;
-            let __t1428 = __v3 * __v2;
+            let __t1414 = __v4 * __v2;
+            let __t1415 = __v5 * __v1;
+            let __t1418 = __v5 * __v0;
+            let __t1419 = __v3 * __v2;
             let __t91 = __t68 + __t36;
             let __t95 = __t69 + __t41;
             let __t99 = __t70 + __t46;
             let __t107 = __t106 - __t100;
             let __t115 = __t114 - __t108;
             let __t123 = __t122 - __t116;
-            let __t1426 = __t1423 - __t1424;
-            let __t1430 = __t1427 - __t1428;
-            let __t1431 = __v3 * __v1;
-            let __t1432 = __v4 * __v0;
-            let __t1450 = __t95 * __v2;
-            let __t1451 = __t99 * __v1;
-            let __t1454 = __t99 * __v0;
-            let __t1455 = __t91 * __v2;
-            let __t1435 = __t1426 * __v16;
-            let __t1436 = __t1430 * __v17;
-            let __t1440 = __t1426 * __v19;
-            let __t1434 = __t1431 - __t1432;
-            let __t1441 = __t1430 * __v20;
-            let __t1445 = __t1426 * __v22;
-            let __t1446 = __t1430 * __v23;
-            let __t1458 = __t91 * __v1;
-            let __t1459 = __t95 * __v0;
-            let __t1462 = __t115 * __v5;
-            let __t1463 = __t123 * __v4;
-            let __t1466 = __t123 * __v3;
-            let __t1467 = __t107 * __v5;
-            let __t1470 = __t107 * __v4;
-            let __t1471 = __t115 * __v3;
-            let __t1437 = __t1434 * __v18;
-            let __t1438 = __t1436 + __t1435;
-            let __t1442 = __t1434 * __v21;
-            let __t1443 = __t1441 + __t1440;
-            let __t1447 = __t1434 * __v24;
-            let __t1448 = __t1446 + __t1445;
-            let __t1453 = __t1450 - __t1451;
-            let __t1457 = __t1454 - __t1455;
-            let __t1461 = __t1458 - __t1459;
-            let __t1465 = __t1462 - __t1463;
-            let __t1469 = __t1466 - __t1467;
-            let __t1473 = __t1470 - __t1471;
-            let __t1439 = __t1438 + __t1437;
-            let __t1444 = __t1443 + __t1442;
-            let __t1449 = __t1448 + __t1447;
-            let __t1474 = __t1465 + __t1453;
-            let __t1477 = __t1469 + __t1457;
-            let __t1480 = __t1473 + __t1461;
-            let __t1476 = __t1474 - __t1439;
-            let __t1479 = __t1477 - __t1444;
-            let __t1482 = __t1480 - __t1449;
+            let __t1417 = __t1414 - __t1415;
+            let __t1421 = __t1418 - __t1419;
+            let __t1422 = __v3 * __v1;
+            let __t1423 = __v4 * __v0;
+            let __t1441 = __t95 * __v2;
+            let __t1442 = __t99 * __v1;
+            let __t1445 = __t99 * __v0;
+            let __t1446 = __t91 * __v2;
+            let __t1426 = __t1417 * __v16;
+            let __t1427 = __t1421 * __v17;
+            let __t1431 = __t1417 * __v19;
+            let __t1425 = __t1422 - __t1423;
+            let __t1432 = __t1421 * __v20;
+            let __t1436 = __t1417 * __v22;
+            let __t1437 = __t1421 * __v23;
+            let __t1449 = __t91 * __v1;
+            let __t1450 = __t95 * __v0;
+            let __t1453 = __t115 * __v5;
+            let __t1454 = __t123 * __v4;
+            let __t1457 = __t123 * __v3;
+            let __t1458 = __t107 * __v5;
+            let __t1461 = __t107 * __v4;
+            let __t1462 = __t115 * __v3;
+            let __t1428 = __t1425 * __v18;
+            let __t1429 = __t1427 + __t1426;
+            let __t1433 = __t1425 * __v21;
+            let __t1434 = __t1432 + __t1431;
+            let __t1438 = __t1425 * __v24;
+            let __t1439 = __t1437 + __t1436;
+            let __t1444 = __t1441 - __t1442;
+            let __t1448 = __t1445 - __t1446;
+            let __t1452 = __t1449 - __t1450;
+            let __t1456 = __t1453 - __t1454;
+            let __t1460 = __t1457 - __t1458;
+            let __t1464 = __t1461 - __t1462;
+            let __t1430 = __t1429 + __t1428;
+            let __t1435 = __t1434 + __t1433;
+            let __t1440 = __t1439 + __t1438;
+            let __t1465 = __t1456 + __t1444;
+            let __t1468 = __t1460 + __t1448;
+            let __t1471 = __t1464 + __t1452;
+            let __t1467 = __t1465 - __t1430;
+            let __t1470 = __t1468 - __t1435;
+            let __t1473 = __t1471 - __t1440;
             __FullEquations {
                 inertia: __Matrix3::new(
                     __v7,
@@ -578,7 +578,7 @@ const _: () = {
                     __v11,
                     __v12,
                 ),
-                right_side: __Vector3::new(__t1476, __t1479, __t1482),
+                right_side: __Vector3::new(__t1467, __t1470, __t1473),
                 rank_one: __MaybeRankOne::None,
             }
         }
@@ -2084,16 +2084,16 @@ const _: () = {
             let __t381 = __t378 * __t159;
             let __t440 = __t439 * __t341;
             let __t444 = __t406 + __t321;
-            let __t470 = __t368 * __v3;
-            let __t471 = __t370 * __v4;
+            let __t464 = __t368 * __v3;
+            let __t465 = __t370 * __v4;
             let __t450 = __t449 * __t341;
             let __t426 = __t379 * __t374;
             let __t441 = __t380 * __t376;
             let __t451 = __t381 * __t378;
-            let __t472 = __t372 * __v5;
+            let __t466 = __t372 * __v5;
             let __t383 = __t382 + __v16;
             let __t384 = __t374 * __t231;
-            let __t473 = __t471 + __t470;
+            let __t467 = __t465 + __t464;
             let __t402 = __t401 + __v20;
             let __t403 = __t376 * __t232;
             let __t428 = __t425 - __t426;
@@ -2105,7 +2105,7 @@ const _: () = {
             let __t445 = __t444 * __t341;
             let __t446 = __t380 * __t378;
             let __t453 = __t450 - __t451;
-            let __t474 = __t473 + __t472;
+            let __t468 = __t467 + __t466;
             let __t386 = __t383 - __t384;
             let __t405 = __t402 - __t403;
             let __t420 = __t419 + __v24;
@@ -2113,74 +2113,72 @@ const _: () = {
             let __t433 = __t430 - __t431;
             let __t438 = __t435 - __t436;
             let __t448 = __t445 - __t446;
-            let __t476 = __t428 - __t474;
-            let __t477 = __t443 - __t474;
-            let __t478 = __t453 - __t474;
-            let __t458 = __t405 + __t386;
+            let __t470 = __t428 - __t468;
+            let __t471 = __t443 - __t468;
+            let __t472 = __t453 - __t468;
+            let __t455 = __t405 + __t386;
             let __t423 = __t420 - __t421;
-            let __t496 = __t433 * __v5;
-            let __t492 = __t438 * __v5;
-            let __t479 = __t448 * __v5;
-            let __t484 = __t448 * __v4;
-            let __t483 = __t477 * __v5;
-            let __t480 = __t478 * __v4;
-            let __t491 = __t478 * __v3;
-            let __t495 = __t448 * __v3;
-            let __t503 = __t438 * __v4;
-            let __t506 = __t433 * __v4;
-            let __t507 = __t477 * __v3;
-            let __t514 = __t438 * __v3;
-            let __t515 = __t476 * __v5;
-            let __t522 = __t476 * __v4;
-            let __t523 = __t433 * __v3;
-            let __t459 = __t423 + __t458;
-            let __t482 = __t479 - __t480;
-            let __t486 = __t483 - __t484;
-            let __t494 = __t491 - __t492;
-            let __t498 = __t495 - __t496;
-            let __t505 = __t503 - __t495;
-            let __t509 = __t506 - __t507;
-            let __t517 = __t514 - __t515;
-            let __t525 = __t522 - __t523;
+            let __t490 = __t433 * __v5;
+            let __t486 = __t438 * __v5;
+            let __t473 = __t448 * __v5;
+            let __t478 = __t448 * __v4;
+            let __t477 = __t471 * __v5;
+            let __t474 = __t472 * __v4;
+            let __t485 = __t472 * __v3;
+            let __t489 = __t448 * __v3;
+            let __t497 = __t438 * __v4;
+            let __t500 = __t433 * __v4;
+            let __t501 = __t471 * __v3;
+            let __t508 = __t438 * __v3;
+            let __t509 = __t470 * __v5;
+            let __t516 = __t470 * __v4;
+            let __t517 = __t433 * __v3;
+            let __t456 = __t423 + __t455;
+            let __t476 = __t473 - __t474;
+            let __t480 = __t477 - __t478;
+            let __t488 = __t485 - __t486;
+            let __t492 = __t489 - __t490;
+            let __t499 = __t497 - __t489;
+            let __t503 = __t500 - __t501;
+            let __t511 = __t508 - __t509;
+            let __t519 = __t516 - __t517;
+            let __t457 = __t456 * 0.5f64;
             let __t237 = __t231 * __t140;
             let __t240 = __t231 * __t145;
             let __t243 = __t231 * __t150;
             let __t261 = __t232 * __t145;
             let __t264 = __t232 * __t150;
             let __t281 = __t233 * __t150;
-            let __t461 = __t459 * __v5;
-            let __t464 = __t459 * __v4;
-            let __t466 = __t459 * __v3;
-            let __t487 = __t482 * __v4;
-            let __t488 = __t486 * __v5;
-            let __t499 = __t494 * __v4;
-            let __t500 = __t498 * __v5;
-            let __t510 = __t505 * __v4;
-            let __t511 = __t509 * __v5;
-            let __t518 = __t517 * __v5;
-            let __t519 = __t494 * __v3;
-            let __t526 = __t525 * __v5;
-            let __t527 = __t505 * __v3;
-            let __t530 = __t509 * __v3;
-            let __t531 = __t525 * __v4;
+            let __t481 = __t476 * __v4;
+            let __t482 = __t480 * __v5;
+            let __t493 = __t488 * __v4;
+            let __t494 = __t492 * __v5;
+            let __t504 = __t499 * __v4;
+            let __t505 = __t503 * __v5;
+            let __t512 = __t511 * __v5;
+            let __t513 = __t488 * __v3;
+            let __t520 = __t519 * __v5;
+            let __t521 = __t499 * __v3;
+            let __t524 = __t503 * __v3;
+            let __t525 = __t519 * __v4;
+            let __t458 = __t457 * __v3;
+            let __t459 = __t457 * __v4;
+            let __t460 = __t457 * __v5;
             let __t239 = __v7 - __t237;
             let __t242 = __v8 - __t240;
             let __t245 = __v9 - __t243;
             let __t263 = __v10 - __t261;
             let __t266 = __v11 - __t264;
             let __t283 = __v12 - __t281;
-            let __t462 = __t461 * 0.5f64;
-            let __t463 = __t461 * (-0.5f64);
-            let __t465 = __t464 * 0.5f64;
-            let __t467 = __t466 * 0.5f64;
-            let __t468 = __t466 * (-0.5f64);
-            let __t469 = __t464 * (-0.5f64);
-            let __t490 = __t487 - __t488;
-            let __t502 = __t499 - __t500;
-            let __t513 = __t510 - __t511;
-            let __t521 = __t518 - __t519;
-            let __t529 = __t526 - __t527;
-            let __t533 = __t530 - __t531;
+            let __t484 = __t481 - __t482;
+            let __t496 = __t493 - __t494;
+            let __t507 = __t504 - __t505;
+            let __t515 = __t512 - __t513;
+            let __t523 = __t520 - __t521;
+            let __t527 = __t524 - __t525;
+            let __t461 = -__t458;
+            let __t462 = -__t459;
+            let __t463 = -__t460;
             __GyroscopicSystem {
                 a: __Matrix3::new(
                     __t239,
@@ -2196,24 +2194,24 @@ const _: () = {
                 g: __Matrix3::new(
                     0f64,
                     __t463,
-                    __t465,
-                    __t462,
+                    __t459,
+                    __t460,
                     0f64,
-                    __t468,
-                    __t469,
-                    __t467,
+                    __t461,
+                    __t462,
+                    __t458,
                     0f64,
                 ),
                 c: __Matrix3::new(
-                    __t490,
-                    __t502,
-                    __t513,
-                    __t502,
-                    __t521,
-                    __t529,
-                    __t513,
-                    __t529,
-                    __t533,
+                    __t484,
+                    __t496,
+                    __t507,
+                    __t496,
+                    __t515,
+                    __t523,
+                    __t507,
+                    __t523,
+                    __t527,
                 ),
             }
         }
@@ -2512,64 +2510,64 @@ const _: () = {
                     __t332,
                 ),
             };
-            let __t552 = __t220 * __v3;
-            let __t553 = __t222 * __v4;
-            let __t554 = __t224 * __v5;
-            let __t534 = __t275 + __t250;
-            let __t561 = __t326 * __v5;
-            let __t566 = __t326 * __v4;
-            let __t574 = __t314 * __v5;
-            let __t577 = __t326 * __v3;
-            let __t578 = __t308 * __v5;
-            let __t555 = __t553 + __t552;
-            let __t585 = __t314 * __v4;
-            let __t588 = __t308 * __v4;
-            let __t596 = __t314 * __v3;
-            let __t605 = __t308 * __v3;
-            let __t535 = __t534 + __t296;
-            let __t580 = __t577 - __t578;
-            let __t556 = __t555 + __t554;
-            let __t587 = __t585 - __t577;
-            let __t536 = __t535 * 0.5f64;
-            let __t582 = __t580 * __v5;
-            let __t558 = __t302 - __t556;
-            let __t559 = __t320 - __t556;
-            let __t560 = __t332 - __t556;
-            let __t592 = __t587 * __v4;
-            let __t609 = __t587 * __v3;
-            let __t537 = __t536 * __v3;
-            let __t538 = __t536 * __v4;
-            let __t539 = __t536 * __v5;
-            let __t597 = __t558 * __v5;
-            let __t565 = __t559 * __v5;
-            let __t562 = __t560 * __v4;
-            let __t573 = __t560 * __v3;
-            let __t589 = __t559 * __v3;
-            let __t604 = __t558 * __v4;
-            let __t540 = -__t537;
-            let __t541 = -__t538;
-            let __t599 = __t596 - __t597;
-            let __t568 = __t565 - __t566;
-            let __t564 = __t561 - __t562;
-            let __t576 = __t573 - __t574;
-            let __t591 = __t588 - __t589;
-            let __t607 = __t604 - __t605;
-            let __t542 = -__t539;
-            let __t600 = __t599 * __v5;
-            let __t570 = __t568 * __v5;
-            let __t569 = __t564 * __v4;
-            let __t581 = __t576 * __v4;
-            let __t593 = __t591 * __v5;
-            let __t601 = __t576 * __v3;
-            let __t608 = __t607 * __v5;
-            let __t612 = __t591 * __v3;
-            let __t613 = __t607 * __v4;
-            let __t572 = __t569 - __t570;
+            let __t537 = __t220 * __v3;
+            let __t538 = __t222 * __v4;
+            let __t539 = __t224 * __v5;
+            let __t528 = __t275 + __t250;
+            let __t546 = __t326 * __v5;
+            let __t551 = __t326 * __v4;
+            let __t559 = __t314 * __v5;
+            let __t562 = __t326 * __v3;
+            let __t563 = __t308 * __v5;
+            let __t540 = __t538 + __t537;
+            let __t570 = __t314 * __v4;
+            let __t573 = __t308 * __v4;
+            let __t581 = __t314 * __v3;
+            let __t590 = __t308 * __v3;
+            let __t529 = __t528 + __t296;
+            let __t565 = __t562 - __t563;
+            let __t541 = __t540 + __t539;
+            let __t572 = __t570 - __t562;
+            let __t530 = __t529 * 0.5f64;
+            let __t567 = __t565 * __v5;
+            let __t543 = __t302 - __t541;
+            let __t544 = __t320 - __t541;
+            let __t545 = __t332 - __t541;
+            let __t577 = __t572 * __v4;
+            let __t594 = __t572 * __v3;
+            let __t531 = __t530 * __v3;
+            let __t532 = __t530 * __v4;
+            let __t533 = __t530 * __v5;
+            let __t582 = __t543 * __v5;
+            let __t550 = __t544 * __v5;
+            let __t547 = __t545 * __v4;
+            let __t558 = __t545 * __v3;
+            let __t574 = __t544 * __v3;
+            let __t589 = __t543 * __v4;
+            let __t534 = -__t531;
+            let __t535 = -__t532;
             let __t584 = __t581 - __t582;
-            let __t595 = __t592 - __t593;
-            let __t603 = __t600 - __t601;
-            let __t611 = __t608 - __t609;
-            let __t615 = __t612 - __t613;
+            let __t553 = __t550 - __t551;
+            let __t549 = __t546 - __t547;
+            let __t561 = __t558 - __t559;
+            let __t576 = __t573 - __t574;
+            let __t592 = __t589 - __t590;
+            let __t536 = -__t533;
+            let __t585 = __t584 * __v5;
+            let __t555 = __t553 * __v5;
+            let __t554 = __t549 * __v4;
+            let __t566 = __t561 * __v4;
+            let __t578 = __t576 * __v5;
+            let __t586 = __t561 * __v3;
+            let __t593 = __t592 * __v5;
+            let __t597 = __t576 * __v3;
+            let __t598 = __t592 * __v4;
+            let __t557 = __t554 - __t555;
+            let __t569 = __t566 - __t567;
+            let __t580 = __t577 - __t578;
+            let __t588 = __t585 - __t586;
+            let __t596 = __t593 - __t594;
+            let __t600 = __t597 - __t598;
             (
                 __bundle,
                 __GyroscopicSystem {
@@ -2586,25 +2584,25 @@ const _: () = {
                     ),
                     g: __Matrix3::new(
                         0f64,
-                        __t542,
-                        __t538,
-                        __t539,
+                        __t536,
+                        __t532,
+                        __t533,
                         0f64,
-                        __t540,
-                        __t541,
-                        __t537,
+                        __t534,
+                        __t535,
+                        __t531,
                         0f64,
                     ),
                     c: __Matrix3::new(
-                        __t572,
-                        __t584,
-                        __t595,
-                        __t584,
-                        __t603,
-                        __t611,
-                        __t595,
-                        __t611,
-                        __t615,
+                        __t557,
+                        __t569,
+                        __t580,
+                        __t569,
+                        __t588,
+                        __t596,
+                        __t580,
+                        __t596,
+                        __t600,
                     ),
                 },
             )
@@ -2786,10 +2784,10 @@ const _: () = {
             let __t288 = __t276 + __v23;
             let __t289 = __t228 * __t233;
             let __t292 = __t160 * __v12;
-            let __t1423 = __v4 * __v2;
-            let __t1424 = __v5 * __v1;
-            let __t1427 = __v5 * __v0;
-            let __t1428 = __v3 * __v2;
+            let __t1414 = __v4 * __v2;
+            let __t1415 = __v5 * __v1;
+            let __t1418 = __v5 * __v0;
+            let __t1419 = __v3 * __v2;
             let __t216 = __t210 + __t91;
             let __t217 = __t211 + __t95;
             let __t218 = __t212 + __t99;
@@ -2808,53 +2806,53 @@ const _: () = {
             let __t291 = __t288 - __t289;
             let __t293 = __t292 + __v24;
             let __t294 = __t230 * __t233;
-            let __t1426 = __t1423 - __t1424;
-            let __t1430 = __t1427 - __t1428;
-            let __t1431 = __v3 * __v1;
-            let __t1432 = __v4 * __v0;
+            let __t1417 = __t1414 - __t1415;
+            let __t1421 = __t1418 - __t1419;
+            let __t1422 = __v3 * __v1;
+            let __t1423 = __v4 * __v0;
             let __t260 = __t257 - __t258;
             let __t280 = __t277 - __t278;
-            let __t1498 = __t217 * __v2;
+            let __t1489 = __t217 * __v2;
             let __t296 = __t293 - __t294;
-            let __t1483 = __t1426 * __t250;
-            let __t1484 = __t1430 * __t255;
-            let __t1488 = __t1426 * __t270;
-            let __t1434 = __t1431 - __t1432;
-            let __t1489 = __t1430 * __t275;
-            let __t1493 = __t1426 * __t287;
-            let __t1494 = __t1430 * __t291;
-            let __t1499 = __t218 * __v1;
-            let __t1502 = __t218 * __v0;
-            let __t1503 = __t216 * __v2;
-            let __t1506 = __t216 * __v1;
-            let __t1507 = __t217 * __v0;
-            let __t1510 = __t222 * __v5;
-            let __t1511 = __t224 * __v4;
-            let __t1514 = __t224 * __v3;
-            let __t1515 = __t220 * __v5;
-            let __t1518 = __t220 * __v4;
-            let __t1519 = __t222 * __v3;
-            let __t1485 = __t1434 * __t260;
-            let __t1486 = __t1484 + __t1483;
-            let __t1490 = __t1434 * __t280;
-            let __t1491 = __t1489 + __t1488;
-            let __t1495 = __t1434 * __t296;
-            let __t1496 = __t1494 + __t1493;
-            let __t1501 = __t1498 - __t1499;
-            let __t1505 = __t1502 - __t1503;
-            let __t1509 = __t1506 - __t1507;
-            let __t1513 = __t1510 - __t1511;
-            let __t1517 = __t1514 - __t1515;
-            let __t1521 = __t1518 - __t1519;
-            let __t1487 = __t1486 + __t1485;
-            let __t1492 = __t1491 + __t1490;
-            let __t1497 = __t1496 + __t1495;
-            let __t1522 = __t1513 + __t1501;
-            let __t1525 = __t1517 + __t1505;
-            let __t1528 = __t1521 + __t1509;
-            let __t1524 = __t1522 - __t1487;
-            let __t1527 = __t1525 - __t1492;
-            let __t1530 = __t1528 - __t1497;
+            let __t1474 = __t1417 * __t250;
+            let __t1475 = __t1421 * __t255;
+            let __t1479 = __t1417 * __t270;
+            let __t1425 = __t1422 - __t1423;
+            let __t1480 = __t1421 * __t275;
+            let __t1484 = __t1417 * __t287;
+            let __t1485 = __t1421 * __t291;
+            let __t1490 = __t218 * __v1;
+            let __t1493 = __t218 * __v0;
+            let __t1494 = __t216 * __v2;
+            let __t1497 = __t216 * __v1;
+            let __t1498 = __t217 * __v0;
+            let __t1501 = __t222 * __v5;
+            let __t1502 = __t224 * __v4;
+            let __t1505 = __t224 * __v3;
+            let __t1506 = __t220 * __v5;
+            let __t1509 = __t220 * __v4;
+            let __t1510 = __t222 * __v3;
+            let __t1476 = __t1425 * __t260;
+            let __t1477 = __t1475 + __t1474;
+            let __t1481 = __t1425 * __t280;
+            let __t1482 = __t1480 + __t1479;
+            let __t1486 = __t1425 * __t296;
+            let __t1487 = __t1485 + __t1484;
+            let __t1492 = __t1489 - __t1490;
+            let __t1496 = __t1493 - __t1494;
+            let __t1500 = __t1497 - __t1498;
+            let __t1504 = __t1501 - __t1502;
+            let __t1508 = __t1505 - __t1506;
+            let __t1512 = __t1509 - __t1510;
+            let __t1478 = __t1477 + __t1476;
+            let __t1483 = __t1482 + __t1481;
+            let __t1488 = __t1487 + __t1486;
+            let __t1513 = __t1504 + __t1492;
+            let __t1516 = __t1508 + __t1496;
+            let __t1519 = __t1512 + __t1500;
+            let __t1515 = __t1513 - __t1478;
+            let __t1518 = __t1516 - __t1483;
+            let __t1521 = __t1519 - __t1488;
             __ReducedEquations {
                 inertia: __Matrix3::new(
                     __v7,
@@ -2867,7 +2865,7 @@ const _: () = {
                     __v11,
                     __v12,
                 ),
-                right_side: __Vector3::new(__t1524, __t1527, __t1530),
+                right_side: __Vector3::new(__t1515, __t1518, __t1521),
                 psi_dot: __t160,
                 rank_one: __MaybeRankOne::None,
             }
@@ -3285,7 +3283,7 @@ const _: () = {
         const LATEX_ROUTHIAN: &'static str = "\\frac{1}{2} \\left(\\Omega_3 \\left(\\sigma_{3} + \\sigma_{6}\\right) + \\Omega_1 \\left(\\sigma_{1} + \\sigma_{4}\\right) + \\Omega_2 \\left(\\sigma_{2} + \\sigma_{5}\\right) - \\frac{\\sigma_{7}^{2}}{\\gamma_3 \\left(\\mathit{inertia}_{33} \\gamma_3 + \\mathit{inertia}_{13} \\gamma_1 + \\mathit{inertia}_{23} \\gamma_2\\right) + \\gamma_1 \\left(\\mathit{inertia}_{13} \\gamma_3 + \\mathit{inertia}_{11} \\gamma_1 + \\mathit{inertia}_{12} \\gamma_2\\right) + \\gamma_2 \\left(\\mathit{inertia}_{23} \\gamma_3 + \\mathit{inertia}_{12} \\gamma_1 + \\mathit{inertia}_{22} \\gamma_2\\right)}\\right) - \\mathit{com}_{3} \\mathit{mass} \\mathit{g} \\gamma_3 - \\mathit{com}_{1} \\mathit{mass} \\mathit{g} \\gamma_1 - \\mathit{com}_{2} \\mathit{mass} \\mathit{g} \\gamma_2 \\quad \\text{where} \\quad \\sigma_{1} = \\mathit{rotor}_{1} + \\mathit{coupling}_{13} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{12} \\gamma_2,\\; \\sigma_{2} = \\mathit{rotor}_{2} + \\mathit{coupling}_{23} \\gamma_3 + \\mathit{coupling}_{21} \\gamma_1 + \\mathit{coupling}_{22} \\gamma_2,\\; \\sigma_{3} = \\mathit{rotor}_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{31} \\gamma_1 + \\mathit{coupling}_{32} \\gamma_2,\\; \\sigma_{4} = \\mathit{inertia}_{13} \\Omega_3 + \\mathit{inertia}_{11} \\Omega_1 + \\mathit{inertia}_{12} \\Omega_2 + \\sigma_{1},\\; \\sigma_{5} = \\mathit{inertia}_{23} \\Omega_3 + \\mathit{inertia}_{12} \\Omega_1 + \\mathit{inertia}_{22} \\Omega_2 + \\sigma_{2},\\; \\sigma_{6} = \\mathit{inertia}_{33} \\Omega_3 + \\mathit{inertia}_{13} \\Omega_1 + \\mathit{inertia}_{23} \\Omega_2 + \\sigma_{3},\\; \\sigma_{7} = p_\\psi - \\gamma_3 \\sigma_{6} - \\gamma_1 \\sigma_{4} - \\gamma_2 \\sigma_{5}";
         const LATEX_AMENDED_POTENTIAL: &'static str = "\\mathit{com}_{3} \\mathit{mass} \\mathit{g} \\gamma_3 + \\mathit{com}_{1} \\mathit{mass} \\mathit{g} \\gamma_1 + \\mathit{com}_{2} \\mathit{mass} \\mathit{g} \\gamma_2 + \\frac{\\left(p_\\psi - \\gamma_3 \\left(\\mathit{rotor}_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{31} \\gamma_1 + \\mathit{coupling}_{32} \\gamma_2\\right) - \\gamma_1 \\left(\\mathit{rotor}_{1} + \\mathit{coupling}_{13} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{12} \\gamma_2\\right) - \\gamma_2 \\left(\\mathit{rotor}_{2} + \\mathit{coupling}_{23} \\gamma_3 + \\mathit{coupling}_{21} \\gamma_1 + \\mathit{coupling}_{22} \\gamma_2\\right)\\right)^{2}}{2 \\left(\\gamma_3 \\left(\\mathit{inertia}_{33} \\gamma_3 + \\mathit{inertia}_{13} \\gamma_1 + \\mathit{inertia}_{23} \\gamma_2\\right) + \\gamma_1 \\left(\\mathit{inertia}_{13} \\gamma_3 + \\mathit{inertia}_{11} \\gamma_1 + \\mathit{inertia}_{12} \\gamma_2\\right) + \\gamma_2 \\left(\\mathit{inertia}_{23} \\gamma_3 + \\mathit{inertia}_{12} \\gamma_1 + \\mathit{inertia}_{22} \\gamma_2\\right)\\right)}";
         const LATEX_A: &'static str = "\\begin{pmatrix} \\mathit{inertia}_{11} - \\sigma_{1}^{2} \\sigma_{4} & \\sigma_{5} & \\sigma_{6} \\\\ \\sigma_{5} & \\mathit{inertia}_{22} - \\sigma_{2}^{2} \\sigma_{4} & \\sigma_{7} \\\\ \\sigma_{6} & \\sigma_{7} & \\mathit{inertia}_{33} - \\sigma_{3}^{2} \\sigma_{4} \\end{pmatrix} \\quad \\text{where} \\quad \\sigma_{1} = \\mathit{inertia}_{13} \\gamma_3 + \\mathit{inertia}_{11} \\gamma_1 + \\mathit{inertia}_{12} \\gamma_2,\\; \\sigma_{2} = \\mathit{inertia}_{23} \\gamma_3 + \\mathit{inertia}_{12} \\gamma_1 + \\mathit{inertia}_{22} \\gamma_2,\\; \\sigma_{3} = \\mathit{inertia}_{33} \\gamma_3 + \\mathit{inertia}_{13} \\gamma_1 + \\mathit{inertia}_{23} \\gamma_2,\\; \\sigma_{4} = \\frac{1}{\\gamma_3 \\sigma_{3} + \\gamma_1 \\sigma_{1} + \\gamma_2 \\sigma_{2}},\\; \\sigma_{5} = \\mathit{inertia}_{12} - \\sigma_{2} \\sigma_{1} \\sigma_{4},\\; \\sigma_{6} = \\mathit{inertia}_{13} - \\sigma_{3} \\sigma_{1} \\sigma_{4},\\; \\sigma_{7} = \\mathit{inertia}_{23} - \\sigma_{3} \\sigma_{2} \\sigma_{4}";
-        const LATEX_G: &'static str = "\\begin{pmatrix} 0 & -\\frac{1}{2} \\gamma_3 \\sigma_{9} & \\frac{1}{2} \\gamma_2 \\sigma_{9} \\\\ \\frac{1}{2} \\gamma_3 \\sigma_{9} & 0 & -\\frac{1}{2} \\gamma_1 \\sigma_{9} \\\\ -\\frac{1}{2} \\gamma_2 \\sigma_{9} & \\frac{1}{2} \\gamma_1 \\sigma_{9} & 0 \\end{pmatrix} \\quad \\text{where} \\quad \\sigma_{1} = \\mathit{rotor}_{1} + \\mathit{coupling}_{13} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{12} \\gamma_2,\\; \\sigma_{2} = \\mathit{rotor}_{2} + \\mathit{coupling}_{23} \\gamma_3 + \\mathit{coupling}_{21} \\gamma_1 + \\mathit{coupling}_{22} \\gamma_2,\\; \\sigma_{3} = \\mathit{rotor}_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{31} \\gamma_1 + \\mathit{coupling}_{32} \\gamma_2,\\; \\sigma_{4} = \\mathit{inertia}_{13} \\gamma_3 + \\mathit{inertia}_{11} \\gamma_1 + \\mathit{inertia}_{12} \\gamma_2,\\; \\sigma_{5} = \\mathit{inertia}_{23} \\gamma_3 + \\mathit{inertia}_{12} \\gamma_1 + \\mathit{inertia}_{22} \\gamma_2,\\; \\sigma_{6} = \\mathit{inertia}_{33} \\gamma_3 + \\mathit{inertia}_{13} \\gamma_1 + \\mathit{inertia}_{23} \\gamma_2,\\; \\sigma_{7} = \\frac{1}{\\gamma_3 \\sigma_{6} + \\gamma_1 \\sigma_{4} + \\gamma_2 \\sigma_{5}},\\; \\sigma_{8} = \\sigma_{7} \\left(p_\\psi - \\gamma_3 \\sigma_{3} - \\gamma_1 \\sigma_{1} - \\gamma_2 \\sigma_{2}\\right),\\; \\sigma_{9} = \\mathit{coupling}_{33} + \\mathit{inertia}_{33} \\sigma_{8} - \\sigma_{6} \\sigma_{7} \\left(\\sigma_{6} \\sigma_{8} + \\sigma_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{13} \\gamma_1 + \\mathit{coupling}_{23} \\gamma_2 + \\sigma_{6} \\sigma_{8}\\right) + \\mathit{coupling}_{11} + \\mathit{inertia}_{11} \\sigma_{8} - \\sigma_{4} \\sigma_{7} \\left(\\sigma_{4} \\sigma_{8} + \\sigma_{1} + \\mathit{coupling}_{31} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{21} \\gamma_2 + \\sigma_{4} \\sigma_{8}\\right) + \\mathit{coupling}_{22} + \\mathit{inertia}_{22} \\sigma_{8} - \\sigma_{5} \\sigma_{7} \\left(\\sigma_{5} \\sigma_{8} + \\sigma_{2} + \\mathit{coupling}_{32} \\gamma_3 + \\mathit{coupling}_{22} \\gamma_2 + \\mathit{coupling}_{12} \\gamma_1 + \\sigma_{5} \\sigma_{8}\\right)";
+        const LATEX_G: &'static str = "\\begin{pmatrix} 0 & -\\gamma_3 \\sigma_{9} & \\gamma_2 \\sigma_{9} \\\\ \\gamma_3 \\sigma_{9} & 0 & -\\gamma_1 \\sigma_{9} \\\\ -\\gamma_2 \\sigma_{9} & \\gamma_1 \\sigma_{9} & 0 \\end{pmatrix} \\quad \\text{where} \\quad \\sigma_{1} = \\mathit{rotor}_{1} + \\mathit{coupling}_{13} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{12} \\gamma_2,\\; \\sigma_{2} = \\mathit{rotor}_{2} + \\mathit{coupling}_{23} \\gamma_3 + \\mathit{coupling}_{21} \\gamma_1 + \\mathit{coupling}_{22} \\gamma_2,\\; \\sigma_{3} = \\mathit{rotor}_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{31} \\gamma_1 + \\mathit{coupling}_{32} \\gamma_2,\\; \\sigma_{4} = \\mathit{inertia}_{13} \\gamma_3 + \\mathit{inertia}_{11} \\gamma_1 + \\mathit{inertia}_{12} \\gamma_2,\\; \\sigma_{5} = \\mathit{inertia}_{23} \\gamma_3 + \\mathit{inertia}_{12} \\gamma_1 + \\mathit{inertia}_{22} \\gamma_2,\\; \\sigma_{6} = \\mathit{inertia}_{33} \\gamma_3 + \\mathit{inertia}_{13} \\gamma_1 + \\mathit{inertia}_{23} \\gamma_2,\\; \\sigma_{7} = \\frac{1}{\\gamma_3 \\sigma_{6} + \\gamma_1 \\sigma_{4} + \\gamma_2 \\sigma_{5}},\\; \\sigma_{8} = \\sigma_{7} \\left(p_\\psi - \\gamma_3 \\sigma_{3} - \\gamma_1 \\sigma_{1} - \\gamma_2 \\sigma_{2}\\right),\\; \\sigma_{9} = \\frac{1}{2} \\left(\\mathit{coupling}_{33} + \\mathit{inertia}_{33} \\sigma_{8} - \\sigma_{6} \\sigma_{7} \\left(\\sigma_{6} \\sigma_{8} + \\sigma_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{13} \\gamma_1 + \\mathit{coupling}_{23} \\gamma_2 + \\sigma_{6} \\sigma_{8}\\right) + \\mathit{coupling}_{11} + \\mathit{inertia}_{11} \\sigma_{8} - \\sigma_{4} \\sigma_{7} \\left(\\sigma_{4} \\sigma_{8} + \\sigma_{1} + \\mathit{coupling}_{31} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{21} \\gamma_2 + \\sigma_{4} \\sigma_{8}\\right) + \\mathit{coupling}_{22} + \\mathit{inertia}_{22} \\sigma_{8} - \\sigma_{5} \\sigma_{7} \\left(\\sigma_{5} \\sigma_{8} + \\sigma_{2} + \\mathit{coupling}_{32} \\gamma_3 + \\mathit{coupling}_{22} \\gamma_2 + \\mathit{coupling}_{12} \\gamma_1 + \\sigma_{5} \\sigma_{8}\\right)\\right)";
         const LATEX_C: &'static str = "\\begin{pmatrix} \\gamma_2 \\left(\\gamma_3 \\sigma_{14} - \\gamma_2 \\sigma_{18}\\right) - \\gamma_3 \\left(\\gamma_3 \\sigma_{17} - \\gamma_2 \\sigma_{14}\\right) & \\sigma_{20} & \\sigma_{23} \\\\ \\sigma_{20} & \\gamma_3 \\left(\\gamma_1 \\sigma_{13} - \\gamma_3 \\sigma_{16}\\right) - \\gamma_1 \\sigma_{19} & \\sigma_{25} \\\\ \\sigma_{23} & \\sigma_{25} & \\gamma_1 \\sigma_{22} - \\gamma_2 \\sigma_{24} \\end{pmatrix} \\quad \\text{where} \\quad \\sigma_{1} = \\mathit{rotor}_{1} + \\mathit{coupling}_{13} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{12} \\gamma_2,\\; \\sigma_{2} = \\mathit{rotor}_{2} + \\mathit{coupling}_{23} \\gamma_3 + \\mathit{coupling}_{21} \\gamma_1 + \\mathit{coupling}_{22} \\gamma_2,\\; \\sigma_{3} = \\mathit{rotor}_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{31} \\gamma_1 + \\mathit{coupling}_{32} \\gamma_2,\\; \\sigma_{4} = \\mathit{inertia}_{13} \\gamma_3 + \\mathit{inertia}_{11} \\gamma_1 + \\mathit{inertia}_{12} \\gamma_2,\\; \\sigma_{5} = \\mathit{inertia}_{23} \\gamma_3 + \\mathit{inertia}_{12} \\gamma_1 + \\mathit{inertia}_{22} \\gamma_2,\\; \\sigma_{6} = \\mathit{inertia}_{33} \\gamma_3 + \\mathit{inertia}_{13} \\gamma_1 + \\mathit{inertia}_{23} \\gamma_2,\\; \\sigma_{7} = \\frac{1}{\\gamma_3 \\sigma_{6} + \\gamma_1 \\sigma_{4} + \\gamma_2 \\sigma_{5}},\\; \\sigma_{8} = \\sigma_{7} \\left(p_\\psi - \\gamma_3 \\sigma_{3} - \\gamma_1 \\sigma_{1} - \\gamma_2 \\sigma_{2}\\right),\\; \\sigma_{9} = \\sigma_{1} + \\mathit{coupling}_{31} \\gamma_3 + \\mathit{coupling}_{11} \\gamma_1 + \\mathit{coupling}_{21} \\gamma_2 + \\sigma_{4} \\sigma_{8},\\; \\sigma_{10} = \\sigma_{2} + \\mathit{coupling}_{32} \\gamma_3 + \\mathit{coupling}_{22} \\gamma_2 + \\mathit{coupling}_{12} \\gamma_1 + \\sigma_{5} \\sigma_{8},\\; \\sigma_{11} = \\sigma_{3} + \\mathit{coupling}_{33} \\gamma_3 + \\mathit{coupling}_{13} \\gamma_1 + \\mathit{coupling}_{23} \\gamma_2 + \\sigma_{6} \\sigma_{8},\\; \\sigma_{12} = \\sigma_{8} \\left(\\mathit{coupling}_{12} + \\mathit{coupling}_{21} + \\mathit{inertia}_{12} \\sigma_{8}\\right) - \\left(\\sigma_{5} \\sigma_{8} + \\sigma_{10}\\right) \\sigma_{7} \\left(\\sigma_{4} \\sigma_{8} + \\sigma_{9}\\right),\\; \\sigma_{13} = \\sigma_{8} \\left(\\mathit{coupling}_{13} + \\mathit{coupling}_{31} + \\mathit{inertia}_{13} \\sigma_{8}\\right) - \\left(\\sigma_{6} \\sigma_{8} + \\sigma_{11}\\right) \\sigma_{7} \\left(\\sigma_{4} \\sigma_{8} + \\sigma_{9}\\right),\\; \\sigma_{14} = \\sigma_{8} \\left(\\mathit{coupling}_{23} + \\mathit{coupling}_{32} + \\mathit{inertia}_{23} \\sigma_{8}\\right) - \\left(\\sigma_{6} \\sigma_{8} + \\sigma_{11}\\right) \\sigma_{7} \\left(\\sigma_{5} \\sigma_{8} + \\sigma_{10}\\right),\\; \\sigma_{15} = -\\gamma_3 \\left(-\\mathit{com}_{3} \\mathit{mass} \\mathit{g} + \\sigma_{8} \\sigma_{11}\\right) - \\gamma_1 \\left(-\\mathit{com}_{1} \\mathit{mass} \\mathit{g} + \\sigma_{8} \\sigma_{9}\\right) - \\gamma_2 \\left(-\\mathit{com}_{2} \\mathit{mass} \\mathit{g} + \\sigma_{8} \\sigma_{10}\\right),\\; \\sigma_{16} = \\sigma_{8} \\left(2 \\mathit{coupling}_{11} + \\mathit{inertia}_{11} \\sigma_{8}\\right) - \\left(\\sigma_{4} \\sigma_{8} + \\sigma_{9}\\right)^{2} \\sigma_{7} + \\sigma_{15},\\; \\sigma_{17} = \\sigma_{8} \\left(2 \\mathit{coupling}_{22} + \\mathit{inertia}_{22} \\sigma_{8}\\right) - \\left(\\sigma_{5} \\sigma_{8} + \\sigma_{10}\\right)^{2} \\sigma_{7} + \\sigma_{15},\\; \\sigma_{18} = \\sigma_{8} \\left(2 \\mathit{coupling}_{33} + \\mathit{inertia}_{33} \\sigma_{8}\\right) - \\left(\\sigma_{6} \\sigma_{8} + \\sigma_{11}\\right)^{2} \\sigma_{7} + \\sigma_{15},\\; \\sigma_{19} = \\gamma_1 \\sigma_{18} - \\gamma_3 \\sigma_{13},\\; \\sigma_{20} = \\gamma_2 \\sigma_{19} - \\gamma_3 \\left(\\gamma_1 \\sigma_{14} - \\gamma_3 \\sigma_{12}\\right),\\; \\sigma_{21} = \\gamma_2 \\sigma_{13} - \\gamma_1 \\sigma_{14},\\; \\sigma_{22} = \\gamma_2 \\sigma_{12} - \\gamma_1 \\sigma_{17},\\; \\sigma_{23} = \\gamma_2 \\sigma_{21} - \\gamma_3 \\sigma_{22},\\; \\sigma_{24} = \\gamma_2 \\sigma_{16} - \\gamma_1 \\sigma_{12},\\; \\sigma_{25} = \\gamma_3 \\sigma_{24} - \\gamma_1 \\sigma_{21}";
     }
 };

@@ -4,7 +4,7 @@
 
 use crate::layout::{Bundle, BundleAndSystem, Gyroscopic};
 use crate::lower::Lowered;
-use crate::system::{gyroscopic, half_trace_skew};
+use crate::system::gyroscopic;
 use routh_symbolic::shape::dot3;
 use routh_symbolic::{degree, extra_cost, Degree, Graph, Id, Var};
 use std::collections::HashMap;
@@ -340,8 +340,7 @@ pub fn reduce_with(m: &mut Lowered, momentum: Momentum) -> Outputs {
     let (gyro_g, gyro_c) = gyroscopic(g, &gm, &dg0, &mx0, &h0);
     // The same formulas on the bundle itself, for `bundle_and_system` (17) and (64): built last,
     // so that the nodes of every other method keep their ids (and their generated text).
-    let system_g = half_trace_skew(g, &gm, &bundle.d2r_domega_dgamma);
-    let (_, system_c) = gyroscopic(
+    let (system_g, system_c) = gyroscopic(
         g,
         &gm,
         &bundle.dr_dgamma,

@@ -4,13 +4,13 @@
 //! `GyroscopicSystem::from_bundle` of routh-core.
 
 use crate::reduce::{M3, V3};
-use routh_symbolic::shape::{dot3, skew3};
+use routh_symbolic::shape::dot3;
 use routh_symbolic::{Graph, Id};
 
 /// `G = ½(tr M)[γ]×` (see [`gyroscopic`]) written as `h_i = γ_i·(½ tr M)` and `−h_i`: one
 /// multiplication for ½ and one per component, where `g.mul` would pull the constant out of
 /// every entry (`0.5·(γ_i tr M)` and `(−0.5)·(γ_i tr M)`, two per component).
-pub fn half_trace_skew(g: &mut Graph, gm: &V3, mx: &M3) -> M3 {
+fn half_trace_skew(g: &mut Graph, gm: &V3, mx: &M3) -> M3 {
     let tr = g.sum([mx[0][0], mx[1][1], mx[2][2]]);
     let h: V3 = gm.map(|gi| g.mul_scaled(gi, 0.5, tr));
     let n: V3 = h.map(|hi| g.neg(hi));
@@ -24,13 +24,9 @@ pub fn half_trace_skew(g: &mut Graph, gm: &V3, mx: &M3) -> M3 {
 /// G is written in closed form: `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` holds for every 3×3 `M`, and
 /// differentiating Theorem 2's identity (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω`
 /// for every Routh function (at every Ω, so at Ω = 0 too). Hence `2G = (tr M)[γ]×` exactly; the
-/// matrix products are not formed. C is [`stiffness_sandwich`].
+/// matrix products are not formed; G is [`half_trace_skew`], C is [`stiffness_sandwich`].
 pub fn gyroscopic(g: &mut Graph, gm: &V3, dr_dg: &V3, mx: &M3, h: &M3) -> (M3, M3) {
-    let gx = skew3(g, gm);
-    let half = g.constant(0.5);
-    let tr = g.sum([mx[0][0], mx[1][1], mx[2][2]]);
-    let half_tr = g.mul(half, tr);
-    let gyro_g: M3 = std::array::from_fn(|i| std::array::from_fn(|k| g.mul(half_tr, gx[i][k])));
+    let gyro_g = half_trace_skew(g, gm, mx);
     let mu = dot3(g, dr_dg, gm);
     (gyro_g, stiffness_sandwich(g, gm, mu, h))
 }
