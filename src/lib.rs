@@ -64,12 +64,12 @@ pub mod fluid;
 /// their options and results.
 pub mod prelude {
     pub use crate::{
-        bifurcation_diagram, classified_steady_motions, classify, classify_at, continue_branch,
-        nonlinear_stability, simulate_full, simulate_reduced, stability_atlas, steady_motions,
-        steady_motions_certified, AtlasOptions, BifurcationDiagram, Classified,
-        ContinuationOptions, Lagrangian, Matrix3, Model, ModelError, NonlinearOptions,
-        NonlinearReport, NonlinearVerdict, Param, RouthError, Routhian, SimOptions, Stability,
-        StabilityReport, SteadyMotion, Vector3,
+        bifurcation_diagram, classified_steady_motions, classify, classify_at, classify_circle,
+        continue_branch, nonlinear_stability, simulate_full, simulate_reduced, stability_atlas,
+        steady_motions, steady_motions_certified, AtlasOptions, BifurcationDiagram,
+        CircleStability, Classified, ContinuationOptions, Lagrangian, Matrix3, Model, ModelError,
+        NonlinearOptions, NonlinearReport, NonlinearVerdict, Param, RouthError, Routhian,
+        SimOptions, Stability, StabilityReport, SteadyMotion, Vector3,
     };
 }
 

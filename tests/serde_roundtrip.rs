@@ -16,6 +16,7 @@
 //! | `StabilityReport`, `Stability`, `ClassifyOptions` | `classify` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `KreinReport` | `stability::classify_with_krein` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `Classified` | `classified_steady_motions` | `classified_motions_round_trip` |
+//! | `CircleReport`, `CircleStability` | `classify_circle` | `classified_motions_round_trip` |
 //! | `GyroscopicSystem`, `RouthBundle`, `FullEquations`, `ReducedEquations`, `RankOneInertia` | `Routhian::gyroscopic_system`, `bundle`, `full_equations`, `reduced_equations` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `ContinuationOptions`, `BifurcationDiagram`, `Branch`, `BranchPoint`, `BranchEvent`, `EventKind` | `bifurcation_diagram` | `diagrams_and_atlases_round_trip` |
 //! | `StopReason` | `BifurcationDiagram::stop` | `diagrams_and_atlases_round_trip` |
@@ -257,6 +258,10 @@ fn classified_motions_round_trip() {
     round_trip(&all);
     let json = round_trip(&all[0]);
     assert!(json.contains("\"report\"") && json.contains("\"motion\""));
+    let circle = all.iter().find(|c| !c.motion.isolated).expect("the circle");
+    let report = routh::classify_circle(&LagrangeTop::example(), &circle.motion, &Vector3::z());
+    let json = round_trip(&report.unwrap());
+    assert!(json.contains("\"Stable\""), "{json}");
 }
 
 /// The Lagrange top `A = 1, C = 0.8, mgl = 1` sleeping (as in routh-core's nonlinear tests): a

@@ -25,8 +25,9 @@ pub enum Command {
     Steady(AtMomentum),
     /// The steady motions at p_ψ = P with their stability reports: the verdict (secularly
     /// stable, gyroscopically stabilized, unstable), the eigenvalues of the restricted second
-    /// variation of U_r, the degree of instability and the roots of f₂.
-    Classify(AtMomentum),
+    /// variation of U_r, the degree of instability and the roots of f₂; with `--axis`, the
+    /// circles of steady motions of a symmetric body decided modulo the symmetry.
+    Classify(ClassifyArgs),
     /// The nonlinear (Lyapunov) stability of the steady motions at p_ψ = P: the Birkhoff
     /// normal form to order four, Arnold's determinant D, resonances of order ≤ 4 and the
     /// verdict (secularly stable, Lyapunov stable, unstable, undecided) with its reason.
@@ -70,6 +71,20 @@ pub struct AtMomentum {
     /// Output format.
     #[command(flatten)]
     pub output: Output,
+}
+
+/// `classify`.
+#[derive(Debug, Args)]
+pub struct ClassifyArgs {
+    /// The model, the momentum and the output format.
+    #[command(flatten)]
+    pub at: AtMomentum,
+    /// `X,Y,Z`: a body axis about which the model is symmetric (e.g. `0,0,1` for a top
+    /// symmetric about e₃). Each circle of steady motions (a motion that is not isolated) is then
+    /// also decided modulo the symmetry, from the doubly amended potential: `V'' > 0` stable,
+    /// `V'' < 0` unstable (docs/method.md, 6a).
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub axis: Option<[f64; 3]>,
 }
 
 /// `diagram`.

@@ -1,9 +1,12 @@
 //! `steady`, `classify` and `formulas`: the analyses at one momentum, and the model's formulas.
 
-use crate::cli::{AtMomentum, Formulas};
+use crate::cli::{AtMomentum, ClassifyArgs, Formulas};
 use crate::error::CliError;
 use crate::table::{num, vec3, Table};
-use routh::{classified_steady_motions, steady_motions, LatexFormulas, Model, ModelError};
+use routh::{
+    classified_steady_motions, classify_circle, steady_motions, CircleReport, CircleStability,
+    LatexFormulas, Model, ModelError, Vector3,
+};
 use std::path::Path;
 
 /// Reads a model file; any failure (missing file, TOML or DSL error, with its position) is bad
@@ -79,63 +82,131 @@ pub fn steady(a: &AtMomentum) -> Result<String, CliError> {
     ))
 }
 
-/// `routh classify`: the steady motions at `p_ψ = P` with their stability reports (§5).
-pub fn classify(a: &AtMomentum) -> Result<String, CliError> {
+/// `routh classify`: the steady motions at `p_ψ = P` with their stability reports (§5); with
+/// `--axis`, every circle of steady motions also decided modulo the symmetry
+/// (`routh::classify_circle`).
+pub fn classify(c: &ClassifyArgs) -> Result<String, CliError> {
+    let a = &c.at;
     let model = load(&a.model)?;
     let all = classified_steady_motions(&model, a.momentum)?;
+    // The circle's report for each motion that is not isolated, when an axis is given.
+    let circles: Vec<Option<CircleReport>> = all
+        .iter()
+        .map(|m| match c.axis {
+            Some(e) if !m.motion.isolated => {
+                classify_circle(&model, &m.motion, &Vector3::from(e)).map(Some)
+            }
+            _ => Ok(None),
+        })
+        .collect::<Result<_, _>>()?;
     if a.output.json {
         // `Classified` has no `Serialize` of its own: its two parts have.
         let items: Vec<serde_json::Value> = all
             .iter()
-            .map(
-                |c| serde_json::json!({ "p_psi": c.p_psi, "motion": c.motion, "report": c.report }),
-            )
+            .zip(&circles)
+            .map(|(m, circle)| {
+                let mut v =
+                    serde_json::json!({ "p_psi": m.p_psi, "motion": m.motion, "report": m.report });
+                if let Some(circle) = circle {
+                    v["circle"] = serde_json::json!({
+                        "axis": circle.axis,
+                        "verdict": circle.verdict,
+                        "curvature": circle.curvature,
+                        "across": circle.across,
+                        "momentum_term": circle.momentum_term,
+                        "axis_momentum": circle.axis_momentum,
+                    });
+                }
+                v
+            })
             .collect();
         return Ok(serde_json::to_string_pretty(&items)? + "\n");
     }
+    let circle_verdict = |c: &Option<CircleReport>| match c {
+        Some(c) => circle_name(c.verdict).to_string(),
+        None => String::new(),
+    };
     if a.output.csv {
         let mut s = String::from(
-            "p_psi,gamma1,gamma2,gamma3,psi_dot,verdict,kappa1,kappa2,degree_of_instability\n",
+            "p_psi,gamma1,gamma2,gamma3,psi_dot,verdict,kappa1,kappa2,degree_of_instability",
         );
-        for c in &all {
-            let [k1, k2] = c.report.restricted_hessian_eigenvalues;
+        if c.axis.is_some() {
+            s.push_str(",circle_verdict,circle_curvature");
+        }
+        s.push('\n');
+        for (m, circle) in all.iter().zip(&circles) {
+            let [k1, k2] = m.report.restricted_hessian_eigenvalues;
             s.push_str(&format!(
-                "{},{},{},{},{},{},{},{},{}\n",
-                c.p_psi,
-                c.motion.gamma.x,
-                c.motion.gamma.y,
-                c.motion.gamma.z,
-                c.motion.psi_dot,
-                routh::export::verdict_name(c.report.verdict),
+                "{},{},{},{},{},{},{},{},{}",
+                m.p_psi,
+                m.motion.gamma.x,
+                m.motion.gamma.y,
+                m.motion.gamma.z,
+                m.motion.psi_dot,
+                routh::export::verdict_name(m.report.verdict),
                 k1,
                 k2,
-                c.report.degree_of_instability
+                m.report.degree_of_instability
             ));
+            if c.axis.is_some() {
+                let v = circle
+                    .as_ref()
+                    .map_or(String::new(), |c| c.curvature.to_string());
+                s.push_str(&format!(",{},{}", circle_verdict(circle), v));
+            }
+            s.push('\n');
         }
         return Ok(s);
     }
-    let mut t = Table::new(&[
+    let mut head = vec![
         "#", "gamma", "psi_dot", "verdict", "kappa1", "kappa2", "degree",
-    ]);
-    for (i, c) in all.iter().enumerate() {
-        let [k1, k2] = c.report.restricted_hessian_eigenvalues;
-        t.row(vec![
+    ];
+    if c.axis.is_some() {
+        head.extend(["modulo the axis", "V''"]);
+    }
+    let mut t = Table::new(&head);
+    for (i, (m, circle)) in all.iter().zip(&circles).enumerate() {
+        let [k1, k2] = m.report.restricted_hessian_eigenvalues;
+        let mut row = vec![
             i.to_string(),
-            vec3(&c.motion.gamma),
-            num(c.motion.psi_dot),
-            c.report.verdict.to_string(),
+            vec3(&m.motion.gamma),
+            num(m.motion.psi_dot),
+            m.report.verdict.to_string(),
             num(k1),
             num(k2),
-            c.report.degree_of_instability.to_string(),
-        ]);
+            m.report.degree_of_instability.to_string(),
+        ];
+        if c.axis.is_some() {
+            row.push(
+                circle
+                    .as_ref()
+                    .map_or(String::new(), |c| c.verdict.to_string()),
+            );
+            row.push(circle.as_ref().map_or(String::new(), |c| num(c.curvature)));
+        }
+        t.row(row);
     }
+    let circle_note = if c.axis.is_some() {
+        "; modulo the axis: circles of steady motions decided by the doubly amended potential V"
+    } else {
+        ""
+    };
     Ok(format!(
         "{} steady motion(s) at p_psi = {} (kappa: eigenvalues of the restricted second variation \
-         of U_r; degree: degree of instability)\n{}",
+         of U_r; degree: degree of instability{circle_note})\n{}",
         all.len(),
         a.momentum,
         t.render()
     ))
+}
+
+/// The machine name of a circle's verdict in CSV (as `routh::export::verdict_name`).
+fn circle_name(v: CircleStability) -> &'static str {
+    match v {
+        CircleStability::Stable => "stable",
+        CircleStability::Unstable => "unstable",
+        CircleStability::Degenerate => "degenerate",
+    }
 }
 
 /// `routh formulas`: the derived Lagrangian, amended potential (34) and ψ̇ (38), as plain text.

@@ -116,6 +116,41 @@ fn classify_verdicts_follow_maievskii_and_the_secular_bound() {
 }
 
 #[test]
+fn classify_with_an_axis_decides_the_circle_of_the_lagrange_top() {
+    // At p = 3 the tilted steady motions of the top form a circle about e₃: `classify` alone
+    // says degenerate (with one negative eigenvalue), modulo the symmetry it is stable.
+    let v = json(&routh(&[
+        "classify", TOP, "-p", "3", "--axis", "0,0,1", "--json",
+    ]));
+    let rows = v.as_array().unwrap();
+    let circle = rows
+        .iter()
+        .find(|c| c["motion"]["isolated"] == false)
+        .expect("the circle");
+    assert_eq!(circle["report"]["verdict"], "Degenerate");
+    assert_eq!(circle["circle"]["verdict"], "Stable");
+    assert!(circle["circle"]["curvature"].as_f64().unwrap() > 0.0);
+    assert!(rows
+        .iter()
+        .filter(|c| c["motion"]["isolated"] == true)
+        .all(|c| c.get("circle").is_none()));
+    let o = routh(&["classify", TOP, "-p", "3", "--axis", "0,0,1"]);
+    assert!(
+        stdout(&o).contains("stable modulo the symmetry"),
+        "{}",
+        stdout(&o)
+    );
+    // e₁ is not an axis of symmetry of the top: an error, not a verdict.
+    let o = routh(&["classify", TOP, "-p", "3", "--axis", "1,0,0"]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("not symmetric about the axis"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
 fn diagram_over_momentum_finds_the_two_classical_bounds() {
     let dir = std::env::temp_dir().join(format!("routh-cli-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

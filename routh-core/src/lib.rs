@@ -16,6 +16,7 @@ pub use nalgebra;
 pub use nalgebra::{Complex, Matrix3, Vector3};
 
 pub mod certify;
+mod circle;
 mod classified;
 mod error;
 pub mod export;
@@ -37,6 +38,7 @@ pub mod validate;
 mod zero;
 
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
+pub use circle::{classify_circle, classify_circle_with, CircleReport, CircleStability};
 pub use classified::{classified_steady_motions, classify_at, stability_threshold, Classified};
 pub use error::RouthError;
 #[allow(deprecated)]
