@@ -24,7 +24,8 @@ use pyo3::prelude::*;
 pub use convert::{ModelError, RouthError};
 use latex::LatexFormulas;
 use results::{
-    Atlas, Boundary, Branch, Certificate, Diagram, Event, StabilityReport, SteadyMotion,
+    Atlas, Boundary, Branch, Certificate, CircleReport, Diagram, Event, StabilityReport,
+    SteadyMotion,
 };
 use trajectory::{ReducedTrajectory, Trajectory};
 
@@ -40,6 +41,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Model>()?;
     m.add_class::<SteadyMotion>()?;
     m.add_class::<StabilityReport>()?;
+    m.add_class::<CircleReport>()?;
     m.add_class::<Diagram>()?;
     m.add_class::<Branch>()?;
     m.add_class::<Event>()?;

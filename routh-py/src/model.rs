@@ -6,7 +6,7 @@ use crate::guard::detached;
 use crate::latex::{aligned, LatexFormulas};
 use crate::nonlinear::NonlinearReport;
 use crate::progress::Progress;
-use crate::results::{Certificate, Diagram, StabilityReport, SteadyMotion};
+use crate::results::{Certificate, CircleReport, Diagram, StabilityReport, SteadyMotion};
 use crate::trajectory::{ReducedTrajectory, Trajectory};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -230,6 +230,28 @@ impl Model {
         let s = motion.inner.clone();
         let r = detached(py, || routh::classify(&m, &s))?.map_err(|e| routh_err(py, &e))?;
         Ok(StabilityReport::new(py, &r))
+    }
+
+    /// A circle of steady motions of a body symmetric about the body axis `axis` (3 numbers),
+    /// decided modulo the symmetry by the doubly amended potential, where `classify` can only
+    /// say "degenerate". Raises `RouthError` if the model is not symmetric about `axis` at the
+    /// motion, or if the motion lies on the axis.
+    ///
+    /// >>> c = [m for m in top.steady_motions(3.0) if not m.isolated][0]
+    /// >>> top.classify_circle(c, (0, 0, 1)).verdict
+    /// 'stable'
+    fn classify_circle(
+        &self,
+        py: Python<'_>,
+        motion: &SteadyMotion,
+        axis: &Bound<'_, PyAny>,
+    ) -> PyResult<CircleReport> {
+        let axis = vector3("axis", axis)?;
+        let m = self.get()?;
+        let s = motion.inner.clone();
+        let r = detached(py, || routh::classify_circle(&m, &s, &axis))?
+            .map_err(|e| routh_err(py, &e))?;
+        CircleReport::new(py, &r)
     }
 
     /// The nonlinear (Lyapunov) stability of a steady motion from the Birkhoff normal form of

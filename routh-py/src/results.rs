@@ -131,6 +131,59 @@ impl StabilityReport {
     }
 }
 
+/// A circle of steady motions of a body symmetric about `axis`, decided modulo the symmetry by
+/// the doubly amended potential (`Model.classify_circle`): `verdict` ("stable", "unstable",
+/// "degenerate"), `curvature` = V'' = `across` + `momentum_term`, the conserved `axis_momentum`,
+/// the unit `axis` ((3,) float64) and the plain `report` of `classify`.
+///
+/// >>> c = top.classify_circle(circle_motion, (0.0, 0.0, 1.0))
+/// >>> c.verdict, c.curvature
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct CircleReport {
+    /// One of "stable", "unstable", "degenerate" (modulo the symmetry).
+    pub verdict: &'static str,
+    /// V'', the second derivative of the doubly amended potential across the circle.
+    pub curvature: f64,
+    /// The restricted second variation of U_r across the circle.
+    pub across: f64,
+    /// What holding the axis momentum fixed adds, ≥ 0.
+    pub momentum_term: f64,
+    /// The conserved momentum about the axis, e·∂L/∂ω.
+    pub axis_momentum: f64,
+    /// The unit axis, (3,) float64.
+    pub axis: Py<PyAny>,
+    /// `classify` of the same motion (degenerate on a circle).
+    pub report: Py<StabilityReport>,
+}
+
+impl CircleReport {
+    pub(crate) fn new(py: Python<'_>, c: &routh::CircleReport) -> PyResult<CircleReport> {
+        Ok(CircleReport {
+            verdict: match c.verdict {
+                routh::CircleStability::Stable => "stable",
+                routh::CircleStability::Unstable => "unstable",
+                routh::CircleStability::Degenerate => "degenerate",
+            },
+            curvature: c.curvature,
+            across: c.across,
+            momentum_term: c.momentum_term,
+            axis_momentum: c.axis_momentum,
+            axis: vec3(py, &c.axis).into_any().unbind(),
+            report: Py::new(py, StabilityReport::new(py, &c.report))?,
+        })
+    }
+}
+
+#[pymethods]
+impl CircleReport {
+    fn __repr__(&self) -> String {
+        format!(
+            "CircleReport(verdict='{}', curvature={:e}, across={:e}, momentum_term={:e})",
+            self.verdict, self.curvature, self.across, self.momentum_term
+        )
+    }
+}
+
 /// One branch of a bifurcation diagram: the parameter `s` (n,), the verticals `gamma` (n, 3),
 /// the `verdicts` (list of n strings) and whether its motions are `isolated`.
 #[pyclass(module = "routh", frozen, get_all)]

@@ -65,6 +65,34 @@ def test_degree_of_instability_and_hessian(top):
     assert (r_high.restricted_hessian_eigenvalues > 0).all()
 
 
+def test_classify_circle_matches_the_doubly_amended_potential(top):
+    # The circle of tilted steady motions at p = 3: `classify` says degenerate; modulo the
+    # symmetry about e3 it is decided by V(θ) = (p − p_φ cos θ)²/(2A₁ sin²θ) + p_φ²/(2C) + mgl cos θ
+    # (Euler angles, written here by hand), whose second derivative it must equal.
+    a1, c, mgl, p = 1.0, 1.25, 1.0, 3.0
+    motion = [m for m in top.steady_motions(p) if not m.isolated][0]
+    report = top.classify_circle(motion, (0.0, 0.0, 1.0))
+    assert report.report.verdict == "degenerate"
+    assert report.verdict == "stable"
+    z = motion.gamma[2]
+    th0 = math.acos(z)
+    p_phi = c * motion.psi_dot * z
+    assert report.axis_momentum == pytest.approx(p_phi, rel=1e-12)
+
+    def v(th):
+        return (p - p_phi * math.cos(th)) ** 2 / (2 * a1 * math.sin(th) ** 2) + p_phi**2 / (
+            2 * c
+        ) + mgl * math.cos(th)
+
+    h = 1e-3
+    d2 = (v(th0 + h) - 2 * v(th0) + v(th0 - h)) / h**2
+    assert report.curvature == pytest.approx(d2, rel=1e-5)
+    assert report.curvature == pytest.approx(report.across + report.momentum_term)
+    assert report.across < 0 < report.curvature  # one negative eigenvalue, yet stable
+    with pytest.raises(routh.RouthError, match="not symmetric about the axis"):
+        top.classify_circle(motion, (1.0, 0.0, 0.0))
+
+
 def test_gyrostat_steady_motions_are_critical_points(gyrostat):
     # Independent of the solver: U_r restricted to the sphere is stationary at each steady
     # motion (central finite differences along two tangent directions).

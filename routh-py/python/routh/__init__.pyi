@@ -66,6 +66,22 @@ class StabilityReport:
     restricted_hessian_eigenvalues: npt.NDArray[np.float64]
     f2_roots: npt.NDArray[np.complex128]
 
+class CircleReport:
+    """A circle of steady motions of a symmetric body, decided modulo the symmetry by the
+    doubly amended potential: `curvature` = V'' = `across` + `momentum_term`.
+
+    >>> c = [m for m in top.steady_motions(3.0) if not m.isolated][0]
+    >>> top.classify_circle(c, (0, 0, 1)).verdict
+    'stable'
+    """
+    verdict: Literal["stable", "unstable", "degenerate"]
+    curvature: float
+    across: float
+    momentum_term: float
+    axis_momentum: float
+    axis: npt.NDArray[np.float64]
+    report: StabilityReport
+
 class Branch:
     """A branch of a diagram: `s` (n,), `gamma` (n, 3), `verdicts` (n strings)."""
     s: npt.NDArray[np.float64]
@@ -246,6 +262,8 @@ class Model:
     def amended_potential(self, gamma: Vec3, p_psi: float) -> float: ...
     def steady_motions(self, p_psi: float) -> list[SteadyMotion]: ...
     def classify(self, motion: SteadyMotion) -> StabilityReport: ...
+    def classify_circle(self, motion: SteadyMotion, axis: Vec3) -> CircleReport:
+        """A circle of steady motions decided modulo the symmetry about `axis`."""
     def nonlinear_stability(
         self,
         motion: SteadyMotion,
