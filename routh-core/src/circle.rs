@@ -18,8 +18,9 @@
 //! `V'' = κ + (eᵀMn)² / (eᵀAe)`,  `κ = nᵀKn`,  `M = ∂²R/∂Ω∂γ`.
 //!
 //! A system of one degree of freedom has no gyroscopic stabilisation: `V'' > 0` is a strict
-//! minimum, and `E_r + (M_e − M₀)²` is a Lyapunov function for the circle (stable modulo the
-//! symmetry: motions that start near the circle stay near it); `V'' < 0` is a maximum, unstable.
+//! minimum, and `E_r + c(M_e − M₀)²` (`c` large enough) is a Lyapunov function for the circle
+//! (stable modulo the symmetry: motions that start near the circle stay near it); `V'' < 0` is a
+//! maximum, unstable.
 
 use std::fmt;
 
