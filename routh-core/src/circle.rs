@@ -4,7 +4,7 @@
 //! For a body whose Lagrangian is invariant under rotations about a body axis `e` (a symmetric
 //! top, an ellipsoid of revolution), the steady motions `γ` off that axis come in circles, the
 //! orbits of the symmetry, and the tangent of the circle is a null vector of the restricted
-//! second variation `K` (62)–(63): [`classify`] can only say `Degenerate`. The symmetry brings a
+//! second variation `K` (62)–(63): [`classify`](crate::classify) can only say `Degenerate`. The symmetry brings a
 //! second integral, the component of the body angular momentum on the axis,
 //! `M_e = e·∂L/∂ω = e·∂R/∂Ω` ((18): `∂R/∂Ω = ∂L/∂ω` at `ω = Ω + ψ̇γ`), and reducing it too leaves
 //! one degree of freedom, the distance `s` from the circle along the sphere. Its potential is the
@@ -24,11 +24,12 @@
 
 use std::fmt;
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3x2, Vector3};
 
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::stability::{classify_with, ClassifyOptions, StabilityReport};
+use crate::sphere::{restricted_hessian, ROUND};
+use crate::stability::{classify_evaluated, ClassifyOptions, Evaluated, StabilityReport};
 use crate::steady::SteadyMotion;
 use crate::validate::{check_finite, check_model_finite};
 use crate::zero::ZeroTest;
@@ -91,8 +92,12 @@ impl fmt::Display for CircleReport {
 }
 
 /// Stability of the circle of steady motions through `steady` modulo the body's axis of symmetry
-/// `axis` (see the [module documentation](self) for the doubly amended potential), with the
-/// default tolerances of [`ClassifyOptions`].
+/// `axis`, with the default tolerances of [`ClassifyOptions`]. The momentum about the axis,
+/// `M_e = e·∂R/∂Ω`, is conserved; fixing it leaves one degree of freedom across the circle, whose
+/// potential, the doubly amended potential, has the second derivative
+/// `V'' = nᵀKn + (eᵀMn)²/(eᵀAe)` (`n` the unit tangent normal to the circle, `M = ∂²R/∂Ω∂γ`,
+/// `A = ∂²R/∂Ω²`; derivation in docs/method.md, 6a). With one degree of freedom there is no
+/// gyroscopic stabilisation: `V'' > 0` is stable modulo the symmetry, `V'' < 0` unstable.
 ///
 /// The model must be invariant under rotations about `axis` (body frame); this is checked at the
 /// steady motion, where it makes the circle's tangent `τ = e × γ` a null vector of `K` and of
@@ -171,7 +176,7 @@ pub fn classify_circle<M: Routhian>(
     classify_circle_with(model, steady, axis, &ClassifyOptions::default())
 }
 
-/// [`classify_circle`] with explicit tolerances (those of [`classify_with`]).
+/// [`classify_circle`] with explicit tolerances (those of [`classify_with`](crate::classify_with)).
 pub fn classify_circle_with<M: Routhian>(
     model: &M,
     steady: &SteadyMotion,
@@ -179,9 +184,15 @@ pub fn classify_circle_with<M: Routhian>(
     opts: &ClassifyOptions,
 ) -> Result<CircleReport, RouthError> {
     check_finite("axis", axis.as_slice())?;
-    // Validates the options and that γ is a steady motion.
-    let report = classify_with(model, steady, opts)?;
-    let gamma = steady.gamma.normalize();
+    // Validates the options and that γ is a steady motion; the one evaluation of the model.
+    let (
+        report,
+        Evaluated {
+            gamma,
+            bundle,
+            system,
+        },
+    ) = classify_evaluated(model, steady, opts)?;
     let e = axis
         .try_normalize(0.0)
         .ok_or_else(|| RouthError::InvalidOption {
@@ -203,26 +214,23 @@ pub fn classify_circle_with<M: Routhian>(
     }
     let tau = orbit.normalize();
     let n = gamma.cross(&tau);
-
-    let (bundle, system) = model.bundle_and_system(&Vector3::zeros(), &gamma, steady.p_psi);
     check_model_finite(
         "d2r_domega_dgamma",
         bundle.d2r_domega_dgamma.as_slice(),
         &gamma,
     )?;
+    // K of (62)–(63) in the basis (τ, n).
     let mu = bundle.dr_dgamma.dot(&gamma);
-    // K = μE − ∂²R/∂γ² on the tangent plane (62)–(63).
-    let k = |u: &Vector3<f64>, v: &Vector3<f64>| mu * u.dot(v) - u.dot(&(bundle.d2r_dgamma2 * v));
-    let (k_tt, k_tn, across) = (k(&tau, &tau), k(&tau, &n), k(&n, &n));
-    let a = &system.a;
-    let eae = e.dot(&(a * e));
+    let k = restricted_hessian(&Matrix3x2::from_columns(&[tau, n]), mu, &bundle.d2r_dgamma2);
+    let (k_tt, k_tn, across) = (k[(0, 0)], k[(0, 1)], k[(1, 1)]);
+    let eae = e.dot(&(system.a * e));
     // eᵀM: the derivative of m(γ) = e·∂R/∂Ω(0, γ).
     let dm = bundle.d2r_domega_dgamma.transpose() * e;
     let (dm_t, dm_n) = (dm.dot(&tau), dm.dot(&n));
     check_model_finite("∂²R/∂Ω² on the axis", &[eae], &gamma)?;
 
     // The symmetry at γ: K τ = 0 and eᵀMτ = 0, to the zero test of `classify`.
-    let knorm = (k_tt * k_tt + 2.0 * k_tn * k_tn + across * across).sqrt();
+    let knorm = k.norm();
     let raw = mu.abs().max(bundle.d2r_dgamma2.norm());
     let k_zero = ZeroTest::with_floor(opts.zero_eigenvalue_tol, knorm, ROUND * raw);
     let dm_zero = ZeroTest::with_floor(opts.zero_eigenvalue_tol, dm.norm(), ROUND * dm.norm());
@@ -276,5 +284,3 @@ pub fn classify_circle_with<M: Routhian>(
 
 /// γ within this sine of the angle from the axis is on it.
 const AXIS_SIN: f64 = 1e-8;
-/// Round-off floor of the zero tests, in ulps of the terms a quantity is the difference of.
-const ROUND: f64 = 1024.0 * f64::EPSILON;

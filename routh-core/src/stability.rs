@@ -9,7 +9,7 @@ use nalgebra::{Complex, Matrix2, Vector3};
 
 use crate::error::RouthError;
 use crate::krein::krein_signatures;
-use crate::model::{GyroscopicSystem, Routhian};
+use crate::model::{GyroscopicSystem, RouthBundle, Routhian};
 use crate::sphere::{sym2_eigen, tangent_basis, Tangential};
 use crate::steady::SteadyMotion;
 use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
@@ -272,10 +272,28 @@ pub fn classify_with<M: Routhian>(
     steady: &SteadyMotion,
     opts: &ClassifyOptions,
 ) -> Result<StabilityReport, RouthError> {
-    classify_parts(model, steady, opts).map(|(report, _)| report)
+    classify_parts(model, steady, opts).map(|(report, ..)| report)
 }
 
-/// [`classify_with`], with the tangent-plane parts of (64) it found (for the Krein signatures).
+/// The unit γ, the bundle and `A`, `G`, `C` at `Ω = 0` that a classification evaluated there,
+/// for analyses that read more of them ([`crate::classify_circle`]).
+pub(crate) struct Evaluated {
+    pub gamma: Vector3<f64>,
+    pub bundle: RouthBundle,
+    pub system: GyroscopicSystem,
+}
+
+/// [`classify_with`] and what it evaluated (one evaluation of the model).
+pub(crate) fn classify_evaluated<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    opts: &ClassifyOptions,
+) -> Result<(StabilityReport, Evaluated), RouthError> {
+    classify_parts(model, steady, opts).map(|(report, _, evaluated)| (report, evaluated))
+}
+
+/// [`classify_with`], with the tangent-plane parts of (64) it found (for the Krein signatures)
+/// and what it evaluated.
 ///
 /// The model is evaluated once: [`Routhian::bundle_and_system`] at `Ω = 0` gives both the
 /// derivatives of (62)–(63) and `A`, `G`, `C` of (64).
@@ -283,7 +301,7 @@ fn classify_parts<M: Routhian>(
     model: &M,
     steady: &SteadyMotion,
     opts: &ClassifyOptions,
-) -> Result<(StabilityReport, F2Parts), RouthError> {
+) -> Result<(StabilityReport, F2Parts, Evaluated), RouthError> {
     opts.validate()?;
     let p_psi = steady.p_psi;
     check_finite("steady.p_psi", &[p_psi])?;
@@ -366,7 +384,15 @@ fn classify_parts<M: Routhian>(
         f2_roots: roots.lambda,
         verdict,
     };
-    Ok((report, parts))
+    Ok((
+        report,
+        parts,
+        Evaluated {
+            gamma,
+            bundle,
+            system,
+        },
+    ))
 }
 
 /// A [`StabilityReport`] with the Krein signatures of the roots of `f₂`, from
@@ -436,7 +462,7 @@ pub fn classify_with_krein<M: Routhian>(
     steady: &SteadyMotion,
     opts: &ClassifyOptions,
 ) -> Result<KreinReport, RouthError> {
-    let (report, parts) = classify_parts(model, steady, opts)?;
+    let (report, parts, _) = classify_parts(model, steady, opts)?;
     // The signatures of f₂ scaled (`F2Parts`): the modes of λ = ωμ are those of μ and the
     // energies are multiplied by αω² > 0, so the signs are the same, without overflow.
     let mu = report.f2_roots.map(|l| l / parts.omega);

@@ -62,6 +62,24 @@ fn run<T>(r: Result<T, Infallible>) -> T {
     }
 }
 
+/// One step from `(w, t)` without a step limit, the point taken as corrected (no tangent) and
+/// every step accepted.
+fn plain_step(
+    path: &mut Path<2>,
+    w: &Vector2<f64>,
+    t: &Vector2<f64>,
+    correct: impl FnMut(&Prediction<2>) -> Result<Option<Corrected<2, ()>>, Infallible>,
+) -> Outcome<2, ()> {
+    run(path.step(
+        w,
+        t,
+        f64::INFINITY,
+        correct,
+        |c| Ok(Some(c.bare())),
+        |_, _| Check::Accept,
+    ))
+}
+
 #[test]
 fn circle_steps_advance_by_asin_h_and_close() {
     let mut path = Path::<2>::new(PathOptions::diagram(1e-7, 0.2), 0.01);
@@ -102,14 +120,7 @@ fn natural_parameter_stalls_at_the_fold() {
     let mut w = Vector2::new(1.0, 1.0);
     let mut t = -fold_tangent(&w, &Vector2::new(1.0, 0.0));
     let failure = loop {
-        let out = run(path.step(
-            &w,
-            &t,
-            f64::INFINITY,
-            fold,
-            |c| Ok(Some(c.bare())),
-            |_, _| Check::Accept,
-        ));
+        let out = plain_step(&mut path, &w, &t, fold);
         match out {
             Outcome::Accepted { point, .. } => {
                 assert!((point.point.x - point.point.y.powi(2)).abs() < 1e-13);
@@ -169,14 +180,7 @@ fn jumps_turns_checks_and_budget() {
             value: (),
         }))
     };
-    let out = run(path.step(
-        &w,
-        &t,
-        f64::INFINITY,
-        jump,
-        |c| Ok(Some(c.bare())),
-        |_, _| Check::Accept,
-    ));
+    let out = plain_step(&mut path, &w, &t, jump);
     assert!(matches!(out, Outcome::Stalled(Failure::Moved)));
     // 0.1, 0.05, …, 0.0015625 ≥ 1e−3: seven attempts.
     assert_eq!(path.attempts(), 7);
@@ -231,14 +235,7 @@ fn jumps_turns_checks_and_budget() {
         },
     ));
     assert!(matches!(out, Outcome::Accepted { .. }));
-    let out = run(path.step(
-        &w,
-        &t,
-        f64::INFINITY,
-        circle,
-        |c| Ok(Some(c.bare())),
-        |_, _| Check::Accept,
-    ));
+    let out = plain_step(&mut path, &w, &t, circle);
     assert!(matches!(out, Outcome::Exhausted));
     // Easy convergences grow the step by 1.5 up to the cap.
     let mut path = Path::<2>::new(opts, 0.1);
@@ -250,14 +247,7 @@ fn jumps_turns_checks_and_budget() {
         }))
     };
     for expected in [0.15, 0.2, 0.2] {
-        let out = run(path.step(
-            &w,
-            &t,
-            f64::INFINITY,
-            easy,
-            |c| Ok(Some(c.bare())),
-            |_, _| Check::Accept,
-        ));
+        let out = plain_step(&mut path, &w, &t, easy);
         assert!(matches!(out, Outcome::Accepted { .. }));
         assert!((path.h() - expected).abs() < 1e-15, "{}", path.h());
     }
