@@ -53,7 +53,7 @@ pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Rout
 /// What the generated code fills in for the integrators (the equations (8) and (13) with their
 /// structure); users do not name them.
 #[doc(hidden)]
-pub use model::{FullEquations, RankOneInertia, ReducedEquations};
+pub use model::{FullEquations, FullJacobian, RankOneInertia, ReducedEquations};
 /// [`nonlinear_stability`] with a jet of the Routh function given by the caller (the run-time
 /// models pass their own); users call [`nonlinear_stability`].
 #[doc(hidden)]

@@ -56,6 +56,80 @@ pub trait Lagrangian {
             rank_one: None,
         }
     }
+    /// The full equations (8) at one state with their first derivatives in `(ω, γ)` (see
+    /// [`FullJacobian`]): what the variational equations of a periodic orbit (the monodromy,
+    /// [`periodic_orbit`](crate::periodic_orbit)) evaluate at every stage.
+    ///
+    /// `#[derive(Lagrangian)]` and `routh::Model` differentiate the right side of (8) and `J`
+    /// symbolically on the generator's DAG (exact, one straight-line body). The default, for
+    /// hand-written models, takes central differences of [`Lagrangian::full_equations`] (step
+    /// `ε^{1/3}·max(1, |x|)`, about 8 significant digits): correct, but a hand-written model
+    /// that needs exact multipliers should implement it.
+    fn full_jacobian(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> FullJacobian {
+        let eq = self.full_equations(omega, gamma);
+        let inertia = match &eq.rank_one {
+            Some(r) => match self.constant_inertia() {
+                Some(j0) => r.complete(&j0),
+                None => eq.inertia,
+            },
+            None => eq.inertia,
+        };
+        let mut jac = FullJacobian {
+            inertia,
+            right_side: eq.right_side,
+            dright_domega: Matrix3::zeros(),
+            dright_dgamma: Matrix3::zeros(),
+            dinertia_dgamma: [Matrix3::zeros(); 3],
+        };
+        let full_j = |e: &FullEquations| match (&e.rank_one, self.constant_inertia()) {
+            (Some(r), Some(j0)) => r.complete(&j0),
+            _ => e.inertia,
+        };
+        let cbrt_eps = f64::EPSILON.cbrt();
+        for k in 0..3 {
+            let h = cbrt_eps * omega[k].abs().max(1.0);
+            let (mut wp, mut wm) = (*omega, *omega);
+            wp[k] += h;
+            wm[k] -= h;
+            let d = (self.full_equations(&wp, gamma).right_side
+                - self.full_equations(&wm, gamma).right_side)
+                / (2.0 * h);
+            jac.dright_domega.set_column(k, &d);
+            let h = cbrt_eps * gamma[k].abs().max(1.0);
+            let (mut gp, mut gm) = (*gamma, *gamma);
+            gp[k] += h;
+            gm[k] -= h;
+            let (ep, em) = (
+                self.full_equations(omega, &gp),
+                self.full_equations(omega, &gm),
+            );
+            jac.dright_dgamma
+                .set_column(k, &((ep.right_side - em.right_side) / (2.0 * h)));
+            jac.dinertia_dgamma[k] = (full_j(&ep) - full_j(&em)) / (2.0 * h);
+        }
+        jac
+    }
+}
+
+/// The full equations (8) at one state and their first derivatives, for the variational
+/// equations `δẋ = DF(x) δx` of the flow of (8) in `x = (ω, γ)` (docs/method.md §7).
+///
+/// With `J ω̇ = f(ω, γ)` (the right side of (8)) and `γ̇ = γ × ω`:
+/// `∂ω̇/∂ω = J⁻¹ ∂f/∂ω`, `∂ω̇/∂γ_k = J⁻¹(∂f/∂γ_k − (∂J/∂γ_k) ω̇)`, `∂γ̇/∂ω = [γ]×`,
+/// `∂γ̇/∂γ = −[ω]×`. Matrices are indexed `(i, j) = ∂f_i/∂x_j`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FullJacobian {
+    /// `J(γ) = ∂²L/∂ω²` (the whole matrix, also for a model with a rank-one inertia).
+    pub inertia: Matrix3<f64>,
+    /// `f = ∂L/∂ω × ω + ∂L/∂γ × γ − (∂²L/∂ω∂γ)(γ × ω)`, the right side of (8).
+    pub right_side: Vector3<f64>,
+    /// `∂f_i/∂ω_j`.
+    pub dright_domega: Matrix3<f64>,
+    /// `∂f_i/∂γ_j` (γ an unconstrained vector of ℝ³).
+    pub dright_dgamma: Matrix3<f64>,
+    /// `∂J/∂γ_k`, `k = 0, 1, 2`.
+    pub dinertia_dgamma: [Matrix3<f64>; 3],
 }
 
 /// The full equations (8) at one state `(ω, γ)`, solved for ω̇ (docs/method.md §2):
