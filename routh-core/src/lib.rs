@@ -23,10 +23,12 @@ pub mod export;
 pub mod families;
 mod formulas;
 mod krein;
+mod locate;
 mod model;
 pub mod nonlinear;
 mod norm;
 mod path;
+pub mod periodic;
 #[cfg(feature = "serde")]
 mod serde_support;
 pub mod sim;
@@ -60,6 +62,11 @@ pub use model::{FullEquations, FullJacobian, RankOneInertia, ReducedEquations};
 pub use nonlinear::nonlinear_stability_with;
 pub use nonlinear::{
     nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
+};
+pub use periodic::{
+    continue_orbit, lyapunov_family, orbit_crossings, orbit_path, period_doubled_family,
+    periodic_orbit, poincare_section, OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions,
+    OrbitStability, OrbitStop, PeriodicOrbit, PoincareSection, SectionOptions,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, classify_with, ClassifyOptions, Stability, StabilityReport};

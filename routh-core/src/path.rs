@@ -16,7 +16,8 @@
 //! - **Step control**: halve on any failure, down to `h_min` (then [`Outcome::Stalled`]); after an
 //!   easy convergence grow (capped at `h_max`), after a hard one shrink.
 //!
-//! The four curves of the crate use it: the search's circles of critical points
+//! The five curves of the crate use it: the families of periodic orbits
+//! (`periodic/family.rs`, [`PathOptions::orbit_family`]), the search's circles of critical points
 //! (`steady/search/curves.rs`, [`PathOptions::search_curve`]), the branches of the bifurcation
 //! diagram (`families/continuation.rs`, `families/diagram/trace.rs`, [`PathOptions::diagram`]),
 //! the atlas's boundary curves (`families/atlas/trace.rs`, [`PathOptions::atlas_boundary`]) and
@@ -116,6 +117,26 @@ impl PathOptions {
             easy: usize::MAX,
             ease: 1.0,
             hard: usize::MAX,
+        }
+    }
+
+    /// A family of periodic orbits (`periodic/family.rs`): pseudo-arclength in `(x₀, T/t_s,
+    /// E/e_s)` between `min_step` and `max_step` (`OrbitOptions`), a jump beyond `h/2` rejected,
+    /// tangents turning by more than `acos 0.9 ≈ 26°` rejected unless the step is already below
+    /// `4·min_step`; grown by 1.5 after at most 3 Gauss–Newton steps, shrunk by 0.7 after 7.
+    pub fn orbit_family(min_step: f64, max_step: f64) -> Self {
+        PathOptions {
+            row: Row::Arclength,
+            h_min: min_step,
+            h_max: max_step,
+            max_move: 0.5,
+            move_floor: 1e-9,
+            min_cos: 0.9,
+            relax: 4.0,
+            grow: 1.5,
+            easy: 3,
+            ease: 0.7,
+            hard: 7,
         }
     }
 

@@ -86,6 +86,23 @@ macro_rules! closed_form_body {
             fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
                 Matrix3::zeros()
             }
+            /// In closed form: `f = (Jω) × ω − ∇U × γ`, so `∂f/∂ω = [Jω]× − [ω]×J`,
+            /// `∂f/∂γ = [γ]×H − [∇U]×` (`H` the Hessian of `U`), and `J` is constant.
+            fn full_jacobian(
+                &self,
+                w: &Vector3<f64>,
+                g: &Vector3<f64>,
+            ) -> routh_core::FullJacobian {
+                let (_, grad, hess) = self.terms(g);
+                let jw = self.j * w;
+                routh_core::FullJacobian {
+                    inertia: self.j,
+                    right_side: jw.cross(w) - grad.cross(g),
+                    dright_domega: jw.cross_matrix() - w.cross_matrix() * self.j,
+                    dright_dgamma: g.cross_matrix() * hess - grad.cross_matrix(),
+                    dinertia_dgamma: [Matrix3::zeros(); 3],
+                }
+            }
         }
 
         impl Routhian for $ty {

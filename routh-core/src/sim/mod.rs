@@ -18,7 +18,7 @@
 //! `lie` the two steppers.
 
 pub mod attitude;
-mod dop853;
+pub(crate) mod dop853;
 mod drive;
 mod field;
 mod lie;

@@ -1,0 +1,591 @@
+//! Families of periodic orbits at fixed `p_ψ` through the energy: [`lyapunov_family`] from an
+//! elliptic steady motion, [`continue_orbit`] from any orbit, [`period_doubled_family`] from a
+//! period doubling (docs/method.md §7).
+//!
+//! Pseudo-arclength in `w = (x₀, T/t_s, E/e_s)` on the crate's one predictor–corrector
+//! (`path.rs`, [`PathOptions::orbit_family`]); the tangent is the null vector of the ten rows of
+//! the shooting system without the linear row. Between two accepted orbits `a` and `b`:
+//! a change of sign of the tangent's energy component is a `Fold`; else of `k − 1` a
+//! `BranchPoint`; of `k + 1` a `PeriodDoubling`. Each is located by the crate's one event locator
+//! (`locate.rs`) on re-solves along the step, to `|ΔE| ≤ event_tol·max(1, |E|)`.
+
+use nalgebra::{Complex, Matrix6, SMatrix, Vector6};
+
+use super::flow::{field_and_jacobian, join, split};
+use super::shoot::{check_guess, correct, orbit_of, LinearRow, Problem, Scales, Solved, W};
+use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
+use crate::locate::{illinois, End};
+use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
+use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
+
+/// An accepted orbit of a family with its tangent.
+#[derive(Clone)]
+struct Node {
+    solved: Solved,
+    tangent: W,
+    orbit: PeriodicOrbit,
+}
+
+/// The unit null vector of the first ten rows of the shooting system (the family's tangent),
+/// oriented along `along` when given.
+fn tangent_of(s: &Solved, along: Option<&W>) -> W {
+    let top: SMatrix<f64, 10, 8> = s.jac.fixed_rows::<10>(0).into();
+    let svd = top.svd(false, true);
+    let v_t = svd.v_t.expect("asked for V");
+    let (mut imin, mut vmin) = (0, f64::INFINITY);
+    for (i, &sv) in svd.singular_values.iter().enumerate() {
+        if sv < vmin {
+            vmin = sv;
+            imin = i;
+        }
+    }
+    let mut t: W = v_t.row(imin).transpose();
+    t /= t.norm();
+    if let Some(a) = along {
+        if t.dot(a) < 0.0 {
+            t = -t;
+        }
+    }
+    t
+}
+
+/// The family's state: the model, the options, the scales, the orbits so far.
+struct Tracer<'a, M: Routhian> {
+    model: &'a M,
+    opts: &'a OrbitOptions,
+    p_psi: f64,
+    scales: Scales,
+    bounds: Option<(f64, f64)>,
+    first_period: f64,
+}
+
+impl<M: Routhian> Tracer<'_, M> {
+    fn problem_at(&self, w: &W) -> Result<Problem, RouthError> {
+        let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
+        Problem::at(self.model, &x, self.p_psi, self.scales)
+    }
+
+    fn node(&self, s: Solved, along: Option<&W>) -> Node {
+        let tangent = tangent_of(&s, along);
+        let orbit = orbit_of(self.model, &s, &self.scales, self.opts);
+        Node {
+            solved: s,
+            tangent,
+            orbit,
+        }
+    }
+
+    /// Re-solves on the step from `a` at arclength `sigma`.
+    fn resolve(&self, a: &Node, sigma: f64) -> Result<Option<Node>, RouthError> {
+        let pred = a.solved.w + a.tangent * sigma;
+        let prob = self.problem_at(&a.solved.w)?;
+        let row = LinearRow::arclength(&a.tangent, &pred);
+        Ok(match correct(self.model, &prob, &row, &pred, self.opts)? {
+            Ok(s) => Some(self.node(s, Some(&a.tangent))),
+            Err(_) => None,
+        })
+    }
+
+    /// The events on the step from `a` to `b` (arclength `h`).
+    fn events(&self, a: &Node, b: &Node, h: f64) -> Result<Vec<OrbitEvent>, RouthError> {
+        let mut out = Vec::new();
+        let (ka, kb) = (a.orbit.stability_index, b.orbit.stability_index);
+        let fold = a.tangent[7] * b.tangent[7] < 0.0;
+        type Test = fn(&Node) -> f64;
+        let mut tests: Vec<(OrbitEventKind, Test)> = Vec::new();
+        if fold {
+            tests.push((OrbitEventKind::Fold, |n: &Node| n.tangent[7]));
+        } else if (ka - 1.0) * (kb - 1.0) < 0.0 {
+            tests.push((OrbitEventKind::BranchPoint, |n: &Node| {
+                n.orbit.stability_index - 1.0
+            }));
+        }
+        if (ka + 1.0) * (kb + 1.0) < 0.0 {
+            tests.push((OrbitEventKind::PeriodDoubling, |n: &Node| {
+                n.orbit.stability_index + 1.0
+            }));
+        }
+        for (kind, test) in tests {
+            let lo = End {
+                at: 0.0,
+                value: test(a),
+                point: a.clone(),
+            };
+            let hi = End {
+                at: h,
+                value: test(b),
+                point: b.clone(),
+            };
+            let tol = self.opts.event_tol;
+            let found = illinois(
+                lo,
+                hi,
+                80,
+                |sigma| Ok::<_, RouthError>(self.resolve(a, sigma)?.map(|n| (test(&n), n))),
+                |lo, hi| {
+                    let (el, eh) = (lo.point.orbit.energy, hi.point.orbit.energy);
+                    let de = (eh - el).abs() <= tol * 1f64.max(el.abs());
+                    let ds = (hi.at - lo.at).abs() <= 1e-7 * h;
+                    de && (kind != OrbitEventKind::Fold || ds)
+                },
+            )?;
+            out.push(OrbitEvent {
+                kind,
+                energy: found.point.orbit.energy,
+                orbit: found.point.orbit.clone(),
+                before: a.orbit.stability,
+                after: b.orbit.stability,
+            });
+        }
+        Ok(out)
+    }
+
+    /// The orbit at the energy bound `bound`, corrected from the step between `a` and `b`.
+    fn at_bound(&self, a: &Node, b: &Node, bound: f64) -> Result<Option<Node>, RouthError> {
+        let (ea, eb) = (a.orbit.energy, b.orbit.energy);
+        let f = ((bound - ea) / (eb - ea)).clamp(0.0, 1.0);
+        let guess = a.solved.w + (b.solved.w - a.solved.w) * f;
+        let prob = self.problem_at(&a.solved.w)?;
+        let row = LinearRow::energy(&self.scales, bound);
+        Ok(match correct(self.model, &prob, &row, &guess, self.opts)? {
+            Ok(s) => Some(self.node(s, Some(&a.tangent))),
+            Err(_) => None,
+        })
+    }
+
+    /// Follows the family from `start` along its tangent until a stop; `budget` orbits at most
+    /// (counting none of `start`). `origin`: the steady motion a Lyapunov family starts from.
+    fn trace(
+        &self,
+        start: Node,
+        budget: usize,
+        origin: Option<&Vector6<f64>>,
+    ) -> Result<(Vec<Node>, Vec<OrbitEvent>, OrbitStop), RouthError> {
+        let o = self.opts;
+        let mut path: Path<8> = Path::new(
+            PathOptions::orbit_family(o.min_step, o.max_step),
+            o.initial_step,
+        )
+        .with_budget(budget.saturating_mul(8).max(16));
+        let mut nodes: Vec<Node> = Vec::new();
+        let mut events = Vec::new();
+        let first_w = start.solved.w;
+        let mut cur = start;
+        let small = 0.5 * o.initial_amplitude;
+        loop {
+            if nodes.len() >= budget {
+                return Ok((nodes, events, OrbitStop::MaxOrbits));
+            }
+            let prob = self.problem_at(&cur.solved.w)?;
+            let (w, t) = (cur.solved.w, cur.tangent);
+            let outcome = path.step(
+                &w,
+                &t,
+                f64::INFINITY,
+                |pred| {
+                    let normal = pred.normal.unwrap_or(t);
+                    let row = LinearRow::arclength(&normal, &pred.point);
+                    Ok::<_, RouthError>(match correct(self.model, &prob, &row, &pred.point, o)? {
+                        Ok(s) => Some(Corrected {
+                            point: s.w,
+                            iterations: s.iterations,
+                            value: s,
+                        }),
+                        Err(_) => None,
+                    })
+                },
+                |c| {
+                    let n = self.node(c.value, Some(&t));
+                    Ok(Some(Point {
+                        point: n.solved.w,
+                        tangent: Some(n.tangent),
+                        iterations: c.iterations,
+                        value: n,
+                    }))
+                },
+                |_, _| Check::Accept,
+            )?;
+            let (next, h) = match outcome {
+                Outcome::Accepted { point, h } => (point.value, h),
+                Outcome::Stopped(point) => (point.value, path.h()),
+                Outcome::Stalled(_) => {
+                    return Ok((
+                        nodes,
+                        events,
+                        OrbitStop::Stalled {
+                            energy: cur.orbit.energy,
+                        },
+                    ))
+                }
+                Outcome::Exhausted => return Ok((nodes, events, OrbitStop::MaxOrbits)),
+            };
+            // An energy bound crossed: end exactly on it.
+            if let Some((lo, hi)) = self.bounds {
+                let e = next.orbit.energy;
+                if e < lo || e > hi {
+                    let bound = if e < lo { lo } else { hi };
+                    if let Some(end) = self.at_bound(&cur, &next, bound)? {
+                        let sigma = (end.solved.w - cur.solved.w).norm();
+                        events.extend(self.events(&cur, &end, sigma)?);
+                        nodes.push(end);
+                    }
+                    return Ok((nodes, events, OrbitStop::EnergyBound { energy: bound }));
+                }
+            }
+            events.extend(self.events(&cur, &next, h)?);
+            nodes.push(next.clone());
+            let x: Vector6<f64> = next.solved.w.fixed_rows::<6>(0).into();
+            if next.orbit.period > o.max_period_ratio * self.first_period {
+                return Ok((
+                    nodes,
+                    events,
+                    OrbitStop::PeriodBound {
+                        period: next.orbit.period,
+                    },
+                ));
+            }
+            let far_from_origin =
+                origin.is_none_or(|xs| (x - xs).norm() > 20.0 * o.initial_amplitude);
+            if next.orbit.amplitude < small && far_from_origin {
+                return Ok((
+                    nodes,
+                    events,
+                    OrbitStop::ReachedSteadyMotion {
+                        gamma: next.orbit.gamma0,
+                        energy: next.orbit.energy,
+                    },
+                ));
+            }
+            if nodes.len() >= 4 && (next.solved.w - first_w).norm() < 0.5 * h {
+                return Ok((nodes, events, OrbitStop::Closed));
+            }
+            cur = next;
+        }
+    }
+}
+
+/// The frequencies `ω₁ ≥ ω₂ > 0` of an elliptic steady motion (`f₂`'s roots `±iω_k`).
+fn frequencies<M: Routhian>(model: &M, steady: &SteadyMotion) -> Result<[f64; 2], RouthError> {
+    let report = classify(model, steady)?;
+    let elliptic = matches!(
+        report.verdict,
+        Stability::SecularlyStable | Stability::GyroscopicallyStabilized
+    );
+    let mut w: Vec<f64> = report
+        .f2_roots
+        .iter()
+        .filter(|r| r.im > 0.0)
+        .map(|r| r.im)
+        .collect();
+    if !elliptic || w.len() != 2 {
+        return Err(RouthError::InvalidOption {
+            what: "steady",
+            reason: format!(
+                "a Lyapunov family starts at a linearly stable steady motion; this one is {:?}",
+                report.verdict
+            ),
+        });
+    }
+    w.sort_by(|a, b| b.total_cmp(a));
+    Ok([w[0], w[1]])
+}
+
+/// A real vector of the plane of the linear mode of `DF(x_s)` with eigenvalue `iω`.
+fn mode_vector(a: &Matrix6<f64>, omega: f64) -> Vector6<f64> {
+    let m: Matrix6<Complex<f64>> =
+        a.map(|v| Complex::new(v, 0.0)) - Matrix6::from_diagonal_element(Complex::new(0.0, omega));
+    let svd = m.svd(false, true);
+    let v_t = svd.v_t.expect("asked for V");
+    let (mut imin, mut vmin) = (0, f64::INFINITY);
+    for (i, &sv) in svd.singular_values.iter().enumerate() {
+        if sv < vmin {
+            vmin = sv;
+            imin = i;
+        }
+    }
+    // The right singular vector is the conjugate of V^H's row.
+    let v: Vec<Complex<f64>> = v_t.row(imin).iter().map(|z| z.conj()).collect();
+    let re = Vector6::from_fn(|i, _| v[i].re);
+    let im = Vector6::from_fn(|i, _| v[i].im);
+    let u = if re.norm() >= im.norm() { re } else { im };
+    u / u.norm()
+}
+
+/// The Lyapunov family of periodic orbits of mode `mode` (0: the faster frequency ω₁, 1: ω₂)
+/// born at an elliptic steady motion, followed at the steady motion's `p_ψ` through the energy
+/// (docs/method.md §7).
+///
+/// The first orbit is corrected from the mode's linear orbit at amplitude
+/// [`OrbitOptions::initial_amplitude`] (its period near `2π/ω_k`); the family is then followed by
+/// pseudo-arclength until an energy bound, the budget of orbits, a period bound, a return onto a
+/// steady motion, a closed loop or a stall ([`OrbitFamily::stop`]). Folds, branch points and
+/// period doublings are located on the way.
+///
+/// Errors: a steady motion that is not linearly stable (`classify` must say `SecularlyStable` or
+/// `GyroscopicallyStabilized`), `mode > 1`, a resonant start (`ω_j/ω_k` within
+/// [`OrbitOptions::resonance_tol`] of an integer: the family is not unique there and is not
+/// guessed through), invalid options, and a first orbit that cannot be corrected.
+pub fn lyapunov_family<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    mode: usize,
+    opts: &OrbitOptions,
+) -> Result<OrbitFamily, RouthError> {
+    opts.validate()?;
+    if mode > 1 {
+        return Err(RouthError::InvalidOption {
+            what: "mode",
+            reason: format!("0 (ω₁) or 1 (ω₂), got {mode}"),
+        });
+    }
+    let w = frequencies(model, steady)?;
+    let (wk, wj) = (w[mode], w[1 - mode]);
+    let ratio = wj / wk;
+    let n = ratio.round();
+    if n >= 1.0 && (ratio - n).abs() <= opts.resonance_tol {
+        return Err(RouthError::InvalidOption {
+            what: "mode",
+            reason: format!(
+                "resonant start: ω_j/ω_k = {:.6}/{:.6} = {ratio:.6} is within {} of {n}; the \
+                 Lyapunov family of this mode is not unique",
+                wj, wk, opts.resonance_tol
+            ),
+        });
+    }
+    let gamma = crate::validate::unit_gamma("steady.gamma", &steady.gamma)?;
+    let xs = join(&(gamma * steady.psi_dot), &gamma);
+    let (_, a) = field_and_jacobian(model, &xs)?;
+    let u = mode_vector(&a, wk);
+    let period = 2.0 * std::f64::consts::PI / wk;
+    let x0 = xs + u * opts.initial_amplitude;
+    // Back onto |γ| = 1 (the mode is tangent to the sphere; this removes the second order).
+    let (w0, g0) = split(&x0);
+    let x0 = join(&w0, &g0.normalize());
+    check_guess(model, &w0, &g0.normalize(), period)?;
+    let e0 = model.energy(&w0, &g0.normalize());
+    let scales = Scales {
+        t: period,
+        e: 1f64.max(steady.energy.abs()),
+    };
+    let tracer = Tracer {
+        model,
+        opts,
+        p_psi: steady.p_psi,
+        scales,
+        bounds: opts.energy_bounds,
+        first_period: period,
+    };
+    let prob = Problem::at(model, &x0, steady.p_psi, scales)?;
+    let row = LinearRow::energy(&scales, e0);
+    let first = match correct(model, &prob, &row, &scales.pack(&x0, period, e0), opts)? {
+        Ok(s) => s,
+        Err(best) => {
+            return Err(RouthError::NoConvergence {
+                what: "the first orbit of the Lyapunov family",
+                iterations: opts.max_iter,
+                residual: best,
+            })
+        }
+    };
+    let mut start = tracer.node(first, None);
+    // Oriented towards larger amplitudes.
+    let dx: Vector6<f64> = start.solved.w.fixed_rows::<6>(0) - xs;
+    let tx: Vector6<f64> = start.tangent.fixed_rows::<6>(0).into();
+    if tx.dot(&dx) < 0.0 {
+        start.tangent = -start.tangent;
+    }
+    let mut orbits = vec![start.orbit.clone()];
+    let (nodes, events, stop) =
+        tracer.trace(start, opts.max_orbits.saturating_sub(1), Some(&xs))?;
+    orbits.extend(nodes.into_iter().map(|n| n.orbit));
+    Ok(OrbitFamily {
+        orbits,
+        events,
+        stop: Some(stop),
+    })
+}
+
+/// Corrects `orbit` in the family's unknowns (and checks it is an orbit).
+fn restart<M: Routhian>(
+    model: &M,
+    orbit: &PeriodicOrbit,
+    opts: &OrbitOptions,
+) -> Result<(Solved, Scales), RouthError> {
+    let x = check_guess(model, &orbit.omega0, &orbit.gamma0, orbit.period)?;
+    let e = model.energy(&orbit.omega0, &x.fixed_rows::<3>(3).into());
+    let p = orbit.p_psi;
+    let scales = Scales {
+        t: orbit.period,
+        e: 1f64.max(e.abs()),
+    };
+    let prob = Problem::at(model, &x, p, scales)?;
+    let row = LinearRow::energy(&scales, e);
+    match correct(model, &prob, &row, &scales.pack(&x, orbit.period, e), opts)? {
+        Ok(s) => Ok((s, scales)),
+        Err(best) => Err(RouthError::NoConvergence {
+            what: "the starting orbit (not a periodic orbit)",
+            iterations: opts.max_iter,
+            residual: best,
+        }),
+    }
+}
+
+/// Follows the family through `orbit` at its `p_ψ` over `energy_range`, in both directions, by
+/// pseudo-arclength (through folds), locating folds, branch points and period doublings
+/// (docs/method.md §7). The orbits come from the lower end to the upper end of the part traced
+/// (in the order of continuation along the family); [`OrbitFamily::stop`] is `None` when both
+/// directions reached the range's ends, else the first other reason.
+pub fn continue_orbit<M: Routhian>(
+    model: &M,
+    orbit: &PeriodicOrbit,
+    energy_range: (f64, f64),
+    opts: &OrbitOptions,
+) -> Result<OrbitFamily, RouthError> {
+    opts.validate()?;
+    let (lo, hi) = energy_range;
+    if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+        return Err(RouthError::InvalidOption {
+            what: "energy_range",
+            reason: format!("need finite lo < hi, got ({lo}, {hi})"),
+        });
+    }
+    let (s, scales) = restart(model, orbit, opts)?;
+    let tracer = Tracer {
+        model,
+        opts,
+        p_psi: orbit.p_psi,
+        scales,
+        bounds: Some((lo, hi)),
+        first_period: orbit.period,
+    };
+    let mut up = tracer.node(s, None);
+    if up.tangent[7] < 0.0 {
+        up.tangent = -up.tangent;
+    }
+    let mut down = up.clone();
+    down.tangent = -down.tangent;
+    let budget = opts.max_orbits.saturating_sub(1);
+    let (n_up, ev_up, stop_up) = tracer.trace(up.clone(), budget.div_ceil(2), None)?;
+    let (n_dn, ev_dn, stop_dn) = tracer.trace(down, budget / 2, None)?;
+    let mut orbits: Vec<PeriodicOrbit> = n_dn.iter().rev().map(|n| n.orbit.clone()).collect();
+    orbits.push(up.orbit.clone());
+    orbits.extend(n_up.into_iter().map(|n| n.orbit));
+    let mut events: Vec<OrbitEvent> = ev_dn
+        .into_iter()
+        .rev()
+        .map(|e| OrbitEvent {
+            before: e.after,
+            after: e.before,
+            ..e
+        })
+        .collect();
+    events.extend(ev_up);
+    let bound = |s: &OrbitStop| matches!(s, OrbitStop::EnergyBound { .. });
+    let stop = if bound(&stop_up) && bound(&stop_dn) {
+        None
+    } else if !bound(&stop_up) {
+        Some(stop_up)
+    } else {
+        Some(stop_dn)
+    };
+    Ok(OrbitFamily {
+        orbits,
+        events,
+        stop,
+    })
+}
+
+/// The family of orbits of twice the period born at a [`OrbitEventKind::PeriodDoubling`] event,
+/// followed away from it (docs/method.md §7): the branch leaves the doubly traversed orbit along
+/// the eigenvector of the monodromy for the multiplier −1, which the first step's pseudo-arclength
+/// row follows (so that the corrector cannot fall back onto the orbit traversed twice).
+///
+/// Errors: an event that is not a period doubling, and a first orbit that cannot be corrected.
+pub fn period_doubled_family<M: Routhian>(
+    model: &M,
+    event: &OrbitEvent,
+    opts: &OrbitOptions,
+) -> Result<OrbitFamily, RouthError> {
+    opts.validate()?;
+    if event.kind != OrbitEventKind::PeriodDoubling {
+        return Err(RouthError::InvalidOption {
+            what: "event",
+            reason: format!("a period doubling is needed, got a {}", event.kind),
+        });
+    }
+    let (s, scales) = restart(model, &event.orbit, opts)?;
+    // The eigenvector of Φ(T) for −1: the null vector of Φ + I restricted by the constraints
+    // (the rows of E, p_ψ and |γ|² keep it on the level set).
+    let mut m = SMatrix::<f64, 9, 6>::zeros();
+    let phi = s.shot.monodromy;
+    for i in 0..6 {
+        for k in 0..6 {
+            m[(i, k)] = phi[(i, k)] + if i == k { 1.0 } else { 0.0 };
+        }
+    }
+    for k in 0..6 {
+        m[(6, k)] = s.jac[(7, k)];
+        m[(7, k)] = s.jac[(8, k)];
+        m[(8, k)] = s.jac[(9, k)];
+    }
+    let svd = m.svd(false, true);
+    let v_t = svd.v_t.expect("asked for V");
+    let (mut imin, mut vmin) = (0, f64::INFINITY);
+    for (i, &sv) in svd.singular_values.iter().enumerate() {
+        if sv < vmin {
+            vmin = sv;
+            imin = i;
+        }
+    }
+    let v: Vector6<f64> = v_t.row(imin).transpose();
+    let doubled = Scales {
+        t: 2.0 * event.orbit.period,
+        e: scales.e,
+    };
+    let x: Vector6<f64> = s.w.fixed_rows::<6>(0).into();
+    let e = event.orbit.energy;
+    let w_pd = doubled.pack(&x, 2.0 * event.orbit.period, e);
+    let mut n = W::zeros();
+    n.fixed_rows_mut::<6>(0).copy_from(&(v / v.norm()));
+    let tracer = Tracer {
+        model,
+        opts,
+        p_psi: event.orbit.p_psi,
+        scales: doubled,
+        bounds: opts.energy_bounds,
+        first_period: doubled.t,
+    };
+    let prob = Problem::at(model, &x, event.orbit.p_psi, doubled)?;
+    let mut h = opts.initial_step.max(10.0 * opts.initial_amplitude);
+    let mut first = None;
+    while h >= opts.min_step {
+        let pred = w_pd + n * h;
+        let row = LinearRow::arclength(&n, &pred);
+        if let Ok(sol) = correct(model, &prob, &row, &pred, opts)? {
+            first = Some(sol);
+            break;
+        }
+        h *= 0.5;
+    }
+    let Some(first) = first else {
+        return Err(RouthError::NoConvergence {
+            what: "the first orbit of the period-doubled family",
+            iterations: opts.max_iter,
+            residual: f64::NAN,
+        });
+    };
+    let mut start = tracer.node(first, None);
+    let away: Vector6<f64> = start.solved.w.fixed_rows::<6>(0) - x;
+    let tx: Vector6<f64> = start.tangent.fixed_rows::<6>(0).into();
+    if tx.dot(&away) < 0.0 {
+        start.tangent = -start.tangent;
+    }
+    let mut orbits = vec![start.orbit.clone()];
+    let (nodes, events, stop) = tracer.trace(start, opts.max_orbits.saturating_sub(1), None)?;
+    orbits.extend(nodes.into_iter().map(|n| n.orbit));
+    Ok(OrbitFamily {
+        orbits,
+        events,
+        stop: Some(stop),
+    })
+}

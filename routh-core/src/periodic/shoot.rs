@@ -1,0 +1,440 @@
+//! The shooting corrector of periodic orbits and [`periodic_orbit`] (docs/method.md §7).
+//!
+//! Unknowns `w = (x₀, T/t_s, E/e_s) ∈ ℝ⁸` (`t_s`, `e_s` scales of the family, so that a
+//! pseudo-arclength in `w` weighs the period and the energy like the state). Rows:
+//! `φ_T(x₀) − x₀` (6), the phase `F̂_ref·(x₀ − x_ref)`, `E(x₀) − E`, `p_ψ(x₀) − p_ψ`,
+//! `(|γ₀|² − 1)/2` (the gradient rows scaled to unit length) and one linear row (the energy fixed,
+//! or the continuation's). The 11 × 8 system is consistent and of full column rank at a regular
+//! orbit; each step is its minimum-norm least-squares solution (SVD, singular values below
+//! `1e−12` of the largest dropped), the step in `T` limited to a third of the period.
+//!
+//! This is a second Newton next to the sphere's fixed-size 4 × 4 one (`sphere::newton`), kept
+//! apart deliberately: its unknowns are eight, its residual is a flow, and its stop rule is on
+//! the flow's integration tolerance (docs/architecture.md).
+
+use nalgebra::{SMatrix, SVector, Vector3, Vector6};
+
+use super::flow::{field, integrals, join, precession, shoot, split, Shot};
+use super::{OrbitOptions, OrbitStability, PeriodicOrbit};
+use crate::locate::{illinois, End};
+use crate::sim::dop853::{self, Accepted, Config};
+use crate::validate::{check_finite, unit_gamma};
+use crate::{Lagrangian, RouthError};
+
+pub(crate) type W = SVector<f64, 8>;
+type Jac = SMatrix<f64, 11, 8>;
+
+/// The scales of the period and the energy in the unknowns.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Scales {
+    pub t: f64,
+    pub e: f64,
+}
+
+impl Scales {
+    pub fn pack(&self, x: &Vector6<f64>, t: f64, e: f64) -> W {
+        let mut w = W::zeros();
+        w.fixed_rows_mut::<6>(0).copy_from(x);
+        w[6] = t / self.t;
+        w[7] = e / self.e;
+        w
+    }
+    pub fn period(&self, w: &W) -> f64 {
+        w[6] * self.t
+    }
+    pub fn energy(&self, w: &W) -> f64 {
+        w[7] * self.e
+    }
+}
+
+/// The linear row closing the system: `a·w = b`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LinearRow {
+    pub a: W,
+    pub b: f64,
+}
+
+impl LinearRow {
+    /// The energy fixed at `e`.
+    pub fn energy(scales: &Scales, e: f64) -> Self {
+        let mut a = W::zeros();
+        a[7] = 1.0;
+        LinearRow { a, b: e / scales.e }
+    }
+    /// Pseudo-arclength `n·(w − w_pred) = 0`.
+    pub fn arclength(n: &W, w_pred: &W) -> Self {
+        LinearRow {
+            a: *n,
+            b: n.dot(w_pred),
+        }
+    }
+}
+
+/// What the corrector needs besides the row: the momentum and the phase condition's plane.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Problem {
+    pub p_psi: f64,
+    pub x_ref: Vector6<f64>,
+    /// `F(x_ref)/|F(x_ref)|`.
+    pub f_ref: Vector6<f64>,
+    pub scales: Scales,
+}
+
+impl Problem {
+    /// The phase plane through `x` (an orbit's point, not a steady motion).
+    pub fn at<M: Lagrangian + ?Sized>(
+        model: &M,
+        x: &Vector6<f64>,
+        p_psi: f64,
+        scales: Scales,
+    ) -> Result<Self, RouthError> {
+        let f = field(model, x)?;
+        Ok(Problem {
+            p_psi,
+            x_ref: *x,
+            f_ref: f / f.norm(),
+            scales,
+        })
+    }
+}
+
+/// A corrected orbit: the unknowns, the flow over its period and the system's Jacobian there.
+#[derive(Clone)]
+pub(crate) struct Solved {
+    pub w: W,
+    pub shot: ShotSummary,
+    pub jac: Jac,
+    pub iterations: usize,
+}
+
+/// What is kept of the last integration.
+#[derive(Clone)]
+pub(crate) struct ShotSummary {
+    pub trace: f64,
+    pub precession: f64,
+    pub reach: f64,
+    pub monodromy: nalgebra::Matrix6<f64>,
+}
+
+/// The residual and Jacobian of the system at `w`, with the flow.
+fn linearise<M: Lagrangian + ?Sized>(
+    model: &M,
+    prob: &Problem,
+    row: &LinearRow,
+    w: &W,
+    opts: &OrbitOptions,
+) -> Result<(SVector<f64, 11>, Jac, Shot), RouthError> {
+    let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
+    let t = prob.scales.period(w);
+    if !(t.is_finite() && t > 0.0) {
+        return Err(RouthError::NoConvergence {
+            what: "periodic orbit (the period left (0, ∞))",
+            iterations: 0,
+            residual: f64::NAN,
+        });
+    }
+    let s = shoot(model, &x, t, opts)?;
+    let f_end = field(model, &s.end)?;
+    let (e, de, p, dp) = integrals(model, &x);
+    let (_, g) = split(&x);
+    let (ne, np) = (
+        de.norm().max(f64::MIN_POSITIVE),
+        dp.norm().max(f64::MIN_POSITIVE),
+    );
+    let mut r = SVector::<f64, 11>::zeros();
+    let mut j = Jac::zeros();
+    let gap = s.end - x;
+    for i in 0..6 {
+        r[i] = gap[i];
+        for k in 0..6 {
+            j[(i, k)] = s.monodromy[(i, k)] - if i == k { 1.0 } else { 0.0 };
+        }
+        j[(i, 6)] = f_end[i] * prob.scales.t;
+    }
+    r[6] = prob.f_ref.dot(&(x - prob.x_ref));
+    r[7] = (e - prob.scales.energy(w)) / ne;
+    r[8] = (p - prob.p_psi) / np;
+    r[9] = 0.5 * (g.norm_squared() - 1.0);
+    r[10] = row.a.dot(w) - row.b;
+    for k in 0..6 {
+        j[(6, k)] = prob.f_ref[k];
+        j[(7, k)] = de[k] / ne;
+        j[(8, k)] = dp[k] / np;
+    }
+    j[(7, 7)] = -prob.scales.e / ne;
+    for k in 0..3 {
+        j[(9, 3 + k)] = g[k];
+    }
+    for k in 0..8 {
+        j[(10, k)] = row.a[k];
+    }
+    Ok((r, j, s))
+}
+
+/// Corrects `w` to an orbit (`Ok(None)`: no convergence within `max_iter` steps, or the period
+/// left `(0, ∞)`; integration failures are errors).
+pub(crate) fn correct<M: Lagrangian + ?Sized>(
+    model: &M,
+    prob: &Problem,
+    row: &LinearRow,
+    w0: &W,
+    opts: &OrbitOptions,
+) -> Result<Result<Solved, f64>, RouthError> {
+    let mut w = *w0;
+    let mut best = f64::INFINITY;
+    for it in 0..=opts.max_iter {
+        let t = prob.scales.period(&w);
+        if !(t.is_finite() && t > 0.0) {
+            return Ok(Err(best));
+        }
+        let (r, j, s) = match linearise(model, prob, row, &w, opts) {
+            Ok(v) => v,
+            Err(RouthError::TooManySteps { .. })
+            | Err(RouthError::StepSizeUnderflow { .. })
+            | Err(RouthError::NonFiniteState { .. }) => return Ok(Err(best)),
+            Err(e) => return Err(e),
+        };
+        let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
+        let scale = 1f64.max(x.norm());
+        let res = r.amax() / scale;
+        best = best.min(res);
+        if !res.is_finite() {
+            return Ok(Err(best));
+        }
+        if res <= opts.newton_tol {
+            let (_, g) = split(&x);
+            let mut w = w;
+            let gn = g.normalize();
+            w.fixed_rows_mut::<3>(3).copy_from(&gn);
+            let trace = s.monodromy.trace();
+            return Ok(Ok(Solved {
+                w,
+                shot: ShotSummary {
+                    trace,
+                    precession: precession(&s.turn, &gn),
+                    reach: s.reach,
+                    monodromy: s.monodromy,
+                },
+                jac: j,
+                iterations: it,
+            }));
+        }
+        if it == opts.max_iter {
+            break;
+        }
+        let svd = j.svd(true, true);
+        let cut = 1e-12 * svd.singular_values.max();
+        let Ok(step) = svd.solve(&r, cut) else {
+            return Ok(Err(best));
+        };
+        let mut step = -step;
+        let dt = step[6].abs() * prob.scales.t;
+        if dt > t / 3.0 {
+            step *= t / 3.0 / dt;
+        }
+        w += step;
+    }
+    Ok(Err(best))
+}
+
+/// The orbit of a solved system.
+pub(crate) fn orbit_of<M: Lagrangian + ?Sized>(
+    model: &M,
+    s: &Solved,
+    scales: &Scales,
+    opts: &OrbitOptions,
+) -> PeriodicOrbit {
+    let x: Vector6<f64> = s.w.fixed_rows::<6>(0).into();
+    let (omega0, gamma0) = split(&x);
+    let k = 0.5 * (s.shot.trace - 4.0);
+    PeriodicOrbit {
+        omega0,
+        gamma0,
+        period: scales.period(&s.w),
+        energy: model.energy(&omega0, &gamma0),
+        p_psi: model.cyclic_momentum(&omega0, &gamma0),
+        precession: s.shot.precession,
+        multipliers: PeriodicOrbit::multipliers_from_index(k),
+        stability_index: k,
+        stability: OrbitStability::from_index(k, opts.parabolic_tol),
+        amplitude: s.shot.reach,
+    }
+}
+
+/// The time of the guess's closest return through its own phase plane within `(T/2, 4T)` of the
+/// period guessed: where `g(t) = F̂_ref·(x(t) − x_ref)` crosses zero upwards (as at `t = 0`, where
+/// `g' = |F| > 0`), the crossing nearest to `x_ref`. A user's period guess is often off by tens
+/// of per cent (a pendulum's period doubles near the separatrix); Newton's basin in `T` is
+/// narrower. `None`: no return (then the guess is used as it is).
+fn return_time<M: Lagrangian + ?Sized>(
+    model: &M,
+    prob: &Problem,
+    period: f64,
+    opts: &OrbitOptions,
+) -> Option<f64> {
+    let (rtol, atol) = (opts.rtol.max(1e-10), opts.atol.max(1e-12));
+    let weights = move |a: &Vector6<f64>, b: &Vector6<f64>| {
+        a.zip_map(b, |p, q| atol + rtol * p.abs().max(q.abs()))
+    };
+    let cfg = Config {
+        weights: &weights,
+        h_max: f64::INFINITY,
+        h_init: None,
+        max_steps: opts.max_steps,
+        dense: true,
+    };
+    let g = |x: &Vector6<f64>| prob.f_ref.dot(&(x - prob.x_ref));
+    let mut prev = (0.0, 0.0);
+    let mut best: Option<(f64, f64)> = None;
+    let rhs = |_t: f64, x: &Vector6<f64>| field(model, x);
+    let _ = dop853::integrate(
+        rhs,
+        0.0,
+        prob.x_ref,
+        4.0 * period,
+        &cfg,
+        |s: &Accepted<'_, 6>| {
+            let now = (s.t, g(s.y));
+            if prev.1 < 0.0 && now.1 >= 0.0 && s.t > 0.5 * period {
+                if let Some(d) = s.dense {
+                    let z = illinois(
+                        End {
+                            at: prev.0,
+                            value: prev.1,
+                            point: (),
+                        },
+                        End {
+                            at: now.0,
+                            value: now.1,
+                            point: (),
+                        },
+                        100,
+                        |t| Ok::<_, RouthError>(Some((g(&d.eval(t)), ()))),
+                        |lo, hi| hi.at - lo.at <= 1e-12 * hi.at,
+                    )?;
+                    let dist = (d.eval(z.at) - prob.x_ref).norm();
+                    if best.is_none_or(|(_, b)| dist < b) {
+                        best = Some((z.at, dist));
+                    }
+                }
+            }
+            prev = now;
+            Ok(())
+        },
+    );
+    best.map(|(t, _)| t)
+}
+
+/// Checks a guess: finite, `|γ| = 1`, `T > 0`, and not a steady motion (a point that moves by
+/// less than `1e−8·max(1, |x|)` over `T`). Returns `x` with γ normalised.
+pub(crate) fn check_guess<M: Lagrangian + ?Sized>(
+    model: &M,
+    omega: &Vector3<f64>,
+    gamma: &Vector3<f64>,
+    period: f64,
+) -> Result<Vector6<f64>, RouthError> {
+    check_finite("omega_guess", omega.as_slice())?;
+    let gamma = unit_gamma("gamma_guess", gamma)?;
+    check_finite("period_guess", &[period])?;
+    if period <= 0.0 {
+        return Err(RouthError::InvalidOption {
+            what: "period_guess",
+            reason: format!("the period must be positive, got {period}"),
+        });
+    }
+    crate::validate::check_kinetic(model, &gamma)?;
+    let x = join(omega, &gamma);
+    let f = field(model, &x)?;
+    if f.norm() * period <= 1e-8 * 1f64.max(x.norm()) {
+        return Err(RouthError::InvalidOption {
+            what: "omega_guess, gamma_guess",
+            reason: "the guess is a steady motion (the state does not move); start a family of \
+                     periodic orbits from it with lyapunov_family"
+                .into(),
+        });
+    }
+    Ok(x)
+}
+
+/// Corrects a guess to a periodic orbit of the full equations (8) with the energy (3) and the
+/// cyclic momentum (9) of the guess, and gives its period, precession `Δψ` over one period, Floquet
+/// multipliers and stability (docs/method.md §7).
+///
+/// The guess need not lie on the orbit's phase: the corrected `(ω₀, γ₀)` is the orbit's point
+/// on the plane through the guess normal to the flow there.
+///
+/// Errors: a non-finite guess, a non-unit γ, `T ≤ 0`, a guess that is a steady motion
+/// ([`RouthError::InvalidOption`]), invalid options, and [`RouthError::NoConvergence`] when the
+/// corrector does not converge within [`OrbitOptions::max_iter`] steps.
+///
+/// ```
+/// use routh_core::{periodic_orbit, OrbitOptions, OrbitStability, Vector3};
+/// # use routh_core::{Lagrangian, Matrix3};
+/// // A heavy body swinging in a vertical plane (a compound pendulum; test-models has such
+/// // bodies): small swings of amplitude 0.05 rad about the hanging position.
+/// # struct Pendulum;
+/// # impl Lagrangian for Pendulum {
+/// #     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
+/// #         0.5 * (w.x * w.x + 2.0 * w.y * w.y + 3.0 * w.z * w.z) - g.z
+/// #     }
+/// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+/// #         Vector3::new(w.x, 2.0 * w.y, 3.0 * w.z)
+/// #     }
+/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
+/// #         Vector3::new(0.0, 0.0, -1.0)
+/// #     }
+/// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> {
+/// #         Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0))
+/// #     }
+/// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
+/// #         Matrix3::zeros()
+/// #     }
+/// # }
+/// // U = γ₃: the centre of mass is on the body's third axis, below the support when γ₃ = −1.
+/// let a = 0.05f64;
+/// let gamma = Vector3::new(0.0, a.sin(), -a.cos());
+/// let orbit = periodic_orbit(&Pendulum, Vector3::zeros(), gamma, 6.0, &OrbitOptions::default())?;
+/// // Small swings about the first axis (inertia 1): T ≈ 2π·(1 + a²/16).
+/// let t0 = 2.0 * std::f64::consts::PI;
+/// assert!((orbit.period - t0 * (1.0 + a * a / 16.0)).abs() < 1e-5);
+/// # Ok::<(), routh_core::RouthError>(())
+/// ```
+pub fn periodic_orbit<M: crate::Routhian>(
+    model: &M,
+    omega_guess: Vector3<f64>,
+    gamma_guess: Vector3<f64>,
+    period_guess: f64,
+    opts: &OrbitOptions,
+) -> Result<PeriodicOrbit, RouthError> {
+    opts.validate()?;
+    let x = check_guess(model, &omega_guess, &gamma_guess, period_guess)?;
+    let (w, g) = split(&x);
+    let e = model.energy(&w, &g);
+    let p = model.cyclic_momentum(&w, &g);
+    check_finite("energy of the guess", &[e, p])?;
+    let scales = Scales {
+        t: period_guess,
+        e: 1f64.max(e.abs()),
+    };
+    let prob = Problem::at(model, &x, p, scales)?;
+    let row = LinearRow::energy(&scales, e);
+    let t0 = return_time(model, &prob, period_guess, opts).unwrap_or(period_guess);
+    let w0 = scales.pack(&x, t0, e);
+    match correct(model, &prob, &row, &w0, opts)? {
+        Ok(s) => {
+            if s.shot.reach <= 1e-8 * 1f64.max(x.norm()) {
+                return Err(RouthError::NoConvergence {
+                    what: "periodic orbit (the guess converged to a steady motion)",
+                    iterations: s.iterations,
+                    residual: 0.0,
+                });
+            }
+            Ok(orbit_of(model, &s, &scales, opts))
+        }
+        Err(best) => Err(RouthError::NoConvergence {
+            what: "periodic orbit",
+            iterations: opts.max_iter,
+            residual: best,
+        }),
+    }
+}
