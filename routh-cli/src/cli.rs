@@ -44,6 +44,13 @@ pub enum Command {
     Simulate(Simulate),
     /// The steady motions at p_ψ = P with an interval-arithmetic certificate that none is missed.
     Certify(Certify),
+    /// The Lyapunov families of periodic orbits born at the linearly stable steady motions at
+    /// p_ψ = P (each mode, or `--mode`): energy, period, precession Δψ and stability index k of
+    /// the orbits, and the folds, branch points and period doublings along each family.
+    Orbits(Orbits),
+    /// A Poincaré section at p_ψ = P and energy E: many orbits crossing the plane γ·n = 0 (the
+    /// points as CSV or JSON; regular motion shows as curves, chaos as scattered dots).
+    Section(Section),
     /// The derived formulas: the Lagrangian, the amended potential U_r(γ, p_ψ) and ψ̇(0, γ, p_ψ);
     /// with `--latex`, all seven derived formulas (L, ψ̇, R, U_r, A, G, C) in LaTeX.
     Formulas(Formulas),
@@ -205,4 +212,57 @@ pub struct Certify {
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `orbits`.
+#[derive(Debug, Args)]
+pub struct Orbits {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// The cyclic momentum p_ψ.
+    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: f64,
+    /// 0 (the faster frequency ω₁) or 1 (the slower ω₂); both when omitted.
+    #[arg(long)]
+    pub mode: Option<usize>,
+    /// `X,Y,Z`: only the steady motion nearest this γ.
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub gamma: Option<[f64; 3]>,
+    /// `LO..HI`: keep each family within these energies.
+    #[arg(long, value_parser = args::range, allow_hyphen_values = true)]
+    pub energy: Option<(f64, f64)>,
+    /// The most orbits per family.
+    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u16).range(1..=10000))]
+    pub max_orbits: u16,
+    /// The most rows printed per family in the table (every orbit with `--csv`/`--json`).
+    #[arg(long, default_value_t = 12)]
+    pub rows: usize,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `section`.
+#[derive(Debug, Args)]
+pub struct Section {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// The cyclic momentum p_ψ.
+    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: f64,
+    /// The energy E.
+    #[arg(long, short = 'e', value_parser = args::finite, allow_hyphen_values = true)]
+    pub energy: f64,
+    /// `X,Y,Z`: the plane is γ·n = 0 (body frame); default 1,0,0.
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub normal: Option<[f64; 3]>,
+    /// How many orbits.
+    #[arg(long, default_value_t = 50, value_parser = clap::value_parser!(u16).range(1..=5000))]
+    pub orbits: u16,
+    /// Crossings per orbit.
+    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100000))]
+    pub crossings: u32,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
 }

@@ -10,6 +10,7 @@ mod commands;
 mod diagram;
 mod error;
 mod nonlinear;
+mod orbits;
 mod progress;
 mod simulate;
 mod table;
@@ -28,6 +29,8 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Atlas(a) => atlas::atlas(a),
         Command::Simulate(s) => simulate::simulate(s),
         Command::Certify(c) => certify::certify(c),
+        Command::Orbits(o) => orbits::orbits(o),
+        Command::Section(s) => orbits::section(s),
         Command::Formulas(f) => commands::formulas(f),
     }
 }

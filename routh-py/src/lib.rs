@@ -3,7 +3,8 @@
 //! Every analysis of `routh` is exposed on the run-time [`routh::Model`]: steady motions (paper
 //! (45)–(46)), their classification (section 4–5, errata E5/E8), bifurcation diagrams and
 //! stability atlases of families, simulation of the full (1)–(2) and reduced (39) equations, and
-//! certified enumeration. Vectors go in and out as numpy arrays; errors become the Python
+//! certified enumeration, and periodic orbits (relative periodic orbits, their Lyapunov families,
+//! Floquet stability and Poincaré sections). Vectors go in and out as numpy arrays; errors become the Python
 //! exceptions `routh.RouthError` and `routh.ModelError`; long work releases the GIL.
 //!
 //! The pure-Python layer (`python/routh/__init__.py`) adds plots and reprs.
@@ -15,6 +16,7 @@ mod family;
 mod guard;
 mod latex;
 mod nonlinear;
+mod orbits;
 mod progress;
 mod results;
 mod trajectory;
@@ -52,6 +54,10 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Certificate>()?;
     m.add_class::<LatexFormulas>()?;
     m.add_class::<nonlinear::NonlinearReport>()?;
+    m.add_class::<orbits::PeriodicOrbit>()?;
+    m.add_class::<orbits::OrbitFamily>()?;
+    m.add_class::<orbits::OrbitEvent>()?;
+    m.add_class::<orbits::PoincareSection>()?;
     m.add_function(wrap_pyfunction!(family::bifurcation_diagram, m)?)?;
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;

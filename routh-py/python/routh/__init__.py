@@ -25,6 +25,10 @@ from ._routh import (
     Model,
     ModelError,
     NonlinearReport,
+    OrbitEvent,
+    OrbitFamily,
+    PeriodicOrbit,
+    PoincareSection,
     ReducedTrajectory,
     RouthError,
     StabilityReport,
@@ -42,6 +46,8 @@ StabilityAtlas = Atlas
 VERDICTS = ("secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate")
 EVENT_KINDS = ("fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate", "resonance")
 NONLINEAR_VERDICTS = ("secularly_stable", "lyapunov_stable", "unstable", "undecided")
+ORBIT_STABILITIES = ("elliptic", "parabolic", "hyperbolic", "inverse_hyperbolic")
+ORBIT_EVENT_KINDS = ("fold", "branch_point", "period_doubling")
 
 __all__ = [
     "Atlas",
@@ -58,6 +64,12 @@ __all__ = [
     "ModelError",
     "NONLINEAR_VERDICTS",
     "NonlinearReport",
+    "ORBIT_EVENT_KINDS",
+    "ORBIT_STABILITIES",
+    "OrbitEvent",
+    "OrbitFamily",
+    "PeriodicOrbit",
+    "PoincareSection",
     "ReducedTrajectory",
     "RouthError",
     "StabilityAtlas",

@@ -9,12 +9,16 @@ import numpy.typing as npt
 Verdict = Literal["secularly_stable", "gyroscopically_stabilized", "unstable", "degenerate"]
 EventKind = Literal["fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate", "resonance"]
 NonlinearVerdict = Literal["secularly_stable", "lyapunov_stable", "unstable", "undecided"]
+OrbitStability = Literal["elliptic", "parabolic", "hyperbolic", "inverse_hyperbolic"]
+OrbitEventKind = Literal["fold", "branch_point", "period_doubling"]
 ParamValue = Union[float, Sequence[float], Sequence[Sequence[float]], npt.ArrayLike]
 Vec3 = Union[Sequence[float], npt.NDArray[np.float64]]
 
 VERDICTS: tuple[str, ...]
 EVENT_KINDS: tuple[str, ...]
 NONLINEAR_VERDICTS: tuple[str, ...]
+ORBIT_STABILITIES: tuple[str, ...]
+ORBIT_EVENT_KINDS: tuple[str, ...]
 MAX_ATLAS_NODES: int
 """The largest atlas grid nx·ny accepted (larger ones raise RouthError before allocating)."""
 __version__: str
@@ -232,6 +236,64 @@ class LatexFormulas:
     def __getitem__(self, name: str) -> str: ...
     def _repr_latex_(self) -> str: ...
 
+class PeriodicOrbit:
+    """A periodic orbit of the full equations (a relative periodic orbit of the body).
+
+    >>> o = m.periodic_orbit([0, 0, 0], [0, np.sin(0.5), -np.cos(0.5)], 6.0)
+    >>> o.period, o.stability_index, o.stability
+    """
+    omega0: npt.NDArray[np.float64]
+    gamma0: npt.NDArray[np.float64]
+    period: float
+    energy: float
+    p_psi: float
+    precession: float
+    multipliers: npt.NDArray[np.complex128]
+    stability_index: float
+    stability: OrbitStability
+    amplitude: float
+    def to_json(self) -> str: ...
+
+class OrbitEvent:
+    """A fold, branch point or period doubling of a family of periodic orbits."""
+    kind: OrbitEventKind
+    energy: float
+    orbit: PeriodicOrbit
+    before: OrbitStability
+    after: OrbitStability
+
+class OrbitFamily:
+    """A family of periodic orbits at one p_ψ, in the order of continuation.
+
+    >>> f = m.lyapunov_family(hanging, 0, max_orbits=40)
+    >>> ax = f.plot()                       # k against E, k = ±1, events named
+    >>> ax = f.plot(quantity="period")      # T against E
+    """
+    orbits: list[PeriodicOrbit]
+    events: list[OrbitEvent]
+    stop: str | None
+    energy: npt.NDArray[np.float64]
+    period: npt.NDArray[np.float64]
+    stability_index: npt.NDArray[np.float64]
+    precession: npt.NDArray[np.float64]
+    stability: list[OrbitStability]
+    def __len__(self) -> int: ...
+    def plot(self, ax: Any = None, quantity: Literal["stability_index", "period"] = "stability_index") -> Any: ...
+    def to_json(self) -> str: ...
+
+class PoincareSection:
+    """Crossings of the plane γ·n = 0 at (p_ψ, E) in the coordinates (θ, M_n).
+
+    >>> s = m.poincare_section(0.0, -1.0, orbits=20, crossings=100)
+    >>> ax = s.plot(fixed_points=m.orbit_crossings(orbit))
+    """
+    p_psi: float
+    energy: float
+    normal: npt.NDArray[np.float64]
+    points: list[npt.NDArray[np.float64]]
+    starts: npt.NDArray[np.float64]
+    def plot(self, ax: Any = None, fixed_points: npt.ArrayLike | None = None) -> Any: ...
+
 class Model:
     """A rigid body: a Lagrangian in the derive's language and its parameters.
 
@@ -264,6 +326,54 @@ class Model:
     def classify(self, motion: SteadyMotion) -> StabilityReport: ...
     def classify_circle(self, motion: SteadyMotion, axis: Vec3) -> CircleReport:
         """A circle of steady motions decided modulo the symmetry about `axis`."""
+    def periodic_orbit(
+        self,
+        omega: Vec3,
+        gamma: Vec3,
+        period: float,
+        *,
+        rtol: float | None = None,
+        atol: float | None = None,
+        newton_tol: float | None = None,
+    ) -> PeriodicOrbit: ...
+    def lyapunov_family(
+        self,
+        motion: SteadyMotion,
+        mode: int = 0,
+        *,
+        max_orbits: int | None = None,
+        energy_bounds: tuple[float, float] | None = None,
+        max_step: float | None = None,
+        initial_amplitude: float | None = None,
+        rtol: float | None = None,
+        atol: float | None = None,
+        newton_tol: float | None = None,
+    ) -> OrbitFamily: ...
+    def continue_orbit(
+        self,
+        orbit: PeriodicOrbit,
+        energy_range: tuple[float, float],
+        *,
+        max_orbits: int | None = None,
+        max_step: float | None = None,
+        rtol: float | None = None,
+        atol: float | None = None,
+        newton_tol: float | None = None,
+    ) -> OrbitFamily: ...
+    def period_doubled_family(
+        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None
+    ) -> OrbitFamily: ...
+    def poincare_section(
+        self,
+        p_psi: float,
+        energy: float,
+        *,
+        normal: Vec3 | None = None,
+        orbits: int = 50,
+        crossings: int = 200,
+    ) -> PoincareSection: ...
+    def orbit_crossings(self, orbit: PeriodicOrbit, *, normal: Vec3 | None = None) -> npt.NDArray[np.float64]: ...
+    def orbit_path(self, orbit: PeriodicOrbit, n: int = 200) -> Trajectory: ...
     def nonlinear_stability(
         self,
         motion: SteadyMotion,

@@ -148,3 +148,75 @@ def plot_apex(trajectory, ax=None, axis=(0.0, 0.0, 1.0)):
     ax.set_ylabel("y (space, horizontal)")
     ax.legend(fontsize=8)
     return ax
+
+
+#: Colour and line style of each orbit stability (as routh::plot's orbit figures).
+ORBIT_STYLE = {
+    "elliptic": ("#1f77b4", "-"),
+    "parabolic": ("#7f7f7f", ":"),
+    "hyperbolic": ("#d62728", "--"),
+    "inverse_hyperbolic": ("#ff7f0e", "-."),
+}
+ORBIT_EVENT_MARK = {"fold": "o", "branch_point": "s", "period_doubling": "^"}
+ORBIT_EVENT_NAME = {"fold": "fold", "branch_point": "branch point", "period_doubling": "period doubling"}
+#: The stability index is drawn clipped to [-K_CLIP, K_CLIP]: near a separatrix it grows
+#: without bound, and what matters is where it crosses ±1.
+K_CLIP = 3.0
+
+
+def plot_orbit_family(family, ax=None, quantity="stability_index"):
+    """Draw a family of periodic orbits: ``quantity="stability_index"`` is the stability diagram
+    (k against E, clipped to [-3, 3], the lines k = ±1 dotted, events marked and named);
+    ``"period"`` is T against E. Elliptic parts solid, hyperbolic dashed. Returns the axes."""
+    if quantity not in ("stability_index", "period"):
+        raise ValueError(f"quantity must be 'stability_index' or 'period', got {quantity!r}")
+    ax = _axes(ax)
+    e = np.asarray(family.energy)
+    y = np.asarray(getattr(family, quantity), dtype=float)
+    if quantity == "stability_index":
+        y = np.clip(y, -K_CLIP, K_CLIP)
+        for level in (-1.0, 1.0):
+            ax.axhline(level, color="#555555", lw=0.8, linestyle=":")
+    v = list(family.stability)
+    seen = set()
+    start = 0
+    for i in range(1, len(v) + 1):
+        if i == len(v) or v[i] != v[start]:
+            colour, ls = ORBIT_STYLE[v[start]]
+            hi = min(i + 1, len(v))
+            label = v[start].replace("_", " ") if v[start] not in seen else None
+            seen.add(v[start])
+            ax.plot(e[start:hi], y[start:hi], color=colour, linestyle=ls, label=label)
+            start = i
+    for k, ev in enumerate(sorted(family.events, key=lambda ev: ev.energy)):
+        yv = ev.orbit.stability_index if quantity == "stability_index" else ev.orbit.period
+        if quantity == "stability_index":
+            yv = float(np.clip(yv, -K_CLIP, K_CLIP))
+        ax.plot([ev.energy], [yv], marker=ORBIT_EVENT_MARK[ev.kind], color="k", linestyle="none")
+        ax.annotate(ORBIT_EVENT_NAME[ev.kind], (ev.energy, yv), textcoords="offset points",
+                    xytext=(4, 6) if k % 2 == 0 else (4, -14), fontsize=8)
+    ax.set_xlabel("E")
+    ax.set_ylabel("k" if quantity == "stability_index" else "T")
+    if seen:
+        ax.legend(fontsize=8)
+    return ax
+
+
+def plot_section(section, ax=None, fixed_points=None):
+    """Draw a Poincaré section: each orbit's crossings as small dots of its own colour (θ against
+    M_n), and `fixed_points` ((k, 2): a periodic orbit's crossings) as larger black marks.
+    Returns the axes."""
+    ax = _axes(ax)
+    for pts in section.points:
+        pts = np.asarray(pts)
+        if len(pts):
+            ax.plot(pts[:, 0], pts[:, 1], linestyle="none", marker=".", markersize=1.5)
+    if fixed_points is not None:
+        fp = np.asarray(fixed_points, dtype=float).reshape(-1, 2)
+        ax.plot(fp[:, 0], fp[:, 1], linestyle="none", marker="x", markersize=8, color="k",
+                label="periodic orbit")
+        ax.legend(fontsize=8)
+    ax.set_xlabel("θ")
+    ax.set_ylabel("M_n")
+    ax.set_title(f"p_ψ = {section.p_psi:g}, E = {section.energy:g}", fontsize=9)
+    return ax

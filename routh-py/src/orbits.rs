@@ -1,0 +1,496 @@
+//! Periodic motions in Python: `Model.periodic_orbit`, `Model.lyapunov_family`,
+//! `Model.continue_orbit`, `Model.period_doubled_family`, `Model.poincare_section`,
+//! `Model.orbit_crossings`, `Model.orbit_path`, and their results `PeriodicOrbit`,
+//! `OrbitFamily`, `OrbitEvent`, `PoincareSection` (numpy arrays, lower-case strings).
+
+use crate::convert::{helper, routh_err, vec3, vector3};
+use crate::guard::detached;
+use crate::model::Model;
+use crate::results::SteadyMotion;
+use crate::trajectory::Trajectory;
+use numpy::{PyArray1, PyArray2};
+use pyo3::prelude::*;
+use routh::{Complex, OrbitOptions, SectionOptions};
+
+/// A periodic orbit of the full equations (8), a relative periodic orbit of the body: a point
+/// `omega0`, `gamma0` ((3,) float64), `period`, `energy`, `p_psi`, the precession Δψ over one
+/// period (`precession`, in (−π, π]), the Floquet `multipliers` μ, 1/μ ((2,) complex128), the
+/// `stability_index` k = (μ + 1/μ)/2 and `stability` ("elliptic", "parabolic", "hyperbolic",
+/// "inverse_hyperbolic").
+#[pyclass(module = "routh", frozen)]
+pub struct PeriodicOrbit {
+    /// ω at a point of the orbit, (3,).
+    #[pyo3(get)]
+    pub omega0: Py<PyAny>,
+    /// γ at the same point, (3,), unit.
+    #[pyo3(get)]
+    pub gamma0: Py<PyAny>,
+    /// The period T.
+    #[pyo3(get)]
+    pub period: f64,
+    /// The energy (3).
+    #[pyo3(get)]
+    pub energy: f64,
+    /// The cyclic momentum (9).
+    #[pyo3(get)]
+    pub p_psi: f64,
+    /// Δψ over one period, in (−π, π].
+    #[pyo3(get)]
+    pub precession: f64,
+    /// μ, 1/μ, (2,) complex128.
+    #[pyo3(get)]
+    pub multipliers: Py<PyAny>,
+    /// k = (μ + 1/μ)/2.
+    #[pyo3(get)]
+    pub stability_index: f64,
+    /// "elliptic", "parabolic", "hyperbolic" or "inverse_hyperbolic".
+    #[pyo3(get)]
+    pub stability: &'static str,
+    /// Half the orbit's extent in (ω, γ).
+    #[pyo3(get)]
+    pub amplitude: f64,
+    pub(crate) inner: routh::PeriodicOrbit,
+}
+
+impl PeriodicOrbit {
+    pub(crate) fn new(py: Python<'_>, o: &routh::PeriodicOrbit) -> PeriodicOrbit {
+        let mu: Vec<Complex<f64>> = o.multipliers.to_vec();
+        PeriodicOrbit {
+            omega0: vec3(py, &o.omega0).into_any().unbind(),
+            gamma0: vec3(py, &o.gamma0).into_any().unbind(),
+            period: o.period,
+            energy: o.energy,
+            p_psi: o.p_psi,
+            precession: o.precession,
+            multipliers: PyArray1::from_vec(py, mu).into_any().unbind(),
+            stability_index: o.stability_index,
+            stability: o.stability.as_str(),
+            amplitude: o.amplitude,
+            inner: o.clone(),
+        }
+    }
+}
+
+#[pymethods]
+impl PeriodicOrbit {
+    fn __repr__(&self) -> String {
+        format!(
+            "PeriodicOrbit(period={:.10}, energy={:.10}, p_psi={}, precession={:.6}, stability_index={:.8}, stability='{}')",
+            self.period, self.energy, self.p_psi, self.precession, self.stability_index, self.stability
+        )
+    }
+    /// The orbit as JSON (the Rust serde form; numbers round-trip).
+    fn to_json(&self) -> PyResult<String> {
+        serde_json::to_string(&self.inner).map_err(|e| crate::RouthError::new_err(e.to_string()))
+    }
+}
+
+/// A fold, branch point or period doubling of a family: `kind` ("fold", "branch_point",
+/// "period_doubling"), `energy`, the `orbit` there, the stabilities `before` and `after`.
+#[pyclass(module = "routh", frozen)]
+pub struct OrbitEvent {
+    /// "fold", "branch_point" or "period_doubling".
+    #[pyo3(get)]
+    pub kind: &'static str,
+    /// The energy where it happens.
+    #[pyo3(get)]
+    pub energy: f64,
+    /// The orbit there.
+    #[pyo3(get)]
+    pub orbit: Py<PeriodicOrbit>,
+    /// The stability just before (in the family's order).
+    #[pyo3(get)]
+    pub before: &'static str,
+    /// The stability just after.
+    #[pyo3(get)]
+    pub after: &'static str,
+    pub(crate) inner: routh::OrbitEvent,
+}
+
+#[pymethods]
+impl OrbitEvent {
+    fn __repr__(&self) -> String {
+        format!(
+            "OrbitEvent(kind='{}', energy={:.12}, before='{}', after='{}')",
+            self.kind, self.energy, self.before, self.after
+        )
+    }
+}
+
+/// A family of periodic orbits at one p_ψ, in the order of continuation: `orbits`
+/// (list[PeriodicOrbit]), `events` (list[OrbitEvent]), `stop` (why it ended, a string, or None),
+/// and the columns `energy`, `period`, `stability_index`, `precession` ((n,) float64) and
+/// `stability` (list[str]). `plot()` draws the stability diagram (k against E).
+#[pyclass(module = "routh", frozen)]
+pub struct OrbitFamily {
+    /// The orbits.
+    #[pyo3(get)]
+    pub orbits: Vec<Py<PeriodicOrbit>>,
+    /// The events.
+    #[pyo3(get)]
+    pub events: Vec<Py<OrbitEvent>>,
+    /// Why the family ended (None: it reached the end asked for).
+    #[pyo3(get)]
+    pub stop: Option<String>,
+    /// The energies, (n,).
+    #[pyo3(get)]
+    pub energy: Py<PyAny>,
+    /// The periods, (n,).
+    #[pyo3(get)]
+    pub period: Py<PyAny>,
+    /// The stability indices k, (n,).
+    #[pyo3(get)]
+    pub stability_index: Py<PyAny>,
+    /// The precessions Δψ, (n,).
+    #[pyo3(get)]
+    pub precession: Py<PyAny>,
+    /// The stabilities, list[str].
+    #[pyo3(get)]
+    pub stability: Vec<&'static str>,
+    pub(crate) inner: routh::OrbitFamily,
+}
+
+impl OrbitFamily {
+    pub(crate) fn new(py: Python<'_>, f: &routh::OrbitFamily) -> PyResult<OrbitFamily> {
+        let col = |g: fn(&routh::PeriodicOrbit) -> f64| {
+            let v: Vec<f64> = f.orbits.iter().map(g).collect();
+            PyArray1::from_vec(py, v).into_any().unbind()
+        };
+        let orbits = f
+            .orbits
+            .iter()
+            .map(|o| Py::new(py, PeriodicOrbit::new(py, o)))
+            .collect::<PyResult<_>>()?;
+        let events = f
+            .events
+            .iter()
+            .map(|e| {
+                Py::new(
+                    py,
+                    OrbitEvent {
+                        kind: e.kind.as_str(),
+                        energy: e.energy,
+                        orbit: Py::new(py, PeriodicOrbit::new(py, &e.orbit))?,
+                        before: e.before.as_str(),
+                        after: e.after.as_str(),
+                        inner: e.clone(),
+                    },
+                )
+            })
+            .collect::<PyResult<_>>()?;
+        Ok(OrbitFamily {
+            orbits,
+            events,
+            stop: f.stop.as_ref().map(|s| s.to_string()),
+            energy: col(|o| o.energy),
+            period: col(|o| o.period),
+            stability_index: col(|o| o.stability_index),
+            precession: col(|o| o.precession),
+            stability: f.orbits.iter().map(|o| o.stability.as_str()).collect(),
+            inner: f.clone(),
+        })
+    }
+}
+
+#[pymethods]
+impl OrbitFamily {
+    fn __len__(&self) -> usize {
+        self.orbits.len()
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "OrbitFamily({} orbits, {} events, stop={})",
+            self.orbits.len(),
+            self.events.len(),
+            self.stop
+                .as_ref()
+                .map_or("None".to_string(), |s| format!("'{s}'"))
+        )
+    }
+    /// Draws the family with matplotlib: `quantity="stability_index"` (k against E, the lines
+    /// k = ±1, events marked and named) or `"period"` (T against E). Returns the axes.
+    #[pyo3(signature = (ax=None, quantity="stability_index"))]
+    fn plot(slf: &Bound<'_, Self>, ax: Option<Py<PyAny>>, quantity: &str) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._plot", "plot_orbit_family", (slf, ax, quantity))
+    }
+    /// The family as JSON (the Rust serde form; numbers round-trip).
+    fn to_json(&self) -> PyResult<String> {
+        serde_json::to_string(&self.inner).map_err(|e| crate::RouthError::new_err(e.to_string()))
+    }
+}
+
+/// A Poincaré section at (p_ψ, E): the upward crossings of the plane γ·n = 0 by many orbits, in
+/// the coordinates θ (the angle of γ on the great circle n^⊥) and M_n = n·∂L/∂ω: `points`
+/// (list of (k, 2) float64, one per orbit), `starts` ((m, 6): ω₀, γ₀ of each orbit), `normal`
+/// ((3,)). `plot(fixed_points=None)` draws it.
+#[pyclass(module = "routh", frozen)]
+pub struct PoincareSection {
+    /// The cyclic momentum.
+    #[pyo3(get)]
+    pub p_psi: f64,
+    /// The energy.
+    #[pyo3(get)]
+    pub energy: f64,
+    /// The plane's normal n, (3,).
+    #[pyo3(get)]
+    pub normal: Py<PyAny>,
+    /// The crossings of each orbit, each (k, 2): [θ, M_n].
+    #[pyo3(get)]
+    pub points: Vec<Py<PyAny>>,
+    /// (ω₀, γ₀) of each orbit, (m, 6).
+    #[pyo3(get)]
+    pub starts: Py<PyAny>,
+}
+
+#[pymethods]
+impl PoincareSection {
+    fn __repr__(&self) -> String {
+        format!(
+            "PoincareSection(p_psi={}, energy={}, {} orbits)",
+            self.p_psi,
+            self.energy,
+            self.points.len()
+        )
+    }
+    /// Draws the section with matplotlib (one colour per orbit, small dots), and the
+    /// `fixed_points` ((k, 2), e.g. `Model.orbit_crossings(orbit)`) as larger marks. Returns the
+    /// axes.
+    #[pyo3(signature = (ax=None, fixed_points=None))]
+    fn plot(
+        slf: &Bound<'_, Self>,
+        ax: Option<Py<PyAny>>,
+        fixed_points: Option<Py<PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        helper(slf.py(), "routh._plot", "plot_section", (slf, ax, fixed_points))
+    }
+}
+
+fn rows2(py: Python<'_>, pts: &[[f64; 2]]) -> PyResult<Py<PyAny>> {
+    let rows: Vec<Vec<f64>> = pts.iter().map(|p| p.to_vec()).collect();
+    if rows.is_empty() {
+        return Ok(PyArray2::<f64>::zeros(py, [0, 2], false).into_any().unbind());
+    }
+    Ok(PyArray2::from_vec2(py, &rows)
+        .map_err(|e| crate::RouthError::new_err(e.to_string()))?
+        .into_any()
+        .unbind())
+}
+
+/// The Rust `OrbitOptions` with the keywords applied (None: the Rust default).
+#[allow(clippy::too_many_arguments)]
+fn orbit_options(
+    max_orbits: Option<usize>,
+    energy_bounds: Option<(f64, f64)>,
+    max_step: Option<f64>,
+    initial_amplitude: Option<f64>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    newton_tol: Option<f64>,
+) -> OrbitOptions {
+    let mut o = OrbitOptions::default();
+    if let Some(n) = max_orbits {
+        o.max_orbits = n;
+    }
+    o.energy_bounds = energy_bounds;
+    if let Some(h) = max_step {
+        o = o.with_max_step(h);
+    }
+    if let Some(a) = initial_amplitude {
+        o.initial_amplitude = a;
+    }
+    if let Some(v) = rtol {
+        o.rtol = v;
+    }
+    if let Some(v) = atol {
+        o.atol = v;
+    }
+    if let Some(v) = newton_tol {
+        o.newton_tol = v;
+    }
+    o
+}
+
+#[pymethods]
+impl Model {
+    /// Correct a guess (ω, γ, T) to a periodic orbit of the full equations at the guess's
+    /// energy and p_ψ: period, precession, Floquet multipliers and stability.
+    ///
+    /// >>> o = m.periodic_orbit([0, 0, 0], [0, np.sin(0.5), -np.cos(0.5)], 6.0)
+    /// >>> o.stability
+    #[pyo3(signature = (omega, gamma, period, *, rtol=None, atol=None, newton_tol=None))]
+    fn periodic_orbit(
+        &self,
+        py: Python<'_>,
+        omega: &Bound<'_, PyAny>,
+        gamma: &Bound<'_, PyAny>,
+        period: f64,
+        rtol: Option<f64>,
+        atol: Option<f64>,
+        newton_tol: Option<f64>,
+    ) -> PyResult<PeriodicOrbit> {
+        let w = vector3("omega", omega)?;
+        let g = vector3("gamma", gamma)?;
+        let opts = orbit_options(None, None, None, None, rtol, atol, newton_tol);
+        let m = self.get()?;
+        let o = detached(py, || routh::periodic_orbit(&m, w, g, period, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
+        Ok(PeriodicOrbit::new(py, &o))
+    }
+
+    /// The Lyapunov family of mode `mode` (0: the faster frequency, 1: the slower) born at a
+    /// linearly stable steady motion, followed through the energy at its p_ψ, with folds,
+    /// branch points and period doublings located.
+    ///
+    /// >>> f = m.lyapunov_family(hanging, 0, max_orbits=40)
+    /// >>> [(e.kind, round(e.energy, 6)) for e in f.events]
+    #[pyo3(signature = (motion, mode=0, *, max_orbits=None, energy_bounds=None, max_step=None,
+                        initial_amplitude=None, rtol=None, atol=None, newton_tol=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn lyapunov_family(
+        &self,
+        py: Python<'_>,
+        motion: &SteadyMotion,
+        mode: usize,
+        max_orbits: Option<usize>,
+        energy_bounds: Option<(f64, f64)>,
+        max_step: Option<f64>,
+        initial_amplitude: Option<f64>,
+        rtol: Option<f64>,
+        atol: Option<f64>,
+        newton_tol: Option<f64>,
+    ) -> PyResult<OrbitFamily> {
+        let opts = orbit_options(
+            max_orbits,
+            energy_bounds,
+            max_step,
+            initial_amplitude,
+            rtol,
+            atol,
+            newton_tol,
+        );
+        let m = self.get()?;
+        let s = motion.inner.clone();
+        let f = detached(py, || routh::lyapunov_family(&m, &s, mode, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
+        OrbitFamily::new(py, &f)
+    }
+
+    /// Follow the family through `orbit` over `energy_range` = (lo, hi), through folds.
+    #[pyo3(signature = (orbit, energy_range, *, max_orbits=None, max_step=None, rtol=None,
+                        atol=None, newton_tol=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn continue_orbit(
+        &self,
+        py: Python<'_>,
+        orbit: &PeriodicOrbit,
+        energy_range: (f64, f64),
+        max_orbits: Option<usize>,
+        max_step: Option<f64>,
+        rtol: Option<f64>,
+        atol: Option<f64>,
+        newton_tol: Option<f64>,
+    ) -> PyResult<OrbitFamily> {
+        let opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
+        let m = self.get()?;
+        let o = orbit.inner.clone();
+        let f = detached(py, || routh::continue_orbit(&m, &o, energy_range, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
+        OrbitFamily::new(py, &f)
+    }
+
+    /// The family of orbits of twice the period born at a "period_doubling" event.
+    #[pyo3(signature = (event, *, max_orbits=None, max_step=None))]
+    fn period_doubled_family(
+        &self,
+        py: Python<'_>,
+        event: &OrbitEvent,
+        max_orbits: Option<usize>,
+        max_step: Option<f64>,
+    ) -> PyResult<OrbitFamily> {
+        let opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
+        let m = self.get()?;
+        let e = event.inner.clone();
+        let f = detached(py, || routh::period_doubled_family(&m, &e, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
+        OrbitFamily::new(py, &f)
+    }
+
+    /// The Poincaré section at (p_psi, energy): `orbits` orbits started on the plane γ·n = 0,
+    /// each followed for `crossings` upward crossings (in parallel, the GIL released).
+    #[pyo3(signature = (p_psi, energy, *, normal=None, orbits=50, crossings=200))]
+    fn poincare_section(
+        &self,
+        py: Python<'_>,
+        p_psi: f64,
+        energy: f64,
+        normal: Option<&Bound<'_, PyAny>>,
+        orbits: usize,
+        crossings: usize,
+    ) -> PyResult<PoincareSection> {
+        let mut opts = SectionOptions::default().with_size(orbits, crossings);
+        if let Some(n) = normal {
+            opts = opts.with_normal(vector3("normal", n)?);
+        }
+        let m = self.get()?;
+        let s = detached(py, || routh::poincare_section(&m, p_psi, energy, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
+        let points = s
+            .orbits
+            .iter()
+            .map(|o| rows2(py, &o.points))
+            .collect::<PyResult<_>>()?;
+        let starts: Vec<Vec<f64>> = s
+            .orbits
+            .iter()
+            .map(|o| {
+                let (w, g) = (o.omega0, o.gamma0);
+                vec![w.x, w.y, w.z, g.x, g.y, g.z]
+            })
+            .collect();
+        let starts = if starts.is_empty() {
+            PyArray2::<f64>::zeros(py, [0, 6], false).into_any().unbind()
+        } else {
+            PyArray2::from_vec2(py, &starts)
+                .map_err(|e| crate::RouthError::new_err(e.to_string()))?
+                .into_any()
+                .unbind()
+        };
+        Ok(PoincareSection {
+            p_psi: s.p_psi,
+            energy: s.energy,
+            normal: vec3(py, &s.normal).into_any().unbind(),
+            points,
+            starts,
+        })
+    }
+
+    /// Where a periodic orbit crosses the section γ·n = 0 upwards over one period: its fixed
+    /// points in the section's coordinates, (k, 2).
+    #[pyo3(signature = (orbit, *, normal=None))]
+    fn orbit_crossings(
+        &self,
+        py: Python<'_>,
+        orbit: &PeriodicOrbit,
+        normal: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        let mut opts = SectionOptions::default();
+        if let Some(n) = normal {
+            opts = opts.with_normal(vector3("normal", n)?);
+        }
+        let m = self.get()?;
+        let o = orbit.inner.clone();
+        let pts = detached(py, || routh::orbit_crossings(&m, &o, &opts))?
+            .map_err(|e| routh_err(py, &e))?;
+        rows2(py, &pts)
+    }
+
+    /// The orbit sampled at `n` equally spaced times over one period (with the attitude): a
+    /// `Trajectory` for figures (γ on the sphere, `plot_apex()`).
+    #[pyo3(signature = (orbit, n=200))]
+    fn orbit_path(&self, py: Python<'_>, orbit: &PeriodicOrbit, n: usize) -> PyResult<Trajectory> {
+        let m = self.get()?;
+        let o = orbit.inner.clone();
+        let t = detached(py, || routh::orbit_path(&m, &o, n))?.map_err(|e| routh_err(py, &e))?;
+        Ok(Trajectory::new(py, &t))
+    }
+}

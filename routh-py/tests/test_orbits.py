@@ -1,0 +1,111 @@
+"""Periodic orbits from Python: checked against the pendulum's closed form (the complete
+elliptic integral by the arithmetic–geometric mean), against the family's own linear limit,
+and by what the figures draw."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import routh
+from conftest import ROOT
+
+PENDULUM = "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z"
+
+
+def elliptic_k(m):
+    a, g = 1.0, math.sqrt(1.0 - m)
+    for _ in range(60):
+        a, g = 0.5 * (a + g), math.sqrt(a * g)
+    return math.pi / (2.0 * a)
+
+
+@pytest.fixture
+def body():
+    """A heavy body J = diag(1, 2, 3), centre of mass on the third axis: swings about e₁ are a
+    pendulum with ω₀² = mgl/A = 1.5."""
+    return routh.Model(PENDULUM, {"inertia": [1.0, 2.0, 3.0], "mgl": 1.5})
+
+
+@pytest.fixture
+def asymmetric():
+    return routh.Model.load(ROOT / "examples" / "models" / "asymmetric_top.toml")
+
+
+def hanging(m):
+    return min(m.steady_motions(0.0), key=lambda s: s.energy)
+
+
+def test_pendulum_period_is_the_elliptic_integral(body):
+    w0 = math.sqrt(1.5)
+    for theta0 in (0.3, 1.5, 2.5):
+        o = body.periodic_orbit([0, 0, 0], [0, math.sin(theta0), -math.cos(theta0)], 2 * math.pi / w0)
+        exact = 4 * elliptic_k(math.sin(theta0 / 2) ** 2) / w0
+        assert abs(o.period - exact) < 1e-8 * exact
+        assert o.stability in routh.ORBIT_STABILITIES
+        assert o.multipliers.dtype == np.complex128 and o.multipliers.shape == (2,)
+        assert o.omega0.shape == (3,) and abs(np.linalg.norm(o.gamma0) - 1) < 1e-12
+        back = json.loads(o.to_json())
+        assert back["period"] == o.period and back["stability"] == o.stability.title().replace("_", "")
+
+
+def test_lyapunov_family_linear_limit_and_events(asymmetric):
+    s = hanging(asymmetric)
+    f = asymmetric.lyapunov_family(s, 0, max_orbits=40)
+    assert len(f) == len(f.orbits) == f.energy.shape[0] == len(f.stability)
+    assert f.energy[0] > s.energy
+    kinds = {e.kind for e in f.events}
+    assert kinds <= set(routh.ORBIT_EVENT_KINDS)
+    assert "period_doubling" in kinds, f.events
+    for e in f.events:
+        if e.kind == "period_doubling":
+            assert abs(e.orbit.stability_index + 1) < 1e-6
+            d = asymmetric.period_doubled_family(e, max_orbits=3)
+            assert abs(d.orbits[-1].period - 2 * e.orbit.period) < 0.05 * e.orbit.period
+            break
+
+
+def test_family_plot_draws_the_clipped_index_and_the_unit_lines(asymmetric):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    f = asymmetric.lyapunov_family(hanging(asymmetric), 0, max_orbits=30)
+    ax = f.plot()
+    ys = np.concatenate([line.get_ydata() for line in ax.get_lines() if len(line.get_xdata()) > 2])
+    assert ys.max() <= 3.0 and ys.min() >= -3.0
+    flat = [line for line in ax.get_lines() if np.allclose(line.get_ydata(), line.get_ydata()[0])
+            and abs(abs(line.get_ydata()[0]) - 1) < 1e-12]
+    assert len(flat) == 2  # k = ±1
+    assert ax.get_xlabel() == "E" and ax.get_ylabel() == "k"
+    ax = f.plot(quantity="period")
+    xs = np.concatenate([line.get_xdata() for line in ax.get_lines() if len(line.get_xdata()) > 1])
+    assert np.isclose(xs.min(), f.energy.min()) and ax.get_ylabel() == "T"
+    with pytest.raises(ValueError):
+        f.plot(quantity="nonsense")
+
+
+def test_poincare_section_and_fixed_points(body):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    o = body.periodic_orbit([0, 0, 0], [0, math.sin(0.8), -math.cos(0.8)], 5.0)
+    fixed = body.orbit_crossings(o, normal=[0, 1, 0])
+    assert fixed.shape == (1, 2)
+    sec = body.poincare_section(o.p_psi, o.energy, normal=[0, 1, 0], orbits=6, crossings=25)
+    assert len(sec.points) == 6 and sec.starts.shape == (6, 6)
+    assert all(p.shape[1] == 2 for p in sec.points)
+    ax = sec.plot(fixed_points=fixed)
+    marks = [line for line in ax.get_lines() if line.get_marker() == "x"]
+    assert len(marks) == 1 and np.allclose(marks[0].get_xydata(), fixed)
+
+
+def test_bad_guesses_raise_routh_errors(body):
+    s = hanging(body)
+    with pytest.raises(routh.RouthError) as e:
+        body.periodic_orbit(s.gamma * s.psi_dot, s.gamma, 3.0)
+    assert e.value.kind == "InvalidOption" and "steady motion" in str(e.value)
+    with pytest.raises(routh.RouthError):
+        body.periodic_orbit([0, 0, 0], [0, 0.1, -1.0], -1.0)
+    with pytest.raises(routh.RouthError):
+        body.lyapunov_family(s, 2)
