@@ -396,10 +396,14 @@ impl Printer<'_> {
     /// The name `id` prints as, if it is a named subexpression (other than the one being
     /// defined).
     fn name_of(&self, id: Id) -> Option<String> {
-        if Some(id) == self.expanding {
-            return None;
-        }
-        self.named.get(&id).map(|&k| definition_name(k))
+        self.is_named(id)
+            .then(|| self.named.get(&id).map(|&k| definition_name(k)))
+            .flatten()
+    }
+
+    /// Whether `id` prints as a name ([`Printer::name_of`] without forming the name).
+    fn is_named(&self, id: Id) -> bool {
+        Some(id) != self.expanding && !self.named.is_empty() && self.named.contains_key(&id)
     }
 
     /// Binding strength: 1 sums, 2 products, 3 unary minus, 4 powers, 5 atoms.
@@ -526,7 +530,7 @@ impl Printer<'_> {
     fn sum(&self, id: Id, negate: bool) -> String {
         // Nested sums and negated sums are flattened into one list of signed terms.
         fn terms(p: &Printer, id: Id, flip: bool, acc: &mut Vec<(Id, bool)>) {
-            if p.name_of(id).is_some() {
+            if p.is_named(id) {
                 acc.push((id, flip));
                 return;
             }
@@ -546,7 +550,7 @@ impl Printer<'_> {
         for (k, (t, negate)) in ts.into_iter().enumerate() {
             let mut body = String::new();
             let negative = match g.node(t) {
-                _ if self.name_of(t).is_some() => {
+                _ if self.is_named(t) => {
                     self.expr(t, &mut body, 2);
                     false
                 }
@@ -583,7 +587,7 @@ impl Printer<'_> {
     /// denominator as `\frac`.
     fn product(&self, id: Id) -> (bool, String) {
         fn factors(p: &Printer, id: Id, coef: &mut f64, num: &mut Vec<Id>, den: &mut Vec<Id>) {
-            if p.name_of(id).is_some() {
+            if p.is_named(id) {
                 num.push(id);
                 return;
             }
@@ -625,10 +629,8 @@ impl Printer<'_> {
                 }
                 let n = ids.iter().filter(|&&x| x == f).count() as i32;
                 match g.node(f) {
-                    _ if self.name_of(f).is_some() && n > 1 => self.power(f, n, &mut t),
-                    Node::Powi(x, m) if m < 0 && self.name_of(f).is_none() => {
-                        self.power(x, -m * n, &mut t)
-                    }
+                    _ if self.is_named(f) && n > 1 => self.power(f, n, &mut t),
+                    Node::Powi(x, m) if m < 0 && !self.is_named(f) => self.power(x, -m * n, &mut t),
                     _ if n > 1 => self.power(f, n, &mut t),
                     _ => self.expr(f, &mut t, if alone { 0 } else { 3 }),
                 }
