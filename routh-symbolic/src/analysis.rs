@@ -158,15 +158,10 @@ impl Plan {
             (Node::Mul(..), Node::Recip(x)) if self.uses[c.index()] == 1 => Some(x),
             _ => None,
         };
+        let x = fold(child)?;
         match g.node(parent) {
             Node::Add(a, b) | Node::Mul(a, b) if a != b => {
-                if child == b {
-                    fold(b)
-                } else if child == a && fold(b).is_none() {
-                    fold(a)
-                } else {
-                    None
-                }
+                (child == b || fold(b).is_none()).then_some(x)
             }
             _ => None,
         }

@@ -167,7 +167,7 @@ fn print_roots(g: &Graph, roots: &[Id], symbols: &LatexSymbols) -> (Vec<String>,
             .children()
             .fold(1u64, |acc, c| acc.saturating_add(size[c.index()]));
     }
-    let none = HashMap::new();
+    let none: [usize; 0] = [];
     let vars = RefCell::new(Vec::new());
     // Inline when small: a matrix by the total of its entries (its entries share the same
     // subexpressions, e.g. γᵀJγ in each entry of G).
@@ -193,13 +193,15 @@ fn print_roots(g: &Graph, roots: &[Id], symbols: &LatexSymbols) -> (Vec<String>,
     // Bottom up (children have smaller indices): the size with named children counting 1, and
     // the names.
     let mut reduced = vec![0u64; last + 1];
-    let mut named: HashMap<Id, usize> = HashMap::new();
+    // `named[i]` = k of `\sigma_{k}` for a named node, 0 for the others (dense: the printer
+    // asks for every node it visits).
+    let mut named: Vec<usize> = vec![0; last + 1];
     let mut order: Vec<Id> = Vec::new();
     for &i in &reachable {
         let id = Id::from_index(i);
         let node = g.node(id);
         reduced[i] = node.children().fold(1u64, |acc, c| {
-            acc.saturating_add(if named.contains_key(&c) {
+            acc.saturating_add(if named[c.index()] != 0 {
                 1
             } else {
                 reduced[c.index()]
@@ -208,7 +210,7 @@ fn print_roots(g: &Graph, roots: &[Id], symbols: &LatexSymbols) -> (Vec<String>,
         let leaf = matches!(node, Node::Const(_) | Node::Var(_));
         if !leaf && uses[i] >= 2 && reduced[i] >= MIN_NAMED_SIZE {
             order.push(id);
-            named.insert(id, order.len());
+            named[i] = order.len();
         }
     }
     let total =
@@ -303,19 +305,20 @@ fn replace_square(g: &mut Graph, f: Id, gamma: [Var; 3], i: usize) -> Id {
     if !squares {
         return f;
     }
-    let mut map: HashMap<Id, Id> = HashMap::new();
+    // The image of each node (itself until rebuilt), by index.
+    let mut map: Vec<Id> = (0..=f.index()).map(Id::from_index).collect();
     for idx in (0..=f.index()).filter(|&i| seen[i]) {
         let id = Id::from_index(idx);
         let node = g.node(id);
-        let m = |x: Id, map: &HashMap<Id, Id>| *map.get(&x).unwrap_or(&x);
+        let m = |x: Id, map: &[Id]| map[x.index()];
         // A node other than a sum whose children are their own images is its own image (as
         // in `Graph::substitute`).
         let same = match node {
             Node::Const(_) | Node::Var(_) | Node::Add(..) => false,
             Node::Powi(a, n) if a == gi && n >= 2 => false,
-            Node::Mul(a, b) | Node::Powf(a, b) => !map.contains_key(&a) && !map.contains_key(&b),
+            Node::Mul(a, b) | Node::Powf(a, b) => map[a.index()] == a && map[b.index()] == b,
             Node::Neg(a) | Node::Recip(a) | Node::Powi(a, _) | Node::Func(_, a) => {
-                !map.contains_key(&a)
+                map[a.index()] == a
             }
         };
         if same {
@@ -356,11 +359,9 @@ fn replace_square(g: &mut Graph, f: Id, gamma: [Var; 3], i: usize) -> Id {
                 g.func(fu, a)
             }
         };
-        if new != id {
-            map.insert(id, new);
-        }
+        map[idx] = new;
     }
-    *map.get(&f).unwrap_or(&f)
+    map[f.index()]
 }
 
 /// `c` as `(p, q)` with `c = p/q`, `1 ≤ q ≤ 12`, when it is such a fraction exactly.
@@ -383,8 +384,8 @@ fn number(c: f64) -> String {
 struct Printer<'a> {
     g: &'a Graph,
     symbols: &'a LatexSymbols,
-    /// Named subexpressions: node → k of `\sigma_{k}`.
-    named: &'a HashMap<Id, usize>,
+    /// Named subexpressions: `named[i]` = k of `\sigma_{k}` for node i, 0 if not named.
+    named: &'a [usize],
     /// The named subexpression whose definition is being printed (expanded, not named).
     expanding: Option<Id>,
     /// The symbol of each variable printed so far, by variable index ([`latex_symbol`] once
@@ -397,13 +398,12 @@ impl Printer<'_> {
     /// defined).
     fn name_of(&self, id: Id) -> Option<String> {
         self.is_named(id)
-            .then(|| self.named.get(&id).map(|&k| definition_name(k)))
-            .flatten()
+            .then(|| definition_name(self.named[id.index()]))
     }
 
     /// Whether `id` prints as a name ([`Printer::name_of`] without forming the name).
     fn is_named(&self, id: Id) -> bool {
-        Some(id) != self.expanding && !self.named.is_empty() && self.named.contains_key(&id)
+        Some(id) != self.expanding && self.named.get(id.index()).is_some_and(|&k| k != 0)
     }
 
     /// Binding strength: 1 sums, 2 products, 3 unary minus, 4 powers, 5 atoms.
