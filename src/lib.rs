@@ -87,7 +87,7 @@ pub mod __private {
     pub use core::primitive::i32;
     pub use routh_core::nalgebra::{Matrix3, Vector3};
     pub use routh_core::{
-        DerivedFormulas, FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia,
+        DerivedFormulas, FullEquations, FullJacobian, GyroscopicSystem, Lagrangian, RankOneInertia,
         ReducedEquations, RouthBundle, Routhian,
     };
     pub use routh_tape::{CertificationTape, Func, Op, Output, RouthianTape, Tape};

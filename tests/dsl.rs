@@ -139,3 +139,84 @@ fn every_construct_of_the_dsl_computes_what_it_says() {
         );
     }
 }
+
+/// `full_jacobian` (the right side of (8) and J differentiated on the DAG) against a Richardson
+/// extrapolation of central differences of the generated `full_equations`, on the model that
+/// uses every construct of the DSL.
+#[test]
+fn full_jacobian_of_every_construct_matches_richardson() {
+    let mut rng = ChaCha8Rng::seed_from_u64(6);
+    let model = Everything {
+        inertia: test_models::random_spd(&mut rng),
+        rotor: test_models::random_vector(&mut rng, 0.5),
+        coupling: test_models::random_matrix(&mut rng, 0.5),
+        com: test_models::random_vector(&mut rng, 1.0),
+        mass: 1.3,
+        g: 9.81,
+        label: "skipped".into(),
+    };
+    // Both fields of (8) flattened: the right side, then J row by row.
+    let field = |w: &Vector3<f64>, g: &Vector3<f64>| {
+        let e = model.full_equations(w, g);
+        let mut out: Vec<f64> = e.right_side.iter().copied().collect();
+        out.extend(e.inertia.transpose().iter().copied());
+        out
+    };
+    for _ in 0..20 {
+        let w = test_models::random_vector(&mut rng, 1.0);
+        let g = test_models::random_unit_vector(&mut rng) * rng.gen_range(0.7..1.2);
+        let jac = model.full_jacobian(&w, &g);
+        // The same nodes, written in another order (rounding may differ in the last bit).
+        let j = model.d2l_domega2(&g);
+        assert!((jac.inertia - j).amax() <= 1e-14 * j.amax());
+        let f = model.full_equations(&w, &g).right_side;
+        assert!((jac.right_side - f).amax() <= 1e-13 * (1.0 + f.amax()));
+        for k in 0..3 {
+            for on_gamma in [false, true] {
+                // d/dt at t = 0 along x_k: central differences at h, h/2, h/4, extrapolated
+                // twice (error O(h⁶)).
+                let central = |h: f64| -> Vec<f64> {
+                    let (mut wp, mut gp, mut wm, mut gm) = (w, g, w, g);
+                    if on_gamma {
+                        gp[k] += h;
+                        gm[k] -= h;
+                    } else {
+                        wp[k] += h;
+                        wm[k] -= h;
+                    }
+                    let (p, m) = (field(&wp, &gp), field(&wm, &gm));
+                    p.iter().zip(&m).map(|(a, b)| (a - b) / (2.0 * h)).collect()
+                };
+                let h = 0.005;
+                let (d1, d2, d4) = (central(h), central(h / 2.0), central(h / 4.0));
+                let want: Vec<f64> = (0..d1.len())
+                    .map(|i| {
+                        let r1 = (4.0 * d2[i] - d1[i]) / 3.0;
+                        let r2 = (4.0 * d4[i] - d2[i]) / 3.0;
+                        (16.0 * r2 - r1) / 15.0
+                    })
+                    .collect();
+                let df = if on_gamma {
+                    jac.dright_dgamma
+                } else {
+                    jac.dright_domega
+                };
+                let mut got: Vec<f64> = df.column(k).iter().copied().collect();
+                if on_gamma {
+                    got.extend(jac.dinertia_dgamma[k].transpose().iter().copied());
+                } else {
+                    // J does not depend on ω.
+                    got.extend([0.0; 9]);
+                }
+                let scale = want.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+                for (i, (a, b)) in got.iter().zip(&want).enumerate() {
+                    assert!(
+                        (a - b).abs() <= 1e-8 * scale,
+                        "entry {i} along {} {k}: {a} vs {b} at w = {w:?}, g = {g:?}",
+                        if on_gamma { "γ" } else { "ω" }
+                    );
+                }
+            }
+        }
+    }
+}

@@ -515,3 +515,147 @@ fn rank_one_simulations_match_the_twin() {
         );
     }
 }
+
+/// `d/dt x(t)` at `t = 0` by central differences at `h`, `h/2`, `h/4` extrapolated twice
+/// (Richardson): the error is O(h⁶), every entry of `x` at once.
+fn richardson(x: impl Fn(f64) -> Vec<f64>, h: f64) -> Vec<f64> {
+    let central = |h: f64| -> Vec<f64> {
+        let (p, q) = (x(h), x(-h));
+        p.iter().zip(&q).map(|(a, b)| (a - b) / (2.0 * h)).collect()
+    };
+    let (d1, d2, d4) = (central(h), central(h / 2.0), central(h / 4.0));
+    (0..d1.len())
+        .map(|i| {
+            let r1 = (4.0 * d2[i] - d1[i]) / 3.0;
+            let r2 = (4.0 * d4[i] - d2[i]) / 3.0;
+            (16.0 * r2 - r1) / 15.0
+        })
+        .collect()
+}
+
+/// `∂/∂x_k` of `field` (`J` or the right side of (8), flattened) by [`richardson`] along
+/// `ω_k` (`on_gamma` false) or `γ_k`, as the columns of a matrix (a vector field) or one
+/// matrix per `k` (J).
+fn partials(
+    field: &impl Fn(&Vector3<f64>, &Vector3<f64>) -> Vec<f64>,
+    w: &Vector3<f64>,
+    g: &Vector3<f64>,
+    k: usize,
+    on_gamma: bool,
+) -> Vec<f64> {
+    richardson(
+        |t| {
+            let (mut w, mut g) = (*w, *g);
+            if on_gamma {
+                g[k] += t;
+            } else {
+                w[k] += t;
+            }
+            field(&w, &g)
+        },
+        // Small enough for the ellipsoid near |γ| = 0.6, whose higher derivatives in γ grow like
+        // powers of 1/|γ|; rounding stays below 1e−11.
+        0.005,
+    )
+}
+
+/// `Lagrangian::full_jacobian` of the derive (exact, from the DAG) and the trait's default on
+/// the twin (central differences of its num-dual `full_equations`) against a Richardson
+/// extrapolation of the twin's num-dual `full_equations`: `J` and the right side of (8)
+/// themselves, `∂f/∂ω`, `∂f/∂γ` and `∂J/∂γ_k`, at random points with |γ| ≠ 1. Returns the worst
+/// normwise relative error of the derive.
+fn check_jacobian<G: Lagrangian, H: Lagrangian>(
+    gen: &G,
+    reference: &H,
+    rng: &mut ChaCha8Rng,
+    tol: f64,
+) -> f64 {
+    let mut worst = 0.0f64;
+    let rhs = |w: &Vector3<f64>, g: &Vector3<f64>| v(reference.full_equations(w, g).right_side);
+    let inertia = |w: &Vector3<f64>, g: &Vector3<f64>| m(reference.full_equations(w, g).inertia);
+    for _ in 0..POINTS / 3 {
+        let w = test_models::random_vector(rng, 2.0);
+        let g = test_models::random_gamma(rng);
+        let want = reference.full_equations(&w, &g);
+        // ∂f/∂x as a matrix (i, j) = ∂f_i/∂x_j: column j is the derivative along x_j.
+        let columns = |on_gamma| {
+            let cols: Vec<Vec<f64>> = (0..3)
+                .map(|k| partials(&rhs, &w, &g, k, on_gamma))
+                .collect();
+            m(Matrix3::from_fn(|i, j| cols[j][i]))
+        };
+        let (df_dw, df_dg) = (columns(false), columns(true));
+        let dj: Vec<Vec<f64>> = (0..3)
+            .map(|k| partials(&inertia, &w, &g, k, true))
+            .collect();
+        // The parameters and points are O(1): every output is compared relative to its
+        // largest entry and at least to 1 (the right side is a sum with cancellation).
+        let got = gen.full_jacobian(&w, &g);
+        let default = reference.full_jacobian(&w, &g);
+        for (who, jac, tol) in [("derive", &got, tol), ("default", &default, 1e-6)] {
+            let checks: [(&str, Vec<f64>, &[f64]); 7] = [
+                ("J", m(jac.inertia), &m(want.inertia)),
+                ("f", v(jac.right_side), &v(want.right_side)),
+                ("∂f/∂ω", m(jac.dright_domega), &df_dw),
+                ("∂f/∂γ", m(jac.dright_dgamma), &df_dg),
+                ("∂J/∂γ₀", m(jac.dinertia_dgamma[0]), &dj[0]),
+                ("∂J/∂γ₁", m(jac.dinertia_dgamma[1]), &dj[1]),
+                ("∂J/∂γ₂", m(jac.dinertia_dgamma[2]), &dj[2]),
+            ];
+            for (name, a, b) in checks {
+                match close(&a, b, tol, 1.0) {
+                    Ok(e) if who == "derive" => worst = worst.max(e),
+                    Ok(_) => {}
+                    Err(msg) => panic!("{who} {name} at w = {w:?}, g = {g:?}: {msg}"),
+                }
+            }
+        }
+        // J is the whole matrix also where the model splits it as J₀ + c v vᵀ (the same nodes
+        // as `d2l_domega2`, written in another order).
+        let j = gen.d2l_domega2(&g);
+        assert!((got.inertia - j).amax() <= 1e-14 * j.amax());
+    }
+    worst
+}
+
+#[test]
+fn gyrostat_full_jacobian_matches_richardson_of_numdual() {
+    over_random_twins::<_, Gyrostat>(11, test_models::Gyrostat::random, check_jacobian, 1e-9);
+}
+
+#[test]
+fn ellipsoid_full_jacobian_matches_richardson_of_numdual() {
+    over_random_twins::<_, Ellipsoid>(12, test_models::Ellipsoid::random, check_jacobian, 1e-9);
+}
+
+/// The other derived models, which have no num-dual twin: `full_jacobian` against a Richardson
+/// extrapolation of their own `full_equations` (the derivatives are still formed
+/// independently).
+#[test]
+fn every_derived_full_jacobian_matches_richardson() {
+    use derived_models::ellipsoid::DiagonalEllipsoid;
+    use derived_models::{AsymmetricTop, FluidBody, LagrangeTop};
+    let mut rng = ChaCha8Rng::seed_from_u64(13);
+    let mut worst = 0.0f64;
+    for _ in 0..3 {
+        let pot = test_models::random_matrix(&mut rng, 1.0);
+        let fluid = FluidBody {
+            a_kin: test_models::random_spd(&mut rng),
+            lin: test_models::random_matrix(&mut rng, 1.0),
+            pot: pot + pot.transpose(),
+        };
+        worst = worst.max(check_jacobian(&fluid, &fluid, &mut rng, 1e-9));
+        let top = AsymmetricTop {
+            inertia: Vector3::from_fn(|_, _| rng.gen_range(1.0..3.0)),
+            com: test_models::random_vector(&mut rng, 1.0),
+            mass: rng.gen_range(0.5..2.0),
+            g: 9.81,
+        };
+        worst = worst.max(check_jacobian(&top, &top, &mut rng, 1e-9));
+        let ellipsoid = DiagonalEllipsoid::random(&mut rng);
+        worst = worst.max(check_jacobian(&ellipsoid, &ellipsoid, &mut rng, 1e-9));
+    }
+    let lagrange = LagrangeTop::example();
+    worst = worst.max(check_jacobian(&lagrange, &lagrange, &mut rng, 1e-9));
+    eprintln!("worst normwise relative error: {worst:e}");
+}

@@ -1,6 +1,6 @@
 //! `routh::Model` against `#[derive(Lagrangian)]` (issue 22 item 3): for every derived model of
 //! `test-models/derived`, a `Model` from the same text and parameter values gives the same
-//! values as the generated code — every output of every method, at random points with Ω ≠ 0
+//! values as the generated code — every output of every method (`full_jacobian` too), at random points with Ω ≠ 0
 //! and |γ| ≠ 1, to 1e−14 relative — the same steady motions and the same verdicts; and one
 //! check against the hand-written num-dual twin. The model evaluates its tapes compiled by the
 //! JIT (the default); its interpreted copy agrees with the derive to the same 1e−14, and with
@@ -102,6 +102,23 @@ fn compare<A: Routhian, B: Routhian>(
         if let (Some(x), Some(y)) = (fa.rank_one, fb.rank_one) {
             check("full c", s(x.weight), s(y.weight));
             check("full v", v(x.vector), v(y.vector));
+        }
+        let (ja, jb) = (a.full_jacobian(&w, &g), b.full_jacobian(&w, &g));
+        check("jacobian J", m(ja.inertia), m(jb.inertia));
+        check("jacobian f", v(ja.right_side), v(jb.right_side));
+        // The derivatives: the derive's and the runtime's are exact (the same DAG); the
+        // num-dual twin's are the trait's central differences (tests/generated_vs_numdual.rs
+        // checks both against a Richardson extrapolation).
+        if derived {
+            check("∂f/∂ω", m(ja.dright_domega), m(jb.dright_domega));
+            check("∂f/∂γ", m(ja.dright_dgamma), m(jb.dright_dgamma));
+            for k in 0..3 {
+                check(
+                    "∂J/∂γ_k",
+                    m(ja.dinertia_dgamma[k]),
+                    m(jb.dinertia_dgamma[k]),
+                );
+            }
         }
         check("ψ̇", s(a.psi_dot(&w, &g, p)), s(b.psi_dot(&w, &g, p)));
         check("R", s(a.routhian(&w, &g, p)), s(b.routhian(&w, &g, p)));

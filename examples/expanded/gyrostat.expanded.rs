@@ -30,6 +30,7 @@ const _: () = {
     type __RouthBundle = ::routh::__private::RouthBundle;
     type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
     type __FullEquations = ::routh::__private::FullEquations;
+    type __FullJacobian = ::routh::__private::FullJacobian;
     type __ReducedEquations = ::routh::__private::ReducedEquations;
     type __Op = ::routh::__private::Op;
     type __Output = ::routh::__private::Output;
@@ -580,6 +581,300 @@ const _: () = {
                 ),
                 right_side: __Vector3::new(__t1467, __t1470, __t1473),
                 rank_one: __MaybeRankOne::None,
+            }
+        }
+        #[inline]
+        fn full_jacobian(
+            &self,
+            __omega: &__Vector3,
+            __gamma: &__Vector3,
+        ) -> __FullJacobian {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v5: __F64 = __gamma[2usize];
+            let __v7: __F64 = self.inertia[(0usize, 0usize)];
+            let __v8: __F64 = self.inertia[(0usize, 1usize)];
+            let __v9: __F64 = self.inertia[(0usize, 2usize)];
+            let __v10: __F64 = self.inertia[(1usize, 1usize)];
+            let __v11: __F64 = self.inertia[(1usize, 2usize)];
+            let __v12: __F64 = self.inertia[(2usize, 2usize)];
+            let __v13: __F64 = self.rotor[0usize];
+            let __v14: __F64 = self.rotor[1usize];
+            let __v15: __F64 = self.rotor[2usize];
+            let __v16: __F64 = self.coupling[(0usize, 0usize)];
+            let __v17: __F64 = self.coupling[(0usize, 1usize)];
+            let __v18: __F64 = self.coupling[(0usize, 2usize)];
+            let __v19: __F64 = self.coupling[(1usize, 0usize)];
+            let __v20: __F64 = self.coupling[(1usize, 1usize)];
+            let __v21: __F64 = self.coupling[(1usize, 2usize)];
+            let __v22: __F64 = self.coupling[(2usize, 0usize)];
+            let __v23: __F64 = self.coupling[(2usize, 1usize)];
+            let __v24: __F64 = self.coupling[(2usize, 2usize)];
+            let __v25: __F64 = self.com[0usize];
+            let __v26: __F64 = self.com[1usize];
+            let __v27: __F64 = self.com[2usize];
+            let __v28: __F64 = self.mass;
+            let __v29: __F64 = self.g;
+            let __t53 = __v16 * __v3;
+            let __t54 = __v17 * __v4;
+            let __t58 = __v19 * __v3;
+            let __t59 = __v20 * __v4;
+            let __t63 = __v22 * __v3;
+            let __t64 = __v23 * __v4;
+            let __t32 = __v7 * __v0;
+            let __t33 = __v8 * __v1;
+            let __t37 = __v8 * __v0;
+            let __t38 = __v10 * __v1;
+            let __t42 = __v9 * __v0;
+            let __t43 = __v11 * __v1;
+            let __t55 = __v18 * __v5;
+            let __t56 = __t54 + __t53;
+            let __t60 = __v21 * __v5;
+            let __t61 = __t59 + __t58;
+            let __t65 = __v24 * __v5;
+            let __t66 = __t64 + __t63;
+            let __t102 = __v19 * __v1;
+            let __t103 = __v16 * __v0;
+            let __t110 = __v20 * __v1;
+            let __t111 = __v17 * __v0;
+            let __t118 = __v21 * __v1;
+            let __t119 = __v18 * __v0;
+            let __t34 = __v9 * __v2;
+            let __t35 = __t33 + __t32;
+            let __t39 = __v11 * __v2;
+            let __t40 = __t38 + __t37;
+            let __t44 = __v12 * __v2;
+            let __t45 = __t43 + __t42;
+            let __t57 = __t56 + __t55;
+            let __t62 = __t61 + __t60;
+            let __t67 = __t66 + __t65;
+            let __t76 = __v29 * __v28;
+            let __t104 = __t103 + __t102;
+            let __t105 = __v22 * __v2;
+            let __t112 = __t111 + __t110;
+            let __t113 = __v23 * __v2;
+            let __t120 = __t119 + __t118;
+            let __t121 = __v24 * __v2;
+            let __t36 = __t35 + __t34;
+            let __t41 = __t40 + __t39;
+            let __t46 = __t45 + __t44;
+            let __t68 = __t57 + __v13;
+            let __t69 = __t62 + __v14;
+            let __t70 = __t67 + __v15;
+            let __t100 = __t76 * __v25;
+            let __t106 = __t105 + __t104;
+            let __t108 = __t76 * __v26;
+            let __t114 = __t113 + __t112;
+            let __t116 = __t76 * __v27;
+            let __t122 = __t121 + __t120;
+            let __t1414 = __v4 * __v2;
+            let __t1415 = __v5 * __v1;
+            let __t1418 = __v5 * __v0;
+            let __t1419 = __v3 * __v2;
+            let __t91 = __t68 + __t36;
+            let __t95 = __t69 + __t41;
+            let __t99 = __t70 + __t46;
+            let __t107 = __t106 - __t100;
+            let __t115 = __t114 - __t108;
+            let __t123 = __t122 - __t116;
+            let __t1417 = __t1414 - __t1415;
+            let __t1421 = __t1418 - __t1419;
+            let __t1422 = __v3 * __v1;
+            let __t1423 = __v4 * __v0;
+            let __t1636 = __t116 - __t118;
+            let __t1653 = __t110 - __t108;
+            let __t1664 = __t119 - __t116;
+            let __t1687 = __t100 - __t103;
+            let __t1703 = __t108 - __t110;
+            let __t1715 = __t102 - __t100;
+            let __t186 = __v19 * __v4;
+            let __t187 = __v22 * __v5;
+            let __t191 = __v17 * __v3;
+            let __t192 = __v23 * __v5;
+            let __t196 = __v18 * __v3;
+            let __t197 = __v21 * __v4;
+            let __t1425 = __t1422 - __t1423;
+            let __t1426 = __t1417 * __v16;
+            let __t1427 = __t1421 * __v17;
+            let __t1431 = __t1417 * __v19;
+            let __t1432 = __t1421 * __v20;
+            let __t1436 = __t1417 * __v22;
+            let __t1437 = __t1421 * __v23;
+            let __t1441 = __t95 * __v2;
+            let __t1442 = __t99 * __v1;
+            let __t1445 = __t99 * __v0;
+            let __t1446 = __t91 * __v2;
+            let __t1449 = __t91 * __v1;
+            let __t1450 = __t95 * __v0;
+            let __t1453 = __t115 * __v5;
+            let __t1454 = __t123 * __v4;
+            let __t1457 = __t123 * __v3;
+            let __t1458 = __t107 * __v5;
+            let __t1461 = __t107 * __v4;
+            let __t1462 = __t115 * __v3;
+            let __t1535 = __v16 * __v5;
+            let __t1540 = __v20 * __v5;
+            let __t1542 = __t99 + __t43;
+            let __t1544 = __v10 * __v2;
+            let __t1550 = __v16 * __v4;
+            let __t1553 = __v24 * __v4;
+            let __t1556 = __v12 * __v1;
+            let __t1558 = __t95 + __t39;
+            let __t1563 = __v7 * __v2;
+            let __t1565 = __t99 + __t42;
+            let __t1578 = __v20 * __v3;
+            let __t1583 = __v24 * __v3;
+            let __t1585 = __t91 + __t34;
+            let __t1587 = __v12 * __v0;
+            let __t1592 = __t95 + __t37;
+            let __t1594 = __v7 * __v1;
+            let __t1599 = __v10 * __v0;
+            let __t1601 = __t91 + __t33;
+            let __t1624 = __v16 * __v2;
+            let __t1638 = __t1636 - __t121;
+            let __t1644 = __v16 * __v1;
+            let __t1654 = __t1653 + __t113;
+            let __t1665 = __t1664 + __t121;
+            let __t1676 = __v20 * __v0;
+            let __t1689 = __t1687 - __t105;
+            let __t1705 = __t1703 - __t111;
+            let __t1716 = __t1715 + __t103;
+            let __t1428 = __t1425 * __v18;
+            let __t1429 = __t1427 + __t1426;
+            let __t1433 = __t1425 * __v21;
+            let __t1434 = __t1432 + __t1431;
+            let __t1438 = __t1425 * __v24;
+            let __t1439 = __t1437 + __t1436;
+            let __t1444 = __t1441 - __t1442;
+            let __t1448 = __t1445 - __t1446;
+            let __t1452 = __t1449 - __t1450;
+            let __t1456 = __t1453 - __t1454;
+            let __t1460 = __t1457 - __t1458;
+            let __t1464 = __t1461 - __t1462;
+            let __t1537 = __t196 - __t1535;
+            let __t1541 = __t1540 - __t197;
+            let __t1545 = __t1544 - __t1542;
+            let __t1551 = __t1550 - __t191;
+            let __t1555 = __t192 - __t1553;
+            let __t1559 = __t1558 - __t1556;
+            let __t1566 = __t1565 - __t1563;
+            let __t1580 = __t186 - __t1578;
+            let __t1584 = __t1583 - __t187;
+            let __t1588 = __t1587 - __t1585;
+            let __t1595 = __t1594 - __t1592;
+            let __t1602 = __t1601 - __t1599;
+            let __t1614 = __v17 * __v2;
+            let __t1616 = __v18 * __v1;
+            let __t1619 = __v22 * __v1;
+            let __t1621 = __v19 * __v2;
+            let __t1630 = __v23 * __v1;
+            let __t1632 = __v20 * __v2;
+            let __t1640 = __t1638 - __t1624;
+            let __t1648 = __v24 * __v1;
+            let __t1655 = __t1654 + __t1644;
+            let __t1666 = __t1665 - __t1624;
+            let __t1669 = __v21 * __v0;
+            let __t1673 = __v23 * __v0;
+            let __t1681 = __v18 * __v2;
+            let __t1683 = __v24 * __v0;
+            let __t1691 = __t1689 - __t1676;
+            let __t1706 = __t1705 + __t1644;
+            let __t1717 = __t1716 - __t1676;
+            let __t1430 = __t1429 + __t1428;
+            let __t1435 = __t1434 + __t1433;
+            let __t1440 = __t1439 + __t1438;
+            let __t1465 = __t1456 + __t1444;
+            let __t1468 = __t1460 + __t1448;
+            let __t1471 = __t1464 + __t1452;
+            let __t1528 = __v9 * __v1;
+            let __t1530 = __v8 * __v2;
+            let __t1546 = __t1545 + __t1541;
+            let __t1560 = __t1559 + __t1555;
+            let __t1567 = __t1566 + __t1537;
+            let __t1575 = __v11 * __v0;
+            let __t1589 = __t1588 + __t1584;
+            let __t1596 = __t1595 + __t1551;
+            let __t1603 = __t1602 + __t1580;
+            let __t1617 = __t1616 - __t1614;
+            let __t1622 = __t1621 - __t1619;
+            let __t1641 = __t1640 - __t1630;
+            let __t1650 = __v21 * __v2;
+            let __t1656 = __t1655 - __t1648;
+            let __t1661 = __v22 * __v0;
+            let __t1667 = __t1666 + __t1632;
+            let __t1671 = __t1621 - __t1669;
+            let __t1674 = __t1673 - __t1614;
+            let __t1692 = __t1691 - __t1681;
+            let __t1698 = __v19 * __v0;
+            let __t1707 = __t1706 - __t1648;
+            let __t1712 = __v17 * __v1;
+            let __t1718 = __t1717 + __t1683;
+            let __t1720 = __t1673 - __t1619;
+            let __t1722 = __t1616 - __t1669;
+            let __t1467 = __t1465 - __t1430;
+            let __t1470 = __t1468 - __t1435;
+            let __t1473 = __t1471 - __t1440;
+            let __t1531 = __t1530 - __t1528;
+            let __t1547 = __t1546 - __t1537;
+            let __t1561 = __t1560 - __t1551;
+            let __t1568 = __t1567 - __t1541;
+            let __t1576 = __t1575 - __t1530;
+            let __t1590 = __t1589 - __t1580;
+            let __t1597 = __t1596 - __t1555;
+            let __t1604 = __t1603 - __t1584;
+            let __t1611 = __t1528 - __t1575;
+            let __t1623 = __t1622 - __t1617;
+            let __t1642 = __t1641 + __t1632;
+            let __t1657 = __t1656 + __t1650;
+            let __t1668 = __t1667 + __t1661;
+            let __t1675 = __t1674 - __t1671;
+            let __t1693 = __t1692 + __t1683;
+            let __t1708 = __t1707 - __t1698;
+            let __t1719 = __t1718 + __t1712;
+            let __t1723 = __t1722 - __t1720;
+            __FullJacobian {
+                inertia: __Matrix3::new(
+                    __v7,
+                    __v8,
+                    __v9,
+                    __v8,
+                    __v10,
+                    __v11,
+                    __v9,
+                    __v11,
+                    __v12,
+                ),
+                right_side: __Vector3::new(__t1467, __t1470, __t1473),
+                dright_domega: __Matrix3::new(
+                    __t1531,
+                    __t1547,
+                    __t1561,
+                    __t1568,
+                    __t1576,
+                    __t1590,
+                    __t1597,
+                    __t1604,
+                    __t1611,
+                ),
+                dright_dgamma: __Matrix3::new(
+                    __t1623,
+                    __t1642,
+                    __t1657,
+                    __t1668,
+                    __t1675,
+                    __t1693,
+                    __t1708,
+                    __t1719,
+                    __t1723,
+                ),
+                dinertia_dgamma: [
+                    __Matrix3::new(0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64),
+                    __Matrix3::new(0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64),
+                    __Matrix3::new(0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64),
+                ],
             }
         }
     }

@@ -27,6 +27,7 @@ const _: () = {
     type __RouthBundle = ::routh::__private::RouthBundle;
     type __GyroscopicSystem = ::routh::__private::GyroscopicSystem;
     type __FullEquations = ::routh::__private::FullEquations;
+    type __FullJacobian = ::routh::__private::FullJacobian;
     type __ReducedEquations = ::routh::__private::ReducedEquations;
     type __Op = ::routh::__private::Op;
     type __Output = ::routh::__private::Output;
@@ -183,6 +184,86 @@ const _: () = {
                 ),
                 right_side: __Vector3::new(__t689, __t690, __t684),
                 rank_one: __MaybeRankOne::None,
+            }
+        }
+        #[inline]
+        fn full_jacobian(
+            &self,
+            __omega: &__Vector3,
+            __gamma: &__Vector3,
+        ) -> __FullJacobian {
+            let __v0: __F64 = __omega[0usize];
+            let __v1: __F64 = __omega[1usize];
+            let __v2: __F64 = __omega[2usize];
+            let __v3: __F64 = __gamma[0usize];
+            let __v4: __F64 = __gamma[1usize];
+            let __v7: __F64 = self.a1;
+            let __v8: __F64 = self.c;
+            let __v9: __F64 = self.mgl;
+            let __t15 = __v8 * __v2;
+            let __t26 = __v7 * __v0;
+            let __t29 = __v7 * __v1;
+            let __t685 = __v9 * __v4;
+            let __t687 = __v9 * __v3;
+            let __t747 = __v7 * __v2;
+            let __t749 = __v8 * __v1;
+            let __t755 = __v8 * __v0;
+            let __t674 = __t15 * __v1;
+            let __t677 = __t15 * __v0;
+            let __t673 = __t29 * __v2;
+            let __t678 = __t26 * __v2;
+            let __t681 = __t26 * __v1;
+            let __t682 = __t29 * __v0;
+            let __t748 = __t747 - __t15;
+            let __t751 = __t29 - __t749;
+            let __t753 = __t15 - __t747;
+            let __t756 = __t755 - __t26;
+            let __t676 = __t673 - __t674;
+            let __t680 = __t677 - __t678;
+            let __t32 = -__v9;
+            let __t684 = __t681 - __t682;
+            let __t689 = __t676 + __t685;
+            let __t690 = __t680 - __t687;
+            __FullJacobian {
+                inertia: __Matrix3::new(
+                    __v7,
+                    0f64,
+                    0f64,
+                    0f64,
+                    __v7,
+                    0f64,
+                    0f64,
+                    0f64,
+                    __v8,
+                ),
+                right_side: __Vector3::new(__t689, __t690, __t684),
+                dright_domega: __Matrix3::new(
+                    0f64,
+                    __t748,
+                    __t751,
+                    __t753,
+                    0f64,
+                    __t756,
+                    0f64,
+                    0f64,
+                    0f64,
+                ),
+                dright_dgamma: __Matrix3::new(
+                    0f64,
+                    __v9,
+                    0f64,
+                    __t32,
+                    0f64,
+                    0f64,
+                    0f64,
+                    0f64,
+                    0f64,
+                ),
+                dinertia_dgamma: [
+                    __Matrix3::new(0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64),
+                    __Matrix3::new(0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64),
+                    __Matrix3::new(0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64, 0f64),
+                ],
             }
         }
     }
@@ -1537,6 +1618,6 @@ const _: () = {
         const LATEX_AMENDED_POTENTIAL: &'static str = "\\mathit{mgl} \\gamma_3 + \\frac{p_\\psi^{2}}{2 \\left(\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)\\right)}";
         const LATEX_A: &'static str = "\\begin{pmatrix} \\mathit{a1} - \\frac{\\mathit{a1}^{2} \\gamma_1^{2}}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} & -\\frac{\\mathit{a1}^{2} \\gamma_2 \\gamma_1}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} & -\\frac{\\mathit{c} \\mathit{a1} \\gamma_3 \\gamma_1}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} \\\\ -\\frac{\\mathit{a1}^{2} \\gamma_2 \\gamma_1}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} & \\mathit{a1} - \\frac{\\mathit{a1}^{2} \\gamma_2^{2}}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} & -\\frac{\\mathit{c} \\mathit{a1} \\gamma_3 \\gamma_2}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} \\\\ -\\frac{\\mathit{c} \\mathit{a1} \\gamma_3 \\gamma_1}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} & -\\frac{\\mathit{c} \\mathit{a1} \\gamma_3 \\gamma_2}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} & \\mathit{c} - \\frac{\\mathit{c}^{2} \\gamma_3^{2}}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)} \\end{pmatrix}";
         const LATEX_G: &'static str = "\\begin{pmatrix} 0 & -\\frac{1}{2} \\gamma_3 \\sigma_{2} & \\frac{1}{2} \\gamma_2 \\sigma_{2} \\\\ \\frac{1}{2} \\gamma_3 \\sigma_{2} & 0 & -\\frac{1}{2} \\gamma_1 \\sigma_{2} \\\\ -\\frac{1}{2} \\gamma_2 \\sigma_{2} & \\frac{1}{2} \\gamma_1 \\sigma_{2} & 0 \\end{pmatrix} \\quad \\text{where} \\quad \\sigma_{1} = \\frac{1}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)},\\; \\sigma_{2} = \\mathit{c} p_\\psi \\sigma_{1} - 2 \\mathit{c}^{2} p_\\psi \\gamma_3^{2} \\sigma_{1}^{2} + \\mathit{a1} p_\\psi \\sigma_{1} - 2 \\mathit{a1}^{2} p_\\psi \\gamma_1^{2} \\sigma_{1}^{2} + \\mathit{a1} p_\\psi \\sigma_{1} - 2 \\mathit{a1}^{2} p_\\psi \\gamma_2^{2} \\sigma_{1}^{2}";
-        const LATEX_C: &'static str = "\\begin{pmatrix} \\gamma_2 \\left(-4 \\gamma_3 \\sigma_{7} - \\gamma_2 \\sigma_{11}\\right) - \\gamma_3 \\left(\\gamma_3 \\sigma_{10} + 4 \\gamma_2 \\sigma_{7}\\right) & \\sigma_{13} & \\sigma_{16} \\\\ \\sigma_{13} & \\gamma_3 \\left(-4 \\gamma_1 \\sigma_{6} - \\gamma_3 \\sigma_{9}\\right) - \\gamma_1 \\sigma_{12} & \\sigma_{18} \\\\ \\sigma_{16} & \\sigma_{18} & \\gamma_1 \\sigma_{15} - \\gamma_2 \\sigma_{17} \\end{pmatrix} \\quad \\text{where} \\quad \\sigma_{1} = \\frac{1}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)},\\; \\sigma_{2} = \\mathit{a1} p_\\psi \\gamma_1 \\sigma_{1}^{2},\\; \\sigma_{3} = \\mathit{a1} p_\\psi \\gamma_2 \\sigma_{1}^{2},\\; \\sigma_{4} = \\mathit{a1} p_\\psi^{2} \\sigma_{1}^{2},\\; \\sigma_{5} = \\mathit{a1} p_\\psi \\gamma_2 \\sigma_{1} \\sigma_{2},\\; \\sigma_{6} = \\mathit{c} p_\\psi \\gamma_3 \\sigma_{1} \\sigma_{2},\\; \\sigma_{7} = \\mathit{c} p_\\psi \\gamma_3 \\sigma_{1} \\sigma_{3},\\; \\sigma_{8} = -\\gamma_3 \\left(-\\mathit{mgl} + \\mathit{c} p_\\psi^{2} \\gamma_3 \\sigma_{1}^{2}\\right) - \\mathit{a1} p_\\psi^{2} \\gamma_1^{2} \\sigma_{1}^{2} - \\mathit{a1} p_\\psi^{2} \\gamma_2^{2} \\sigma_{1}^{2},\\; \\sigma_{9} = \\sigma_{4} - 4 \\mathit{a1} p_\\psi \\gamma_1 \\sigma_{1} \\sigma_{2} + \\sigma_{8},\\; \\sigma_{10} = \\sigma_{4} - 4 \\mathit{a1} p_\\psi \\gamma_2 \\sigma_{1} \\sigma_{3} + \\sigma_{8},\\; \\sigma_{11} = \\mathit{c} p_\\psi^{2} \\sigma_{1}^{2} - 4 \\mathit{c}^{2} p_\\psi^{2} \\gamma_3^{2} \\sigma_{1}^{3} + \\sigma_{8},\\; \\sigma_{12} = \\gamma_1 \\sigma_{11} + 4 \\gamma_3 \\sigma_{6},\\; \\sigma_{13} = \\gamma_2 \\sigma_{12} - \\gamma_3 \\left(-4 \\gamma_1 \\sigma_{7} + 4 \\gamma_3 \\sigma_{5}\\right),\\; \\sigma_{14} = -4 \\gamma_2 \\sigma_{6} + 4 \\gamma_1 \\sigma_{7},\\; \\sigma_{15} = -4 \\gamma_2 \\sigma_{5} - \\gamma_1 \\sigma_{10},\\; \\sigma_{16} = \\gamma_2 \\sigma_{14} - \\gamma_3 \\sigma_{15},\\; \\sigma_{17} = \\gamma_2 \\sigma_{9} + 4 \\gamma_1 \\sigma_{5},\\; \\sigma_{18} = \\gamma_3 \\sigma_{17} - \\gamma_1 \\sigma_{14}";
+        const LATEX_C: &'static str = "\\begin{pmatrix} \\gamma_2 \\left(-4 \\gamma_3 \\sigma_{4} - \\gamma_2 \\sigma_{7}\\right) - \\gamma_3 \\left(\\gamma_3 \\sigma_{6} + 4 \\gamma_2 \\sigma_{4}\\right) & \\sigma_{12} & \\sigma_{15} \\\\ \\sigma_{12} & \\gamma_3 \\left(-4 \\gamma_1 \\sigma_{10} - \\gamma_3 \\sigma_{16}\\right) - \\gamma_1 \\sigma_{11} & \\sigma_{18} \\\\ \\sigma_{15} & \\sigma_{18} & \\gamma_1 \\sigma_{14} - \\gamma_2 \\sigma_{17} \\end{pmatrix} \\quad \\text{where} \\quad \\sigma_{1} = \\frac{1}{\\mathit{c} \\gamma_3^{2} + \\mathit{a1} \\left(1 - \\gamma_3^{2}\\right)},\\; \\sigma_{2} = \\mathit{a1} p_\\psi \\gamma_2 \\sigma_{1}^{2},\\; \\sigma_{3} = \\mathit{a1} p_\\psi^{2} \\sigma_{1}^{2},\\; \\sigma_{4} = \\mathit{c} p_\\psi \\gamma_3 \\sigma_{1} \\sigma_{2},\\; \\sigma_{5} = -\\gamma_3 \\left(-\\mathit{mgl} + \\mathit{c} p_\\psi^{2} \\gamma_3 \\sigma_{1}^{2}\\right) - \\mathit{a1} p_\\psi^{2} \\gamma_1^{2} \\sigma_{1}^{2} - \\mathit{a1} p_\\psi^{2} \\gamma_2^{2} \\sigma_{1}^{2},\\; \\sigma_{6} = \\sigma_{3} - 4 \\mathit{a1} p_\\psi \\gamma_2 \\sigma_{1} \\sigma_{2} + \\sigma_{5},\\; \\sigma_{7} = \\mathit{c} p_\\psi^{2} \\sigma_{1}^{2} - 4 \\mathit{c}^{2} p_\\psi^{2} \\gamma_3^{2} \\sigma_{1}^{3} + \\sigma_{5},\\; \\sigma_{8} = \\mathit{a1} p_\\psi \\gamma_1 \\sigma_{1}^{2},\\; \\sigma_{9} = \\mathit{a1} p_\\psi \\gamma_2 \\sigma_{1} \\sigma_{8},\\; \\sigma_{10} = \\mathit{c} p_\\psi \\gamma_3 \\sigma_{1} \\sigma_{8},\\; \\sigma_{11} = \\gamma_1 \\sigma_{7} + 4 \\gamma_3 \\sigma_{10},\\; \\sigma_{12} = \\gamma_2 \\sigma_{11} - \\gamma_3 \\left(-4 \\gamma_1 \\sigma_{4} + 4 \\gamma_3 \\sigma_{9}\\right),\\; \\sigma_{13} = -4 \\gamma_2 \\sigma_{10} + 4 \\gamma_1 \\sigma_{4},\\; \\sigma_{14} = -4 \\gamma_2 \\sigma_{9} - \\gamma_1 \\sigma_{6},\\; \\sigma_{15} = \\gamma_2 \\sigma_{13} - \\gamma_3 \\sigma_{14},\\; \\sigma_{16} = \\sigma_{5} + \\sigma_{3} - 4 \\mathit{a1} p_\\psi \\gamma_1 \\sigma_{1} \\sigma_{8},\\; \\sigma_{17} = \\gamma_2 \\sigma_{16} + 4 \\gamma_1 \\sigma_{9},\\; \\sigma_{18} = \\gamma_3 \\sigma_{17} - \\gamma_1 \\sigma_{13}";
     }
 };

@@ -22,13 +22,14 @@ use std::fmt::Write;
 
 /// The names the text uses for the types of `<crate>::__private`, declared as type aliases in
 /// the `const _` block around the impls: `(alias, item of __private)`.
-pub const ALIASES: [(&str, &str); 18] = [
+pub const ALIASES: [(&str, &str); 19] = [
     ("__F64", "f64"),
     ("__Vector3", "Vector3"),
     ("__Matrix3", "Matrix3"),
     ("__RouthBundle", "RouthBundle"),
     ("__GyroscopicSystem", "GyroscopicSystem"),
     ("__FullEquations", "FullEquations"),
+    ("__FullJacobian", "FullJacobian"),
     ("__ReducedEquations", "ReducedEquations"),
     ("__Op", "Op"),
     ("__Output", "Output"),

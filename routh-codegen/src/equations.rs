@@ -8,9 +8,10 @@
 //! the DAG, the products share the nodes the derivatives already have, and terms that cancel
 //! exactly (such as `n·(γ × γ)`) vanish by hash-consing instead of in floating point.
 
+use crate::layout::JacobianTerms;
 use crate::lower::Symbols;
 use crate::reduce::{Outputs, M3, V3};
-use routh_symbolic::{Graph, Id};
+use routh_symbolic::{Graph, Id, Var};
 
 /// The right sides, one node per component.
 pub struct Equations {
@@ -18,6 +19,9 @@ pub struct Equations {
     pub full: V3,
     /// `∂R/∂Ω × Ω + ∂R/∂γ × γ − (∂²R/∂Ω∂γ)(γ × Ω)` of (13).
     pub reduced: V3,
+    /// `J`, the right side of (8) and their derivatives in `(ω, γ)`, for
+    /// `Lagrangian::full_jacobian`.
+    pub jacobian: JacobianTerms<Id>,
 }
 
 /// The right sides of (8) and (13) for the model's outputs.
@@ -37,7 +41,39 @@ pub fn equations(sym: &mut Symbols, o: &Outputs) -> Equations {
     };
     let full = side(g, &o.dl_domega, &o.dl_dgamma, &o.d2l_domega_dgamma);
     let reduced = side(g, &o.dr_domega, &o.dr_dgamma, &o.d2r_domega_dgamma);
-    Equations { full, reduced }
+    let jacobian = jacobian(g, &full, &o.d2l_domega2, sym.omega, sym.gamma);
+    Equations {
+        full,
+        reduced,
+        jacobian,
+    }
+}
+
+/// `J`, `f` and their first derivatives: the nodes of `f` (the right side of (8)) and of `J`
+/// differentiated by the ω and γ variables ([`Graph::diff`], memoised per variable, so the
+/// derivatives share the nodes that the outputs' own derivatives already made). `J` is free of
+/// ω; each `∂J/∂γ_k` is symmetric, its upper triangle mirrored.
+fn jacobian(g: &mut Graph, f: &V3, j: &M3, w: [Var; 3], gm: [Var; 3]) -> JacobianTerms<Id> {
+    let by = |g: &mut Graph, x: [Var; 3]| f.map(|fi| x.map(|v| g.diff(fi, v)));
+    let dright_domega = by(g, w);
+    let dright_dgamma = by(g, gm);
+    let dinertia_dgamma = gm.map(|v| {
+        let mut d = [[j[0][0]; 3]; 3];
+        for r in 0..3 {
+            for c in r..3 {
+                d[r][c] = g.diff(j[r][c], v);
+                d[c][r] = d[r][c];
+            }
+        }
+        d
+    });
+    JacobianTerms {
+        inertia: *j,
+        right_side: *f,
+        dright_domega,
+        dright_dgamma,
+        dinertia_dgamma,
+    }
 }
 
 /// `m x`.

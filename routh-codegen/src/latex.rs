@@ -2,6 +2,8 @@
 //! `DerivedFormulas::latex()` (emitted as consts by the derive), and what a run-time model built
 //! from a [`Model`] returns — both call [`latex_formulas`].
 
+use std::collections::HashMap;
+
 use routh_symbolic::{matrix_to_latex, on_sphere, to_latex, Graph, Id, LatexSymbols};
 
 use crate::Model;
@@ -35,16 +37,21 @@ pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
         ..plain.clone()
     };
     let o = &model.outputs;
-    let one = |g: &mut Graph, id: Id, s: &LatexSymbols| {
-        let id = on_sphere(g, id, sym.gamma, s);
+    // `on_sphere` of each node once: a symmetric A or C has each off-diagonal entry twice.
+    let mut shortened: HashMap<(Id, bool), Id> = HashMap::new();
+    let mut short = |g: &mut Graph, id: Id, s: &LatexSymbols| {
+        *(shortened.entry((id, s.big_omega))).or_insert_with(|| on_sphere(g, id, sym.gamma, s))
+    };
+    let mut one = |g: &mut Graph, id: Id, s: &LatexSymbols| {
+        let id = short(g, id, s);
         to_latex(g, id, s)
     };
     let lagrangian = one(&mut g, o.lagrangian, &plain);
     let psi_dot = one(&mut g, o.psi_dot, &relative);
     let routhian = one(&mut g, o.routhian, &relative);
     let amended_potential = one(&mut g, o.amended_potential, &plain);
-    let matrix = |g: &mut Graph, m: &[[Id; 3]; 3]| {
-        let m = m.map(|row| row.map(|id| on_sphere(g, id, sym.gamma, &plain)));
+    let mut matrix = |g: &mut Graph, m: &[[Id; 3]; 3]| {
+        let m = m.map(|row| row.map(|id| short(g, id, &plain)));
         matrix_to_latex(g, &m, &plain)
     };
     let a = matrix(&mut g, &o.gyro_a);

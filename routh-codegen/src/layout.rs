@@ -1,7 +1,7 @@
 //! The layouts of the methods that return many outputs from one straight-line body,
 //! `Routhian::bundle`, `Routhian::gyroscopic_system`, `Routhian::bundle_and_system`,
-//! `Lagrangian::full_equations` and `Routhian::reduced_equations`: which output is which, by
-//! name.
+//! `Lagrangian::full_equations`, `Lagrangian::full_jacobian` and `Routhian::reduced_equations`:
+//! which output is which, by name.
 //!
 //! [`reduce`](crate::reduce) derives the outputs as nodes and [`emit`](crate::emit) writes one
 //! body for all of them, which hands back one token per node in the order it was given. Both
@@ -193,6 +193,51 @@ impl<T> EquationTerms<T> {
     }
 }
 
+/// What `Lagrangian::full_jacobian` returns: `J`, the right side `f` of (8) and their first
+/// derivatives in `(ω, γ)`, in the order of `routh::FullJacobian`.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub struct JacobianTerms<T> {
+    /// `J = ∂²L/∂ω²` (the whole matrix), row-major.
+    pub inertia: [[T; 3]; 3],
+    /// `f`, the right side of (8).
+    pub right_side: [T; 3],
+    /// `∂f_i/∂ω_j`, row-major.
+    pub dright_domega: [[T; 3]; 3],
+    /// `∂f_i/∂γ_j`, row-major.
+    pub dright_dgamma: [[T; 3]; 3],
+    /// `∂J/∂γ_k` for `k = 0, 1, 2`, each row-major.
+    pub dinertia_dgamma: [[[T; 3]; 3]; 3],
+}
+
+/// The number of scalars of a [`JacobianTerms`]: `J`, `f`, two 3×3 blocks and three more.
+pub const JACOBIAN_LEN: usize = 9 + 3 + 9 + 9 + 27;
+
+impl<T> JacobianTerms<T> {
+    /// The scalars in layout order (fields in declaration order, matrices row-major).
+    pub fn flatten(self) -> Vec<T> {
+        let mut out: Vec<T> = self.inertia.into_iter().flatten().collect();
+        out.extend(self.right_side);
+        out.extend(self.dright_domega.into_iter().flatten());
+        out.extend(self.dright_dgamma.into_iter().flatten());
+        out.extend(self.dinertia_dgamma.into_iter().flatten().flatten());
+        out
+    }
+
+    /// The inverse of [`JacobianTerms::flatten`].
+    ///
+    /// # Panics
+    /// If `flat` does not hold exactly [`JACOBIAN_LEN`] scalars.
+    pub fn from_flat(flat: impl IntoIterator<Item = T>) -> Self {
+        read_exactly(flat, |it| JacobianTerms {
+            inertia: take33(it),
+            right_side: take3(it),
+            dright_domega: take33(it),
+            dright_dgamma: take33(it),
+            dinertia_dgamma: std::array::from_fn(|_| take33(it)),
+        })
+    }
+}
+
 /// A layout read from `flat` by `read`, which must use up every scalar.
 fn read_exactly<T, I: IntoIterator<Item = T>, S>(
     flat: I,
@@ -283,6 +328,16 @@ mod tests {
         assert_eq!(split.flatten(), (0..17).collect::<Vec<_>>());
         let full_split = EquationTerms::from_flat(0..16, shape(false, true));
         assert_eq!(full_split.rank_one, Some((12, [13, 14, 15])));
+    }
+
+    #[test]
+    fn jacobian_terms_round_trip_in_field_order() {
+        let j = JacobianTerms::from_flat(0..JACOBIAN_LEN);
+        assert_eq!((j.inertia[2][2], j.right_side), (8, [9, 10, 11]));
+        assert_eq!((j.dright_domega[0][0], j.dright_dgamma[0][0]), (12, 21));
+        assert_eq!(j.dinertia_dgamma[0][0][0], 30);
+        assert_eq!(j.dinertia_dgamma[2][2][2], 56);
+        assert_eq!(j.flatten(), (0..JACOBIAN_LEN).collect::<Vec<_>>());
     }
 
     #[test]

@@ -136,8 +136,16 @@ pub fn expand_with(
             format!("internal error in #[derive(Lagrangian)]: invalid tape ({e})"),
         )
     })?;
-    // Only the aliases the text uses are declared (an unused one would be dead code).
-    let used = |alias: &str| lag_text.contains(alias) || routh_text.contains(alias);
+    // Only the aliases the text uses are declared (an unused one would be dead code). They are
+    // looked for outside the statements `let __t… = …;` and the input reads `let __v…: __F64 =
+    // …;`, which name no alias but `__F64` (in a literal such as `__F64::NAN`; every method's
+    // signature names it too): most of the text is statements, and searching all of it for
+    // every alias was a tenth of an unoptimised expansion.
+    let skeleton: String = (lag_text.lines().chain(routh_text.lines()))
+        .filter(|line| !line.starts_with("let __t") && !line.starts_with("let __v"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let used = |alias: &str| skeleton.contains(alias);
     let used_aliases: Vec<_> = emit::ALIASES.iter().filter(|(a, _)| used(a)).collect();
     let lag = lex(lag_text)?;
     let routh = lex(routh_text)?;

@@ -5,7 +5,7 @@
 use crate::emit::{Emitter, Inputs};
 use crate::equations::Equations;
 use crate::inertia::RankOne;
-use crate::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic};
+use crate::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic, JacobianTerms};
 use crate::lower::Symbols;
 use crate::reduce::{Outputs, M3, V3};
 use routh_symbolic::Id;
@@ -122,7 +122,35 @@ impl Emitter<'_> {
             rank_one: rank_one.map(|r| (r.weight, r.vector)),
         };
         self.equations_method(s, "full_equations", WG, "__FullEquations", terms, l);
+        self.jacobian_method(s, &eq.jacobian);
         out
+    }
+
+    /// Writes `full_jacobian`: `J`, the right side of (8) and their first derivatives in
+    /// `(ω, γ)` from one straight-line body.
+    fn jacobian_method(&self, out: &mut String, terms: &JacobianTerms<Id>) {
+        let _ = writeln!(
+            out,
+            "#[inline]\nfn full_jacobian(&self{WG}) -> __FullJacobian {{"
+        );
+        let outs = self.body(out, &terms.flatten(), Inputs::Lagrangian);
+        let t = JacobianTerms::from_flat(outs);
+        out.push_str("__FullJacobian {\ninertia: ");
+        construct(out, "__Matrix3", t.inertia.as_flattened());
+        out.push_str(",\nright_side: ");
+        construct(out, "__Vector3", &t.right_side);
+        out.push_str(",\ndright_domega: ");
+        construct(out, "__Matrix3", t.dright_domega.as_flattened());
+        out.push_str(",\ndright_dgamma: ");
+        construct(out, "__Matrix3", t.dright_dgamma.as_flattened());
+        out.push_str(",\ndinertia_dgamma: [");
+        for (k, m) in t.dinertia_dgamma.iter().enumerate() {
+            if k > 0 {
+                out.push_str(", ");
+            }
+            construct(out, "__Matrix3", m.as_flattened());
+        }
+        out.push_str("],\n}\n}\n");
     }
 
     /// Writes `full_equations` or `reduced_equations`: J, the right side of (8) or (13) and,

@@ -50,31 +50,48 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
     for (k, id) in stmts.iter().enumerate() {
         slot[id.index()] = k;
     }
-    let operands: Vec<Vec<usize>> = stmts
-        .iter()
-        .map(|&id| {
-            let mut ops: Vec<usize> = plan
-                .operands(g, id)
-                .into_iter()
-                .map(|c| slot[c.index()])
-                .filter(|&s| s != usize::MAX)
-                .collect();
-            ops.dedup();
-            ops
-        })
-        .collect();
-    let mut users = vec![Vec::new(); stmts.len()];
-    for (k, ops) in operands.iter().enumerate() {
-        for &o in ops {
-            users[o].push(k);
+    // The statements each statement reads (at most two; `x * x` reads `x` once), and who reads
+    // each, in flat arrays: this runs once per generated method, unoptimised in a user's debug
+    // build, where a `Vec` per statement was most of its cost.
+    let mut operands: Vec<[usize; 2]> = Vec::with_capacity(stmts.len());
+    let mut arity: Vec<u8> = Vec::with_capacity(stmts.len());
+    let mut readers = vec![0u32; stmts.len() + 1];
+    for &id in &stmts {
+        let mut ops = [usize::MAX; 2];
+        let mut m = 0usize;
+        for c in g.node(id).children() {
+            let s = slot[plan.folds(g, id, c).unwrap_or(c).index()];
+            if s != usize::MAX && (m == 0 || ops[m - 1] != s) {
+                ops[m] = s;
+                m += 1;
+            }
+        }
+        for &o in &ops[..m] {
+            readers[o + 1] += 1;
+        }
+        operands.push(ops);
+        arity.push(m as u8);
+    }
+    let ops_of = |k: usize| &operands[k][..usize::from(arity[k])];
+    // Users of statement `o`: `user_list[readers[o]..readers[o + 1]]`, in increasing order.
+    for k in 0..stmts.len() {
+        readers[k + 1] += readers[k];
+    }
+    let mut fill: Vec<u32> = readers[..stmts.len()].to_vec();
+    let mut user_list = vec![0usize; readers[stmts.len()] as usize];
+    for k in 0..stmts.len() {
+        for &o in ops_of(k) {
+            user_list[fill[o] as usize] = k;
+            fill[o] += 1;
         }
     }
+    let users = |k: usize| &user_list[readers[k] as usize..readers[k + 1] as usize];
     let lat: Vec<u32> = stmts.iter().map(|&id| latency(g, plan, id)).collect();
     // Height: the latency-weighted longest path from a statement to an output (users come
     // after their operands in id order, so one backward sweep).
     let mut height = vec![0u32; stmts.len()];
     for k in (0..stmts.len()).rev() {
-        let above = users[k].iter().map(|&u| height[u]).max().unwrap_or(0);
+        let above = users(k).iter().map(|&u| height[u]).max().unwrap_or(0);
         height[k] = lat[k] + above;
     }
     // Which part first needs each statement.
@@ -90,7 +107,7 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
                 continue;
             }
             part_of[k] = p;
-            stack.extend(operands[k].iter().copied());
+            stack.extend(ops_of(k).iter().copied());
         }
     }
     // Statements no part claims (none, for a plan built from the parts' outputs) go last.
@@ -101,7 +118,7 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
         }
     }
 
-    let mut waiting: Vec<u32> = operands.iter().map(|o| o.len() as u32).collect();
+    let mut waiting: Vec<u32> = arity.iter().map(|&m| u32::from(m)).collect();
     // Cycle (in issue slots: ISSUE_WIDTH per cycle) at which each operand's value is ready.
     let mut ready_at = vec![0u64; stmts.len()];
     let mut groups = vec![Vec::new(); parts.len().max(1)];
@@ -137,7 +154,7 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
             groups[p].push(stmts[k]);
             let done = now + u64::from(lat[k]) * width;
             now += 1;
-            for &u in &users[k] {
+            for &u in users(k) {
                 ready_at[u] = ready_at[u].max(done);
                 waiting[u] -= 1;
                 if waiting[u] == 0 {

@@ -10,7 +10,7 @@ use crate::error::ModelError;
 use crate::Param;
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
-use routh_codegen::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic};
+use routh_codegen::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic, JacobianTerms};
 use routh_codegen::lower::Access;
 use routh_symbolic::Id;
 use routh_tape::Tape;
@@ -57,6 +57,7 @@ pub(crate) struct Tapes<T> {
     pub energy: T,
     pub cyclic_momentum: T,
     pub full_equations: T,
+    pub full_jacobian: T,
     pub psi_dot: T,
     pub routhian: T,
     pub dr_domega: T,
@@ -82,6 +83,7 @@ pub(crate) const TAPE_NAMES: [&str; TAPES] = [
     "energy",
     "cyclic_momentum",
     "full_equations",
+    "full_jacobian",
     "psi_dot",
     "routhian",
     "dr_domega",
@@ -98,7 +100,7 @@ pub(crate) const TAPE_NAMES: [&str; TAPES] = [
 ];
 
 /// The number of tapes of a model (one per generated method).
-pub(crate) const TAPES: usize = 21;
+pub(crate) const TAPES: usize = 22;
 
 /// The position of each tape in [`Tapes::fields`] and [`TAPE_NAMES`].
 pub(crate) mod index {
@@ -110,19 +112,20 @@ pub(crate) mod index {
     pub const ENERGY: usize = 5;
     pub const CYCLIC_MOMENTUM: usize = 6;
     pub const FULL_EQUATIONS: usize = 7;
-    pub const PSI_DOT: usize = 8;
-    pub const ROUTHIAN: usize = 9;
-    pub const DR_DOMEGA: usize = 10;
-    pub const DR_DGAMMA: usize = 11;
-    pub const DR_DP: usize = 12;
-    pub const D2R_DOMEGA2: usize = 13;
-    pub const D2R_DOMEGA_DGAMMA: usize = 14;
-    pub const D2R_DGAMMA2: usize = 15;
-    pub const AMENDED_POTENTIAL: usize = 16;
-    pub const BUNDLE: usize = 17;
-    pub const GYROSCOPIC_SYSTEM: usize = 18;
-    pub const REDUCED_EQUATIONS: usize = 19;
-    pub const BUNDLE_AND_SYSTEM: usize = 20;
+    pub const FULL_JACOBIAN: usize = 8;
+    pub const PSI_DOT: usize = 9;
+    pub const ROUTHIAN: usize = 10;
+    pub const DR_DOMEGA: usize = 11;
+    pub const DR_DGAMMA: usize = 12;
+    pub const DR_DP: usize = 13;
+    pub const D2R_DOMEGA2: usize = 14;
+    pub const D2R_DOMEGA_DGAMMA: usize = 15;
+    pub const D2R_DGAMMA2: usize = 16;
+    pub const AMENDED_POTENTIAL: usize = 17;
+    pub const BUNDLE: usize = 18;
+    pub const GYROSCOPIC_SYSTEM: usize = 19;
+    pub const REDUCED_EQUATIONS: usize = 20;
+    pub const BUNDLE_AND_SYSTEM: usize = 21;
 }
 
 impl<T> Tapes<T> {
@@ -137,6 +140,7 @@ impl<T> Tapes<T> {
             &self.energy,
             &self.cyclic_momentum,
             &self.full_equations,
+            &self.full_jacobian,
             &self.psi_dot,
             &self.routhian,
             &self.dr_domega,
@@ -419,6 +423,24 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
             sym,
             &zip(terms_names(false).flatten(), terms(eq.full, None).flatten()),
         )?,
+        full_jacobian: tape(
+            sym,
+            &zip(
+                JacobianTerms {
+                    inertia: m33!("inertia"),
+                    right_side: v3!("right_side"),
+                    dright_domega: m33!("dright_domega"),
+                    dright_dgamma: m33!("dright_dgamma"),
+                    dinertia_dgamma: [
+                        m33!("dinertia_dgamma[0]"),
+                        m33!("dinertia_dgamma[1]"),
+                        m33!("dinertia_dgamma[2]"),
+                    ],
+                }
+                .flatten(),
+                eq.jacobian.flatten(),
+            ),
+        )?,
         psi_dot: one("psi_dot", o.psi_dot)?,
         routhian: one("routhian", o.routhian)?,
         dr_domega: three(v3!("dr_domega"), o.dr_domega)?,
@@ -495,6 +517,7 @@ mod tests {
             (index::ENERGY, "energy"),
             (index::CYCLIC_MOMENTUM, "cyclic_momentum"),
             (index::FULL_EQUATIONS, "full_equations"),
+            (index::FULL_JACOBIAN, "full_jacobian"),
             (index::PSI_DOT, "psi_dot"),
             (index::ROUTHIAN, "routhian"),
             (index::DR_DOMEGA, "dr_domega"),

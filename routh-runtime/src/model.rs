@@ -7,10 +7,10 @@ use crate::kernels::{Kernels, Maker};
 use crate::results::{gyroscopic, routh_bundle, BUNDLE_LEN};
 use crate::Param;
 use nalgebra::{Matrix3, Vector3};
-use routh_codegen::layout::{EquationTerms, TermsShape};
+use routh_codegen::layout::{EquationTerms, JacobianTerms, TermsShape, JACOBIAN_LEN};
 use routh_core::{
-    FullEquations, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations, RouthBundle,
-    Routhian,
+    FullEquations, FullJacobian, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
+    RouthBundle, Routhian,
 };
 use routh_tape::{CertificationTape, RouthianTape, Tape};
 use std::collections::BTreeMap;
@@ -535,6 +535,20 @@ impl Lagrangian for Model {
             inertia: matrix(t.inertia),
             right_side: Vector3::from(t.right_side),
             rank_one: rank_one(t.rank_one),
+        }
+    }
+    /// One tape: the nodes of `J` and of the right side of (8) differentiated on the DAG
+    /// (`routh_codegen`'s `full_jacobian` outputs), exact, no finite differences.
+    fn full_jacobian(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> FullJacobian {
+        let x = inputs(omega, gamma, 0.0);
+        let o = self.eval::<JACOBIAN_LEN>(index::FULL_JACOBIAN, x);
+        let t = JacobianTerms::from_flat(o);
+        FullJacobian {
+            inertia: matrix(t.inertia),
+            right_side: Vector3::from(t.right_side),
+            dright_domega: matrix(t.dright_domega),
+            dright_dgamma: matrix(t.dright_dgamma),
+            dinertia_dgamma: t.dinertia_dgamma.map(matrix),
         }
     }
 }

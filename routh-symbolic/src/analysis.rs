@@ -149,10 +149,20 @@ impl Plan {
 
     /// Whether `child`, an operand of `parent`, is folded into it (written as `a - x` for
     /// `a + (−x)`, or `a / x` for `a · (1/x)` when the reciprocal is used once).
+    ///
+    /// At most one operand is folded: the second when both could be (`(−y) + (−x)` is written
+    /// `a - x` with `a = −y` a statement of its own), none when both are the same node.
     pub fn folds(&self, g: &Graph, parent: Id, child: Id) -> Option<Id> {
-        match (g.node(parent), g.node(child)) {
+        let fold = |c: Id| match (g.node(parent), g.node(c)) {
             (Node::Add(..), Node::Neg(x)) => Some(x),
-            (Node::Mul(..), Node::Recip(x)) if self.uses[child.index()] == 1 => Some(x),
+            (Node::Mul(..), Node::Recip(x)) if self.uses[c.index()] == 1 => Some(x),
+            _ => None,
+        };
+        let x = fold(child)?;
+        match g.node(parent) {
+            Node::Add(a, b) | Node::Mul(a, b) if a != b => {
+                (child == b || fold(b).is_none()).then_some(x)
+            }
             _ => None,
         }
     }

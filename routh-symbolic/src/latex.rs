@@ -13,6 +13,7 @@
 //! the function). A long formula is printed with its common subexpressions named
 //! (`… \quad \text{where} \quad \sigma_{1} = …`, see [`to_latex`]).
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 
 use crate::graph::{Func, Graph, Id, Node, Var};
@@ -137,34 +138,9 @@ fn print_roots(g: &Graph, roots: &[Id], symbols: &LatexSymbols) -> (Vec<String>,
     let Some(last) = roots.iter().map(|r| r.index()).max() else {
         return (Vec::new(), String::new());
     };
-    let mut size = vec![0u64; last + 1];
-    for i in 0..=last {
-        size[i] = g.nodes()[i]
-            .children()
-            .fold(1u64, |acc, c| acc.saturating_add(size[c.index()]));
-    }
-    let none = HashMap::new();
-    // Inline when small: a matrix by the total of its entries (its entries share the same
-    // subexpressions, e.g. γᵀJγ in each entry of G).
-    let total_size = (roots.iter().map(|r| size[r.index()])).fold(0u64, u64::saturating_add);
-    if total_size <= MAX_TREE {
-        let p = Printer {
-            g,
-            symbols,
-            named: &none,
-            expanding: None,
-        };
-        let texts = roots
-            .iter()
-            .map(|&r| {
-                let mut s = String::new();
-                p.expr(r, &mut s, 0);
-                s
-            })
-            .collect();
-        return (texts, String::new());
-    }
-    // Uses of each node reachable from the roots (edges of the DAG, and the roots themselves).
+    // Uses of each node reachable from the roots (edges of the DAG, and the roots themselves),
+    // and the reachable nodes in index order: the walks below visit only those (the graph
+    // holds every output of the model; a formula reaches a small part of it).
     let mut uses = vec![0u32; last + 1];
     let mut seen = vec![false; last + 1];
     let mut stack: Vec<Id> = Vec::new();
@@ -184,16 +160,48 @@ fn print_roots(g: &Graph, roots: &[Id], symbols: &LatexSymbols) -> (Vec<String>,
             }
         }
     }
+    let reachable: Vec<usize> = (0..=last).filter(|&i| seen[i]).collect();
+    let mut size = vec![0u64; last + 1];
+    for &i in &reachable {
+        size[i] = g.nodes()[i]
+            .children()
+            .fold(1u64, |acc, c| acc.saturating_add(size[c.index()]));
+    }
+    let none: [usize; 0] = [];
+    let vars = RefCell::new(Vec::new());
+    // Inline when small: a matrix by the total of its entries (its entries share the same
+    // subexpressions, e.g. γᵀJγ in each entry of G).
+    let total_size = (roots.iter().map(|r| size[r.index()])).fold(0u64, u64::saturating_add);
+    if total_size <= MAX_TREE {
+        let p = Printer {
+            g,
+            symbols,
+            named: &none,
+            expanding: None,
+            vars: &vars,
+        };
+        let texts = roots
+            .iter()
+            .map(|&r| {
+                let mut s = String::new();
+                p.expr(r, &mut s, 0);
+                s
+            })
+            .collect();
+        return (texts, String::new());
+    }
     // Bottom up (children have smaller indices): the size with named children counting 1, and
     // the names.
     let mut reduced = vec![0u64; last + 1];
-    let mut named: HashMap<Id, usize> = HashMap::new();
+    // `named[i]` = k of `\sigma_{k}` for a named node, 0 for the others (dense: the printer
+    // asks for every node it visits).
+    let mut named: Vec<usize> = vec![0; last + 1];
     let mut order: Vec<Id> = Vec::new();
-    for i in (0..=last).filter(|&i| seen[i]) {
+    for &i in &reachable {
         let id = Id::from_index(i);
         let node = g.node(id);
         reduced[i] = node.children().fold(1u64, |acc, c| {
-            acc.saturating_add(if named.contains_key(&c) {
+            acc.saturating_add(if named[c.index()] != 0 {
                 1
             } else {
                 reduced[c.index()]
@@ -202,7 +210,7 @@ fn print_roots(g: &Graph, roots: &[Id], symbols: &LatexSymbols) -> (Vec<String>,
         let leaf = matches!(node, Node::Const(_) | Node::Var(_));
         if !leaf && uses[i] >= 2 && reduced[i] >= MIN_NAMED_SIZE {
             order.push(id);
-            named.insert(id, order.len());
+            named[i] = order.len();
         }
     }
     let total =
@@ -218,6 +226,7 @@ fn print_roots(g: &Graph, roots: &[Id], symbols: &LatexSymbols) -> (Vec<String>,
             symbols,
             named: &named,
             expanding,
+            vars: &vars,
         };
         let mut s = String::new();
         p.expr(id, &mut s, 0);
@@ -250,6 +259,9 @@ pub fn on_sphere(g: &mut Graph, f: Id, gamma: [Var; 3], symbols: &LatexSymbols) 
         let mut improved = false;
         for i in 0..3 {
             let cand = replace_square(g, best, gamma, i);
+            if cand == best {
+                continue;
+            }
             let len = to_latex(g, cand, symbols).len();
             if len < best_len {
                 best = cand;
@@ -273,11 +285,45 @@ fn replace_square(g: &mut Graph, f: Id, gamma: [Var; 3], i: usize) -> Id {
     let (sj, sk) = (g.powi(gj, 2), g.powi(gk, 2));
     let s = g.add(sj, sk);
     let rest = g.sub(one, s);
-    let mut map: HashMap<Id, Id> = HashMap::new();
-    for idx in 0..=f.index() {
+    // Only the nodes `f` reaches, in index order (children first): the graph holds every
+    // output of the model, and rebuilding all of it for each candidate of each formula was
+    // most of what the derive cost (docs/performance.md, "Expansion cost").
+    let mut seen = vec![false; f.index() + 1];
+    seen[f.index()] = true;
+    let mut stack = vec![f];
+    let mut squares = false;
+    while let Some(id) = stack.pop() {
+        let node = g.node(id);
+        squares |= matches!(node, Node::Powi(a, n) if a == gi && n >= 2);
+        for c in node.children() {
+            if !seen[c.index()] {
+                seen[c.index()] = true;
+                stack.push(c);
+            }
+        }
+    }
+    if !squares {
+        return f;
+    }
+    // The image of each node (itself until rebuilt), by index.
+    let mut map: Vec<Id> = (0..=f.index()).map(Id::from_index).collect();
+    for idx in (0..=f.index()).filter(|&i| seen[i]) {
         let id = Id::from_index(idx);
         let node = g.node(id);
-        let m = |x: Id, map: &HashMap<Id, Id>| *map.get(&x).unwrap_or(&x);
+        let m = |x: Id, map: &[Id]| map[x.index()];
+        // A node other than a sum whose children are their own images is its own image (as
+        // in `Graph::substitute`).
+        let same = match node {
+            Node::Const(_) | Node::Var(_) | Node::Add(..) => false,
+            Node::Powi(a, n) if a == gi && n >= 2 => false,
+            Node::Mul(a, b) | Node::Powf(a, b) => map[a.index()] == a && map[b.index()] == b,
+            Node::Neg(a) | Node::Recip(a) | Node::Powi(a, _) | Node::Func(_, a) => {
+                map[a.index()] == a
+            }
+        };
+        if same {
+            continue;
+        }
         let new = match node {
             Node::Const(_) | Node::Var(_) => id,
             Node::Add(a, b) => {
@@ -313,11 +359,9 @@ fn replace_square(g: &mut Graph, f: Id, gamma: [Var; 3], i: usize) -> Id {
                 g.func(fu, a)
             }
         };
-        if new != id {
-            map.insert(id, new);
-        }
+        map[idx] = new;
     }
-    *map.get(&f).unwrap_or(&f)
+    map[f.index()]
 }
 
 /// `c` as `(p, q)` with `c = p/q`, `1 ≤ q ≤ 12`, when it is such a fraction exactly.
@@ -340,20 +384,26 @@ fn number(c: f64) -> String {
 struct Printer<'a> {
     g: &'a Graph,
     symbols: &'a LatexSymbols,
-    /// Named subexpressions: node → k of `\sigma_{k}`.
-    named: &'a HashMap<Id, usize>,
+    /// Named subexpressions: `named[i]` = k of `\sigma_{k}` for node i, 0 if not named.
+    named: &'a [usize],
     /// The named subexpression whose definition is being printed (expanded, not named).
     expanding: Option<Id>,
+    /// The symbol of each variable printed so far, by variable index ([`latex_symbol`] once
+    /// per variable, not once per occurrence).
+    vars: &'a RefCell<Vec<Option<String>>>,
 }
 
 impl Printer<'_> {
     /// The name `id` prints as, if it is a named subexpression (other than the one being
     /// defined).
     fn name_of(&self, id: Id) -> Option<String> {
-        if Some(id) == self.expanding {
-            return None;
-        }
-        self.named.get(&id).map(|&k| definition_name(k))
+        self.is_named(id)
+            .then(|| definition_name(self.named[id.index()]))
+    }
+
+    /// Whether `id` prints as a name ([`Printer::name_of`] without forming the name).
+    fn is_named(&self, id: Id) -> bool {
+        Some(id) != self.expanding && self.named.get(id.index()).is_some_and(|&k| k != 0)
     }
 
     /// Binding strength: 1 sums, 2 products, 3 unary minus, 4 powers, 5 atoms.
@@ -395,7 +445,16 @@ impl Printer<'_> {
                     (5, number(c))
                 }
             }
-            Node::Var(v) => (5, latex_symbol(g.var_name(v), self.symbols)),
+            Node::Var(v) => {
+                let mut vars = self.vars.borrow_mut();
+                if vars.len() <= v.index() {
+                    vars.resize(v.index() + 1, None);
+                }
+                let sym = vars[v.index()]
+                    .get_or_insert_with(|| latex_symbol(g.var_name(v), self.symbols));
+                out.push_str(sym);
+                return;
+            }
             Node::Powi(x, n) if n < 0 => {
                 let mut t = String::new();
                 self.power(x, -n, &mut t);
@@ -471,7 +530,7 @@ impl Printer<'_> {
     fn sum(&self, id: Id, negate: bool) -> String {
         // Nested sums and negated sums are flattened into one list of signed terms.
         fn terms(p: &Printer, id: Id, flip: bool, acc: &mut Vec<(Id, bool)>) {
-            if p.name_of(id).is_some() {
+            if p.is_named(id) {
                 acc.push((id, flip));
                 return;
             }
@@ -491,7 +550,7 @@ impl Printer<'_> {
         for (k, (t, negate)) in ts.into_iter().enumerate() {
             let mut body = String::new();
             let negative = match g.node(t) {
-                _ if self.name_of(t).is_some() => {
+                _ if self.is_named(t) => {
                     self.expr(t, &mut body, 2);
                     false
                 }
@@ -528,7 +587,7 @@ impl Printer<'_> {
     /// denominator as `\frac`.
     fn product(&self, id: Id) -> (bool, String) {
         fn factors(p: &Printer, id: Id, coef: &mut f64, num: &mut Vec<Id>, den: &mut Vec<Id>) {
-            if p.name_of(id).is_some() {
+            if p.is_named(id) {
                 num.push(id);
                 return;
             }
@@ -570,10 +629,8 @@ impl Printer<'_> {
                 }
                 let n = ids.iter().filter(|&&x| x == f).count() as i32;
                 match g.node(f) {
-                    _ if self.name_of(f).is_some() && n > 1 => self.power(f, n, &mut t),
-                    Node::Powi(x, m) if m < 0 && self.name_of(f).is_none() => {
-                        self.power(x, -m * n, &mut t)
-                    }
+                    _ if self.is_named(f) && n > 1 => self.power(f, n, &mut t),
+                    Node::Powi(x, m) if m < 0 && !self.is_named(f) => self.power(x, -m * n, &mut t),
                     _ if n > 1 => self.power(f, n, &mut t),
                     _ => self.expr(f, &mut t, if alone { 0 } else { 3 }),
                 }
