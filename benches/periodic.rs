@@ -1,4 +1,4 @@
-//! Periodic orbits (docs/method.md §7, figures in docs/performance.md): a Lyapunov family of
+//! Periodic orbits (docs/method.md §11, figures in docs/performance.md): a Lyapunov family of
 //! 100 orbits with their multipliers on the derive's asymmetric heavy top and on the same model
 //! read at run time (`routh::Model`, JIT), one orbit corrected by `periodic_orbit` against a
 //! straightforward baseline (single shooting whose monodromy is built by finite differences of

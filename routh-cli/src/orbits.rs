@@ -1,6 +1,6 @@
 //! `routh orbits` and `routh section`: the Lyapunov families of periodic orbits born at the
 //! linearly stable steady motions at one momentum (period, precession, stability index, events),
-//! and Poincaré sections at one (p_ψ, E) (docs/method.md §7).
+//! and Poincaré sections at one (p_ψ, E) (docs/method.md §11).
 
 use crate::cli::{Orbits, Section};
 use crate::commands::load;

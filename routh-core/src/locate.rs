@@ -1,5 +1,5 @@
 //! The event locator: the zero of a test function along a one-parameter path, bracketed by two
-//! solved points, found by regula falsi with the Illinois modification (docs/method.md §7).
+//! solved points, found by regula falsi with the Illinois modification (docs/method.md §11).
 //!
 //! The caller gives the bracket `[a, b]` in its own path parameter with the test values at both
 //! ends (opposite signs), a `solve` callback that re-solves its equations at an interior

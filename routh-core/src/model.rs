@@ -112,7 +112,7 @@ pub trait Lagrangian {
 }
 
 /// The full equations (8) at one state and their first derivatives, for the variational
-/// equations `δẋ = DF(x) δx` of the flow of (8) in `x = (ω, γ)` (docs/method.md §7).
+/// equations `δẋ = DF(x) δx` of the flow of (8) in `x = (ω, γ)` (docs/method.md §11).
 ///
 /// With `J ω̇ = f(ω, γ)` (the right side of (8)) and `γ̇ = γ × ω`:
 /// `∂ω̇/∂ω = J⁻¹ ∂f/∂ω`, `∂ω̇/∂γ_k = J⁻¹(∂f/∂γ_k − (∂J/∂γ_k) ω̇)`, `∂γ̇/∂ω = [γ]×`,

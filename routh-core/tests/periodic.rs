@@ -1,4 +1,4 @@
-//! Periodic orbits, their multipliers and families (docs/method.md §7), checked against what the
+//! Periodic orbits, their multipliers and families (docs/method.md §11), checked against what the
 //! code does not compute: the pendulum's period in closed form (complete elliptic integral by the
 //! arithmetic–geometric mean), the linear limit `k → cos(2π ω_j/ω_k)`, multipliers from a
 //! monodromy built by finite differences of `simulate_full` and from the growth of perturbations

@@ -1,6 +1,6 @@
 //! Families of periodic orbits at fixed `p_ψ` through the energy: [`lyapunov_family`] from an
 //! elliptic steady motion, [`continue_orbit`] from any orbit, [`period_doubled_family`] from a
-//! period doubling (docs/method.md §7).
+//! period doubling (docs/method.md §11).
 //!
 //! Pseudo-arclength in `w = (x₀, T/t_s, E/e_s)` on the crate's one predictor–corrector
 //! (`path.rs`, [`PathOptions::orbit_family`]); the tangent is the null vector of the ten rows of
@@ -320,7 +320,7 @@ fn mode_vector(a: &Matrix6<f64>, omega: f64) -> Vector6<f64> {
 
 /// The Lyapunov family of periodic orbits of mode `mode` (0: the faster frequency ω₁, 1: ω₂)
 /// born at an elliptic steady motion, followed at the steady motion's `p_ψ` through the energy
-/// (docs/method.md §7).
+/// (docs/method.md §11).
 ///
 /// The first orbit is corrected from the mode's linear orbit at amplitude
 /// [`OrbitOptions::initial_amplitude`] (its period near `2π/ω_k`); the family is then followed by
@@ -439,7 +439,7 @@ fn restart<M: Routhian>(
 
 /// Follows the family through `orbit` at its `p_ψ` over `energy_range`, in both directions, by
 /// pseudo-arclength (through folds), locating folds, branch points and period doublings
-/// (docs/method.md §7). The orbits come from the lower end to the upper end of the part traced
+/// (docs/method.md §11). The orbits come from the lower end to the upper end of the part traced
 /// (in the order of continuation along the family); [`OrbitFamily::stop`] is `None` when both
 /// directions reached the range's ends, else the first other reason.
 pub fn continue_orbit<M: Routhian>(
@@ -503,7 +503,7 @@ pub fn continue_orbit<M: Routhian>(
 }
 
 /// The family of orbits of twice the period born at a [`OrbitEventKind::PeriodDoubling`] event,
-/// followed away from it (docs/method.md §7): the branch leaves the doubly traversed orbit along
+/// followed away from it (docs/method.md §11): the branch leaves the doubly traversed orbit along
 /// the eigenvector of the monodromy for the multiplier −1, which the first step's pseudo-arclength
 /// row follows (so that the corrector cannot fall back onto the orbit traversed twice).
 ///

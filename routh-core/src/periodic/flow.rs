@@ -1,6 +1,6 @@
 //! The flow of the full equations (8) over one period with its derivative: the state
 //! `x = (ω, γ)`, the variational matrix `Φ` (`Φ' = DF(x)Φ`, `Φ(0) = I`) and the attitude, as one
-//! system of 46 equations integrated by the crate's DOP853 (docs/method.md §7).
+//! system of 46 equations integrated by the crate's DOP853 (docs/method.md §11).
 
 use nalgebra::{Matrix3, Matrix6, Quaternion, SVector, UnitQuaternion, Vector3, Vector6};
 

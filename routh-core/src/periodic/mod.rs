@@ -1,5 +1,5 @@
 //! Periodic motions: relative periodic orbits of the full equations (8), their Floquet
-//! stability, their families through the energy, and Poincaré sections (docs/method.md §7).
+//! stability, their families through the energy, and Poincaré sections (docs/method.md §11).
 //!
 //! The body-frame equations (8) in `x = (ω, γ)` are the body's motion reduced by the rotation
 //! about the vertical: `p_ψ` (9) and `|γ|²` are their Casimirs, and on a level of `p_ψ` they are

@@ -1,4 +1,4 @@
-//! Poincaré sections at fixed `(p_ψ, E)` (docs/method.md §7).
+//! Poincaré sections at fixed `(p_ψ, E)` (docs/method.md §11).
 //!
 //! The surface is the plane `γ·n = 0` through the body coordinates of the vertical, crossed with
 //! `d(γ·n)/dt > 0` (`n` a unit vector of the body, [`SectionOptions::normal`], default `e₁`). On

@@ -1,4 +1,4 @@
-//! The shooting corrector of periodic orbits and [`periodic_orbit`] (docs/method.md §7).
+//! The shooting corrector of periodic orbits and [`periodic_orbit`] (docs/method.md §11).
 //!
 //! Unknowns `w = (x₀, T/t_s, E/e_s) ∈ ℝ⁸` (`t_s`, `e_s` scales of the family, so that a
 //! pseudo-arclength in `w` weighs the period and the energy like the state). Rows:
@@ -358,7 +358,7 @@ pub(crate) fn check_guess<M: Lagrangian + ?Sized>(
 
 /// Corrects a guess to a periodic orbit of the full equations (8) with the energy (3) and the
 /// cyclic momentum (9) of the guess, and gives its period, precession `Δψ` over one period, Floquet
-/// multipliers and stability (docs/method.md §7).
+/// multipliers and stability (docs/method.md §11).
 ///
 /// The guess need not lie on the orbit's phase: the corrected `(ω₀, γ₀)` is the orbit's point
 /// on the plane through the guess normal to the flow there.
