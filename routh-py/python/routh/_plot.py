@@ -211,8 +211,8 @@ def plot_section(section, ax=None, fixed_points=None):
         pts = np.asarray(pts)
         if len(pts):
             ax.plot(pts[:, 0], pts[:, 1], linestyle="none", marker=".", markersize=1.5)
-    if fixed_points is not None:
-        fp = np.asarray(fixed_points, dtype=float).reshape(-1, 2)
+    fp = None if fixed_points is None else np.asarray(fixed_points, dtype=float).reshape(-1, 2)
+    if fp is not None and len(fp):
         ax.plot(fp[:, 0], fp[:, 1], linestyle="none", marker="x", markersize=8, color="k",
                 label="periodic orbit")
         ax.legend(fontsize=8)
