@@ -37,7 +37,12 @@ fn texts(svg: &str) -> Vec<String> {
         .skip(1)
         .filter_map(|t| {
             let body = &t[t.find('>')? + 1..];
-            Some(body[..body.find("</text>")?].trim().to_string())
+            let text = body[..body.find("</text>")?].trim();
+            Some(
+                text.replace("&lt;", "<")
+                    .replace("&gt;", ">")
+                    .replace("&amp;", "&"),
+            )
         })
         .collect()
 }
@@ -940,9 +945,10 @@ fn orbit_family_fold_is_marked_at_the_turn() {
     let svg = read_svg(&path);
     assert!(has_text(&svg, "fold"));
     let y_plus = parabolic_lines(&svg)[0];
+    // The elliptic run (s < 1) ends at the turn, where k = 1 (the legend's swatch left out).
     let right = polylines(&svg, "#008237", 4)
         .into_iter()
-        .chain(polylines(&svg, "#CD1E1E", 2))
+        .filter(|p| p.len() > 2)
         .flatten()
         .map(|p| p.0)
         .fold(f64::MIN, f64::max);
@@ -1100,6 +1106,48 @@ fn poincare_section_draws_every_crossing_and_the_fixed_points() {
         .map(|l| attr(l, "fill").unwrap())
         .collect();
     assert_eq!(fills.len(), 1, "{fills:?}");
+}
+
+/// A region of motion straddling θ = ±π is drawn in one piece (beyond π), not split to the two
+/// edges of the figure.
+#[test]
+fn poincare_section_keeps_a_region_across_pi_together() {
+    let mut section = ring_section();
+    for o in &mut section.orbits {
+        for p in &mut o.points {
+            // Around θ = π: angles in (−π, π].
+            let t = p[0] * 0.3 + std::f64::consts::PI;
+            p[0] = if t > std::f64::consts::PI {
+                t - std::f64::consts::TAU
+            } else {
+                t
+            };
+        }
+    }
+    assert!(section.points().any(|p| p[0] < -3.0) && section.points().any(|p| p[0] > 3.0));
+    let path = out("section_wrapped.svg");
+    let fixed = [[std::f64::consts::PI, 0.0]];
+    poincare_section_svg(&section, &fixed, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    let mut xs: Vec<f64> = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("1"))
+        .map(|l| attr(l, "cx").unwrap().parse().unwrap())
+        .collect();
+    xs.sort_by(f64::total_cmp);
+    let widest = xs.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
+    assert!(
+        widest < 30.0,
+        "the crossings are split: a gap of {widest} px"
+    );
+    // The fixed point at θ = π sits in the middle of the rings.
+    let ring = svg
+        .lines()
+        .find(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("6"))
+        .unwrap();
+    let cx: f64 = attr(ring, "cx").unwrap().parse().unwrap();
+    let mid = 0.5 * (xs[0] + xs[xs.len() - 1]);
+    assert!((cx - mid).abs() <= 2.0, "{cx} vs {mid}");
 }
 
 /// Swings about e₁ through the hanging position γ = −e₃ (in the plane γ₁ = 0).
