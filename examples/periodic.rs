@@ -19,9 +19,9 @@ use common::{fmt_vec, num};
 
 use routh::plot::{self, Overlay, PlotOptions};
 use routh::{
-    continue_orbit, lyapunov_family, orbit_crossings, orbit_path, poincare_section, steady_motions,
-    Lagrangian, OrbitFamily, OrbitOptions, OrbitStability, PeriodicOrbit, SectionOptions,
-    SteadyMotion, Vector3,
+    continue_orbit, lyapunov_family, orbit_crossings, orbit_path, period_doubled_family,
+    poincare_section, steady_motions, Lagrangian, OrbitEventKind, OrbitFamily, OrbitOptions,
+    OrbitStability, PeriodicOrbit, SectionOptions, SteadyMotion, Vector3,
 };
 
 // The body, declared here: `#[derive(Lagrangian)]` differentiates L at build time, the Jacobian
@@ -96,7 +96,7 @@ fn stability_intervals(f: &OrbitFamily) -> Vec<(f64, f64, OrbitStability)> {
 /// Prints the family's events and its intervals of stability; `amplitude(E)` is the swing's
 /// amplitude in degrees where known.
 fn print_family(f: &OrbitFamily, amplitude: &dyn Fn(f64) -> Option<f64>) {
-    let amp = |e: f64| amplitude(e).map_or_else(|| "".into(), |a| format!("{a:8.2}°"));
+    let amp = |e: f64| amplitude(e).map_or_else(|| "—".into(), |a| format!("{a:.2}°"));
     println!(
         "  {} orbits, E from {:.6} to {:.6}, T from {:.6} to {:.6}; ended: {}",
         f.orbits.len(),
@@ -123,7 +123,13 @@ fn print_family(f: &OrbitFamily, amplitude: &dyn Fn(f64) -> Option<f64>) {
             e.after
         );
     }
-    println!("\n  intervals of the family (in the order of continuation):");
+    let (kmin, kmax) = f
+        .orbits
+        .iter()
+        .map(|o| o.stability_index)
+        .fold((f64::MAX, f64::MIN), |(a, b), k| (a.min(k), b.max(k)));
+    println!("\n  k from {kmin:.6} to {kmax:.3e}");
+    println!("  intervals of the family (in the order of continuation):");
     for (a, b, v) in stability_intervals(f) {
         let what = match v {
             OrbitStability::Elliptic => "elliptic: stable against out-of-plane perturbations",
@@ -306,6 +312,20 @@ fn main() -> Result<(), Box<dyn Error>> {
         },
     )?;
     written.push(path);
+    // The family of orbits of twice the period born at the first period doubling.
+    if let Some(pd) = wobbles
+        .events
+        .iter()
+        .find(|e| e.kind == OrbitEventKind::PeriodDoubling)
+    {
+        let doubled = period_doubled_family(&off, pd, &OrbitOptions::default().with_max_orbits(6))?;
+        let o = doubled.orbits.last().ok_or("no doubled orbit")?;
+        println!(
+            "\n  born at the period doubling at E = {:.6} (T = {:.6}): orbits of period {:.6} ≈ 2T, \
+             the last at E = {:.6}, k = {:+.6} ({})",
+            pd.energy, pd.orbit.period, o.period, o.energy, o.stability_index, o.stability
+        );
+    }
     // Some of its orbits on the sphere of γ, seen from below the hanging position.
     let every = (wobbles.orbits.len() / 8).max(1);
     let paths = wobbles
