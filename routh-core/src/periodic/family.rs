@@ -14,7 +14,7 @@ use nalgebra::{Complex, Matrix6, SMatrix, Vector6};
 use super::flow::{field_and_jacobian, join, split};
 use super::shoot::{check_guess, correct, orbit_of, LinearRow, Problem, Scales, Solved, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
-use crate::locate::{illinois, End};
+use crate::locate::{estimated_distance, illinois, End};
 use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
 use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
 
@@ -123,10 +123,17 @@ impl<M: Routhian> Tracer<'_, M> {
                 80,
                 |sigma| Ok::<_, RouthError>(self.resolve(a, sigma)?.map(|n| (test(&n), n))),
                 |lo, hi| {
+                    // The energy's error at the better end: its distance to the zero in
+                    // arclength times |dE/dσ| (the secant through the ends); at a fold E is
+                    // stationary, so the arclength itself is located (to 1e−7 of the step).
                     let (el, eh) = (lo.point.orbit.energy, hi.point.orbit.energy);
-                    let de = (eh - el).abs() <= tol * 1f64.max(el.abs());
-                    let ds = (hi.at - lo.at).abs() <= 1e-7 * h;
-                    de && (kind != OrbitEventKind::Fold || ds)
+                    let d_sigma = estimated_distance(lo, hi);
+                    if kind == OrbitEventKind::Fold {
+                        return d_sigma <= 1e-7 * h;
+                    }
+                    let slope = (eh - el).abs() / (hi.at - lo.at).abs().max(f64::MIN_POSITIVE);
+                    let scale = tol * 1f64.max(el.abs());
+                    d_sigma * slope <= scale || (eh - el).abs() <= scale
                 },
             )?;
             out.push(OrbitEvent {

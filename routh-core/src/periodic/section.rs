@@ -13,7 +13,7 @@ use rayon::prelude::*;
 
 use super::flow::{field, join, split};
 use super::PeriodicOrbit;
-use crate::locate::{illinois, End};
+use crate::locate::{estimated_distance, illinois, End};
 use crate::sim::dop853::{self, Accepted, Config};
 use crate::validate::check_finite;
 use crate::{Lagrangian, RouthError};
@@ -189,7 +189,7 @@ pub fn section_starts<M: Lagrangian + ?Sized>(
         let av = model.dl_domega(&Vector3::zeros(), &g);
         let u_pot = model.energy(&Vector3::zeros(), &g);
         let gjg = g.dot(&(j * g));
-        if !(gjg > 0.0) {
+        if gjg.is_nan() || gjg <= 0.0 {
             continue;
         }
         for k in 0..grid {
@@ -274,7 +274,7 @@ fn crossings<M: Lagrangian + Sync + ?Sized>(
                     hi,
                     100,
                     |t| Ok::<_, RouthError>(Some((value(t), ()))),
-                    |lo, hi| hi.at - lo.at <= tol,
+                    |lo, hi| estimated_distance(lo, hi) <= tol || hi.at - lo.at <= tol,
                 )?;
                 let (w, g) = split(&dense.eval(z.at));
                 points.push(coords(model, n, &w, &g));

@@ -16,7 +16,7 @@ use nalgebra::{SMatrix, SVector, Vector3, Vector6};
 
 use super::flow::{field, integrals, join, precession, shoot, split, Shot};
 use super::{OrbitOptions, OrbitStability, PeriodicOrbit};
-use crate::locate::{illinois, End};
+use crate::locate::{estimated_distance, illinois, End};
 use crate::sim::dop853::{self, Accepted, Config};
 use crate::validate::{check_finite, unit_gamma};
 use crate::{Lagrangian, RouthError};
@@ -310,7 +310,7 @@ fn return_time<M: Lagrangian + ?Sized>(
                         },
                         100,
                         |t| Ok::<_, RouthError>(Some((g(&d.eval(t)), ()))),
-                        |lo, hi| hi.at - lo.at <= 1e-12 * hi.at,
+                        |lo, hi| estimated_distance(lo, hi) <= 1e-12 * hi.at,
                     )?;
                     let dist = (d.eval(z.at) - prob.x_ref).norm();
                     if best.is_none_or(|(_, b)| dist < b) {
