@@ -366,20 +366,21 @@ fn main() -> Result<(), Box<dyn Error>> {
         section.orbits.len(),
         t.elapsed().as_secs_f64()
     );
-    let mut fixed = Vec::new();
-    for (name, f) in [("swing about e₁", &swings)] {
-        let o = orbit_at(&body, f, e_s)?;
-        let pts = orbit_crossings(&body, &o, &sopts)?;
-        println!(
-            "  {name} at E = {}: T = {:.6}, k = {:+.6} ({}), fixed points {:?}",
-            num(o.energy, 6),
-            o.period,
-            o.stability_index,
-            o.stability,
-            pts
-        );
-        fixed.extend(pts);
-    }
+    // The swing about e₁ at the section's energy: its crossings are fixed points of the map.
+    let o = orbit_at(&body, &swings, e_s)?;
+    let fixed = orbit_crossings(&body, &o, &sopts)?;
+    let shown: Vec<String> = fixed
+        .iter()
+        .map(|p| format!("(θ, M_n) = ({:.6}, {:+.1e})", p[0], p[1]))
+        .collect();
+    println!(
+        "  swing about e₁ at E = {}: T = {:.6}, k = {:+.6} ({}), fixed point {}",
+        num(o.energy, 6),
+        o.period,
+        o.stability_index,
+        o.stability,
+        shown.join(", ")
+    );
     let path = out.join("section.svg");
     plot::poincare_section_svg(
         &section,
