@@ -262,6 +262,16 @@ fn main() -> Result<(), Box<dyn Error>> {
         t.elapsed().as_secs_f64()
     );
     print_family(&swings2, &amplitude);
+    let (kmin, at) = swings2
+        .orbits
+        .iter()
+        .map(|o| (o.stability_index, o.energy))
+        .fold((f64::MAX, 0.0), |m, x| if x.0 < m.0 { x } else { m });
+    println!(
+        "  k comes down to {kmin:.6} near E = {at:.3} and turns back without crossing −1: a swing \
+         about a principal axis is symmetric under a half-period shift and a reflection, so its \
+         monodromy is a square, k = 2k½² − 1 ≥ −1, and it cannot double its period."
+    );
     let path = out.join("swing_e2_stability.svg");
     plot::orbit_family_svg(
         &swings2,
@@ -326,13 +336,26 @@ fn main() -> Result<(), Box<dyn Error>> {
             pd.energy, pd.orbit.period, o.period, o.energy, o.stability_index, o.stability
         );
     }
-    // Some of its orbits on the sphere of γ, seen from below the hanging position.
-    let every = (wobbles.orbits.len() / 8).max(1);
-    let paths = wobbles
-        .orbits
-        .iter()
-        .step_by(every)
-        .map(|o| orbit_path(&off, o, 300))
+    // Some of its orbits on the sphere of γ, seen from outside the sphere above the hanging
+    // position γ_s (the viewer on the ray through γ_s).
+    // Seven orbits evenly spread in energy (the continuation crowds its orbits near the separatrix).
+    let (e0, e1) = (
+        wobbles.orbits[0].energy,
+        wobbles
+            .orbits
+            .iter()
+            .map(|o| o.energy)
+            .fold(f64::MIN, f64::max),
+    );
+    let paths = (1..=7)
+        .filter_map(|j| {
+            let e = e0 + (e1 - e0) * j as f64 / 7.5;
+            wobbles
+                .orbits
+                .iter()
+                .min_by(|a, b| (a.energy - e).abs().total_cmp(&(b.energy - e).abs()))
+        })
+        .map(|o| orbit_path(&off, o, 400))
         .collect::<Result<Vec<_>, _>>()?;
     let path = out.join("offaxis_orbits_on_sphere.svg");
     plot::orbits_on_sphere_svg(
