@@ -1324,3 +1324,87 @@ fn orbit_figures_errors_and_whole_files() {
     ));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The figures of a computed family, end to end: the off-axis heavy body's swings from the
+/// hanging position (period doublings on the way), its orbits on the sphere, and a small section
+/// with the fixed point of one of its orbits — one marker per event, one curve per orbit, one
+/// mark per crossing of the orbit.
+#[test]
+fn figures_of_a_computed_family() {
+    use routh::{
+        lyapunov_family, orbit_crossings, orbit_path, poincare_section, steady_motions, Matrix3,
+        OrbitOptions, SectionOptions,
+    };
+    let body = test_models::HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(1.0, 3.0, 6.0)),
+        mgr: Vector3::new(0.4, 0.3, 1.5),
+    };
+    let hang = steady_motions(&body, 0.0)
+        .unwrap()
+        .into_iter()
+        .min_by(|a, b| a.energy.total_cmp(&b.energy))
+        .unwrap();
+    let family = lyapunov_family(
+        &body,
+        &hang,
+        0,
+        &OrbitOptions::default().with_max_orbits(40),
+    )
+    .unwrap();
+    let doublings = family
+        .events
+        .iter()
+        .filter(|e| e.kind == OrbitEventKind::PeriodDoubling)
+        .count();
+    assert!(doublings >= 1, "{:?}", family.events);
+    let path = out("computed_family.svg");
+    orbit_family_svg(&family, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert_eq!(
+        polygon_centres(&svg, "#000000", 4).len(),
+        doublings + 1,
+        "one ◆ per period doubling, and the legend's"
+    );
+    assert_eq!(parabolic_lines(&svg).len(), 2);
+    // Every period doubling sits on k = −1.
+    let y_minus = parabolic_lines(&svg)[1];
+    assert!(polygon_centres(&svg, "#000000", 4)
+        .iter()
+        .filter(|c| c.0 < 650.0)
+        .all(|c| (c.1 - y_minus).abs() <= 1.5));
+
+    let orbits: Vec<_> = family
+        .orbits
+        .iter()
+        .skip(5)
+        .step_by(10)
+        .map(|o| orbit_path(&body, o, 200).unwrap())
+        .collect();
+    let path = out("computed_sphere.svg");
+    orbits_on_sphere_svg(&orbits, hang.gamma, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(
+        &svg,
+        &format!("last orbit ({} in all)", orbits.len())
+    ));
+
+    let o = &family.orbits[10];
+    let opts = SectionOptions::default()
+        .with_normal(Vector3::y())
+        .with_size(6, 20);
+    let fixed = orbit_crossings(&body, o, &opts).unwrap();
+    assert!(!fixed.is_empty());
+    let section = poincare_section(&body, o.p_psi, o.energy, &opts).unwrap();
+    let path = out("computed_section.svg");
+    poincare_section_svg(&section, &fixed, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    let rings = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("6"))
+        .count();
+    assert_eq!(
+        rings,
+        fixed.len() + 1,
+        "one mark per fixed point, and the legend's"
+    );
+}
