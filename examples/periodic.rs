@@ -34,11 +34,11 @@ use routh::{
     kinetic = 0.5 * omega.dot(diag(inertia) * omega),
     potential = mgr.dot(gamma),
 )]
-struct HeavyBody {
+pub struct HeavyBody {
     /// Principal moments of inertia about the fixed point, `(A, B, C)`.
-    inertia: Vector3<f64>,
+    pub inertia: Vector3<f64>,
     /// `m g r`: weight times the centre of mass in the body frame.
-    mgr: Vector3<f64>,
+    pub mgr: Vector3<f64>,
 }
 
 impl HeavyBody {
