@@ -1,12 +1,12 @@
 //! The facts the paper's examples (`examples/heavy_top.rs`, `gyrostat.rs`,
-//! `ellipsoid_on_plane.rs`, `body_in_fluid.rs`) print, checked against closed forms derived by
-//! hand and against simulations, through the models and analyses of the `derived-models` crate:
+//! `ellipsoid_on_plane.rs`, `body_in_fluid.rs`) and `periodic.rs` print, checked against closed
+//! forms derived by hand and against simulations, through the models and analyses of the `derived-models` crate:
 //! each example declares the same model in its own file (one file a user can copy), and
 //! `tests/examples_models.rs` checks that the two declarations are token for token the same.
 
 use derived_models::{
     bisect, classified_steady_motions, instability_threshold, report_at, stability_threshold,
-    verdict_at, Ellipsoid, FluidBody, Gyrostat, Kirchhoff, LagrangeTop,
+    verdict_at, Ellipsoid, FluidBody, Gyrostat, HeavyBody, Kirchhoff, LagrangeTop,
 };
 use routh::{simulate_full, Lagrangian, Matrix3, Routhian, SimOptions, Stability, Vector3};
 
@@ -518,4 +518,92 @@ fn spheroid_atlas_curve_is_the_closed_form() {
         }
     }
     assert!(checked > 10);
+}
+
+// --- periodic --------------------------------------------------------------------------------
+
+/// The options of the example's swing families.
+fn swing_options(mgl: f64) -> routh::OrbitOptions {
+    routh::OrbitOptions::default()
+        .with_energy_bounds(-mgl, 0.999 * mgl)
+        .with_max_orbits(400)
+        .with_max_step(0.05)
+}
+
+/// The swing about e₁ of `J = diag(1, 2, 3)`, `mgl = 1.5` (examples/periodic.rs): a pendulum,
+/// periods `4K(m)/ω₀`; stable against out-of-plane perturbations up to the branch point at
+/// `E = 0.967866` (amplitude 130.18°), hyperbolic beyond.
+#[test]
+fn periodic_swing_is_the_pendulum_and_stable_up_to_130_degrees() {
+    use derived_models::heavy_body::{elliptic_k, hanging, stability_intervals};
+    use routh::{lyapunov_family, OrbitEventKind, OrbitStability};
+    let mgl = 1.5;
+    let body = HeavyBody::on_axis(1.0, 2.0, 3.0, mgl);
+    let hang = hanging(&body).unwrap();
+    let f = lyapunov_family(&body, &hang, 0, &swing_options(mgl)).unwrap();
+    let w0 = mgl.sqrt();
+    for o in &f.orbits {
+        let t = 4.0 * elliptic_k(0.5 * (1.0 + o.energy / mgl)) / w0;
+        assert!(
+            rel(o.period, t) < 1e-7,
+            "E = {}: T = {} vs {t}",
+            o.energy,
+            o.period
+        );
+        assert!(o.gamma0.x.abs() < 1e-12, "out of the plane γ₁ = 0");
+    }
+    assert_eq!(f.events.len(), 1, "{:?}", f.events);
+    let bp = &f.events[0];
+    assert_eq!(bp.kind, OrbitEventKind::BranchPoint);
+    assert!((bp.energy - 0.967866).abs() < 1e-5, "{bp}");
+    assert!(((-bp.energy / mgl).acos().to_degrees() - 130.18).abs() < 0.01);
+    let intervals = stability_intervals(&f);
+    let verdicts: Vec<OrbitStability> = intervals.iter().map(|i| i.2).collect();
+    assert_eq!(
+        verdicts,
+        [OrbitStability::Elliptic, OrbitStability::Hyperbolic]
+    );
+    assert_eq!(intervals[0].1, bp.energy);
+}
+
+/// The centre of mass off the axes (`J = diag(1, 3, 6)`, `m g r = (0.4, 0.3, 1.5)`): mode 0
+/// doubles its period at `E = −0.936029`, is stable again from `E = 0.406946`, and turns
+/// hyperbolic at a branch point at `E = 0.985151`.
+#[test]
+fn periodic_offaxis_family_doubles_its_period_and_regains_stability() {
+    use derived_models::heavy_body::{hanging, stability_intervals};
+    use routh::{lyapunov_family, OrbitEventKind, OrbitOptions, OrbitStability};
+    let body = HeavyBody {
+        inertia: Vector3::new(1.0, 3.0, 6.0),
+        mgr: Vector3::new(0.4, 0.3, 1.5),
+    };
+    let hang = hanging(&body).unwrap();
+    let f = lyapunov_family(
+        &body,
+        &hang,
+        0,
+        &OrbitOptions::default().with_max_orbits(120),
+    )
+    .unwrap();
+    let events: Vec<(OrbitEventKind, f64)> = f.events.iter().map(|e| (e.kind, e.energy)).collect();
+    let expected = [
+        (OrbitEventKind::PeriodDoubling, -0.936029),
+        (OrbitEventKind::PeriodDoubling, 0.406946),
+        (OrbitEventKind::BranchPoint, 0.985151),
+    ];
+    assert_eq!(events.len(), 3, "{events:?}");
+    for ((kind, e), (k, x)) in events.iter().zip(expected) {
+        assert_eq!(*kind, k);
+        assert!((e - x).abs() < 1e-5, "{kind:?} at {e}, expected {x}");
+    }
+    let verdicts: Vec<OrbitStability> = stability_intervals(&f).iter().map(|i| i.2).collect();
+    assert_eq!(
+        verdicts,
+        [
+            OrbitStability::Elliptic,
+            OrbitStability::InverseHyperbolic,
+            OrbitStability::Elliptic,
+            OrbitStability::Hyperbolic
+        ]
+    );
 }

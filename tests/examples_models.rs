@@ -160,10 +160,33 @@ fn fluid_example_declares_the_model_that_examples_facts_checks() {
 }
 
 #[test]
+fn periodic_example_declares_the_model_that_examples_facts_checks() {
+    let derived = parse_file("test-models/derived/src/heavy_body.rs");
+    let model = find_struct(&derived, "HeavyBody").expect("derived-models declares HeavyBody");
+    check(
+        "examples/periodic.rs",
+        &derived,
+        model,
+        &[
+            "HeavyBody::on_axis",
+            "hanging",
+            "elliptic_k",
+            "stability_intervals",
+        ],
+    );
+}
+
+#[test]
 fn examples_do_not_use_derived_models() {
     // heavy_top.rs is left to its own rewrite; op_counts.rs measures the bench models' expansion
     // and takes their source text from derived-models on purpose.
-    for name in ["gyrostat", "ellipsoid_on_plane", "body_in_fluid", "certify"] {
+    for name in [
+        "gyrostat",
+        "ellipsoid_on_plane",
+        "body_in_fluid",
+        "certify",
+        "periodic",
+    ] {
         let rel = format!("examples/{name}.rs");
         let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(&rel))
             .unwrap_or_else(|e| panic!("{rel}: {e}"));

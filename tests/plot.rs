@@ -1,6 +1,7 @@
 //! The SVG figures of `routh::plot`, on diagrams and atlases built by hand.
 #![cfg(feature = "plot")]
 
+use std::collections::HashSet;
 use std::path::PathBuf;
 
 use routh::plot::{
@@ -36,7 +37,12 @@ fn texts(svg: &str) -> Vec<String> {
         .skip(1)
         .filter_map(|t| {
             let body = &t[t.find('>')? + 1..];
-            Some(body[..body.find("</text>")?].trim().to_string())
+            let text = body[..body.find("</text>")?].trim();
+            Some(
+                text.replace("&lt;", "<")
+                    .replace("&gt;", ">")
+                    .replace("&amp;", "&"),
+            )
         })
         .collect()
 }
@@ -675,4 +681,730 @@ fn atlas_nonlinear_curves_are_drawn_and_named() {
             );
         }
     }
+}
+
+// --- Figures of periodic orbits ------------------------------------------------------------------
+
+use routh::periodic::SectionOrbit;
+use routh::plot::{
+    orbit_family_svg, orbit_periods_svg, orbits_on_sphere_svg, poincare_section_svg,
+    stability_index_axis,
+};
+use routh::{
+    OrbitEvent, OrbitEventKind, OrbitFamily, OrbitStability, PeriodicOrbit, PoincareSection,
+    Trajectory,
+};
+
+/// An orbit of a made-up family: energy `e`, index `k`, period `t`.
+fn orbit(e: f64, k: f64, t: f64) -> PeriodicOrbit {
+    PeriodicOrbit {
+        omega0: Vector3::zeros(),
+        gamma0: -Vector3::z(),
+        period: t,
+        energy: e,
+        p_psi: 0.0,
+        precession: 0.0,
+        multipliers: PeriodicOrbit::multipliers_from_index(k),
+        stability_index: k,
+        stability: OrbitStability::from_index(k, 1e-9),
+        amplitude: e,
+    }
+}
+
+fn orbit_event(kind: OrbitEventKind, o: PeriodicOrbit) -> OrbitEvent {
+    OrbitEvent {
+        kind,
+        energy: o.energy,
+        orbit: o,
+        before: OrbitStability::Elliptic,
+        after: OrbitStability::Hyperbolic,
+    }
+}
+
+/// The index of the swing family below: linear, through `k = −1` at `E = 0.5` (a period
+/// doubling), back through `−1` near `E = 1`, through `k = 1` at `E = 1.5` (a branch point), then
+/// up to `k ≈ 300` (`10^E`) past `E = 2.2`.
+fn swing_index(e: f64) -> f64 {
+    if e < 1.0 {
+        0.9 - 3.8 * e
+    } else if e <= 2.2 {
+        -0.8 + 3.6 * (e - 1.0)
+    } else {
+        10f64.powf(e)
+    }
+}
+
+fn swing_family() -> OrbitFamily {
+    let orbits = (0..50)
+        .map(|i| {
+            let e = 0.03 + 0.05 * i as f64;
+            orbit(e, swing_index(e), 6.0 + e * e)
+        })
+        .collect();
+    OrbitFamily {
+        orbits,
+        events: vec![
+            orbit_event(OrbitEventKind::PeriodDoubling, orbit(0.5, -1.0, 6.25)),
+            orbit_event(OrbitEventKind::BranchPoint, orbit(1.5, 1.0, 8.25)),
+        ],
+        stop: None,
+    }
+}
+
+/// `(x, y)` pairs of an SVG `points` attribute.
+fn points_attr(line: &str) -> Vec<(f64, f64)> {
+    let Some(i) = line.find("points=\"") else {
+        return vec![];
+    };
+    let rest = &line[i + 8..];
+    rest[..rest.find('"').unwrap()]
+        .split_whitespace()
+        .map(|p| {
+            let (x, y) = p.split_once(',').unwrap();
+            (x.parse().unwrap(), y.parse().unwrap())
+        })
+        .collect()
+}
+
+/// The value of attribute `name` of an SVG element's line.
+fn attr(line: &str, name: &str) -> Option<String> {
+    let key = format!(" {name}=\"");
+    let i = line.find(&key)? + key.len();
+    let rest = &line[i..];
+    Some(rest[..rest.find('"')?].to_string())
+}
+
+/// The polylines drawn with this colour and width, as point lists.
+fn polylines(svg: &str, color: &str, width: u32) -> Vec<Vec<(f64, f64)>> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polyline"))
+        .filter(|l| l.contains(&format!("stroke=\"{color}\"")))
+        .filter(|l| l.contains(&format!("stroke-width=\"{width}\"")))
+        .map(points_attr)
+        .collect()
+}
+
+/// The centres (vertex means) of the filled polygons of this colour with `n` vertices.
+fn polygon_centres(svg: &str, fill: &str, n: usize) -> Vec<(f64, f64)> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polygon"))
+        .filter(|l| l.contains(&format!("fill=\"{fill}\"")))
+        .map(points_attr)
+        .filter(|p| p.len() == n)
+        .map(|p| {
+            let k = p.len() as f64;
+            (
+                p.iter().map(|q| q.0).sum::<f64>() / k,
+                p.iter().map(|q| q.1).sum::<f64>() / k,
+            )
+        })
+        .collect()
+}
+
+/// The y of the two long horizontal grey lines `k = ±1`, top first (the legend's short swatch
+/// left out).
+fn parabolic_lines(svg: &str) -> Vec<f64> {
+    let mut ys: Vec<f64> = polylines(svg, "#646464", 1)
+        .into_iter()
+        .filter(|p| p.len() == 2 && p[0].1 == p[1].1 && (p[1].0 - p[0].0).abs() > 200.0)
+        .map(|p| p[0].1)
+        .collect();
+    ys.sort_by(f64::total_cmp);
+    ys
+}
+
+#[test]
+fn stability_index_axis_is_linear_then_one_unit_a_decade() {
+    assert_eq!(stability_index_axis(0.5), 0.5);
+    assert_eq!(stability_index_axis(-1.0), -1.0);
+    assert!((stability_index_axis(10.0) - 2.0).abs() < 1e-15);
+    assert!((stability_index_axis(-1e6) + 7.0).abs() < 1e-12);
+    assert!(stability_index_axis(f64::NAN).is_nan());
+    let ks = [
+        -1e6, -100.0, -10.0, -2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 1.0001, 2.0, 10.0, 1e6,
+    ];
+    assert!(ks
+        .windows(2)
+        .all(|w| stability_index_axis(w[0]) < stability_index_axis(w[1])));
+}
+
+/// The stability diagram: both lines k = ±1, elliptic runs thick solid and unstable ones dashed
+/// or dotted, the events on the lines where the family crosses them, named, and the axis in
+/// decades beyond ±1.
+#[test]
+fn orbit_family_diagram_marks_the_lines_runs_and_events() {
+    let path = out("orbit_family.svg");
+    orbit_family_svg(&swing_family(), &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    for label in [
+        "E",
+        "k",
+        "k = 1",
+        "k = −1",
+        "k = ±1 (log scale beyond)",
+        "elliptic, |k| < 1",
+        "hyperbolic, k > 1",
+        "inverse hyperbolic, k < −1",
+        "period doubling",
+        "branch point",
+        "0",
+        "10",
+        "100",
+        "−1",
+    ] {
+        assert!(
+            has_text(&svg, label),
+            "{label:?} missing: {:?}",
+            texts(&svg)
+        );
+    }
+    assert!(!has_text(&svg, "fold"), "no fold in this family");
+    assert!(!has_text(&svg, "parabolic, k = ±1"));
+    // The lines k = 1 (above) and k = −1.
+    let lines = parabolic_lines(&svg);
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    let (y_plus, y_minus) = (lines[0], lines[1]);
+    assert!(y_plus < y_minus);
+    // Two elliptic runs (thick green) and the legend's swatch; hyperbolic dashes (red) and
+    // inverse-hyperbolic dots (orange).
+    let elliptic = polylines(&svg, "#008237", 4);
+    assert_eq!(elliptic.len(), 3, "{elliptic:?}");
+    assert!(strokes(&svg, "#CD1E1E", 2) > 5);
+    assert!(strokes(&svg, "#C86E00", 2) > 5);
+    // The first elliptic run ends on k = −1 where the period doubling is marked (◆, 4 vertices,
+    // black on a white halo); the second ends on k = 1 at the branch point (●).
+    let mut runs = elliptic;
+    runs.sort_by(|a, b| a[0].0.total_cmp(&b[0].0));
+    let (first, second) = (&runs[0], &runs[1]);
+    let end1 = *first.last().unwrap();
+    let end2 = *second.last().unwrap();
+    assert!(
+        (end1.1 - y_minus).abs() <= 1.0,
+        "{end1:?} vs k = −1 at {y_minus}"
+    );
+    assert!(
+        (end2.1 - y_plus).abs() <= 1.0,
+        "{end2:?} vs k = 1 at {y_plus}"
+    );
+    let diamonds = polygon_centres(&svg, "#000000", 4);
+    assert_eq!(diamonds.len(), 2, "marker and legend swatch: {diamonds:?}");
+    let pd = diamonds
+        .iter()
+        .copied()
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap();
+    assert!(
+        (pd.0 - end1.0).abs() <= 1.5 && (pd.1 - y_minus).abs() <= 1.5,
+        "period doubling marked at {pd:?}, the family crosses k = −1 at {end1:?}"
+    );
+    let dots: Vec<(f64, f64)> = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && l.contains("fill=\"#000000\""))
+        .filter(|l| attr(l, "r").as_deref() == Some("5"))
+        .map(|l| {
+            (
+                attr(l, "cx").unwrap().parse().unwrap(),
+                attr(l, "cy").unwrap().parse().unwrap(),
+            )
+        })
+        .collect();
+    assert!(
+        dots.iter()
+            .any(|c| (c.0 - end2.0).abs() <= 1.0 && (c.1 - y_plus).abs() <= 1.0),
+        "branch point not at {end2:?}: {dots:?}"
+    );
+    // Monochrome keeps the strokes, loses the colours.
+    let path = out("orbit_family_mono.svg");
+    let mono = PlotOptions {
+        monochrome: true,
+        ..PlotOptions::default()
+    };
+    orbit_family_svg(&swing_family(), &path, &mono).unwrap();
+    let svg = read_svg(&path);
+    assert!(!svg.contains("#008237") && !svg.contains("#CD1E1E"));
+    assert_eq!(polylines(&svg, "#000000", 4).len(), 3);
+}
+
+/// A family turning back in energy: the fold is marked at its largest energy, on k = 1.
+#[test]
+fn orbit_family_fold_is_marked_at_the_turn() {
+    // E(s) = 1 − (s − 1)², k(s) = s: the fold at s = 1, E = 1, k = 1.
+    let orbits: Vec<PeriodicOrbit> = (0..40)
+        .map(|i| {
+            let s = 0.025 + 0.05 * i as f64;
+            orbit(1.0 - (s - 1.0).powi(2), s, 5.0 + s)
+        })
+        .collect();
+    let family = OrbitFamily {
+        orbits,
+        events: vec![orbit_event(OrbitEventKind::Fold, orbit(1.0, 1.0, 6.0))],
+        stop: None,
+    };
+    let path = out("orbit_fold.svg");
+    orbit_family_svg(&family, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(&svg, "fold"));
+    let y_plus = parabolic_lines(&svg)[0];
+    // The elliptic run (s < 1) ends at the turn, where k = 1 (the legend's swatch left out).
+    let right = polylines(&svg, "#008237", 4)
+        .into_iter()
+        .filter(|p| p.len() > 2)
+        .flatten()
+        .map(|p| p.0)
+        .fold(f64::MIN, f64::max);
+    let triangles = polygon_centres(&svg, "#000000", 3);
+    assert!(
+        triangles
+            .iter()
+            .any(|c| (c.0 - right).abs() <= 2.0 && (c.1 - y_plus).abs() <= 2.0),
+        "fold not at the turn ({right}, {y_plus}): {triangles:?}"
+    );
+
+    // The periods: T up, E across, the same marker.
+    let path = out("orbit_fold_periods.svg");
+    orbit_periods_svg(&family, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(&svg, "T") && has_text(&svg, "E") && has_text(&svg, "fold"));
+    assert!(
+        parabolic_lines(&svg).is_empty(),
+        "no k = ±1 in a period figure"
+    );
+    assert_eq!(polygon_centres(&svg, "#000000", 3).len(), 2);
+}
+
+#[test]
+fn orbit_periods_follow_the_family() {
+    let path = out("orbit_periods.svg");
+    let opts = PlotOptions {
+        title: "swings".into(),
+        x_label: "energy".into(),
+        y_label: "period".into(),
+        ..PlotOptions::default()
+    };
+    orbit_periods_svg(&swing_family(), &path, &opts).unwrap();
+    let svg = read_svg(&path);
+    for label in [
+        "swings",
+        "energy",
+        "period",
+        "period doubling",
+        "branch point",
+    ] {
+        assert!(has_text(&svg, label), "{label:?}");
+    }
+    // T = 6 + E² rises: along each elliptic run, y (pixels, downwards) falls with x.
+    for run in polylines(&svg, "#008237", 4)
+        .into_iter()
+        .filter(|r| r.len() > 2)
+    {
+        assert!(run.windows(2).all(|w| w[1].0 > w[0].0 && w[1].1 <= w[0].1));
+    }
+}
+
+fn ring_section() -> PoincareSection {
+    let ring = |r: f64, phase: f64| SectionOrbit {
+        omega0: Vector3::zeros(),
+        gamma0: Vector3::y(),
+        points: (0..50)
+            .map(|i| {
+                let a = phase + std::f64::consts::TAU * i as f64 / 50.0;
+                [r * a.cos(), 2.0 * r * a.sin()]
+            })
+            .collect(),
+        stop: None,
+    };
+    PoincareSection {
+        p_psi: 0.25,
+        energy: -1.5,
+        normal: Vector3::x(),
+        orbits: vec![ring(0.5, 0.0), ring(1.0, 0.1), ring(1.5, 0.2)],
+    }
+}
+
+/// The section: one small dot a crossing, one colour an orbit, the fixed point as a large mark
+/// at its place, the axes θ and M_n.
+#[test]
+fn poincare_section_draws_every_crossing_and_the_fixed_points() {
+    let path = out("section.svg");
+    poincare_section_svg(
+        &ring_section(),
+        &[[0.0, 0.0]],
+        &path,
+        &PlotOptions::default(),
+    )
+    .unwrap();
+    let svg = read_svg(&path);
+    for label in [
+        "θ",
+        "M_n",
+        "150 crossings of 3 orbits",
+        "periodic orbits (fixed points)",
+        "p_ψ = 0.25, E = -1.5",
+        "plane γ·n = 0, n = (1, 0, 0)",
+    ] {
+        assert!(has_text(&svg, label), "{label:?}: {:?}", texts(&svg));
+    }
+    let dots: Vec<(String, f64, f64)> = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("1"))
+        .map(|l| {
+            (
+                attr(l, "fill").unwrap(),
+                attr(l, "cx").unwrap().parse().unwrap(),
+                attr(l, "cy").unwrap().parse().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        dots.len(),
+        150,
+        "one dot a crossing (all on distinct pixels)"
+    );
+    let colours: HashSet<&str> = dots.iter().map(|d| d.0.as_str()).collect();
+    assert_eq!(colours.len(), 3, "one colour an orbit");
+    // The fixed point (0, 0) is the centre of the symmetric rings.
+    let (x0, x1) = dots
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), d| (a.min(d.1), b.max(d.1)));
+    let (y0, y1) = dots
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), d| (a.min(d.2), b.max(d.2)));
+    let rings: Vec<(f64, f64)> = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("6"))
+        .map(|l| {
+            (
+                attr(l, "cx").unwrap().parse().unwrap(),
+                attr(l, "cy").unwrap().parse().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(rings.len(), 2, "the fixed point and the legend's swatch");
+    assert!(
+        rings
+            .iter()
+            .any(|c| (c.0 - 0.5 * (x0 + x1)).abs() <= 1.5 && (c.1 - 0.5 * (y0 + y1)).abs() <= 1.5),
+        "{rings:?} vs centre ({}, {})",
+        0.5 * (x0 + x1),
+        0.5 * (y0 + y1)
+    );
+    // Without fixed points: no mark, no legend row; monochrome: one colour.
+    let path = out("section_mono.svg");
+    let mono = PlotOptions {
+        monochrome: true,
+        ..PlotOptions::default()
+    };
+    poincare_section_svg(&ring_section(), &[], &path, &mono).unwrap();
+    let svg = read_svg(&path);
+    assert!(!has_text(&svg, "periodic orbits (fixed points)"));
+    assert!(!svg
+        .lines()
+        .any(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("6")));
+    let fills: HashSet<String> = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("1"))
+        .map(|l| attr(l, "fill").unwrap())
+        .collect();
+    assert_eq!(fills.len(), 1, "{fills:?}");
+}
+
+/// A region of motion straddling θ = ±π is drawn in one piece (beyond π), not split to the two
+/// edges of the figure.
+#[test]
+fn poincare_section_keeps_a_region_across_pi_together() {
+    let mut section = ring_section();
+    for o in &mut section.orbits {
+        for p in &mut o.points {
+            // Around θ = π: angles in (−π, π].
+            let t = p[0] * 0.3 + std::f64::consts::PI;
+            p[0] = if t > std::f64::consts::PI {
+                t - std::f64::consts::TAU
+            } else {
+                t
+            };
+        }
+    }
+    assert!(section.points().any(|p| p[0] < -3.0) && section.points().any(|p| p[0] > 3.0));
+    let path = out("section_wrapped.svg");
+    let fixed = [[std::f64::consts::PI, 0.0]];
+    poincare_section_svg(&section, &fixed, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    let mut xs: Vec<f64> = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("1"))
+        .map(|l| attr(l, "cx").unwrap().parse().unwrap())
+        .collect();
+    xs.sort_by(f64::total_cmp);
+    let widest = xs.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
+    assert!(
+        widest < 30.0,
+        "the crossings are split: a gap of {widest} px"
+    );
+    // The fixed point at θ = π sits in the middle of the rings.
+    let ring = svg
+        .lines()
+        .find(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("6"))
+        .unwrap();
+    let cx: f64 = attr(ring, "cx").unwrap().parse().unwrap();
+    let mid = 0.5 * (xs[0] + xs[xs.len() - 1]);
+    assert!((cx - mid).abs() <= 2.0, "{cx} vs {mid}");
+}
+
+/// Swings about e₁ through the hanging position γ = −e₃ (in the plane γ₁ = 0).
+fn swing_path(amplitude: f64) -> Trajectory {
+    Trajectory {
+        gamma: (0..=200)
+            .map(|i| {
+                let th = amplitude * (i as f64 / 200.0 * std::f64::consts::TAU).sin();
+                Vector3::new(0.0, th.sin(), -th.cos())
+            })
+            .collect(),
+        ..Trajectory::default()
+    }
+}
+
+/// Orbits on the sphere: solid where they face the viewer, dotted behind, the body axes named
+/// on the near side only.
+#[test]
+fn orbits_on_sphere_near_and_far() {
+    let orbits = [swing_path(0.4), swing_path(1.2)];
+    // From below, the swings face the viewer: the first orbit is solid (width 2) only.
+    let path = out("sphere_below.svg");
+    orbits_on_sphere_svg(&orbits, -Vector3::z(), &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    for label in [
+        "first orbit",
+        "last orbit (2 in all)",
+        "−e₃",
+        "e₁",
+        "−e₁",
+        "e₂",
+        "−e₂",
+    ] {
+        assert!(has_text(&svg, label), "{label:?}: {:?}", texts(&svg));
+    }
+    assert!(!has_text(&svg, "e₃"), "e₃ is behind");
+    let first = "#143CBE"; // ramp(0): (20, 60, 190)
+    let last = "#D75F00"; // ramp(1): (215, 95, 0)
+    let solid: Vec<_> = polylines(&svg, first, 2);
+    assert!(
+        solid.len() == 2 && solid.iter().any(|p| p.len() > 50),
+        "the orbit and the legend swatch: {} polylines",
+        solid.len()
+    );
+    assert_eq!(polylines(&svg, first, 1).len(), 0, "nothing behind");
+    assert!(!polylines(&svg, last, 2).is_empty());
+    // From above, the same swings are behind the sphere: only thin dots.
+    let path = out("sphere_above.svg");
+    orbits_on_sphere_svg(&orbits, Vector3::z(), &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(&svg, "e₃") && !has_text(&svg, "−e₃"));
+    assert_eq!(
+        polylines(&svg, first, 2).len(),
+        1,
+        "the legend's swatch only"
+    );
+    assert!(polylines(&svg, first, 1).len() > 10, "dotted behind");
+    // From the side (e₂), a wide swing crosses the limb: solid in front, dotted behind, the
+    // parts joined on the limb.
+    let path = out("sphere_side.svg");
+    orbits_on_sphere_svg(
+        &[swing_path(2.5)],
+        Vector3::y(),
+        &path,
+        &PlotOptions::default(),
+    )
+    .unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(&svg, "orbit") && has_text(&svg, "γ seen from (0, 1, 0)"));
+    let limb = svg
+        .lines()
+        .find(|l| {
+            l.starts_with("<circle")
+                && l.contains("fill=\"none\"")
+                && l.contains("stroke=\"#000000\"")
+        })
+        .unwrap();
+    let (cx, cy, r): (f64, f64, f64) = (
+        attr(limb, "cx").unwrap().parse().unwrap(),
+        attr(limb, "cy").unwrap().parse().unwrap(),
+        attr(limb, "r").unwrap().parse().unwrap(),
+    );
+    let front: Vec<_> = polylines(&svg, first, 2)
+        .into_iter()
+        .filter(|p| p.len() > 10)
+        .collect();
+    assert!(!front.is_empty() && polylines(&svg, first, 1).len() > 10);
+    for part in &front {
+        for end in [part[0], part[part.len() - 1]] {
+            let d = ((end.0 - cx).powi(2) + (end.1 - cy).powi(2)).sqrt();
+            assert!(
+                (d - r).abs() <= 1.5,
+                "a front part ends at {end:?}, {d} from the centre, r = {r}"
+            );
+        }
+    }
+}
+
+#[test]
+fn orbit_figures_errors_and_whole_files() {
+    let opts = PlotOptions::default();
+    let path = out("orbit_never.svg");
+    let empty = OrbitFamily {
+        orbits: vec![],
+        events: vec![],
+        stop: None,
+    };
+    assert!(matches!(
+        orbit_family_svg(&empty, &path, &opts),
+        Err(PlotError::EmptyData(_))
+    ));
+    let nan = OrbitFamily {
+        orbits: vec![orbit(f64::NAN, 0.0, 1.0)],
+        ..empty.clone()
+    };
+    assert!(matches!(
+        orbit_periods_svg(&nan, &path, &opts),
+        Err(PlotError::EmptyData(_))
+    ));
+    let no_points = PoincareSection {
+        orbits: vec![],
+        ..ring_section()
+    };
+    assert!(matches!(
+        poincare_section_svg(&no_points, &[], &path, &opts),
+        Err(PlotError::EmptyData(_))
+    ));
+    assert!(matches!(
+        poincare_section_svg(&ring_section(), &[[f64::NAN, 0.0]], &path, &opts),
+        Err(PlotError::InvalidData(_))
+    ));
+    assert!(matches!(
+        orbits_on_sphere_svg(&[], Vector3::z(), &path, &opts),
+        Err(PlotError::EmptyData(_))
+    ));
+    assert!(matches!(
+        orbits_on_sphere_svg(&[swing_path(0.3)], Vector3::zeros(), &path, &opts),
+        Err(PlotError::InvalidData(_))
+    ));
+    let tiny = PlotOptions {
+        height: 100,
+        ..PlotOptions::default()
+    };
+    assert!(matches!(
+        orbit_family_svg(&swing_family(), &path, &tiny),
+        Err(PlotError::InvalidOptions(_))
+    ));
+    assert!(!path.exists(), "no file is written on error");
+
+    // Whole or not at all: a directory in the way is an error and leaves nothing behind; a
+    // second figure replaces the first.
+    let dir = std::env::temp_dir().join(format!("routh-plot-whole-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("taken.svg")).unwrap();
+    let err = orbit_family_svg(&swing_family(), dir.join("taken.svg"), &opts).unwrap_err();
+    assert!(matches!(err, PlotError::Io(_)), "{err}");
+    let listing = |d: &PathBuf| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    };
+    assert_eq!(listing(&dir), ["taken.svg"], "no temporary file left");
+    let file = dir.join("family.svg");
+    orbit_family_svg(&swing_family(), &file, &opts).unwrap();
+    orbit_periods_svg(&swing_family(), &file, &opts).unwrap();
+    assert!(has_text(&read_svg(&file), "T"));
+    assert_eq!(listing(&dir), ["family.svg", "taken.svg"]);
+    let unwritable = dir.join("no-such-dir").join("x.svg");
+    assert!(matches!(
+        poincare_section_svg(&ring_section(), &[], &unwritable, &opts),
+        Err(PlotError::Io(_))
+    ));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The figures of a computed family, end to end: the off-axis heavy body's swings from the
+/// hanging position (period doublings on the way), its orbits on the sphere, and a small section
+/// with the fixed point of one of its orbits — one marker per event, one curve per orbit, one
+/// mark per crossing of the orbit.
+#[test]
+fn figures_of_a_computed_family() {
+    use routh::{
+        lyapunov_family, orbit_crossings, orbit_path, poincare_section, steady_motions, Matrix3,
+        OrbitOptions, SectionOptions,
+    };
+    let body = test_models::HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(1.0, 3.0, 6.0)),
+        mgr: Vector3::new(0.4, 0.3, 1.5),
+    };
+    let hang = steady_motions(&body, 0.0)
+        .unwrap()
+        .into_iter()
+        .min_by(|a, b| a.energy.total_cmp(&b.energy))
+        .unwrap();
+    let family = lyapunov_family(
+        &body,
+        &hang,
+        0,
+        &OrbitOptions::default().with_max_orbits(40),
+    )
+    .unwrap();
+    let doublings = family
+        .events
+        .iter()
+        .filter(|e| e.kind == OrbitEventKind::PeriodDoubling)
+        .count();
+    assert!(doublings >= 1, "{:?}", family.events);
+    let path = out("computed_family.svg");
+    orbit_family_svg(&family, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert_eq!(
+        polygon_centres(&svg, "#000000", 4).len(),
+        doublings + 1,
+        "one ◆ per period doubling, and the legend's"
+    );
+    assert_eq!(parabolic_lines(&svg).len(), 2);
+    // Every period doubling sits on k = −1.
+    let y_minus = parabolic_lines(&svg)[1];
+    assert!(polygon_centres(&svg, "#000000", 4)
+        .iter()
+        .filter(|c| c.0 < 650.0)
+        .all(|c| (c.1 - y_minus).abs() <= 1.5));
+
+    let orbits: Vec<_> = family
+        .orbits
+        .iter()
+        .skip(5)
+        .step_by(10)
+        .map(|o| orbit_path(&body, o, 200).unwrap())
+        .collect();
+    let path = out("computed_sphere.svg");
+    orbits_on_sphere_svg(&orbits, hang.gamma, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert!(has_text(
+        &svg,
+        &format!("last orbit ({} in all)", orbits.len())
+    ));
+
+    let o = &family.orbits[10];
+    let opts = SectionOptions::default()
+        .with_normal(Vector3::y())
+        .with_size(6, 20);
+    let fixed = orbit_crossings(&body, o, &opts).unwrap();
+    assert!(!fixed.is_empty());
+    let section = poincare_section(&body, o.p_psi, o.energy, &opts).unwrap();
+    let path = out("computed_section.svg");
+    poincare_section_svg(&section, &fixed, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    let rings = svg
+        .lines()
+        .filter(|l| l.starts_with("<circle") && attr(l, "r").as_deref() == Some("6"))
+        .count();
+    assert_eq!(
+        rings,
+        fixed.len() + 1,
+        "one mark per fixed point, and the legend's"
+    );
 }

@@ -61,6 +61,7 @@ pub(super) fn atlas_figure(
         x_label: &opts.x_label,
         y_label: label_or(&opts.y_label, "y"),
         mesh: false,
+        y_ticks: None,
     };
     let mono = opts.monochrome;
 

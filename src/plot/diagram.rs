@@ -7,7 +7,7 @@ use plotters::prelude::*;
 
 use super::frame::{draw_figure, extent, padded, Frame, Overlays};
 use super::legend::{Entry, Swatch};
-use super::marks::{draw_event_marker, draw_rings, stroke_path, Px};
+use super::marks::{draw_event_marker, draw_names, draw_rings, stroke_path, Px};
 use super::style::{verdict_color, verdict_stroke, KINDS, VERDICTS};
 use super::{drawing_error, PlotError, PlotOptions};
 use crate::{BifurcationDiagram, BranchEvent, BranchSample, EventKind, Stability};
@@ -189,6 +189,7 @@ pub(super) fn branch_figure(
         x_label,
         y_label,
         mesh: true,
+        y_ticks: None,
     };
     let mono = opts.monochrome;
 
@@ -238,27 +239,16 @@ pub(super) fn branch_figure(
             }
         }
         overlays.draw(root, px)?;
-        let font = ("sans-serif", 14).into_font().color(&BLACK);
         // Names above their markers, raised row by row where they would overlap one another.
-        let mut placed: Vec<(i32, i32, i32)> = Vec::new(); // left, right, top
+        let mut labels = Vec::new();
         for (kind, q, name) in &events {
             let c = chart.backend_coord(q);
             draw_event_marker(root, c, *kind)?;
             if let Some(name) = name {
-                let w = 8 * name.chars().count() as i32;
-                let (left, right) = (c.0 + 6, c.0 + 6 + w);
-                let mut top = c.1 - 22;
-                while placed
-                    .iter()
-                    .any(|&(l, r, t)| left < r + 4 && l < right + 4 && (top - t).abs() < 16)
-                {
-                    top -= 16;
-                }
-                placed.push((left, right, top));
-                root.draw(&Text::new(name.clone(), (left, top), font.clone()))
-                    .map_err(drawing_error)?;
+                labels.push((c, name.clone()));
             }
         }
+        draw_names(root, &labels)?;
         Ok(())
     })
 }

@@ -6,10 +6,11 @@ use std::path::Path;
 
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::legend::{draw_legend, legend_width, Entry, Swatch};
 use super::marks::{stroke_path, Px, Root};
-use super::style::overlay_stroke;
+use super::style::{overlay_stroke, Stroke};
 use super::{drawing_error, PlotError, PlotOptions};
 
 /// The axes, in data coordinates.
@@ -25,6 +26,9 @@ pub(super) struct Frame<'l> {
     pub(super) x_label: &'l str,
     pub(super) y_label: &'l str,
     pub(super) mesh: bool,
+    /// The vertical axis's ticks `(y, label)` in place of plotters' own (an axis whose labels are
+    /// not its coordinate, e.g. the stability index on a log-like scale); `None`: plotters'.
+    pub(super) y_ticks: Option<Vec<(f64, String)>>,
 }
 
 /// Writes the figure to `path`: the axes of `frame` to the left, `draw` in them, then the legend
@@ -40,6 +44,9 @@ pub(super) fn draw_figure(
     write_svg(path, opts, |root| {
         let (left, _) = root.split_horizontally(opts.width - legend_w);
         let chart = axes(&left, opts, frame)?;
+        if let Some(ticks) = &frame.y_ticks {
+            draw_y_ticks(root, &chart, frame, ticks)?;
+        }
         draw(root, &chart)?;
         let top = chart.backend_coord(&(frame.x.0, frame.y.1)).1;
         draw_legend(
@@ -51,8 +58,9 @@ pub(super) fn draw_figure(
     })
 }
 
-/// Renders `draw` into an SVG string and writes it to `path`.
-fn write_svg(
+/// Renders `draw` into an SVG string of `opts.width × opts.height` and writes it to `path`
+/// ([`write_whole`]).
+pub(super) fn write_svg(
     path: &Path,
     opts: &PlotOptions,
     draw: impl FnOnce(&Root) -> Result<(), PlotError>,
@@ -64,7 +72,65 @@ fn write_svg(
         draw(&root)?;
         root.present().map_err(drawing_error)?;
     }
-    std::fs::write(path, svg)?;
+    write_whole(path, svg.as_bytes())
+}
+
+/// Writes `bytes` to `path` whole or not at all: into a temporary file beside it (same
+/// directory, so the same file system), then renamed over `path`. On an error the temporary file
+/// is removed and `path` is as it was.
+pub(super) fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static SERIAL: AtomicU64 = AtomicU64::new(0);
+    let name = path
+        .file_name()
+        .ok_or_else(|| {
+            std::io::Error::new(
+                std::io::ErrorKind::InvalidInput,
+                format!("{} does not name a file", path.display()),
+            )
+        })?
+        .to_string_lossy();
+    let tmp = path.with_file_name(format!(
+        ".{name}.{}-{}.tmp",
+        std::process::id(),
+        SERIAL.fetch_add(1, Ordering::Relaxed)
+    ));
+    let written = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
+    if let Err(e) = written {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(e.into());
+    }
+    Ok(())
+}
+
+/// The ticks of [`Frame::y_ticks`]: a short tick, a light grid line across the axes and the
+/// label to the left of the axis, for each tick within the vertical range.
+fn draw_y_ticks(
+    root: &Root,
+    chart: &Chart,
+    frame: &Frame,
+    ticks: &[(f64, String)],
+) -> Result<(), PlotError> {
+    let font = ("sans-serif", 16)
+        .into_font()
+        .color(&BLACK)
+        .pos(Pos::new(HPos::Right, VPos::Center));
+    let (lo, hi) = (frame.y.0.min(frame.y.1), frame.y.0.max(frame.y.1));
+    for (y, label) in ticks.iter().filter(|(y, _)| (lo..=hi).contains(y)) {
+        let (x0, py) = chart.backend_coord(&(frame.x.0, *y));
+        let (x1, _) = chart.backend_coord(&(frame.x.1, *y));
+        if frame.mesh {
+            stroke_path(
+                root,
+                &[(x0 + 1, py), (x1, py)],
+                RGBColor(225, 225, 225),
+                Stroke::Solid(1),
+            )?;
+        }
+        stroke_path(root, &[(x0 - 5, py), (x0, py)], BLACK, Stroke::Solid(1))?;
+        root.draw(&Text::new(label.clone(), (x0 - 8, py), font.clone()))
+            .map_err(drawing_error)?;
+    }
     Ok(())
 }
 
@@ -93,6 +159,10 @@ fn axes<'a, 'b>(
     let fx = tick_format(x0, x1);
     let fy = tick_format(y0, y1);
     let mut mesh_style = chart.configure_mesh();
+    if frame.y_ticks.is_some() {
+        // Drawn by `draw_y_ticks`; plotters' own y grid lines and labels left out.
+        mesh_style.y_labels(0);
+    }
     mesh_style
         .x_desc(frame.x_label)
         .y_desc(frame.y_label)

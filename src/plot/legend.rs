@@ -4,10 +4,11 @@
 use plotters::prelude::*;
 
 use super::marks::{draw_cross, draw_event_marker, draw_rings, shade_cell, stroke_boundary};
+use super::marks::{draw_fixed_point, draw_orbit_event_marker};
 use super::marks::{stroke_path, Px, Root};
 use super::style::Stroke;
 use super::{drawing_error, PlotError};
-use crate::{EventKind, Stability};
+use crate::{EventKind, OrbitEventKind, Stability};
 
 /// What a legend row shows left of its text.
 pub(super) enum Swatch {
@@ -21,6 +22,14 @@ pub(super) enum Swatch {
     Cell(Option<Stability>),
     /// A boundary curve of an atlas.
     Boundary(EventKind),
+    /// The marker of an event of a family of periodic orbits.
+    OrbitEvent(OrbitEventKind),
+    /// Three dots of this colour: the crossings of a Poincaré section.
+    Dots(RGBColor),
+    /// The mark of a fixed point of a Poincaré section.
+    FixedPoint,
+    /// Nothing: a row of text only.
+    Text,
 }
 
 /// A legend row.
@@ -75,6 +84,17 @@ pub(super) fn draw_legend(
                 .map_err(drawing_error)?;
             }
             Swatch::Boundary(kind) => stroke_boundary(root, &[line.to_vec()], *kind, mono)?,
+            Swatch::OrbitEvent(kind) => {
+                draw_orbit_event_marker(root, ((sx0 + sx1) / 2, cy), *kind)?
+            }
+            Swatch::Dots(color) => {
+                for dx in [8, 22, 36] {
+                    root.draw(&Circle::new((sx0 + dx, cy), 2, color.filled()))
+                        .map_err(drawing_error)?;
+                }
+            }
+            Swatch::FixedPoint => draw_fixed_point(root, ((sx0 + sx1) / 2, cy))?,
+            Swatch::Text => {}
         }
         root.draw(&Text::new(text.clone(), (sx1 + 10, cy - 8), font.clone()))
             .map_err(drawing_error)?;

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use super::style::BOUNDARY_UNDERLAY;
 use super::style::{boundary_color, boundary_stroke, cell_fill, Pattern, Stroke};
 use super::{drawing_error, PlotError};
-use crate::{EventKind, Stability};
+use crate::{EventKind, OrbitEventKind, Stability};
 
 /// The whole figure, in backend pixels.
 pub(super) type Root<'a> = DrawingArea<SVGBackend<'a>, Shift>;
@@ -111,6 +111,63 @@ pub(super) fn draw_event_marker(root: &Root, c: Px, kind: EventKind) -> Result<(
             .and_then(|_| root.draw(&Cross::new(c, 5, BLACK.stroke_width(2)))),
     };
     r.map_err(drawing_error)
+}
+
+/// The marker of an event of a family of periodic orbits at `c`, black on a white halo: ▲ fold
+/// and ● branch point (as for steady motions), ◆ period doubling.
+pub(super) fn draw_orbit_event_marker(
+    root: &Root,
+    c: Px,
+    kind: OrbitEventKind,
+) -> Result<(), PlotError> {
+    match kind {
+        OrbitEventKind::Fold => draw_event_marker(root, c, EventKind::Fold),
+        OrbitEventKind::BranchPoint => draw_event_marker(root, c, EventKind::BranchPoint),
+        OrbitEventKind::PeriodDoubling => {
+            let diamond = |r: i32| {
+                vec![
+                    (c.0, c.1 - r),
+                    (c.0 + r, c.1),
+                    (c.0, c.1 + r),
+                    (c.0 - r, c.1),
+                ]
+            };
+            root.draw(&Polygon::new(diamond(10), WHITE.filled()))
+                .and_then(|_| root.draw(&Polygon::new(diamond(7), BLACK.filled())))
+                .map_err(drawing_error)
+        }
+    }
+}
+
+/// The mark of a fixed point of a Poincaré section (a periodic orbit's crossing) at `c`: a black
+/// ring with a dot in it, on a white halo, so that it stands out of the cloud of crossings.
+pub(super) fn draw_fixed_point(root: &Root, c: Px) -> Result<(), PlotError> {
+    root.draw(&Circle::new(c, 8, WHITE.filled()))
+        .and_then(|_| root.draw(&Circle::new(c, 6, BLACK.stroke_width(2))))
+        .and_then(|_| root.draw(&Circle::new(c, 2, BLACK.filled())))
+        .map_err(drawing_error)
+}
+
+/// Writes each name above and to the right of its marker at `c`, raising a name row by row
+/// where it would overlap one written before.
+pub(super) fn draw_names(root: &Root, names: &[(Px, String)]) -> Result<(), PlotError> {
+    let font = ("sans-serif", 14).into_font().color(&BLACK);
+    let mut placed: Vec<(i32, i32, i32)> = Vec::new(); // left, right, top
+    for (c, name) in names {
+        let w = 8 * name.chars().count() as i32;
+        let (left, right) = (c.0 + 6, c.0 + 6 + w);
+        let mut top = c.1 - 22;
+        while placed
+            .iter()
+            .any(|&(l, r, t)| left < r + 4 && l < right + 4 && (top - t).abs() < 16)
+        {
+            top -= 16;
+        }
+        placed.push((left, right, top));
+        root.draw(&Text::new(name.clone(), (left, top), font.clone()))
+            .map_err(drawing_error)?;
+    }
+    Ok(())
 }
 
 /// Shades the pixel rectangle with corners `a` (top left) and `b` (bottom right) as a cell of

@@ -1,5 +1,9 @@
 //! SVG figures of families of steady motions (feature `plot`, on by default): bifurcation
-//! diagrams, Smale's energy–momentum diagram and stability atlases, drawn with `plotters`.
+//! diagrams, Smale's energy–momentum diagram and stability atlases, drawn with `plotters`; of
+//! periodic orbits: the stability diagram and the periods of a family ([`orbit_family_svg`],
+//! [`orbit_periods_svg`]), orbits on the sphere of γ ([`orbits_on_sphere_svg`]) and Poincaré
+//! sections ([`poincare_section_svg`]); and of single motions ([`apex_locus_svg`],
+//! [`time_histories_svg`]).
 //!
 //! Every figure reads without colour:
 //!
@@ -18,8 +22,16 @@
 //!   nonlinear curves ([`StabilityAtlas::nonlinear`](crate::StabilityAtlas::nonlinear)) are thin,
 //!   dotted (D = 0), medium-dashed (1:2) or long-dashed (1:3), each labelled with its name.
 //!
+//! - along a family of periodic orbits, the same strokes by stability: **thick solid** where
+//!   [`OrbitStability::Elliptic`], **dashed** where [`OrbitStability::Hyperbolic`], **dotted**
+//!   where [`OrbitStability::InverseHyperbolic`], medium solid where
+//!   [`OrbitStability::Parabolic`]; its events are marked ▲ [`OrbitEventKind::Fold`],
+//!   ● [`OrbitEventKind::BranchPoint`] and ◆ [`OrbitEventKind::PeriodDoubling`], each named
+//!   beside its marker.
+//!
 //! A legend to the right of the axes names every line style, marker and shading that occurs.
-//! Colour is added on top (switch it off with [`PlotOptions::monochrome`]).
+//! Colour is added on top (switch it off with [`PlotOptions::monochrome`]). Every figure is
+//! written whole or not at all: into a temporary file beside `path`, then renamed onto it.
 //!
 //! ```
 //! use routh::plot::{bifurcation_diagram_svg, stability_atlas_svg, DiagramAxis, PlotOptions};
@@ -62,24 +74,29 @@
 use std::fmt;
 use std::path::Path;
 
-use crate::{BifurcationDiagram, StabilityAtlas};
+use crate::{
+    BifurcationDiagram, OrbitFamily, PoincareSection, StabilityAtlas, Trajectory, Vector3,
+};
 #[cfg(doc)]
-use crate::{EventKind, Stability};
+use crate::{EventKind, OrbitEventKind, OrbitStability, Stability};
 
 // This file holds the public API; the drawing is split by responsibility: `style` (strokes,
 // colours and fills by verdict and event), `marks` (what is drawn in pixels), `legend`, `frame`
 // (ranges, clipping, axes, overlays, the SVG file), `diagram` (branches and events), `atlas`
-// (cells and boundaries) and `axis` (`DiagramAxis`).
+// (cells and boundaries), `orbits` (families of periodic orbits, the sphere of γ, Poincaré
+// sections) and `axis` (`DiagramAxis`).
 mod atlas;
 mod axis;
 mod diagram;
 mod frame;
 mod legend;
 mod marks;
+mod orbits;
 mod style;
 mod trajectory;
 
 pub use axis::DiagramAxis;
+pub use orbits::stability_index_axis;
 pub use trajectory::{apex_locus_svg, apex_path, time_histories_svg};
 
 /// The errors of the plotting functions.
@@ -451,4 +468,193 @@ pub fn stability_atlas_svg<P: AsRef<Path>>(
     opts: &PlotOptions,
 ) -> Result<(), PlotError> {
     atlas::atlas_figure(atlas, path.as_ref(), opts)
+}
+
+/// Writes the stability diagram of a family of periodic orbits as an SVG: the stability index
+/// `k = (μ + 1/μ)/2` up against the energy `E` across, the lines `k = ±1` between which the
+/// orbits are elliptic (linearly stable), the runs of the family styled by
+/// [`PeriodicOrbit::stability`](crate::PeriodicOrbit::stability) (thick solid elliptic, dashed
+/// hyperbolic, dotted inverse hyperbolic; the style changes where `k` crosses ±1, interpolated
+/// between orbits), and its events ([`OrbitFamily::events`]) marked ▲ fold, ● branch point,
+/// ◆ period doubling, each named beside its marker.
+///
+/// **The vertical axis.** Near a separatrix `k` grows like `e^{cT}` and spans many orders of
+/// magnitude, so the axis is linear in `k` on `[−1, 1]` and logarithmic beyond, one unit a
+/// decade ([`stability_index_axis`]: `y = ±(1 + log₁₀|k|)`), its ticks labelled in `k` (`10`,
+/// `100`, `10³`, …). Nothing is clipped, and the elliptic band keeps its room.
+///
+/// The axes are labelled [`PlotOptions::x_label`] (`"E"` when it is the default `"s"` or empty)
+/// and [`PlotOptions::y_label`] (`"k"` when empty); [`PlotOptions::overlays`] are drawn in the
+/// figure's coordinates (the index through [`stability_index_axis`]).
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] for a family without an orbit with finite `E`, `T` and `k`,
+/// [`PlotError::InvalidOptions`] for a figure smaller than 400 × 250 pixels, [`PlotError::Io`]
+/// if the file cannot be written.
+///
+/// ```
+/// use routh::plot::{orbit_family_svg, orbit_periods_svg, PlotOptions};
+/// use routh::{
+///     OrbitEvent, OrbitEventKind, OrbitFamily, OrbitStability, PeriodicOrbit, Vector3,
+/// };
+///
+/// // A family by hand: k falls through −1 at E = 0.5 and rises through 1 at E = 1.5.
+/// let orbit = |e: f64| {
+///     let k = if e < 1.0 { 0.9 - 3.8 * e } else { 10f64.powf(2.7 * (e - 1.5)) };
+///     PeriodicOrbit {
+///         omega0: Vector3::zeros(),
+///         gamma0: -Vector3::z(),
+///         period: 6.0 + e,
+///         energy: e,
+///         p_psi: 0.0,
+///         precession: 0.0,
+///         multipliers: PeriodicOrbit::multipliers_from_index(k),
+///         stability_index: k,
+///         stability: OrbitStability::from_index(k, 1e-9),
+///         amplitude: e,
+///     }
+/// };
+/// let event = |kind, e: f64, before, after| OrbitEvent {
+///     kind, energy: e, orbit: orbit(e), before, after,
+/// };
+/// let family = OrbitFamily {
+///     orbits: (0..=50).map(|i| orbit(0.05 * i as f64)).collect(),
+///     events: vec![
+///         event(OrbitEventKind::PeriodDoubling, 0.5, OrbitStability::Elliptic, OrbitStability::InverseHyperbolic),
+///         event(OrbitEventKind::BranchPoint, 1.5, OrbitStability::Elliptic, OrbitStability::Hyperbolic),
+///     ],
+///     stop: None,
+/// };
+/// let path = std::env::temp_dir().join("routh-doc-orbit-family.svg");
+/// orbit_family_svg(&family, &path, &PlotOptions::default())?;
+/// let svg = std::fs::read_to_string(&path)?;
+/// assert!(svg.contains("period doubling") && svg.contains("k = ±1 (log scale beyond)"));
+///
+/// let path = std::env::temp_dir().join("routh-doc-orbit-periods.svg");
+/// orbit_periods_svg(&family, &path, &PlotOptions::default())?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn orbit_family_svg<P: AsRef<Path>>(
+    family: &OrbitFamily,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    orbits::family_figure(family, path.as_ref(), opts, orbits::FamilyAxis::Index)
+}
+
+/// Writes the periods of a family of periodic orbits as an SVG: the period `T` up against the
+/// energy `E` across, with the strokes, markers and names of [`orbit_family_svg`] (the runs
+/// styled by stability, the events marked and named). The axes are labelled
+/// [`PlotOptions::x_label`] (`"E"` when it is the default `"s"` or empty) and
+/// [`PlotOptions::y_label`] (`"T"` when empty); [`PlotOptions::overlays`] (e.g. a period in
+/// closed form) are drawn on top.
+///
+/// # Errors
+///
+/// As [`orbit_family_svg`]. An example is there.
+pub fn orbit_periods_svg<P: AsRef<Path>>(
+    family: &OrbitFamily,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    orbits::family_figure(family, path.as_ref(), opts, orbits::FamilyAxis::Period)
+}
+
+/// Writes orbits drawn on the sphere of γ (the body coordinates of the upward vertical) as an
+/// SVG: an orthographic projection of the unit sphere seen from the body direction `view` (the
+/// viewer on the ray through `view`; up on the page is `e₃`, or `e₂` when `view` is within about
+/// 25° of `±e₃`). Each trajectory's `γ` is a curve, solid on the near side (`γ·view ≥ 0`) and thin
+/// dotted on the far side; the trajectories are coloured in their order from blue to orange (all
+/// black with [`PlotOptions::monochrome`]). The limb, the principal planes `γᵢ = 0` (grey) and
+/// the body axes `±eᵢ` on the near side (dots, named) give the orientation; the legend names the
+/// first and last trajectory and the view. Sample periodic orbits with
+/// [`orbit_path`](crate::orbit_path).
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] when no trajectory has a point, [`PlotError::InvalidData`] for a
+/// zero or non-finite `view` or a non-finite `γ`, [`PlotError::InvalidOptions`] for a figure
+/// smaller than 400 × 250 pixels, [`PlotError::Io`] if the file cannot be written.
+///
+/// ```
+/// use routh::plot::{orbits_on_sphere_svg, PlotOptions};
+/// use routh::{Trajectory, Vector3};
+///
+/// // Two swings about e₁ near the hanging position γ = −e₃, drawn as simulate_full would.
+/// let swing = |a: f64| Trajectory {
+///     gamma: (0..=100)
+///         .map(|i| {
+///             let th = a * (i as f64 / 100.0 * std::f64::consts::TAU).sin();
+///             Vector3::new(0.0, th.sin(), -th.cos())
+///         })
+///         .collect(),
+///     ..Trajectory::default()
+/// };
+/// let path = std::env::temp_dir().join("routh-doc-orbits-sphere.svg");
+/// let opts = PlotOptions { width: 700, height: 500, ..PlotOptions::default() };
+/// orbits_on_sphere_svg(&[swing(0.3), swing(0.9)], Vector3::new(1.0, 0.0, -1.0), &path, &opts)?;
+/// assert!(std::fs::read_to_string(&path)?.contains("last orbit (2 in all)"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn orbits_on_sphere_svg<P: AsRef<Path>>(
+    orbits: &[Trajectory],
+    view: Vector3<f64>,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    orbits::sphere_figure(orbits, view, path.as_ref(), opts)
+}
+
+/// Writes a Poincaré section as an SVG: every crossing `(θ, M_n)` of every orbit of the section
+/// as a small dot, one colour per orbit (in turn; all black with [`PlotOptions::monochrome`]),
+/// and `fixed_points` — the crossings of periodic orbits, from
+/// [`orbit_crossings`](crate::orbit_crossings) with the section's options — as large marks (a
+/// ring with a dot, on a white halo). Islands of regular motion show as closed curves around
+/// elliptic fixed points, chaos as scattered dots. The angle `θ ∈ (−π, π]` is drawn on the window
+/// of width 2π that keeps the crossings together: where they leave a wider gap elsewhere than
+/// across ±π, the angles below the gap are drawn at `θ + 2π` (a region of motion straddling
+/// θ = ±π shows in one piece, its ticks beyond π). The axes are labelled [`PlotOptions::x_label`]
+/// (`"θ"` when it is the default `"s"` or empty) and [`PlotOptions::y_label`] (`"M_n"` when
+/// empty); the legend gives the number of crossings and orbits, `(p_ψ, E)` and the plane.
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] for a section without a finite crossing, [`PlotError::InvalidData`]
+/// for a non-finite fixed point, [`PlotError::InvalidOptions`] for a figure smaller than
+/// 400 × 250 pixels, [`PlotError::Io`] if the file cannot be written.
+///
+/// ```
+/// use routh::plot::{poincare_section_svg, PlotOptions};
+/// use routh::periodic::SectionOrbit;
+/// use routh::{PoincareSection, Vector3};
+///
+/// // Rings around a fixed point at (0, 0), as a harmonic oscillator's section.
+/// let ring = |r: f64| SectionOrbit {
+///     omega0: Vector3::zeros(),
+///     gamma0: Vector3::y(),
+///     points: (0..200).map(|i| {
+///         let a = 0.7 * i as f64;
+///         [r * a.cos(), r * a.sin()]
+///     }).collect(),
+///     stop: None,
+/// };
+/// let section = PoincareSection {
+///     p_psi: 0.0,
+///     energy: 1.0,
+///     normal: Vector3::x(),
+///     orbits: vec![ring(0.5), ring(1.0), ring(1.5)],
+/// };
+/// let path = std::env::temp_dir().join("routh-doc-section.svg");
+/// poincare_section_svg(&section, &[[0.0, 0.0]], &path, &PlotOptions::default())?;
+/// assert!(std::fs::read_to_string(&path)?.contains("600 crossings of 3 orbits"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn poincare_section_svg<P: AsRef<Path>>(
+    section: &PoincareSection,
+    fixed_points: &[[f64; 2]],
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    orbits::section_figure(section, fixed_points, path.as_ref(), opts)
 }

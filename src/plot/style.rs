@@ -4,7 +4,7 @@
 
 use plotters::style::{RGBColor, BLACK};
 
-use crate::{EventKind, Resonance, Stability};
+use crate::{EventKind, OrbitEventKind, OrbitStability, Resonance, Stability};
 
 /// The verdicts in the order of the legend (and the reverse of the drawing order).
 pub(super) const VERDICTS: [Stability; 4] = [
@@ -133,5 +133,98 @@ pub(super) fn cell_fill(v: Stability, mono: bool) -> (RGBColor, Pattern) {
             tint
         },
         pattern,
+    )
+}
+
+/// The verdicts of periodic orbits in the order of the legend (and the reverse of the drawing
+/// order).
+pub(super) const ORBIT_VERDICTS: [OrbitStability; 4] = [
+    OrbitStability::Elliptic,
+    OrbitStability::Parabolic,
+    OrbitStability::Hyperbolic,
+    OrbitStability::InverseHyperbolic,
+];
+
+/// The events of families of periodic orbits in the order of the legend.
+pub(super) const ORBIT_KINDS: [OrbitEventKind; 3] = [
+    OrbitEventKind::Fold,
+    OrbitEventKind::BranchPoint,
+    OrbitEventKind::PeriodDoubling,
+];
+
+/// The stroke of a run of a family of periodic orbits, as the verdicts of steady motions: thick
+/// solid where elliptic (stable), dashed where hyperbolic, dotted where inverse hyperbolic, and a
+/// medium solid line where parabolic (along a whole run only in degenerate families).
+pub(super) fn orbit_stroke(v: OrbitStability) -> Stroke {
+    match v {
+        OrbitStability::Elliptic => Stroke::Solid(4),
+        OrbitStability::Parabolic => Stroke::Solid(2),
+        OrbitStability::Hyperbolic => Stroke::Dashed(2, 9, 6),
+        OrbitStability::InverseHyperbolic => Stroke::Dashed(2, 2, 4),
+    }
+}
+
+pub(super) fn orbit_color(v: OrbitStability, mono: bool) -> RGBColor {
+    let color = match v {
+        OrbitStability::Elliptic => RGBColor(0, 130, 55),
+        OrbitStability::Parabolic => RGBColor(90, 0, 130),
+        OrbitStability::Hyperbolic => RGBColor(205, 30, 30),
+        OrbitStability::InverseHyperbolic => RGBColor(200, 110, 0),
+    };
+    ink(color, mono)
+}
+
+/// The legend text of a verdict of periodic orbits.
+pub(super) fn orbit_verdict_name(v: OrbitStability) -> &'static str {
+    match v {
+        OrbitStability::Elliptic => "elliptic, |k| < 1",
+        OrbitStability::Parabolic => "parabolic, k = ±1",
+        OrbitStability::Hyperbolic => "hyperbolic, k > 1",
+        OrbitStability::InverseHyperbolic => "inverse hyperbolic, k < −1",
+    }
+}
+
+/// The name of an event of a family of periodic orbits, in the legend and beside its marker.
+pub(super) fn orbit_event_name(k: OrbitEventKind) -> &'static str {
+    match k {
+        OrbitEventKind::Fold => "fold",
+        OrbitEventKind::BranchPoint => "branch point",
+        OrbitEventKind::PeriodDoubling => "period doubling",
+    }
+}
+
+/// The grey of the reference lines `k = ±1` of a stability diagram of periodic orbits.
+pub(super) const PARABOLIC_LINE: RGBColor = RGBColor(100, 100, 100);
+
+/// Colours told apart on white, for one curve or cloud of points per orbit (in turn); black in a
+/// monochrome figure.
+const PALETTE: [RGBColor; 8] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
+    RGBColor(188, 189, 34),
+];
+
+/// The colour of the `k`-th of several orbits, in turn.
+pub(super) fn palette(k: usize, mono: bool) -> RGBColor {
+    ink(PALETTE[k % PALETTE.len()], mono)
+}
+
+/// The colour of the `k`-th of `n` orbits in order (a family by energy): from dark blue through
+/// purple to dark orange; black in a monochrome figure.
+pub(super) fn ramp(k: usize, n: usize, mono: bool) -> RGBColor {
+    let t = if n > 1 {
+        k as f64 / (n - 1) as f64
+    } else {
+        0.0
+    };
+    let mix = |a: f64, b: f64| (a + (b - a) * t).round().clamp(0.0, 255.0) as u8;
+    ink(
+        RGBColor(mix(20.0, 215.0), mix(60.0, 95.0), mix(190.0, 0.0)),
+        mono,
     )
 }

@@ -7,7 +7,7 @@ use std::path::Path;
 use plotters::element::{DashedPathElement, DottedPathElement};
 use plotters::prelude::*;
 
-use super::frame::tick_format;
+use super::frame::{tick_format, write_whole};
 use super::{drawing_error, PlotError, PlotOptions};
 use crate::nalgebra::UnitQuaternion;
 use crate::{Trajectory, Vector3};
@@ -151,8 +151,7 @@ pub fn apex_locus_svg<P: AsRef<Path>>(
             .map_err(drawing_error)?;
         root.present().map_err(drawing_error)?;
     }
-    std::fs::write(path, svg)?;
-    Ok(())
+    write_whole(path.as_ref(), svg.as_bytes())
 }
 
 /// One panel of [`time_histories_svg`]: its axis label and its named curves.
@@ -293,6 +292,5 @@ pub fn time_histories_svg<P: AsRef<Path>>(
         }
         root.present().map_err(drawing_error)?;
     }
-    std::fs::write(path, svg)?;
-    Ok(())
+    write_whole(path.as_ref(), svg.as_bytes())
 }

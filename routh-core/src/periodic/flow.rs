@@ -191,8 +191,9 @@ pub fn orbit_path<M: Lagrangian>(
             reason: format!("need at least 2 samples, got {n}"),
         });
     }
+    // `T·i/(n − 1)` rounds above `T` for some `T` and `n` at `i = n − 1`: the last time is `T`.
     let times = (0..n)
-        .map(|i| orbit.period * i as f64 / (n - 1) as f64)
+        .map(|i| (orbit.period * i as f64 / (n - 1) as f64).min(orbit.period))
         .collect();
     let opts = SimOptions::with_tolerances(1e-11, 1e-12)
         .with_attitude()

@@ -26,6 +26,7 @@ mod analysis;
 pub mod ellipsoid;
 pub mod fluid_body;
 pub mod gyrostat;
+pub mod heavy_body;
 pub mod top;
 
 pub use analysis::{
@@ -35,6 +36,7 @@ pub use analysis::{
 pub use ellipsoid::{DiagonalEllipsoid, Ellipsoid, DIAGONAL_ELLIPSOID_SRC};
 pub use fluid_body::{FluidBody, Kirchhoff};
 pub use gyrostat::{Gyrostat, GYROSTAT_SRC};
+pub use heavy_body::HeavyBody;
 pub use top::{AsymmetricTop, LagrangeTop};
 
 /// A number with at most `digits` decimals, trailing zeros removed (`0.5`, `9.81`, `-2`).
