@@ -1,4 +1,4 @@
-//! Periodic motions of a heavy asymmetric body (docs/method.md §7): the planar swings of the body
+//! Periodic motions of a heavy asymmetric body (docs/method.md §11): the planar swings of the body
 //! hanging from a fixed point, their period against the energy (the pendulum's `4K(m)/ω₀`), and
 //! the intervals of energy where a swing is stable against out-of-plane perturbations — the
 //! classical stability diagram of planar oscillations, here the stability index `k` of the
@@ -155,7 +155,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     // --- Planar swings of a body with its centre of mass on a principal axis ------------------
     let (a, b, c, mgl) = (1.0, 2.0, 3.0, 1.5);
     let body = HeavyBody::on_axis(a, b, c, mgl);
-    println!("Periodic motions of a heavy asymmetric body — routh, docs/method.md §7");
+    println!("Periodic motions of a heavy asymmetric body — routh, docs/method.md §11");
     println!("======================================================================");
     println!(
         "L = ½(Jω, ω) − m g (r, γ),  J = diag({}, {}, {}),  m g r = {}",

@@ -237,6 +237,14 @@ pub struct Orbits {
     /// The most rows printed per family in the table (every orbit with `--csv`/`--json`).
     #[arg(long, default_value_t = 12)]
     pub rows: usize,
+    /// Draw the family's stability diagram (the index k against E, the lines k = ±1, events
+    /// named) into this SVG file; needs exactly one family (choose it with `--mode` and
+    /// `--gamma`).
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+    /// Draw the family's periods against E into this SVG file (one family, as `--svg`).
+    #[arg(long, value_name = "FILE")]
+    pub periods_svg: Option<PathBuf>,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -262,6 +270,9 @@ pub struct Section {
     /// Crossings per orbit.
     #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100000))]
     pub crossings: u32,
+    /// Draw the section (θ against M_n, one colour per orbit) into this SVG file.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
     /// Output format.
     #[command(flatten)]
     pub output: Output,

@@ -6,6 +6,7 @@ use crate::cli::{Orbits, Section};
 use crate::commands::load;
 use crate::error::CliError;
 use crate::table::{num, vec3, Table};
+use routh::plot::{orbit_family_svg, orbit_periods_svg, poincare_section_svg, PlotOptions};
 use routh::{
     classify, lyapunov_family, poincare_section, steady_motions, OrbitFamily, OrbitOptions,
     SectionOptions, Stability, SteadyMotion, Vector3,
@@ -49,7 +50,10 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
             verdict,
             Stability::SecularlyStable | Stability::GyroscopicallyStabilized
         ) {
-            skipped.push(format!("{} ({verdict}: no Lyapunov family)", vec3(&m.gamma)));
+            skipped.push(format!(
+                "{} ({verdict}: no Lyapunov family)",
+                vec3(&m.gamma)
+            ));
             continue;
         }
         for &mode in &modes {
@@ -61,6 +65,31 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
                 }),
                 Err(e) => skipped.push(format!("{} mode {mode}: {e}", vec3(&m.gamma))),
             }
+        }
+    }
+    if a.svg.is_some() || a.periods_svg.is_some() {
+        let [one] = started.as_slice() else {
+            return Err(CliError::Input(format!(
+                "--svg and --periods-svg draw one family, and this run has {}: choose it with \
+                 --mode and --gamma",
+                started.len()
+            )));
+        };
+        let stem = crate::args::model_name(&a.model);
+        let title = format!(
+            "{stem}: periodic orbits of mode {} at p_ψ = {}",
+            one.mode, a.momentum
+        );
+        let opts = PlotOptions {
+            x_label: "E".into(),
+            title,
+            ..PlotOptions::default()
+        };
+        if let Some(path) = &a.svg {
+            orbit_family_svg(&one.family, path, &opts)?;
+        }
+        if let Some(path) = &a.periods_svg {
+            orbit_periods_svg(&one.family, path, &opts)?;
         }
     }
     if a.output.json {
@@ -140,6 +169,17 @@ pub fn section(a: &Section) -> Result<String, CliError> {
         opts = opts.with_normal(Vector3::from(n));
     }
     let sec = poincare_section(&model, a.momentum, a.energy, &opts)?;
+    if let Some(path) = &a.svg {
+        let stem = crate::args::model_name(&a.model);
+        let opts = PlotOptions {
+            title: format!(
+                "{stem}: Poincaré section at p_ψ = {}, E = {}",
+                a.momentum, a.energy
+            ),
+            ..PlotOptions::default()
+        };
+        poincare_section_svg(&sec, &[], path, &opts)?;
+    }
     if a.output.json {
         return Ok(serde_json::to_string_pretty(&sec)? + "\n");
     }

@@ -628,3 +628,162 @@ fn diagram_nonlinear_locates_arnolds_degenerate_point() {
     let table = stdout(&routh(&["diagram", TOP, "-p", "2.2..2.48", "--nonlinear"]));
     assert!(table.contains("Lyapunov stable -> "), "{table}");
 }
+
+const ASYMMETRIC: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../examples/models/asymmetric_top.toml"
+);
+
+#[test]
+fn orbits_follow_the_swings_and_name_their_events() {
+    // The hanging position of the asymmetric top (centre of mass at m g c = (0.4, 0.3, 1.5)):
+    // γ = −c/|c|. Its mode-0 swings have two period doublings (k = −1) and a branch point.
+    let v = json(&routh(&[
+        "orbits",
+        ASYMMETRIC,
+        "--momentum",
+        "0",
+        "--mode",
+        "0",
+        "--gamma",
+        "-0.25,-0.19,-0.95",
+        "--max-orbits",
+        "40",
+        "--json",
+    ]));
+    let families = v.as_array().expect("an array");
+    assert_eq!(families.len(), 1);
+    let f = &families[0];
+    let g = &f["motion"]["gamma"];
+    let c = (0.16f64 + 0.09 + 2.25).sqrt();
+    for (i, ci) in [0.4, 0.3, 1.5].iter().enumerate() {
+        assert!((g[i].as_f64().unwrap() + ci / c).abs() < 1e-9);
+    }
+    let orbits = f["family"]["orbits"].as_array().unwrap();
+    assert_eq!(orbits.len(), 40);
+    let doublings: Vec<f64> = f["family"]["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == "PeriodDoubling")
+        .map(|e| e["orbit"]["stability_index"].as_f64().unwrap())
+        .collect();
+    assert_eq!(doublings.len(), 2, "{}", f["family"]["events"]);
+    assert!(doublings.iter().all(|k| (k + 1.0).abs() < 1e-6));
+    // CSV: one row per orbit; the table names the events.
+    let o = routh(&[
+        "orbits",
+        ASYMMETRIC,
+        "-p",
+        "0",
+        "--mode",
+        "0",
+        "--gamma",
+        "-0.25,-0.19,-0.95",
+        "--max-orbits",
+        "40",
+        "--csv",
+    ]);
+    assert_eq!(stdout(&o).lines().count(), 41);
+    let o = routh(&[
+        "orbits",
+        ASYMMETRIC,
+        "-p",
+        "0",
+        "--mode",
+        "0",
+        "--gamma",
+        "-0.25,-0.19,-0.95",
+        "--max-orbits",
+        "40",
+    ]);
+    assert!(
+        stdout(&o).contains("period_doubling at E = "),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn orbits_refuse_a_resonant_start_and_draw_one_family() {
+    // The hanging Lagrange top at p_ψ = 0 has two equal frequencies √(mgl/A₁): a 1:1
+    // resonance, so neither mode starts a family; the sleeping (upright) top is unstable.
+    let o = routh(&["orbits", TOP, "--momentum", "0"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("0 Lyapunov families"), "{out}");
+    assert!(out.contains("resonant start"), "{out}");
+    assert!(out.contains("unstable: no Lyapunov family"), "{out}");
+    // --svg needs one family.
+    let dir = std::env::temp_dir().join(format!("routh-cli-orbits-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("k.svg");
+    rejects(
+        &[
+            "orbits",
+            ASYMMETRIC,
+            "-p",
+            "0",
+            "--max-orbits",
+            "5",
+            "--svg",
+            svg.to_str().unwrap(),
+        ],
+        "draw one family",
+    );
+    assert!(!svg.exists());
+    let o = routh(&[
+        "orbits",
+        ASYMMETRIC,
+        "-p",
+        "0",
+        "--mode",
+        "1",
+        "--gamma",
+        "-0.25,-0.19,-0.95",
+        "--max-orbits",
+        "8",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        text.contains("<svg") && text.contains("k = ±1"),
+        "{}",
+        &text[..200.min(text.len())]
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn section_prints_crossings_on_the_energy_level() {
+    let o = routh(&[
+        "section",
+        ASYMMETRIC,
+        "--momentum",
+        "0",
+        "--energy",
+        "-1",
+        "--orbits",
+        "5",
+        "--crossings",
+        "20",
+        "--csv",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    let mut lines = out.lines();
+    assert_eq!(lines.next(), Some("orbit,theta,m_n"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert!(!rows.is_empty() && rows.len() <= 100);
+    assert!(rows
+        .iter()
+        .all(|r| r[1].abs() <= std::f64::consts::PI && r[2].is_finite()));
+    // Below the least energy of the level there is nothing to cut: bad input, named.
+    let o = routh(&["section", ASYMMETRIC, "-p", "0", "-e", "-5"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("no motion"), "{}", stderr(&o));
+}
