@@ -241,3 +241,104 @@ fn nan_and_huge_parameters_are_values_not_errors() {
     .unwrap();
     assert!(!m.energy(&Vector3::new(10.0, 0.0, 0.0), &g).is_finite());
 }
+
+/// The hostile texts of issue 34: deep, long and large. Each builds or is refused with a
+/// placed error; none may crash (a stack overflow aborts the process, so each is run in a
+/// child process of this test binary, see [`hostile_texts_build_or_are_refused_never_crash`]).
+fn hostile_case(name: &str) -> Result<Model, ModelError> {
+    let kinetic = "kinetic = 0.5 * omega.dot(omega),\npotential = ";
+    let sum = |n: usize| {
+        (0..n)
+            .map(|i| format!("{}.5 * gamma.{}", i % 7, ["x", "y", "z"][i % 3]))
+            .collect::<Vec<_>>()
+            .join(" + ")
+    };
+    let none: &[(&str, Param)] = &[];
+    match name {
+        "minus-7000" => Model::new(&format!("{kinetic}{}gamma.z", "-".repeat(7000)), none),
+        "spaced-minus-7000" => Model::new(&format!("{kinetic}{}gamma.z", "- ".repeat(7000)), none),
+        "not-7000" => Model::new(&format!("{kinetic}{}gamma.z", "!".repeat(7000)), none),
+        "parens-7000" => Model::new(
+            &format!("{kinetic}{}gamma.z{}", "(".repeat(7000), ")".repeat(7000)),
+            none,
+        ),
+        "methods-50000" => Model::new(
+            &format!("{kinetic}gamma.z{}", ".sin()".repeat(50_000)),
+            none,
+        ),
+        "sum-50000" => Model::new(&format!("{kinetic}{}", sum(50_000)), none),
+        "product-20000" => Model::new(
+            &format!("{kinetic}{}", vec!["gamma.z"; 20_000].join(" * ")),
+            none,
+        ),
+        "one-megabyte" => {
+            let text = format!("{kinetic}{}", sum(70_000));
+            assert!(text.len() > 1 << 20);
+            Model::new(&text, none)
+        }
+        "toml-sum-50000" => Model::from_toml(&format!(
+            "[model]\nlagrangian = \"\"\"\n{kinetic}{}\n\"\"\"\n",
+            sum(50_000)
+        )),
+        "small-stack-thread" => std::thread::Builder::new()
+            .stack_size(128 << 10)
+            .spawn(move || Model::new(&format!("{kinetic}{}", sum(50_000)), none))
+            .unwrap()
+            .join()
+            .unwrap(),
+        _ => panic!("no case {name}"),
+    }
+}
+
+#[test]
+fn hostile_texts_build_or_are_refused_never_crash() {
+    const CHILD: &str = "ROUTH_HOSTILE_CASE";
+    if let Ok(name) = std::env::var(CHILD) {
+        match hostile_case(&name) {
+            Ok(_) => println!("HOSTILE ok"),
+            Err(e) => println!("HOSTILE err {}:{} {}", e.line, e.column, e.message),
+        }
+        return;
+    }
+    // (case, expected: "ok" or the start of the error "err line:column" and a word of it)
+    let cases = [
+        ("minus-7000", "err 2:77", "in a row"),
+        ("spaced-minus-7000", "err 2:141", "in a row"),
+        ("not-7000", "err 2:77", "in a row"),
+        ("parens-7000", "err 2:77", "nested more than 64"),
+        ("methods-50000", "err 2:13", "nested more than 200"),
+        ("sum-50000", "ok", ""),
+        ("product-20000", "ok", ""),
+        ("one-megabyte", "ok", ""),
+        ("toml-sum-50000", "ok", ""),
+        ("small-stack-thread", "ok", ""),
+    ];
+    let exe = std::env::current_exe().unwrap();
+    for (name, expected, word) in cases {
+        let out = std::process::Command::new(&exe)
+            .args([
+                "hostile_texts_build_or_are_refused_never_crash",
+                "--exact",
+                "--nocapture",
+                "--test-threads=1",
+            ])
+            .env(CHILD, name)
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{name}: the child failed ({:?}):\n{stdout}\n{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let line = stdout
+            .lines()
+            .find_map(|l| l.split_once("HOSTILE ").map(|(_, r)| r))
+            .unwrap_or_else(|| panic!("{name}: no result in\n{stdout}"));
+        assert!(
+            line.starts_with(expected) && line.contains(word),
+            "{name}: expected `{expected}` … `{word}`, got `{line}`"
+        );
+    }
+}
