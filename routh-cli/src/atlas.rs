@@ -6,7 +6,7 @@ use crate::error::CliError;
 use crate::table::Table;
 use routh::export::verdict_name;
 use routh::plot::{stability_atlas_svg, PlotOptions};
-use routh::{stability_atlas, AtlasOptions, Model, ModelError, Vector3};
+use routh::{stability_atlas, AtlasOptions, Model, ModelError, StabilityAtlas, Vector3};
 use std::cell::RefCell;
 
 /// The model and momentum at `(x, y)`: each axis is `momentum` or a scalar parameter.
@@ -79,6 +79,7 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
     if let Some(e) = failure.into_inner() {
         return Err(CliError::Compute(describe(&e, None)));
     }
+    let mut files = crate::files::Outputs::new();
     if let Some(path) = &a.svg {
         let [gx, gy, gz] = a.gamma;
         let opts = PlotOptions {
@@ -90,10 +91,17 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
             ),
             ..PlotOptions::default()
         };
-        stability_atlas_svg(&result, path, &opts)?;
+        files.write(path, |tmp| stability_atlas_svg(&result, tmp, &opts))?;
     }
+    let text = render(a, &result, &names)?;
+    files.commit()?;
+    Ok(text)
+}
+
+/// The atlas as asked: JSON, CSV or two tables (the verdicts tallied, the boundary curves).
+fn render(a: &Atlas, result: &StabilityAtlas, names: &[&str]) -> Result<String, CliError> {
     if a.output.json {
-        return Ok(serde_json::to_string_pretty(&result)? + "\n");
+        return Ok(serde_json::to_string_pretty(result)? + "\n");
     }
     if a.output.csv {
         return Ok(result.to_csv());

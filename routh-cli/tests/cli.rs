@@ -527,10 +527,73 @@ fn an_unwritable_figure_is_a_failed_run_exit_code_1() {
     ]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(
-        stderr(&o).contains("cannot draw the figure"),
+        stderr(&o).contains("cannot write /nonexistent-dir/routh/d.svg"),
         "{}",
         stderr(&o)
     );
+}
+
+/// A run that fails while writing its figures (the second cannot be written) leaves the first
+/// figure's old file byte-identical and no temporary file beside it: all or none.
+#[test]
+fn a_run_that_fails_while_writing_leaves_the_old_files_as_they_were() {
+    let dir = std::env::temp_dir().join(format!("routh-cli-keep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let old = dir.join("old.svg");
+    let before = b"<svg>the figure of yesterday</svg>\n".to_vec();
+    std::fs::write(&old, &before).unwrap();
+    let o = routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "0..5",
+        "--svg",
+        old.to_str().unwrap(),
+        "--energy-momentum-svg",
+        "/nonexistent-dir/routh/em.svg",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("/nonexistent-dir/routh/em.svg"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(
+        std::fs::read(&old).unwrap(),
+        before,
+        "the old figure was changed"
+    );
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(
+        left,
+        vec![std::ffi::OsString::from("old.svg")],
+        "temporaries left"
+    );
+    // A target that is a directory: the figure is drawn to a temporary, the rename fails, the
+    // directory is untouched and named.
+    let o = routh(&[
+        "atlas",
+        TOP,
+        "--x",
+        "mass=0.5..1.5",
+        "--y",
+        "momentum=0..5",
+        "--nx",
+        "3",
+        "--ny",
+        "3",
+        "--gamma",
+        "0,0,1",
+        "--svg",
+        dir.to_str().unwrap(),
+    ]);
+    assert_ne!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains(dir.to_str().unwrap()), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&old).unwrap(), before);
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Arnold's determinant D of the upright Lagrange top A₁ = 1, C = 1.25, mgl = 1 at momentum
