@@ -219,18 +219,59 @@ fn from_file_with_a_missing_file() {
 }
 
 #[test]
-fn nan_and_huge_parameters_are_values_not_errors() {
-    let m = Model::new(
+fn nan_and_infinite_parameters_are_refused_naming_them_huge_ones_are_values() {
+    // Model::new: at the parameter's first use in the text.
+    let e = err(
         TOP,
         &[
             ("inertia", [1.0, 1.0, 2.0].into()),
             ("mass", f64::NAN.into()),
         ],
+    );
+    assert!(e.message.contains("parameter `mass` is NaN"), "{e}");
+    assert_eq!((e.line, e.column), (2, 13));
+    let e = err(
+        TOP,
+        &[
+            ("inertia", [1.0, f64::NEG_INFINITY, 2.0].into()),
+            ("mass", 1.0.into()),
+        ],
+    );
+    assert!(
+        e.message
+            .contains("parameter `inertia` has an infinite component [1]"),
+        "{e}"
+    );
+    // set / with: refused, the model unchanged.
+    let mut m = Model::new(TOP, &top_params()).unwrap();
+    let e = m.set("mass", f64::INFINITY).unwrap_err();
+    assert!(e.message.contains("parameter `mass` is infinite"), "{e}");
+    assert_eq!(m.get("mass"), Some(Param::Scalar(1.0)));
+    let mut bad = Matrix3::identity();
+    bad[(2, 1)] = f64::NAN;
+    let m = Model::new(
+        "kinetic = 0.5 * omega.dot(j * omega), potential = gamma.z",
+        &[("j", Matrix3::identity().into())],
     )
     .unwrap();
+    let e = m.with("j", bad).unwrap_err();
+    assert!(e.message.contains("`j` has a NaN entry [2][1]"), "{e}");
+    // TOML: at the value in the file.
+    let e = Model::from_toml(
+        "[model]\nlagrangian = \"kinetic = 0.5 * omega.dot(omega), potential = mass * gamma.z\"\n[parameters]\nmass = nan\n",
+    )
+    .unwrap_err();
+    assert!(e.message.contains("parameter `mass` is NaN"), "{e}");
+    assert_eq!((e.line, e.column), (4, 8));
+    let e = Model::from_toml(
+        "[model]\nlagrangian = \"kinetic = 0.5 * omega.dot(omega), potential = com.dot(gamma)\"\n[parameters]\ncom = [0, -inf, 1]\n",
+    )
+    .unwrap_err();
+    assert!(
+        e.message.contains("`com` has an infinite component [1]"),
+        "{e}"
+    );
     let g = Vector3::new(0.0, 0.0, 1.0);
-    assert!(m.amended_potential(&g, 0.0).is_nan());
-    assert!(m.lagrangian(&Vector3::zeros(), &g).is_nan());
     let m = Model::new(
         TOP,
         &[
