@@ -107,10 +107,20 @@ fn render(a: &Atlas, result: &StabilityAtlas, names: &[&str]) -> Result<String, 
         return Ok(result.to_csv());
     }
     let mut counts = Table::new(&["verdict", "cells"]);
-    let all = result.verdicts.iter().flatten();
+    let lost = result
+        .lost
+        .iter()
+        .flatten()
+        .chain(std::iter::repeat(&false));
     let mut tally: Vec<(String, usize)> = Vec::new();
-    for v in all {
-        let name = v.map_or("no steady motion", verdict_name).to_string();
+    for (v, &gone) in result.verdicts.iter().flatten().zip(lost) {
+        let name = match v {
+            Some(v) => verdict_name(*v),
+            // The continuation stalled away from a fold: nothing is known there.
+            None if gone => "lost",
+            None => "no steady motion",
+        }
+        .to_string();
         match tally.iter_mut().find(|(n, _)| *n == name) {
             Some((_, k)) => *k += 1,
             None => tally.push((name, 1)),
@@ -131,8 +141,12 @@ fn render(a: &Atlas, result: &StabilityAtlas, names: &[&str]) -> Result<String, 
             fmt(b.points.iter().map(|p| p.1).reduce(f64::max)),
         ]);
     }
+    let stop = result
+        .stop
+        .as_ref()
+        .map_or(String::new(), |r| format!("stopped early: {r}\n"));
     Ok(format!(
-        "atlas over {} × {} ({} × {} cells)\n{}\n{} boundary curve(s)\n{}",
+        "atlas over {} × {} ({} × {} cells)\n{stop}{}\n{} boundary curve(s)\n{}",
         names[0],
         names[1],
         result.x.len(),

@@ -31,18 +31,51 @@ pub fn routh_err(py: Python<'_>, e: &routh::RouthError) -> PyErr {
     err
 }
 
-/// A Rust `ModelError` as a Python `routh.ModelError` (with `line`, `column`, `message`).
+/// The Rust shapes of a message in Python's words (`set("inertia", 2.0)` on a vector).
+fn python_words(s: &str) -> String {
+    s.replace("a Vector3<f64>", "a 3-vector")
+        .replace("a Matrix3<f64>", "a 3x3 matrix")
+        .replace("a f64", "a number")
+}
+
+/// A Rust `ModelError` as a Python `routh.ModelError` (with `line`, `column`, `message`;
+/// `line` and `column` are None for an error about no place in a text: a parameter set by
+/// `set`, a file that cannot be read).
 pub fn model_err(py: Python<'_>, e: &routh::ModelError) -> PyErr {
-    let err = ModelError::new_err(e.to_string());
+    let placed = !e.source_line.is_empty();
+    if !placed {
+        return model_err_unplaced(py, e.message());
+    }
+    let err = ModelError::new_err(python_words(&e.to_string()));
     let v = err.value(py);
     let _ = v.setattr("line", e.line());
     let _ = v.setattr("column", e.column());
-    let _ = v.setattr("message", e.message().to_string());
+    let _ = v.setattr("message", python_words(e.message()));
+    err
+}
+
+/// A `routh.ModelError` about no place in a text (`line` and `column` None).
+pub fn model_err_unplaced(py: Python<'_>, message: &str) -> PyErr {
+    let message = python_words(message);
+    let err = ModelError::new_err(message.clone());
+    let v = err.value(py);
+    let _ = v.setattr("line", py.None());
+    let _ = v.setattr("column", py.None());
+    let _ = v.setattr("message", message);
     err
 }
 
 /// A parameter value: a number, a 3-sequence or a 3×3 nested sequence (numpy arrays included).
+/// A `bool` or a complex number is a `TypeError`; NaN and infinite values are refused by the
+/// model (a `ModelError` naming the parameter).
 pub fn param(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Param> {
+    use pyo3::types::{PyBool, PyComplex};
+    if value.is_instance_of::<PyBool>() || value.is_instance_of::<PyComplex>() {
+        return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+            "parameter `{name}`: expected a number, a 3-vector or a 3x3 matrix, not {}",
+            value.get_type().name()?
+        )));
+    }
     if let Ok(x) = value.extract::<f64>() {
         return Ok(Param::Scalar(x));
     }
@@ -56,9 +89,10 @@ pub fn param(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Param> {
             return Ok(Param::Matrix(Matrix3::from_fn(|i, j| rows[i][j])));
         }
     }
-    Err(ModelError::new_err(format!(
-        "parameter `{name}`: expected a number, a 3-vector or a 3x3 matrix"
-    )))
+    Err(model_err_unplaced(
+        value.py(),
+        &format!("parameter `{name}`: expected a number, a 3-vector or a 3x3 matrix"),
+    ))
 }
 
 /// A parameter value as a Python object (float, (3,) or (3, 3) array).

@@ -158,8 +158,13 @@ def test_stability_atlas_hopf_curve():
         nx=11, ny=11,
     )
     assert atlas.x.shape == (11,) and atlas.y.shape == (11,)
+    # verdicts[j][i] at (x[i], y[j]) = (mgl, p): at mgl = 0.5, p = 5 the upright top is
+    # secularly stable (p² > mgl C²/(C − A₁) = 3.6), at mgl = 2, p = 0.5 unstable.
     assert atlas.verdicts[0][0] == "unstable"
-    assert atlas.verdicts[10][0] == "secularly_stable" or atlas.verdicts[0][10] == "secularly_stable"
+    assert atlas.verdicts[10][0] == "secularly_stable"
+    assert atlas.verdicts[0][10] == "unstable"
+    assert len(atlas.lost) == 11 and not any(any(r) for r in atlas.lost)
+    assert atlas.stop is None
     hopf = [b for b in atlas.boundaries if b.kind == "hamiltonian_hopf"]
     assert hopf and hopf[0].points.shape[1] == 2
     mgl, p = hopf[0].points[:, 0], hopf[0].points[:, 1]

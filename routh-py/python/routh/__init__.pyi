@@ -141,7 +141,8 @@ class Boundary:
     points: npt.NDArray[np.float64]
 
 class Atlas:
-    """A stability atlas: `verdicts[i][j]` at (x[i], y[j]) and the `boundaries`.
+    """A stability atlas: `verdicts[j][i]` at (x[i], y[j]) (ny rows of nx, as in Rust), `lost`
+    (True where the motion was lost, not absent), `stop` and the `boundaries`.
 
     >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
     ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
@@ -150,6 +151,11 @@ class Atlas:
     x: npt.NDArray[np.float64]
     y: npt.NDArray[np.float64]
     verdicts: list[list[Verdict | None]]
+    """`verdicts[j][i]` at (x[i], y[j]); None where there is no steady motion or it was lost."""
+    lost: list[list[bool]]
+    """`lost[j][i]`: True where the motion was lost (nothing is known there)."""
+    stop: str | None
+    """None when the atlas is complete; otherwise why it stopped early."""
     boundaries: list[Boundary]
     def plot(self, ax: Any = None) -> Any:
         """Draw the verdict regions and the named boundary curves; returns the axes."""
