@@ -140,6 +140,13 @@ fn classify_with_an_axis_decides_the_circle_of_the_lagrange_top() {
         "{}",
         stdout(&o)
     );
+    // The axis at any scale is the same axis (issue 34).
+    for axis in ["0,0,1e160", "0,0,1e-200", "0,0,1e-310"] {
+        let w = json(&routh(&[
+            "classify", TOP, "-p", "3", "--axis", axis, "--json",
+        ]));
+        assert_eq!(w, v, "--axis {axis}");
+    }
     // e₁ is not an axis of symmetry of the top: an error, not a verdict.
     let o = routh(&["classify", TOP, "-p", "3", "--axis", "1,0,0"]);
     assert!(!o.status.success());
@@ -312,6 +319,36 @@ fn bad_input_exits_with_code_2_and_names_the_problem() {
         "not a finite number",
     );
     rejects(&["diagram", TOP, "--momentum", "3"], "not a range");
+    // Issue 34: `0...1` is not 0..0.1; negative numbers reach the value's own check (not
+    // clap's tip about `--`); a relative tolerance above 1 is refused.
+    rejects(&["diagram", TOP, "--momentum", "0...1"], "two dots");
+    let sim = ["simulate", TOP, "--omega", "0,0,1", "--gamma", "0,0,1"];
+    let with = |extra: &[&'static str]| -> Vec<&'static str> {
+        sim.iter().chain(extra).copied().collect()
+    };
+    rejects(&with(&["--t-end", "-1"]), "`-1` must be above 0");
+    rejects(
+        &with(&["--t-end", "1", "--rtol", "2"]),
+        "not a relative tolerance",
+    );
+    rejects(
+        &with(&["--t-end", "1", "--atol", "-1e-9"]),
+        "`-1e-9` must be above 0",
+    );
+    // A NaN or infinite parameter in the model file: exit code 2, naming it.
+    let bad = std::env::temp_dir().join(format!("routh-cli-nan-{}.toml", std::process::id()));
+    let src = std::fs::read_to_string(TOP).unwrap();
+    let line = src
+        .lines()
+        .find(|l| l.trim_start().starts_with("mass"))
+        .expect("a mass parameter")
+        .to_string();
+    std::fs::write(&bad, src.replace(&line, "mass = nan")).unwrap();
+    rejects(
+        &["steady", bad.to_str().unwrap(), "-p", "1"],
+        "parameter `mass` is NaN",
+    );
+    std::fs::remove_file(&bad).ok();
     rejects(
         &[
             "diagram",

@@ -65,17 +65,30 @@ pub fn model_err_unplaced(py: Python<'_>, message: &str) -> PyErr {
     err
 }
 
+/// A `TypeError` if `value`, or an element of it down to `depth` levels of lists and tuples,
+/// is a `bool` or a complex number where real numbers are expected (Python would convert
+/// `True` to 1.0 silently).
+fn no_bool_or_complex(what: &str, value: &Bound<'_, PyAny>, depth: usize) -> PyResult<()> {
+    use pyo3::types::{PyBool, PyComplex, PyList, PyTuple};
+    if value.is_instance_of::<PyBool>() || value.is_instance_of::<PyComplex>() {
+        return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+            "{what}: expected real numbers, not {}",
+            value.get_type().name()?
+        )));
+    }
+    if depth > 0 && (value.is_instance_of::<PyList>() || value.is_instance_of::<PyTuple>()) {
+        for x in value.try_iter()? {
+            no_bool_or_complex(what, &x?, depth - 1)?;
+        }
+    }
+    Ok(())
+}
+
 /// A parameter value: a number, a 3-sequence or a 3×3 nested sequence (numpy arrays included).
 /// A `bool` or a complex number is a `TypeError`; NaN and infinite values are refused by the
 /// model (a `ModelError` naming the parameter).
 pub fn param(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Param> {
-    use pyo3::types::{PyBool, PyComplex};
-    if value.is_instance_of::<PyBool>() || value.is_instance_of::<PyComplex>() {
-        return Err(pyo3::exceptions::PyTypeError::new_err(format!(
-            "parameter `{name}`: expected a number, a 3-vector or a 3x3 matrix, not {}",
-            value.get_type().name()?
-        )));
-    }
+    no_bool_or_complex(&format!("parameter `{name}`"), value, 2)?;
     if let Ok(x) = value.extract::<f64>() {
         return Ok(Param::Scalar(x));
     }
@@ -117,6 +130,7 @@ pub fn param_to_py(py: Python<'_>, p: &Param) -> Py<PyAny> {
 
 /// A 3-vector from a Python sequence or numpy array.
 pub fn vector3(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Vector3<f64>> {
+    no_bool_or_complex(name, value, 1)?;
     let v: Vec<f64> = value
         .extract()
         .map_err(|_| RouthError::new_err(format!("{name}: expected a sequence of 3 numbers")))?;

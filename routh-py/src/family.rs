@@ -5,7 +5,7 @@
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
 use crate::convert::{routh_err, vector3, RouthError};
-use crate::guard::detached;
+use crate::guard::cooperative;
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::results::{Atlas, Diagram};
@@ -70,6 +70,8 @@ struct PyFamily {
     fallback: routh::Model,
     error: Mutex<Option<PyErr>>,
     progress: Option<Progress>,
+    /// Set on Ctrl-C: every later evaluation returns a NaN momentum, which stops the work.
+    cancel: std::sync::atomic::AtomicBool,
 }
 
 impl PyFamily {
@@ -96,6 +98,7 @@ impl PyFamily {
             fallback: m,
             error: Mutex::new(None),
             progress,
+            cancel: std::sync::atomic::AtomicBool::new(false),
         })
     }
 
@@ -106,7 +109,7 @@ impl PyFamily {
     /// Evaluates the family at `args` from a Rust thread without the GIL: takes the GIL for
     /// the Python call only.
     fn call(&self, args: (f64, f64), two: bool) -> (routh::Model, f64) {
-        if self.failed() {
+        if self.failed() || self.cancel.load(std::sync::atomic::Ordering::Relaxed) {
             return (self.fallback.clone(), f64::NAN);
         }
         if let Some(p) = &self.progress {
@@ -201,7 +204,7 @@ pub fn bifurcation_diagram(
         nonlinear,
     });
     let fam = PyFamily::new(py, family, (range.0, 0.0), false, progress)?;
-    let r = detached(py, || {
+    let r = cooperative(py, &fam.cancel, || {
         routh::bifurcation_diagram(|s| fam.call((s, 0.0), false), range, &opts)
     });
     let r = match r {
@@ -266,7 +269,7 @@ pub fn stability_atlas(
     }
     check_grid(py, opts.nx, opts.ny)?;
     let fam = PyFamily::new(py, family, (x.0, y.0), true, progress)?;
-    let r = detached(py, || {
+    let r = cooperative(py, &fam.cancel, || {
         routh::stability_atlas(|a, b| fam.call((a, b), true), g, x, y, &opts)
     });
     let r = match r {

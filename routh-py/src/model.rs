@@ -2,7 +2,7 @@
 
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3};
 use crate::family::{continuation_options, ContinuationKw};
-use crate::guard::detached;
+use crate::guard::{cooperative, detached, interruptible};
 use crate::latex::{aligned, LatexFormulas};
 use crate::nonlinear::NonlinearReport;
 use crate::progress::Progress;
@@ -177,10 +177,10 @@ impl Model {
         Ok(self.get()?.lagrangian_text().to_string())
     }
 
-    /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector; the formula
-    /// is evaluated as written, so off the unit sphere it is not the energy of a motion).
-    /// Raises `RouthError` for a non-finite input (kind "NonFinite") or where the formula has
-    /// no finite value, e.g. γ = 0 where γᵀJγ vanishes (kind "NonFiniteModel").
+    /// The amended potential U_r(γ, p_ψ) (42) at a unit vertical `gamma` (| |γ| − 1 | ≤ 1e-8,
+    /// the tolerance of `simulate` and `classify`). Raises `RouthError` for a non-finite input
+    /// (kind "NonFinite"), a γ off the unit sphere (kind "NonUnitGamma") or where the formula
+    /// has no finite value (kind "NonFiniteModel").
     ///
     /// >>> top.amended_potential([0, 0, 1], 2.0)      # p²/(2C) + mgl
     /// 2.6
@@ -200,6 +200,16 @@ impl Model {
         if !p_psi.is_finite() {
             return Err(routh_err(py, &non_finite("p_psi", p_psi)));
         }
+        let tol = routh::validate::UNIT_GAMMA_TOL;
+        let norm = g.norm();
+        if !((norm - 1.0).abs() <= tol) {
+            let e = routh::RouthError::NonUnitGamma {
+                what: "gamma",
+                norm,
+                tol,
+            };
+            return Err(routh_err(py, &e));
+        }
         let u = self.get()?.amended_potential(&g, p_psi);
         if !u.is_finite() {
             let e = routh::RouthError::NonFiniteModel {
@@ -217,8 +227,8 @@ impl Model {
     /// >>> [m.gamma for m in top.steady_motions(3.0)]
     fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
         let m = self.get()?;
-        let v =
-            detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
+        let v = interruptible(py, move || routh::steady_motions(&m, p_psi))?
+            .map_err(|e| routh_err(py, &e))?;
         Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect())
     }
 
@@ -228,7 +238,8 @@ impl Model {
     fn classify(&self, py: Python<'_>, motion: &SteadyMotion) -> PyResult<StabilityReport> {
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r = detached(py, || routh::classify(&m, &s))?.map_err(|e| routh_err(py, &e))?;
+        let r =
+            interruptible(py, move || routh::classify(&m, &s))?.map_err(|e| routh_err(py, &e))?;
         Ok(StabilityReport::new(py, &r))
     }
 
@@ -249,7 +260,7 @@ impl Model {
         let axis = vector3("axis", axis)?;
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r = detached(py, || routh::classify_circle(&m, &s, &axis))?
+        let r = interruptible(py, move || routh::classify_circle(&m, &s, &axis))?
             .map_err(|e| routh_err(py, &e))?;
         CircleReport::new(py, &r)
     }
@@ -259,9 +270,11 @@ impl Model {
     /// criteria at 1:2 and 1:3, as a `NonlinearReport`. Tolerances default to the Rust
     /// `NonlinearOptions::default()`.
     ///
-    /// >>> m = top.steady_motions(2.2)[0]     # sleeping, gyroscopically stabilised
-    /// >>> top.nonlinear_stability(m).verdict
+    /// >>> m = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])  # sleeping (γ₃ = 1)
+    /// >>> top.nonlinear_stability(m).verdict   # gyroscopically stabilised: Arnold–Moser
     /// 'lyapunov_stable'
+    /// >>> top.nonlinear_stability(top.steady_motions(2.2)[0]).verdict   # the hanging top
+    /// 'secularly_stable'
     #[pyo3(signature = (motion, *, resonance_tol=None, arnold_tol=None, criterion_tol=None))]
     fn nonlinear_stability(
         &self,
@@ -283,7 +296,7 @@ impl Model {
         }
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r = detached(py, || routh::nonlinear_stability(&m, &s, &opts))?
+        let r = interruptible(py, move || routh::nonlinear_stability(&m, &s, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         NonlinearReport::new(py, &r)
     }
@@ -329,11 +342,16 @@ impl Model {
         });
         let m = self.get()?;
         let bar = Progress::new(py, progress, "steady-motion evaluations")?;
-        let d = detached(py, || {
+        // Ctrl-C: every later evaluation gets a NaN momentum, which stops the diagram.
+        let cancel = std::sync::atomic::AtomicBool::new(false);
+        let d = cooperative(py, &cancel, || {
             routh::bifurcation_diagram(
                 |p| {
                     if let Some(b) = &bar {
                         b.tick();
+                    }
+                    if cancel.load(std::sync::atomic::Ordering::Relaxed) {
+                        return (m.clone(), f64::NAN);
                     }
                     (m.clone(), p)
                 },
@@ -375,7 +393,7 @@ impl Model {
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
         let opts = sim_options(rtol, atol, max_steps, attitude, times);
-        let t = detached(py, || routh::simulate_full(&m, w, g, t_end, &opts))?
+        let t = interruptible(py, move || routh::simulate_full(&m, w, g, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(Trajectory::new(py, &t))
     }
@@ -407,7 +425,7 @@ impl Model {
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
         let opts = sim_options(rtol, atol, max_steps, attitude, times);
-        let t = detached(py, || {
+        let t = interruptible(py, move || {
             routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts)
         })?
         .map_err(|e| routh_err(py, &e))?;
@@ -441,8 +459,10 @@ impl Model {
             refine_iterations: refine_iterations.unwrap_or(d.refine_iterations),
         };
         let m = self.get()?;
-        let c = detached(py, || routh::steady_motions_certified(&m, p_psi, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let c = interruptible(py, move || {
+            routh::steady_motions_certified(&m, p_psi, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         let mut motions = Vec::with_capacity(c.motions.len());
         for cm in &c.motions {
             motions.push(Py::new(

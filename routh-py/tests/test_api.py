@@ -244,3 +244,16 @@ def test_certify_options(top):
     assert sorted(round(m.gamma[2]) for m in c.motions) == [-1, 1]
     short = top.certify(2.2, max_boxes=10)
     assert not short.complete and short.boxes == 10 and short.undecided >= 1
+
+
+def test_nonlinear_stability_docstring_example_is_right(top):
+    """The docstring's example (issue 34): steady_motions(2.2)[0] is the hanging top (secularly
+    stable); the sleeping top is the one with γ₃ = 1, gyroscopically stabilised."""
+    hanging = top.steady_motions(2.2)[0]
+    assert hanging.gamma[2] < -0.99
+    assert top.nonlinear_stability(hanging).verdict == "secularly_stable"
+    sleeping = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])
+    assert sleeping.gamma[2] > 0.99
+    assert top.classify(sleeping).verdict == "gyroscopically_stabilized"
+    assert top.nonlinear_stability(sleeping).verdict == "lyapunov_stable"
+    assert "key=lambda s: s.gamma[2]" in routh.Model.nonlinear_stability.__doc__

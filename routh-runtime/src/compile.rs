@@ -254,6 +254,9 @@ fn analyse(
 ) -> Result<routh_codegen::Model, ModelError> {
     check_nesting(text)?;
     let body: TokenStream = text.parse().map_err(|e: proc_macro2::LexError| {
+        if let Some(err) = unbalanced(text) {
+            return err;
+        }
         let s = e.span();
         let (a, b) = (s.start(), s.end());
         let width = if a.line == b.line {
@@ -262,7 +265,7 @@ fn analyse(
             1
         };
         ModelError::at(
-            format!("the text does not lex as Rust tokens: {e}"),
+            format!("the text cannot be read here ({e}): a Lagrangian is made of numbers, names, `+ - * /`, `.`, brackets, `=` and commas"),
             text,
             a.line,
             a.column + 1,
@@ -312,6 +315,50 @@ fn analyse(
     };
     let di: syn::DeriveInput = syn::parse2(tokens).map_err(|e| to_model_error(&e, text, params))?;
     routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))
+}
+
+/// The first unbalanced bracket of `text`, as an error at it (`(` never closed, `)` closing
+/// nothing or another kind of bracket), or `None` when the brackets balance. Strings and
+/// comments are not skipped: it explains a lexing error, which they would be too.
+fn unbalanced(text: &str) -> Option<ModelError> {
+    let mut open: Vec<(char, usize)> = Vec::new();
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' | '{' => open.push((c, i)),
+            ')' | ']' | '}' => {
+                let want = match c {
+                    ')' => '(',
+                    ']' => '[',
+                    _ => '{',
+                };
+                match open.pop() {
+                    Some((o, _)) if o == want => {}
+                    Some((o, at)) => {
+                        let (line, column) = crate::error::line_column(text, at);
+                        return Some(ModelError::at_byte(
+                            format!(
+                                "`{c}` does not close the `{o}` at line {line}, column {column}"
+                            ),
+                            text,
+                            i,
+                            i + 1,
+                        ));
+                    }
+                    None => {
+                        return Some(ModelError::at_byte(
+                            format!("`{c}` closes no bracket"),
+                            text,
+                            i,
+                            i + 1,
+                        ))
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    open.pop()
+        .map(|(o, at)| ModelError::at_byte(format!("`{o}` is never closed"), text, at, at + 1))
 }
 
 /// Refuses texts nested deeper than [`MAX_NESTING`], at the first bracket too deep.

@@ -67,8 +67,30 @@ fn syntax_and_lexing_errors() {
     let e = err(&format!("{TOP} +"), &top_params());
     assert_eq!((e.line, e.column), (2, 28), "{e}");
     let e = err("kinetic = 0.5 * omega.dot(omega),\npotential = \"a", &[]);
-    assert!(e.message.contains("does not lex"), "{e}");
+    assert!(e.message.contains("cannot be read"), "{e}");
+    assert!(!e.message.contains("Rust"), "{e}");
     assert_eq!((e.line, e.column), (2, 13));
+    // Unbalanced brackets and a misspelt item, in the language's own words (issue 34).
+    let e = err("kinetic = 0.5 * omega.dot(omega,\npotential = gamma.z", &[]);
+    assert_eq!(e.message, "`(` is never closed", "{e}");
+    assert_eq!((e.line, e.column), (1, 26));
+    let e = err(
+        "kinetic = 0.5 * omega.dot(omega)),\npotential = gamma.z",
+        &[],
+    );
+    assert_eq!(e.message, "`)` closes no bracket", "{e}");
+    let e = err(
+        "kinetic = 0.5 * omega.dot(omega],\npotential = gamma.z",
+        &[],
+    );
+    assert!(e.message.starts_with("`]` does not close the `(`"), "{e}");
+    let e = err(
+        "kinetik = 0.5 * omega.dot(omega),\npotential = gamma.z",
+        &[],
+    );
+    assert!(e.message.contains("did you mean `kinetic`?"), "{e}");
+    assert!(!e.message.contains("crate"), "{e}");
+    assert_eq!((e.line, e.column), (1, 1));
     let e = err("potential = mass * gamma.z", &[("mass", 1.0.into())]);
     assert!(e.message.contains("missing `kinetic"), "{e}");
     assert_eq!((e.line, e.column), (1, 1));

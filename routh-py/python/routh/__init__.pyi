@@ -107,7 +107,8 @@ class Event:
 class NonlinearReport:
     """The nonlinear stability of a steady motion (Birkhoff normal form, Arnold–Moser).
 
-    >>> r = top.nonlinear_stability(top.steady_motions(2.2)[0])
+    >>> m = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])   # the sleeping top (γ₃ = 1)
+    >>> r = top.nonlinear_stability(m)
     >>> r.verdict, r.arnold_determinant, r.resonance
     """
     verdict: NonlinearVerdict
