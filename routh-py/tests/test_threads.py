@@ -112,9 +112,10 @@ work = {
     "simulate": lambda: m.simulate([0.3, 1.0, 5.0], [0.6, 0.0, 0.8], 1e9, max_steps=2**62),
     "atlas": lambda: routh.stability_atlas(lambda x, y: (m.with_params(mgl=x), y), [0, 0, 1],
                                            (0.5, 2.0), (0.5, 5.0), nx=2000, ny=2000),
-    "diagram": lambda: m.bifurcation_diagram((0.0, 1e6), max_step=1e-4, max_steps=2**62),
-    "family": lambda: routh.bifurcation_diagram(lambda s: (m, s), (0.0, 1e6), max_step=1e-4,
-                                                max_steps=2**62),
+    "diagram": lambda: m.bifurcation_diagram((0.0, 1e6), initial_step=1e-6, min_step=1e-9,
+                                              max_step=1e-5, max_steps=2**62),
+    "family": lambda: routh.bifurcation_diagram(lambda s: (m, s), (0.0, 1e6), initial_step=1e-6,
+                                                min_step=1e-9, max_step=1e-5, max_steps=2**62),
 }[sys.argv[1]]
 threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
 t0 = time.perf_counter()
