@@ -221,6 +221,24 @@ fn diagram_over_momentum_finds_the_two_classical_bounds() {
     assert!(csv.lines().count() > 50, "{csv}");
 }
 
+/// A diagram over a range a few ulps wide has one branch per steady motion, not three (one per
+/// seed; issue 34).
+#[test]
+fn a_diagram_over_a_tiny_range_has_each_branch_once() {
+    let steady = json(&routh(&["steady", TOP, "-p", "1.9", "--json"]));
+    let n = steady.as_array().unwrap().len();
+    let v = json(&routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "1.9..1.900000000000001",
+        "--json",
+    ]));
+    let branches = v["branches"].as_array().unwrap();
+    assert!(n >= 2, "{steady}");
+    assert_eq!(branches.len(), n, "{v}");
+}
+
 #[test]
 fn diagram_over_a_parameter() {
     // At p = 3 the secular bound p² = mglC²/(C − A₁) in C (A₁ = mgl = 1): C² − 9C + 9 = 0,
