@@ -266,7 +266,8 @@ class Model:
         """L, ψ̇, R, U_r, A, G, C in LaTeX."""
     def _repr_latex_(self) -> str:
         """R and U_r typeset (Jupyter)."""
-    def amended_potential(self, gamma: Vec3, p_psi: float) -> float: ...
+    def amended_potential(self, gamma: Vec3, p_psi: float) -> float:
+        """U_r(γ, p_ψ) at a unit γ (| |γ| − 1 | ≤ 1e-8, as `simulate`; else RouthError)."""
     def steady_motions(self, p_psi: float) -> list[SteadyMotion]: ...
     def classify(self, motion: SteadyMotion) -> StabilityReport: ...
     def classify_circle(self, motion: SteadyMotion, axis: Vec3) -> CircleReport:
