@@ -202,7 +202,7 @@ impl Model {
         }
         let tol = routh::validate::UNIT_GAMMA_TOL;
         let norm = g.norm();
-        if !((norm - 1.0).abs() <= tol) {
+        if (norm - 1.0).abs() > tol {
             let e = routh::RouthError::NonUnitGamma {
                 what: "gamma",
                 norm,
