@@ -227,8 +227,8 @@ impl Model {
     /// >>> [m.gamma for m in top.steady_motions(3.0)]
     fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
         let m = self.get()?;
-        let v = interruptible(py, move || routh::steady_motions(&m, p_psi))?
-            .map_err(|e| routh_err(py, &e))?;
+        let v =
+            detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
         Ok(v.into_iter().map(|inner| SteadyMotion { inner }).collect())
     }
 
@@ -238,8 +238,7 @@ impl Model {
     fn classify(&self, py: Python<'_>, motion: &SteadyMotion) -> PyResult<StabilityReport> {
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r =
-            interruptible(py, move || routh::classify(&m, &s))?.map_err(|e| routh_err(py, &e))?;
+        let r = detached(py, || routh::classify(&m, &s))?.map_err(|e| routh_err(py, &e))?;
         Ok(StabilityReport::new(py, &r))
     }
 
@@ -260,7 +259,7 @@ impl Model {
         let axis = vector3("axis", axis)?;
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r = interruptible(py, move || routh::classify_circle(&m, &s, &axis))?
+        let r = detached(py, || routh::classify_circle(&m, &s, &axis))?
             .map_err(|e| routh_err(py, &e))?;
         CircleReport::new(py, &r)
     }
@@ -296,7 +295,7 @@ impl Model {
         }
         let m = self.get()?;
         let s = motion.inner.clone();
-        let r = interruptible(py, move || routh::nonlinear_stability(&m, &s, &opts))?
+        let r = detached(py, || routh::nonlinear_stability(&m, &s, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         NonlinearReport::new(py, &r)
     }

@@ -454,7 +454,7 @@ pub fn steady_motions_certified<M: Routhian>(
         return Err(RouthError::InvalidOption {
             what: "CertifyOptions::min_width",
             reason: format!(
-                "{} is not in [{MIN_WIDTH:e}, 2): a box is split down to min_width·1e-6 near a \
+                "{:e} is not in [{MIN_WIDTH:e}, 2): a box is split down to min_width·1e-6 near a \
                  regular zero, and chart coordinates (up to 1) cannot resolve boxes narrower \
                  than about 1e-15",
                 opts.min_width
