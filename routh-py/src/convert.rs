@@ -84,6 +84,20 @@ fn no_bool_or_complex(what: &str, value: &Bound<'_, PyAny>, depth: usize) -> PyR
     Ok(())
 }
 
+/// A real-number argument: a float, an int or anything with `__float__`, but not a `bool` or a
+/// complex number (a `TypeError`: Python would turn `True` into 1.0 silently).
+#[derive(Clone, Copy, Debug)]
+pub struct Real(pub f64);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Real {
+    type Error = PyErr;
+    fn extract(obj: pyo3::Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        let any: &Bound<'py, PyAny> = &obj;
+        no_bool_or_complex("argument", any, 0)?;
+        Ok(Real(any.extract::<f64>()?))
+    }
+}
+
 /// A parameter value: a number, a 3-sequence or a 3×3 nested sequence (numpy arrays included).
 /// A `bool` or a complex number is a `TypeError`; NaN and infinite values are refused by the
 /// model (a `ModelError` naming the parameter).

@@ -4,7 +4,7 @@
 //! it to call Python. A Python exception raised by the family stops the work (every later
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
-use crate::convert::{routh_err, vector3, RouthError};
+use crate::convert::{routh_err, vector3, Real, RouthError};
 use crate::guard::cooperative;
 use crate::model::Model;
 use crate::progress::Progress;
@@ -178,7 +178,7 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
 pub fn bifurcation_diagram(
     py: Python<'_>,
     family: Py<PyAny>,
-    range: (f64, f64),
+    range: (Real, Real),
     initial_step: Option<f64>,
     max_step: Option<f64>,
     min_step: Option<f64>,
@@ -191,6 +191,7 @@ pub fn bifurcation_diagram(
     nonlinear: bool,
     progress: bool,
 ) -> PyResult<Diagram> {
+    let range = (range.0 .0, range.1 .0);
     let opts = continuation_options(ContinuationKw {
         initial_step,
         max_step,
@@ -241,8 +242,8 @@ pub fn stability_atlas(
     py: Python<'_>,
     family: Py<PyAny>,
     gamma_guess: &Bound<'_, PyAny>,
-    x: (f64, f64),
-    y: (f64, f64),
+    x: (Real, Real),
+    y: (Real, Real),
     nx: Option<usize>,
     ny: Option<usize>,
     curve_tol: Option<f64>,
@@ -250,6 +251,7 @@ pub fn stability_atlas(
     max_curve_points: Option<usize>,
     progress: bool,
 ) -> PyResult<Atlas> {
+    let (x, y) = ((x.0 .0, x.1 .0), (y.0 .0, y.1 .0));
     let g = vector3("gamma_guess", gamma_guess)?;
     let mut opts = AtlasOptions::default();
     if let Some(v) = nx {

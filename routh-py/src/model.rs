@@ -1,6 +1,6 @@
 //! `routh.Model`: the run-time model and the analyses on it.
 
-use crate::convert::{model_err, param, param_to_py, routh_err, vector3};
+use crate::convert::{model_err, param, param_to_py, routh_err, vector3, Real};
 use crate::family::{continuation_options, ContinuationKw};
 use crate::guard::{cooperative, detached, interruptible};
 use crate::latex::{aligned, LatexFormulas};
@@ -188,8 +188,9 @@ impl Model {
         &self,
         py: Python<'_>,
         gamma: &Bound<'_, PyAny>,
-        p_psi: f64,
+        p_psi: Real,
     ) -> PyResult<f64> {
+        let p_psi = p_psi.0;
         use routh::Routhian;
         let g = vector3("gamma", gamma)?;
         let non_finite =
@@ -225,7 +226,8 @@ impl Model {
     /// U_r on the sphere |γ| = 1, as a list of `SteadyMotion`.
     ///
     /// >>> [m.gamma for m in top.steady_motions(3.0)]
-    fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
+    fn steady_motions(&self, py: Python<'_>, p_psi: Real) -> PyResult<Vec<SteadyMotion>> {
+        let p_psi = p_psi.0;
         let m = self.get()?;
         let v =
             detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
@@ -314,7 +316,7 @@ impl Model {
     fn bifurcation_diagram(
         &self,
         py: Python<'_>,
-        range: (f64, f64),
+        range: (Real, Real),
         initial_step: Option<f64>,
         max_step: Option<f64>,
         min_step: Option<f64>,
@@ -327,6 +329,7 @@ impl Model {
         nonlinear: bool,
         progress: bool,
     ) -> PyResult<Diagram> {
+        let range = (range.0 .0, range.1 .0);
         let opts = continuation_options(ContinuationKw {
             initial_step,
             max_step,
@@ -381,13 +384,14 @@ impl Model {
         py: Python<'_>,
         omega0: &Bound<'_, PyAny>,
         gamma0: &Bound<'_, PyAny>,
-        t_end: f64,
+        t_end: Real,
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
         attitude: bool,
         times: Option<Vec<f64>>,
     ) -> PyResult<Trajectory> {
+        let t_end = t_end.0;
         let w = vector3("omega0", omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
@@ -412,14 +416,15 @@ impl Model {
         py: Python<'_>,
         big_omega0: &Bound<'_, PyAny>,
         gamma0: &Bound<'_, PyAny>,
-        p_psi: f64,
-        t_end: f64,
+        p_psi: Real,
+        t_end: Real,
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
         attitude: bool,
         times: Option<Vec<f64>>,
     ) -> PyResult<ReducedTrajectory> {
+        let (p_psi, t_end) = (p_psi.0, t_end.0);
         let w = vector3("big_omega0", big_omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
@@ -444,12 +449,13 @@ impl Model {
     fn certify(
         &self,
         py: Python<'_>,
-        p_psi: f64,
+        p_psi: Real,
         initial_split: Option<usize>,
         min_width: Option<f64>,
         max_boxes: Option<usize>,
         refine_iterations: Option<usize>,
     ) -> PyResult<Certificate> {
+        let p_psi = p_psi.0;
         let d = CertifyOptions::default();
         let opts = CertifyOptions {
             initial_split: initial_split.unwrap_or(d.initial_split),

@@ -262,3 +262,15 @@ def test_bool_and_complex_are_not_numbers(top):
             top.with_params(inertia=[1.0, bad, 1.0])
     with pytest.raises(TypeError):
         top.steady_motions(1 + 2j)
+
+
+def test_bool_is_not_a_real_argument(top):
+    for call in (lambda: top.steady_motions(True), lambda: top.certify(False),
+                 lambda: top.amended_potential([0, 0, 1], True),
+                 lambda: top.simulate([0, 0, 1], [0, 0, 1], True),
+                 lambda: top.bifurcation_diagram((False, 5.0)),
+                 lambda: routh.stability_atlas(lambda x, y: (top, y), [0, 0, 1], (0, True),
+                                               (0, 1), nx=3, ny=3)):
+        with pytest.raises(TypeError):
+            call()
+    assert len(top.steady_motions(2)) >= 2  # an int is a number
