@@ -16,7 +16,7 @@ create_exception!(
     routh,
     ModelError,
     RouthError,
-    "A mistake in a model's text or parameters; `e.line`, `e.column` locate it (from 1)."
+    "A mistake in a model's text or parameters: `e.message`, and `e.line`, `e.column` (from 1) where it is in the text, None for an error with no place in a text (a value given to `set`, a file that cannot be read)."
 );
 
 /// A Rust `RouthError` as a Python `routh.RouthError` (with `kind`, the variant's name).

@@ -26,10 +26,11 @@ class RouthError(Exception):
     kind: str
 
 class ModelError(RouthError):
-    """A mistake in a model's text or parameters, at `line`, `column` (from 1)."""
+    """A mistake in a model's text or parameters, at `line`, `column` (from 1) in the text, or
+    None for both where it has no place in a text (`set`, `with_params`, a file not read)."""
 
-    line: int
-    column: int
+    line: int | None
+    column: int | None
     message: str
 
 class SteadyMotion:
