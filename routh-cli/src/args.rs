@@ -15,11 +15,39 @@ pub fn finite(s: &str) -> Result<f64, String> {
     }
 }
 
+/// A finite number above 0 (a time, an absolute tolerance).
+pub fn positive(s: &str) -> Result<f64, String> {
+    let x = finite(s)?;
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        Err(format!("`{s}` must be above 0"))
+    }
+}
+
+/// A relative tolerance: above 0 and below 1.
+pub fn relative_tolerance(s: &str) -> Result<f64, String> {
+    let x = finite(s)?;
+    if x > 0.0 && x < 1.0 {
+        Ok(x)
+    } else {
+        Err(format!(
+            "`{s}` is not a relative tolerance (above 0 and below 1, e.g. 1e-10)"
+        ))
+    }
+}
+
 /// A range `LO..HI` of finite numbers with `LO < HI`.
 pub fn range(s: &str) -> Result<(f64, f64), String> {
     let (lo, hi) = s
         .split_once("..")
         .ok_or_else(|| format!("`{s}` is not a range LO..HI"))?;
+    if hi.trim_start().starts_with('.') {
+        // `0...1` would read as 0..0.1.
+        return Err(format!(
+            "`{s}` is not a range LO..HI: two dots between the bounds (write a bound `.5` as `0.5`)"
+        ));
+    }
     let (lo, hi) = (finite(lo)?, finite(hi)?);
     if lo < hi {
         Ok((lo, hi))

@@ -6,7 +6,7 @@ use crate::error::CliError;
 use crate::table::Table;
 use routh::export::verdict_name;
 use routh::plot::{stability_atlas_svg, PlotOptions};
-use routh::{stability_atlas, AtlasOptions, Model, ModelError, Vector3};
+use routh::{stability_atlas, AtlasOptions, Model, ModelError, StabilityAtlas, Vector3};
 use std::cell::RefCell;
 
 /// The model and momentum at `(x, y)`: each axis is `momentum` or a scalar parameter.
@@ -79,6 +79,7 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
     if let Some(e) = failure.into_inner() {
         return Err(CliError::Compute(describe(&e, None)));
     }
+    let mut files = crate::files::Outputs::new();
     if let Some(path) = &a.svg {
         let [gx, gy, gz] = a.gamma;
         let opts = PlotOptions {
@@ -90,19 +91,36 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
             ),
             ..PlotOptions::default()
         };
-        stability_atlas_svg(&result, path, &opts)?;
+        files.write(path, |tmp| stability_atlas_svg(&result, tmp, &opts))?;
     }
+    let text = render(a, &result, &names)?;
+    files.commit()?;
+    Ok(text)
+}
+
+/// The atlas as asked: JSON, CSV or two tables (the verdicts tallied, the boundary curves).
+fn render(a: &Atlas, result: &StabilityAtlas, names: &[&str]) -> Result<String, CliError> {
     if a.output.json {
-        return Ok(serde_json::to_string_pretty(&result)? + "\n");
+        return Ok(serde_json::to_string_pretty(result)? + "\n");
     }
     if a.output.csv {
         return Ok(result.to_csv());
     }
     let mut counts = Table::new(&["verdict", "cells"]);
-    let all = result.verdicts.iter().flatten();
+    let lost = result
+        .lost
+        .iter()
+        .flatten()
+        .chain(std::iter::repeat(&false));
     let mut tally: Vec<(String, usize)> = Vec::new();
-    for v in all {
-        let name = v.map_or("no steady motion", verdict_name).to_string();
+    for (v, &gone) in result.verdicts.iter().flatten().zip(lost) {
+        let name = match v {
+            Some(v) => verdict_name(*v),
+            // The continuation stalled away from a fold: nothing is known there.
+            None if gone => "lost",
+            None => "no steady motion",
+        }
+        .to_string();
         match tally.iter_mut().find(|(n, _)| *n == name) {
             Some((_, k)) => *k += 1,
             None => tally.push((name, 1)),
@@ -123,8 +141,12 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
             fmt(b.points.iter().map(|p| p.1).reduce(f64::max)),
         ]);
     }
+    let stop = result
+        .stop
+        .as_ref()
+        .map_or(String::new(), |r| format!("stopped early: {r}\n"));
     Ok(format!(
-        "atlas over {} × {} ({} × {} cells)\n{}\n{} boundary curve(s)\n{}",
+        "atlas over {} × {} ({} × {} cells)\n{stop}{}\n{} boundary curve(s)\n{}",
         names[0],
         names[1],
         result.x.len(),

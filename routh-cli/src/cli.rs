@@ -182,7 +182,7 @@ pub struct Simulate {
     #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
     pub gamma: [f64; 3],
     /// The final time.
-    #[arg(long, value_parser = args::finite)]
+    #[arg(long, value_parser = args::positive, allow_hyphen_values = true)]
     pub t_end: f64,
     /// Integrate the reduced (Routh) equations at `--momentum P` instead of the full ones.
     #[arg(long, requires = "momentum")]
@@ -191,10 +191,10 @@ pub struct Simulate {
     #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
     pub momentum: Option<f64>,
     /// Relative tolerance of the integrator.
-    #[arg(long, value_parser = args::finite)]
+    #[arg(long, value_parser = args::relative_tolerance, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
     /// Absolute tolerance of the integrator.
-    #[arg(long, value_parser = args::finite)]
+    #[arg(long, value_parser = args::positive, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Output format (`--csv` and `--json`: every recorded step).
     #[command(flatten)]

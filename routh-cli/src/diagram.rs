@@ -53,6 +53,7 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
         }
     };
     let stem = crate::args::model_name(&d.model);
+    let mut files = crate::files::Outputs::new();
     if let Some(path) = &d.svg {
         let (axis, title) = match &d.parameter {
             None => (
@@ -72,7 +73,7 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             title,
             ..PlotOptions::default()
         };
-        bifurcation_diagram_svg(&result, path, &opts)?;
+        files.write(path, |tmp| bifurcation_diagram_svg(&result, tmp, &opts))?;
     }
     if let Some(path) = &d.energy_momentum_svg {
         let opts = PlotOptions {
@@ -80,15 +81,17 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             title: format!("{stem}: energy–momentum diagram"),
             ..PlotOptions::default()
         };
-        energy_momentum_svg(&result, path, &opts)?;
+        files.write(path, |tmp| energy_momentum_svg(&result, tmp, &opts))?;
     }
-    if d.output.json {
-        return Ok(serde_json::to_string_pretty(&result)? + "\n");
-    }
-    if d.output.csv {
-        return Ok(result.to_csv());
-    }
-    Ok(render(&result, &x_label))
+    let text = if d.output.json {
+        serde_json::to_string_pretty(&result)? + "\n"
+    } else if d.output.csv {
+        result.to_csv()
+    } else {
+        render(&result, &x_label)
+    };
+    files.commit()?;
+    Ok(text)
 }
 
 /// The diagram as two tables: its branches, then its events.

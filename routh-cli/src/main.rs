@@ -9,6 +9,7 @@ mod cli;
 mod commands;
 mod diagram;
 mod error;
+mod files;
 mod nonlinear;
 mod orbits;
 mod progress;

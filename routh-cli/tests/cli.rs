@@ -140,6 +140,13 @@ fn classify_with_an_axis_decides_the_circle_of_the_lagrange_top() {
         "{}",
         stdout(&o)
     );
+    // The axis at any scale is the same axis (issue 34).
+    for axis in ["0,0,1e160", "0,0,1e-200", "0,0,1e-310"] {
+        let w = json(&routh(&[
+            "classify", TOP, "-p", "3", "--axis", axis, "--json",
+        ]));
+        assert_eq!(w, v, "--axis {axis}");
+    }
     // e₁ is not an axis of symmetry of the top: an error, not a verdict.
     let o = routh(&["classify", TOP, "-p", "3", "--axis", "1,0,0"]);
     assert!(!o.status.success());
@@ -212,6 +219,24 @@ fn diagram_over_momentum_finds_the_two_classical_bounds() {
     );
     let csv = stdout(&routh(&["diagram", TOP, "--momentum", "0..5", "--csv"]));
     assert!(csv.lines().count() > 50, "{csv}");
+}
+
+/// A diagram over a range a few ulps wide has one branch per steady motion, not three (one per
+/// seed; issue 34).
+#[test]
+fn a_diagram_over_a_tiny_range_has_each_branch_once() {
+    let steady = json(&routh(&["steady", TOP, "-p", "1.9", "--json"]));
+    let n = steady.as_array().unwrap().len();
+    let v = json(&routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "1.9..1.900000000000001",
+        "--json",
+    ]));
+    let branches = v["branches"].as_array().unwrap();
+    assert!(n >= 2, "{steady}");
+    assert_eq!(branches.len(), n, "{v}");
 }
 
 #[test]
@@ -312,6 +337,36 @@ fn bad_input_exits_with_code_2_and_names_the_problem() {
         "not a finite number",
     );
     rejects(&["diagram", TOP, "--momentum", "3"], "not a range");
+    // Issue 34: `0...1` is not 0..0.1; negative numbers reach the value's own check (not
+    // clap's tip about `--`); a relative tolerance above 1 is refused.
+    rejects(&["diagram", TOP, "--momentum", "0...1"], "two dots");
+    let sim = ["simulate", TOP, "--omega", "0,0,1", "--gamma", "0,0,1"];
+    let with = |extra: &[&'static str]| -> Vec<&'static str> {
+        sim.iter().chain(extra).copied().collect()
+    };
+    rejects(&with(&["--t-end", "-1"]), "`-1` must be above 0");
+    rejects(
+        &with(&["--t-end", "1", "--rtol", "2"]),
+        "not a relative tolerance",
+    );
+    rejects(
+        &with(&["--t-end", "1", "--atol", "-1e-9"]),
+        "`-1e-9` must be above 0",
+    );
+    // A NaN or infinite parameter in the model file: exit code 2, naming it.
+    let bad = std::env::temp_dir().join(format!("routh-cli-nan-{}.toml", std::process::id()));
+    let src = std::fs::read_to_string(TOP).unwrap();
+    let line = src
+        .lines()
+        .find(|l| l.trim_start().starts_with("mass"))
+        .expect("a mass parameter")
+        .to_string();
+    std::fs::write(&bad, src.replace(&line, "mass = nan")).unwrap();
+    rejects(
+        &["steady", bad.to_str().unwrap(), "-p", "1"],
+        "parameter `mass` is NaN",
+    );
+    std::fs::remove_file(&bad).ok();
     rejects(
         &[
             "diagram",
@@ -527,10 +582,73 @@ fn an_unwritable_figure_is_a_failed_run_exit_code_1() {
     ]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(
-        stderr(&o).contains("cannot draw the figure"),
+        stderr(&o).contains("cannot write /nonexistent-dir/routh/d.svg"),
         "{}",
         stderr(&o)
     );
+}
+
+/// A run that fails while writing its figures (the second cannot be written) leaves the first
+/// figure's old file byte-identical and no temporary file beside it: all or none.
+#[test]
+fn a_run_that_fails_while_writing_leaves_the_old_files_as_they_were() {
+    let dir = std::env::temp_dir().join(format!("routh-cli-keep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let old = dir.join("old.svg");
+    let before = b"<svg>the figure of yesterday</svg>\n".to_vec();
+    std::fs::write(&old, &before).unwrap();
+    let o = routh(&[
+        "diagram",
+        TOP,
+        "--momentum",
+        "0..5",
+        "--svg",
+        old.to_str().unwrap(),
+        "--energy-momentum-svg",
+        "/nonexistent-dir/routh/em.svg",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("/nonexistent-dir/routh/em.svg"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(
+        std::fs::read(&old).unwrap(),
+        before,
+        "the old figure was changed"
+    );
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(
+        left,
+        vec![std::ffi::OsString::from("old.svg")],
+        "temporaries left"
+    );
+    // A target that is a directory: the figure is drawn to a temporary, the rename fails, the
+    // directory is untouched and named.
+    let o = routh(&[
+        "atlas",
+        TOP,
+        "--x",
+        "mass=0.5..1.5",
+        "--y",
+        "momentum=0..5",
+        "--nx",
+        "3",
+        "--ny",
+        "3",
+        "--gamma",
+        "0,0,1",
+        "--svg",
+        dir.to_str().unwrap(),
+    ]);
+    assert_ne!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains(dir.to_str().unwrap()), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&old).unwrap(), before);
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Arnold's determinant D of the upright Lagrange top A₁ = 1, C = 1.25, mgl = 1 at momentum

@@ -292,7 +292,7 @@ impl Parse for Item {
         let key: syn::Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
-                "expected an item: `kinetic = EXPR`, `linear = EXPR`, `potential = EXPR`, `let NAME = EXPR` or `crate = \"path\"`",
+                "expected an item: `kinetic = EXPR`, `linear = EXPR`, `potential = EXPR` or `let NAME = EXPR`",
             )
         })?;
         let term = match key.to_string().as_str() {
@@ -300,12 +300,22 @@ impl Parse for Item {
             "linear" => Term::Linear,
             "potential" => Term::Potential,
             other => {
+                let items =
+                    "`kinetic = EXPR`, `linear = EXPR`, `potential = EXPR` or `let NAME = EXPR`";
+                let close = ["kinetic", "linear", "potential", "let"]
+                    .into_iter()
+                    .map(|k| (edit_distance(other, k), k))
+                    .min()
+                    .filter(|&(d, k)| d <= 2 && d < k.len());
                 return Err(syn::Error::new(
                     key.span(),
-                    format!(
-                        "unknown item `{other}`: expected `kinetic`, `linear`, `potential`, `let NAME = EXPR` or `crate`"
-                    ),
-                ))
+                    match close {
+                        Some((_, k)) => format!(
+                            "unknown item `{other}`: did you mean `{k}`? (an item is {items})"
+                        ),
+                        None => format!("unknown item `{other}`: expected {items}"),
+                    },
+                ));
             }
         };
         let eq: Option<syn::Token![=]> = input.parse()?;
@@ -319,4 +329,20 @@ impl Parse for Item {
         let _ = expr.span();
         Ok(Item::Term { term, key, expr })
     }
+}
+
+/// The Levenshtein distance between `a` and `b` (in characters): for a did-you-mean.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
 }

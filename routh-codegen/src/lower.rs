@@ -352,19 +352,7 @@ impl Lowerer<'_> {
                 }
                 _ => self.err(e, "unsupported unary operator: only `-` is allowed"),
             },
-            E::Binary(b) => {
-                let l = self.expr(&b.left);
-                let r = self.expr(&b.right);
-                let (l, r) = (l?, r?);
-                let res = match b.op {
-                    syn::BinOp::Add(_) => shape::add(&mut self.g, &l, &r),
-                    syn::BinOp::Sub(_) => shape::sub(&mut self.g, &l, &r),
-                    syn::BinOp::Mul(_) => shape::mul(&mut self.g, &l, &r),
-                    syn::BinOp::Div(_) => shape::div(&mut self.g, &l, &r),
-                    _ => return self.err(b.op, "unsupported operator: the Lagrangian uses `+`, `-`, `*` and `/`"),
-                };
-                self.shaped(e, res)
-            }
+            E::Binary(_) => self.binary_chain(e),
             E::MethodCall(m) => self.method(e, m),
             E::Field(f) => {
                 // `self.name` is the field `name`; `v.x`, `v.y`, `v.z` are components.
@@ -413,6 +401,44 @@ impl Lowerer<'_> {
                 "unsupported expression: a Lagrangian is built from literals, names, `+ - * /`, unary `-`, methods, components, `diag`, `skew` and `grad`",
             ),
         }
+    }
+
+    /// A chain of binary operators `((a ∘ b) ∘ c) ∘ …`, as a flat sum or product parses (left
+    /// deep), lowered by a loop over its left operands: a flat sum of any length costs no stack
+    /// and no nesting depth; only the right operands (the terms) are lowered recursively.
+    fn binary_chain(&mut self, e: &syn::Expr) -> Option<Value> {
+        let mut spine: Vec<&syn::ExprBinary> = Vec::new();
+        let mut first = e;
+        while let syn::Expr::Binary(b) = first {
+            spine.push(b);
+            first = &b.left;
+        }
+        let mut acc = self.expr(first);
+        for b in spine.into_iter().rev() {
+            // Every term is lowered, so that every mistake in the chain is reported.
+            let r = self.expr(&b.right);
+            acc = match (acc, r) {
+                (Some(l), Some(r)) => {
+                    let res = match b.op {
+                        syn::BinOp::Add(_) => shape::add(&mut self.g, &l, &r),
+                        syn::BinOp::Sub(_) => shape::sub(&mut self.g, &l, &r),
+                        syn::BinOp::Mul(_) => shape::mul(&mut self.g, &l, &r),
+                        syn::BinOp::Div(_) => shape::div(&mut self.g, &l, &r),
+                        _ => {
+                            self.err(
+                                b.op,
+                                "unsupported operator: the Lagrangian uses `+`, `-`, `*` and `/`",
+                            );
+                            acc = None;
+                            continue;
+                        }
+                    };
+                    self.shaped(b, res)
+                }
+                _ => None,
+            };
+        }
+        acc
     }
 
     fn arity(

@@ -193,7 +193,9 @@ pub fn classify_circle_with<M: Routhian>(
             system,
         },
     ) = classify_evaluated(model, steady, opts)?;
-    let e = axis
+    // Scaled by its largest component first, so that the axis is the same axis at any scale
+    // (1e160 or 1e-200 times it: its squared norm would overflow or underflow).
+    let e = (axis / axis.amax().max(f64::MIN_POSITIVE))
         .try_normalize(0.0)
         .ok_or_else(|| RouthError::InvalidOption {
             what: "axis",

@@ -16,7 +16,7 @@ create_exception!(
     routh,
     ModelError,
     RouthError,
-    "A mistake in a model's text or parameters; `e.line`, `e.column` locate it (from 1)."
+    "A mistake in a model's text or parameters: `e.message`, and `e.line`, `e.column` (from 1) where it is in the text, None for an error with no place in a text (a value given to `set`, a file that cannot be read)."
 );
 
 /// A Rust `RouthError` as a Python `routh.RouthError` (with `kind`, the variant's name).
@@ -31,18 +31,78 @@ pub fn routh_err(py: Python<'_>, e: &routh::RouthError) -> PyErr {
     err
 }
 
-/// A Rust `ModelError` as a Python `routh.ModelError` (with `line`, `column`, `message`).
+/// The Rust shapes of a message in Python's words (`set("inertia", 2.0)` on a vector).
+fn python_words(s: &str) -> String {
+    s.replace("a Vector3<f64>", "a 3-vector")
+        .replace("a Matrix3<f64>", "a 3x3 matrix")
+        .replace("a f64", "a number")
+}
+
+/// A Rust `ModelError` as a Python `routh.ModelError` (with `line`, `column`, `message`;
+/// `line` and `column` are None for an error about no place in a text: a parameter set by
+/// `set`, a file that cannot be read).
 pub fn model_err(py: Python<'_>, e: &routh::ModelError) -> PyErr {
-    let err = ModelError::new_err(e.to_string());
+    let placed = !e.source_line.is_empty();
+    if !placed {
+        return model_err_unplaced(py, e.message());
+    }
+    let err = ModelError::new_err(python_words(&e.to_string()));
     let v = err.value(py);
     let _ = v.setattr("line", e.line());
     let _ = v.setattr("column", e.column());
-    let _ = v.setattr("message", e.message().to_string());
+    let _ = v.setattr("message", python_words(e.message()));
     err
 }
 
+/// A `routh.ModelError` about no place in a text (`line` and `column` None).
+pub fn model_err_unplaced(py: Python<'_>, message: &str) -> PyErr {
+    let message = python_words(message);
+    let err = ModelError::new_err(message.clone());
+    let v = err.value(py);
+    let _ = v.setattr("line", py.None());
+    let _ = v.setattr("column", py.None());
+    let _ = v.setattr("message", message);
+    err
+}
+
+/// A `TypeError` if `value`, or an element of it down to `depth` levels of lists and tuples,
+/// is a `bool` or a complex number where real numbers are expected (Python would convert
+/// `True` to 1.0 silently).
+fn no_bool_or_complex(what: &str, value: &Bound<'_, PyAny>, depth: usize) -> PyResult<()> {
+    use pyo3::types::{PyBool, PyComplex, PyList, PyTuple};
+    if value.is_instance_of::<PyBool>() || value.is_instance_of::<PyComplex>() {
+        return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+            "{what}: expected real numbers, not {}",
+            value.get_type().name()?
+        )));
+    }
+    if depth > 0 && (value.is_instance_of::<PyList>() || value.is_instance_of::<PyTuple>()) {
+        for x in value.try_iter()? {
+            no_bool_or_complex(what, &x?, depth - 1)?;
+        }
+    }
+    Ok(())
+}
+
+/// A real-number argument: a float, an int or anything with `__float__`, but not a `bool` or a
+/// complex number (a `TypeError`: Python would turn `True` into 1.0 silently).
+#[derive(Clone, Copy, Debug)]
+pub struct Real(pub f64);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Real {
+    type Error = PyErr;
+    fn extract(obj: pyo3::Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        let any: &Bound<'py, PyAny> = &obj;
+        no_bool_or_complex("argument", any, 0)?;
+        Ok(Real(any.extract::<f64>()?))
+    }
+}
+
 /// A parameter value: a number, a 3-sequence or a 3×3 nested sequence (numpy arrays included).
+/// A `bool` or a complex number is a `TypeError`; NaN and infinite values are refused by the
+/// model (a `ModelError` naming the parameter).
 pub fn param(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Param> {
+    no_bool_or_complex(&format!("parameter `{name}`"), value, 2)?;
     if let Ok(x) = value.extract::<f64>() {
         return Ok(Param::Scalar(x));
     }
@@ -56,9 +116,10 @@ pub fn param(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Param> {
             return Ok(Param::Matrix(Matrix3::from_fn(|i, j| rows[i][j])));
         }
     }
-    Err(ModelError::new_err(format!(
-        "parameter `{name}`: expected a number, a 3-vector or a 3x3 matrix"
-    )))
+    Err(model_err_unplaced(
+        value.py(),
+        &format!("parameter `{name}`: expected a number, a 3-vector or a 3x3 matrix"),
+    ))
 }
 
 /// A parameter value as a Python object (float, (3,) or (3, 3) array).
@@ -83,6 +144,7 @@ pub fn param_to_py(py: Python<'_>, p: &Param) -> Py<PyAny> {
 
 /// A 3-vector from a Python sequence or numpy array.
 pub fn vector3(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Vector3<f64>> {
+    no_bool_or_complex(name, value, 1)?;
     let v: Vec<f64> = value
         .extract()
         .map_err(|_| RouthError::new_err(format!("{name}: expected a sequence of 3 numbers")))?;

@@ -4,8 +4,8 @@
 //! it to call Python. A Python exception raised by the family stops the work (every later
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
-use crate::convert::{routh_err, vector3, RouthError};
-use crate::guard::detached;
+use crate::convert::{routh_err, vector3, Real, RouthError};
+use crate::guard::cooperative;
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::results::{Atlas, Diagram};
@@ -70,6 +70,8 @@ struct PyFamily {
     fallback: routh::Model,
     error: Mutex<Option<PyErr>>,
     progress: Option<Progress>,
+    /// Set on Ctrl-C: every later evaluation returns a NaN momentum, which stops the work.
+    cancel: std::sync::atomic::AtomicBool,
 }
 
 impl PyFamily {
@@ -96,6 +98,7 @@ impl PyFamily {
             fallback: m,
             error: Mutex::new(None),
             progress,
+            cancel: std::sync::atomic::AtomicBool::new(false),
         })
     }
 
@@ -106,7 +109,7 @@ impl PyFamily {
     /// Evaluates the family at `args` from a Rust thread without the GIL: takes the GIL for
     /// the Python call only.
     fn call(&self, args: (f64, f64), two: bool) -> (routh::Model, f64) {
-        if self.failed() {
+        if self.failed() || self.cancel.load(std::sync::atomic::Ordering::Relaxed) {
             return (self.fallback.clone(), f64::NAN);
         }
         if let Some(p) = &self.progress {
@@ -175,7 +178,7 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
 pub fn bifurcation_diagram(
     py: Python<'_>,
     family: Py<PyAny>,
-    range: (f64, f64),
+    range: (Real, Real),
     initial_step: Option<f64>,
     max_step: Option<f64>,
     min_step: Option<f64>,
@@ -188,6 +191,7 @@ pub fn bifurcation_diagram(
     nonlinear: bool,
     progress: bool,
 ) -> PyResult<Diagram> {
+    let range = (range.0 .0, range.1 .0);
     let opts = continuation_options(ContinuationKw {
         initial_step,
         max_step,
@@ -201,7 +205,7 @@ pub fn bifurcation_diagram(
         nonlinear,
     });
     let fam = PyFamily::new(py, family, (range.0, 0.0), false, progress)?;
-    let r = detached(py, || {
+    let r = cooperative(py, &fam.cancel, || {
         routh::bifurcation_diagram(|s| fam.call((s, 0.0), false), range, &opts)
     });
     let r = match r {
@@ -238,8 +242,8 @@ pub fn stability_atlas(
     py: Python<'_>,
     family: Py<PyAny>,
     gamma_guess: &Bound<'_, PyAny>,
-    x: (f64, f64),
-    y: (f64, f64),
+    x: (Real, Real),
+    y: (Real, Real),
     nx: Option<usize>,
     ny: Option<usize>,
     curve_tol: Option<f64>,
@@ -247,6 +251,7 @@ pub fn stability_atlas(
     max_curve_points: Option<usize>,
     progress: bool,
 ) -> PyResult<Atlas> {
+    let (x, y) = ((x.0 .0, x.1 .0), (y.0 .0, y.1 .0));
     let g = vector3("gamma_guess", gamma_guess)?;
     let mut opts = AtlasOptions::default();
     if let Some(v) = nx {
@@ -266,7 +271,7 @@ pub fn stability_atlas(
     }
     check_grid(py, opts.nx, opts.ny)?;
     let fam = PyFamily::new(py, family, (x.0, y.0), true, progress)?;
-    let r = detached(py, || {
+    let r = cooperative(py, &fam.cancel, || {
         routh::stability_atlas(|a, b| fam.call((a, b), true), g, x, y, &opts)
     });
     let r = match r {

@@ -1,8 +1,8 @@
 //! `routh.Model`: the run-time model and the analyses on it.
 
-use crate::convert::{model_err, param, param_to_py, routh_err, vector3};
+use crate::convert::{model_err, param, param_to_py, routh_err, vector3, Real};
 use crate::family::{continuation_options, ContinuationKw};
-use crate::guard::detached;
+use crate::guard::{cooperative, detached, interruptible};
 use crate::latex::{aligned, LatexFormulas};
 use crate::nonlinear::NonlinearReport;
 use crate::progress::Progress;
@@ -177,10 +177,10 @@ impl Model {
         Ok(self.get()?.lagrangian_text().to_string())
     }
 
-    /// The amended potential U_r(γ, p_ψ) (42) at a vertical `gamma` (any 3-vector; the formula
-    /// is evaluated as written, so off the unit sphere it is not the energy of a motion).
-    /// Raises `RouthError` for a non-finite input (kind "NonFinite") or where the formula has
-    /// no finite value, e.g. γ = 0 where γᵀJγ vanishes (kind "NonFiniteModel").
+    /// The amended potential U_r(γ, p_ψ) (42) at a unit vertical `gamma` (| |γ| − 1 | ≤ 1e-8,
+    /// the tolerance of `simulate` and `classify`). Raises `RouthError` for a non-finite input
+    /// (kind "NonFinite"), a γ off the unit sphere (kind "NonUnitGamma") or where the formula
+    /// has no finite value (kind "NonFiniteModel").
     ///
     /// >>> top.amended_potential([0, 0, 1], 2.0)      # p²/(2C) + mgl
     /// 2.6
@@ -188,8 +188,9 @@ impl Model {
         &self,
         py: Python<'_>,
         gamma: &Bound<'_, PyAny>,
-        p_psi: f64,
+        p_psi: Real,
     ) -> PyResult<f64> {
+        let p_psi = p_psi.0;
         use routh::Routhian;
         let g = vector3("gamma", gamma)?;
         let non_finite =
@@ -199,6 +200,16 @@ impl Model {
         }
         if !p_psi.is_finite() {
             return Err(routh_err(py, &non_finite("p_psi", p_psi)));
+        }
+        let tol = routh::validate::UNIT_GAMMA_TOL;
+        let norm = g.norm();
+        if (norm - 1.0).abs() > tol {
+            let e = routh::RouthError::NonUnitGamma {
+                what: "gamma",
+                norm,
+                tol,
+            };
+            return Err(routh_err(py, &e));
         }
         let u = self.get()?.amended_potential(&g, p_psi);
         if !u.is_finite() {
@@ -215,7 +226,8 @@ impl Model {
     /// U_r on the sphere |γ| = 1, as a list of `SteadyMotion`.
     ///
     /// >>> [m.gamma for m in top.steady_motions(3.0)]
-    fn steady_motions(&self, py: Python<'_>, p_psi: f64) -> PyResult<Vec<SteadyMotion>> {
+    fn steady_motions(&self, py: Python<'_>, p_psi: Real) -> PyResult<Vec<SteadyMotion>> {
+        let p_psi = p_psi.0;
         let m = self.get()?;
         let v =
             detached(py, || routh::steady_motions(&m, p_psi))?.map_err(|e| routh_err(py, &e))?;
@@ -259,9 +271,11 @@ impl Model {
     /// criteria at 1:2 and 1:3, as a `NonlinearReport`. Tolerances default to the Rust
     /// `NonlinearOptions::default()`.
     ///
-    /// >>> m = top.steady_motions(2.2)[0]     # sleeping, gyroscopically stabilised
-    /// >>> top.nonlinear_stability(m).verdict
+    /// >>> m = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])  # sleeping (γ₃ = 1)
+    /// >>> top.nonlinear_stability(m).verdict   # gyroscopically stabilised: Arnold–Moser
     /// 'lyapunov_stable'
+    /// >>> top.nonlinear_stability(top.steady_motions(2.2)[0]).verdict   # the hanging top
+    /// 'secularly_stable'
     #[pyo3(signature = (motion, *, resonance_tol=None, arnold_tol=None, criterion_tol=None))]
     fn nonlinear_stability(
         &self,
@@ -302,7 +316,7 @@ impl Model {
     fn bifurcation_diagram(
         &self,
         py: Python<'_>,
-        range: (f64, f64),
+        range: (Real, Real),
         initial_step: Option<f64>,
         max_step: Option<f64>,
         min_step: Option<f64>,
@@ -315,6 +329,7 @@ impl Model {
         nonlinear: bool,
         progress: bool,
     ) -> PyResult<Diagram> {
+        let range = (range.0 .0, range.1 .0);
         let opts = continuation_options(ContinuationKw {
             initial_step,
             max_step,
@@ -329,11 +344,16 @@ impl Model {
         });
         let m = self.get()?;
         let bar = Progress::new(py, progress, "steady-motion evaluations")?;
-        let d = detached(py, || {
+        // Ctrl-C: every later evaluation gets a NaN momentum, which stops the diagram.
+        let cancel = std::sync::atomic::AtomicBool::new(false);
+        let d = cooperative(py, &cancel, || {
             routh::bifurcation_diagram(
                 |p| {
                     if let Some(b) = &bar {
                         b.tick();
+                    }
+                    if cancel.load(std::sync::atomic::Ordering::Relaxed) {
+                        return (m.clone(), f64::NAN);
                     }
                     (m.clone(), p)
                 },
@@ -364,18 +384,19 @@ impl Model {
         py: Python<'_>,
         omega0: &Bound<'_, PyAny>,
         gamma0: &Bound<'_, PyAny>,
-        t_end: f64,
+        t_end: Real,
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
         attitude: bool,
         times: Option<Vec<f64>>,
     ) -> PyResult<Trajectory> {
+        let t_end = t_end.0;
         let w = vector3("omega0", omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
         let opts = sim_options(rtol, atol, max_steps, attitude, times);
-        let t = detached(py, || routh::simulate_full(&m, w, g, t_end, &opts))?
+        let t = interruptible(py, move || routh::simulate_full(&m, w, g, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(Trajectory::new(py, &t))
     }
@@ -395,19 +416,20 @@ impl Model {
         py: Python<'_>,
         big_omega0: &Bound<'_, PyAny>,
         gamma0: &Bound<'_, PyAny>,
-        p_psi: f64,
-        t_end: f64,
+        p_psi: Real,
+        t_end: Real,
         rtol: f64,
         atol: f64,
         max_steps: Option<usize>,
         attitude: bool,
         times: Option<Vec<f64>>,
     ) -> PyResult<ReducedTrajectory> {
+        let (p_psi, t_end) = (p_psi.0, t_end.0);
         let w = vector3("big_omega0", big_omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
         let opts = sim_options(rtol, atol, max_steps, attitude, times);
-        let t = detached(py, || {
+        let t = interruptible(py, move || {
             routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts)
         })?
         .map_err(|e| routh_err(py, &e))?;
@@ -427,12 +449,13 @@ impl Model {
     fn certify(
         &self,
         py: Python<'_>,
-        p_psi: f64,
+        p_psi: Real,
         initial_split: Option<usize>,
         min_width: Option<f64>,
         max_boxes: Option<usize>,
         refine_iterations: Option<usize>,
     ) -> PyResult<Certificate> {
+        let p_psi = p_psi.0;
         let d = CertifyOptions::default();
         let opts = CertifyOptions {
             initial_split: initial_split.unwrap_or(d.initial_split),
@@ -441,8 +464,10 @@ impl Model {
             refine_iterations: refine_iterations.unwrap_or(d.refine_iterations),
         };
         let m = self.get()?;
-        let c = detached(py, || routh::steady_motions_certified(&m, p_psi, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let c = interruptible(py, move || {
+            routh::steady_motions_certified(&m, p_psi, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         let mut motions = Vec::with_capacity(c.motions.len());
         for cm in &c.motions {
             motions.push(Py::new(

@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 /// H₄ = c₂₀I₁² + c₁₁I₁I₂ + c₀₂I₂² ((3,) float64), Arnold's determinant
 /// D = c₂₀ω₂² − s₁s₂c₁₁ω₁ω₂ + c₀₂ω₁², and the `resonance` ("1:1", "1:2", "1:3" or None).
 ///
-/// >>> m = top.steady_motions(2.2)[0]          # the sleeping top, gyroscopically stabilised
+/// >>> m = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])   # the sleeping top (γ₃ = 1), gyroscopically stabilised
 /// >>> r = top.nonlinear_stability(m)
 /// >>> r.verdict, r.arnold_determinant
 #[pyclass(module = "routh", frozen, get_all)]

@@ -351,8 +351,10 @@ impl Boundary {
     }
 }
 
-/// A stability atlas over a 2-parameter family: grid `x` (nx,), `y` (ny,), `verdicts` (nx lists
-/// of ny strings or None where no steady motion was followed) and the `boundaries`.
+/// A stability atlas over a 2-parameter family: grid `x` (nx,), `y` (ny,), `verdicts` (ny rows
+/// of nx: `verdicts[j][i]` at (x[i], y[j]), as in Rust; None where there is no steady motion or
+/// it was lost), `lost` (the same layout: True where the motion was lost, not absent), `stop`
+/// (None, or why the atlas stopped early) and the `boundaries`.
 ///
 /// >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
 /// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
@@ -363,8 +365,15 @@ pub struct Atlas {
     pub x: Py<PyAny>,
     /// The grid in the second parameter, (ny,) float64.
     pub y: Py<PyAny>,
-    /// `verdicts[i][j]` at (x[i], y[j]); None where the branch was lost.
+    /// `verdicts[j][i]` at (x[i], y[j]) (ny rows of nx); None where the steady motion does not
+    /// exist (beyond a fold) or was lost (see `lost`).
     pub verdicts: Vec<Vec<Option<&'static str>>>,
+    /// `lost[j][i]`: True where `verdicts[j][i]` is None because the motion was lost (its
+    /// continuation stalled away from a fold: nothing is known there), False where it does not
+    /// exist and wherever there is a verdict.
+    pub lost: Vec<Vec<bool>>,
+    /// None when the atlas is complete; otherwise why it stopped early (a budget ran out).
+    pub stop: Option<String>,
     /// The curves where the verdict changes.
     pub boundaries: Vec<Py<Boundary>>,
 }
@@ -395,8 +404,10 @@ impl Atlas {
             verdicts: a
                 .verdicts
                 .iter()
-                .map(|col| col.iter().map(|v| v.map(verdict)).collect())
+                .map(|row| row.iter().map(|v| v.map(verdict)).collect())
                 .collect(),
+            lost: a.lost.clone(),
+            stop: a.stop.as_ref().map(ToString::to_string),
             boundaries,
         })
     }
@@ -420,11 +431,22 @@ impl Atlas {
         helper(slf.py(), "routh._display", "atlas_html", (slf,))
     }
     fn __repr__(&self) -> String {
+        let lost = self.lost.iter().flatten().filter(|&&l| l).count();
         format!(
-            "StabilityAtlas({}x{} grid, {} boundaries)",
-            self.verdicts.len(),
+            "StabilityAtlas({}x{} grid, {} boundaries{}{})",
             self.verdicts.first().map_or(0, Vec::len),
-            self.boundaries.len()
+            self.verdicts.len(),
+            self.boundaries.len(),
+            if lost > 0 {
+                format!(", {lost} cells lost")
+            } else {
+                String::new()
+            },
+            if self.stop.is_some() {
+                ", stopped early"
+            } else {
+                ""
+            }
         )
     }
 }

@@ -158,8 +158,13 @@ def test_stability_atlas_hopf_curve():
         nx=11, ny=11,
     )
     assert atlas.x.shape == (11,) and atlas.y.shape == (11,)
+    # verdicts[j][i] at (x[i], y[j]) = (mgl, p): at mgl = 0.5, p = 5 the upright top is
+    # secularly stable (p² > mgl C²/(C − A₁) = 3.6), at mgl = 2, p = 0.5 unstable.
     assert atlas.verdicts[0][0] == "unstable"
-    assert atlas.verdicts[10][0] == "secularly_stable" or atlas.verdicts[0][10] == "secularly_stable"
+    assert atlas.verdicts[10][0] == "secularly_stable"
+    assert atlas.verdicts[0][10] == "unstable"
+    assert len(atlas.lost) == 11 and not any(any(r) for r in atlas.lost)
+    assert atlas.stop is None
     hopf = [b for b in atlas.boundaries if b.kind == "hamiltonian_hopf"]
     assert hopf and hopf[0].points.shape[1] == 2
     mgl, p = hopf[0].points[:, 0], hopf[0].points[:, 1]
@@ -239,3 +244,16 @@ def test_certify_options(top):
     assert sorted(round(m.gamma[2]) for m in c.motions) == [-1, 1]
     short = top.certify(2.2, max_boxes=10)
     assert not short.complete and short.boxes == 10 and short.undecided >= 1
+
+
+def test_nonlinear_stability_docstring_example_is_right(top):
+    """The docstring's example (issue 34): steady_motions(2.2)[0] is the hanging top (secularly
+    stable); the sleeping top is the one with γ₃ = 1, gyroscopically stabilised."""
+    hanging = top.steady_motions(2.2)[0]
+    assert hanging.gamma[2] < -0.99
+    assert top.nonlinear_stability(hanging).verdict == "secularly_stable"
+    sleeping = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])
+    assert sleeping.gamma[2] > 0.99
+    assert top.classify(sleeping).verdict == "gyroscopically_stabilized"
+    assert top.nonlinear_stability(sleeping).verdict == "lyapunov_stable"
+    assert "key=lambda s: s.gamma[2]" in routh.Model.nonlinear_stability.__doc__

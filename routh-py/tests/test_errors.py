@@ -143,6 +143,8 @@ HOSTILE = {
     "certify zero split": lambda m: m.certify(2.2, initial_split=0),
     "certify huge split": lambda m: m.certify(2.2, initial_split=2**40),
     "certify NaN width": lambda m: m.certify(2.2, min_width=NAN),
+    # Below what the chart's floating-point resolution can split (issue 34).
+    "certify tiny width": lambda m: m.certify(2.2, min_width=1e-300),
     "empty model": lambda m: routh.Model("", {}),
     "empty toml": lambda m: routh.Model.from_toml(""),
     "binary toml": lambda m: routh.Model.from_toml("[[[ \x00"),
@@ -172,8 +174,103 @@ def test_amended_potential_refuses_what_has_no_value(top):
     # U_r = mgl γ₃ + p²/(2 γᵀJγ): at γ = 0 the denominator vanishes.
     with pytest.raises(routh.RouthError) as info:
         top.amended_potential([0.0, 0.0, 0.0], 2.0)
-    assert info.value.kind == "NonFiniteModel"
+    assert info.value.kind == "NonUnitGamma"
+    # As simulate: a γ off the unit sphere is refused, with the same tolerance (issue 34).
+    for g in ([0.0, 0.0, 2.0], [0.0, 0.6, 0.7]):
+        with pytest.raises(routh.RouthError) as info:
+            top.amended_potential(g, 2.0)
+        assert info.value.kind == "NonUnitGamma"
+        with pytest.raises(routh.RouthError) as info:
+            top.simulate([0, 0, 1], g, 1.0)
+        assert info.value.kind == "NonUnitGamma"
+    assert top.amended_potential([0.0, 0.0, 1.0 + 1e-9], 2.0) == pytest.approx(2.6)
     for gamma, p in [([float("nan"), 0.0, 1.0], 2.0), ([0.0, 0.0, 1.0], float("inf"))]:
         with pytest.raises(routh.RouthError) as info:
             top.amended_potential(gamma, p)
         assert info.value.kind == "NonFinite"
+
+
+def test_nan_and_infinite_parameters_are_refused_naming_them(top):
+    # Model(...): a ModelError at the parameter's use in the text, naming it.
+    with pytest.raises(routh.ModelError) as info:
+        routh.Model(TOP_TEXT, {"inertia": [1.0, 1.0, 1.25], "mgl": NAN})
+    e = info.value
+    assert "parameter `mgl` is NaN" in e.message
+    assert e.line is not None and e.column is not None
+    # set / with_params: no place in a text, so line and column are None.
+    for call in (lambda: top.set("mgl", INF), lambda: top.with_params(inertia=[1.0, NAN, 1.0])):
+        with pytest.raises(routh.ModelError) as info:
+            call()
+        e = info.value
+        assert e.line is None and e.column is None
+        assert "parameter `" in e.message and ("mgl" in e.message or "inertia" in e.message)
+    assert top.get_param("mgl") == 1.0
+    # TOML: at the value in the file.
+    with pytest.raises(routh.ModelError) as info:
+        routh.Model.from_toml('[model]\nlagrangian = "kinetic = 0.5 * omega.dot(omega), '
+                              'potential = m * gamma.z"\n[parameters]\nm = inf\n')
+    assert (info.value.line, info.value.column) == (4, 5)
+    assert "`m` is infinite" in info.value.message
+
+
+def test_set_errors_speak_python_and_have_no_position(top):
+    with pytest.raises(routh.ModelError) as info:
+        top.set("inertia", 2.0)
+    e = info.value
+    assert "Vector3" not in str(e) and "f64" not in str(e), str(e)
+    assert "3-vector" in e.message and "number" in e.message
+    assert e.line is None and e.column is None
+    with pytest.raises(TypeError):
+        top.set("mgl", True)
+    with pytest.raises(TypeError):
+        top.set("mgl", 1 + 2j)
+
+
+HUGE = r'''
+import threading, routh
+kinetic = "kinetic = 0.5 * omega.dot(omega),\npotential = "
+results = []
+def build(text):
+    try:
+        routh.Model(text, {})
+        results.append("ok")
+    except routh.ModelError as e:
+        results.append(f"err {e.line}:{e.column}")
+build(kinetic + "-" * 7000 + "gamma.z")
+build(kinetic + " + ".join(f"{k % 7}.5 * gamma.z" for k in range(50000)))
+t = threading.Thread(target=build, args=(kinetic + " + ".join("gamma.x" for _ in range(50000)),))
+t.start(); t.join()
+print(results)
+'''
+
+
+def test_deep_and_long_texts_never_kill_the_interpreter():
+    """7000 signs are refused with a position; a flat sum of 50 000 terms builds, also from a
+    Python thread (issue 34: these killed the interpreter with SIGSEGV)."""
+    r = subprocess.run([sys.executable, "-c", HUGE], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "['err 2:77', 'ok', 'ok']", r.stdout
+
+
+def test_bool_and_complex_are_not_numbers(top):
+    for bad in (True, 1 + 0j):
+        with pytest.raises(TypeError):
+            top.set("mgl", bad)
+        with pytest.raises(TypeError):
+            top.simulate([0, 0, bad], [0, 0, 1], 1.0)
+        with pytest.raises(TypeError):
+            top.with_params(inertia=[1.0, bad, 1.0])
+    with pytest.raises(TypeError):
+        top.steady_motions(1 + 2j)
+
+
+def test_bool_is_not_a_real_argument(top):
+    for call in (lambda: top.steady_motions(True), lambda: top.certify(False),
+                 lambda: top.amended_potential([0, 0, 1], True),
+                 lambda: top.simulate([0, 0, 1], [0, 0, 1], True),
+                 lambda: top.bifurcation_diagram((False, 5.0)),
+                 lambda: routh.stability_atlas(lambda x, y: (top, y), [0, 0, 1], (0, True),
+                                               (0, 1), nx=3, ny=3)):
+        with pytest.raises(TypeError):
+            call()
+    assert len(top.steady_motions(2)) >= 2  # an int is a number

@@ -67,6 +67,50 @@ def test_plots_and_svg(top):
     assert "<svg" in atlas._repr_svg_()
 
 
+def test_atlas_plot_places_each_cell_on_square_and_non_square_grids(top):
+    """verdicts[j][i] is at (x[i], y[j]), and the plot draws it there (issue 34)."""
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from routh._plot import STYLE
+
+    names = list(STYLE)
+    for nx, ny in [(6, 6), (7, 4), (3, 9)]:
+        atlas = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
+                                      (0.5, 2.0), (0.5, 5.0), nx=nx, ny=ny)
+        assert len(atlas.verdicts) == ny and all(len(r) == nx for r in atlas.verdicts)
+        assert len(atlas.lost) == ny and all(len(r) == nx for r in atlas.lost)
+        # (mgl, p) = (0.5, 5): secularly stable (p² > 6.25 mgl); (2, 0.5): unstable.
+        assert atlas.verdicts[ny - 1][0] == "secularly_stable"
+        assert atlas.verdicts[0][nx - 1] == "unstable"
+        ax = atlas.plot()
+        codes = np.asarray(ax.collections[0].get_array()).reshape(ny, nx)
+        assert codes[ny - 1, 0] == names.index("secularly_stable")
+        assert codes[0, nx - 1] == names.index("unstable")
+        for j in range(ny):
+            for i in range(nx):
+                v = atlas.verdicts[j][i]
+                if v is not None:
+                    assert codes[j, i] == names.index(v)
+        import matplotlib.pyplot as plt
+
+        plt.close("all")
+
+
+def test_nonlinear_diagram_plots_its_resonances(top):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    d = top.bifurcation_diagram((0.0, 5.0), nonlinear=True)
+    ax = d.plot()
+    names = {t.get_text() for t in ax.texts}
+    kinds = {e.kind for e in d.events}
+    assert "resonance" in kinds or "arnold_degenerate" in kinds, kinds
+    assert "Hamiltonian–Hopf" in names
+
+
 def test_example_script_end_to_end(tmp_path):
     pytest.importorskip("matplotlib")
     env = dict(os.environ, MPLBACKEND="Agg", ROUTH_FIGURE=str(tmp_path / "d.png"))

@@ -102,3 +102,41 @@ def test_progress_without_tqdm_writes_stderr(top, monkeypatch, capsys):
     assert last == [str(len(calls))], err
     top.bifurcation_diagram((0.0, 5.0))
     assert capsys.readouterr().err == ""  # silent unless asked
+
+
+CTRL_C = r'''
+import os, signal, sys, threading, time, routh
+m = routh.Model("kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+                {"inertia": [1.0, 1.3, 1.7], "mgl": 1.0})
+work = {
+    "simulate": lambda: m.simulate([0.3, 1.0, 5.0], [0.6, 0.0, 0.8], 1e9, max_steps=2**62),
+    "atlas": lambda: routh.stability_atlas(lambda x, y: (m.with_params(mgl=x), y), [0, 0, 1],
+                                           (0.5, 2.0), (0.5, 5.0), nx=2000, ny=2000),
+    "diagram": lambda: m.bifurcation_diagram((0.0, 1e6), initial_step=1e-6, min_step=1e-9,
+                                              max_step=1e-5, max_steps=2**62),
+    "family": lambda: routh.bifurcation_diagram(lambda s: (m, s), (0.0, 1e6), initial_step=1e-6,
+                                                min_step=1e-9, max_step=1e-5, max_steps=2**62),
+}[sys.argv[1]]
+threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+t0 = time.perf_counter()
+try:
+    work()
+    print("finished")
+except KeyboardInterrupt:
+    print(f"interrupted after {time.perf_counter() - t0:.3f}")
+sys.stdout.flush()
+os._exit(0)
+'''
+
+
+def test_ctrl_c_interrupts_long_work_within_half_a_second():
+    import subprocess
+
+    for name in ["simulate", "atlas", "diagram", "family"]:
+        r = subprocess.run([sys.executable, "-c", CTRL_C, name], capture_output=True, text=True,
+                           timeout=120)
+        assert r.returncode == 0, (name, r.stderr)
+        out = r.stdout.strip()
+        assert out.startswith("interrupted after"), (name, out, r.stderr)
+        # The signal comes at 0.5 s; KeyboardInterrupt within another 0.5 s.
+        assert float(out.split()[-1]) < 1.0, (name, out)

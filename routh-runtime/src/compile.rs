@@ -192,12 +192,47 @@ pub(crate) fn compile(
     params: &[(String, Param)],
     symmetric: &[String],
 ) -> Result<Compiled, ModelError> {
-    let model = analyse(text, params, symmetric)?;
-    build(&model).map_err(|e| {
-        ModelError::general(format!(
-            "internal error: the reduced model does not make a valid tape ({e})"
-        ))
+    on_large_stack(|| {
+        let model = analyse(text, params, symmetric)?;
+        build(&model).map_err(|e| {
+            ModelError::general(format!(
+                "internal error: the reduced model does not make a valid tape ({e})"
+            ))
+        })
     })
+}
+
+/// The stack of the thread a model is analysed on (reserved, not committed: the pages a text
+/// does not need are never touched).
+const ANALYSIS_STACK: usize = 512 << 20;
+
+/// Runs `f` on a thread of its own with an [`ANALYSIS_STACK`] stack: the parser (`syn`), the
+/// destructors of its syntax trees and some passes of the analysis recurse on the length of
+/// a chain (a flat sum of 50 000 terms is a left-deep tree 50 000 levels deep), and the
+/// caller's thread (a Python thread, a test thread) may have a small stack. Deep nesting is
+/// refused before this ([`check_nesting`], [`check_prefix_runs`]); this is what makes long
+/// flat texts safe whatever thread builds the model. Falls back to the caller's thread when a
+/// thread cannot be started.
+fn on_large_stack<R: Send>(f: impl FnOnce() -> R + Send) -> R {
+    let f = std::sync::Mutex::new(Some(f));
+    let run = || (f.lock().unwrap_or_else(|e| e.into_inner()).take()).map(|f| f());
+    let out = std::thread::scope(|s| {
+        match std::thread::Builder::new()
+            .name("routh-analyse".into())
+            .stack_size(ANALYSIS_STACK)
+            .spawn_scoped(s, run)
+        {
+            Ok(h) => Some(h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))),
+            Err(_) => None,
+        }
+    });
+    match out.flatten() {
+        Some(r) => r,
+        None => {
+            let f = f.into_inner().unwrap_or_else(|e| e.into_inner());
+            f.expect("the analysis ran neither on its thread nor here")()
+        }
+    }
 }
 
 /// The LaTeX of the formulas of the model of `text` (every parameter as `\mathit{name}`): the
@@ -208,9 +243,11 @@ pub(crate) fn latex(
     params: &[(String, Param)],
     symmetric: &[String],
 ) -> routh_codegen::latex::LatexText {
-    analyse(text, params, symmetric)
-        .map(|m| routh_codegen::latex::latex_formulas(&m, &[]))
-        .unwrap_or_default()
+    on_large_stack(|| {
+        analyse(text, params, symmetric)
+            .map(|m| routh_codegen::latex::latex_formulas(&m, &[]))
+            .unwrap_or_default()
+    })
 }
 
 /// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
@@ -221,6 +258,9 @@ fn analyse(
 ) -> Result<routh_codegen::Model, ModelError> {
     check_nesting(text)?;
     let body: TokenStream = text.parse().map_err(|e: proc_macro2::LexError| {
+        if let Some(err) = unbalanced(text) {
+            return err;
+        }
         let s = e.span();
         let (a, b) = (s.start(), s.end());
         let width = if a.line == b.line {
@@ -229,13 +269,14 @@ fn analyse(
             1
         };
         ModelError::at(
-            format!("the text does not lex as Rust tokens: {e}"),
+            format!("the text cannot be read here ({e}): a Lagrangian is made of numbers, names, `+ - * /`, `.`, brackets, `=` and commas"),
             text,
             a.line,
             a.column + 1,
             width,
         )
     })?;
+    check_prefix_runs(&body, text)?;
     let mut fields = Vec::new();
     for (name, p) in params {
         let ident: syn::Ident = syn::parse_str(name).map_err(|_| {
@@ -280,6 +321,50 @@ fn analyse(
     routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))
 }
 
+/// The first unbalanced bracket of `text`, as an error at it (`(` never closed, `)` closing
+/// nothing or another kind of bracket), or `None` when the brackets balance. Strings and
+/// comments are not skipped: it explains a lexing error, which they would be too.
+fn unbalanced(text: &str) -> Option<ModelError> {
+    let mut open: Vec<(char, usize)> = Vec::new();
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' | '{' => open.push((c, i)),
+            ')' | ']' | '}' => {
+                let want = match c {
+                    ')' => '(',
+                    ']' => '[',
+                    _ => '{',
+                };
+                match open.pop() {
+                    Some((o, _)) if o == want => {}
+                    Some((o, at)) => {
+                        let (line, column) = crate::error::line_column(text, at);
+                        return Some(ModelError::at_byte(
+                            format!(
+                                "`{c}` does not close the `{o}` at line {line}, column {column}"
+                            ),
+                            text,
+                            i,
+                            i + 1,
+                        ));
+                    }
+                    None => {
+                        return Some(ModelError::at_byte(
+                            format!("`{c}` closes no bracket"),
+                            text,
+                            i,
+                            i + 1,
+                        ))
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    open.pop()
+        .map(|(o, at)| ModelError::at_byte(format!("`{o}` is never closed"), text, at, at + 1))
+}
+
 /// Refuses texts nested deeper than [`MAX_NESTING`], at the first bracket too deep.
 fn check_nesting(text: &str) -> Result<(), ModelError> {
     let mut depth = 0usize;
@@ -298,6 +383,43 @@ fn check_nesting(text: &str) -> Result<(), ModelError> {
             }
             ')' | ']' | '}' => depth = depth.saturating_sub(1),
             _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Refuses more than [`MAX_NESTING`] prefix operators in a row (`- - - x`: each is a level of
+/// the parser's recursion), at the first one too many. Walks the token tree with a stack of
+/// its own.
+fn check_prefix_runs(body: &TokenStream, text: &str) -> Result<(), ModelError> {
+    use proc_macro2::TokenTree;
+    let mut stack = vec![body.clone().into_iter()];
+    let mut run = 0usize;
+    while let Some(top) = stack.last_mut() {
+        let Some(tt) = top.next() else {
+            stack.pop();
+            run = 0;
+            continue;
+        };
+        match tt {
+            TokenTree::Punct(p) if matches!(p.as_char(), '-' | '!' | '&' | '*') => {
+                run += 1;
+                if run > MAX_NESTING {
+                    let at = p.span().start();
+                    return Err(ModelError::at(
+                        format!("more than {MAX_NESTING} signs or operators in a row (each is a level of nesting); simplify them or split the expression with `let` items"),
+                        text,
+                        at.line,
+                        at.column + 1,
+                        1,
+                    ));
+                }
+            }
+            TokenTree::Group(g) => {
+                run = 0;
+                stack.push(g.stream().into_iter());
+            }
+            _ => run = 0,
         }
     }
     Ok(())

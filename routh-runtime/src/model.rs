@@ -143,6 +143,18 @@ impl Model {
                 ));
             }
         }
+        for (name, p) in &params {
+            if let Some(why) = p.non_finite(name) {
+                let (line, column) = crate::compile::first_use(text, name);
+                return Err(ModelError::at(
+                    why,
+                    text,
+                    line,
+                    column,
+                    name.chars().count(),
+                ));
+            }
+        }
         let compiled = Arc::new(compile(text, &params, &symmetric)?);
         let values: Arc<[f64]> = values(&compiled, &params)?.into();
         let constant_inertia = constant_inertia(&compiled, &values);
@@ -183,6 +195,9 @@ impl Model {
                 slot.1.shape_name(),
                 value.shape_name()
             )));
+        }
+        if let Some(why) = value.non_finite(name) {
+            return Err(ModelError::general(why));
         }
         let old = slot.1;
         slot.1 = value;

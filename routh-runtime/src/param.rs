@@ -37,6 +37,29 @@ impl Param {
         std::mem::discriminant(self) == std::mem::discriminant(other)
     }
 
+    /// Why `self` cannot be the value of parameter `name`: a NaN or infinite number, vector
+    /// component or matrix entry (named), or `None` when every number is finite.
+    pub fn non_finite(&self, name: &str) -> Option<String> {
+        let bad = |x: f64| if x.is_nan() { "a NaN" } else { "an infinite" };
+        let what = match self {
+            Param::Scalar(x) if x.is_nan() => "is NaN".to_string(),
+            Param::Scalar(x) if !x.is_finite() => "is infinite".to_string(),
+            Param::Vector(v) => {
+                let i = v.iter().position(|x| !x.is_finite())?;
+                format!("has {} component [{i}]", bad(v[i]))
+            }
+            Param::Matrix(m) => {
+                let k = (0..9).find(|&k| !m[(k / 3, k % 3)].is_finite())?;
+                let (i, j) = (k / 3, k % 3);
+                format!("has {} entry [{i}][{j}]", bad(m[(i, j)]))
+            }
+            Param::Scalar(_) => return None,
+        };
+        Some(format!(
+            "parameter `{name}` {what}: parameter values must be finite numbers"
+        ))
+    }
+
     /// The scalar a derived model's code reads: the value, component `i` or entry `(i, j)`.
     pub(crate) fn read(&self, access: &routh_codegen::lower::Access) -> f64 {
         use routh_codegen::lower::Access;

@@ -143,6 +143,9 @@ impl Model {
                     span.end,
                 ));
             };
+            if let Some(why) = p.non_finite(name.get_ref()) {
+                return Err(ModelError::at_byte(why, src, span.start, span.end));
+            }
             params.push((name.get_ref().clone(), p));
         }
         let mut symmetric = Vec::new();

@@ -67,8 +67,30 @@ fn syntax_and_lexing_errors() {
     let e = err(&format!("{TOP} +"), &top_params());
     assert_eq!((e.line, e.column), (2, 28), "{e}");
     let e = err("kinetic = 0.5 * omega.dot(omega),\npotential = \"a", &[]);
-    assert!(e.message.contains("does not lex"), "{e}");
+    assert!(e.message.contains("cannot be read"), "{e}");
+    assert!(!e.message.contains("Rust"), "{e}");
     assert_eq!((e.line, e.column), (2, 13));
+    // Unbalanced brackets and a misspelt item, in the language's own words (issue 34).
+    let e = err("kinetic = 0.5 * omega.dot(omega,\npotential = gamma.z", &[]);
+    assert_eq!(e.message, "`(` is never closed", "{e}");
+    assert_eq!((e.line, e.column), (1, 26));
+    let e = err(
+        "kinetic = 0.5 * omega.dot(omega)),\npotential = gamma.z",
+        &[],
+    );
+    assert_eq!(e.message, "`)` closes no bracket", "{e}");
+    let e = err(
+        "kinetic = 0.5 * omega.dot(omega],\npotential = gamma.z",
+        &[],
+    );
+    assert!(e.message.starts_with("`]` does not close the `(`"), "{e}");
+    let e = err(
+        "kinetik = 0.5 * omega.dot(omega),\npotential = gamma.z",
+        &[],
+    );
+    assert!(e.message.contains("did you mean `kinetic`?"), "{e}");
+    assert!(!e.message.contains("crate"), "{e}");
+    assert_eq!((e.line, e.column), (1, 1));
     let e = err("potential = mass * gamma.z", &[("mass", 1.0.into())]);
     assert!(e.message.contains("missing `kinetic"), "{e}");
     assert_eq!((e.line, e.column), (1, 1));
@@ -219,18 +241,59 @@ fn from_file_with_a_missing_file() {
 }
 
 #[test]
-fn nan_and_huge_parameters_are_values_not_errors() {
-    let m = Model::new(
+fn nan_and_infinite_parameters_are_refused_naming_them_huge_ones_are_values() {
+    // Model::new: at the parameter's first use in the text.
+    let e = err(
         TOP,
         &[
             ("inertia", [1.0, 1.0, 2.0].into()),
             ("mass", f64::NAN.into()),
         ],
+    );
+    assert!(e.message.contains("parameter `mass` is NaN"), "{e}");
+    assert_eq!((e.line, e.column), (2, 13));
+    let e = err(
+        TOP,
+        &[
+            ("inertia", [1.0, f64::NEG_INFINITY, 2.0].into()),
+            ("mass", 1.0.into()),
+        ],
+    );
+    assert!(
+        e.message
+            .contains("parameter `inertia` has an infinite component [1]"),
+        "{e}"
+    );
+    // set / with: refused, the model unchanged.
+    let mut m = Model::new(TOP, &top_params()).unwrap();
+    let e = m.set("mass", f64::INFINITY).unwrap_err();
+    assert!(e.message.contains("parameter `mass` is infinite"), "{e}");
+    assert_eq!(m.get("mass"), Some(Param::Scalar(1.0)));
+    let mut bad = Matrix3::identity();
+    bad[(2, 1)] = f64::NAN;
+    let m = Model::new(
+        "kinetic = 0.5 * omega.dot(j * omega), potential = gamma.z",
+        &[("j", Matrix3::identity().into())],
     )
     .unwrap();
+    let e = m.with("j", bad).unwrap_err();
+    assert!(e.message.contains("`j` has a NaN entry [2][1]"), "{e}");
+    // TOML: at the value in the file.
+    let e = Model::from_toml(
+        "[model]\nlagrangian = \"kinetic = 0.5 * omega.dot(omega), potential = mass * gamma.z\"\n[parameters]\nmass = nan\n",
+    )
+    .unwrap_err();
+    assert!(e.message.contains("parameter `mass` is NaN"), "{e}");
+    assert_eq!((e.line, e.column), (4, 8));
+    let e = Model::from_toml(
+        "[model]\nlagrangian = \"kinetic = 0.5 * omega.dot(omega), potential = com.dot(gamma)\"\n[parameters]\ncom = [0, -inf, 1]\n",
+    )
+    .unwrap_err();
+    assert!(
+        e.message.contains("`com` has an infinite component [1]"),
+        "{e}"
+    );
     let g = Vector3::new(0.0, 0.0, 1.0);
-    assert!(m.amended_potential(&g, 0.0).is_nan());
-    assert!(m.lagrangian(&Vector3::zeros(), &g).is_nan());
     let m = Model::new(
         TOP,
         &[
@@ -240,4 +303,105 @@ fn nan_and_huge_parameters_are_values_not_errors() {
     )
     .unwrap();
     assert!(!m.energy(&Vector3::new(10.0, 0.0, 0.0), &g).is_finite());
+}
+
+/// The hostile texts of issue 34: deep, long and large. Each builds or is refused with a
+/// placed error; none may crash (a stack overflow aborts the process, so each is run in a
+/// child process of this test binary, see [`hostile_texts_build_or_are_refused_never_crash`]).
+fn hostile_case(name: &str) -> Result<Model, ModelError> {
+    let kinetic = "kinetic = 0.5 * omega.dot(omega),\npotential = ";
+    let sum = |n: usize| {
+        (0..n)
+            .map(|i| format!("{}.5 * gamma.{}", i % 7, ["x", "y", "z"][i % 3]))
+            .collect::<Vec<_>>()
+            .join(" + ")
+    };
+    let none: &[(&str, Param)] = &[];
+    match name {
+        "minus-7000" => Model::new(&format!("{kinetic}{}gamma.z", "-".repeat(7000)), none),
+        "spaced-minus-7000" => Model::new(&format!("{kinetic}{}gamma.z", "- ".repeat(7000)), none),
+        "not-7000" => Model::new(&format!("{kinetic}{}gamma.z", "!".repeat(7000)), none),
+        "parens-7000" => Model::new(
+            &format!("{kinetic}{}gamma.z{}", "(".repeat(7000), ")".repeat(7000)),
+            none,
+        ),
+        "methods-50000" => Model::new(
+            &format!("{kinetic}gamma.z{}", ".sin()".repeat(50_000)),
+            none,
+        ),
+        "sum-50000" => Model::new(&format!("{kinetic}{}", sum(50_000)), none),
+        "product-20000" => Model::new(
+            &format!("{kinetic}{}", vec!["gamma.z"; 20_000].join(" * ")),
+            none,
+        ),
+        "one-megabyte" => {
+            let text = format!("{kinetic}{}", sum(70_000));
+            assert!(text.len() > 1 << 20);
+            Model::new(&text, none)
+        }
+        "toml-sum-50000" => Model::from_toml(&format!(
+            "[model]\nlagrangian = \"\"\"\n{kinetic}{}\n\"\"\"\n",
+            sum(50_000)
+        )),
+        "small-stack-thread" => std::thread::Builder::new()
+            .stack_size(128 << 10)
+            .spawn(move || Model::new(&format!("{kinetic}{}", sum(50_000)), none))
+            .unwrap()
+            .join()
+            .unwrap(),
+        _ => panic!("no case {name}"),
+    }
+}
+
+#[test]
+fn hostile_texts_build_or_are_refused_never_crash() {
+    const CHILD: &str = "ROUTH_HOSTILE_CASE";
+    if let Ok(name) = std::env::var(CHILD) {
+        match hostile_case(&name) {
+            Ok(_) => println!("HOSTILE ok"),
+            Err(e) => println!("HOSTILE err {}:{} {}", e.line, e.column, e.message),
+        }
+        return;
+    }
+    // (case, expected: "ok" or the start of the error "err line:column" and a word of it)
+    let cases = [
+        ("minus-7000", "err 2:77", "in a row"),
+        ("spaced-minus-7000", "err 2:141", "in a row"),
+        ("not-7000", "err 2:77", "in a row"),
+        ("parens-7000", "err 2:77", "nested more than 64"),
+        ("methods-50000", "err 2:13", "nested more than 200"),
+        ("sum-50000", "ok", ""),
+        ("product-20000", "ok", ""),
+        ("one-megabyte", "ok", ""),
+        ("toml-sum-50000", "ok", ""),
+        ("small-stack-thread", "ok", ""),
+    ];
+    let exe = std::env::current_exe().unwrap();
+    for (name, expected, word) in cases {
+        let out = std::process::Command::new(&exe)
+            .args([
+                "hostile_texts_build_or_are_refused_never_crash",
+                "--exact",
+                "--nocapture",
+                "--test-threads=1",
+            ])
+            .env(CHILD, name)
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{name}: the child failed ({:?}):\n{stdout}\n{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let line = stdout
+            .lines()
+            .find_map(|l| l.split_once("HOSTILE ").map(|(_, r)| r))
+            .unwrap_or_else(|| panic!("{name}: no result in\n{stdout}"));
+        assert!(
+            line.starts_with(expected) && line.contains(word),
+            "{name}: expected `{expected}` … `{word}`, got `{line}`"
+        );
+    }
 }

@@ -50,6 +50,11 @@ use crate::validate::check_finite;
 use nalgebra::Vector3;
 use std::time::{Duration, Instant};
 
+/// The smallest [`CertifyOptions::min_width`] accepted: a box is split down to
+/// `min_width·1e-6` near a regular zero, and the chart coordinates (up to 1, resolution
+/// 2.2e-16) cannot split a box much narrower than 1e-15.
+pub const MIN_WIDTH: f64 = 1e-9;
+
 /// Options of [`steady_motions_certified`].
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -57,7 +62,7 @@ pub struct CertifyOptions {
     /// Boxes per side of each face of the cube at the start (default 4).
     pub initial_split: usize,
     /// Smallest side of a box in chart coordinates before it is left undecided (default 1e-3;
-    /// each face has side 2).
+    /// each face has side 2; at least [`MIN_WIDTH`], 1e-9: a smaller one is refused).
     pub min_width: f64,
     /// Budget of boxes examined in all; what is left when it runs out is undecided
     /// (default 400 000).
@@ -445,10 +450,15 @@ pub fn steady_motions_certified<M: Routhian>(
             reason: format!("{} is not in 1..=1024", opts.initial_split),
         });
     }
-    if !(opts.min_width > 0.0 && opts.min_width < 2.0) {
+    if !(opts.min_width >= MIN_WIDTH && opts.min_width < 2.0) {
         return Err(RouthError::InvalidOption {
             what: "CertifyOptions::min_width",
-            reason: format!("{} is not in (0, 2)", opts.min_width),
+            reason: format!(
+                "{:e} is not in [{MIN_WIDTH:e}, 2): a box is split down to min_width·1e-6 near a \
+                 regular zero, and chart coordinates (up to 1) cannot resolve boxes narrower \
+                 than about 1e-15",
+                opts.min_width
+            ),
         });
     }
     let tape = model
@@ -516,7 +526,10 @@ pub fn steady_motions_certified<M: Routhian>(
                 // Below `min_width` only boxes that look like a regular zero (a contraction
                 // estimate that a few more halvings bring below 1) are split further.
                 let w = b.u.width().max(b.v.width());
-                if w <= opts.min_width && (q > 16.0 || w <= opts.min_width * 1e-6) {
+                // A box a few ulps wide cannot be split into two different boxes.
+                if w <= 64.0 * f64::EPSILON
+                    || (w <= opts.min_width && (q > 16.0 || w <= opts.min_width * 1e-6))
+                {
                     undecided.push(b);
                 } else if b.u.width() >= b.v.width() {
                     let (l, r) = b.u.bisect();

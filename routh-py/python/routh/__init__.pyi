@@ -30,10 +30,11 @@ class RouthError(Exception):
     kind: str
 
 class ModelError(RouthError):
-    """A mistake in a model's text or parameters, at `line`, `column` (from 1)."""
+    """A mistake in a model's text or parameters, at `line`, `column` (from 1) in the text, or
+    None for both where it has no place in a text (`set`, `with_params`, a file not read)."""
 
-    line: int
-    column: int
+    line: int | None
+    column: int | None
     message: str
 
 class SteadyMotion:
@@ -111,7 +112,8 @@ class Event:
 class NonlinearReport:
     """The nonlinear stability of a steady motion (Birkhoff normal form, Arnold–Moser).
 
-    >>> r = top.nonlinear_stability(top.steady_motions(2.2)[0])
+    >>> m = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])   # the sleeping top (γ₃ = 1)
+    >>> r = top.nonlinear_stability(m)
     >>> r.verdict, r.arnold_determinant, r.resonance
     """
     verdict: NonlinearVerdict
@@ -145,7 +147,8 @@ class Boundary:
     points: npt.NDArray[np.float64]
 
 class Atlas:
-    """A stability atlas: `verdicts[i][j]` at (x[i], y[j]) and the `boundaries`.
+    """A stability atlas: `verdicts[j][i]` at (x[i], y[j]) (ny rows of nx, as in Rust), `lost`
+    (True where the motion was lost, not absent), `stop` and the `boundaries`.
 
     >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
     ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
@@ -154,6 +157,11 @@ class Atlas:
     x: npt.NDArray[np.float64]
     y: npt.NDArray[np.float64]
     verdicts: list[list[Verdict | None]]
+    """`verdicts[j][i]` at (x[i], y[j]); None where there is no steady motion or it was lost."""
+    lost: list[list[bool]]
+    """`lost[j][i]`: True where the motion was lost (nothing is known there)."""
+    stop: str | None
+    """None when the atlas is complete; otherwise why it stopped early."""
     boundaries: list[Boundary]
     def plot(self, ax: Any = None) -> Any:
         """Draw the verdict regions and the named boundary curves; returns the axes."""
@@ -321,7 +329,8 @@ class Model:
         """L, ψ̇, R, U_r, A, G, C in LaTeX."""
     def _repr_latex_(self) -> str:
         """R and U_r typeset (Jupyter)."""
-    def amended_potential(self, gamma: Vec3, p_psi: float) -> float: ...
+    def amended_potential(self, gamma: Vec3, p_psi: float) -> float:
+        """U_r(γ, p_ψ) at a unit γ (| |γ| − 1 | ≤ 1e-8, as `simulate`; else RouthError)."""
     def steady_motions(self, p_psi: float) -> list[SteadyMotion]: ...
     def classify(self, motion: SteadyMotion) -> StabilityReport: ...
     def classify_circle(self, motion: SteadyMotion, axis: Vec3) -> CircleReport:

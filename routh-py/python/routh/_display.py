@@ -77,12 +77,13 @@ def diagram_html(d):
 def atlas_html(a):
     """A stability atlas: the grid, the count of each verdict, the boundaries and the figure."""
     counts = {}
-    for col in a.verdicts:
-        for v in col:
+    for row, lost in zip(a.verdicts, a.lost):
+        for v, gone in zip(row, lost):
+            v = v if v is not None else ("(lost)" if gone else "(no steady motion)")
             counts[v] = counts.get(v, 0) + 1
     grid = _table([("x", f"{a.x[0]:.6g} .. {a.x[-1]:.6g} ({len(a.x)} nodes)"),
                    ("y", f"{a.y[0]:.6g} .. {a.y[-1]:.6g} ({len(a.y)} nodes)")])
-    verdicts = _table([(v if v is not None else "(lost)", n) for v, n in counts.items()],
+    verdicts = _table(list(counts.items()),
                       head=("verdict", "nodes"))
     bounds = _table([(b.kind, len(b.points)) for b in a.boundaries], head=("boundary", "points"))
     return "<b>StabilityAtlas</b>" + grid + verdicts + bounds + _figure(a)

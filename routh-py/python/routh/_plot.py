@@ -12,8 +12,10 @@ STYLE = {
     "unstable": ("#d62728", "--"),
     "degenerate": ("#7f7f7f", ":"),
 }
-EVENT_MARK = {"fold": "o", "branch_point": "s", "hamiltonian_hopf": "D"}
-EVENT_NAME = {"fold": "fold", "branch_point": "branch point", "hamiltonian_hopf": "Hamiltonian–Hopf"}
+EVENT_MARK = {"fold": "o", "branch_point": "s", "hamiltonian_hopf": "D",
+              "arnold_degenerate": "^", "resonance": "v"}
+EVENT_NAME = {"fold": "fold", "branch_point": "branch point", "hamiltonian_hopf": "Hamiltonian–Hopf",
+              "arnold_degenerate": "Arnold D = 0", "resonance": "resonance"}
 
 
 def _axes(ax):
@@ -57,9 +59,10 @@ def plot_atlas(atlas, ax=None):
 
     ax = _axes(ax)
     names = list(STYLE)
+    # verdicts[j][i] is at (x[i], y[j]): row j of `codes` is y[j], as pcolormesh reads it.
     codes = np.full((len(atlas.y), len(atlas.x)), np.nan)
-    for i, col in enumerate(atlas.verdicts):
-        for j, v in enumerate(col):
+    for j, row in enumerate(atlas.verdicts):
+        for i, v in enumerate(row):
             if v is not None:
                 codes[j, i] = names.index(v)
     cmap = ListedColormap([STYLE[n][0] for n in names])

@@ -302,6 +302,22 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             if *iso != isolated {
                 continue;
             }
+            // A node of the branch at the point itself, on the point's own scale (not the
+            // range's: over a range a few ulps wide a branch can be one node, or nodes at the
+            // same s, which the segments below do not cover).
+            let same_s = |n: f64| (n - s).abs() <= 1e-9 * s.abs().max(1.0);
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-7 * (1.0 + b.abs());
+            if nodes.iter().any(|n| {
+                same_s(n.s)
+                    && if isolated {
+                        (n.gamma - gamma).norm() <= 1e-6
+                    } else {
+                        close(n.point.steady.amended_potential, u)
+                            && close(n.point.steady.psi_dot, w)
+                    }
+            }) {
+                return Ok(true);
+            }
             for pair in nodes.windows(2) {
                 let (a, b) = (&pair[0], &pair[1]);
                 if isolated {
