@@ -87,8 +87,7 @@ macro_rules! json {
 macro_rules! from_json {
     ($t:ty, $state:expr) => {{
         let s: String = $state.extract()?;
-        serde_json::from_str::<$t>(&s)
-            .map_err(|e| RouthError::new_err(format!("unpickling: {e}")))
+        serde_json::from_str::<$t>(&s).map_err(|e| RouthError::new_err(format!("unpickling: {e}")))
     }};
 }
 
@@ -172,10 +171,9 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
                 let p = param(&n, v.bind(py))?;
                 params.push((n, p));
             }
-            let m = crate::guard::detached(py, || {
-                model_from_parts(&text, &params, &symmetric, latex)
-            })?
-            .map_err(|e| model_err(py, &e))?;
+            let m =
+                crate::guard::detached(py, || model_from_parts(&text, &params, &symmetric, latex))?
+                    .map_err(|e| model_err(py, &e))?;
             Model::wrap(m).into_py_any(py)
         }
         "SteadyMotion" => SteadyMotion {
@@ -203,8 +201,7 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
             .into_py_any(py)
         }
         "StabilityReport" => {
-            let (v, degree, eig, roots): (String, usize, Py<PyAny>, Py<PyAny>) =
-                state.extract()?;
+            let (v, degree, eig, roots): (String, usize, Py<PyAny>, Py<PyAny>) = state.extract()?;
             StabilityReport {
                 verdict: name(&v)?,
                 degree_of_instability: degree,
@@ -315,8 +312,7 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
                 Option<Py<PyAny>>,
                 usize,
             );
-            let (t, omega, gamma, energy, p_psi, attitude, euler, len): State =
-                state.extract()?;
+            let (t, omega, gamma, energy, p_psi, attitude, euler, len): State = state.extract()?;
             Trajectory {
                 t,
                 omega,
@@ -607,7 +603,12 @@ impl ReducedTrajectory {
             self.energy.clone_ref(py),
             self.p_psi.clone_ref(py),
         );
-        let state = (arrays, opt(py, &self.attitude), opt(py, &self.euler), self.len);
+        let state = (
+            arrays,
+            opt(py, &self.attitude),
+            opt(py, &self.euler),
+            self.len,
+        );
         reduce(py, "ReducedTrajectory", state)
     }
 }
@@ -616,7 +617,13 @@ impl ReducedTrajectory {
 impl Certificate {
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let motions: Vec<Py<SteadyMotion>> = self.motions.iter().map(|m| m.clone_ref(py)).collect();
-        let state = (self.complete, motions, self.p_psi, self.boxes, self.undecided);
+        let state = (
+            self.complete,
+            motions,
+            self.p_psi,
+            self.boxes,
+            self.undecided,
+        );
         reduce(py, "Certificate", state)
     }
 }

@@ -133,14 +133,14 @@ def test_periodic_orbits_pickle():
     )
     o = body.periodic_orbit([0, 0, 0], [0, math.sin(0.5), -math.cos(0.5)], 2 * math.pi / math.sqrt(1.5))
     trips(o)
+    s = body.poincare_section(o.p_psi, o.energy, normal=[0, 1, 0], orbits=3, crossings=5)
+    trips(s)
     asym = routh.Model.load(ROOT / "examples" / "models" / "asymmetric_top.toml")
     hanging = min(asym.steady_motions(0.0), key=lambda s: s.energy)
     f = asym.lyapunov_family(hanging, 0, max_orbits=40)
     assert f.events
     trips(f)
     trips(f.events[0])
-    s = asym.poincare_section(0.0, f.orbits[3].energy, orbits=3, crossings=5)
-    trips(s)
 
 
 def test_a_state_not_made_by_reduce_is_refused():

@@ -142,7 +142,7 @@ def study(
                 n_workers=n_workers,
                 threads_per_worker=1,
                 processes=True,
-                dashboard_address=None,
+                dashboard_address=":0",
             )
             client = own_client = distributed.Client(own_cluster)
         elif isinstance(client, str):
