@@ -59,10 +59,10 @@ def main():
                   shading="nearest")
     # The physical bodies satisfy the triangle inequalities C <= A + B, B <= A + C.
     ax.plot(b, 1 + b, "k--", lw=1, label="C = A + B")
-    ax.plot(b, np.clip(b - 1, 0.5, None), "k:", lw=1, label="B = A + C")
+    ax.plot(b[b >= 1.5], b[b >= 1.5] - 1, "k:", lw=1, label="B = A + C")
     handles = [plt.Rectangle((0, 0), 1, 1, color=colours[i + 1]) for i in range(len(names))]
     ax.legend(handles + ax.get_lines(), names + ["C = A + B", "B = A + C"], fontsize=8,
-              loc="upper left")
+              loc="upper right", framealpha=0.9)
     ax.set_xlim(b[0], b[-1])
     ax.set_ylim(c[0], c[-1])
     ax.set_xlabel("B / A")
