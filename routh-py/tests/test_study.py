@@ -122,3 +122,43 @@ def test_local_cluster_by_default(top):
     while time.time() < deadline and {p.pid for p in workers()} - before:
         time.sleep(0.2)
     assert not {p.pid for p in workers()} - before
+
+
+def test_without_dask_the_error_names_the_extra(top, monkeypatch):
+    monkeypatch.setitem(sys.modules, "distributed", None)  # `import distributed` fails
+    with pytest.raises(ImportError, match=r"routh\[dask\]"):
+        routh.study(sleeping, top, {"p_psi": [1.0]})
+
+
+def test_an_interrupted_study_leaves_no_worker(top):
+    """Ctrl-C while the study waits: KeyboardInterrupt reaches the caller, the tasks are
+    cancelled and the study's own cluster is closed."""
+    import os
+    import signal
+    import threading
+
+    if not hasattr(signal, "SIGINT") or threading.current_thread() is not threading.main_thread():
+        pytest.skip("needs SIGINT in the main thread")
+    before = {p.pid for p in workers()}
+    stop = threading.Event()
+
+    def interrupt():
+        # Once the study's 2 workers run (and have had time to start their tasks): Ctrl-C.
+        while not stop.is_set() and len({p.pid for p in workers()} - before) < 2:
+            time.sleep(0.1)
+        if not stop.wait(3.0):
+            os.kill(os.getpid(), signal.SIGINT)
+
+    t = threading.Thread(target=interrupt, daemon=True)
+    t.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            routh.study(slow, top, {"p_psi": [float(i) for i in range(30)]}, chunk=1,
+                        progress=False)
+    finally:
+        stop.set()
+        t.join()
+    deadline = time.time() + 20
+    while time.time() < deadline and {p.pid for p in workers()} - before:
+        time.sleep(0.2)
+    assert not {p.pid for p in workers()} - before
