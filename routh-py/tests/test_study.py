@@ -71,11 +71,19 @@ def test_study_equals_a_serial_loop_and_maievskii(client, top):
 
 def test_method_name_and_result_objects(client, top):
     grid = {"mgl": [1.0, 2.0], "p_psi": [1.0, 3.0]}
-    df = routh.study("certify", top, grid, client=client, progress=False)
+    # The address form: the study connects to the running scheduler (and leaves it running).
+    df = routh.study("certify", top, grid, client=client.scheduler.address, progress=False)
     assert df["error"].isna().all()
     ref = [top.with_params(mgl=m).certify(p) for m in grid["mgl"] for p in grid["p_psi"]]
     assert df["boxes"].tolist() == [c.boxes for c in ref]
     assert df["complete"].tolist() == [c.complete for c in ref]
+    assert client.status == "running"
+    # A SteadyMotion's fields, p_psi (a coordinate too) kept apart as result_p_psi.
+    df = routh.study(lambda m, p_psi: m.steady_motions(p_psi)[0], top, {"p_psi": [3.0]},
+                     client=client, progress=False)
+    first = top.steady_motions(3.0)[0]
+    assert df["gamma_2"][0] == first.gamma[2] and df["result_p_psi"][0] == 3.0
+    assert df["energy"][0] == first.energy and df["isolated"][0] == first.isolated
 
 
 def test_a_failing_point_is_recorded_and_the_rest_complete(client, top):

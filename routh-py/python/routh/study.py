@@ -166,6 +166,9 @@ def study(
             except Exception as e:  # the whole chunk failed (a worker died, …)
                 results = [({}, f"{type(e).__name__}: {e}")] * len(c)
             for point, (fields, error) in zip(c, results):
+                # A field named as a coordinate (a SteadyMotion's p_psi) is kept as result_<name>.
+                fields = {(f"result_{k}" if k in point or k == "error" else k): v
+                          for k, v in fields.items()}
                 rows.append({**point, **fields, "error": error})
         futures = []
     finally:
