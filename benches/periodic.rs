@@ -9,12 +9,12 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use derived_models::AsymmetricTop;
+use routh::nalgebra::{SMatrix, SVector, Vector6};
 use routh::{
     lyapunov_family, periodic_orbit, poincare_section, simulate_full, steady_motions, Lagrangian,
     Model, OrbitOptions, PeriodicOrbit, Routhian, SectionOptions, SimOptions, SteadyMotion,
     Vector3,
 };
-use routh::nalgebra::{SMatrix, SVector, Vector6};
 
 fn top() -> AsymmetricTop {
     AsymmetricTop {
@@ -26,7 +26,10 @@ fn top() -> AsymmetricTop {
 }
 
 fn runtime_top() -> Model {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/models/asymmetric_top.toml");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/examples/models/asymmetric_top.toml"
+    );
     Model::from_file(path).expect("example model")
 }
 
@@ -64,7 +67,12 @@ fn fd_shooting<M: Lagrangian>(m: &M, w0: Vector3<f64>, g0: Vector3<f64>, t0: f64
             let (mut p, mut q) = (*x, *x);
             p[i] += h;
             q[i] -= h;
-            let s = |y: &Vector6<f64>| f(&Vector3::new(y[0], y[1], y[2]), &Vector3::new(y[3], y[4], y[5]));
+            let s = |y: &Vector6<f64>| {
+                f(
+                    &Vector3::new(y[0], y[1], y[2]),
+                    &Vector3::new(y[3], y[4], y[5]),
+                )
+            };
             (s(&p) - s(&q)) / (2.0 * h)
         })
     };
@@ -141,10 +149,16 @@ fn bench_periodic(c: &mut Criterion) {
         .zip(&rt.orbits)
         .map(|(a, b)| (a.period - b.period).abs() / a.period)
         .fold(0.0, f64::max);
-    println!("run-time model: {} orbits, largest relative period difference {worst:e}", rt.orbits.len());
+    println!(
+        "run-time model: {} orbits, largest relative period difference {worst:e}",
+        rt.orbits.len()
+    );
     let o: &PeriodicOrbit = &fam.orbits[30];
     let tb = fd_shooting(&derived, o.omega0, o.gamma0, o.period * 1.01);
-    println!("one orbit: T = {} (periodic_orbit), {tb} (finite-difference shooting)", o.period);
+    println!(
+        "one orbit: T = {} (periodic_orbit), {tb} (finite-difference shooting)",
+        o.period
+    );
 
     let mut group = c.benchmark_group("periodic");
     group.sample_size(10);
@@ -157,7 +171,15 @@ fn bench_periodic(c: &mut Criterion) {
     });
     let one = OrbitOptions::default();
     group.bench_function("one_orbit_periodic_orbit", |b| {
-        b.iter(|| periodic_orbit(&derived, o.omega0, o.gamma0, black_box(o.period * 1.01), &one))
+        b.iter(|| {
+            periodic_orbit(
+                &derived,
+                o.omega0,
+                o.gamma0,
+                black_box(o.period * 1.01),
+                &one,
+            )
+        })
     });
     group.bench_function("one_orbit_fd_shooting_baseline", |b| {
         b.iter(|| fd_shooting(&derived, o.omega0, o.gamma0, black_box(o.period * 1.01)))

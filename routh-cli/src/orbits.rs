@@ -49,7 +49,10 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
             verdict,
             Stability::SecularlyStable | Stability::GyroscopicallyStabilized
         ) {
-            skipped.push(format!("{} ({verdict}: no Lyapunov family)", vec3(&m.gamma)));
+            skipped.push(format!(
+                "{} ({verdict}: no Lyapunov family)",
+                vec3(&m.gamma)
+            ));
             continue;
         }
         for &mode in &modes {

@@ -211,7 +211,12 @@ impl OrbitFamily {
     /// k = ±1, events marked and named) or `"period"` (T against E). Returns the axes.
     #[pyo3(signature = (ax=None, quantity="stability_index"))]
     fn plot(slf: &Bound<'_, Self>, ax: Option<Py<PyAny>>, quantity: &str) -> PyResult<Py<PyAny>> {
-        helper(slf.py(), "routh._plot", "plot_orbit_family", (slf, ax, quantity))
+        helper(
+            slf.py(),
+            "routh._plot",
+            "plot_orbit_family",
+            (slf, ax, quantity),
+        )
     }
     /// The family as JSON (the Rust serde form; numbers round-trip).
     fn to_json(&self) -> PyResult<String> {
@@ -261,14 +266,21 @@ impl PoincareSection {
         ax: Option<Py<PyAny>>,
         fixed_points: Option<Py<PyAny>>,
     ) -> PyResult<Py<PyAny>> {
-        helper(slf.py(), "routh._plot", "plot_section", (slf, ax, fixed_points))
+        helper(
+            slf.py(),
+            "routh._plot",
+            "plot_section",
+            (slf, ax, fixed_points),
+        )
     }
 }
 
 fn rows2(py: Python<'_>, pts: &[[f64; 2]]) -> PyResult<Py<PyAny>> {
     let rows: Vec<Vec<f64>> = pts.iter().map(|p| p.to_vec()).collect();
     if rows.is_empty() {
-        return Ok(PyArray2::<f64>::zeros(py, [0, 2], false).into_any().unbind());
+        return Ok(PyArray2::<f64>::zeros(py, [0, 2], false)
+            .into_any()
+            .unbind());
     }
     Ok(PyArray2::from_vec2(py, &rows)
         .map_err(|e| crate::RouthError::new_err(e.to_string()))?
@@ -318,6 +330,7 @@ impl Model {
     /// >>> o = m.periodic_orbit([0, 0, 0], [0, np.sin(0.5), -np.cos(0.5)], 6.0)
     /// >>> o.stability
     #[pyo3(signature = (omega, gamma, period, *, rtol=None, atol=None, newton_tol=None))]
+    #[allow(clippy::too_many_arguments)]
     fn periodic_orbit(
         &self,
         py: Python<'_>,
@@ -448,7 +461,9 @@ impl Model {
             })
             .collect();
         let starts = if starts.is_empty() {
-            PyArray2::<f64>::zeros(py, [0, 6], false).into_any().unbind()
+            PyArray2::<f64>::zeros(py, [0, 6], false)
+                .into_any()
+                .unbind()
         } else {
             PyArray2::from_vec2(py, &starts)
                 .map_err(|e| crate::RouthError::new_err(e.to_string()))?
