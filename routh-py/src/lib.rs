@@ -17,6 +17,7 @@ mod guard;
 mod latex;
 mod nonlinear;
 mod orbits;
+mod pickle;
 mod progress;
 mod results;
 mod trajectory;
@@ -61,6 +62,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(family::bifurcation_diagram, m)?)?;
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;
+    m.add_function(wrap_pyfunction!(pickle::_restore, m)?)?;
     m.add("MAX_ATLAS_NODES", family::MAX_ATLAS_NODES)?;
     Ok(())
 }

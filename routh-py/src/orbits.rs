@@ -330,6 +330,7 @@ impl Model {
     /// >>> o = m.periodic_orbit([0, 0, 0], [0, np.sin(0.5), -np.cos(0.5)], 6.0)
     /// >>> o.stability
     #[pyo3(signature = (omega, gamma, period, *, rtol=None, atol=None, newton_tol=None))]
+    #[allow(clippy::too_many_arguments)]
     fn periodic_orbit(
         &self,
         py: Python<'_>,

@@ -102,8 +102,8 @@ pub struct Trajectory {
     /// The attitude, (n, 4) unit quaternions (x, y, z, w); None without `attitude=True`.
     #[pyo3(get)]
     pub attitude: Option<Py<PyAny>>,
-    euler: Option<Py<PyAny>>,
-    len: usize,
+    pub(crate) euler: Option<Py<PyAny>>,
+    pub(crate) len: usize,
 }
 
 impl Trajectory {
@@ -163,8 +163,8 @@ pub struct ReducedTrajectory {
     /// The attitude, (n, 4) unit quaternions (x, y, z, w); None without `attitude=True`.
     #[pyo3(get)]
     pub attitude: Option<Py<PyAny>>,
-    euler: Option<Py<PyAny>>,
-    len: usize,
+    pub(crate) euler: Option<Py<PyAny>>,
+    pub(crate) len: usize,
 }
 
 impl ReducedTrajectory {

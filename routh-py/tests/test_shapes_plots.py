@@ -134,7 +134,7 @@ def test_progress_flag_and_packaged_stubs(top):
 
 
 @pytest.mark.parametrize("doc", ["README.md", "docs/python.md"])
-def test_documented_python_runs(doc, capsys):
+def test_documented_python_runs(doc, capsys, monkeypatch):
     # The notebook-style examples of the README and the guide, executed as written.
     pytest.importorskip("matplotlib")
     import re
@@ -143,6 +143,7 @@ def test_documented_python_runs(doc, capsys):
 
     matplotlib.use("Agg")
     blocks = re.findall(r"```python\n(.*?)```", (ROOT / doc).read_text(), re.S)
+    monkeypatch.chdir(ROOT)  # the blocks name files from the repository's root
     assert blocks
     for code in blocks:
         exec(compile(code, doc, "exec"), {})

@@ -259,6 +259,14 @@ impl Model {
         &self.latex
     }
 
+    /// This model with the LaTeX symbols `latex` (name → symbol, as the TOML's `[latex]` table
+    /// gives them) in place of its own: what a copy made from the text, parameters and
+    /// symmetric list needs to print as the original (the Python package's pickling).
+    pub fn with_latex_symbols(mut self, latex: BTreeMap<String, String>) -> Model {
+        self.latex = latex;
+        self
+    }
+
     /// The derived formulas in LaTeX, printed from the same DAG as the evaluation: `L`, `ψ̇` (38),
     /// `R` (14), `U_r` (34) and `A`, `G`, `C` of (64) as `pmatrix`es (the derive's
     /// `DerivedFormulas::latex`). A parameter prints as the symbol the TOML's `[latex]` table gives

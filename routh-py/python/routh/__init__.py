@@ -37,6 +37,14 @@ from ._routh import (
     bifurcation_diagram,
     stability_atlas,
 )
+from . import _routh
+from .study import study
+
+
+def _restore(kind, state):
+    """Makes a pickled routh object again (what every class's ``__reduce__`` names)."""
+    return _routh._restore(kind, state)
+
 
 #: The name the architecture gives the diagram class.
 BifurcationDiagram = Diagram
@@ -78,6 +86,7 @@ __all__ = [
     "Trajectory",
     "bifurcation_diagram",
     "stability_atlas",
+    "study",
     "VERDICTS",
     "EVENT_KINDS",
 ]

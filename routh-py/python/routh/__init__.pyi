@@ -452,3 +452,18 @@ def stability_atlas(
     max_curve_points: int | None = None,
     progress: bool = False,
 ) -> Atlas: ...
+def study(
+    job: Union[str, Callable[..., Any]],
+    model: Model,
+    grid: Union[Mapping[str, Sequence[Any]], Sequence[Mapping[str, Any]]],
+    client: Any = None,
+    chunk: int | None = None,
+    progress: bool = True,
+    n_workers: int = 2,
+    timeout: float | None = None,
+) -> Any:
+    """`job(model, **point)` (or the `Model` method named `job`) at every point of `grid` on a
+    Dask cluster (a LocalCluster of `n_workers` processes by default, or `client`: a
+    `dask.distributed.Client` or an address): a pandas.DataFrame, one row per point, the
+    result's fields as columns and an `error` column. Needs `routh[dask]`."""
+def _restore(kind: str, state: Any) -> Any: ...

@@ -1,0 +1,172 @@
+"""`routh.study` on a LocalCluster of 2 worker processes: the numbers of a serial loop, a failing
+point recorded in `error`, and no worker process left after a cancelled study."""
+
+import sys
+import time
+
+import numpy as np
+import pytest
+
+distributed = pytest.importorskip("distributed")
+pd = pytest.importorskip("pandas")
+cloudpickle = pytest.importorskip("cloudpickle")
+psutil = pytest.importorskip("psutil")
+
+import routh  # noqa: E402
+
+# The jobs below are defined in this test module, which the workers cannot import: ship them
+# by value.
+cloudpickle.register_pickle_by_value(sys.modules[__name__])
+
+
+def sleeping(model, p_psi, **_):
+    """The linear verdict of the sleeping top γ = e₃, and U_r there."""
+    m = [s for s in model.steady_motions(p_psi) if abs(s.gamma[2] - 1) < 1e-9][0]
+    r = model.classify(m)
+    return {"verdict": r.verdict, "energy": m.energy, "u": m.amended_potential}
+
+
+def failing(model, p_psi, mgl):
+    if mgl == 2.0 and p_psi == 1.0:
+        raise ValueError("this body is broken")
+    return sleeping(model, p_psi)
+
+
+def slow(model, p_psi, **_):
+    time.sleep(2.0)
+    return p_psi
+
+
+GRID = {"mgl": [0.5, 1.0, 2.0], "p_psi": [0.5, 1.0, 1.5, 2.2, 3.5, 4.5]}
+
+
+@pytest.fixture(scope="module")
+def client():
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
+    ) as cluster, distributed.Client(cluster) as c:
+        yield c
+
+
+def serial(job, model, grid):
+    rows = []
+    for mgl in grid["mgl"]:
+        for p in grid["p_psi"]:
+            rows.append({"mgl": mgl, "p_psi": p, **job(model.with_params(mgl=mgl), p_psi=p, mgl=mgl)})
+    return pd.DataFrame(rows)
+
+
+def test_study_equals_a_serial_loop_and_maievskii(client, top):
+    df = routh.study(sleeping, top, GRID, client=client, chunk=4, progress=False)
+    assert len(df) == 18 and df["error"].isna().all()
+    assert list(df.columns[:2]) == ["mgl", "p_psi"]
+    ref = serial(sleeping, top, GRID)
+    pd.testing.assert_frame_equal(df.drop(columns="error"), ref)
+    # Maievskii: the sleeping top (A = 1) is stable iff p² > 4·A·mgl.
+    stable = df["p_psi"] ** 2 > 4 * df["mgl"]
+    assert (df.loc[~stable, "verdict"] == "unstable").all()
+    assert df.loc[stable, "verdict"].isin(["secularly_stable", "gyroscopically_stabilized"]).all()
+    assert (df["verdict"] == "gyroscopically_stabilized").any()
+
+
+def test_method_name_and_result_objects(client, top):
+    grid = {"mgl": [1.0, 2.0], "p_psi": [1.0, 3.0]}
+    # The address form: the study connects to the running scheduler (and leaves it running).
+    df = routh.study("certify", top, grid, client=client.scheduler.address, progress=False)
+    assert df["error"].isna().all()
+    ref = [top.with_params(mgl=m).certify(p) for m in grid["mgl"] for p in grid["p_psi"]]
+    assert df["boxes"].tolist() == [c.boxes for c in ref]
+    assert df["complete"].tolist() == [c.complete for c in ref]
+    assert client.status == "running"
+    # A SteadyMotion's fields, p_psi (a coordinate too) kept apart as result_p_psi.
+    df = routh.study(lambda m, p_psi: m.steady_motions(p_psi)[0], top, {"p_psi": [3.0]},
+                     client=client, progress=False)
+    first = top.steady_motions(3.0)[0]
+    assert df["gamma_2"][0] == first.gamma[2] and df["result_p_psi"][0] == 3.0
+    assert df["energy"][0] == first.energy and df["isolated"][0] == first.isolated
+
+
+def test_a_failing_point_is_recorded_and_the_rest_complete(client, top):
+    df = routh.study(failing, top, GRID, client=client, chunk=5, progress=False)
+    bad = (df["mgl"] == 2.0) & (df["p_psi"] == 1.0)
+    assert df.loc[bad, "error"].tolist() == ["ValueError: this body is broken"]
+    assert df.loc[~bad, "error"].isna().all()
+    ref = serial(sleeping, top, GRID)
+    assert df.loc[~bad, "verdict"].tolist() == ref.loc[~bad, "verdict"].tolist()
+    # An unknown parameter value is an error of its points too, not of the study.
+    df = routh.study(sleeping, top, {"mgl": [1.0], "inertia": [[1, 1]], "p_psi": [3.0]},
+                     client=client, progress=False)
+    assert df["error"].str.contains("ModelError").all()
+
+
+def workers():
+    """The live child processes (multiprocessing's resource tracker, which outlives any
+    cluster by design, aside)."""
+    out = []
+    for p in psutil.Process().children(recursive=True):
+        try:
+            if p.status() != psutil.STATUS_ZOMBIE and "resource_tracker" not in " ".join(p.cmdline()):
+                out.append(p)
+        except psutil.NoSuchProcess:
+            pass
+    return out
+
+
+def test_a_cancelled_study_leaves_no_worker(top):
+    before = {p.pid for p in workers()}
+    with pytest.raises(TimeoutError):
+        routh.study(slow, top, {"p_psi": [1.0, 2.0, 3.0, 4.0]}, chunk=1, timeout=1.0)
+    deadline = time.time() + 20
+    while time.time() < deadline and {p.pid for p in workers()} - before:
+        time.sleep(0.2)
+    assert not {p.pid for p in workers()} - before
+
+
+def test_local_cluster_by_default(top):
+    before = {p.pid for p in workers()}
+    df = routh.study(sleeping, top, {"mgl": [1.0], "p_psi": [1.0, 3.0]}, progress=False)
+    assert df["verdict"].tolist() == ["unstable", "secularly_stable"]
+    deadline = time.time() + 20
+    while time.time() < deadline and {p.pid for p in workers()} - before:
+        time.sleep(0.2)
+    assert not {p.pid for p in workers()} - before
+
+
+def test_without_dask_the_error_names_the_extra(top, monkeypatch):
+    monkeypatch.setitem(sys.modules, "distributed", None)  # `import distributed` fails
+    with pytest.raises(ImportError, match=r"routh\[dask\]"):
+        routh.study(sleeping, top, {"p_psi": [1.0]})
+
+
+def test_an_interrupted_study_leaves_no_worker(top):
+    """Ctrl-C while the study waits: KeyboardInterrupt reaches the caller, the tasks are
+    cancelled and the study's own cluster is closed."""
+    import os
+    import signal
+    import threading
+
+    if not hasattr(signal, "SIGINT") or threading.current_thread() is not threading.main_thread():
+        pytest.skip("needs SIGINT in the main thread")
+    before = {p.pid for p in workers()}
+    stop = threading.Event()
+
+    def interrupt():
+        # Once the study's 2 workers run (and have had time to start their tasks): Ctrl-C.
+        while not stop.is_set() and len({p.pid for p in workers()} - before) < 2:
+            time.sleep(0.1)
+        if not stop.wait(3.0):
+            os.kill(os.getpid(), signal.SIGINT)
+
+    t = threading.Thread(target=interrupt, daemon=True)
+    t.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            routh.study(slow, top, {"p_psi": [float(i) for i in range(30)]}, chunk=1,
+                        progress=False)
+    finally:
+        stop.set()
+        t.join()
+    deadline = time.time() + 20
+    while time.time() < deadline and {p.pid for p in workers()} - before:
+        time.sleep(0.2)
+    assert not {p.pid for p in workers()} - before
