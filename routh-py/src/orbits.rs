@@ -8,7 +8,7 @@ use crate::guard::detached;
 use crate::model::Model;
 use crate::results::SteadyMotion;
 use crate::trajectory::Trajectory;
-use numpy::{PyArray1, PyArray2};
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use routh::{Complex, OrbitOptions, SectionOptions};
 
@@ -275,14 +275,11 @@ impl PoincareSection {
     }
 }
 
-fn rows2(py: Python<'_>, pts: &[[f64; 2]]) -> PyResult<Py<PyAny>> {
-    let rows: Vec<Vec<f64>> = pts.iter().map(|p| p.to_vec()).collect();
-    if rows.is_empty() {
-        return Ok(PyArray2::<f64>::zeros(py, [0, 2], false)
-            .into_any()
-            .unbind());
-    }
-    Ok(PyArray2::from_vec2(py, &rows)
+/// Rows of `N` numbers as an (n, N) float64 array (also when n = 0).
+fn rows<const N: usize>(py: Python<'_>, rows: &[[f64; N]]) -> PyResult<Py<PyAny>> {
+    let flat: Vec<f64> = rows.iter().flatten().copied().collect();
+    Ok(PyArray1::from_vec(py, flat)
+        .reshape([rows.len(), N])
         .map_err(|e| crate::RouthError::new_err(e.to_string()))?
         .into_any()
         .unbind())
@@ -450,26 +447,17 @@ impl Model {
         let points = s
             .orbits
             .iter()
-            .map(|o| rows2(py, &o.points))
+            .map(|o| rows(py, &o.points))
             .collect::<PyResult<_>>()?;
-        let starts: Vec<Vec<f64>> = s
+        let starts: Vec<[f64; 6]> = s
             .orbits
             .iter()
             .map(|o| {
                 let (w, g) = (o.omega0, o.gamma0);
-                vec![w.x, w.y, w.z, g.x, g.y, g.z]
+                [w.x, w.y, w.z, g.x, g.y, g.z]
             })
             .collect();
-        let starts = if starts.is_empty() {
-            PyArray2::<f64>::zeros(py, [0, 6], false)
-                .into_any()
-                .unbind()
-        } else {
-            PyArray2::from_vec2(py, &starts)
-                .map_err(|e| crate::RouthError::new_err(e.to_string()))?
-                .into_any()
-                .unbind()
-        };
+        let starts = rows(py, &starts)?;
         Ok(PoincareSection {
             p_psi: s.p_psi,
             energy: s.energy,
@@ -496,7 +484,7 @@ impl Model {
         let o = orbit.inner.clone();
         let pts = detached(py, || routh::orbit_crossings(&m, &o, &opts))?
             .map_err(|e| routh_err(py, &e))?;
-        rows2(py, &pts)
+        rows(py, &pts)
     }
 
     /// The orbit sampled at `n` equally spaced times over one period (with the attitude): a

@@ -282,9 +282,11 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
                 Py<PyAny>,
                 Py<PyAny>,
                 Vec<Vec<Option<String>>>,
+                Vec<Vec<bool>>,
+                Option<String>,
                 Vec<Py<Boundary>>,
             );
-            let (x, y, verdicts, boundaries): State = state.extract()?;
+            let (x, y, verdicts, lost, stop, boundaries): State = state.extract()?;
             let verdicts = verdicts
                 .into_iter()
                 .map(|col| {
@@ -297,6 +299,8 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
                 x,
                 y,
                 verdicts,
+                lost,
+                stop,
                 boundaries,
             }
             .into_py_any(py)
@@ -563,6 +567,8 @@ impl Atlas {
             self.x.clone_ref(py),
             self.y.clone_ref(py),
             self.verdicts.clone(),
+            self.lost.clone(),
+            self.stop.clone(),
             boundaries,
         );
         reduce(py, "Atlas", state)

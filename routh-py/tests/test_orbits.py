@@ -66,14 +66,22 @@ def test_lyapunov_family_linear_limit_and_events(asymmetric):
             break
 
 
-def test_family_plot_draws_the_clipped_index_and_the_unit_lines(asymmetric):
+def test_family_plot_draws_the_index_and_the_unit_lines(asymmetric):
     import matplotlib
 
+    from routh._plot import index_axis
+
     matplotlib.use("Agg")
+    # The axis is k on [-1, 1] and a decade per unit beyond, as the Rust SVG.
+    assert np.allclose(index_axis([-100.0, -10.0, -1.0, 0.3, 1.0, 10.0, 1e4]),
+                       [-3.0, -2.0, -1.0, 0.3, 1.0, 2.0, 5.0])
     f = asymmetric.lyapunov_family(hanging(asymmetric), 0, max_orbits=30)
     ax = f.plot()
     ys = np.concatenate([line.get_ydata() for line in ax.get_lines() if len(line.get_xdata()) > 2])
-    assert ys.max() <= 3.0 and ys.min() >= -3.0
+    # The runs draw every orbit's index through the axis map (and nothing else).
+    assert np.isclose(ys.max(), index_axis([f.stability_index.max()])[0])
+    assert np.isclose(ys.min(), index_axis([f.stability_index.min()])[0])
+    assert np.isin(np.round(index_axis(f.stability_index), 12), np.round(ys, 12)).all()
     # The lines k = ±1 (axhline: 2 points), not the event marks on them (period doublings at
     # k = -1, one point each).
     flat = [line for line in ax.get_lines() if len(line.get_xdata()) == 2

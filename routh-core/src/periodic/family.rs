@@ -26,19 +26,20 @@ struct Node {
     orbit: PeriodicOrbit,
 }
 
+/// The index of the smallest singular value (nalgebra does not promise an order).
+fn smallest(values: &[f64]) -> usize {
+    (0..values.len())
+        .min_by(|&a, &b| values[a].total_cmp(&values[b]))
+        .unwrap_or(0)
+}
+
 /// The unit null vector of the first ten rows of the shooting system (the family's tangent),
 /// oriented along `along` when given.
 fn tangent_of(s: &Solved, along: Option<&W>) -> W {
     let top: SMatrix<f64, 10, 8> = s.jac.fixed_rows::<10>(0).into();
     let svd = top.svd(false, true);
     let v_t = svd.v_t.expect("asked for V");
-    let (mut imin, mut vmin) = (0, f64::INFINITY);
-    for (i, &sv) in svd.singular_values.iter().enumerate() {
-        if sv < vmin {
-            vmin = sv;
-            imin = i;
-        }
-    }
+    let imin = smallest(svd.singular_values.as_slice());
     let mut t: W = v_t.row(imin).transpose();
     t /= t.norm();
     if let Some(a) = along {
@@ -303,13 +304,7 @@ fn mode_vector(a: &Matrix6<f64>, omega: f64) -> Vector6<f64> {
         a.map(|v| Complex::new(v, 0.0)) - Matrix6::from_diagonal_element(Complex::new(0.0, omega));
     let svd = m.svd(false, true);
     let v_t = svd.v_t.expect("asked for V");
-    let (mut imin, mut vmin) = (0, f64::INFINITY);
-    for (i, &sv) in svd.singular_values.iter().enumerate() {
-        if sv < vmin {
-            vmin = sv;
-            imin = i;
-        }
-    }
+    let imin = smallest(svd.singular_values.as_slice());
     // The right singular vector is the conjugate of V^H's row.
     let v: Vec<Complex<f64>> = v_t.row(imin).iter().map(|z| z.conj()).collect();
     let re = Vector6::from_fn(|i, _| v[i].re);
@@ -537,13 +532,7 @@ pub fn period_doubled_family<M: Routhian>(
     }
     let svd = m.svd(false, true);
     let v_t = svd.v_t.expect("asked for V");
-    let (mut imin, mut vmin) = (0, f64::INFINITY);
-    for (i, &sv) in svd.singular_values.iter().enumerate() {
-        if sv < vmin {
-            vmin = sv;
-            imin = i;
-        }
-    }
+    let imin = smallest(svd.singular_values.as_slice());
     let v: Vector6<f64> = v_t.row(imin).transpose();
     let doubled = Scales {
         t: 2.0 * event.orbit.period,

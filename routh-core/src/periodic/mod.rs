@@ -49,7 +49,6 @@ use crate::RouthError;
 /// the multipliers.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[non_exhaustive]
 pub struct OrbitOptions {
     /// Relative tolerance of the integration of the orbit and its variational equations.
     pub rtol: f64,

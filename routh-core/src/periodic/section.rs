@@ -21,7 +21,6 @@ use crate::{Lagrangian, RouthError};
 /// Settings of a Poincaré section.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[non_exhaustive]
 pub struct SectionOptions {
     /// The plane is `γ·n = 0` (body frame; normalised).
     pub normal: Vector3<f64>,

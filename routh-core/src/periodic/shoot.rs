@@ -368,35 +368,18 @@ pub(crate) fn check_guess<M: Lagrangian + ?Sized>(
 /// corrector does not converge within [`OrbitOptions::max_iter`] steps.
 ///
 /// ```
-/// use routh_core::{periodic_orbit, OrbitOptions, OrbitStability, Vector3};
-/// # use routh_core::{Lagrangian, Matrix3};
-/// // A heavy body swinging in a vertical plane (a compound pendulum; test-models has such
-/// // bodies): small swings of amplitude 0.05 rad about the hanging position.
-/// # struct Pendulum;
-/// # impl Lagrangian for Pendulum {
-/// #     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
-/// #         0.5 * (w.x * w.x + 2.0 * w.y * w.y + 3.0 * w.z * w.z) - g.z
-/// #     }
-/// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
-/// #         Vector3::new(w.x, 2.0 * w.y, 3.0 * w.z)
-/// #     }
-/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
-/// #         Vector3::new(0.0, 0.0, -1.0)
-/// #     }
-/// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> {
-/// #         Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0))
-/// #     }
-/// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
-/// #         Matrix3::zeros()
-/// #     }
-/// # }
-/// // U = γ₃: the centre of mass is on the body's third axis, below the support when γ₃ = −1.
+/// use routh_core::{periodic_orbit, Matrix3, OrbitOptions, Vector3};
+/// use test_models::HeavyTop;
+/// // A heavy body J = diag(1, 2, 3), centre of mass on its third axis (U = γ₃): swings about the
+/// // first axis are a pendulum with ω₀² = mgl/A = 1. Small swings of 0.05 rad:
+/// let body = HeavyTop { j: Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)), mgr: Vector3::z() };
 /// let a = 0.05f64;
 /// let gamma = Vector3::new(0.0, a.sin(), -a.cos());
-/// let orbit = periodic_orbit(&Pendulum, Vector3::zeros(), gamma, 6.0, &OrbitOptions::default())?;
-/// // Small swings about the first axis (inertia 1): T ≈ 2π·(1 + a²/16).
+/// let orbit = periodic_orbit(&body, Vector3::zeros(), gamma, 6.0, &OrbitOptions::default())?;
+/// // T ≈ 2π(1 + a²/16), the pendulum's first correction; no precession.
 /// let t0 = 2.0 * std::f64::consts::PI;
 /// assert!((orbit.period - t0 * (1.0 + a * a / 16.0)).abs() < 1e-5);
+/// assert!(orbit.precession.abs() < 1e-9);
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 pub fn periodic_orbit<M: crate::Routhian>(

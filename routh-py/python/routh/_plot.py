@@ -26,21 +26,26 @@ def _axes(ax):
     return ax
 
 
+def _runs(ax, x, y, names, style, seen):
+    """Draw `y` against `x` in runs of equal `names[i]`, each run in `style[name]` (colour, line
+    style) and joined to the next; a name is put in the legend once (`seen` collects them)."""
+    start = 0
+    for i in range(1, len(names) + 1):
+        if i == len(names) or names[i] != names[start]:
+            colour, ls = style[names[start]]
+            hi = min(i + 1, len(names))
+            label = names[start].replace("_", " ") if names[start] not in seen else None
+            seen.add(names[start])
+            ax.plot(x[start:hi], y[start:hi], color=colour, linestyle=ls, label=label)
+            start = i
+
+
 def plot_diagram(diagram, ax=None, component=2):
     """Draw `diagram` (s against γ[component]) on `ax` (a new one if None); returns the axes."""
     ax = _axes(ax)
     seen = set()
     for b in diagram.branches:
-        s, g, v = b.s, b.gamma[:, component], b.verdicts
-        start = 0
-        for i in range(1, len(v) + 1):
-            if i == len(v) or v[i] != v[start]:
-                colour, ls = STYLE[v[start]]
-                hi = min(i + 1, len(v))
-                label = v[start].replace("_", " ") if v[start] not in seen else None
-                seen.add(v[start])
-                ax.plot(s[start:hi], g[start:hi], color=colour, linestyle=ls, label=label)
-                start = i
+        _runs(ax, b.s, b.gamma[:, component], list(b.verdicts), STYLE, seen)
     # Names alternate above and below their marks, so that close events stay readable.
     for k, e in enumerate(sorted(diagram.events, key=lambda e: e.s)):
         ax.plot([e.s], [e.gamma[component]], marker=EVENT_MARK[e.kind], color="k", linestyle="none")
@@ -153,23 +158,43 @@ def plot_apex(trajectory, ax=None, axis=(0.0, 0.0, 1.0)):
     return ax
 
 
-#: Colour and line style of each orbit stability (as routh::plot's orbit figures).
+#: Colour and line style of each orbit stability: those of routh::plot's orbit figures
+#: (elliptic green solid, parabolic purple, hyperbolic red dashed, inverse hyperbolic orange
+#: dotted), so that the two renderers agree.
 ORBIT_STYLE = {
-    "elliptic": ("#1f77b4", "-"),
-    "parabolic": ("#7f7f7f", ":"),
-    "hyperbolic": ("#d62728", "--"),
-    "inverse_hyperbolic": ("#ff7f0e", "-."),
+    "elliptic": ("#008237", "-"),
+    "parabolic": ("#5a0082", "-"),
+    "hyperbolic": ("#cd1e1e", "--"),
+    "inverse_hyperbolic": ("#c86e00", ":"),
 }
-ORBIT_EVENT_MARK = {"fold": "o", "branch_point": "s", "period_doubling": "^"}
+#: Event marks as the SVG: folds ▲, branch points ●, period doublings ◆.
+ORBIT_EVENT_MARK = {"fold": "^", "branch_point": "o", "period_doubling": "D"}
 ORBIT_EVENT_NAME = {"fold": "fold", "branch_point": "branch point", "period_doubling": "period doubling"}
-#: The stability index is drawn clipped to [-K_CLIP, K_CLIP]: near a separatrix it grows
-#: without bound, and what matters is where it crosses ±1.
-K_CLIP = 3.0
+def index_axis(k):
+    """The stability index on the figure's vertical axis, as ``routh::plot::stability_index_axis``:
+    ``k`` itself on [-1, 1], and one unit a decade beyond, ``±(1 + log10|k|)`` (k = ±10 at ±2,
+    ±100 at ±3): near a separatrix k grows without bound, and what matters is where it crosses
+    ±1."""
+    k = np.asarray(k, dtype=float)
+    big = np.abs(k) > 1
+    out = k.copy()
+    out[big] = np.sign(k[big]) * (1 + np.log10(np.abs(k[big])))
+    return out
+
+
+def _index_ticks(ax):
+    lo, hi = ax.get_ylim()
+    ticks, labels = [], []
+    for t in range(int(np.floor(lo)), int(np.ceil(hi)) + 1):
+        ticks.append(t)
+        labels.append(str(t) if abs(t) <= 1 else ("−" if t < 0 else "") + f"{10 ** (abs(t) - 1):g}")
+    ax.set_yticks(ticks)
+    ax.set_yticklabels(labels)
 
 
 def plot_orbit_family(family, ax=None, quantity="stability_index"):
     """Draw a family of periodic orbits: ``quantity="stability_index"`` is the stability diagram
-    (k against E, clipped to [-3, 3], the lines k = ±1 dotted, events marked and named);
+    (k against E on the axis of `index_axis`, the lines k = ±1 dotted, events marked and named);
     ``"period"`` is T against E. Elliptic parts solid, hyperbolic dashed. Returns the axes."""
     if quantity not in ("stability_index", "period"):
         raise ValueError(f"quantity must be 'stability_index' or 'period', got {quantity!r}")
@@ -177,29 +202,22 @@ def plot_orbit_family(family, ax=None, quantity="stability_index"):
     e = np.asarray(family.energy)
     y = np.asarray(getattr(family, quantity), dtype=float)
     if quantity == "stability_index":
-        y = np.clip(y, -K_CLIP, K_CLIP)
+        y = index_axis(y)
         for level in (-1.0, 1.0):
             ax.axhline(level, color="#555555", lw=0.8, linestyle=":")
-    v = list(family.stability)
     seen = set()
-    start = 0
-    for i in range(1, len(v) + 1):
-        if i == len(v) or v[i] != v[start]:
-            colour, ls = ORBIT_STYLE[v[start]]
-            hi = min(i + 1, len(v))
-            label = v[start].replace("_", " ") if v[start] not in seen else None
-            seen.add(v[start])
-            ax.plot(e[start:hi], y[start:hi], color=colour, linestyle=ls, label=label)
-            start = i
+    _runs(ax, e, y, list(family.stability), ORBIT_STYLE, seen)
     for k, ev in enumerate(sorted(family.events, key=lambda ev: ev.energy)):
         yv = ev.orbit.stability_index if quantity == "stability_index" else ev.orbit.period
         if quantity == "stability_index":
-            yv = float(np.clip(yv, -K_CLIP, K_CLIP))
+            yv = float(index_axis([yv])[0])
         ax.plot([ev.energy], [yv], marker=ORBIT_EVENT_MARK[ev.kind], color="k", linestyle="none")
         ax.annotate(ORBIT_EVENT_NAME[ev.kind], (ev.energy, yv), textcoords="offset points",
                     xytext=(4, 6) if k % 2 == 0 else (4, -14), fontsize=8)
     ax.set_xlabel("E")
     ax.set_ylabel("k" if quantity == "stability_index" else "T")
+    if quantity == "stability_index":
+        _index_ticks(ax)
     if seen:
         ax.legend(fontsize=8)
     return ax
