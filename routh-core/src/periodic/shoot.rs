@@ -263,7 +263,7 @@ pub(crate) fn orbit_of<M: Lagrangian + ?Sized>(
 
 /// The time of the guess's closest return through its own phase plane within `(T/2, 4T)` of the
 /// period guessed: where `g(t) = F̂_ref·(x(t) − x_ref)` crosses zero upwards (as at `t = 0`, where
-/// `g' = |F| > 0`), the crossing nearest to `x_ref`. A user's period guess is often off by tens
+/// `g' = |F| > 0`), the earliest crossing about as near to `x_ref` as the nearest. A user's period guess is often off by tens
 /// of per cent (a pendulum's period doubles near the separatrix); Newton's basin in `T` is
 /// narrower. `None`: no return (then the guess is used as it is).
 fn return_time<M: Lagrangian + ?Sized>(
@@ -285,7 +285,7 @@ fn return_time<M: Lagrangian + ?Sized>(
     };
     let g = |x: &Vector6<f64>| prob.f_ref.dot(&(x - prob.x_ref));
     let mut prev = (0.0, 0.0);
-    let mut best: Option<(f64, f64)> = None;
+    let mut returns: Vec<(f64, f64)> = Vec::new();
     let rhs = |_t: f64, x: &Vector6<f64>| field(model, x);
     let _ = dop853::integrate(
         rhs,
@@ -312,17 +312,18 @@ fn return_time<M: Lagrangian + ?Sized>(
                         |t| Ok::<_, RouthError>(Some((g(&d.eval(t)), ()))),
                         |lo, hi| estimated_distance(lo, hi) <= 1e-12 * hi.at,
                     )?;
-                    let dist = (d.eval(z.at) - prob.x_ref).norm();
-                    if best.is_none_or(|(_, b)| dist < b) {
-                        best = Some((z.at, dist));
-                    }
+                    returns.push((z.at, (d.eval(z.at) - prob.x_ref).norm()));
                 }
             }
             prev = now;
             Ok(())
         },
     );
-    best.map(|(t, _)| t)
+    // The earliest return about as close as the closest: on an orbit the returns after 2T, 3T
+    // are as close as the first (to round-off), and the first is the period.
+    let closest = returns.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
+    let near = 2.0 * closest + 1e-8 * 1f64.max(prob.x_ref.norm());
+    returns.iter().find(|r| r.1 <= near).map(|r| r.0)
 }
 
 /// Checks a guess: finite, `|γ| = 1`, `T > 0`, and not a steady motion (a point that moves by
