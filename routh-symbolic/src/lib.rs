@@ -23,5 +23,7 @@ pub mod shape;
 
 pub use analysis::{degree, extra_cost, op_counts, schedule, to_infix, Degree, OpCounts, Plan};
 pub use graph::{Func, Graph, Id, Node, Var};
-pub use latex::{latex_symbol, matrix_to_latex, on_sphere, to_latex, LatexSymbols};
+pub use latex::{
+    latex_symbol, matrix_to_latex, on_sphere, sympy_symbol, to_latex, to_sympy, LatexSymbols,
+};
 pub use shape::{Shape, ShapeError, Value};
