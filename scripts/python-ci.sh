@@ -17,8 +17,8 @@ trap 'rm -rf "$WORK"' EXIT
 step "fresh venv in $WORK/venv"
 python3 -m venv "$WORK/venv"
 PY="$WORK/venv/bin/python"
-step "pip install maturin numpy pytest matplotlib"
-"$PY" -m pip install -q maturin numpy pytest matplotlib
+step "pip install maturin numpy pytest matplotlib sympy"
+"$PY" -m pip install -q maturin numpy pytest matplotlib sympy
 step "pip install ./routh-py"
 "$PY" -m pip install -q ./routh-py
 step "pytest routh-py/tests"

@@ -1,10 +1,11 @@
-//! The derived formulas in LaTeX, from the same graph as the generated code: the strings behind
-//! `DerivedFormulas::latex()` (emitted as consts by the derive), and what a run-time model built
-//! from a [`Model`] returns — both call [`latex_formulas`].
+//! The derived formulas in LaTeX and in SymPy's syntax, from the same graph as the generated
+//! code: the strings behind `DerivedFormulas::latex()` (emitted as consts by the derive), and
+//! what a run-time model built from a [`Model`] returns — both call [`latex_formulas`]; the
+//! SymPy strings ([`sympy_formulas`]) are printed for run-time models only, when asked for.
 
 use std::collections::HashMap;
 
-use routh_symbolic::{matrix_to_latex, on_sphere, to_latex, Graph, Id, LatexSymbols};
+use routh_symbolic::{matrix_to_latex, on_sphere, to_latex, to_sympy, Graph, Id, LatexSymbols};
 
 use crate::Model;
 
@@ -21,10 +22,34 @@ pub struct LatexText {
     pub c: String,
 }
 
-/// Prints the model's formulas with `fields` as the symbols of its fields (field name → LaTeX;
-/// the others print as `\mathit{name}`). Functions of γ are simplified with `|γ|² = 1` where
-/// that shortens them ([`routh_symbolic::on_sphere`]); ψ̇ and R are printed with `\Omega_i`.
-pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
+/// The same formulas in SymPy's syntax, field by field as `routh_core::SympyFormulas`; a matrix
+/// as `Matrix([[…], […], […]])`, and the definitions of the named subexpressions `sigmaK` of
+/// the formulas too large to write out (in order, each using only the names before it).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct SympyText {
+    pub lagrangian: String,
+    pub psi_dot: String,
+    pub routhian: String,
+    pub amended_potential: String,
+    pub a: String,
+    pub g: String,
+    pub c: String,
+    pub definitions: Vec<(String, String)>,
+}
+
+/// The graph with the formulas simplified on the sphere, and their roots: L, ψ̇, R, U_r, A, G,
+/// C (ψ̇ and R printed with `\Omega_i`).
+struct Shortened {
+    g: Graph,
+    plain: LatexSymbols,
+    relative: LatexSymbols,
+    scalars: [Id; 4],
+    matrices: [[[Id; 3]; 3]; 3],
+}
+
+/// The model's formulas with the functions of γ simplified with `|γ|² = 1` where that shortens
+/// their LaTeX ([`routh_symbolic::on_sphere`]).
+fn shortened(model: &Model, fields: &[(String, String)]) -> Shortened {
     let sym = &model.lowered.sym;
     // A scratch copy: the rewriting adds nodes the generated code must not see.
     let mut g: Graph = sym.graph.clone();
@@ -42,22 +67,70 @@ pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
     let mut short = |g: &mut Graph, id: Id, s: &LatexSymbols| {
         *(shortened.entry((id, s.big_omega))).or_insert_with(|| on_sphere(g, id, sym.gamma, s))
     };
-    let mut one = |g: &mut Graph, id: Id, s: &LatexSymbols| {
-        let id = short(g, id, s);
-        to_latex(g, id, s)
-    };
-    let lagrangian = one(&mut g, o.lagrangian, &plain);
-    let psi_dot = one(&mut g, o.psi_dot, &relative);
-    let routhian = one(&mut g, o.routhian, &relative);
-    let amended_potential = one(&mut g, o.amended_potential, &plain);
-    let mut matrix = |g: &mut Graph, m: &[[Id; 3]; 3]| {
-        let m = m.map(|row| row.map(|id| short(g, id, &plain)));
-        matrix_to_latex(g, &m, &plain)
-    };
-    let a = matrix(&mut g, &o.gyro_a);
-    let gg = matrix(&mut g, &o.gyro_g);
-    let c = matrix(&mut g, &o.gyro_c);
+    let scalars = [
+        short(&mut g, o.lagrangian, &plain),
+        short(&mut g, o.psi_dot, &relative),
+        short(&mut g, o.routhian, &relative),
+        short(&mut g, o.amended_potential, &plain),
+    ];
+    let matrices = [o.gyro_a, o.gyro_g, o.gyro_c]
+        .map(|m| m.map(|row| row.map(|id| short(&mut g, id, &plain))));
+    Shortened {
+        g,
+        plain,
+        relative,
+        scalars,
+        matrices,
+    }
+}
+
+/// Prints the model's formulas with `fields` as the symbols of its fields (field name → LaTeX;
+/// the others print as `\mathit{name}`). Functions of γ are simplified with `|γ|² = 1` where
+/// that shortens them ([`routh_symbolic::on_sphere`]); ψ̇ and R are printed with `\Omega_i`.
+pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
+    let s = shortened(model, fields);
+    let g = &s.g;
+    let [l, pd, r, ur] = s.scalars;
+    let [a, gg, c] = s.matrices.map(|m| matrix_to_latex(g, &m, &s.plain));
     LatexText {
+        lagrangian: to_latex(g, l, &s.plain),
+        psi_dot: to_latex(g, pd, &s.relative),
+        routhian: to_latex(g, r, &s.relative),
+        amended_potential: to_latex(g, ur, &s.plain),
+        a,
+        g: gg,
+        c,
+    }
+}
+
+/// The same formulas as [`latex_formulas`] (the same expressions, simplified on the sphere the
+/// same way) in SymPy's syntax ([`routh_symbolic::to_sympy`]): `omega1`, `Omega1` (in ψ̇ and R),
+/// `gamma1`, `p_psi`, each parameter by its field's name (`inertia_1`, `I_12` for components,
+/// from 1), matrices as `Matrix([[…], […], […]])`.
+pub fn sympy_formulas(model: &Model) -> SympyText {
+    let s = shortened(model, &[]);
+    let g = &s.g;
+    let mut definitions = Vec::new();
+    let mut one = |roots: &[Id], symbols: &LatexSymbols| {
+        let (texts, defs) = to_sympy(g, roots, symbols, definitions.len());
+        definitions.extend(defs);
+        texts
+    };
+    let [l, pd, r, ur] = s.scalars;
+    let lagrangian = one(&[l], &s.plain).concat();
+    let psi_dot = one(&[pd], &s.relative).concat();
+    let routhian = one(&[r], &s.relative).concat();
+    let amended_potential = one(&[ur], &s.plain).concat();
+    let [a, gg, c] = s.matrices.map(|m| {
+        let roots: Vec<Id> = m.iter().flatten().copied().collect();
+        let cells = one(&roots, &s.plain);
+        let rows: Vec<String> = cells
+            .chunks(3)
+            .map(|row| format!("[{}]", row.join(", ")))
+            .collect();
+        format!("Matrix([{}])", rows.join(", "))
+    });
+    SympyText {
         lagrangian,
         psi_dot,
         routhian,
@@ -65,5 +138,6 @@ pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
         a,
         g: gg,
         c,
+        definitions,
     }
 }
