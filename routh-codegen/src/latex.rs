@@ -5,7 +5,11 @@
 
 use std::collections::HashMap;
 
-use routh_symbolic::{matrix_to_latex, on_sphere, to_latex, to_sympy, Graph, Id, LatexSymbols};
+use routh_symbolic::shape::dot3;
+use routh_symbolic::{
+    matrix_to_latex_named, on_sphere, replace_nodes, to_latex, to_sympy, Graph, Id, LatexSymbols,
+    Var, INTERMEDIATES,
+};
 
 use crate::Model;
 
@@ -45,11 +49,18 @@ struct Shortened {
     relative: LatexSymbols,
     scalars: [Id; 4],
     matrices: [[[Id; 3]; 3]; 3],
+    /// With `named`: the variables standing for γᵀJγ, ψ̇ and μ in `matrices`, and their
+    /// definitions (each in terms of the ones before it).
+    intermediates: Vec<(Var, Id)>,
 }
 
 /// The model's formulas with the functions of γ simplified with `|γ|² = 1` where that shortens
 /// their LaTeX ([`routh_symbolic::on_sphere`]).
-fn shortened(model: &Model, fields: &[(String, String)]) -> Shortened {
+///
+/// With `named`, the matrices are written with the paper's intermediate quantities
+/// ([`INTERMEDIATES`]) as variables: γᵀJγ (the denominator of (38), `2T₂` at `ω = γ`), ψ̇ at
+/// rest (38) and μ = (∂R/∂γ, γ) at rest, each node replaced where the matrices use it.
+fn shortened(model: &Model, fields: &[(String, String)], named: bool) -> Shortened {
     let sym = &model.lowered.sym;
     // A scratch copy: the rewriting adds nodes the generated code must not see.
     let mut g: Graph = sym.graph.clone();
@@ -73,14 +84,42 @@ fn shortened(model: &Model, fields: &[(String, String)]) -> Shortened {
         short(&mut g, o.routhian, &relative),
         short(&mut g, o.amended_potential, &plain),
     ];
-    let matrices = [o.gyro_a, o.gyro_g, o.gyro_c]
-        .map(|m| m.map(|row| row.map(|id| short(&mut g, id, &plain))));
+    let mut matrices = [o.gyro_a, o.gyro_g, o.gyro_c];
+    let mut intermediates = Vec::new();
+    if named {
+        let lowered = &model.lowered;
+        let gm = sym.gamma.map(|v| g.var_id(v));
+        // The nodes as the reduction built them (hash-consing gives the same ids).
+        let on_gamma: HashMap<Var, Id> = sym.omega.iter().copied().zip(gm).collect();
+        let t2 = g.substitute(&[lowered.kinetic], &on_gamma)[0];
+        let two = g.constant(2.0);
+        let gjg = g.mul(two, t2);
+        let mu = dot3(&mut g, &o.dr_dgamma_at_rest, &gm);
+        let nodes = [gjg, o.psi_dot_at_rest, mu];
+        let vars = INTERMEDIATES.map(|(name, _, _)| g.new_var(name));
+        let mut map: HashMap<Id, Id> = HashMap::new();
+        for (&node, &var) in nodes.iter().zip(&vars) {
+            // Each definition in terms of the quantities before it.
+            let def = replace_nodes(&mut g, &[node], &map)[0];
+            let def = short(&mut g, def, &plain);
+            intermediates.push((var, def));
+            let v = g.var_id(var);
+            map.insert(node, v);
+        }
+        for m in &mut matrices {
+            let flat: Vec<Id> = m.iter().flatten().copied().collect();
+            let new = replace_nodes(&mut g, &flat, &map);
+            *m = std::array::from_fn(|i| std::array::from_fn(|j| new[3 * i + j]));
+        }
+    }
+    let matrices = matrices.map(|m| m.map(|row| row.map(|id| short(&mut g, id, &plain))));
     Shortened {
         g,
         plain,
         relative,
         scalars,
         matrices,
+        intermediates,
     }
 }
 
@@ -88,10 +127,10 @@ fn shortened(model: &Model, fields: &[(String, String)]) -> Shortened {
 /// the others print as `\mathit{name}`). Functions of γ are simplified with `|γ|² = 1` where
 /// that shortens them ([`routh_symbolic::on_sphere`]); ψ̇ and R are printed with `\Omega_i`.
 pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
-    let s = shortened(model, fields);
+    let s = shortened(model, fields, true);
     let g = &s.g;
     let [l, pd, r, ur] = s.scalars;
-    let [a, gg, c] = s.matrices.map(|m| matrix_to_latex(g, &m, &s.plain));
+    let [a, gg, c] = (s.matrices).map(|m| matrix_to_latex_named(g, &m, &s.intermediates, &s.plain));
     LatexText {
         lagrangian: to_latex(g, l, &s.plain),
         psi_dot: to_latex(g, pd, &s.relative),
@@ -108,7 +147,7 @@ pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
 /// `gamma1`, `p_psi`, each parameter by its field's name (`inertia_1`, `I_12` for components,
 /// from 1), matrices as `Matrix([[…], […], […]])`.
 pub fn sympy_formulas(model: &Model) -> SympyText {
-    let s = shortened(model, &[]);
+    let s = shortened(model, &[], false);
     let g = &s.g;
     let mut definitions = Vec::new();
     let mut one = |roots: &[Id], symbols: &LatexSymbols| {

@@ -121,7 +121,7 @@ impl LatexFormulas {
 ///
 /// >>> f = top.sympy()
 /// >>> f.lagrangian
-/// '1/2*inertia_1*omega1**2 + 1/2*inertia_2*omega2**2 + 1/2*inertia_3*omega3**2 - mgl*gamma3'
+/// '1/2*(inertia_1*omega1**2 + inertia_2*omega2**2 + inertia_3*omega3**2) - mgl*gamma3'
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct SympyFormulas {
     /// L(ω, γ).

@@ -81,7 +81,7 @@ def test_the_text_is_sympy_syntax_in_canonical_order(top):
     f = top.sympy()
     # Terms by degree then index, parameters before variables, components from 1.
     assert f.lagrangian == (
-        "1/2*inertia_1*omega1**2 + 1/2*inertia_2*omega2**2 + 1/2*inertia_3*omega3**2 - mgl*gamma3"
+        "1/2*(inertia_1*omega1**2 + inertia_2*omega2**2 + inertia_3*omega3**2) - mgl*gamma3"
     )
     assert f.definitions == []
     assert f.a.startswith("Matrix([[") and "\\" not in f.c

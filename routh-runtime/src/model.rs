@@ -311,7 +311,7 @@ impl Model {
     /// let f = top.sympy();
     /// assert_eq!(
     ///     f.lagrangian,
-    ///     "1/2*inertia_1*omega1**2 + 1/2*inertia_2*omega2**2 + 1/2*inertia_3*omega3**2 - mgl*gamma3"
+    ///     "1/2*(inertia_1*omega1**2 + inertia_2*omega2**2 + inertia_3*omega3**2) - mgl*gamma3"
     /// );
     /// assert!(f.a.starts_with("Matrix([["));
     /// # Ok::<(), routh_runtime::ModelError>(())

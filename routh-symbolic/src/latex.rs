@@ -62,6 +62,9 @@ enum Style {
 /// LaTeX: `inertia_3`, `I_12`). The field's own name is kept (not its LaTeX symbol): it is a
 /// Python identifier, and it is the name the model's parameters go by everywhere else.
 pub fn sympy_symbol(var_name: &str, symbols: &LatexSymbols) -> String {
+    if let Some(&(_, _, py)) = INTERMEDIATES.iter().find(|(n, _, _)| *n == var_name) {
+        return py.to_string();
+    }
     if let Some((class, k)) = state_slot(var_name) {
         return match class {
             0 if symbols.big_omega => format!("Omega{}", k + 1),
@@ -88,6 +91,16 @@ pub fn sympy_symbol(var_name: &str, symbols: &LatexSymbols) -> String {
         format!("{base}_{idx}")
     }
 }
+
+/// The intermediate quantities the paper names, as variables of that name stand for them in a
+/// formula ([`matrix_to_latex_named`]): the name, the LaTeX and the SymPy symbol. `γᵀJγ` is
+/// (38)'s denominator `γᵀJ(γ)γ` with `J = ∂²L/∂ω²`, `ψ̇` is ψ̇ at rest (38), `μ = (∂R/∂γ, γ)`
+/// at rest (errata E6).
+pub const INTERMEDIATES: [(&str, &str, &str); 3] = [
+    ("γᵀJγ", "\\gamma^{\\mathsf{T}} J \\gamma", "gJg"),
+    ("ψ̇", "\\dot\\psi", "psidot"),
+    ("μ", "\\mu", "mu"),
+];
 
 /// A state variable's place: `(0, k)` for `ω_{k+1}`, `(1, k)` for `γ_{k+1}`, `(2, 0)` for `p_ψ`;
 /// `None` for a parameter.
@@ -136,6 +149,9 @@ pub fn latex_symbol(var_name: &str, symbols: &LatexSymbols) -> String {
     if var_name == "p_ψ" {
         return "p_\\psi".to_string();
     }
+    if let Some(&(_, tex, _)) = INTERMEDIATES.iter().find(|(n, _, _)| *n == var_name) {
+        return tex.to_string();
+    }
     let (base, index) = match var_name.find('[') {
         Some(at) => (&var_name[..at], Some(&var_name[at..])),
         None => (var_name, None),
@@ -181,7 +197,7 @@ pub fn latex_symbol(var_name: &str, symbols: &LatexSymbols) -> String {
 /// (a definition uses only the names before it). Beyond `MAX_NAMED_TOTAL` nodes even so, the
 /// text says that the formula was not printed.
 pub fn to_latex(g: &Graph, root: Id, symbols: &LatexSymbols) -> String {
-    let (main, defs) = print_roots(g, &[root], symbols, Style::Latex, 0);
+    let (main, defs) = print_roots(g, &[root], symbols, Style::Latex, 0, MAX_TREE);
     format!("{}{}", main.concat(), where_clause(&defs))
 }
 
@@ -190,7 +206,7 @@ pub fn to_latex(g: &Graph, root: Id, symbols: &LatexSymbols) -> String {
 /// the matrix.
 pub fn matrix_to_latex(g: &Graph, m: &[[Id; 3]; 3], symbols: &LatexSymbols) -> String {
     let roots: Vec<Id> = m.iter().flatten().copied().collect();
-    let (cells, defs) = print_roots(g, &roots, symbols, Style::Latex, 0);
+    let (cells, defs) = print_roots(g, &roots, symbols, Style::Latex, 0, MAX_TREE);
     let rows: Vec<String> = cells.chunks(3).map(|row| row.join(" & ")).collect();
     format!(
         "\\begin{{pmatrix}} {} \\end{{pmatrix}}{}",
@@ -222,7 +238,119 @@ pub fn to_sympy(
     symbols: &LatexSymbols,
     first: usize,
 ) -> (Vec<String>, Vec<(String, String)>) {
-    print_roots(g, roots, symbols, Style::Sympy, first)
+    print_roots(g, roots, symbols, Style::Sympy, first, MAX_TREE_SYMPY)
+}
+
+/// A 3×3 matrix as [`matrix_to_latex`], its entries written with the intermediate quantities
+/// `named` — `(variable, definition)`, the variables named as in [`INTERMEDIATES`] and standing
+/// for their definitions in the entries (and in the later definitions) — and those defined
+/// after the matrix, `\quad \text{where} \quad \gamma^{\mathsf{T}} J \gamma = …,\; \dot\psi = …`.
+/// Only the quantities the matrix uses are defined. The entries are printed in full up to
+/// `9 MAX_TREE` nodes in all (250 an entry); beyond it, with named common subexpressions
+/// `\sigma_{k}` as [`to_latex`]. The definitions come in an order where each uses only the
+/// ones before it.
+pub fn matrix_to_latex_named(
+    g: &Graph,
+    m: &[[Id; 3]; 3],
+    named: &[(Var, Id)],
+    symbols: &LatexSymbols,
+) -> String {
+    let mut roots: Vec<Id> = m.iter().flatten().copied().collect();
+    roots.extend(named.iter().map(|&(_, d)| d));
+    let (texts, sigmas) = print_roots(g, &roots, symbols, Style::Latex, 0, 9 * MAX_TREE);
+    let (cells, values) = texts.split_at(9);
+    let rows: Vec<String> = cells.chunks(3).map(|row| row.join(" & ")).collect();
+    let mut defs: Vec<(String, String)> = (named.iter().zip(values))
+        .map(|(&(v, _), t)| (latex_symbol(g.var_name(v), symbols), t.clone()))
+        .collect();
+    defs.extend(sigmas);
+    // Only the definitions the matrix uses, directly or through another.
+    let mut used = vec![false; defs.len()];
+    let mut text = cells.concat();
+    loop {
+        let mut more = false;
+        for (k, (name, value)) in defs.iter().enumerate() {
+            if !used[k] && text.contains(name.as_str()) {
+                used[k] = true;
+                more = true;
+                text.push_str(value);
+            }
+        }
+        if !more {
+            break;
+        }
+    }
+    let mut left: Vec<(String, String)> = (defs.into_iter().zip(used))
+        .filter_map(|(d, u)| u.then_some(d))
+        .collect();
+    // Each definition after the ones it uses.
+    let mut ordered = Vec::with_capacity(left.len());
+    while !left.is_empty() {
+        let k = (0..left.len())
+            .find(|&k| {
+                (left.iter().enumerate())
+                    .all(|(j, (name, _))| j == k || !left[k].1.contains(name.as_str()))
+            })
+            .unwrap_or(0);
+        ordered.push(left.remove(k));
+    }
+    format!(
+        "\\begin{{pmatrix}} {} \\end{{pmatrix}}{}",
+        rows.join(" \\\\ "),
+        where_clause(&ordered)
+    )
+}
+
+/// `roots` with every node of `map`'s keys replaced by its value, rebuilt through the
+/// simplifying constructors (children first; the replaced node's own children are not
+/// visited).
+pub fn replace_nodes(g: &mut Graph, roots: &[Id], map: &HashMap<Id, Id>) -> Vec<Id> {
+    let Some(last) = roots.iter().map(|r| r.index()).max() else {
+        return Vec::new();
+    };
+    let mut seen = vec![false; last + 1];
+    let mut stack: Vec<Id> = Vec::new();
+    for &r in roots {
+        if !seen[r.index()] {
+            seen[r.index()] = true;
+            stack.push(r);
+        }
+    }
+    while let Some(id) = stack.pop() {
+        if map.contains_key(&id) {
+            continue;
+        }
+        for c in g.node(id).children() {
+            if !seen[c.index()] {
+                seen[c.index()] = true;
+                stack.push(c);
+            }
+        }
+    }
+    let mut image: Vec<Id> = (0..=last).map(Id::from_index).collect();
+    for idx in (0..=last).filter(|&i| seen[i]) {
+        let id = Id::from_index(idx);
+        if let Some(&to) = map.get(&id) {
+            image[idx] = to;
+            continue;
+        }
+        let node = g.node(id);
+        if node.children().all(|c| image[c.index()] == c) {
+            continue;
+        }
+        let m = |x: Id| image[x.index()];
+        image[idx] = match node {
+            Node::Const(_) | Node::Var(_) => id,
+            Node::Add(a, b) => g.add(m(a), m(b)),
+            Node::Mul(a, b) => g.mul(m(a), m(b)),
+            Node::Neg(a) => g.neg(m(a)),
+            Node::Recip(a) => g.recip(m(a)),
+            Node::Powi(a, n) => g.powi(m(a), n),
+            Node::Powf(a, b) => g.powf(m(a), m(b)),
+            Node::Func(f, a) => g.func(f, m(a)),
+        };
+    }
+    roots.iter().map(|r| image[r.index()]).collect()
 }
 
 /// The name of the `k`-th (from 1) named subexpression.
@@ -244,6 +372,7 @@ fn print_roots(
     symbols: &LatexSymbols,
     style: Style,
     first: usize,
+    inline: u64,
 ) -> (Vec<String>, Vec<(String, String)>) {
     let Some(last) = roots.iter().map(|r| r.index()).max() else {
         return (Vec::new(), Vec::new());
@@ -283,10 +412,6 @@ fn print_roots(
     // Inline when small: a matrix by the total of its entries (its entries share the same
     // subexpressions, e.g. γᵀJγ in each entry of G).
     let total_size = (roots.iter().map(|r| size[r.index()])).fold(0u64, u64::saturating_add);
-    let inline = match style {
-        Style::Latex => MAX_TREE,
-        Style::Sympy => MAX_TREE_SYMPY,
-    };
     if total_size <= inline {
         let p = Printer {
             g,
@@ -664,7 +789,13 @@ impl Printer<'_> {
                     Style::Latex => latex_symbol(g.var_name(v), self.symbols),
                     Style::Sympy => sympy_symbol(g.var_name(v), self.symbols),
                 });
-                out.push_str(sym);
+                // A symbol of several letters (γᵀJγ) in brackets as a power's base.
+                if parent >= 4 && sym.contains(' ') {
+                    let sym = self.bracket(sym);
+                    out.push_str(&sym);
+                } else {
+                    out.push_str(sym);
+                }
                 return;
             }
             Node::Powi(x, n) if n < 0 => {
