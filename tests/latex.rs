@@ -261,6 +261,7 @@ const WHERE: &str = " \\quad \\text{where} \\quad ";
 /// separated by `,\;`, each evaluated with the ones before it).
 fn definitions(src: &str, env: &HashMap<String, f64>) -> (String, HashMap<String, f64>) {
     let mut env = env.clone();
+    let src = &intermediates(src);
     let Some((main, defs)) = src.split_once(WHERE) else {
         return (src.to_string(), env);
     };
@@ -268,8 +269,15 @@ fn definitions(src: &str, env: &HashMap<String, f64>) -> (String, HashMap<String
         let (name, value) = def
             .split_once(" = ")
             .unwrap_or_else(|| panic!("definition {def}"));
-        let key = name.trim().replace(['{', '}'], "");
-        assert!(key.starts_with("\\sigma_"), "{key}");
+        let key = match name.trim().strip_prefix("\\mathit{") {
+            // The paper's intermediates (see `intermediates`).
+            Some(rest) => rest.trim_end_matches('}').to_string(),
+            None => name.trim().replace(['{', '}'], ""),
+        };
+        assert!(
+            key.starts_with("\\sigma_") || ["gJg", "psidot", "mu"].contains(&key.as_str()),
+            "{key}"
+        );
         assert!(!env.contains_key(&key), "{key} defined twice");
         let v = eval(value, &env);
         env.insert(key, v);
@@ -277,8 +285,18 @@ fn definitions(src: &str, env: &HashMap<String, f64>) -> (String, HashMap<String
     (main.to_string(), env)
 }
 
+/// `src` with the symbols of the intermediate quantities that the matrices name as the paper
+/// does (γᵀJγ, ψ̇ at rest, μ; defined in the `where` clause) as one-token symbols
+/// `\mathit{gJg}`, `\mathit{psidot}`, `\mathit{mu}` for the evaluator.
+fn intermediates(src: &str) -> String {
+    src.replace("\\gamma^{\\mathsf{T}} J \\gamma", "\\mathit{gJg}")
+        .replace("\\dot\\psi", "\\mathit{psidot}")
+        .replace("\\mu", "\\mathit{mu}")
+}
+
 /// The value of a LaTeX expression (with its `where` clause, if any).
 fn eval(src: &str, env: &HashMap<String, f64>) -> f64 {
+    let src = &intermediates(src);
     if src.contains(WHERE) {
         let (main, env) = definitions(src, env);
         return eval(&main, &env);
