@@ -1195,6 +1195,34 @@ mod tests {
         assert_eq!(both(&g, f).1, "p_psi/sqrt(1 - gamma1**2 - gamma2**2)");
     }
 
+    /// A matrix with a named intermediate: the entries use `\mu` and its definition follows,
+    /// and a quantity the matrix does not use is not defined.
+    #[test]
+    fn matrix_with_named_intermediates() {
+        let (mut g, v) = top();
+        let [m, _, _, _, _, _, _, _, _, g1, g2, g3, p] = v[..] else {
+            unreachable!()
+        };
+        let s1 = g.powi(g1, 2);
+        let s2 = g.powi(g2, 2);
+        let s = g.add(s1, s2);
+        let mu = g.mul(m, s);
+        let e11 = g.mul(mu, g3);
+        let e22 = g.powi(mu, 2);
+        let zero = g.zero();
+        let unused = g.mul(p, g3);
+        let [v_psi, v_mu] = ["ψ̇", "μ"].map(|n| g.new_var(n));
+        let map: HashMap<Id, Id> = [(mu, g.var_id(v_mu))].into_iter().collect();
+        let new = replace_nodes(&mut g, &[e11, e22], &map);
+        let mat = [[new[0], zero, zero], [zero, new[1], zero], [zero, zero, zero]];
+        let tex = matrix_to_latex_named(&g, &mat, &[(v_psi, unused), (v_mu, mu)], &symbols());
+        assert_eq!(
+            tex,
+            "\\begin{pmatrix} \\mu \\gamma_3 & 0 & 0 \\\\ 0 & \\mu^{2} & 0 \\\\ 0 & 0 & 0 \\end{pmatrix} \
+             \\quad \\text{where} \\quad \\mu = \\mathit{mass} \\gamma_1^{2} + \\mathit{mass} \\gamma_2^{2}"
+        );
+    }
+
     /// Named subexpressions in SymPy's syntax: numbered from `first + 1`, defined in order.
     #[test]
     fn sympy_names_and_symbols() {
