@@ -1214,12 +1214,16 @@ mod tests {
         let [v_psi, v_mu] = ["ψ̇", "μ"].map(|n| g.new_var(n));
         let map: HashMap<Id, Id> = [(mu, g.var_id(v_mu))].into_iter().collect();
         let new = replace_nodes(&mut g, &[e11, e22], &map);
-        let mat = [[new[0], zero, zero], [zero, new[1], zero], [zero, zero, zero]];
+        let mat = [
+            [new[0], zero, zero],
+            [zero, new[1], zero],
+            [zero, zero, zero],
+        ];
         let tex = matrix_to_latex_named(&g, &mat, &[(v_psi, unused), (v_mu, mu)], &symbols());
         assert_eq!(
             tex,
             "\\begin{pmatrix} \\mu \\gamma_3 & 0 & 0 \\\\ 0 & \\mu^{2} & 0 \\\\ 0 & 0 & 0 \\end{pmatrix} \
-             \\quad \\text{where} \\quad \\mu = \\mathit{mass} \\gamma_1^{2} + \\mathit{mass} \\gamma_2^{2}"
+             \\quad \\text{where} \\quad \\mu = \\mathit{mass} \\left(\\gamma_1^{2} + \\gamma_2^{2}\\right)"
         );
     }
 
