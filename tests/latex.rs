@@ -6,6 +6,13 @@
 //! ellipsoid on a plane, the body in a fluid. A formula too large to print inline comes with
 //! its shared subexpressions named (`… \quad \text{where} \quad \sigma_{1} = …,\; …`): the
 //! evaluator evaluates the definitions in order and the formula with them.
+//!
+//! Since the formulas print in a canonical order and the matrices name the paper's
+//! intermediates (issue 36): the evaluator reads `\gamma^{\mathsf{T}} J \gamma`, `\dot\psi` and
+//! `\mu` as symbols defined in the `where` clause (`intermediates`), because A, G, C are now
+//! written with them instead of only `\sigma_{k}`; the values compared are unchanged (the order
+//! of terms changes no value), and the report line counts the matrices that still need a
+//! `\sigma_{k}` (the tops' need none).
 
 use std::collections::HashMap;
 
@@ -493,9 +500,13 @@ fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usi
     .map(|s| s.len())
     .max()
     .unwrap_or(0);
+    let sigmas = [&f.a, &f.g, &f.c]
+        .iter()
+        .filter(|s| s.contains("\\sigma_"))
+        .count();
     eprintln!(
-        "{name}: {count}/7 formulas printed and checked ({named} with named subexpressions; \
-         longest {longest} characters); U_r = {}",
+        "{name}: {count}/7 formulas printed and checked ({named} with a `where` clause, \
+         {sigmas} of the matrices with σ; longest {longest} characters); U_r = {}",
         f.amended_potential
     );
     count

@@ -30,6 +30,16 @@ use crate::graph::{Func, Graph, Id, Node, Var};
 /// all, is printed.
 const MAX_TREE: u64 = 250;
 
+/// Largest expression tree of a matrix written with named intermediates
+/// ([`matrix_to_latex_named`]) printed without `\sigma_{k}`, in nodes over its nine entries
+/// and the intermediates' definitions. Larger than [`MAX_TREE`]: the intermediates already
+/// name what the entries share, and with them the tops' `A`, `G`, `C` print in full
+/// (tests/latex.rs); bounded, as a longer text costs the derive time (printing, and escaping
+/// the string literal: at 2250 nodes the ellipsoid's expansion took 2 ms more than at 1000,
+/// where the ellipsoids', the gyrostat's and the body in a fluid's `G` and `C` still name
+/// `\sigma_{k}`s besides ψ̇, γᵀJγ and μ).
+const MAX_TREE_NAMED: u64 = 1000;
+
 /// With named subexpressions, the largest total printed (the main formula and every
 /// definition, each named subexpression counting 1 where it is used); beyond it the text says
 /// the formula was not printed.
@@ -53,6 +63,10 @@ pub struct LatexSymbols {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Style {
     Latex,
+    /// LaTeX with the terms of sums in the graph's order: only to measure a formula's length
+    /// ([`on_sphere`]; the order does not change the length but by a sign's space), without the
+    /// cost of sorting.
+    LatexUnsorted,
     Sympy,
 }
 
@@ -201,6 +215,13 @@ pub fn to_latex(g: &Graph, root: Id, symbols: &LatexSymbols) -> String {
     format!("{}{}", main.concat(), where_clause(&defs))
 }
 
+/// The length of [`to_latex`] of `root` (but for the order of terms, which costs time to find
+/// and changes the length by a space at most).
+fn latex_len(g: &Graph, root: Id, symbols: &LatexSymbols) -> usize {
+    let (main, defs) = print_roots(g, &[root], symbols, Style::LatexUnsorted, 0, MAX_TREE);
+    main.concat().len() + where_clause(&defs).len()
+}
+
 /// A 3×3 matrix of expressions as `\begin{pmatrix} … \end{pmatrix}`; when named
 /// subexpressions are needed (see [`to_latex`]) they are shared by the entries and defined after
 /// the matrix.
@@ -257,7 +278,7 @@ pub fn matrix_to_latex_named(
 ) -> String {
     let mut roots: Vec<Id> = m.iter().flatten().copied().collect();
     roots.extend(named.iter().map(|&(_, d)| d));
-    let (texts, sigmas) = print_roots(g, &roots, symbols, Style::Latex, 0, 9 * MAX_TREE);
+    let (texts, sigmas) = print_roots(g, &roots, symbols, Style::Latex, 0, MAX_TREE_NAMED);
     let (cells, values) = texts.split_at(9);
     let rows: Vec<String> = cells.chunks(3).map(|row| row.join(" & ")).collect();
     let mut defs: Vec<(String, String)> = (named.iter().zip(values))
@@ -356,7 +377,7 @@ pub fn replace_nodes(g: &mut Graph, roots: &[Id], map: &HashMap<Id, Id>) -> Vec<
 /// The name of the `k`-th (from 1) named subexpression.
 fn definition_name(k: usize, style: Style) -> String {
     match style {
-        Style::Latex => format!("\\sigma_{{{k}}}"),
+        Style::Latex | Style::LatexUnsorted => format!("\\sigma_{{{k}}}"),
         Style::Sympy => format!("sigma{k}"),
     }
 }
@@ -408,7 +429,7 @@ fn print_roots(
     }
     let none: [usize; 0] = [];
     let vars = RefCell::new(Vec::new());
-    let degrees = RefCell::new(vec![UNKNOWN; last + 1]);
+    let degrees = RefCell::new(Vec::new());
     // Inline when small: a matrix by the total of its entries (its entries share the same
     // subexpressions, e.g. γᵀJγ in each entry of G).
     let total_size = (roots.iter().map(|r| size[r.index()])).fold(0u64, u64::saturating_add);
@@ -460,7 +481,7 @@ fn print_roots(
         (order.iter().chain(roots).map(|id| reduced[id.index()])).fold(0u64, u64::saturating_add);
     if total > MAX_NAMED_TOTAL {
         let text = match style {
-            Style::Latex => {
+            Style::Latex | Style::LatexUnsorted => {
                 format!("\\text{{(a formula of more than {MAX_NAMED_TOTAL} terms, not printed)}}")
             }
             Style::Sympy => "nan".to_string(),
@@ -499,7 +520,7 @@ fn print_roots(
 /// The result equals `f` wherever `|γ| = 1`, not elsewhere.
 pub fn on_sphere(g: &mut Graph, f: Id, gamma: [Var; 3], symbols: &LatexSymbols) -> Id {
     let mut best = f;
-    let mut best_len = to_latex(g, best, symbols).len();
+    let mut best_len = latex_len(g, best, symbols);
     for _ in 0..3 {
         let mut improved = false;
         for i in 0..3 {
@@ -507,7 +528,7 @@ pub fn on_sphere(g: &mut Graph, f: Id, gamma: [Var; 3], symbols: &LatexSymbols) 
             if cand == best {
                 continue;
             }
-            let len = to_latex(g, cand, symbols).len();
+            let len = latex_len(g, cand, symbols);
             if len < best_len {
                 best = cand;
                 best_len = len;
@@ -669,7 +690,7 @@ impl Printer<'_> {
     }
 
     fn latex(&self) -> bool {
-        self.style == Style::Latex
+        self.style != Style::Sympy
     }
 
     /// `(…)` around `text`.
@@ -701,9 +722,12 @@ impl Printer<'_> {
             Node::Powf(a, e) if g.as_const(e) == Some(0.5) => self.degree(a) / 2,
             Node::Powf(..) => 0,
         };
-        if let Some(slot) = self.degrees.borrow_mut().get_mut(id.index()) {
-            *slot = d;
+        // Grown on demand (most printing never asks: one term, or no sorting).
+        let mut degrees = self.degrees.borrow_mut();
+        if degrees.len() <= id.index() {
+            degrees.resize(id.index() + 1, UNKNOWN);
         }
+        degrees[id.index()] = d;
         d
     }
 
@@ -786,7 +810,9 @@ impl Printer<'_> {
                     vars.resize(v.index() + 1, None);
                 }
                 let sym = vars[v.index()].get_or_insert_with(|| match self.style {
-                    Style::Latex => latex_symbol(g.var_name(v), self.symbols),
+                    Style::Latex | Style::LatexUnsorted => {
+                        latex_symbol(g.var_name(v), self.symbols)
+                    }
                     Style::Sympy => sympy_symbol(g.var_name(v), self.symbols),
                 });
                 // A symbol of several letters (γᵀJγ) in brackets as a power's base.
@@ -912,6 +938,7 @@ impl Printer<'_> {
         let g = self.g;
         let mut ts = Vec::new();
         terms(self, id, negate, &mut ts);
+        let sorted = self.style != Style::LatexUnsorted && ts.len() > 1;
         let mut printed: Vec<(TermKey, bool, String)> = ts
             .into_iter()
             .map(|(t, negate)| {
@@ -939,13 +966,20 @@ impl Printer<'_> {
                         false
                     }
                 };
-                (self.term_key(t), negative != negate, body)
+                let key = if sorted {
+                    self.term_key(t)
+                } else {
+                    Default::default()
+                };
+                (key, negative != negate, body)
             })
             .collect();
         // Stable: terms of equal keys keep the order of the graph.
-        printed.sort_by(|a, b| a.0.cmp(&b.0));
+        if sorted {
+            printed.sort_by(|a, b| a.0.cmp(&b.0));
+        }
         // A leading minus after the first positive term, as SymPy prints `1 - x**2`.
-        if printed.first().is_some_and(|t| t.1) {
+        if sorted && printed.first().is_some_and(|t| t.1) {
             if let Some(k) = printed.iter().position(|t| !t.1) {
                 let t = printed.remove(k);
                 printed.insert(0, t);
