@@ -733,26 +733,57 @@ impl Printer<'_> {
 
     /// The sort key of the term `t` of a sum.
     fn term_key(&self, t: Id) -> TermKey {
-        fn walk(p: &Printer, id: Id, n: i32, exps: &mut [i32; 7], params: &mut Vec<(u32, i32)>) {
+        /// The exponents of the state variables and the parameters of a product; a sum among
+        /// its factors (`A₁(ω₁² + ω₂²)`) counts by the largest exponents of its terms, one
+        /// level deep (`inner`).
+        fn walk(
+            p: &Printer,
+            id: Id,
+            n: i32,
+            inner: bool,
+            exps: &mut [i32; 7],
+            params: &mut Vec<(u32, i32)>,
+        ) {
             if p.is_named(id) {
                 return;
             }
             match p.g.node(id) {
                 Node::Mul(a, b) => {
-                    walk(p, a, n, exps, params);
-                    walk(p, b, n, exps, params);
+                    walk(p, a, n, inner, exps, params);
+                    walk(p, b, n, inner, exps, params);
                 }
-                Node::Neg(a) => walk(p, a, n, exps, params),
-                Node::Powi(a, m) if p.g.as_var(a).is_some() => walk(p, a, n * m, exps, params),
+                Node::Neg(a) => walk(p, a, n, inner, exps, params),
+                Node::Powi(a, m) if p.g.as_var(a).is_some() => {
+                    walk(p, a, n * m, inner, exps, params)
+                }
                 Node::Var(v) => match state_slot(p.g.var_name(v)) {
                     Some((class, k)) => exps[usize::from(class * 3 + k).min(6)] += n,
                     None => params.push((v.index() as u32, -n)),
                 },
+                Node::Add(..) if !inner && n > 0 => {
+                    let mut stack = vec![id];
+                    let mut most = [0; 7];
+                    while let Some(t) = stack.pop() {
+                        match p.g.node(t) {
+                            Node::Add(a, b) if !p.is_named(t) => stack.extend([a, b]),
+                            _ => {
+                                let mut e = [0; 7];
+                                walk(p, t, 1, true, &mut e, &mut Vec::new());
+                                for k in 0..7 {
+                                    most[k] = most[k].max(e[k]);
+                                }
+                            }
+                        }
+                    }
+                    for k in 0..7 {
+                        exps[k] += n * most[k];
+                    }
+                }
                 _ => {}
             }
         }
         let (mut exps, mut params) = ([0; 7], Vec::new());
-        walk(self, t, 1, &mut exps, &mut params);
+        walk(self, t, 1, false, &mut exps, &mut params);
         params.sort_unstable();
         (
             std::cmp::Reverse(self.degree(t)),
@@ -1196,6 +1227,16 @@ mod tests {
         let s = g.add(a, b);
         let s = g.add(s, c);
         assert_eq!(both(&g, s).1, "omega1**2 + omega1*omega2 + omega2**2");
+        // A bracketed sum counts by its leading term: m(ω₁² + ω₂²) before l ω₃².
+        let [m, _, l, _, _, _, _, _, w3, ..] = v[..] else {
+            unreachable!()
+        };
+        let w12 = g.add(a, c);
+        let t12 = g.mul(m, w12);
+        let c3 = g.powi(w3, 2);
+        let t3 = g.mul(l, c3);
+        let k = g.add(t3, t12);
+        assert_eq!(both(&g, k).1, "mass*(omega1**2 + omega2**2) + l*omega3**2");
         // 1 − γ₁² − γ₂² (as on_sphere writes γ₃²), and γ₃ + p_ψ²/(2γ₃) (of equal degree,
         // γ₃ first by its exponents).
         let one = g.one();
