@@ -92,3 +92,12 @@ def test_the_text_is_sympy_syntax_in_canonical_order(top):
                                   sympy.Symbol("gamma2", real=True): 0}).subs(
         {sympy.Symbol("inertia_3", real=True): sympy.Rational(5, 4),
          sympy.Symbol("mgl", real=True): 1}) - (p**2 * sympy.Rational(2, 5) + 1)) == 0
+
+
+def test_to_sympy_without_sympy_says_so(top, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "sympy", None)  # `import sympy` raises ImportError
+    with pytest.raises(ImportError, match="pip install sympy"):
+        top.to_sympy()
+    assert top.sympy().lagrangian  # the text needs no SymPy
