@@ -15,9 +15,12 @@
 /// `\gamma_i`, `p_\psi`; each parameter as its name in `\mathit{…}` unless the model gives it a
 /// symbol (`#[lagrangian(latex = "I")]` on the field), components subscripted from 1
 /// (`I_{11}`, `\mathit{com}_{3}`). Functions of γ are simplified with `|γ|² = 1` where that
-/// shortens them (they are then equal to the generated code on the sphere only). A long formula
-/// (more than 250 nodes of expression tree; for a matrix, in all its entries) comes with its
-/// common subexpressions named and defined after it, inner ones first:
+/// shortens them (they are then equal to the generated code on the sphere only). The matrices
+/// A, G, C are written entry by entry with the paper's intermediate quantities named and
+/// defined after the matrix: `\gamma^{\mathsf{T}} J \gamma` (the denominator of (38)),
+/// `\dot\psi` (ψ̇ at rest, (38)) and `\mu = (∂R/∂γ, γ)` (errata E6), as far as the matrix uses
+/// them. A long formula (more than 250 nodes of expression tree; a matrix: more than 1000 in all
+/// its entries) comes with its common subexpressions named and defined after it too:
 /// `… \quad \text{where} \quad \sigma_{1} = …,\; \sigma_{2} = …` (each definition uses only the
 /// names before it). A formula too large even so is replaced by a `\text{(… not printed)}`.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]

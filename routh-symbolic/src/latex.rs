@@ -9,9 +9,13 @@
 //! as `\mathit{mgl}`, the components of a vector field `v` as `\mathit{v}_{1}` and of a matrix
 //! field `I` as `\mathit{I}_{11}` (indices from 1), unless the model gives the field a symbol.
 //!
+//! Terms and factors come in one canonical order (see [`to_latex`]), and [`to_sympy`] prints
+//! the same expressions in SymPy's syntax (variables named by [`sympy_symbol`]).
+//!
 //! [`on_sphere`] rewrites an expression with `|γ|² = 1` where that shortens it (the rule is on
 //! the function). A long formula is printed with its common subexpressions named
-//! (`… \quad \text{where} \quad \sigma_{1} = …`, see [`to_latex`]).
+//! (`… \quad \text{where} \quad \sigma_{1} = …`, see [`to_latex`]); a matrix may name the
+//! paper's intermediate quantities instead ([`matrix_to_latex_named`], [`INTERMEDIATES`]).
 
 use std::cell::RefCell;
 use std::collections::HashMap;
