@@ -17,11 +17,11 @@ trap 'rm -rf "$WORK"' EXIT
 step "fresh venv in $WORK/venv"
 python3 -m venv "$WORK/venv"
 PY="$WORK/venv/bin/python"
-step "pip install maturin numpy pytest matplotlib pandas dask[distributed] psutil"
-# pandas and dask[distributed] (the extra `routh[dask]`) for routh.study's tests on a
-# LocalCluster of 2 worker processes (routh-py/tests/test_study.py); psutil to check that no
-# worker process is left.
-"$PY" -m pip install -q maturin numpy pytest matplotlib pandas "dask[distributed]" psutil
+step "pip install maturin numpy pytest matplotlib sympy pandas dask[distributed] psutil"
+# sympy for the formulas' round trip (routh-py/tests/test_formulas.py); pandas and
+# dask[distributed] (the extra `routh[dask]`) for routh.study's tests on a LocalCluster of 2
+# worker processes (routh-py/tests/test_study.py); psutil to check that no worker process is left.
+"$PY" -m pip install -q maturin numpy pytest matplotlib sympy pandas "dask[distributed]" psutil
 step "pip install ./routh-py"
 "$PY" -m pip install -q ./routh-py
 step "pytest routh-py/tests"

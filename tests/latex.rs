@@ -6,6 +6,13 @@
 //! ellipsoid on a plane, the body in a fluid. A formula too large to print inline comes with
 //! its shared subexpressions named (`… \quad \text{where} \quad \sigma_{1} = …,\; …`): the
 //! evaluator evaluates the definitions in order and the formula with them.
+//!
+//! Since the formulas print in a canonical order and the matrices name the paper's
+//! intermediates (issue 36): the evaluator reads `\gamma^{\mathsf{T}} J \gamma`, `\dot\psi` and
+//! `\mu` as symbols defined in the `where` clause (`intermediates`), because A, G, C are now
+//! written with them instead of only `\sigma_{k}`; the values compared are unchanged (the order
+//! of terms changes no value), and the report line counts the matrices that still need a
+//! `\sigma_{k}` (the tops' need none).
 
 use std::collections::HashMap;
 
@@ -261,6 +268,7 @@ const WHERE: &str = " \\quad \\text{where} \\quad ";
 /// separated by `,\;`, each evaluated with the ones before it).
 fn definitions(src: &str, env: &HashMap<String, f64>) -> (String, HashMap<String, f64>) {
     let mut env = env.clone();
+    let src = &intermediates(src);
     let Some((main, defs)) = src.split_once(WHERE) else {
         return (src.to_string(), env);
     };
@@ -268,8 +276,15 @@ fn definitions(src: &str, env: &HashMap<String, f64>) -> (String, HashMap<String
         let (name, value) = def
             .split_once(" = ")
             .unwrap_or_else(|| panic!("definition {def}"));
-        let key = name.trim().replace(['{', '}'], "");
-        assert!(key.starts_with("\\sigma_"), "{key}");
+        let key = match name.trim().strip_prefix("\\mathit{") {
+            // The paper's intermediates (see `intermediates`).
+            Some(rest) => rest.trim_end_matches('}').to_string(),
+            None => name.trim().replace(['{', '}'], ""),
+        };
+        assert!(
+            key.starts_with("\\sigma_") || ["gJg", "psidot", "mu"].contains(&key.as_str()),
+            "{key}"
+        );
         assert!(!env.contains_key(&key), "{key} defined twice");
         let v = eval(value, &env);
         env.insert(key, v);
@@ -277,8 +292,18 @@ fn definitions(src: &str, env: &HashMap<String, f64>) -> (String, HashMap<String
     (main.to_string(), env)
 }
 
+/// `src` with the symbols of the intermediate quantities that the matrices name as the paper
+/// does (γᵀJγ, ψ̇ at rest, μ; defined in the `where` clause) as one-token symbols
+/// `\mathit{gJg}`, `\mathit{psidot}`, `\mathit{mu}` for the evaluator.
+fn intermediates(src: &str) -> String {
+    src.replace("\\gamma^{\\mathsf{T}} J \\gamma", "\\mathit{gJg}")
+        .replace("\\dot\\psi", "\\mathit{psidot}")
+        .replace("\\mu", "\\mathit{mu}")
+}
+
 /// The value of a LaTeX expression (with its `where` clause, if any).
 fn eval(src: &str, env: &HashMap<String, f64>) -> f64 {
+    let src = &intermediates(src);
     if src.contains(WHERE) {
         let (main, env) = definitions(src, env);
         return eval(&main, &env);
@@ -475,9 +500,13 @@ fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usi
     .map(|s| s.len())
     .max()
     .unwrap_or(0);
+    let sigmas = [&f.a, &f.g, &f.c]
+        .iter()
+        .filter(|s| s.contains("\\sigma_"))
+        .count();
     eprintln!(
-        "{name}: {count}/7 formulas printed and checked ({named} with named subexpressions; \
-         longest {longest} characters); U_r = {}",
+        "{name}: {count}/7 formulas printed and checked ({named} with a `where` clause, \
+         {sigmas} of the matrices with σ; longest {longest} characters); U_r = {}",
         f.amended_potential
     );
     count

@@ -28,6 +28,7 @@
 //! | `LinearNormalForm`, `Jet` | `nonlinear::linear_normal_form` | `nonlinear_reports_and_events_round_trip` |
 //! | `RouthError` (tagged, with its message) | every fallible function | `errors_round_trip` |
 //! | `LatexFormulas` | `DerivedFormulas::latex`, `Model::latex` | `formulas_models_and_their_errors_round_trip` |
+//! | `SympyFormulas` | `Model::sympy` | `formulas_models_and_their_errors_round_trip` |
 //! | `Param`, `ModelError` | `Model::get`, `Model::new` | `formulas_models_and_their_errors_round_trip` |
 //! | `fluid::FluidParameters` | `fluid::kirchhoff_lagrangian` | `formulas_models_and_their_errors_round_trip` |
 //!
@@ -434,6 +435,7 @@ fn formulas_models_and_their_errors_round_trip() {
     )
     .unwrap();
     round_trip(&model.latex());
+    round_trip(&model.sympy());
     let inertia = model.get("inertia").unwrap();
     assert_eq!(inertia, Param::Vector(Vector3::new(1.0, 1.0, 1.25)));
     round_trip(&inertia);

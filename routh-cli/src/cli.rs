@@ -135,8 +135,13 @@ pub struct Formulas {
     /// Print the seven derived formulas in LaTeX (`Model::latex`): L, ψ̇, the Routh function R,
     /// the amended potential U_r and the matrices A, G, C of (64); with `--json`, the
     /// `LatexFormulas` object.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "sympy")]
     pub latex: bool,
+    /// Print the same seven formulas in SymPy's syntax (`Model::sympy`), as lines
+    /// `name = formula` (Python after `from sympy import *`); with `--json`, the
+    /// `SympyFormulas` object.
+    #[arg(long)]
+    pub sympy: bool,
 }
 
 /// `atlas`.

@@ -5,7 +5,7 @@ use crate::error::CliError;
 use crate::table::{num, vec3, Table};
 use routh::{
     classified_steady_motions, classify_circle, steady_motions, CircleReport, CircleStability,
-    LatexFormulas, Model, ModelError, Vector3,
+    LatexFormulas, Model, ModelError, SympyFormulas, Vector3,
 };
 use std::path::Path;
 
@@ -215,6 +215,9 @@ pub fn formulas(f: &Formulas) -> Result<String, CliError> {
     if f.latex {
         return latex(&model.latex(), f.json);
     }
+    if f.sympy {
+        return sympy(&model.sympy(), f.json);
+    }
     let [lagrangian, amended, psi_dot] = model.formulas();
     if f.json {
         let v = serde_json::json!({
@@ -270,4 +273,50 @@ fn latex(l: &LatexFormulas, json: bool) -> Result<String, CliError> {
         .map(|(name, what, lhs, formula)| format!("% {name}: {what}\n{lhs} = {formula}\n"))
         .collect::<Vec<_>>()
         .join("\n"))
+}
+
+/// `routh formulas --sympy`: the seven formulas of [`SympyFormulas`] in SymPy's syntax, each
+/// under a Python comment with its meaning, as `name = formula` lines (after the definitions of
+/// the named subexpressions, if any), so that the text runs as Python after
+/// `from sympy import *` and `var(…)` of the symbols; with `json`, the `SympyFormulas` object.
+fn sympy(f: &SympyFormulas, json: bool) -> Result<String, CliError> {
+    if json {
+        return Ok(serde_json::to_string_pretty(f)? + "\n");
+    }
+    let mut out = String::new();
+    for (name, value) in &f.definitions {
+        out.push_str(&format!("{name} = {value}\n"));
+    }
+    if !f.definitions.is_empty() {
+        out.push('\n');
+    }
+    let items = [
+        ("lagrangian", "L(omega, gamma)", &f.lagrangian),
+        (
+            "psi_dot",
+            "psi dot of (12)/(38), in Omega, gamma, p_psi",
+            &f.psi_dot,
+        ),
+        (
+            "routhian",
+            "the Routh function R(Omega, gamma, p_psi) (14)",
+            &f.routhian,
+        ),
+        (
+            "amended_potential",
+            "the amended potential U_r(gamma, p_psi) (34)",
+            &f.amended_potential,
+        ),
+        ("a", "A = d2R/dOmega2 at Omega = 0 (64)", &f.a),
+        ("g", "the gyroscopic matrix G of (64) at Omega = 0", &f.g),
+        ("c", "the stiffness matrix C of (64) at Omega = 0", &f.c),
+    ];
+    out.push_str(
+        &items
+            .iter()
+            .map(|(name, what, formula)| format!("# {what}\n{name} = {formula}\n"))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    );
+    Ok(out)
 }

@@ -322,6 +322,36 @@ fn formulas_latex_prints_the_seven_formulas_of_the_model() {
     assert!(expected.a.contains("pmatrix") && expected.c.contains("pmatrix"));
 }
 
+/// `formulas --sympy` prints the seven formulas of `Model::sympy` of the same file as
+/// `name = formula` lines; `--sympy --json` is the `SympyFormulas` object. (That they parse
+/// back in SymPy and agree with the model is routh-py's tests/test_formulas.py.)
+#[test]
+fn formulas_sympy_prints_the_seven_formulas_of_the_model() {
+    let model = routh::Model::from_file(TOP).unwrap();
+    let expected = model.sympy();
+    let v = json(&routh(&["formulas", TOP, "--sympy", "--json"]));
+    let back: routh::SympyFormulas = serde_json::from_value(v).unwrap();
+    assert_eq!(back, expected);
+    let o = routh(&["formulas", TOP, "--sympy"]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let text = stdout(&o);
+    for (name, formula) in [
+        ("lagrangian", &expected.lagrangian),
+        ("psi_dot", &expected.psi_dot),
+        ("routhian", &expected.routhian),
+        ("amended_potential", &expected.amended_potential),
+        ("a", &expected.a),
+        ("g", &expected.g),
+        ("c", &expected.c),
+    ] {
+        let line = format!("{name} = {formula}\n");
+        assert!(text.contains(&line), "{line} not in\n{text}");
+    }
+    assert!(expected.amended_potential.contains("p_psi"));
+    assert!(!expected.amended_potential.contains('\\'));
+    assert!(expected.c.starts_with("Matrix([["));
+}
+
 #[test]
 fn bad_input_exits_with_code_2_and_names_the_problem() {
     rejects(

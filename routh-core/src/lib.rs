@@ -50,7 +50,7 @@ pub use families::{
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchSample, ContinuationOptions,
     EventKind, NonlinearCurve, NonlinearEventVerdicts, StabilityAtlas, StopReason,
 };
-pub use formulas::LatexFormulas;
+pub use formulas::{LatexFormulas, SympyFormulas};
 pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Routhian};
 /// What the generated code fills in for the integrators (the equations (8) and (13) with their
 /// structure); users do not name them.

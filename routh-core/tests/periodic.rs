@@ -381,4 +381,3 @@ fn default_full_jacobian_matches_the_closed_form() {
         assert!(fd.dinertia_dgamma.iter().all(|d| d.amax() < 1e-8));
     }
 }
-

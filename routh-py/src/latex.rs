@@ -111,3 +111,91 @@ impl LatexFormulas {
         )
     }
 }
+
+/// The seven derived formulas of a model in SymPy's syntax (`routh::Model::sympy()`): the same
+/// fields as `LatexFormulas`, strings to parse with `sympy.sympify`, with `omega1` (`Omega1`
+/// in `psi_dot` and `routhian`), `gamma1`, `p_psi`, the parameters by their names and their
+/// components from 1 (`inertia_3`, `I_12`); matrices as `Matrix([[…], …])`. `definitions` is a
+/// list of `(name, expression)` of the subexpressions `sigma1, sigma2, …` that a very large
+/// formula refers to (usually empty). `to_sympy()` parses everything (SymPy needed).
+///
+/// >>> f = top.sympy()
+/// >>> f.lagrangian
+/// '1/2*(inertia_1*omega1**2 + inertia_2*omega2**2 + inertia_3*omega3**2) - mgl*gamma3'
+#[pyclass(module = "routh", frozen, get_all)]
+pub struct SympyFormulas {
+    /// L(ω, γ).
+    pub lagrangian: String,
+    /// ψ̇(Ω, γ, p_ψ) of (12)/(38).
+    pub psi_dot: String,
+    /// The Routh function R(Ω, γ, p_ψ) of (14).
+    pub routhian: String,
+    /// The amended potential U_r(γ, p_ψ) = −R(0, γ, p_ψ) of (34).
+    pub amended_potential: String,
+    /// A = ∂²R/∂Ω² at Ω = 0 (64), a `Matrix`.
+    pub a: String,
+    /// The gyroscopic matrix G of (64) at Ω = 0, a `Matrix`.
+    pub g: String,
+    /// The stiffness matrix C of (64) at Ω = 0, a `Matrix`.
+    pub c: String,
+    /// `(name, expression)` of the named subexpressions, in order.
+    pub definitions: Vec<(String, String)>,
+}
+
+impl SympyFormulas {
+    pub(crate) fn new(f: routh::SympyFormulas) -> SympyFormulas {
+        SympyFormulas {
+            lagrangian: f.lagrangian,
+            psi_dot: f.psi_dot,
+            routhian: f.routhian,
+            amended_potential: f.amended_potential,
+            a: f.a,
+            g: f.g,
+            c: f.c,
+            definitions: f.definitions,
+        }
+    }
+
+    fn field(&self, name: &str) -> Option<&str> {
+        Some(match name {
+            "lagrangian" => &self.lagrangian,
+            "psi_dot" => &self.psi_dot,
+            "routhian" => &self.routhian,
+            "amended_potential" => &self.amended_potential,
+            "a" => &self.a,
+            "g" => &self.g,
+            "c" => &self.c,
+            _ => return None,
+        })
+    }
+}
+
+#[pymethods]
+impl SympyFormulas {
+    /// The formulas as a dict, name → SymPy text.
+    fn as_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (name, _) in NAMES {
+            d.set_item(name, self.field(name).unwrap_or_default())?;
+        }
+        Ok(d)
+    }
+    /// `f["routhian"]`: a formula by name (KeyError for another name).
+    fn __getitem__(&self, name: &str) -> PyResult<String> {
+        self.field(name)
+            .map(str::to_string)
+            .ok_or_else(|| PyKeyError::new_err(name.to_string()))
+    }
+    /// The formulas as SymPy objects: a dict name → expression (`sympy.Matrix` for `a`, `g`,
+    /// `c`), every symbol real, the named subexpressions substituted. Raises ImportError
+    /// without SymPy.
+    fn to_sympy(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
+        crate::convert::helper(slf.py(), "routh._sympy", "to_sympy", (slf,))
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "SympyFormulas(routhian={:?}, amended_potential={:?}, ...)",
+            self.routhian, self.amended_potential
+        )
+    }
+}

@@ -25,7 +25,7 @@ mod trajectory;
 use pyo3::prelude::*;
 
 pub use convert::{ModelError, RouthError};
-use latex::LatexFormulas;
+use latex::{LatexFormulas, SympyFormulas};
 use results::{
     Atlas, Boundary, Branch, Certificate, CircleReport, Diagram, Event, StabilityReport,
     SteadyMotion,
@@ -54,6 +54,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ReducedTrajectory>()?;
     m.add_class::<Certificate>()?;
     m.add_class::<LatexFormulas>()?;
+    m.add_class::<SympyFormulas>()?;
     m.add_class::<nonlinear::NonlinearReport>()?;
     m.add_class::<orbits::PeriodicOrbit>()?;
     m.add_class::<orbits::OrbitFamily>()?;

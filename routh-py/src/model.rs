@@ -3,7 +3,7 @@
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3, Real};
 use crate::family::{continuation_options, ContinuationKw};
 use crate::guard::{cooperative, detached, interruptible};
-use crate::latex::{aligned, LatexFormulas};
+use crate::latex::{aligned, LatexFormulas, SympyFormulas};
 use crate::nonlinear::NonlinearReport;
 use crate::progress::Progress;
 use crate::results::{Certificate, CircleReport, Diagram, StabilityReport, SteadyMotion};
@@ -493,6 +493,57 @@ impl Model {
     /// >>> print(f.amended_potential)
     fn latex(&self) -> PyResult<LatexFormulas> {
         Ok(LatexFormulas::new(self.get()?.latex()))
+    }
+
+    /// The same seven formulas in SymPy's syntax (`routh.SympyFormulas`), parameters by their
+    /// names (`inertia_3` for a component, from 1).
+    ///
+    /// >>> top.sympy().amended_potential
+    fn sympy(&self) -> PyResult<SympyFormulas> {
+        Ok(SympyFormulas::new(self.get()?.sympy()))
+    }
+
+    /// The seven formulas as SymPy objects: a dict name → expression (`sympy.Matrix` for `a`,
+    /// `g`, `c`), with real symbols `omega1 … gamma3 p_psi` (`Omega1 …` in `psi_dot` and
+    /// `routhian`) and the parameters by their names; `self.sympy().to_sympy()`. Raises
+    /// ImportError without SymPy.
+    ///
+    /// >>> U = top.to_sympy()["amended_potential"]
+    fn to_sympy(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let f = Bound::new(py, SympyFormulas::new(self.get()?.sympy()))?;
+        crate::convert::helper(py, "routh._sympy", "to_sympy", (f,))
+    }
+
+    /// The values of the seven formulas computed by the model's generated code (not from the
+    /// formulas' text) at `omega` (Ω in `psi_dot` and `routhian`), `gamma` and `p_psi`: a dict
+    /// with the floats `lagrangian` L(ω, γ), `psi_dot` ψ̇(Ω, γ, p_ψ), `routhian` R(Ω, γ, p_ψ),
+    /// `amended_potential` U_r(γ, p_ψ), and the (3, 3) arrays `a`, `g`, `c` of (64) at Ω = 0.
+    /// What the formulas of `sympy()` and `latex()` evaluate to (at a unit `gamma`: the
+    /// formulas are simplified with |γ|² = 1).
+    ///
+    /// >>> top.formula_values([0.1, 0.2, 0.3], [0, 0, 1], 2.0)["amended_potential"]
+    /// 2.6
+    fn formula_values<'py>(
+        &self,
+        py: Python<'py>,
+        omega: &Bound<'_, PyAny>,
+        gamma: &Bound<'_, PyAny>,
+        p_psi: f64,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        use routh::{Lagrangian, Routhian};
+        let w = vector3("omega", omega)?;
+        let g = vector3("gamma", gamma)?;
+        let m = self.get()?;
+        let d = PyDict::new(py);
+        d.set_item("lagrangian", m.lagrangian(&w, &g))?;
+        d.set_item("psi_dot", m.psi_dot(&w, &g, p_psi))?;
+        d.set_item("routhian", m.routhian(&w, &g, p_psi))?;
+        d.set_item("amended_potential", m.amended_potential(&g, p_psi))?;
+        let sys = m.gyroscopic_system(&g, p_psi);
+        for (name, x) in [("a", sys.a), ("g", sys.g), ("c", sys.c)] {
+            d.set_item(name, param_to_py(py, &Param::Matrix(x)))?;
+        }
+        Ok(d)
     }
 
     /// Jupyter shows a model as its Routh function R (14) and amended potential U_r (34).

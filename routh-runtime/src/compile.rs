@@ -180,6 +180,9 @@ pub(crate) struct Compiled {
     /// symbols are put in by [`Model::latex`](crate::Model::latex)): printed the first time
     /// they are asked for ([`latex`]), as printing them costs a third of a build.
     pub latex: std::sync::OnceLock<routh_codegen::latex::LatexText>,
+    /// The same formulas in SymPy's syntax ([`sympy`]), printed the first time they are asked
+    /// for.
+    pub sympy: std::sync::OnceLock<routh_codegen::latex::SympyText>,
 }
 
 /// The deepest nesting of brackets accepted: deeper texts are refused before they are lexed
@@ -248,6 +251,17 @@ pub(crate) fn latex(
             .map(|m| routh_codegen::latex::latex_formulas(&m, &[]))
             .unwrap_or_default()
     })
+}
+
+/// The formulas of the model of `text` in SymPy's syntax, analysed again as for [`latex`].
+pub(crate) fn sympy(
+    text: &str,
+    params: &[(String, Param)],
+    symmetric: &[String],
+) -> routh_codegen::latex::SympyText {
+    analyse(text, params, symmetric)
+        .map(|m| routh_codegen::latex::sympy_formulas(&m))
+        .unwrap_or_default()
 }
 
 /// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
@@ -620,6 +634,7 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
         routh: routh_codegen::tape::routhian(sym, o)?,
         formulas,
         latex: std::sync::OnceLock::new(),
+        sympy: std::sync::OnceLock::new(),
     })
 }
 

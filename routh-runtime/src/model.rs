@@ -318,6 +318,44 @@ impl Model {
         }
     }
 
+    /// The derived formulas of [`Model::latex`] in SymPy's syntax, to parse with
+    /// `sympy.sympify` and keep computing: the same expressions in the same order, with
+    /// `omega1` (`Omega1` in ψ̇ and R), `gamma1`, `p_psi`, each parameter by its name and
+    /// components from 1 (`inertia_3`, `J_12`), matrices as `Matrix([[…], …])` (see
+    /// [`routh_core::SympyFormulas`]). Printed the first time it is asked for.
+    ///
+    /// ```
+    /// use routh_runtime::{Model, Param};
+    /// let inertia = Param::Vector(routh_core::Vector3::new(1.0, 1.0, 1.25));
+    /// let top = Model::new(
+    ///     "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+    ///     &[("inertia", inertia), ("mgl", 1.0.into())],
+    /// )?;
+    /// let f = top.sympy();
+    /// assert_eq!(
+    ///     f.lagrangian,
+    ///     "1/2*(inertia_1*omega1**2 + inertia_2*omega2**2 + inertia_3*omega3**2) - mgl*gamma3"
+    /// );
+    /// assert!(f.a.starts_with("Matrix([["));
+    /// # Ok::<(), routh_runtime::ModelError>(())
+    /// ```
+    pub fn sympy(&self) -> routh_core::SympyFormulas {
+        let t = self
+            .compiled
+            .sympy
+            .get_or_init(|| crate::compile::sympy(&self.text, &self.params, &self.symmetric));
+        routh_core::SympyFormulas {
+            lagrangian: t.lagrangian.clone(),
+            psi_dot: t.psi_dot.clone(),
+            routhian: t.routhian.clone(),
+            amended_potential: t.amended_potential.clone(),
+            a: t.a.clone(),
+            g: t.g.clone(),
+            c: t.c.clone(),
+            definitions: t.definitions.clone(),
+        }
+    }
+
     /// `L`, the amended potential `U_r(γ, p_ψ)` (34) and `ψ̇` at rest (38) after simplification,
     /// as text (the derive's `DerivedFormulas`).
     pub fn formulas(&self) -> [&str; 3] {

@@ -244,6 +244,26 @@ class LatexFormulas:
     def __getitem__(self, name: str) -> str: ...
     def _repr_latex_(self) -> str: ...
 
+class SympyFormulas:
+    """The derived formulas in SymPy's syntax (`omega1`, `gamma3`, `p_psi`, parameters by name,
+    components from 1: `inertia_3`); `to_sympy()` parses them (SymPy needed).
+
+    >>> f = top.sympy()
+    >>> f.amended_potential
+    """
+    lagrangian: str
+    psi_dot: str
+    routhian: str
+    amended_potential: str
+    a: str
+    g: str
+    c: str
+    definitions: list[tuple[str, str]]
+    def as_dict(self) -> dict[str, str]: ...
+    def __getitem__(self, name: str) -> str: ...
+    def to_sympy(self) -> dict[str, Any]:
+        """The formulas as SymPy expressions (`sympy.Matrix` for a, g, c)."""
+
 class PeriodicOrbit:
     """A periodic orbit of the full equations (a relative periodic orbit of the body).
 
@@ -329,6 +349,14 @@ class Model:
         """L, ψ̇, R, U_r, A, G, C in LaTeX."""
     def _repr_latex_(self) -> str:
         """R and U_r typeset (Jupyter)."""
+    def sympy(self) -> SympyFormulas:
+        """L, ψ̇, R, U_r, A, G, C in SymPy's syntax."""
+    def to_sympy(self) -> dict[str, Any]:
+        """L, ψ̇, R, U_r, A, G, C as SymPy objects (ImportError without SymPy)."""
+    def formula_values(
+        self, omega: Vec3, gamma: Vec3, p_psi: float
+    ) -> dict[str, float | npt.NDArray[np.float64]]:
+        """The seven formulas' values from the generated code."""
     def amended_potential(self, gamma: Vec3, p_psi: float) -> float:
         """U_r(γ, p_ψ) at a unit γ (| |γ| − 1 | ≤ 1e-8, as `simulate`; else RouthError)."""
     def steady_motions(self, p_psi: float) -> list[SteadyMotion]: ...
