@@ -117,9 +117,7 @@ pub(crate) fn shoot<M: Lagrangian + ?Sized>(
     }
     y0[QUAT] = 1.0;
     let (rtol, atol) = (opts.rtol, opts.atol);
-    let weights = move |a: &SVector<f64, DIM>, b: &SVector<f64, DIM>| {
-        a.zip_map(b, |p, q| atol + rtol * p.abs().max(q.abs()))
-    };
+    let weights = dop853::componentwise(rtol, atol);
     let cfg = Config {
         weights: &weights,
         h_max: f64::INFINITY,

@@ -231,9 +231,7 @@ fn crossings<M: Lagrangian + Sync + ?Sized>(
 ) -> (Vec<[f64; 2]>, Vec<f64>, Option<String>) {
     let x0 = join(omega0, gamma0);
     let (rtol, atol) = (opts.rtol, opts.atol);
-    let weights = move |a: &Vector6<f64>, b: &Vector6<f64>| {
-        a.zip_map(b, |p, q| atol + rtol * p.abs().max(q.abs()))
-    };
+    let weights = dop853::componentwise(rtol, atol);
     let cfg = Config {
         weights: &weights,
         h_max: f64::INFINITY,

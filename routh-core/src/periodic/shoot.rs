@@ -273,9 +273,7 @@ fn return_time<M: Lagrangian + ?Sized>(
     opts: &OrbitOptions,
 ) -> Option<f64> {
     let (rtol, atol) = (opts.rtol.max(1e-10), opts.atol.max(1e-12));
-    let weights = move |a: &Vector6<f64>, b: &Vector6<f64>| {
-        a.zip_map(b, |p, q| atol + rtol * p.abs().max(q.abs()))
-    };
+    let weights = dop853::componentwise(rtol, atol);
     let cfg = Config {
         weights: &weights,
         h_max: f64::INFINITY,

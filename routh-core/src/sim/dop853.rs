@@ -62,8 +62,8 @@ const NONFINITE_SHRINK: f64 = 0.1;
 pub(crate) type Weights<'a, const N: usize> =
     &'a dyn Fn(&SVector<f64, N>, &SVector<f64, N>) -> SVector<f64, N>;
 
-/// Hairer's componentwise weights `skᵢ = atol + rtol·max(|y₀ᵢ|, |y₁ᵢ|)`.
-#[cfg(test)]
+/// Hairer's componentwise weights `skᵢ = atol + rtol·max(|y₀ᵢ|, |y₁ᵢ|)` (the periodic orbits'
+/// integrations, and the tests).
 pub(crate) fn componentwise<const N: usize>(
     rtol: f64,
     atol: f64,
