@@ -27,8 +27,6 @@ mod family;
 mod flow;
 mod section;
 mod shoot;
-#[cfg(test)]
-mod tests;
 
 use std::fmt;
 
