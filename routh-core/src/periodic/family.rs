@@ -1,6 +1,6 @@
 //! Families of periodic orbits at fixed `p_ψ` through the energy: [`lyapunov_family`] from an
-//! elliptic steady motion, [`continue_orbit`] from any orbit, [`period_doubled_family`] from a
-//! period doubling (docs/method.md §11).
+//! elliptic steady motion, [`continue_orbit`] from any orbit (and, in `doubling.rs`,
+//! [`period_doubled_family`](super::period_doubled_family) from a period doubling; docs/method.md §11).
 //!
 //! Pseudo-arclength in `w = (x₀, T/t_s, E/e_s)` on the crate's one predictor–corrector
 //! (`path.rs`, [`PathOptions::orbit_family`]); the tangent is the null vector of the ten rows of
@@ -20,14 +20,14 @@ use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
 
 /// An accepted orbit of a family with its tangent.
 #[derive(Clone)]
-struct Node {
-    solved: Solved,
-    tangent: W,
-    orbit: PeriodicOrbit,
+pub(super) struct Node {
+    pub solved: Solved,
+    pub tangent: W,
+    pub orbit: PeriodicOrbit,
 }
 
 /// The index of the smallest singular value (nalgebra does not promise an order).
-fn smallest(values: &[f64]) -> usize {
+pub(super) fn smallest(values: &[f64]) -> usize {
     (0..values.len())
         .min_by(|&a, &b| values[a].total_cmp(&values[b]))
         .unwrap_or(0)
@@ -51,13 +51,13 @@ fn tangent_of(s: &Solved, along: Option<&W>) -> W {
 }
 
 /// The family's state: the model, the options, the scales, the orbits so far.
-struct Tracer<'a, M: Routhian> {
-    model: &'a M,
-    opts: &'a OrbitOptions,
-    p_psi: f64,
-    scales: Scales,
-    bounds: Option<(f64, f64)>,
-    first_period: f64,
+pub(super) struct Tracer<'a, M: Routhian> {
+    pub model: &'a M,
+    pub opts: &'a OrbitOptions,
+    pub p_psi: f64,
+    pub scales: Scales,
+    pub bounds: Option<(f64, f64)>,
+    pub first_period: f64,
 }
 
 impl<M: Routhian> Tracer<'_, M> {
@@ -66,7 +66,7 @@ impl<M: Routhian> Tracer<'_, M> {
         Problem::at(self.model, &x, self.p_psi, self.scales)
     }
 
-    fn node(&self, s: Solved, along: Option<&W>) -> Node {
+    pub(super) fn node(&self, s: Solved, along: Option<&W>) -> Node {
         let tangent = tangent_of(&s, along);
         let orbit = orbit_of(self.model, &s, &self.scales, self.opts);
         Node {
@@ -163,7 +163,7 @@ impl<M: Routhian> Tracer<'_, M> {
 
     /// Follows the family from `start` along its tangent until a stop; `budget` orbits at most
     /// (counting none of `start`). `origin`: the steady motion a Lyapunov family starts from.
-    fn trace(
+    pub(super) fn trace(
         &self,
         start: Node,
         budget: usize,
@@ -408,7 +408,7 @@ pub fn lyapunov_family<M: Routhian>(
 }
 
 /// Corrects `orbit` in the family's unknowns (and checks it is an orbit).
-fn restart<M: Routhian>(
+pub(super) fn restart<M: Routhian>(
     model: &M,
     orbit: &PeriodicOrbit,
     opts: &OrbitOptions,
@@ -494,94 +494,5 @@ pub fn continue_orbit<M: Routhian>(
         orbits,
         events,
         stop,
-    })
-}
-
-/// The family of orbits of twice the period born at a [`OrbitEventKind::PeriodDoubling`] event,
-/// followed away from it (docs/method.md §11): the branch leaves the doubly traversed orbit along
-/// the eigenvector of the monodromy for the multiplier −1, which the first step's pseudo-arclength
-/// row follows (so that the corrector cannot fall back onto the orbit traversed twice).
-///
-/// Errors: an event that is not a period doubling, and a first orbit that cannot be corrected.
-pub fn period_doubled_family<M: Routhian>(
-    model: &M,
-    event: &OrbitEvent,
-    opts: &OrbitOptions,
-) -> Result<OrbitFamily, RouthError> {
-    opts.validate()?;
-    if event.kind != OrbitEventKind::PeriodDoubling {
-        return Err(RouthError::InvalidOption {
-            what: "event",
-            reason: format!("a period doubling is needed, got a {}", event.kind),
-        });
-    }
-    let (s, scales) = restart(model, &event.orbit, opts)?;
-    // The eigenvector of Φ(T) for −1: the null vector of Φ + I restricted by the constraints
-    // (the rows of E, p_ψ and |γ|² keep it on the level set).
-    let mut m = SMatrix::<f64, 9, 6>::zeros();
-    let phi = s.shot.monodromy;
-    for i in 0..6 {
-        for k in 0..6 {
-            m[(i, k)] = phi[(i, k)] + if i == k { 1.0 } else { 0.0 };
-        }
-    }
-    for k in 0..6 {
-        m[(6, k)] = s.jac[(7, k)];
-        m[(7, k)] = s.jac[(8, k)];
-        m[(8, k)] = s.jac[(9, k)];
-    }
-    let svd = m.svd(false, true);
-    let v_t = svd.v_t.expect("asked for V");
-    let imin = smallest(svd.singular_values.as_slice());
-    let v: Vector6<f64> = v_t.row(imin).transpose();
-    let doubled = Scales {
-        t: 2.0 * event.orbit.period,
-        e: scales.e,
-    };
-    let x: Vector6<f64> = s.w.fixed_rows::<6>(0).into();
-    let e = event.orbit.energy;
-    let w_pd = doubled.pack(&x, 2.0 * event.orbit.period, e);
-    let mut n = W::zeros();
-    n.fixed_rows_mut::<6>(0).copy_from(&(v / v.norm()));
-    let tracer = Tracer {
-        model,
-        opts,
-        p_psi: event.orbit.p_psi,
-        scales: doubled,
-        bounds: opts.energy_bounds,
-        first_period: doubled.t,
-    };
-    let prob = Problem::at(model, &x, event.orbit.p_psi, doubled)?;
-    let mut h = opts.initial_step.max(10.0 * opts.initial_amplitude);
-    let mut first = None;
-    while h >= opts.min_step {
-        let pred = w_pd + n * h;
-        let row = LinearRow::arclength(&n, &pred);
-        if let Ok(sol) = correct(model, &prob, &row, &pred, opts)? {
-            first = Some(sol);
-            break;
-        }
-        h *= 0.5;
-    }
-    let Some(first) = first else {
-        return Err(RouthError::NoConvergence {
-            what: "the first orbit of the period-doubled family",
-            iterations: opts.max_iter,
-            residual: f64::NAN,
-        });
-    };
-    let mut start = tracer.node(first, None);
-    let away: Vector6<f64> = start.solved.w.fixed_rows::<6>(0) - x;
-    let tx: Vector6<f64> = start.tangent.fixed_rows::<6>(0).into();
-    if tx.dot(&away) < 0.0 {
-        start.tangent = -start.tangent;
-    }
-    let mut orbits = vec![start.orbit.clone()];
-    let (nodes, events, stop) = tracer.trace(start, opts.max_orbits.saturating_sub(1), None)?;
-    orbits.extend(nodes.into_iter().map(|n| n.orbit));
-    Ok(OrbitFamily {
-        orbits,
-        events,
-        stop: Some(stop),
     })
 }

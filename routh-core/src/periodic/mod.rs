@@ -23,6 +23,7 @@
 //! - **Sections** ([`poincare_section`]): many orbits at one `(p_ψ, E)` crossing a plane through
 //!   the vertical's body coordinates, in parallel (rayon).
 
+mod doubling;
 mod family;
 mod flow;
 mod section;
@@ -32,7 +33,8 @@ use std::fmt;
 
 use nalgebra::{Complex, Vector3};
 
-pub use family::{continue_orbit, lyapunov_family, period_doubled_family};
+pub use doubling::period_doubled_family;
+pub use family::{continue_orbit, lyapunov_family};
 pub use flow::orbit_path;
 pub use section::{
     orbit_crossings, poincare_section, section_starts, PoincareSection, SectionOptions,
