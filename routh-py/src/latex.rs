@@ -1,4 +1,4 @@
-//! `routh.LatexFormulas`: the formulas a model's reduction derives, in LaTeX (ARCHITECTURE §5f),
+//! `routh.LatexFormulas`: the formulas a model's reduction derives, in LaTeX (docs/api.md, "Out"),
 //! from `routh::Model::latex()`.
 
 use pyo3::exceptions::PyKeyError;

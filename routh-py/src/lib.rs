@@ -1,4 +1,4 @@
-//! `routh._routh`: the compiled half of the Python package `routh` (ARCHITECTURE §5e).
+//! `routh._routh`: the compiled half of the Python package `routh` (docs/python.md).
 //!
 //! Every analysis of `routh` is exposed on the run-time [`routh::Model`]: steady motions (paper
 //! (45)–(46)), their classification (section 4–5, errata E5/E8), bifurcation diagrams and

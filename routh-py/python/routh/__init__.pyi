@@ -1,4 +1,4 @@
-"""Type stubs of the Python package `routh` (ARCHITECTURE §5e)."""
+"""Type stubs of the Python package `routh` (docs/python.md)."""
 
 from os import PathLike
 from typing import Any, Callable, Literal, Mapping, Sequence, Union
