@@ -66,24 +66,19 @@ pub trait Lagrangian {
     /// `ε^{1/3}·max(1, |x|)`, about 8 significant digits): correct, but a hand-written model
     /// that needs exact multipliers should implement it.
     fn full_jacobian(&self, omega: &Vector3<f64>, gamma: &Vector3<f64>) -> FullJacobian {
-        let eq = self.full_equations(omega, gamma);
-        let inertia = match &eq.rank_one {
-            Some(r) => match self.constant_inertia() {
-                Some(j0) => r.complete(&j0),
-                None => eq.inertia,
-            },
-            None => eq.inertia,
+        // The whole J, also where the equations carry J₀ + c v vᵀ as its rank-one part.
+        let constant = self.constant_inertia();
+        let full_j = |e: &FullEquations| match (&e.rank_one, &constant) {
+            (Some(r), Some(j0)) => r.complete(j0),
+            _ => e.inertia,
         };
+        let eq = self.full_equations(omega, gamma);
         let mut jac = FullJacobian {
-            inertia,
+            inertia: full_j(&eq),
             right_side: eq.right_side,
             dright_domega: Matrix3::zeros(),
             dright_dgamma: Matrix3::zeros(),
             dinertia_dgamma: [Matrix3::zeros(); 3],
-        };
-        let full_j = |e: &FullEquations| match (&e.rank_one, self.constant_inertia()) {
-            (Some(r), Some(j0)) => r.complete(&j0),
-            _ => e.inertia,
         };
         let cbrt_eps = f64::EPSILON.cbrt();
         for k in 0..3 {

@@ -98,8 +98,8 @@ pub(crate) struct Shot {
     pub monodromy: Matrix6<f64>,
     /// `R(t)` with `R(0) = I` (body to space at `t`, in the space frame of the body at 0).
     pub turn: UnitQuaternion<f64>,
-    /// Half the largest distance between the accepted points and `x₀`… measured as the largest
-    /// distance from `x₀` divided by 2 (a cheap bound of half the orbit's diameter).
+    /// Half the largest distance from `x₀` of the accepted steps' states (a cheap bound of
+    /// half the orbit's diameter; 0 at a steady motion).
     pub reach: f64,
 }
 

@@ -349,8 +349,6 @@ pub fn orbit_crossings<M: Lagrangian + Sync>(
     opts: &SectionOptions,
 ) -> Result<Vec<[f64; 2]>, RouthError> {
     let n = opts.validate()?;
-    // Start just after a crossing-free instant: integrate over one period from the orbit's point.
-    let _ = field(model, &join(&orbit.omega0, &orbit.gamma0))?;
     let (points, _, stop) = crossings(
         model,
         &orbit.omega0,
