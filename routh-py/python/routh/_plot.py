@@ -187,7 +187,8 @@ def _index_ticks(ax):
     ticks, labels = [], []
     for t in range(int(np.floor(lo)), int(np.ceil(hi)) + 1):
         ticks.append(t)
-        labels.append(str(t) if abs(t) <= 1 else ("−" if t < 0 else "") + f"{10 ** (abs(t) - 1):g}")
+        size = str(abs(t)) if abs(t) <= 1 else f"{10 ** (abs(t) - 1):g}"
+        labels.append(("−" if t < 0 else "") + size)
     ax.set_yticks(ticks)
     ax.set_yticklabels(labels)
 
