@@ -1,4 +1,5 @@
-//! Parsing of the derive input: the struct, its fields and the `#[lagrangian(...)]` items.
+//! Parsing of a model: its parameters (the struct's fields) and the items of its body (the
+//! `#[lagrangian(...)]` attributes, or a model's text read at run time).
 //!
 //! Parsing never stops at the first mistake: the attribute body is split at its top-level commas
 //! and every item is parsed on its own, so that every malformed item is reported.
@@ -19,12 +20,16 @@ pub enum FieldKind {
     Matrix,
 }
 
-/// A field of the model struct.
+/// A parameter of a model: a field of the struct (the derive) or a named parameter of a model
+/// read at run time. Both front ends hand their parameters to [`crate::analyse_parts`] in this
+/// form.
 pub struct Field {
     pub ident: syn::Ident,
     /// `None` for fields whose type is not supported (an error has been recorded unless skipped).
     pub kind: Option<FieldKind>,
-    pub ty: syn::Type,
+    /// The field's type as written (the derive), where an unsupported type is reported; `None`
+    /// for a run-time parameter, whose shape is its value's.
+    pub ty: Option<syn::Type>,
     pub skip: bool,
     /// `#[lagrangian(symmetric)]` on a `Matrix3<f64>`: only the upper triangle is read and the
     /// matrix is taken to be symmetric (an inertia tensor), which the generated code exploits.
@@ -32,6 +37,72 @@ pub struct Field {
     /// `#[lagrangian(latex = "I")]`: the field's symbol in the LaTeX of the derived formulas
     /// (default `\mathit{name}`).
     pub latex: Option<String>,
+}
+
+impl Field {
+    /// A used parameter of the given shape, not symmetric, with the default LaTeX symbol.
+    pub fn new(ident: syn::Ident, kind: FieldKind) -> Field {
+        Field {
+            ident,
+            kind: Some(kind),
+            ty: None,
+            skip: false,
+            symmetric: None,
+            latex: None,
+        }
+    }
+}
+
+/// The body of a model: the items of the struct's `#[lagrangian(...)]` attributes (the derive)
+/// or a model's text (run time), as tokens whose spans point into the user's source.
+pub struct Body {
+    /// Each attribute in order.
+    pub parts: Vec<BodyPart>,
+    /// What errors about the body as a whole point at (no attribute at all; a missing
+    /// `kinetic`): the first attribute, or the struct's name when it has none. Empty for a
+    /// model's text (the error is then at its start).
+    pub anchor: TokenStream,
+}
+
+/// One `#[lagrangian ...]` attribute of a [`Body`].
+pub enum BodyPart {
+    /// `#[lagrangian(ITEMS)]`: the items' tokens and the span of the delimiters (where an empty
+    /// list is reported).
+    List(TokenStream, Span),
+    /// An attribute that is not a list (`#[lagrangian]`, `#[lagrangian = ...]`): its tokens, where
+    /// the error points.
+    NotAList(TokenStream),
+}
+
+impl Body {
+    /// A model's text, lexed: one list of items, errors about the whole at the text's start.
+    pub fn text(tokens: TokenStream) -> Body {
+        Body {
+            parts: vec![BodyPart::List(tokens, Span::call_site())],
+            anchor: TokenStream::new(),
+        }
+    }
+
+    /// The `#[lagrangian(...)]` attributes of a struct (not those of its fields).
+    pub fn of(input: &syn::DeriveInput) -> Body {
+        use quote::ToTokens;
+        let attrs: Vec<_> = (input.attrs.iter())
+            .filter(|a| a.path().is_ident("lagrangian"))
+            .collect();
+        let parts = (attrs.iter())
+            .map(|attr| match &attr.meta {
+                syn::Meta::List(list) => {
+                    BodyPart::List(list.tokens.clone(), list.delimiter.span().join())
+                }
+                other => BodyPart::NotAList(other.to_token_stream()),
+            })
+            .collect();
+        let anchor = match attrs.first() {
+            Some(attr) => attr.to_token_stream(),
+            None => input.ident.to_token_stream(),
+        };
+        Body { parts, anchor }
+    }
 }
 
 /// Which term of `L = kinetic + linear − potential` an item defines.
@@ -69,72 +140,74 @@ pub enum Item {
     Failed { name: Option<syn::Ident> },
 }
 
-/// The parsed derive input.
-pub struct Input {
-    pub ident: syn::Ident,
-    pub generics: syn::Generics,
-    pub fields: Vec<Field>,
+/// A model's parameters with the parsed items of its body: what the checks and the lowering
+/// read.
+pub struct Input<'a> {
+    pub fields: &'a [Field],
     pub items: Vec<Item>,
-    /// Whether the struct carries at least one `#[lagrangian(...)]`.
+    /// Whether the body has at least one `#[lagrangian ...]` (a model's text always has).
     pub has_attr: bool,
-    /// The first `#[lagrangian(...)]` attribute, where errors about a missing item point.
-    pub first_attr: Option<syn::Attribute>,
+    /// Where errors about the body as a whole point ([`Body::anchor`]).
+    pub anchor: &'a TokenStream,
     /// Whether some part of an attribute did not parse (already reported): rules about missing
     /// items stay silent then, since the missing item may be the one that failed.
     pub incomplete: bool,
 }
 
-/// Parses the derive input, recording every error in `cx`.
-pub fn parse_input(cx: &Ctxt, input: &syn::DeriveInput) -> Input {
+/// The parsed items of a [`Body`].
+pub struct Items {
+    pub items: Vec<Item>,
+    /// Whether some part of the body did not parse (already reported).
+    pub incomplete: bool,
+}
+
+/// Parses every item of `body`, recording every error in `cx`.
+pub fn parse_body(cx: &Ctxt, body: &Body) -> Items {
     let mut items = Vec::new();
-    let mut has_attr = false;
-    let mut first_attr = None;
     let mut incomplete = false;
-    for attr in input
-        .attrs
-        .iter()
-        .filter(|a| a.path().is_ident("lagrangian"))
-    {
-        has_attr = true;
-        if first_attr.is_none() {
-            first_attr = Some(attr.clone());
-        }
-        match &attr.meta {
-            syn::Meta::List(list) => {
-                let span = list.delimiter.span().join();
-                incomplete |= !parse_items(cx, list.tokens.clone(), span, &mut items);
+    for part in &body.parts {
+        match part {
+            BodyPart::List(tokens, span) => {
+                incomplete |= !parse_items(cx, tokens.clone(), *span, &mut items);
             }
-            other => {
+            BodyPart::NotAList(tokens) => {
                 incomplete = true;
                 cx.error_spanned_by(
-                    other,
+                    tokens,
                     "expected `#[lagrangian(kinetic = ..., linear = ..., potential = ...)]`",
                 );
             }
         }
     }
-    let fields = match &input.data {
-        syn::Data::Struct(s) => match &s.fields {
-            syn::Fields::Named(named) => named
-                .named
-                .iter()
-                .filter_map(|f| parse_field(cx, f))
-                .collect(),
-            syn::Fields::Unnamed(_) | syn::Fields::Unit => {
-                // Reported by `check::struct_has_named_fields`.
-                Vec::new()
-            }
-        },
+    Items { items, incomplete }
+}
+
+impl<'a> Input<'a> {
+    /// The parameters `fields` with the items parsed from `body`.
+    pub fn new(fields: &'a [Field], body: &'a Body, items: Items) -> Input<'a> {
+        Input {
+            fields,
+            items: items.items,
+            has_attr: !body.parts.is_empty(),
+            anchor: &body.anchor,
+            incomplete: items.incomplete,
+        }
+    }
+}
+
+/// The named fields of the struct, recording errors in their `#[lagrangian(...)]` attributes.
+/// Other shapes of input have none (reported by [`crate::check::struct_has_named_fields`]).
+pub fn fields(cx: &Ctxt, input: &syn::DeriveInput) -> Vec<Field> {
+    match &input.data {
+        syn::Data::Struct(syn::DataStruct {
+            fields: syn::Fields::Named(named),
+            ..
+        }) => named
+            .named
+            .iter()
+            .filter_map(|f| parse_field(cx, f))
+            .collect(),
         _ => Vec::new(),
-    };
-    Input {
-        ident: input.ident.clone(),
-        generics: input.generics.clone(),
-        fields,
-        items,
-        has_attr,
-        first_attr,
-        incomplete,
     }
 }
 
@@ -172,7 +245,7 @@ fn parse_field(cx: &Ctxt, f: &syn::Field) -> Option<Field> {
     Some(Field {
         ident,
         kind: field_kind(&f.ty),
-        ty: f.ty.clone(),
+        ty: Some(f.ty.clone()),
         skip,
         symmetric,
         latex,

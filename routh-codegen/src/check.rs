@@ -4,14 +4,16 @@
 
 use crate::attr::{Input, Item, Term};
 use crate::ctxt::Ctxt;
+use quote::ToTokens;
 use std::collections::HashMap;
 
 /// Names the DSL gives a meaning of its own.
 pub const RESERVED: &[&str] = &["omega", "gamma", "diag", "skew", "grad"];
 
 /// Runs every rule.
-pub fn check(cx: &Ctxt, derive: &syn::DeriveInput, input: &Input) {
-    struct_has_named_fields(cx, derive);
+/// The rules about the struct itself ([`struct_has_named_fields`]) are the derive's own and run
+/// before these.
+pub fn check(cx: &Ctxt, input: &Input) {
     has_attribute(cx, input);
     fields_have_supported_types(cx, input);
     fields_do_not_shadow_variables(cx, input);
@@ -23,7 +25,7 @@ pub fn check(cx: &Ctxt, derive: &syn::DeriveInput, input: &Input) {
 
 /// The Lagrangian reads the model's parameters from named fields (`self.mass`), so tuple
 /// structs, unit structs, enums and unions cannot be models.
-fn struct_has_named_fields(cx: &Ctxt, derive: &syn::DeriveInput) {
+pub fn struct_has_named_fields(cx: &Ctxt, derive: &syn::DeriveInput) {
     match &derive.data {
         syn::Data::Struct(s) => match &s.fields {
             syn::Fields::Named(_) => {}
@@ -51,7 +53,7 @@ fn struct_has_named_fields(cx: &Ctxt, derive: &syn::DeriveInput) {
 fn has_attribute(cx: &Ctxt, input: &Input) {
     if !input.has_attr {
         cx.error_spanned_by(
-            &input.ident,
+            input.anchor,
             "missing `#[lagrangian(kinetic = ..., linear = ..., potential = ...)]`",
         );
     }
@@ -62,7 +64,7 @@ fn has_attribute(cx: &Ctxt, input: &Input) {
 fn fields_have_supported_types(cx: &Ctxt, input: &Input) {
     for f in input.fields.iter().filter(|f| f.kind.is_none() && !f.skip) {
         cx.error_spanned_by(
-            &f.ty,
+            f.ty.as_ref().map_or_else(|| f.ident.to_token_stream(), |t| t.to_token_stream()),
             format!(
                 "field `{}` has a type the Lagrangian cannot use: expected `f64`, `Vector3<f64>` or `Matrix3<f64>`; mark it `#[lagrangian(skip)]` if the Lagrangian does not need it",
                 f.ident
@@ -87,7 +89,7 @@ fn fields_do_not_shadow_variables(cx: &Ctxt, input: &Input) {
 
 /// Symmetry is a property of a 3×3 matrix; on anything else the attribute means nothing.
 fn symmetric_only_on_matrices(cx: &Ctxt, input: &Input) {
-    for f in &input.fields {
+    for f in input.fields {
         if let Some(span) = f.symmetric {
             if f.kind != Some(crate::attr::FieldKind::Matrix) || f.skip {
                 cx.error_at(
@@ -130,10 +132,7 @@ fn kinetic_is_present(cx: &Ctxt, input: &Input) {
     {
         // Point at the attribute that lacks the item, not at the struct.
         let msg = "missing `kinetic = EXPR` in `#[lagrangian(...)]`";
-        match &input.first_attr {
-            Some(attr) => cx.error_spanned_by(attr, msg),
-            None => cx.error_spanned_by(&input.ident, msg),
-        }
+        cx.error_spanned_by(input.anchor, msg);
     }
 }
 

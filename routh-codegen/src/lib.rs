@@ -9,6 +9,10 @@
 //! [`layout`] names the outputs of the methods that return many at once, for both). Every stage records its
 //! errors in a [`ctxt::Ctxt`] and carries on, so all mistakes of an attribute are reported at
 //! once; on error the output is `compile_error!`s plus a stub impl, so no follow-on errors appear.
+//!
+//! [`analyse_parts`] (parameters and a body of items) is the one front end for model text: the
+//! derive reaches it through [`analyse`] (the struct's fields and attributes), models read at run
+//! time (`routh-runtime`) call it with their parameters and their lexed text.
 
 pub mod attr;
 pub mod check;
@@ -25,6 +29,7 @@ pub mod reduce;
 pub mod system;
 pub mod tape;
 
+pub use attr::{Body, Field, FieldKind};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 
@@ -65,19 +70,40 @@ pub struct Model {
     pub latex_symbols: Vec<(String, String)>,
 }
 
-/// Parses, checks, lowers and reduces; all errors combined.
+/// The front end for model text, shared by the derive and by models read at run time (as
+/// `pest_meta` is for `pest`): parses the items of `body` ([`attr::parse_body`]), applies the
+/// rules ([`check`]) with `params` as the model's parameters, lowers and reduces; all errors
+/// combined, each spanned at the tokens of `body` (or a parameter's) it is about.
+pub fn analyse_parts(params: &[Field], body: &Body) -> Result<Model, syn::Error> {
+    let cx = ctxt::Ctxt::new();
+    let items = attr::parse_body(&cx, body);
+    analyse_parsed(cx, attr::Input::new(params, body, items))
+}
+
+/// [`analyse_parts`] for a struct: its fields are the parameters, its `#[lagrangian(...)]`
+/// attributes the body. The struct's own rules (named fields, the fields' attributes) are
+/// checked here; everything else is [`analyse_parts`]'s.
 pub fn analyse(di: &syn::DeriveInput) -> Result<Model, syn::Error> {
     let cx = ctxt::Ctxt::new();
-    let input = attr::parse_input(&cx, di);
+    let body = Body::of(di);
+    // In the order of the errors: the body's items, then the fields, then the struct.
+    let items = attr::parse_body(&cx, &body);
+    let params = attr::fields(&cx, di);
+    check::struct_has_named_fields(&cx, di);
+    analyse_parsed(cx, attr::Input::new(&params, &body, items))
+}
+
+/// Checks, lowers and reduces parsed input, with the errors already in `cx`.
+fn analyse_parsed(cx: ctxt::Ctxt, input: attr::Input) -> Result<Model, syn::Error> {
     let latex_symbols = (input.fields.iter())
         .filter_map(|f| Some((f.ident.to_string(), f.latex.clone()?)))
         .collect();
-    check::check(&cx, di, &input);
+    check::check(&cx, &input);
     let lowered = lower::lower(&cx, &input);
     cx.check()?;
     let Some(mut lowered) = lowered else {
         return Err(syn::Error::new_spanned(
-            &di.ident,
+            input.anchor,
             "the Lagrangian could not be lowered",
         ));
     };

@@ -95,7 +95,7 @@ pub fn lower(cx: &Ctxt, input: &Input) -> Option<Lowered> {
     );
     let mut params = vec![];
     let mut field_names = vec![];
-    for f in &input.fields {
+    for f in input.fields {
         let name = f.ident.to_string();
         if crate::check::RESERVED.contains(&name.as_str()) {
             // Reported by `check::fields_do_not_shadow_variables`; the DSL's meaning stays.

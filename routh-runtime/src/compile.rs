@@ -1,17 +1,16 @@
-//! From a model's text to its tapes, through the derive's own code: a `syn::DeriveInput` is
-//! synthesised (a struct whose fields are the parameters, with their shapes, carrying the text
-//! as its `#[lagrangian(...)]` attribute, lexed by `proc_macro2` so that spans keep their line
-//! and column), and `routh_codegen::analyse` parses, checks, lowers and reduces it exactly as
-//! `#[derive(Lagrangian)]` does. Each generated method's outputs ([`routh_codegen::layout`])
+//! From a model's text to its tapes, through the derive's own front end: the text, lexed by
+//! `proc_macro2` so that spans keep their line and column, is the body and the parameters (with
+//! their shapes) are the fields, and `routh_codegen::analyse_parts` parses, checks, lowers and
+//! reduces them exactly as `#[derive(Lagrangian)]` does for a struct. Each generated method's outputs ([`routh_codegen::layout`])
 //! become one tape ([`routh_codegen::tape`]), its parameters left as `Op::Param` to be bound
 //! by [`crate::Model`].
 
 use crate::error::ModelError;
 use crate::Param;
 use proc_macro2::{Span, TokenStream};
-use quote::quote;
 use routh_codegen::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic, JacobianTerms};
 use routh_codegen::lower::Access;
+use routh_codegen::{Body, Field, FieldKind};
 use routh_symbolic::Id;
 use routh_tape::Tape;
 
@@ -189,7 +188,7 @@ pub(crate) struct Compiled {
 /// (the parsers recurse on nesting).
 const MAX_NESTING: usize = 64;
 
-/// Reduces `text` with `params` as the struct's fields to the tapes of a model.
+/// Reduces `text` with `params` as its parameters to the tapes of a model.
 pub(crate) fn compile(
     text: &str,
     params: &[(String, Param)],
@@ -264,7 +263,7 @@ pub(crate) fn sympy(
         .unwrap_or_default()
 }
 
-/// Parses, checks, lowers and reduces `text` with `params` as the struct's fields.
+/// Parses, checks, lowers and reduces `text` with `params` as its parameters.
 fn analyse(
     text: &str,
     params: &[(String, Param)],
@@ -305,15 +304,15 @@ fn analyse(
                 name.chars().count(),
             )
         })?;
-        let ty = match p {
-            Param::Scalar(_) => quote!(f64),
-            Param::Vector(_) => quote!(Vector3<f64>),
-            Param::Matrix(_) => quote!(Matrix3<f64>),
+        let kind = match p {
+            Param::Scalar(_) => FieldKind::Scalar,
+            Param::Vector(_) => FieldKind::Vector,
+            Param::Matrix(_) => FieldKind::Matrix,
         };
-        let attr = symmetric
-            .contains(name)
-            .then(|| quote!(#[lagrangian(symmetric)]));
-        fields.push(quote!(#attr #ident: #ty));
+        let mut field = Field::new(ident, kind);
+        // Not in the text: an error about it is placed at the parameter's first use.
+        field.symmetric = symmetric.contains(name).then(Span::call_site);
+        fields.push(field);
     }
     for s in symmetric {
         if !params.iter().any(|(n, _)| n == s) {
@@ -327,12 +326,8 @@ fn analyse(
             ));
         }
     }
-    let tokens = quote! {
-        #[lagrangian(#body)]
-        struct RuntimeModel { #(#fields,)* }
-    };
-    let di: syn::DeriveInput = syn::parse2(tokens).map_err(|e| to_model_error(&e, text, params))?;
-    routh_codegen::analyse(&di).map_err(|e| to_model_error(&e, text, params))
+    routh_codegen::analyse_parts(&fields, &Body::text(body))
+        .map_err(|e| to_model_error(&e, text, params))
 }
 
 /// The first unbalanced bracket of `text`, as an error at it (`(` never closed, `)` closing
@@ -455,9 +450,9 @@ pub(crate) fn first_use(text: &str, name: &str) -> (usize, usize) {
     (1, 1)
 }
 
-/// The derive's errors as a [`ModelError`] (the first, the others attached). An error whose
-/// span is not in the text (it is about the synthesised struct: a parameter) is placed at the
-/// first use of the parameter it names, or at the start of the text.
+/// The front end's errors as a [`ModelError`] (the first, the others attached). An error whose
+/// span is not in the text (it is about a parameter) is placed at the first use of the
+/// parameter it names, or at the start of the text.
 fn to_model_error(err: &syn::Error, text: &str, params: &[(String, Param)]) -> ModelError {
     let mut all = err.clone().into_iter().map(|e| one_error(&e, text, params));
     let mut first = all
@@ -482,7 +477,7 @@ fn one_error(e: &syn::Error, text: &str, params: &[(String, Param)]) -> ModelErr
         };
         return ModelError::at(message, text, a.line, a.column + 1, width);
     }
-    // About a field of the synthesised struct: at the first use of a parameter it names.
+    // About a parameter: at its first use.
     for (name, _) in params {
         if message.contains(&format!("`{name}`")) {
             let (line, column) = first_use(text, name);
@@ -492,8 +487,9 @@ fn one_error(e: &syn::Error, text: &str, params: &[(String, Param)]) -> ModelErr
     ModelError::at(message, text, 1, 1, 1)
 }
 
-/// Whether a position `(1, 0)` is really the start of the text (and not a span of the
-/// synthesised tokens, which `proc_macro2` places at `(1, 0)` too).
+/// Whether a position `(1, 0)` is really the start of the text (and not `Span::call_site()`,
+/// where errors about a parameter or the text as a whole are, which `proc_macro2` places at
+/// `(1, 0)` too).
 fn from_text(text: &str, a: proc_macro2::LineColumn) -> bool {
     a.line == 1 && a.column == 0 && !text.starts_with(char::is_whitespace) && !text.is_empty()
 }
