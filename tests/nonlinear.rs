@@ -2,7 +2,7 @@
 //! `Model`'s), against the same method fed by a hand-written `R` (39) evaluated at jets: the
 //! tape must give the same frequencies, Krein signs, Birkhoff coefficients and verdicts.
 
-use routh::nonlinear::{nonlinear_stability_with, Jet};
+use routh::nonlinear::{nonlinear_stability_from_jet, Jet};
 use routh::{
     nonlinear_stability, Lagrangian, Model, NonlinearOptions, NonlinearVerdict, Stability,
     SteadyMotion, Vector3,
@@ -49,7 +49,7 @@ fn the_tape_gives_the_hand_written_normal_form() {
         let top = Top { inertia, l: 1.0 };
         let runtime = Model::new(text, &[("inertia", inertia.into()), ("l", 1.0.into())]).unwrap();
         let s = SteadyMotion::at(&top, Vector3::z(), p, true).unwrap();
-        let hand = nonlinear_stability_with(&top, &s, &hand_r(&top), &opts).unwrap();
+        let hand = nonlinear_stability_from_jet(&top, &s, &hand_r(&top), &opts).unwrap();
         assert_eq!(hand.linear.verdict, Stability::GyroscopicallyStabilized);
         let derived = nonlinear_stability(&top, &s, &opts).unwrap();
         let s_rt = SteadyMotion::at(&runtime, Vector3::z(), p, true).unwrap();

@@ -14,7 +14,7 @@
 //! | `ApexLocus` | `sim::attitude::classify_apex_locus` | `trajectories_round_trip` |
 //! | `SteadyMotion`, `SearchOptions`, `SearchResult` | `steady_motions`, `steady_motions_checked` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `StabilityReport`, `Stability`, `ClassifyOptions` | `classify` | `steady_motions_reports_and_matrices_round_trip` |
-//! | `KreinReport` | `stability::classify_with_krein` | `steady_motions_reports_and_matrices_round_trip` |
+//! | `KreinReport` | `stability::krein_report` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `Classified` | `classified_steady_motions` | `classified_motions_round_trip` |
 //! | `CircleReport`, `CircleStability` | `classify_circle` | `classified_motions_round_trip` |
 //! | `GyroscopicSystem`, `RouthBundle`, `FullEquations`, `ReducedEquations`, `RankOneInertia` | `Routhian::gyroscopic_system`, `bundle`, `full_equations`, `reduced_equations` | `steady_motions_reports_and_matrices_round_trip` |
@@ -44,8 +44,8 @@ use routh::families::nonlinear_events;
 use routh::families::BifurcationDiagram;
 use routh::nonlinear::{linear_normal_form, Jet};
 use routh::sim::attitude::classify_apex_locus;
-use routh::stability::classify_with_krein;
-use routh::steady::{steady_motions_with, SearchOptions};
+use routh::stability::krein_report;
+use routh::steady::{steady_motion_search, SearchOptions};
 use routh::{
     bifurcation_diagram, classified_steady_motions, classify, nonlinear_stability, simulate_full,
     simulate_reduced, stability_atlas, steady_motions, AtlasOptions, ClassifyOptions,
@@ -121,12 +121,12 @@ fn steady_motions_reports_and_matrices_round_trip() {
     round_trip(&motions);
     round_trip(&SearchOptions::default());
     round_trip(&ClassifyOptions::default());
-    round_trip(&steady_motions_with(&model, 3.0, &SearchOptions::default()).unwrap());
+    round_trip(&steady_motion_search(&model, 3.0, &SearchOptions::default()).unwrap());
     for s in &motions {
         let r = classify(&model, s).unwrap();
         round_trip(&r);
         round_trip(&r.verdict);
-        round_trip(&classify_with_krein(&model, s, &ClassifyOptions::default()).unwrap());
+        round_trip(&krein_report(&model, s, &ClassifyOptions::default()).unwrap());
         let sys: GyroscopicSystem = model.gyroscopic_system(&s.gamma, s.p_psi);
         round_trip(&sys);
         round_trip(&model.bundle(&Vector3::new(0.1, 0.2, 0.3), &s.gamma, s.p_psi));

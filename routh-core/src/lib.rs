@@ -56,10 +56,10 @@ pub use model::{DerivedFormulas, GyroscopicSystem, Lagrangian, RouthBundle, Rout
 /// structure); users do not name them.
 #[doc(hidden)]
 pub use model::{FullEquations, FullJacobian, RankOneInertia, ReducedEquations};
-/// [`nonlinear_stability`] with a jet of the Routh function given by the caller (the run-time
-/// models pass their own); users call [`nonlinear_stability`].
+/// [`nonlinear_stability`] with a jet of the Routh function given by the caller (a hand-written
+/// model without a tape); users call [`nonlinear_stability`].
 #[doc(hidden)]
-pub use nonlinear::nonlinear_stability_with;
+pub use nonlinear::nonlinear_stability_from_jet;
 pub use nonlinear::{
     nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
 };
@@ -71,6 +71,10 @@ pub use periodic::{
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, classify_with, ClassifyOptions, Stability, StabilityReport};
 pub use steady::{
-    steady_motion_near, steady_motions, steady_motions_with, SearchOptions, SearchResult,
+    steady_motion_near, steady_motion_search, steady_motions, SearchOptions, SearchResult,
     SteadyMotion,
 };
+/// Former names, kept for old code (see `docs/api.md`).
+#[allow(deprecated)]
+#[doc(hidden)]
+pub use {nonlinear::nonlinear_stability_with, steady::steady_motions_with};

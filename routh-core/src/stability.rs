@@ -158,7 +158,7 @@ impl fmt::Display for StabilityReport {
 ///    `c₀ = det K`. The coefficients are of order `p_ψ⁴` and would overflow (or underflow) in
 ///    extreme units, so the quartic is solved in the scaled variable `μ = λ/ω`, `ω` a
 ///    characteristic frequency of `a`, `g`, `c`, with coefficients of order 1
-///    ([`f2_coefficients_scaled`]); the roots and verdicts are the same in any units.
+///    (`f2_coefficients_scaled`); the roots and verdicts are the same in any units.
 ///
 /// # Verdict
 ///
@@ -396,16 +396,16 @@ fn classify_parts<M: Routhian>(
 }
 
 /// A [`StabilityReport`] with the Krein signatures of the roots of `f₂`, from
-/// [`classify_with_krein`]. Its `Display` shows them next to the roots.
+/// [`krein_report`]. Its `Display` shows them next to the roots.
 ///
 /// ```
 /// # use routh_core::*;
 /// # use test_models::Gyrostat;
-/// use routh_core::stability::{classify_with_krein, KreinReport};
+/// use routh_core::stability::{krein_report, KreinReport};
 /// let top = Gyrostat::lagrange_top(1.0, 1.25, 1.0);
 /// // The sleeping top between Maievskii's bound (p = 2) and the secular bound (p = 2.5).
 /// let s = SteadyMotion::at(&top, Vector3::z(), 2.2, true)?;
-/// let k: KreinReport = classify_with_krein(&top, &s, &ClassifyOptions::default())?;
+/// let k: KreinReport = krein_report(&top, &s, &ClassifyOptions::default())?;
 /// assert_eq!(k.report.verdict, Stability::GyroscopicallyStabilized);
 /// // One mode of each energy sign for each sign of the frequency.
 /// assert_eq!(k.krein_signatures.iter().map(|&x| x as i32).sum::<i32>(), 0);
@@ -457,7 +457,7 @@ impl fmt::Display for KreinReport {
 /// Errors: as [`classify_with`].
 ///
 /// See the example on [`KreinReport`].
-pub fn classify_with_krein<M: Routhian>(
+pub fn krein_report<M: Routhian>(
     model: &M,
     steady: &SteadyMotion,
     opts: &ClassifyOptions,
@@ -473,13 +473,24 @@ pub fn classify_with_krein<M: Routhian>(
     })
 }
 
+/// The former name of [`krein_report`] (a `_with` form takes options, and nothing else).
+#[deprecated(note = "renamed `krein_report` (same arguments)")]
+#[doc(hidden)]
+pub fn classify_with_krein<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    opts: &ClassifyOptions,
+) -> Result<KreinReport, RouthError> {
+    krein_report(model, steady, opts)
+}
+
 /// The coefficients `[c₄, c₂, c₀]` of `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P) = c₄λ⁴ + c₂λ² + c₀`
 /// (errata E5) at the unit vector γ, from [`Routhian::gyroscopic_system`]. They do not depend on
 /// the choice of the orthonormal basis `P` of γ^⊥.
 ///
 /// They are of the order of `p_ψ⁴` (for a free body, in units of the inertia) and overflow
-/// for `|p_ψ|` beyond about `1e77`; [`f2_coefficients_scaled`] gives the same polynomial in a
-/// scaled variable, which does not.
+/// for `|p_ψ|` beyond about `1e77`; [`classify`] solves the same polynomial in a scaled
+/// variable, which does not.
 ///
 /// Errors: as [`classify`], and [`RouthError::NonFiniteModel`] when a coefficient overflows.
 pub fn f2_coefficients<M: Routhian>(
@@ -507,7 +518,7 @@ pub fn f2_coefficients<M: Routhian>(
 /// discriminant `(ĉ₂² − 4ĉ₄ĉ₀)/(ĉ₂² + 4|ĉ₄ĉ₀|)` equal those of the raw coefficients.
 ///
 /// Errors: as [`classify`].
-pub fn f2_coefficients_scaled<M: Routhian>(
+pub(crate) fn f2_coefficients_scaled<M: Routhian>(
     model: &M,
     gamma: &Vector3<f64>,
     p_psi: f64,

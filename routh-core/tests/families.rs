@@ -12,7 +12,7 @@ mod common;
 use common::HeavyTop;
 
 use routh_core::nalgebra::{Matrix4, Vector6};
-use routh_core::stability::classify_with_krein;
+use routh_core::stability::krein_report;
 use routh_core::{
     bifurcation_diagram, continue_branch, steady_motions, BifurcationDiagram, ClassifyOptions,
     ContinuationOptions, EventKind, Matrix3, RouthError, Stability, StopReason, Vector3,
@@ -588,7 +588,7 @@ fn roots_of_equal_krein_signature_cross_without_an_event() {
     let gap = |p: f64| closed(p).0 - closed(p).1;
     assert!(gap(below.s) * gap(above.s) < 0.0);
     for q in [below, above] {
-        let kr = classify_with_krein(&body, &q.steady, &ClassifyOptions::default()).unwrap();
+        let kr = krein_report(&body, &q.steady, &ClassifyOptions::default()).unwrap();
         let (slow, fast) = quartic(q.s);
         let mut w: Vec<f64> = kr.report.f2_roots.iter().map(|r| r.im.abs()).collect();
         w.sort_by(f64::total_cmp);

@@ -2,7 +2,7 @@
 //! pitchfork tips, near-spherical circles, budgets that end with a partial result. Checked
 //! against closed forms (the Kovalevskaya top, the asymmetric prolate top) and the global search.
 
-use routh_core::steady::{steady_motions_with, SearchOptions};
+use routh_core::steady::{steady_motion_search, SearchOptions};
 use routh_core::{
     bifurcation_diagram, steady_motions, BifurcationDiagram, ContinuationOptions, EventKind,
     Matrix3, Vector3,
@@ -236,7 +236,7 @@ fn symmetric_tops_found_by_the_sweep() {
         assert_eq!(d.stop, None, "({a}, {c}, {mgl}) over {range:?}");
         for k in 1..6 {
             let s = range.0 + (range.1 - range.0) * (k as f64 / 6.0 + 0.011);
-            let found = steady_motions_with(&t, s, &SearchOptions::default()).unwrap();
+            let found = steady_motion_search(&t, s, &SearchOptions::default()).unwrap();
             if found.consistent {
                 assert_eq!(
                     d.count_at(s),
@@ -256,7 +256,7 @@ fn symmetric_tops_found_by_the_sweep() {
 #[test]
 fn kovalevskaya_pitchfork_point_is_isolated() {
     let k = top(2.0, 2.0, 1.0, Vector3::x());
-    let found = steady_motions_with(&k, 2.0, &SearchOptions::default()).unwrap();
+    let found = steady_motion_search(&k, 2.0, &SearchOptions::default()).unwrap();
     for m in &found.motions {
         println!("{m}");
     }

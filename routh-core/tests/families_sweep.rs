@@ -9,7 +9,7 @@
 //! where the number of steady motions is counted in closed form ([`closed_form_count`]: the
 //! critical points of `U_r = p²/(2γᵀJγ) + mgr·γ` on the sphere reduce to the roots of one scalar
 //! equation, counted by its monotone pieces). Independently, the global search
-//! ([`steady_motions_with`]) must agree with the closed form wherever its Morse self-check says
+//! ([`steady_motion_search`]) must agree with the closed form wherever its Morse self-check says
 //! `consistent`; the points where it does not are counted (and printed).
 //!
 //! `cargo test -p routh-core --test families_sweep` runs 150 bodies;
@@ -17,7 +17,7 @@
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use routh_core::steady::{steady_motions_with, SearchOptions};
+use routh_core::steady::{steady_motion_search, SearchOptions};
 use routh_core::{bifurcation_diagram, ContinuationOptions, Matrix3, Vector3};
 use test_models::HeavyTop;
 
@@ -341,7 +341,7 @@ fn sweep(n: usize, seed: u64) -> Vec<String> {
                     if near { " (next to an event)" } else { "" }
                 ));
             }
-            match steady_motions_with(&case.top, s, &SearchOptions::default()) {
+            match steady_motion_search(&case.top, s, &SearchOptions::default()) {
                 Ok(found) if found.consistent => {
                     f.search_checks += 1;
                     if found.motions.len() != exact {

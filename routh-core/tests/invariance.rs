@@ -1,6 +1,6 @@
 //! Invariance of the analysis (steady motions (31)–(34), stability (62)–(64)) under
 //! transformations of the model whose effect is known exactly, derived below from the Lagrangian.
-//! Each test runs `steady_motions_with` and `classify` on a model and on its transform and
+//! Each test runs `steady_motion_search` and `classify` on a model and on its transform and
 //! compares the counts, the sets of γ (matched to 1e−8), the verdicts, the eigenvalues of the
 //! restricted second variation and the roots of `f₂` with what the transformation predicts.
 //!
@@ -14,14 +14,14 @@
 
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use routh_core::steady::{steady_motions_with, SearchOptions, SearchResult};
+use routh_core::steady::{steady_motion_search, SearchOptions, SearchResult};
 use routh_core::{classify, Complex, Matrix3, StabilityReport, Vector3};
 use test_models::jacobian::match_roots_within;
 use test_models::Gyrostat;
 
 /// The steady motions at `p` and the report of each.
 fn analyse(model: &Gyrostat, p: f64) -> (SearchResult, Vec<StabilityReport>) {
-    let r = steady_motions_with(model, p, &SearchOptions::default()).unwrap();
+    let r = steady_motion_search(model, p, &SearchOptions::default()).unwrap();
     let reports = r
         .motions
         .iter()

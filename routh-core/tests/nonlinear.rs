@@ -7,8 +7,8 @@ use num_dual::{third_derivative, Dual3, Dual64, DualNum};
 
 use routh_core::nonlinear::{Jet, NCOEF};
 use routh_core::{
-    classify, nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearVerdict,
-    Stability, SteadyMotion,
+    classify, nonlinear_stability, nonlinear_stability_from_jet, NonlinearOptions,
+    NonlinearVerdict, Stability, SteadyMotion,
 };
 use test_models::jacobian::{fd_jacobian, match_roots, sleeping_top_roots, steady_state};
 use test_models::Gyrostat;
@@ -216,9 +216,13 @@ fn frequencies_are_the_roots_of_f2_and_the_full_jacobian_eigenvalues() {
     for (model, s, what) in &cases {
         let lin = classify(model, s).unwrap();
         assert_eq!(lin.verdict, Stability::GyroscopicallyStabilized, "{what}");
-        let rep =
-            nonlinear_stability_with(model, s, &gyrostat_r(model), &NonlinearOptions::default())
-                .unwrap();
+        let rep = nonlinear_stability_from_jet(
+            model,
+            s,
+            &gyrostat_r(model),
+            &NonlinearOptions::default(),
+        )
+        .unwrap();
         let mut f2: Vec<f64> = lin.f2_roots.iter().map(|r| r.im.abs()).collect();
         f2.sort_by(f64::total_cmp);
         let [w1, w2] = rep.frequencies;
@@ -262,13 +266,14 @@ fn without_a_tape_the_error_names_the_need() {
 fn linear_verdicts_carry_over() {
     let top = Gyrostat::lagrange_top(2.0, 1.0, 1.0);
     let s = sleeping(&top, 2.0);
-    let rep = nonlinear_stability_with(&top, &s, &gyrostat_r(&top), &Default::default()).unwrap();
+    let rep =
+        nonlinear_stability_from_jet(&top, &s, &gyrostat_r(&top), &Default::default()).unwrap();
     assert_eq!(rep.verdict, NonlinearVerdict::Unstable, "{rep}");
     assert!(rep.frequencies[0].is_nan());
     let top = Gyrostat::heavy_top(Vector3::new(2.0, 2.5, 1.0), Vector3::z(), 1.0, 1.0);
     let hang = SteadyMotion::at(&top, -Vector3::z(), 0.1, true).unwrap();
     let rep =
-        nonlinear_stability_with(&top, &hang, &gyrostat_r(&top), &Default::default()).unwrap();
+        nonlinear_stability_from_jet(&top, &hang, &gyrostat_r(&top), &Default::default()).unwrap();
     assert_eq!(rep.verdict, NonlinearVerdict::SecularlyStable, "{rep}");
     assert_eq!(rep.krein_signs, [1, 1], "{rep}");
 }
@@ -399,7 +404,7 @@ fn normal_form_predicts_frequency_shifts_of_simulations() {
         let p = 5.0;
         let s = sleeping(&model, p);
         let r = gyrostat_r(&model);
-        let rep = nonlinear_stability_with(&model, &s, &r, &Default::default()).unwrap();
+        let rep = nonlinear_stability_from_jet(&model, &s, &r, &Default::default()).unwrap();
         let lnf = routh_core::nonlinear::linear_normal_form(&r, &s.gamma, p).unwrap();
         let [w1, w2] = rep.frequencies;
         let [s1, s2] = rep.krein_signs.map(f64::from);
@@ -443,7 +448,7 @@ fn sleeping_lagrange_top_is_never_called_unstable_above_the_maievskii_bound() {
     for k in 0..60 {
         let p = 2.02 + 0.15 * f64::from(k);
         let s = sleeping(&top, p);
-        let rep = nonlinear_stability_with(&top, &s, &r, &Default::default()).unwrap();
+        let rep = nonlinear_stability_from_jet(&top, &s, &r, &Default::default()).unwrap();
         assert_ne!(rep.verdict, NonlinearVerdict::Unstable, "p = {p}: {rep}");
         assert_ne!(
             rep.verdict,
@@ -456,7 +461,7 @@ fn sleeping_lagrange_top_is_never_called_unstable_above_the_maievskii_bound() {
         (64.0 / 7.0, routh_core::Resonance::OneToThree),
     ] {
         let s = sleeping(&top, f64::sqrt(p2));
-        let rep = nonlinear_stability_with(&top, &s, &r, &Default::default()).unwrap();
+        let rep = nonlinear_stability_from_jet(&top, &s, &r, &Default::default()).unwrap();
         println!("{rep}");
         assert_eq!(rep.resonance, Some(res), "{rep}");
         assert!(rep.resonance_distance < 1e-12, "{rep}");
@@ -479,7 +484,7 @@ fn near_a_one_to_two_resonance_small_perturbations_grow() {
     let r = gyrostat_r(&model);
     let at = |p: f64| {
         let s = routh_core::steady_motion_near(&model, com.normalize(), p).unwrap();
-        let rep = nonlinear_stability_with(&model, &s, &r, &Default::default()).unwrap();
+        let rep = nonlinear_stability_from_jet(&model, &s, &r, &Default::default()).unwrap();
         (s, rep)
     };
     let ratio = |p: f64| {

@@ -597,7 +597,7 @@ fn krein_signatures_of_the_sleeping_top() {
     let top = HeavyTop::lagrange(1.0, 1.25, 1.0);
     // Maievskii p = 2, secular bound p = 2.5.
     let krein = |p: f64| {
-        routh_core::stability::classify_with_krein(
+        routh_core::stability::krein_report(
             &top,
             &sleeping(&top, p),
             &routh_core::ClassifyOptions::default(),

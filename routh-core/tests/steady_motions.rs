@@ -6,8 +6,8 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh_core::{
-    classify, steady::steady_motions_with, steady_motion_near, steady_motions, Lagrangian, Matrix3,
-    RouthError, Routhian, SearchOptions, Stability, SteadyMotion, Vector3,
+    classify, steady::steady_motion_search, steady_motion_near, steady_motions, Lagrangian,
+    Matrix3, RouthError, Routhian, SearchOptions, Stability, SteadyMotion, Vector3,
 };
 use test_models::{Ellipsoid, Gyrostat};
 
@@ -401,7 +401,7 @@ fn search_options_and_errors() {
         ..SearchOptions::default()
     };
     assert!(matches!(
-        steady_motions_with(&top, 1.0, &no_starts),
+        steady_motion_search(&top, 1.0, &no_starts),
         Err(RouthError::InvalidOption { .. })
     ));
     // Few starts still find the two poles of a slow top (U_r has only those critical points).
@@ -409,7 +409,7 @@ fn search_options_and_errors() {
         starts: 20,
         ..SearchOptions::default()
     };
-    let poles = steady_motions_with(&top, 0.1, &few).unwrap().motions;
+    let poles = steady_motion_search(&top, 0.1, &few).unwrap().motions;
     assert!(
         poles.iter().filter(|s| s.isolated).count() == 2,
         "{poles:#?}"

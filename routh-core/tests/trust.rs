@@ -6,7 +6,7 @@
 //! potential U(γ) given by a closure with its gradient and Hessian, so
 //! R(Ω, γ, p) = ½ΩᵀJΩ − U − ½(p − (JΩ)·γ)²/(γᵀJγ) with every derivative in closed form.
 
-use routh_core::steady::{steady_motions_with, SearchResult};
+use routh_core::steady::{steady_motion_search, SearchResult};
 use routh_core::{
     classify, stability::ClassifyOptions, Matrix3, RouthError, SearchOptions, Stability,
     SteadyMotion, Vector3,
@@ -74,7 +74,7 @@ fn theta_grid() -> Vec<f64> {
 }
 
 fn checked(model: &Body, p: f64) -> SearchResult {
-    let r = steady_motions_with(model, p, &SearchOptions::default()).unwrap();
+    let r = steady_motion_search(model, p, &SearchOptions::default()).unwrap();
     for s in &r.motions {
         eprintln!("  {s}");
     }
@@ -426,11 +426,11 @@ fn scaling_the_model_changes_nothing() {
     ];
     for (what, make) in cases {
         let (b1, p1) = make(1.0);
-        let base = steady_motions_with(&b1, p1, &SearchOptions::default()).unwrap();
+        let base = steady_motion_search(&b1, p1, &SearchOptions::default()).unwrap();
 
         for s in [1e9, 1e-9] {
             let (bs, ps) = make(s);
-            let r = steady_motions_with(&bs, ps, &SearchOptions::default()).unwrap();
+            let r = steady_motion_search(&bs, ps, &SearchOptions::default()).unwrap();
             assert_eq!(r.motions.len(), base.motions.len(), "{what}, s = {s}");
             assert_eq!(r.consistent, base.consistent);
             assert_eq!(r.euler_characteristic, base.euler_characteristic);
@@ -467,7 +467,7 @@ fn the_self_check_flags_incomplete_counts() {
         max_iterations: 8,
         ..SearchOptions::default()
     };
-    let r = steady_motions_with(&body, 0.0, &opts).unwrap();
+    let r = steady_motion_search(&body, 0.0, &opts).unwrap();
     assert_eq!(r.motions.len(), 8, "{:#?}", r.motions);
     assert_eq!(r.euler_characteristic, Some(0));
     assert!(!r.consistent);
@@ -480,7 +480,7 @@ fn the_self_check_flags_incomplete_counts() {
             starts,
             ..SearchOptions::default()
         };
-        let r = steady_motions_with(&body, 0.0, &opts).unwrap();
+        let r = steady_motion_search(&body, 0.0, &opts).unwrap();
         let complete = r.motions.len() == 10;
         assert!(
             complete || !r.consistent || r.motions.len() % 2 == 0,
@@ -523,7 +523,7 @@ fn extreme_momenta_change_nothing() {
     let mut verdicts_seen = std::collections::HashSet::new();
     for (a1, c, mgl, p0) in cases {
         let (base_top, base_p) = scaled_lagrange_top(a1, c, mgl, p0, 1.0);
-        let base = steady_motions_with(&base_top, base_p, &SearchOptions::default()).unwrap();
+        let base = steady_motion_search(&base_top, base_p, &SearchOptions::default()).unwrap();
         assert!(base.consistent);
         let base_reports: Vec<_> = base
             .motions
@@ -535,7 +535,7 @@ fn extreme_momenta_change_nothing() {
             let (top, p) = scaled_lagrange_top(a1, c, mgl, p0, s);
             assert!((p / target - 1.0).abs() <= 4.0 * f64::EPSILON);
             let what = format!("A₁ = {a1}, C = {c}, mgl = {mgl}, p₀ = {p0}, p = {p:e}");
-            let r = steady_motions_with(&top, p, &SearchOptions::default())
+            let r = steady_motion_search(&top, p, &SearchOptions::default())
                 .unwrap_or_else(|e| panic!("{what}: {e}"));
             assert_eq!(
                 r.motions.len(),
@@ -629,7 +629,7 @@ fn a_lagrange_top_at_p_1e150_in_ordinary_units() {
     ] {
         let what = format!("A₁ = {a1}, C = {c}, p = {p:e}");
         let top = test_models::HeavyTop::lagrange(a1, c, mgl);
-        let r = steady_motions_with(&top, p, &SearchOptions::default())
+        let r = steady_motion_search(&top, p, &SearchOptions::default())
             .unwrap_or_else(|e| panic!("{what}: {e}"));
         assert_eq!(r.motions.len(), 3, "{what}: {:#?}", r.motions);
         assert!(r.consistent && r.euler_characteristic == Some(2), "{what}");
@@ -785,7 +785,7 @@ fn a_higher_order_point_with_a_radial_hessian_is_one_point() {
             )
         });
         let body = Body::diag(1.0, 1.0, 1.0, u);
-        let r = steady_motions_with(&body, 0.0, &SearchOptions::default()).unwrap();
+        let r = steady_motion_search(&body, 0.0, &SearchOptions::default()).unwrap();
         assert_eq!(r.motions.len(), 2, "n = {n}: {:?}", r.motions.len());
         assert!(r.consistent, "n = {n}");
         for pole in [Vector3::z(), -Vector3::z()] {

@@ -17,7 +17,7 @@
 //!   zero test relative to the raw derivatives `max(|∇U_r|, ‖∂²U_r/∂γ²‖)` (the diagram's former
 //!   `|eig| ≤ 1e−6` on `K` divided by that) took every steady motion for a degenerate one there.
 
-use routh_core::steady::{steady_motions_with, SearchOptions};
+use routh_core::steady::{steady_motion_search, SearchOptions};
 use routh_core::{
     bifurcation_diagram, classify, BifurcationDiagram, ContinuationOptions, EventKind, Matrix3,
     Stability, Vector3,
@@ -136,7 +136,7 @@ fn scaling_the_lagrangian_changes_no_count_or_verdict() {
     for _ in 0..3 {
         let body = Gyrostat::random(&mut rng);
         for p in [0.5, 4.0, 12.0] {
-            let base = steady_motions_with(&body, p, &SearchOptions::default()).unwrap();
+            let base = steady_motion_search(&body, p, &SearchOptions::default()).unwrap();
             let verdicts = |m: &Gyrostat, r: &routh_core::steady::SearchResult| {
                 let mut v: Vec<_> = r
                     .motions
@@ -155,7 +155,7 @@ fn scaling_the_lagrangian_changes_no_count_or_verdict() {
                     g: c * body.g,
                     ..body.clone()
                 };
-                let r = steady_motions_with(&scaled, c * p, &SearchOptions::default()).unwrap();
+                let r = steady_motion_search(&scaled, c * p, &SearchOptions::default()).unwrap();
                 let what = format!("p = {p}, c = {c}");
                 assert_eq!(r.motions.len(), base.motions.len(), "{what}");
                 assert_eq!(r.consistent, base.consistent, "{what}");

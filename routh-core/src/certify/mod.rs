@@ -53,7 +53,7 @@ use std::time::{Duration, Instant};
 /// The smallest [`CertifyOptions::min_width`] accepted: a box is split down to
 /// `min_width·1e-6` near a regular zero, and the chart coordinates (up to 1, resolution
 /// 2.2e-16) cannot split a box much narrower than 1e-15.
-pub const MIN_WIDTH: f64 = 1e-9;
+pub(crate) const MIN_WIDTH: f64 = 1e-9;
 
 /// Options of [`steady_motions_certified`].
 #[derive(Debug, Clone, PartialEq)]
@@ -62,7 +62,7 @@ pub struct CertifyOptions {
     /// Boxes per side of each face of the cube at the start (default 4).
     pub initial_split: usize,
     /// Smallest side of a box in chart coordinates before it is left undecided (default 1e-3;
-    /// each face has side 2; at least [`MIN_WIDTH`], 1e-9: a smaller one is refused).
+    /// each face has side 2; at least 1e-9: a smaller one is refused).
     pub min_width: f64,
     /// Budget of boxes examined in all; what is left when it runs out is undecided
     /// (default 400 000).

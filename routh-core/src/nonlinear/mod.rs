@@ -187,6 +187,7 @@ impl fmt::Display for NonlinearReport {
 /// The reduced Hamiltonian at a steady motion and its linear symplectic normalisation
 /// (docs/method.md §10.1–11.2), for analyses beyond the verdict (e.g. to set up a
 /// small-amplitude simulation in normal coordinates).
+#[doc(hidden)]
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LinearNormalForm {
@@ -203,6 +204,7 @@ pub struct LinearNormalForm {
 }
 
 /// [`LinearNormalForm`] at `(γ₀, p_ψ)`; `None` unless `H₂` has two distinct real frequencies.
+#[doc(hidden)]
 pub fn linear_normal_form<R: RouthianJet + ?Sized>(
     r: &R,
     gamma0: &nalgebra::Vector3<f64>,
@@ -223,7 +225,7 @@ pub fn linear_normal_form<R: RouthianJet + ?Sized>(
 /// The nonlinear stability of a steady motion, the Routh function's jets taken from the model.
 ///
 /// Needs the model's Routh function as an expression tape; until the model provides it, this
-/// returns [`RouthError::InvalidModel`]. Use [`nonlinear_stability_with`] with a
+/// returns [`RouthError::InvalidModel`]. Use [`nonlinear_stability_from_jet`] with a
 /// [`RouthianJet`] to supply `R` yourself.
 pub fn nonlinear_stability<M: Routhian>(
     model: &M,
@@ -236,7 +238,7 @@ pub fn nonlinear_stability<M: Routhian>(
             what: "Routh function tape",
             reason:
                 "the nonlinear test needs a derived or run-time model (R as an expression \
-                     tape); for a hand-written model use nonlinear_stability_with and a RouthianJet"
+                     tape); for a hand-written model use nonlinear_stability_from_jet and a RouthianJet"
                     .into(),
         });
     };
@@ -245,7 +247,7 @@ pub fn nonlinear_stability<M: Routhian>(
     let r = |big_omega: &[Jet; 3], gamma: &[Jet; 3], p_psi: f64| {
         tape.routhian(big_omega, gamma, Jet::constant(p_psi))
     };
-    nonlinear_stability_with(model, steady, &r, opts)
+    nonlinear_stability_from_jet(model, steady, &r, opts)
 }
 
 /// [`nonlinear_stability`] with the Routh function evaluated at jets by `r`, which must be the
@@ -253,7 +255,7 @@ pub fn nonlinear_stability<M: Routhian>(
 ///
 /// Errors: those of [`classify_with`], [`RouthError::InvalidOption`] for a tolerance outside
 /// `(0, 1)`, [`RouthError::NonFiniteModel`] when `R`'s jets are not finite.
-pub fn nonlinear_stability_with<M: Routhian, R: RouthianJet + ?Sized>(
+pub fn nonlinear_stability_from_jet<M: Routhian, R: RouthianJet + ?Sized>(
     model: &M,
     steady: &SteadyMotion,
     r: &R,
@@ -367,4 +369,17 @@ pub fn nonlinear_stability_with<M: Routhian, R: RouthianJet + ?Sized>(
     report.verdict = v;
     report.reason = reason;
     Ok(report)
+}
+
+/// The former name of [`nonlinear_stability_from_jet`] (a `_with` form takes options, and
+/// nothing else).
+#[deprecated(note = "renamed `nonlinear_stability_from_jet` (same arguments)")]
+#[doc(hidden)]
+pub fn nonlinear_stability_with<M: Routhian, R: RouthianJet + ?Sized>(
+    model: &M,
+    steady: &SteadyMotion,
+    r: &R,
+    opts: &NonlinearOptions,
+) -> Result<NonlinearReport, RouthError> {
+    nonlinear_stability_from_jet(model, steady, r, opts)
 }

@@ -37,8 +37,7 @@ pub use doubling::period_doubled_family;
 pub use family::{continue_orbit, lyapunov_family};
 pub use flow::orbit_path;
 pub use section::{
-    orbit_crossings, poincare_section, section_starts, PoincareSection, SectionOptions,
-    SectionOrbit,
+    orbit_crossings, poincare_section, PoincareSection, SectionOptions, SectionOrbit,
 };
 pub use shoot::periodic_orbit;
 

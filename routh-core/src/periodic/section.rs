@@ -154,7 +154,7 @@ fn coords<M: Lagrangian + ?Sized>(
 /// States on the section at `(p_ψ, E)`: γ on the great circle `n^⊥` at the angle θ, `ω·n = α`,
 /// and `ω = αn + uγ + v(n × γ)` with `u` from `p_ψ` (linear) and `v > 0` from `E` (the larger
 /// root of a quadratic), spread over a grid of `(θ, α)` and thinned to at most `count`.
-pub fn section_starts<M: Lagrangian + ?Sized>(
+pub(crate) fn section_starts<M: Lagrangian + ?Sized>(
     model: &M,
     p_psi: f64,
     energy: f64,

@@ -17,7 +17,7 @@ use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
 
 /// `R(0) = R_x(θ₀) R_z(φ₀)` with `γ₀ = (sin θ₀ sin φ₀, sin θ₀ cos φ₀, cos θ₀)`: the attitude
 /// with Euler angle ψ = 0 whose `Rᵀe₃` is `γ₀` (normalised).
-pub fn initial_attitude(gamma0: &Vector3<f64>) -> UnitQuaternion<f64> {
+pub(crate) fn initial_attitude(gamma0: &Vector3<f64>) -> UnitQuaternion<f64> {
     let g = gamma0.normalize();
     let theta = g.xy().norm().atan2(g.z);
     let phi = g.x.atan2(g.y);
@@ -26,7 +26,7 @@ pub fn initial_attitude(gamma0: &Vector3<f64>) -> UnitQuaternion<f64> {
 }
 
 /// `R_z(ψ)`, the rotation by ψ about the vertical.
-pub fn about_vertical(psi: f64) -> UnitQuaternion<f64> {
+pub(crate) fn about_vertical(psi: f64) -> UnitQuaternion<f64> {
     UnitQuaternion::from_axis_angle(&Vector3::z_axis(), psi)
 }
 

@@ -203,7 +203,7 @@ pub struct Trajectory {
     pub gamma_norm_sq: Vec<f64>,
     /// The attitude `R` (body → space) at each point when [`SimOptions::attitude`] is set,
     /// empty otherwise: `γ = Rᵀe₃`, `Ṙ = R[ω]×`, and `R(0)` the attitude with Euler angle
-    /// `ψ(0) = 0` ([`attitude::initial_attitude`]).
+    /// `ψ(0) = 0`: `R(0) = R_x(θ₀) R_z(φ₀)` with `γ₀ = (sin θ₀ sin φ₀, sin θ₀ cos φ₀, cos θ₀)`.
     pub attitude: Vec<UnitQuaternion<f64>>,
     /// Work counters.
     pub stats: SimStats,
@@ -236,7 +236,7 @@ pub struct ReducedTrajectory {
     /// The attitude `R` (body → space) at each point when [`SimOptions::attitude`] is set,
     /// empty otherwise, reconstructed by (15): `R = R_z(ψ) R_Ω` with `R_Ω` the attitude of the
     /// body relative to the frame rotating about the vertical (`Ṙ_Ω = R_Ω[Ω]×`,
-    /// `R_Ω(0)` = [`attitude::initial_attitude`]`(γ₀)`) and ψ the angle of [`psi`](Self::psi);
+    /// `R_Ω(0)` the attitude with Euler angle ψ = 0 whose `Rᵀe₃` is `γ₀`) and ψ the angle of [`psi`](Self::psi);
     /// then `Ṙ = R[Ω + ψ̇γ]× = R[ω]×` and `γ = Rᵀe₃`.
     ///
     /// The gauge angle ψ (errata E4) is not the Euler angle ψ of [`euler_angles`](Self::euler_angles):

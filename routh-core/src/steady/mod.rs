@@ -89,7 +89,7 @@ impl SteadyMotion {
 /// grids it sizes, below this module.
 pub(crate) use crate::sphere::DEFAULT_STARTS;
 
-/// Options of the global search of [`steady_motions_with`].
+/// Options of the global search of [`steady_motion_search`].
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SearchOptions {
@@ -186,7 +186,7 @@ impl SearchOptions {
 /// fails, the whole search is repeated on a grid four times finer. (A pair of critical points
 /// born together in a fold and both missed leaves χ unchanged: such a pair, closer than the grid
 /// spacing to each other and to any other critical point, can be missed; use
-/// [`steady_motions_with`] with more starts near bifurcations.)
+/// [`steady_motion_search`] with more starts near bifurcations.)
 ///
 /// # Tolerances (all local, invariant under scaling the model and under adding `c|γ|²` to `U`)
 ///
@@ -328,7 +328,7 @@ impl SearchOptions {
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
 pub fn steady_motions<M: Routhian>(model: &M, p_psi: f64) -> Result<Vec<SteadyMotion>, RouthError> {
-    Ok(steady_motions_with(model, p_psi, &SearchOptions::default())?.motions)
+    Ok(steady_motion_search(model, p_psi, &SearchOptions::default())?.motions)
 }
 
 /// [`steady_motions`] with explicit [`SearchOptions`], and with the search's self-check: the
@@ -340,17 +340,17 @@ pub fn steady_motions<M: Routhian>(model: &M, p_psi: f64) -> Result<Vec<SteadyMo
 /// iterations.
 ///
 /// ```
-/// use routh_core::steady::{steady_motions_with, SearchOptions};
+/// use routh_core::steady::{steady_motion_search, SearchOptions};
 /// use routh_core::Vector3;
 /// # use test_models::Gyrostat;
 /// // A heavy asymmetric top, centre of mass on its third axis: the Morse relation closes.
 /// let top = Gyrostat::heavy_top(Vector3::new(1.0, 2.0, 3.0), Vector3::z(), 1.0, 1.0);
-/// let found = steady_motions_with(&top, 0.5, &SearchOptions::default())?;
+/// let found = steady_motion_search(&top, 0.5, &SearchOptions::default())?;
 /// assert!(found.consistent);
 /// assert_eq!(found.euler_characteristic, Some(2));
 /// # Ok::<(), routh_core::RouthError>(())
 /// ```
-pub fn steady_motions_with<M: Routhian>(
+pub fn steady_motion_search<M: Routhian>(
     model: &M,
     p_psi: f64,
     opts: &SearchOptions,
@@ -391,23 +391,37 @@ pub struct SearchResult {
     pub consistent: bool,
 }
 
-/// [`steady_motions_with`] at the default options.
-#[deprecated(note = "use `steady_motions_with(model, p_psi, &SearchOptions::default())`")]
+/// The former name of [`steady_motion_search`], renamed because a `_with` form takes options
+/// and returns what the plain function returns, and this one returns more.
+#[deprecated(note = "renamed `steady_motion_search` (same arguments, same `SearchResult`)")]
+#[doc(hidden)]
+pub fn steady_motions_with<M: Routhian>(
+    model: &M,
+    p_psi: f64,
+    opts: &SearchOptions,
+) -> Result<SearchResult, RouthError> {
+    steady_motion_search(model, p_psi, opts)
+}
+
+/// [`steady_motion_search`] at the default options.
+#[deprecated(note = "use `steady_motion_search(model, p_psi, &SearchOptions::default())`")]
+#[doc(hidden)]
 pub fn steady_motions_checked<M: Routhian>(
     model: &M,
     p_psi: f64,
 ) -> Result<SearchResult, RouthError> {
-    steady_motions_with(model, p_psi, &SearchOptions::default())
+    steady_motion_search(model, p_psi, &SearchOptions::default())
 }
 
-/// The former name of [`steady_motions_with`].
-#[deprecated(note = "use `steady_motions_with`, which now returns the `SearchResult`")]
+/// The former name of [`steady_motion_search`].
+#[deprecated(note = "use `steady_motion_search`, which returns the `SearchResult`")]
+#[doc(hidden)]
 pub fn steady_motions_checked_with<M: Routhian>(
     model: &M,
     p_psi: f64,
     opts: &SearchOptions,
 ) -> Result<SearchResult, RouthError> {
-    steady_motions_with(model, p_psi, opts)
+    steady_motion_search(model, p_psi, opts)
 }
 
 /// The steady motion nearest (in the sense of Newton's method on the sphere) to the guess

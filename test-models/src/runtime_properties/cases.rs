@@ -182,9 +182,9 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
         9 => {
             let (p, o) = (scalar(rng), search_options(rng));
             h.check(
-                "steady::steady_motions_with",
+                "steady::steady_motion_search",
                 || format!("{model:?}, p_psi = {p:e}, {o:?}"),
-                || steady::steady_motions_with(model, p, &o),
+                || steady::steady_motion_search(model, p, &o),
                 |r| r.motions.iter().find_map(steady_defect),
             );
         }
@@ -282,9 +282,9 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
                 Err(_) => return,
             };
             h.check(
-                "stability::classify_with_krein",
+                "stability::krein_report",
                 || format!("{model:?}, {steady:?}, {o:?}"),
-                || stability::classify_with_krein(model, &steady, &o),
+                || stability::krein_report(model, &steady, &o),
                 |k| report_defect(&k.report),
             );
         }
@@ -367,7 +367,7 @@ pub(crate) fn run_one(h: &mut Harness, part: &Part<'_>, seed: u64, case: u64) ->
         6_900..=7_799 => 6,  // steady_motion_near
         7_800..=8_599 => 7,  // classify
         8_600..=9_399 => 8,  // classify_with
-        9_400..=9_899 => 9,  // steady_motions_with (≤ 20 starts)
+        9_400..=9_899 => 9,  // steady_motion_search (≤ 20 starts)
         9_900..=9_919 => 10, // steady_motions (default search)
         9_920..=9_939 => 11, // steady_motions_checked (default search)
         9_940..=9_959 => 12, // bifurcation_diagram
@@ -378,7 +378,7 @@ pub(crate) fn run_one(h: &mut Harness, part: &Part<'_>, seed: u64, case: u64) ->
     let pick = if pick <= 1 && rng.gen_bool(0.08) {
         match rng.gen_range(0..100u32) {
             0..=59 => 15,  // steady_motions_certified
-            60..=89 => 16, // classify_with_krein
+            60..=89 => 16, // krein_report
             90..=93 => 17, // bifurcation_diagram_checked
             94..=97 => 18, // steady_motions_checked_with
             _ => 19,       // stability_atlas_parallel

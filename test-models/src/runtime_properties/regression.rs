@@ -91,7 +91,7 @@ pub(crate) fn regression_cases(h: &mut Harness) {
         );
     }
 
-    // steady_motions_with: a gyrostat with a coupling of 5e5 (its amended potential vanishes
+    // steady_motion_search: a gyrostat with a coupling of 5e5 (its amended potential vanishes
     // on a curve) and a loose gradient_tol: 12 starts gave 5436 "steady motions" in 2–3 s,
     // 100 starts 16 501 in 11 s, 400 starts minutes (probes around every point found). Now at
     // most 64 probe centres: well within the call budget.
@@ -134,9 +134,9 @@ pub(crate) fn regression_cases(h: &mut Harness) {
         zero_eigenvalue_tol: 2.935245170938167e-9,
     };
     h.check(
-        "regression: steady_motions_with, probes of a curve",
+        "regression: steady_motion_search, probes of a curve",
         || format!("{gyro:?}, {o:?}"),
-        || steady::steady_motions_with(&gyro, 1.1865574957550809e4, &o),
+        || steady::steady_motion_search(&gyro, 1.1865574957550809e4, &o),
         |r| r.motions.iter().find_map(steady_defect),
     );
 }

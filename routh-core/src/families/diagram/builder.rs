@@ -12,7 +12,7 @@ use crate::families::{
 };
 use crate::model::Routhian;
 use crate::stability::Stability;
-use crate::steady::steady_motions_with;
+use crate::steady::steady_motion_search;
 
 /// A branch point found on a branch, where new branches may start.
 #[derive(Debug, Clone)]
@@ -130,7 +130,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     /// branch (or the search failed to converge).
     fn seed_at(&mut self, s: f64) -> Result<bool, RouthError> {
         let (m, p) = member(self.family, s)?;
-        let motions = match steady_motions_with(&m, p, &self.opts.search).map(|r| r.motions) {
+        let motions = match steady_motion_search(&m, p, &self.opts.search).map(|r| r.motions) {
             Ok(v) => v,
             Err(RouthError::NoConvergence { .. }) => return Ok(false),
             Err(e) => return Err(at(s, e)),
@@ -390,7 +390,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 })
                 .sum();
             let (m, p) = member(self.family, s)?;
-            let found = steady_motions_with(&m, p, &self.opts.search)
+            let found = steady_motion_search(&m, p, &self.opts.search)
                 .map_err(|e| at(s, e))?
                 .motions
                 .len();

@@ -64,7 +64,7 @@ impl CheckedDiagram {
 
 /// Every branch of steady motions of `family` over `range`, with its events (the contract of
 /// the [`families`](super) module). Branches are seeded by global searches
-/// ([`steady_motions_with`]) at [`ContinuationOptions::seeds`] values of `s`, followed by
+/// ([`steady_motion_search`]) at [`ContinuationOptions::seeds`] values of `s`, followed by
 /// pseudo-arclength continuation through folds, and switched at branch points (a pitchfork, or
 /// the birth of a circle of steady motions of a symmetric body, which becomes a branch with
 /// `isolated: false`). Events are located by solving their defining equation to
@@ -92,7 +92,7 @@ impl CheckedDiagram {
 /// - [`RouthError::AtParameter`] when the family returns an invalid model (e.g. `J` not positive
 ///   definite) or a non-finite `p_ψ` at some `s`.
 ///
-/// [`steady_motions_with`]: crate::steady::steady_motions_with
+/// [`steady_motion_search`]: crate::steady::steady_motion_search
 ///
 /// ```
 /// use routh_core::{bifurcation_diagram, ContinuationOptions, EventKind};

@@ -18,7 +18,7 @@ use crate::families::{BifurcationDiagram, BranchEvent, ContinuationOptions, Even
 use crate::model::Routhian;
 use crate::nonlinear::Jet;
 use crate::nonlinear::{
-    nonlinear_stability, nonlinear_stability_with, NonlinearOptions, NonlinearReport,
+    nonlinear_stability, nonlinear_stability_from_jet, NonlinearOptions, NonlinearReport,
 };
 use crate::nonlinear::{NonlinearVerdict, Resonance, RouthianJet};
 use crate::stability::{ClassifyOptions, Stability};
@@ -304,7 +304,7 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
 /// ones); for derived and run-time models [`ContinuationOptions::nonlinear`] adds the same events
 /// to the diagram itself.
 ///
-/// Errors: those of [`nonlinear_stability_with`] at a branch point, [`RouthError::InvalidOption`]
+/// Errors: those of [`nonlinear_stability_from_jet`] at a branch point, [`RouthError::InvalidOption`]
 /// for `s_tol` outside `(0, 1)`.
 pub fn nonlinear_events<M, F, J>(
     family: F,
@@ -327,7 +327,7 @@ where
     opts.validate()?;
     let analyse = |model: &M, steady: &SteadyMotion| {
         let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(model, w, g, p);
-        nonlinear_stability_with(model, steady, &jets as &dyn RouthianJet, opts)
+        nonlinear_stability_from_jet(model, steady, &jets as &dyn RouthianJet, opts)
     };
     branch_events(&family, &analyse, diagram, s_tol)
 }

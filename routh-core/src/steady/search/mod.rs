@@ -75,7 +75,7 @@ pub(super) struct Outcome {
     pub consistent: bool,
 }
 
-/// The global search of [`steady_motions_with`](super::steady_motions_with).
+/// The global search of [`steady_motion_search`](super::steady_motion_search).
 pub(super) fn global<M: Routhian>(
     model: &M,
     p_psi: f64,
