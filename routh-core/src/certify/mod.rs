@@ -53,7 +53,8 @@ use std::time::{Duration, Instant};
 /// The smallest [`CertifyOptions::min_width`] accepted: a box is split down to
 /// `min_width·1e-6` near a regular zero, and the chart coordinates (up to 1, resolution
 /// 2.2e-16) cannot split a box much narrower than 1e-15.
-pub(crate) const MIN_WIDTH: f64 = 1e-9;
+#[doc(hidden)]
+pub const MIN_WIDTH: f64 = 1e-9;
 
 /// Options of [`steady_motions_certified`].
 #[derive(Debug, Clone, PartialEq)]
