@@ -21,21 +21,31 @@ macro_rules! export_methods {
         impl $class {
             /// The result as a pandas DataFrame, columns as in docs/python.md ("Export"). Raises
             /// ImportError when pandas is not installed.
+            ///
+            /// >>> d = top.bifurcation_diagram((0.0, 5.0))
+            /// >>> df = d.to_pandas()
+            /// >>> events = df[df.kind != "point"]
             fn to_pandas(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
                 helper(slf.py(), "routh._export", "to_pandas", (slf,))
             }
             /// Writes `to_pandas()` to the CSV file `path`, whole or not at all (a temporary file
             /// renamed). Floats are written so that `pandas.read_csv(path,
-            /// float_precision="round_trip")` gives the same numbers.
+            /// float_precision="round_trip")` gives the same numbers (pandas ≥ 3 by default).
+            ///
+            /// >>> top.classify(top.steady_motions(3.0)[0]).to_csv("report.csv")
             fn to_csv(slf: &Bound<'_, Self>, path: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
                 helper(slf.py(), "routh._export", "to_csv", (slf, path))
             }
             /// The result as JSON text; `from_json` makes it again with the same numbers (NaN and
             /// ±∞ are the strings "NaN", "Infinity", "-Infinity").
+            ///
+            /// >>> text = top.steady_motions(3.0)[0].to_json()
             fn to_json(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
                 helper(slf.py(), "routh._export", "to_json", (slf,))
             }
             /// The result of `to_json()` made again (raises RouthError for text that is not one).
+            ///
+            /// >>> m = routh.SteadyMotion.from_json(text)
             #[classmethod]
             fn from_json(cls: &Bound<'_, PyType>, text: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
                 helper(cls.py(), "routh._export", "from_json", (text, cls))
