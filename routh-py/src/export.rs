@@ -29,8 +29,8 @@ macro_rules! export_methods {
                 helper(slf.py(), "routh._export", "to_pandas", (slf,))
             }
             /// Writes `to_pandas()` to the CSV file `path`, whole or not at all (a temporary file
-            /// renamed). Floats are written so that `pandas.read_csv(path,
-            /// float_precision="round_trip")` gives the same numbers (pandas ≥ 3 by default).
+            /// renamed); an error names `path`. Floats are written so that `pandas.read_csv(path)`
+            /// gives the same numbers (on pandas < 3 pass `float_precision="round_trip"`).
             ///
             /// >>> top.classify(top.steady_motions(3.0)[0]).to_csv("report.csv")
             fn to_csv(slf: &Bound<'_, Self>, path: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {

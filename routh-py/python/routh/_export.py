@@ -23,8 +23,8 @@ sign and payload bits are not kept). The text is strict JSON (RFC 8259).
 DataFrames (pandas is optional: ``to_pandas`` and ``to_csv`` raise ImportError without it); the
 columns are listed in docs/python.md ("Export"). ``to_csv`` writes the DataFrame without its
 index to a temporary file beside ``path`` and renames it, so the file is whole or absent; floats
-are written at full precision (``pandas.read_csv(path, float_precision="round_trip")`` reads the
-same numbers; NaN is an empty cell).
+are written in Python's shortest round-trip form, so ``pandas.read_csv(path)`` reads the same
+numbers (pandas < 3: pass ``float_precision="round_trip"``); NaN is an empty cell.
 
 >>> import routh
 >>> top = routh.Model(
