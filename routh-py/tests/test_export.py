@@ -450,3 +450,14 @@ def test_rust_names_and_their_aliases_agree(top):
     for old, new in (("load", "from_file"), ("simulate", "simulate_full"), ("certify", "steady_motions_certified")):
         assert f"Alias of `Model.{new}`" in " ".join(getattr(routh.Model, old).__doc__.split())
         assert f"`{old}` is an alias" in " ".join(getattr(routh.Model, new).__doc__.split())
+
+
+def test_the_examples_of_the_export_modules_run():
+    import doctest
+
+    import routh._export
+    import routh._frames
+
+    for module in (routh._export, routh._frames):
+        result = doctest.testmod(module)
+        assert result.attempted > 0 and result.failed == 0, module.__name__
