@@ -34,8 +34,8 @@ for e in d.events:
 print("U_r =", top.latex().amended_potential)
 
 # A fast top released with a small transverse spin: its apex loops (Goldstein §5.7).
-tr = top.simulate([0.0, 0.3, 5.0], [0.6, 0.0, 0.8], 10.0, attitude=True,
-                  times=np.linspace(0.0, 10.0, 2001))
+tr = top.simulate_full([0.0, 0.3, 5.0], [0.6, 0.0, 0.8], 10.0, attitude=True,
+                       times=np.linspace(0.0, 10.0, 2001))
 psi, theta, _ = tr.euler_angles().T
 print(f"nutation between {np.degrees(theta.min()):.2f} and {np.degrees(theta.max()):.2f} deg, "
       f"precession {np.degrees(psi[-1] - psi[0]):.1f} deg in t = 10, "

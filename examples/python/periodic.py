@@ -22,7 +22,7 @@ out = sys.argv[1] if len(sys.argv) > 1 else "."
 os.makedirs(out, exist_ok=True)
 
 # Principal moments (1, 3, 6) about the fixed point, centre of mass off the axes.
-body = routh.Model.load(os.path.join(here, "..", "models", "asymmetric_top.toml"))
+body = routh.Model.from_file(os.path.join(here, "..", "models", "asymmetric_top.toml"))
 hanging = min(body.steady_motions(0.0), key=lambda s: s.energy)
 print(f"hanging position: gamma = {hanging.gamma.round(6)}, E = {hanging.energy:.6f}")
 

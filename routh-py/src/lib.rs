@@ -1,8 +1,8 @@
 //! `routh._routh`: the compiled half of the Python package `routh` (docs/python.md).
 //!
 //! Every analysis of `routh` is exposed on the run-time [`routh::Model`]: steady motions (paper
-//! (45)–(46)), their classification (section 4–5, errata E5/E8), bifurcation diagrams and
-//! stability atlases of families, simulation of the full (1)–(2) and reduced (39) equations, and
+//! (33)), their classification (section 4–5, errata E5/E8), bifurcation diagrams and
+//! stability atlases of families, simulation of the full (8) and reduced (13) equations, and
 //! certified enumeration, and periodic orbits (relative periodic orbits, their Lyapunov families,
 //! Floquet stability and Poincaré sections). Vectors go in and out as numpy arrays; errors become the Python
 //! exceptions `routh.RouthError` and `routh.ModelError`; long work releases the GIL.
@@ -11,7 +11,9 @@
 
 #![forbid(unsafe_code)]
 
+mod aliases;
 mod convert;
+mod export;
 mod family;
 mod guard;
 mod latex;

@@ -97,11 +97,12 @@ impl Model {
         Ok(Model::wrap(m))
     }
 
-    /// A model from a TOML file (see `from_toml`).
+    /// A model from a TOML file (see `from_toml`); the Rust `Model::from_file`. `load` is an
+    /// alias.
     ///
-    /// >>> gyrostat = routh.Model.load("examples/models/gyrostat.toml")
+    /// >>> gyrostat = routh.Model.from_file("examples/models/gyrostat.toml")
     #[staticmethod]
-    fn load(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Model> {
+    pub(crate) fn from_file(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Model> {
         let m =
             detached(py, move || routh::Model::from_file(&path))?.map_err(|e| model_err(py, &e))?;
         Ok(Model::wrap(m))
@@ -177,7 +178,7 @@ impl Model {
         Ok(self.get()?.lagrangian_text().to_string())
     }
 
-    /// The amended potential U_r(γ, p_ψ) (42) at a unit vertical `gamma` (| |γ| − 1 | ≤ 1e-8,
+    /// The amended potential U_r(γ, p_ψ) (34) at a unit vertical `gamma` (| |γ| − 1 | ≤ 1e-8,
     /// the tolerance of `simulate` and `classify`). Raises `RouthError` for a non-finite input
     /// (kind "NonFinite"), a γ off the unit sphere (kind "NonUnitGamma") or where the formula
     /// has no finite value (kind "NonFiniteModel").
@@ -222,7 +223,7 @@ impl Model {
         Ok(u)
     }
 
-    /// The steady motions at cyclic momentum `p_psi` (paper (45)–(46)): the critical points of
+    /// The steady motions at cyclic momentum `p_psi` (paper (33)): the critical points of
     /// U_r on the sphere |γ| = 1, as a list of `SteadyMotion`.
     ///
     /// >>> [m.gamma for m in top.steady_motions(3.0)]
@@ -367,19 +368,19 @@ impl Model {
         Diagram::new(py, &d?.map_err(|e| routh_err(py, &e))?)
     }
 
-    /// Integrate the full equations (1)–(2) from (ω₀, γ₀) to `t_end` (DOP853, the Rust
-    /// `SimOptions` defaults). `times`: record exactly at these times (dense output) instead of
+    /// Integrate the full equations (8) from (ω₀, γ₀) to `t_end` (DOP853, the Rust
+    /// `SimOptions` defaults); the Rust `simulate_full`. `simulate` is an alias. `times`: record exactly at these times (dense output) instead of
     /// at every step; `attitude=True`: also integrate the attitude (`tr.attitude`, quaternions
     /// (x, y, z, w), `tr.euler_angles()`, `tr.plot_apex()`).
     ///
-    /// >>> tr = top.simulate([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0, attitude=True,
-    /// ...                   times=np.linspace(0, 10, 2001))
+    /// >>> tr = top.simulate_full([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0, attitude=True,
+    /// ...                        times=np.linspace(0, 10, 2001))
     /// >>> tr.omega.shape
     /// (2001, 3)
     #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None,
                         attitude=false, times=None))]
     #[allow(clippy::too_many_arguments)]
-    fn simulate(
+    pub(crate) fn simulate_full(
         &self,
         py: Python<'_>,
         omega0: &Bound<'_, PyAny>,
@@ -401,7 +402,7 @@ impl Model {
         Ok(Trajectory::new(py, &t))
     }
 
-    /// Integrate the reduced equations (39) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`, and
+    /// Integrate the reduced equations (13) from (Ω₀, γ₀) at momentum `p_psi` to `t_end`, and
     /// reconstruct ψ, ψ̇, ω = Ω + ψ̇γ (and the attitude with `attitude=True`, by (15)).
     /// Keywords as `simulate`.
     ///
@@ -437,16 +438,17 @@ impl Model {
     }
 
     /// A certified enumeration of the steady motions at `p_psi` (interval arithmetic): when
-    /// `c.complete`, `c.motions` are all the steady motions, proven. Keywords default to the
+    /// `c.complete`, `c.motions` are all the steady motions, proven; the Rust
+    /// `steady_motions_certified`. `certify` is an alias. Keywords default to the
     /// Rust `CertifyOptions::default()` (initial_split 4, min_width 1e-3, max_boxes 400 000,
     /// refine_iterations 30); what is left when `max_boxes` runs out is `c.undecided`.
     ///
-    /// >>> c = top.certify(2.2)
+    /// >>> c = top.steady_motions_certified(2.2)
     /// >>> c.complete, len(c.motions)
     /// (True, 2)
     #[pyo3(signature = (p_psi, *, initial_split=None, min_width=None, max_boxes=None,
                         refine_iterations=None))]
-    fn certify(
+    pub(crate) fn steady_motions_certified(
         &self,
         py: Python<'_>,
         p_psi: Real,

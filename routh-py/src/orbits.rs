@@ -79,10 +79,6 @@ impl PeriodicOrbit {
             self.period, self.energy, self.p_psi, self.precession, self.stability_index, self.stability
         )
     }
-    /// The orbit as JSON (the Rust serde form; numbers round-trip).
-    fn to_json(&self) -> PyResult<String> {
-        serde_json::to_string(&self.inner).map_err(|e| crate::RouthError::new_err(e.to_string()))
-    }
 }
 
 /// A fold, branch point or period doubling of a family: `kind` ("fold", "branch_point",
@@ -217,10 +213,6 @@ impl OrbitFamily {
             "plot_orbit_family",
             (slf, ax, quantity),
         )
-    }
-    /// The family as JSON (the Rust serde form; numbers round-trip).
-    fn to_json(&self) -> PyResult<String> {
-        serde_json::to_string(&self.inner).map_err(|e| crate::RouthError::new_err(e.to_string()))
     }
 }
 

@@ -226,11 +226,20 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
             .into_py_any(py)
         }
         "Branch" => {
-            let (s, gamma, verdicts, isolated): (Py<PyAny>, Py<PyAny>, Vec<String>, bool) =
-                state.extract()?;
+            type State = (
+                Py<PyAny>,
+                Py<PyAny>,
+                Py<PyAny>,
+                Py<PyAny>,
+                Vec<String>,
+                bool,
+            );
+            let (s, gamma, p_psi, energy, verdicts, isolated): State = state.extract()?;
             Branch {
                 s,
                 gamma,
+                p_psi,
+                energy,
                 verdicts: names(verdicts)?,
                 isolated,
             }
@@ -266,8 +275,20 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
             .into_py_any(py)
         }
         "Diagram" => {
-            let (branches, events): (Vec<Py<Branch>>, Vec<Py<Event>>) = state.extract()?;
-            Diagram { branches, events }.into_py_any(py)
+            type State = (
+                Vec<Py<Branch>>,
+                Vec<Py<Event>>,
+                Option<String>,
+                Vec<(f64, usize, usize)>,
+            );
+            let (branches, events, stop, checks): State = state.extract()?;
+            Diagram {
+                branches,
+                events,
+                stop,
+                checks,
+            }
+            .into_py_any(py)
         }
         "Boundary" => {
             let (k, points): (String, Py<PyAny>) = state.extract()?;
@@ -518,6 +539,8 @@ impl Branch {
         let state = (
             self.s.clone_ref(py),
             self.gamma.clone_ref(py),
+            self.p_psi.clone_ref(py),
+            self.energy.clone_ref(py),
             self.verdicts.clone(),
             self.isolated,
         );
@@ -547,7 +570,8 @@ impl Diagram {
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let branches: Vec<Py<Branch>> = self.branches.iter().map(|b| b.clone_ref(py)).collect();
         let events: Vec<Py<Event>> = self.events.iter().map(|e| e.clone_ref(py)).collect();
-        reduce(py, "Diagram", (branches, events))
+        let state = (branches, events, self.stop.clone(), self.checks.clone());
+        reduce(py, "Diagram", state)
     }
 }
 

@@ -5,9 +5,9 @@ use crate::convert::{event_kind, helper, nonlinear_verdict, vec3, vecs, verdict}
 use numpy::{Complex64, PyArray1, PyArray2};
 use pyo3::prelude::*;
 
-/// A steady motion (paper (45)–(46)): the vertical `gamma` (body frame, (3,) array), the cyclic
+/// A steady motion (paper (33)): the vertical `gamma` (body frame, (3,) array), the cyclic
 /// momentum `p_psi`, the spin `psi_dot` (38), the multiplier `mu`, the `energy` (3), the amended
-/// potential `amended_potential` (42) and whether it is `isolated` (not on a circle of them).
+/// potential `amended_potential` (34) and whether it is `isolated` (not on a circle of them).
 ///
 /// >>> m = top.steady_motions(3.0)[0]
 /// >>> m.gamma, m.psi_dot, m.energy
@@ -33,7 +33,7 @@ impl SteadyMotion {
     fn psi_dot(&self) -> f64 {
         self.inner.psi_dot
     }
-    /// The Lagrange multiplier μ of |γ|² = 1 in (45).
+    /// The Lagrange multiplier μ of |γ|² = 1 in (32).
     #[getter]
     fn mu(&self) -> f64 {
         self.inner.mu
@@ -43,7 +43,7 @@ impl SteadyMotion {
     fn energy(&self) -> f64 {
         self.inner.energy
     }
-    /// The amended potential U_r(γ, p_ψ) (42).
+    /// The amended potential U_r(γ, p_ψ) (34).
     #[getter]
     fn amended_potential(&self) -> f64 {
         self.inner.amended_potential
@@ -185,13 +185,19 @@ impl CircleReport {
 }
 
 /// One branch of a bifurcation diagram: the parameter `s` (n,), the verticals `gamma` (n, 3),
-/// the `verdicts` (list of n strings) and whether its motions are `isolated`.
+/// the momentum `p_psi` (9) and energy `energy` (3) of each steady motion (n,) (the
+/// energy–momentum diagram plots `energy` against `p_psi`), the `verdicts` (list of n strings)
+/// and whether its motions are `isolated`.
 #[pyclass(module = "routh", frozen, get_all)]
 pub struct Branch {
     /// The parameter along the branch, (n,) float64.
     pub s: Py<PyAny>,
     /// The vertical γ at each point, (n, 3) float64.
     pub gamma: Py<PyAny>,
+    /// The cyclic momentum p_ψ (9) at each point, (n,) float64.
+    pub p_psi: Py<PyAny>,
+    /// The energy (3) at each point, (n,) float64.
+    pub energy: Py<PyAny>,
     /// The verdict at each point.
     pub verdicts: Vec<&'static str>,
     /// False on a branch of circles of steady motions.
@@ -248,8 +254,11 @@ impl Event {
     }
 }
 
-/// A bifurcation diagram: `branches` and `events`. `plot(ax=None)` draws it with matplotlib;
-/// in Jupyter it shows its tables and figure.
+/// A bifurcation diagram: `branches` and `events`, `stop` (None, or why it stopped early: a
+/// budget ran out) and `checks`, its self-check: a list of `(s, on_branches, searched)`, the
+/// number of steady motions on the branches at `s` (between consecutive events) against a global
+/// search there (`consistent()`: all agree). `plot(ax=None)` draws it with matplotlib; in
+/// Jupyter it shows its tables and figure.
 ///
 /// >>> d = top.bifurcation_diagram((0.0, 5.0))
 /// >>> [(e.kind, round(e.s, 6), e.before, e.after) for e in d.events]
@@ -260,19 +269,30 @@ pub struct Diagram {
     pub branches: Vec<Py<Branch>>,
     /// The folds, branch points and Hamiltonian–Hopf points.
     pub events: Vec<Py<Event>>,
+    /// None when the diagram is complete; otherwise why it stopped early (a budget ran out):
+    /// the branches and events are those computed so far.
+    pub stop: Option<String>,
+    /// The count checks `(s, on_branches, searched)`: steady motions on the branches at `s`
+    /// (a circle counts once) and found by a global search there.
+    pub checks: Vec<(f64, usize, usize)>,
 }
 
 impl Diagram {
     pub(crate) fn new(py: Python<'_>, d: &routh::BifurcationDiagram) -> PyResult<Diagram> {
         let mut branches = Vec::with_capacity(d.branches.len());
         for b in &d.branches {
-            let s: Vec<f64> = b.points.iter().map(|p| p.s).collect();
+            let col = |f: fn(&routh::BranchSample) -> f64| {
+                let v: Vec<f64> = b.points.iter().map(f).collect();
+                PyArray1::from_vec(py, v).into_any().unbind()
+            };
             let g: Vec<_> = b.points.iter().map(|p| p.steady.gamma).collect();
             branches.push(Py::new(
                 py,
                 Branch {
-                    s: PyArray1::from_vec(py, s).into_any().unbind(),
+                    s: col(|p| p.s),
                     gamma: vecs(py, &g).into_any().unbind(),
+                    p_psi: col(|p| p.steady.p_psi),
+                    energy: col(|p| p.steady.energy),
                     verdicts: b.points.iter().map(|p| verdict(p.report.verdict)).collect(),
                     isolated: b.isolated,
                 },
@@ -304,12 +324,25 @@ impl Diagram {
                 },
             )?);
         }
-        Ok(Diagram { branches, events })
+        Ok(Diagram {
+            branches,
+            events,
+            stop: d.stop.as_ref().map(ToString::to_string),
+            checks: d
+                .checks
+                .iter()
+                .map(|c| (c.s, c.on_branches, c.searched))
+                .collect(),
+        })
     }
 }
 
 #[pymethods]
 impl Diagram {
+    /// Whether every count check of `checks` agreed (True when none was made).
+    fn consistent(&self) -> bool {
+        self.checks.iter().all(|c| c.1 == c.2)
+    }
     /// Draw the diagram (s against γ₃; stable solid, unstable dashed, events marked and named).
     #[pyo3(signature = (ax=None, component=2))]
     fn plot(slf: &Bound<'_, Self>, ax: Option<Py<PyAny>>, component: usize) -> PyResult<Py<PyAny>> {

@@ -1,5 +1,5 @@
-//! The trajectories of `Model.simulate` (full equations (1)–(2)) and `Model.simulate_reduced`
-//! (reduced equations (39) with the reconstruction (15)), as numpy arrays, with the attitude
+//! The trajectories of `Model.simulate` (full equations (8)) and `Model.simulate_reduced`
+//! (reduced equations (13) with the reconstruction (15)), as numpy arrays, with the attitude
 //! when it was integrated (`attitude=True`), its Euler angles, the apex locus figure and the
 //! Jupyter reprs.
 
@@ -68,7 +68,7 @@ macro_rules! attitude_methods {
     };
 }
 
-/// A solution of the full equations (1)–(2): `t` (n,), `omega` (n, 3), `gamma` (n, 3), the
+/// A solution of the full equations (8): `t` (n,), `omega` (n, 3), `gamma` (n, 3), the
 /// recorded integrals `energy` (n,) and `p_psi` (n,), and with `attitude=True` the attitude
 /// `attitude` (n, 4).
 ///
@@ -123,7 +123,7 @@ impl Trajectory {
 
 attitude_methods!(Trajectory, "Trajectory");
 
-/// A solution of the reduced equations (39): `t`, `big_omega` (n, 3), `gamma` (n, 3), the
+/// A solution of the reduced equations (13): `t`, `big_omega` (n, 3), `gamma` (n, 3), the
 /// reconstructed `psi`, `psi_dot`, `omega` (n, 3), `energy`, `p_psi`, and with `attitude=True`
 /// the attitude `attitude` (n, 4), quaternions (x, y, z, w) as in [`Trajectory`].
 ///

@@ -39,6 +39,7 @@ from ._routh import (
     stability_atlas,
 )
 from . import _routh
+from ._export import from_json, to_csv, to_json, to_pandas
 from .study import study
 
 
@@ -87,8 +88,12 @@ __all__ = [
     "SympyFormulas",
     "Trajectory",
     "bifurcation_diagram",
+    "from_json",
     "stability_atlas",
     "study",
+    "to_csv",
+    "to_json",
+    "to_pandas",
     "VERDICTS",
     "EVENT_KINDS",
 ]

@@ -38,7 +38,7 @@ class ModelError(RouthError):
     message: str
 
 class SteadyMotion:
-    """A steady motion (45)–(46): a critical point of U_r on the sphere.
+    """A steady motion (33): a critical point of U_r on the sphere.
 
     >>> m = top.steady_motions(3.0)[0]
     >>> m.gamma, m.psi_dot, m.energy
@@ -58,6 +58,21 @@ class SteadyMotion:
     def amended_potential(self) -> float: ...
     @property
     def isolated(self) -> bool: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> SteadyMotion:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = SteadyMotion.from_json(r.to_json())
+        """
 
 class StabilityReport:
     """The stability of a steady motion (sections 4–5).
@@ -70,6 +85,21 @@ class StabilityReport:
     degree_of_instability: int
     restricted_hessian_eigenvalues: npt.NDArray[np.float64]
     f2_roots: npt.NDArray[np.complex128]
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> StabilityReport:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = StabilityReport.from_json(r.to_json())
+        """
 
 class CircleReport:
     """A circle of steady motions of a symmetric body, decided modulo the symmetry by the
@@ -86,14 +116,47 @@ class CircleReport:
     axis_momentum: float
     axis: npt.NDArray[np.float64]
     report: StabilityReport
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> CircleReport:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = CircleReport.from_json(r.to_json())
+        """
 
 class Branch:
-    """A branch of a diagram: `s` (n,), `gamma` (n, 3), `verdicts` (n strings)."""
+    """A branch of a diagram: `s` (n,), `gamma` (n, 3), `p_psi` and `energy` (n,) (the
+    energy–momentum diagram), `verdicts` (n strings)."""
     s: npt.NDArray[np.float64]
     gamma: npt.NDArray[np.float64]
+    p_psi: npt.NDArray[np.float64]
+    energy: npt.NDArray[np.float64]
     verdicts: list[Verdict]
     isolated: bool
     def __len__(self) -> int: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> Branch:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = Branch.from_json(r.to_json())
+        """
 
 class Event:
     """A fold, branch point or Hamiltonian–Hopf point on branch `branch` (with
@@ -108,6 +171,21 @@ class Event:
     """"1:2" or "1:3" for a resonance event, else None."""
     nonlinear: tuple[NonlinearVerdict, NonlinearVerdict, NonlinearVerdict] | None
     """The nonlinear verdicts (before, at, after) of a nonlinear event, else None."""
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> Event:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = Event.from_json(r.to_json())
+        """
 
 class NonlinearReport:
     """The nonlinear stability of a steady motion (Birkhoff normal form, Arnold–Moser).
@@ -125,6 +203,21 @@ class NonlinearReport:
     arnold_determinant: float
     resonance: str | None
     resonance_distance: float
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> NonlinearReport:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = NonlinearReport.from_json(r.to_json())
+        """
 
 class Diagram:
     """A bifurcation diagram; in Jupyter it shows its tables and figure.
@@ -134,10 +227,32 @@ class Diagram:
     """
     branches: list[Branch]
     events: list[Event]
+    stop: str | None
+    """None, or why the diagram stopped early (a budget ran out)."""
+    checks: list[tuple[float, int, int]]
+    """(s, on_branches, searched): steady motions on the branches at s against a global search."""
+    def consistent(self) -> bool:
+        """Whether every count check agreed (True when none was made)."""
     def plot(self, ax: Any = None, component: int = 2) -> Any:
         """Draw s against γ[component] on `ax` (a new one if None); returns the axes."""
     def _repr_svg_(self) -> str: ...
     def _repr_html_(self) -> str: ...
+
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> Diagram:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = Diagram.from_json(r.to_json())
+        """
 
 BifurcationDiagram = Diagram
 
@@ -145,6 +260,21 @@ class Boundary:
     """A curve of an atlas where the verdict changes: `points` (n, 2) of (x, y)."""
     kind: EventKind
     points: npt.NDArray[np.float64]
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> Boundary:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = Boundary.from_json(r.to_json())
+        """
 
 class Atlas:
     """A stability atlas: `verdicts[j][i]` at (x[i], y[j]) (ny rows of nx, as in Rust), `lost`
@@ -168,10 +298,26 @@ class Atlas:
     def _repr_svg_(self) -> str: ...
     def _repr_html_(self) -> str: ...
 
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> Atlas:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = Atlas.from_json(r.to_json())
+        """
+
 StabilityAtlas = Atlas
 
 class Trajectory:
-    """A solution of the full equations (1)–(2).
+    """A solution of the full equations (8).
 
     `attitude` (with `simulate(..., attitude=True)`, else None) is (n, 4): the rotation R body →
     space as unit quaternions in the order (x, y, z, w), scalar last, as
@@ -194,9 +340,24 @@ class Trajectory:
     def _repr_svg_(self) -> str | None: ...
     def _repr_html_(self) -> str: ...
     def __len__(self) -> int: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> Trajectory:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = Trajectory.from_json(r.to_json())
+        """
 
 class ReducedTrajectory:
-    """A solution of the reduced equations (39) with the reconstruction (15); `attitude` as in
+    """A solution of the reduced equations (13) with the reconstruction (15); `attitude` as in
     Trajectory (quaternions (x, y, z, w))."""
     t: npt.NDArray[np.float64]
     big_omega: npt.NDArray[np.float64]
@@ -214,6 +375,21 @@ class ReducedTrajectory:
     def _repr_svg_(self) -> str | None: ...
     def _repr_html_(self) -> str: ...
     def __len__(self) -> int: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> ReducedTrajectory:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = ReducedTrajectory.from_json(r.to_json())
+        """
 
 class Certificate:
     """A certified enumeration: when `complete`, `motions` are all the steady motions.
@@ -226,6 +402,21 @@ class Certificate:
     p_psi: float
     boxes: int
     undecided: int
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> Certificate:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = Certificate.from_json(r.to_json())
+        """
 
 class LatexFormulas:
     """The derived formulas in LaTeX (no delimiters); Jupyter typesets all seven.
@@ -280,7 +471,21 @@ class PeriodicOrbit:
     stability_index: float
     stability: OrbitStability
     amplitude: float
-    def to_json(self) -> str: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> PeriodicOrbit:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = PeriodicOrbit.from_json(r.to_json())
+        """
 
 class OrbitEvent:
     """A fold, branch point or period doubling of a family of periodic orbits."""
@@ -289,6 +494,21 @@ class OrbitEvent:
     orbit: PeriodicOrbit
     before: OrbitStability
     after: OrbitStability
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> OrbitEvent:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = OrbitEvent.from_json(r.to_json())
+        """
 
 class OrbitFamily:
     """A family of periodic orbits at one p_ψ, in the order of continuation.
@@ -307,7 +527,21 @@ class OrbitFamily:
     stability: list[OrbitStability]
     def __len__(self) -> int: ...
     def plot(self, ax: Any = None, quantity: Literal["stability_index", "period"] = "stability_index") -> Any: ...
-    def to_json(self) -> str: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> OrbitFamily:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = OrbitFamily.from_json(r.to_json())
+        """
 
 class PoincareSection:
     """Crossings of the plane γ·n = 0 at (p_ψ, E) in the coordinates (θ, M_n).
@@ -321,6 +555,21 @@ class PoincareSection:
     points: list[npt.NDArray[np.float64]]
     starts: npt.NDArray[np.float64]
     def plot(self, ax: Any = None, fixed_points: npt.ArrayLike | None = None) -> Any: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> PoincareSection:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = PoincareSection.from_json(r.to_json())
+        """
 
 class Model:
     """A rigid body: a Lagrangian in the derive's language and its parameters.
@@ -333,7 +582,11 @@ class Model:
     @staticmethod
     def from_toml(text: str) -> Model: ...
     @staticmethod
-    def load(path: str | PathLike[str]) -> Model: ...
+    def from_file(path: str | PathLike[str]) -> Model:
+        """A model from a TOML file (the Rust `Model::from_file`); `load` is an alias."""
+    @staticmethod
+    def load(path: str | PathLike[str]) -> Model:
+        """Alias of `Model.from_file`, kept for existing code."""
     def set(self, name: str, value: ParamValue) -> None: ...
     def with_params(self, **kw: ParamValue) -> Model: ...
     def get_param(self, name: str) -> float | npt.NDArray[np.float64] | None: ...
@@ -435,21 +688,34 @@ class Model:
         nonlinear: bool = False,
         progress: bool = False,
     ) -> Diagram: ...
+    def simulate_full(
+        self, omega0: Vec3, gamma0: Vec3, t_end: float, *, rtol: float = 1e-10, atol: float = 1e-12,
+        max_steps: int | None = None, attitude: bool = False,
+        times: Sequence[float] | npt.NDArray[np.float64] | None = None,
+    ) -> Trajectory:
+        """Integrate the full equations (8) (the Rust `simulate_full`); `simulate` is an alias."""
     def simulate(
         self, omega0: Vec3, gamma0: Vec3, t_end: float, *, rtol: float = 1e-10, atol: float = 1e-12,
         max_steps: int | None = None, attitude: bool = False,
         times: Sequence[float] | npt.NDArray[np.float64] | None = None,
-    ) -> Trajectory: ...
+    ) -> Trajectory:
+        """Alias of `Model.simulate_full`, kept for existing code."""
     def simulate_reduced(
         self, big_omega0: Vec3, gamma0: Vec3, p_psi: float, t_end: float, *, rtol: float = 1e-10,
         atol: float = 1e-12, max_steps: int | None = None, attitude: bool = False,
         times: Sequence[float] | npt.NDArray[np.float64] | None = None,
     ) -> ReducedTrajectory: ...
+    def steady_motions_certified(
+        self, p_psi: float, *, initial_split: int | None = None, min_width: float | None = None,
+        max_boxes: int | None = None, refine_iterations: int | None = None,
+    ) -> Certificate:
+        """A certified enumeration of the steady motions at p_psi (interval arithmetic; the Rust
+        `steady_motions_certified`); `certify` is an alias."""
     def certify(
         self, p_psi: float, *, initial_split: int | None = None, min_width: float | None = None,
         max_boxes: int | None = None, refine_iterations: int | None = None,
     ) -> Certificate:
-        """A certified enumeration of the steady motions at p_psi (interval arithmetic)."""
+        """Alias of `Model.steady_motions_certified`, kept for existing code."""
 
 def bifurcation_diagram(
     family: Callable[[float], tuple[Model, float]],
@@ -494,4 +760,18 @@ def study(
     Dask cluster (a LocalCluster of `n_workers` processes by default, or `client`: a
     `dask.distributed.Client` or an address): a pandas.DataFrame, one row per point, the
     result's fields as columns and an `error` column. Needs `routh[dask]`."""
+def to_pandas(results: Any) -> Any:
+    """The DataFrame of a result, or of a list of results (their rows one after another).
+
+    >>> df = routh.to_pandas(top.steady_motions(3.0))
+    """
+def to_csv(results: Any, path: str | PathLike[str]) -> None:
+    """Writes `to_pandas(results)` to the CSV file `path`, whole or not at all."""
+def to_json(results: Any) -> str:
+    """The JSON text of a result, or a JSON array for a list of results."""
+def from_json(text: str) -> Any:
+    """The result (or list of results) of `to_json` text, numbers bit for bit.
+
+    >>> d2 = routh.from_json(d.to_json())
+    """
 def _restore(kind: str, state: Any) -> Any: ...

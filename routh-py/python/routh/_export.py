@@ -1,0 +1,358 @@
+"""Export of the result classes: ``to_pandas()``, ``to_csv(path)``, ``to_json()``, ``from_json``.
+
+Every result class has the methods ``to_pandas()``, ``to_csv(path)``, ``to_json()`` and the class
+method ``from_json(text)`` (which call the functions here); ``routh.to_pandas``,
+``routh.to_csv``, ``routh.to_json`` and ``routh.from_json`` also take a list of results (e.g.
+what ``Model.steady_motions`` returns).
+
+JSON. ``to_json()`` is a JSON object ``{"routh": "<class>", "format": 1, <fields>}``:
+
+- ``SteadyMotion``, ``PeriodicOrbit``, ``OrbitEvent``, ``OrbitFamily`` hold a Rust value; their
+  fields are its serde form (what ``serde_json`` writes for ``routh::SteadyMotion`` etc., so
+  Rust reads the text back with ``serde_json::from_str``: the two extra keys are ignored).
+- Every other class: its attributes by name (numpy arrays as nested lists, a complex number as
+  ``[re, im]``, a nested result as its own JSON object), and for the trajectories
+  ``euler_angles`` (None without attitude).
+
+Floats are written with Python's ``repr`` (the shortest text that reads back as the same double),
+so finite numbers come back bit for bit, ``-0.0`` included. JSON has no NaN or infinity: they are
+the strings ``"NaN"``, ``"Infinity"`` and ``"-Infinity"`` (the convention of the Rust crate's
+serde form), and read back as NaN, +inf, -inf (a NaN comes back as the standard quiet NaN: its
+sign and payload bits are not kept). The text is strict JSON (RFC 8259).
+
+DataFrames (pandas is optional: ``to_pandas`` and ``to_csv`` raise ImportError without it); the
+columns are listed in docs/python.md ("Export"). ``to_csv`` writes the DataFrame without its
+index to a temporary file beside ``path`` and renames it, so the file is whole or absent; floats
+are written in Python's shortest round-trip form, so ``pandas.read_csv(path)`` reads the same
+numbers (pandas < 3: pass ``float_precision="round_trip"``); NaN is an empty cell.
+
+>>> import routh
+>>> top = routh.Model(
+...     "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+...     {"inertia": [1.0, 1.0, 1.25], "mgl": 1.0})
+>>> d = top.bifurcation_diagram((0.0, 5.0))
+>>> routh.Diagram.from_json(d.to_json()).to_json() == d.to_json()
+True
+>>> list(d.to_pandas().columns)[:4]
+['kind', 'branch', 's', 'gamma1']
+"""
+
+import json
+import math
+
+import numpy as np
+
+from . import _routh
+
+__all__ = ["from_json", "to_csv", "to_json", "to_pandas"]
+
+FORMAT = 1
+
+# The classes whose JSON is the serde form of the Rust value they wrap (their pickle state).
+_SERDE = ("SteadyMotion", "PeriodicOrbit", "OrbitEvent", "OrbitFamily")
+
+# The JSON fields of every other class, in the order of its pickle state, each with its kind:
+# "f" float, "i" int, "b" bool, "s" str (or None), "a<k>" float64 array of k columns ("a" for
+# (n,)), "c" complex128 (n,) array, "r:<Class>" a nested result, "l:<kind>" a list of them,
+# "o:<kind>" None or one.
+_FIELDS = {
+    "StabilityReport": [
+        ("verdict", "s"),
+        ("degree_of_instability", "i"),
+        ("restricted_hessian_eigenvalues", "a"),
+        ("f2_roots", "c"),
+    ],
+    "CircleReport": [
+        ("verdict", "s"),
+        ("curvature", "f"),
+        ("across", "f"),
+        ("momentum_term", "f"),
+        ("axis_momentum", "f"),
+        ("axis", "a"),
+        ("report", "r:StabilityReport"),
+    ],
+    "Branch": [
+        ("s", "a"),
+        ("gamma", "a3"),
+        ("p_psi", "a"),
+        ("energy", "a"),
+        ("verdicts", "l:s"),
+        ("isolated", "b"),
+    ],
+    "Event": [
+        ("kind", "s"),
+        ("s", "f"),
+        ("gamma", "a"),
+        ("branch", "i"),
+        ("before", "s"),
+        ("after", "s"),
+        ("resonance", "s"),
+        ("nonlinear", "o:t"),
+    ],
+    "Diagram": [
+        ("branches", "l:r:Branch"),
+        ("events", "l:r:Event"),
+        ("stop", "s"),
+        ("checks", "l:t"),
+    ],
+    "Boundary": [("kind", "s"), ("points", "a2")],
+    "Atlas": [
+        ("x", "a"),
+        ("y", "a"),
+        ("verdicts", "l:t"),
+        ("lost", "l:t"),
+        ("stop", "s"),
+        ("boundaries", "l:r:Boundary"),
+    ],
+    "Trajectory": [
+        ("t", "a"),
+        ("omega", "a3"),
+        ("gamma", "a3"),
+        ("energy", "a"),
+        ("p_psi", "a"),
+        ("attitude", "o:a4"),
+        ("euler_angles", "o:a3"),
+    ],
+    "ReducedTrajectory": [
+        ("t", "a"),
+        ("big_omega", "a3"),
+        ("gamma", "a3"),
+        ("psi", "a"),
+        ("psi_dot", "a"),
+        ("omega", "a3"),
+        ("energy", "a"),
+        ("p_psi", "a"),
+        ("attitude", "o:a4"),
+        ("euler_angles", "o:a3"),
+    ],
+    "Certificate": [
+        ("complete", "b"),
+        ("motions", "l:r:SteadyMotion"),
+        ("p_psi", "f"),
+        ("boxes", "i"),
+        ("undecided", "i"),
+    ],
+    "NonlinearReport": [
+        ("verdict", "s"),
+        ("reason", "s"),
+        ("linear", "r:StabilityReport"),
+        ("frequencies", "a"),
+        ("krein_signs", "t"),
+        ("normal_form", "a"),
+        ("arnold_determinant", "f"),
+        ("resonance", "s"),
+        ("resonance_distance", "f"),
+    ],
+    "PoincareSection": [
+        ("p_psi", "f"),
+        ("energy", "f"),
+        ("normal", "a"),
+        ("points", "l:a2"),
+        ("starts", "a6"),
+    ],
+}
+
+CLASSES = _SERDE + tuple(_FIELDS)
+
+
+# ---------------------------------------------------------------------------------------------
+# JSON
+
+
+def _float(x):
+    """A float as JSON: itself, or "NaN", "Infinity", "-Infinity"."""
+    x = float(x)
+    if math.isnan(x):
+        return "NaN"
+    if math.isinf(x):
+        return "Infinity" if x > 0 else "-Infinity"
+    return x
+
+
+def _unfloat(v, where):
+    if isinstance(v, bool) or v is None:
+        raise _routh.RouthError(f"from_json: {where}: expected a number, got {v!r}")
+    if isinstance(v, (int, float)):
+        return float(v)
+    if v == "NaN":
+        return math.nan
+    if v == "Infinity":
+        return math.inf
+    if v == "-Infinity":
+        return -math.inf
+    raise _routh.RouthError(f"from_json: {where}: expected a number, got {v!r}")
+
+
+def _plain(v):
+    """Numbers (also numpy scalars), strings, None, lists and tuples as JSON values."""
+    if v is None or isinstance(v, (bool, str)):
+        return v
+    if isinstance(v, (int, np.integer)):
+        return int(v)
+    if isinstance(v, (float, np.floating)):
+        return _float(v)
+    if isinstance(v, (complex, np.complexfloating)):
+        return [_float(v.real), _float(v.imag)]
+    if isinstance(v, np.ndarray):
+        return [_plain(x) for x in v]
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    raise TypeError(f"to_json: cannot write {type(v).__name__}")
+
+
+def _class_name(obj):
+    name = type(obj).__name__
+    if type(obj).__module__ != "routh" or name not in CLASSES:
+        raise TypeError(f"to_json: not a routh result: {type(obj).__name__}")
+    return name
+
+
+def _document(obj):
+    """The JSON object (a dict) of a result."""
+    name = _class_name(obj)
+    doc = {"routh": name, "format": FORMAT}
+    if name in _SERDE:
+        # The pickle state of these classes is the serde JSON of the Rust value.
+        _, (_, state) = obj.__reduce__()
+        doc.update(json.loads(state))
+        return doc
+    for field, kind in _FIELDS[name]:
+        if field == "euler_angles":
+            value = obj.euler_angles() if obj.attitude is not None else None
+        else:
+            value = getattr(obj, field)
+        doc[field] = _encode(value, kind)
+    return doc
+
+
+def _encode(value, kind):
+    if kind.startswith("r:"):
+        return _document(value)
+    if kind.startswith("l:"):
+        return [_encode(v, kind[2:]) for v in value]
+    if kind.startswith("o:"):
+        return None if value is None else _encode(value, kind[2:])
+    return _plain(value)
+
+
+def to_json(obj):
+    """The JSON text of a result (or of a list of results: a JSON array of them)."""
+    if isinstance(obj, (list, tuple)):
+        doc = [_document(o) for o in obj]
+    else:
+        doc = _document(obj)
+    return json.dumps(doc, allow_nan=False, ensure_ascii=False)
+
+
+def _array(v, kind, where):
+    if not isinstance(v, list):
+        raise _routh.RouthError(f"from_json: {where}: expected an array, got {v!r}")
+    if kind == "c":
+        try:
+            out = [complex(_unfloat(re, where), _unfloat(im, where)) for re, im in v]
+        except (TypeError, ValueError):
+            raise _routh.RouthError(f"from_json: {where}: expected [re, im] pairs") from None
+        return np.array(out, dtype=np.complex128).reshape(-1)
+    cols = int(kind[1:]) if len(kind) > 1 else None
+    try:
+        if cols is None:
+            flat = [_unfloat(x, where) for x in v]
+            return np.array(flat, dtype=np.float64).reshape(-1)
+        flat = []
+        for row in v:
+            if not isinstance(row, list) or len(row) != cols:
+                raise _routh.RouthError(f"from_json: {where}: expected rows of {cols} numbers")
+            flat.extend(_unfloat(x, where) for x in row)
+        return np.array(flat, dtype=np.float64).reshape(-1, cols)
+    except TypeError:
+        raise _routh.RouthError(f"from_json: {where}: expected numbers") from None
+
+
+def _tuples(v):
+    """JSON arrays as tuples (what the pickle states hold), numbers as they are."""
+    if isinstance(v, list):
+        return tuple(_tuples(x) for x in v)
+    return v
+
+
+def _decode(v, kind, where):
+    if kind.startswith("r:"):
+        return _object(v, kind[2:], where)
+    if kind.startswith("l:"):
+        if not isinstance(v, list):
+            raise _routh.RouthError(f"from_json: {where}: expected an array, got {v!r}")
+        return [_decode(x, kind[2:], f"{where}[{i}]") for i, x in enumerate(v)]
+    if kind.startswith("o:"):
+        return None if v is None else _decode(v, kind[2:], where)
+    if kind == "f":
+        return _unfloat(v, where)
+    if kind.startswith("a") or kind == "c":
+        return _array(v, kind, where)
+    if kind == "t":
+        if not isinstance(v, list):
+            raise _routh.RouthError(f"from_json: {where}: expected an array, got {v!r}")
+        return _tuples(v)
+    return v
+
+
+def _object(doc, expected, where="text"):
+    """The result of a JSON object (a dict); `expected` a class name or None (any)."""
+    if not isinstance(doc, dict) or "routh" not in doc:
+        raise _routh.RouthError(f"from_json: {where}: not a routh result (no \"routh\" key)")
+    name = doc["routh"]
+    if name not in CLASSES:
+        raise _routh.RouthError(f"from_json: {where}: unknown class {name!r}")
+    if expected is not None and name != expected:
+        raise _routh.RouthError(f"from_json: {where}: a {name}, not a {expected}")
+    if doc.get("format") != FORMAT:
+        raise _routh.RouthError(f"from_json: {where}: format {doc.get('format')!r}, expected {FORMAT}")
+    if name in _SERDE:
+        body = {k: v for k, v in doc.items() if k not in ("routh", "format")}
+        return _routh._restore(name, json.dumps(body))
+    values = []
+    for field, kind in _FIELDS[name]:
+        if field not in doc:
+            raise _routh.RouthError(f"from_json: {where}: {name} without {field!r}")
+        values.append(_decode(doc[field], kind, f"{where}.{field}"))
+    state = _state(name, values)
+    try:
+        return _routh._restore(name, state)
+    except (TypeError, ValueError) as e:
+        raise _routh.RouthError(f"from_json: {where}: {e}") from None
+
+
+def _state(name, values):
+    """The pickle state of class `name` from its JSON fields in order."""
+    if name in ("Trajectory", "ReducedTrajectory"):
+        *arrays, attitude, euler = values
+        n = len(arrays[0])
+        if name == "Trajectory":
+            return (*arrays, attitude, euler, n)
+        return (tuple(arrays), attitude, euler, n)
+    if name == "Atlas":
+        x, y, verdicts, lost, stop, boundaries = values
+        return (x, y, [list(r) for r in verdicts], [list(r) for r in lost], stop, boundaries)
+    if name == "Diagram":
+        branches, events, stop, checks = values
+        checks = [(_unfloat(s, "checks"), a, b) for s, a, b in checks]
+        return (branches, events, stop, checks)
+    if name == "Branch":
+        s, gamma, p_psi, energy, verdicts, isolated = values
+        return (s, gamma, p_psi, energy, list(verdicts), isolated)
+    return tuple(values)
+
+
+def from_json(text, cls=None):
+    """The result (or list of results) whose JSON text is `text`; with `cls`, it must be one."""
+    try:
+        doc = json.loads(text)
+    except (TypeError, ValueError) as e:
+        raise _routh.RouthError(f"from_json: not JSON: {e}") from None
+    expected = None if cls is None else cls.__name__
+    if isinstance(doc, list) and cls is None:
+        return [_object(d, None, f"[{i}]") for i, d in enumerate(doc)]
+    return _object(doc, expected)
+
+
+# The DataFrames and CSV files (the methods to_pandas and to_csv call these names here).
+from ._frames import to_csv, to_pandas  # noqa: E402
