@@ -31,7 +31,8 @@ fn codegen(e: impl std::fmt::Display) -> JitError {
 /// A negation is carried, not computed, to the operations that read it, where it is free:
 /// `a + (−x)` is `a − x`, `(−a)·x` is `−(a·x)`, `1/(−a)` is `−(1/a)`, `(−a)ⁿ` is `±aⁿ` by the
 /// parity of `n`, `|−a|` is `|a|`, all exactly (IEEE 754 rounds symmetrically). Only the
-/// functions, `xʸ` and the outputs compute it (`fneg`).
+/// functions, `xʸ`, the outputs and `(−a) + (−b)` (not `−(a + b)` at `a = 0`, `b = −0`)
+/// compute it, as an `xor` of the sign bit.
 #[derive(Copy, Clone)]
 enum Val {
     Const(f64),
@@ -88,8 +89,9 @@ impl Emit<'_, '_> {
     fn load(&mut self, param: bool, k: usize) -> Value {
         let key = if param { INPUTS + k } else { k };
         let base = if param { self.params } else { self.inputs };
-        // The inputs are not written while the function runs (the outputs go to another
-        // buffer): a load is a pure value, which Cranelift places where it is used.
+        // The inputs are not written while the function runs (the outputs go to a buffer
+        // borrowed uniquely, `crate::code::Entry::call`): a load is a pure value, which
+        // Cranelift places where it is used.
         let flags = self.flags.with_readonly().with_can_move();
         let b = &mut self.b;
         *self
