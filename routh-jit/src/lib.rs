@@ -40,6 +40,7 @@
 #[allow(unsafe_code)]
 mod code;
 mod compile;
+mod emit;
 mod libcalls;
 
 pub use compile::{is_supported, OptLevel, INPUTS, MAX_PARAMS};
@@ -337,6 +338,102 @@ mod tests {
                 "sign({x}): jit {} tape {want}",
                 y[0]
             );
+        }
+    }
+
+    /// Negations are carried into the operations that read them (`a + (−x)` as `a − x`, signs
+    /// of products, reciprocals and powers by parity): the same bits as the tape's own
+    /// evaluation, at signed zeros, infinities and NaN, for negated inputs, negated results and
+    /// negated constants, on either side of each operation.
+    #[test]
+    fn carried_negations_are_the_tape_bit_for_bit() {
+        let xs = [
+            0.0,
+            -0.0,
+            1.5,
+            -2.25,
+            1e-310,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        // γ₀, γ₁, −γ₀, −γ₁, the constant −0.75 and its negation, γ₀·γ₁, −(γ₀·γ₁), γ₀ + γ₁,
+        // −(γ₀ + γ₁).
+        let leaves = vec![
+            Op::Gamma(0),
+            Op::Gamma(1),
+            Op::Neg(0),
+            Op::Neg(1),
+            Op::constant(-0.75),
+            Op::Neg(4),
+            Op::Mul(0, 1),
+            Op::Neg(6),
+            Op::Add(0, 1),
+            Op::Neg(8),
+        ];
+        let mut binary = Vec::new();
+        for a in [0u32, 2, 4, 5, 7] {
+            for b in [1u32, 3, 4, 9] {
+                binary.push(Op::Add(a, b));
+                binary.push(Op::Add(b, a));
+                binary.push(Op::Mul(a, b));
+                binary.push(Op::Mul(b, a));
+            }
+        }
+        let mut unary = Vec::new();
+        for a in [2u32, 3, 5, 7, 9] {
+            unary.extend([
+                Op::Neg(a),
+                Op::Mul(a, a),
+                Op::Recip(a),
+                Op::Powi(a, 2),
+                Op::Powi(a, 3),
+                Op::Powi(a, -3),
+                Op::Powi(a, -4),
+                Op::Powi(a, 0),
+                Op::Func(Func::Abs, a),
+                Op::Func(Func::Sign, a),
+                Op::Func(Func::Sqrt, a),
+                Op::Func(Func::Sin, a),
+                Op::Powf(a, 1),
+            ]);
+        }
+        let mut cases = Vec::new();
+        for op in binary.into_iter().chain(unary) {
+            let mut ops = leaves.clone();
+            ops.push(op);
+            // Negations of the result too, as an output and under a further operation.
+            let n = ops.len() as u32;
+            ops.push(Op::Neg(n - 1));
+            ops.push(Op::Add(n, 0));
+            cases.push(ops);
+        }
+        for ops in cases {
+            let n = ops.len() as u32;
+            let outputs = (0..n).map(|s| out("y", s)).collect();
+            let t = Tape::new(ops, outputs, 0).unwrap();
+            let f = JitFunction::compile(&t).unwrap();
+            for &a in &xs {
+                for &b in &xs {
+                    let x = [0.0, 0.0, 0.0, a, b, 0.0, 0.0];
+                    let mut got = vec![0.0; n as usize];
+                    f.eval(&x, &mut got).unwrap();
+                    let mut want = vec![0.0; n as usize];
+                    let at = routh_tape::Inputs {
+                        omega: [0.0; 3],
+                        gamma: [a, b, 0.0],
+                        p_psi: 0.0,
+                    };
+                    t.eval(&at, &[], &mut Vec::new(), &mut want);
+                    for (k, (g, w)) in got.iter().zip(&want).enumerate() {
+                        assert!(
+                            g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan()),
+                            "{:?} at γ = ({a}, {b}), slot {k}: jit {g} tape {w}",
+                            t.ops()
+                        );
+                    }
+                }
+            }
         }
     }
 

@@ -50,9 +50,11 @@ use std::sync::Arc;
 #[derive(Clone)]
 pub struct Model {
     text: Arc<str>,
-    params: Vec<(String, Param)>,
-    symmetric: Vec<String>,
-    latex: BTreeMap<String, String>,
+    // Shared by the clones (a clone is cheap: an analysis clones its model, a diagram once per
+    // point); `set` copies the list when it is shared.
+    params: Arc<Vec<(String, Param)>>,
+    symmetric: Arc<[String]>,
+    latex: Arc<BTreeMap<String, String>>,
     compiled: Arc<Compiled>,
     /// The values `Op::Param(k)` reads, `values[k]` (see [`Model::tape_parameters`]).
     values: Arc<[f64]>,
@@ -162,9 +164,9 @@ impl Model {
         let kernels = Arc::new(Kernels::new(Arc::clone(&compiled), default_maker()));
         Ok(Model {
             text: text.into(),
-            params,
-            symmetric,
-            latex,
+            params: Arc::new(params),
+            symmetric: symmetric.into(),
+            latex: Arc::new(latex),
             compiled,
             values,
             hoisted,
@@ -178,7 +180,7 @@ impl Model {
     /// compiled code do not depend on the values).
     pub fn set(&mut self, name: &str, value: impl Into<Param>) -> Result<(), ModelError> {
         let value = value.into();
-        let Some(slot) = self.params.iter_mut().find(|(n, _)| n == name) else {
+        let Some(slot) = self.params.iter().position(|(n, _)| n == name) else {
             let known: Vec<&str> = self.params.iter().map(|(n, _)| n.as_str()).collect();
             return Err(ModelError::general(format!(
                 "unknown parameter `{name}` (the model's parameters: {})",
@@ -189,6 +191,8 @@ impl Model {
                 }
             )));
         };
+        let params = Arc::make_mut(&mut self.params);
+        let slot = &mut params[slot];
         if !slot.1.same_shape(&value) {
             return Err(ModelError::general(format!(
                 "parameter `{name}` is a {}, not a {}",
@@ -205,7 +209,10 @@ impl Model {
             Ok(v) => v.into(),
             Err(e) => {
                 // Cannot happen (every parameter the tapes read has a value): left unchanged.
-                if let Some(slot) = self.params.iter_mut().find(|(n, _)| n == name) {
+                if let Some(slot) = Arc::make_mut(&mut self.params)
+                    .iter_mut()
+                    .find(|(n, _)| n == name)
+                {
                     slot.1 = old;
                 }
                 return Err(e);
@@ -263,7 +270,7 @@ impl Model {
     /// gives them) in place of its own: what a copy made from the text, parameters and
     /// symmetric list needs to print as the original (the Python package's pickling).
     pub fn with_latex_symbols(mut self, latex: BTreeMap<String, String>) -> Model {
-        self.latex = latex;
+        self.latex = Arc::new(latex);
         self
     }
 
