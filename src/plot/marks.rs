@@ -5,8 +5,11 @@ use plotters::coord::Shift;
 use plotters::element::{DashedPathElement, DottedPathElement};
 use plotters::prelude::*;
 
+use super::curve::{dashes, smooth, PxF};
+use super::labels::{place, Placed, Rect};
 use super::style::BOUNDARY_UNDERLAY;
 use super::style::{boundary_color, boundary_stroke, cell_fill, Pattern, Stroke};
+use super::style::{font_px, FONT, HATCH_INK, HATCH_SPACING};
 use super::{drawing_error, PlotError};
 use crate::{EventKind, OrbitEventKind, Stability};
 
@@ -148,26 +151,71 @@ pub(super) fn draw_fixed_point(root: &Root, c: Px) -> Result<(), PlotError> {
         .map_err(drawing_error)
 }
 
-/// Writes each name above and to the right of its marker at `c`, raising a name row by row
-/// where it would overlap one written before.
-pub(super) fn draw_names(root: &Root, names: &[(Px, String)]) -> Result<(), PlotError> {
-    let font = ("sans-serif", 14).into_font().color(&BLACK);
-    let mut placed: Vec<(i32, i32, i32)> = Vec::new(); // left, right, top
-    for (c, name) in names {
-        let w = 8 * name.chars().count() as i32;
-        let (left, right) = (c.0 + 6, c.0 + 6 + w);
-        let mut top = c.1 - 22;
-        while placed
-            .iter()
-            .any(|&(l, r, t)| left < r + 4 && l < right + 4 && (top - t).abs() < 16)
-        {
-            top -= 16;
+/// Writes each name beside its marker at `c`, placed by [`place`] clear of one another, of the
+/// `markers` and inside `area`; a name put away from its marker gets a thin grey leader line.
+/// Returns where each went.
+pub(super) fn draw_names(
+    root: &Root,
+    names: &[(Px, String)],
+    markers: &[Rect],
+    area: Rect,
+) -> Result<Vec<Placed>, PlotError> {
+    let size = font_px(FONT.annotation_pt);
+    let placed = place(names, markers, area, size);
+    let font = (FONT.family, size).into_font().color(&BLACK);
+    for p in &placed {
+        let r = p.rect;
+        if p.leader {
+            // From the marker's edge to the nearest point of the box.
+            let q = (p.anchor.0.clamp(r.x0, r.x1), p.anchor.1.clamp(r.y0, r.y1));
+            let (dx, dy) = ((q.0 - p.anchor.0) as f64, (q.1 - p.anchor.1) as f64);
+            let d = dx.hypot(dy).max(1.0);
+            let from = (
+                p.anchor.0 + (9.0 * dx / d).round() as i32,
+                p.anchor.1 + (9.0 * dy / d).round() as i32,
+            );
+            stroke_path(root, &[from, q], RGBColor(110, 110, 110), Stroke::Solid(1))?;
         }
-        placed.push((left, right, top));
-        root.draw(&Text::new(name.clone(), (left, top), font.clone()))
+        root.draw(&Rectangle::new(
+            [(r.x0 - 1, r.y0), (r.x1 + 1, r.y1)],
+            WHITE.mix(0.8).filled(),
+        ))
+        .map_err(drawing_error)?;
+        root.draw(&Text::new(p.text.clone(), (r.x0, r.y0 + 1), font.clone()))
             .map_err(drawing_error)?;
     }
-    Ok(())
+    Ok(placed)
+}
+
+/// Strokes a curve through the fractional-pixel samples `pts`, smoothed ([`smooth`]) and with
+/// its dashes laid along its whole length ([`dashes`]).
+pub(super) fn stroke_curve(
+    root: &Root,
+    pts: &[PxF],
+    color: RGBColor,
+    stroke: Stroke,
+) -> Result<(), PlotError> {
+    let smooth = smooth(pts);
+    let round = |v: &[PxF]| -> Vec<Px> {
+        let mut out: Vec<Px> = v
+            .iter()
+            .map(|p| (p.0.round() as i32, p.1.round() as i32))
+            .collect();
+        out.dedup();
+        out
+    };
+    match stroke {
+        Stroke::Solid(_) => stroke_path(root, &round(&smooth), color, stroke),
+        Stroke::Dashed(w, dash, gap) => {
+            for d in dashes(&smooth, dash as f64, gap as f64) {
+                let d = round(&d);
+                if d.len() >= 2 {
+                    stroke_path(root, &d, color, Stroke::Solid(w))?;
+                }
+            }
+            Ok(())
+        }
+    }
 }
 
 /// Shades the pixel rectangle with corners `a` (top left) and `b` (bottom right) as a cell of
@@ -197,8 +245,8 @@ fn fill_cell(
     }
     root.draw(&Rectangle::new([(x0, y0), (x1, y1)], color.filled()))
         .map_err(drawing_error)?;
-    const SP: i32 = 9;
-    let ink = RGBColor(40, 40, 40);
+    const SP: i32 = HATCH_SPACING;
+    let ink = HATCH_INK;
     match pattern {
         Pattern::Plain => {}
         Pattern::Dots => {

@@ -87,12 +87,14 @@ use crate::{EventKind, OrbitEventKind, OrbitStability, Stability};
 // sections) and `axis` (`DiagramAxis`).
 mod atlas;
 mod axis;
+mod curve;
 mod diagram;
 mod frame;
+mod labels;
 mod legend;
 mod marks;
 mod orbits;
-mod style;
+pub mod style;
 mod trajectory;
 
 pub use axis::DiagramAxis;
@@ -207,6 +209,10 @@ pub struct PlotOptions {
     /// Reference curves drawn on top of a bifurcation diagram or an atlas, in the data's
     /// coordinates, each named in the legend — e.g. a closed form to compare with (default none).
     pub overlays: Vec<Overlay>,
+    /// Write each event's parameter value beside its marker (`branch point at 2.5`), in the
+    /// diagrams of branches and of families of periodic orbits (default `false`: names only
+    /// where the figure writes them, the legend tells the markers apart).
+    pub event_values: bool,
 }
 
 /// A named reference curve of [`PlotOptions::overlays`], drawn in black over the data (long
@@ -262,6 +268,7 @@ impl Default for PlotOptions {
             y: DiagramAxis::GammaZ,
             monochrome: false,
             overlays: Vec::new(),
+            event_values: false,
         }
     }
 }

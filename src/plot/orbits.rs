@@ -8,9 +8,13 @@ use std::path::Path;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::frame::{draw_figure, extent, padded, write_svg, Frame, Overlays};
+use super::curve::PxF;
+use super::frame::{draw_figure, extent, float_px, padded, plot_rect, write_svg, Frame, Overlays};
+use super::labels::{value, Rect};
 use super::legend::{draw_legend, legend_width, Entry, Swatch};
-use super::marks::{draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_path, Px};
+use super::marks::{
+    draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_curve, stroke_path, Px,
+};
 use super::style::{
     orbit_color, orbit_event_name, orbit_stroke, orbit_verdict_name, palette, ramp, Stroke,
     ORBIT_KINDS, ORBIT_VERDICTS, PARABOLIC_LINE,
@@ -303,17 +307,28 @@ pub(super) fn family_figure(
                         .map_err(drawing_error)?;
                     continue;
                 }
-                stroke_path(root, &pts, color, orbit_stroke(v))?;
+                let fpx = float_px(chart, &frame);
+                let fine: Vec<PxF> = run.points.iter().map(fpx).collect();
+                stroke_curve(root, &fine, color, orbit_stroke(v))?;
             }
         }
         overlays.draw(root, px)?;
-        let mut names = Vec::new();
+        let (mut names, mut markers) = (Vec::new(), Vec::new());
         for (kind, q) in &events {
             let c = chart.backend_coord(q);
             draw_orbit_event_marker(root, c, *kind)?;
-            names.push((c, orbit_event_name(*kind).to_string()));
+            markers.push(Rect::around(c, 9));
+            let name = orbit_event_name(*kind);
+            names.push((
+                c,
+                if opts.event_values {
+                    format!("{name} at E = {}", value(q.0))
+                } else {
+                    name.to_string()
+                },
+            ));
         }
-        draw_names(root, &names)
+        draw_names(root, &names, &markers, plot_rect(chart, &frame)).map(|_| ())
     })
 }
 
