@@ -4,9 +4,10 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::frame::{clip_polyline, draw_figure, Chart, Frame, Overlays, Polyline};
+use super::frame::{clip_polyline, draw_figure, plot_rect, Chart, Frame, Overlays, Polyline};
 use super::legend::{Entry, Swatch};
-use super::marks::{draw_cross, shade_cell, stroke_boundary, stroke_path, Px, Root};
+use super::marks::{draw_cross, stroke_boundary, stroke_path, Px, Root};
+use super::regions::Regions;
 use super::style::{boundary_color, nonlinear_stroke, KINDS, VERDICTS};
 use super::{drawing_error, label_or, PlotError, PlotOptions};
 use crate::{BoundaryCurve, NonlinearCurve, Stability, StabilityAtlas};
@@ -126,7 +127,19 @@ pub(super) fn atlas_figure(
         let px = |pts: &[(f64, f64)]| -> Vec<Px> {
             pts.iter().map(|p| chart.backend_coord(p)).collect()
         };
-        shade_cells(root, chart, atlas, (&ex, &ey), mono)?;
+        let rect = plot_rect(chart, &frame);
+        let (w, h) = (
+            f64::from((rect.x1 - rect.x0).max(1)),
+            f64::from((rect.y1 - rect.y0).max(1)),
+        );
+        let to_data = |px: f64, py: f64| {
+            (
+                frame.x.0 + (px - f64::from(rect.x0)) / w * (frame.x.1 - frame.x.0),
+                frame.y.1 - (py - f64::from(rect.y0)) / h * (frame.y.1 - frame.y.0),
+            )
+        };
+        Regions::new(atlas, rect, to_data).paint(root, mono)?;
+        draw_crosses(root, chart, atlas, (&ex, &ey))?;
         for (curve, parts) in &curves {
             let parts: Vec<Vec<Px>> = parts.iter().map(|p| px(p)).collect();
             stroke_boundary(root, &parts, curve.kind, mono)?;
@@ -174,44 +187,20 @@ fn draw_nonlinear(
     Ok(())
 }
 
-/// Shades the cells of the grid, whose edges are `ex × ey`, by verdict; a small × in each cell
-/// without a steady motion.
-fn shade_cells(
+/// A small × in each cell of the grid (edges `ex × ey`) without a steady motion.
+fn draw_crosses(
     root: &Root,
     chart: &Chart,
     atlas: &StabilityAtlas,
     (ex, ey): (&[f64], &[f64]),
-    mono: bool,
 ) -> Result<(), PlotError> {
-    // Pixel corners of the cell rectangle [ex[i0], ex[i1]] × [ey[j], ey[j + 1]].
-    let rect = |i0: usize, i1: usize, j: usize| -> (Px, Px) {
-        let a = chart.backend_coord(&(ex[i0], ey[j + 1]));
-        let b = chart.backend_coord(&(ex[i1], ey[j]));
-        (a, b)
-    };
-    let nx = atlas.x.len();
     for (j, row) in atlas.verdicts.iter().enumerate() {
-        // Runs of equal verdict along the row, drawn as one rectangle each.
-        let mut i0 = 0;
-        while i0 < nx {
-            let v = row[i0];
-            let mut i1 = i0 + 1;
-            while i1 < nx && row[i1] == v {
-                i1 += 1;
+        for (i, v) in row.iter().enumerate() {
+            if v.is_none() {
+                let a = chart.backend_coord(&(ex[i], ey[j + 1]));
+                let b = chart.backend_coord(&(ex[i + 1], ey[j]));
+                draw_cross(root, a, b)?;
             }
-            match v {
-                Some(v) => {
-                    let (a, b) = rect(i0, i1, j);
-                    shade_cell(root, a, b, v, mono)?;
-                }
-                None => {
-                    for i in i0..i1 {
-                        let (a, b) = rect(i, i + 1, j);
-                        draw_cross(root, a, b)?;
-                    }
-                }
-            }
-            i0 = i1;
         }
     }
     Ok(())

@@ -212,7 +212,8 @@ pub(super) fn branch_figure(
 
     // The runs as they will be drawn: too short a run (a sample or two at an event, under its
     // marker) is left out, and so from the legend, which lists only what is drawn.
-    let runs: Vec<Run> = drawn_runs(runs, &frame, opts);
+    let at: Vec<(f64, f64)> = events.iter().map(|e| e.1).collect();
+    let runs: Vec<Run> = drawn_runs(runs, &at, &frame, opts);
     let mut legend: Vec<Entry> = VERDICTS
         .iter()
         .filter(|&&v| runs.iter().any(|r| r.verdict == v))
@@ -276,18 +277,28 @@ pub(super) fn branch_figure(
     })
 }
 
-/// The runs long enough to be seen: at least 10 pixels along (over the figure's whole width and
-/// height, as a rough scale), or the whole of their branch.
-fn drawn_runs(runs: Vec<Run>, frame: &Frame, opts: &PlotOptions) -> Vec<Run> {
+/// The runs that show: not those lying wholly under an event's marker (within about 14 pixels
+/// of it: the sample or two where a test is inconclusive exactly at the event), nor fragments
+/// under 4 pixels long. Pixels are estimated from the figure's size (the axes take about 65 % of
+/// its width and 85 % of its height).
+fn drawn_runs(
+    runs: Vec<Run>,
+    events: &[(f64, f64)],
+    frame: &Frame,
+    opts: &PlotOptions,
+) -> Vec<Run> {
     let (sx, sy) = (
-        f64::from(opts.width) / (frame.x.1 - frame.x.0),
-        f64::from(opts.height) / (frame.y.1 - frame.y.0),
+        0.65 * f64::from(opts.width) / (frame.x.1 - frame.x.0),
+        0.85 * f64::from(opts.height) / (frame.y.1 - frame.y.0),
     );
-    let total = |pts: &[(f64, f64)]| -> f64 {
-        pts.windows(2)
-            .map(|w| ((w[1].0 - w[0].0) * sx).hypot((w[1].1 - w[0].1) * sy))
-            .sum()
+    let dist = |a: (f64, f64), b: (f64, f64)| ((a.0 - b.0) * sx).hypot((a.1 - b.1) * sy);
+    let length = |pts: &[(f64, f64)]| -> f64 { pts.windows(2).map(|w| dist(w[0], w[1])).sum() };
+    let under_marker = |pts: &[(f64, f64)]| {
+        events
+            .iter()
+            .any(|&e| pts.iter().all(|&p| dist(p, e) <= 14.0))
     };
-    let keep = |r: &Run| r.whole || total(&r.points) >= 10.0;
-    runs.into_iter().filter(keep).collect()
+    runs.into_iter()
+        .filter(|r| r.whole || (length(&r.points) >= 4.0 && !under_marker(&r.points)))
+        .collect()
 }

@@ -94,6 +94,7 @@ mod labels;
 mod legend;
 mod marks;
 mod orbits;
+mod regions;
 pub mod style;
 mod trajectory;
 
