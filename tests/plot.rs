@@ -244,7 +244,10 @@ impl BoundaryCurveSet {
 fn assert_legend_is_what_is_drawn(svg: &str) {
     let keys = [
         (Stability::SecularlyStable, "secularly_stable"),
-        (Stability::GyroscopicallyStabilized, "gyroscopically_stabilized"),
+        (
+            Stability::GyroscopicallyStabilized,
+            "gyroscopically_stabilized",
+        ),
         (Stability::Unstable, "unstable"),
         (Stability::Degenerate, "degenerate"),
     ];

@@ -9,7 +9,7 @@ use super::curve::PxF;
 use super::frame::{draw_figure, extent, float_px, padded, plot_rect, Frame, Overlays};
 use super::labels::{value, Rect};
 use super::legend::{Entry, Swatch};
-use super::marks::{draw_event_marker, draw_names, draw_rings, stroke_curve, Px};
+use super::marks::{along, draw_event_marker, draw_names, draw_rings, stroke_curve, Px};
 use super::style::{verdict_color, verdict_stroke, KINDS, VERDICTS};
 use super::{drawing_error, PlotError, PlotOptions};
 use crate::{BifurcationDiagram, BranchEvent, BranchSample, EventKind, Stability};
@@ -244,6 +244,7 @@ pub(super) fn branch_figure(
             v
         };
         let fpx = float_px(chart, &frame);
+        let mut curves = Vec::new();
         // Stable runs last, so that they stay on top where branches cross.
         for &v in VERDICTS.iter().rev() {
             for run in runs.iter().filter(|r| r.verdict == v) {
@@ -255,6 +256,7 @@ pub(super) fn branch_figure(
                     continue;
                 }
                 stroke_curve(root, &pts, color, verdict_stroke(v))?;
+                curves.extend(along(&pts));
                 if !run.isolated {
                     draw_rings(root, &px(&run.points), color)?;
                 }
@@ -272,7 +274,7 @@ pub(super) fn branch_figure(
                 labels.push((c, name.clone()));
             }
         }
-        draw_names(root, &labels, &markers, plot_rect(chart, &frame))?;
+        draw_names(root, &labels, &markers, &curves, plot_rect(chart, &frame))?;
         Ok(())
     })
 }

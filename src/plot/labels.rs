@@ -52,11 +52,13 @@ pub(super) fn text_width(text: &str, size: f64) -> i32 {
 }
 
 /// Places each `(anchor, text)` label of a font `size` pixels high inside `area`, clear of the
-/// `markers` and of the labels placed before it. Labels with the same text at (nearly) the same
-/// anchor — the two mirror images of a symmetric event — are written once.
+/// `markers` and of the labels placed before it, and where it can be, of the `curves` (points
+/// along the drawn lines). Labels with the same text at (nearly) the same anchor — the two
+/// mirror images of a symmetric event — are written once.
 pub(super) fn place(
     labels: &[(Px, String)],
     markers: &[Rect],
+    curves: &[Px],
     area: Rect,
     size: f64,
 ) -> Vec<Placed> {
@@ -69,10 +71,14 @@ pub(super) fn place(
             continue;
         }
         let w = text_width(text, size);
-        let free = |r: &Rect| {
+        let free = |r: &Rect, strict: bool| {
             r.inside(&area)
                 && !placed.iter().any(|p| p.rect.overlaps(r, 2))
                 && !markers.iter().any(|m| m.overlaps(r, 1))
+                && !(strict
+                    && curves.iter().any(|&(x, y)| {
+                        x >= r.x0 - 1 && x <= r.x1 + 1 && y >= r.y0 - 1 && y <= r.y1 + 1
+                    }))
         };
         // Top-left corners of the box at distance `d` around the marker: right-above,
         // right-below, left-above, left-below, right, left, above, below.
@@ -96,24 +102,28 @@ pub(super) fn place(
             y1: y + h,
         };
         let mut chosen = None;
-        'rings: for (ring, d) in [8, 20, 36, 56, 80, 110].into_iter().enumerate() {
-            for p in at(d) {
-                let r = rect(p);
-                if free(&r) {
-                    chosen = Some((r, ring > 0));
-                    break 'rings;
+        // Clear of the curves if it can be, else over them; near the marker if it can be, else
+        // the free place of the area nearest it (scanned on a grid of rows).
+        for strict in [true, false] {
+            'rings: for (ring, d) in [8, 20, 36, 56, 80].into_iter().enumerate() {
+                for p in at(d) {
+                    let r = rect(p);
+                    if free(&r, strict) {
+                        chosen = Some((r, ring > 0));
+                        break 'rings;
+                    }
                 }
             }
-        }
-        // Crowded: the free place of the area nearest the marker, scanned on a grid of rows.
-        if chosen.is_none() {
+            if chosen.is_some() {
+                break;
+            }
             let mut best: Option<(i64, Rect)> = None;
             let mut y = area.y0;
             while y + h <= area.y1 {
                 let mut x = area.x0;
                 while x + w <= area.x1 {
                     let r = rect((x, y));
-                    if free(&r) {
+                    if free(&r, strict) {
                         let (dx, dy) = ((x + w / 2 - c.0) as i64, (y + h / 2 - c.1) as i64);
                         let d = dx * dx + dy * dy;
                         if best.is_none_or(|(bd, _)| d < bd) {
@@ -124,7 +134,13 @@ pub(super) fn place(
                 }
                 y += 4;
             }
-            chosen = best.map(|(_, r)| (r, true));
+            // Far from the marker over a curve beats farther still.
+            if let Some((d, r)) = best {
+                if !strict || d < 160 * 160 {
+                    chosen = Some((r, true));
+                    break;
+                }
+            }
         }
         // Nowhere free (more text than room): beside the marker all the same.
         let (rect, leader) = chosen.unwrap_or((rect(at(8)[0]), false));
@@ -168,7 +184,7 @@ mod tests {
             .map(|k| ((300 + 3 * k, 200 + (k % 3)), format!("branch point {k}")))
             .collect();
         let markers: Vec<Rect> = labels.iter().map(|l| Rect::around(l.0, 7)).collect();
-        let placed = place(&labels, &markers, AREA, 15.0);
+        let placed = place(&labels, &markers, &[], AREA, 15.0);
         assert_eq!(placed.len(), 10);
         for (i, a) in placed.iter().enumerate() {
             assert!(a.rect.inside(&AREA));
@@ -193,11 +209,31 @@ mod tests {
     }
 
     #[test]
+    fn a_label_keeps_off_the_curves_where_it_can() {
+        // A horizontal line through the marker and a vertical one: the label goes in a quadrant.
+        let c = (300, 200);
+        let curves: Vec<Px> = (0..600)
+            .map(|x| (x, 200))
+            .chain((0..400).map(|y| (300, y)))
+            .collect();
+        let placed = place(
+            &[(c, "fold".into())],
+            &[Rect::around(c, 7)],
+            &curves,
+            AREA,
+            15.0,
+        );
+        let r = placed[0].rect;
+        assert!(r.x1 < 300 || r.x0 > 300, "{r:?}");
+        assert!(r.y1 < 200 || r.y0 > 200, "{r:?}");
+    }
+
+    #[test]
     fn mirror_images_are_named_once() {
         let labels = vec![
             ((100, 100), "fold".to_string()),
             ((101, 100), "fold".to_string()),
         ];
-        assert_eq!(place(&labels, &[], AREA, 15.0).len(), 1);
+        assert_eq!(place(&labels, &[], &[], AREA, 15.0).len(), 1);
     }
 }

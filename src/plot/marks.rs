@@ -158,10 +158,11 @@ pub(super) fn draw_names(
     root: &Root,
     names: &[(Px, String)],
     markers: &[Rect],
+    curves: &[Px],
     area: Rect,
 ) -> Result<Vec<Placed>, PlotError> {
     let size = font_px(FONT.annotation_pt);
-    let placed = place(names, markers, area, size);
+    let placed = place(names, markers, curves, area, size);
     let font = (FONT.family, size).into_font().color(&BLACK);
     for p in &placed {
         let r = p.rect;
@@ -176,8 +177,10 @@ pub(super) fn draw_names(
             );
             stroke_path(root, &[from, q], RGBColor(110, 110, 110), Stroke::Solid(1))?;
         }
+        // A light ground under the text itself (narrower than the box kept clear for it).
+        let ground = (0.55 * size * p.text.chars().count() as f64).ceil() as i32;
         root.draw(&Rectangle::new(
-            [(r.x0 - 1, r.y0), (r.x1 + 1, r.y1)],
+            [(r.x0 - 1, r.y0 + 1), (r.x0 + ground + 1, r.y1 - 1)],
             WHITE.mix(0.8).filled(),
         ))
         .map_err(drawing_error)?;
@@ -185,6 +188,26 @@ pub(super) fn draw_names(
             .map_err(drawing_error)?;
     }
     Ok(placed)
+}
+
+/// Points every few pixels along the polyline (fractional pixels), for labels to keep off.
+pub(super) fn along(pts: &[PxF]) -> Vec<Px> {
+    let mut out = Vec::new();
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let n = ((b.0 - a.0).hypot(b.1 - a.1) / 4.0).ceil().max(1.0) as usize;
+        for k in 0..n {
+            let t = k as f64 / n as f64;
+            out.push((
+                (a.0 + t * (b.0 - a.0)).round() as i32,
+                (a.1 + t * (b.1 - a.1)).round() as i32,
+            ));
+        }
+    }
+    if let Some(p) = pts.last() {
+        out.push((p.0.round() as i32, p.1.round() as i32));
+    }
+    out
 }
 
 /// Strokes a curve through the fractional-pixel samples `pts`, smoothed ([`smooth`]) and with

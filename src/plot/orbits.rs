@@ -13,7 +13,7 @@ use super::frame::{draw_figure, extent, float_px, padded, plot_rect, write_svg, 
 use super::labels::{value, Rect};
 use super::legend::{draw_legend, legend_width, Entry, Swatch};
 use super::marks::{
-    draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_curve, stroke_path, Px,
+    along, draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_curve, stroke_path, Px,
 };
 use super::style::{
     orbit_color, orbit_event_name, orbit_stroke, orbit_verdict_name, palette, ramp, Stroke,
@@ -297,6 +297,7 @@ pub(super) fn family_figure(
                     .map_err(drawing_error)?;
             }
         }
+        let mut curves = Vec::new();
         // Elliptic runs last, so that they stay on top.
         for &v in ORBIT_VERDICTS.iter().rev() {
             for run in runs.iter().filter(|r| r.verdict == v) {
@@ -310,6 +311,7 @@ pub(super) fn family_figure(
                 let fpx = float_px(chart, &frame);
                 let fine: Vec<PxF> = run.points.iter().map(fpx).collect();
                 stroke_curve(root, &fine, color, orbit_stroke(v))?;
+                curves.extend(along(&fine));
             }
         }
         overlays.draw(root, px)?;
@@ -328,7 +330,7 @@ pub(super) fn family_figure(
                 },
             ));
         }
-        draw_names(root, &names, &markers, plot_rect(chart, &frame)).map(|_| ())
+        draw_names(root, &names, &markers, &curves, plot_rect(chart, &frame)).map(|_| ())
     })
 }
 
