@@ -87,6 +87,7 @@ use crate::{EventKind, OrbitEventKind, OrbitStability, Stability};
 // sections) and `axis` (`DiagramAxis`).
 mod atlas;
 mod axis;
+mod circles;
 mod curve;
 mod diagram;
 mod frame;
@@ -99,6 +100,7 @@ pub mod style;
 mod trajectory;
 
 pub use axis::DiagramAxis;
+pub use circles::with_circle_verdicts;
 pub use orbits::stability_index_axis;
 pub use trajectory::{apex_locus_svg, apex_path, time_histories_svg};
 
