@@ -246,6 +246,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             ),
             x_label: "cyclic momentum p_ψ".into(),
             y: DiagramAxis::Tilt,
+            event_values: true,
             overlays: vec![Overlay {
                 label: "tilted circles, closed form".into(),
                 points: tilted,

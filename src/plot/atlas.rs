@@ -7,10 +7,11 @@ use plotters::prelude::*;
 use super::frame::{clip_polyline, draw_figure, plot_rect, Chart, Frame, Overlays, Polyline};
 use super::legend::{Entry, Swatch};
 use super::marks::{draw_cross, stroke_boundary, stroke_path, Px, Root};
+use super::labels::Rect;
 use super::regions::Regions;
 use super::style::{boundary_color, nonlinear_stroke, KINDS, VERDICTS};
 use super::{drawing_error, label_or, PlotError, PlotOptions};
-use crate::{BoundaryCurve, NonlinearCurve, Stability, StabilityAtlas};
+use crate::{BoundaryCurve, NonlinearCurve, StabilityAtlas};
 
 /// Cell edges around grid nodes: midpoints between nodes, the end nodes themselves at the ends.
 fn edges(nodes: &[f64]) -> Vec<f64> {
@@ -66,10 +67,28 @@ pub(super) fn atlas_figure(
     };
     let mono = opts.monochrome;
 
-    let occurs = |v: Option<Stability>| atlas.verdicts.iter().flatten().any(|&c| c == v);
+    // The verdicts whose regions show (a node alone on a boundary is cut off on every side and
+    // shows nowhere, or in a sliver under the curve): the regions at about the size of the axes (the legend, which takes its
+    // room, comes first).
+    let nominal = Rect {
+        x0: 0,
+        y0: 0,
+        x1: (0.6 * f64::from(opts.width)) as i32,
+        y1: (0.8 * f64::from(opts.height)) as i32,
+    };
+    let (nw, nh) = (f64::from(nominal.x1), f64::from(nominal.y1));
+    let shown = Regions::new(atlas, nominal, |px, py| {
+        (
+            frame.x.0 + px / nw * (frame.x.1 - frame.x.0),
+            frame.y.1 - py / nh * (frame.y.1 - frame.y.0),
+        )
+    })
+    // A sliver along a boundary curve (a node just off it, under the curve's white band) is no
+    // region a reader sees: at least 1/2000 of the axes, and 60 pixels.
+    .shown(((nominal.x1 * nominal.y1) as usize / 2000).max(60));
     let mut legend: Vec<Entry> = VERDICTS
         .iter()
-        .filter(|&&v| occurs(Some(v)))
+        .filter(|&&v| shown.contains(&v))
         .map(|&v| (Swatch::Cell(Some(v)), v.to_string()))
         .collect();
     // A missing verdict is either no steady motion (beyond a fold) or the motion lost along

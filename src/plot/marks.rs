@@ -178,7 +178,7 @@ pub(super) fn draw_names(
             stroke_path(root, &[from, q], RGBColor(110, 110, 110), Stroke::Solid(1))?;
         }
         // A light ground under the text itself (narrower than the box kept clear for it).
-        let ground = (0.55 * size * p.text.chars().count() as f64).ceil() as i32;
+        let ground = (0.5 * size * p.text.chars().count() as f64).ceil() as i32;
         root.draw(&Rectangle::new(
             [(r.x0 - 1, r.y0 + 1), (r.x0 + ground + 1, r.y1 - 1)],
             WHITE.mix(0.8).filled(),

@@ -152,6 +152,20 @@ impl Regions {
         Regions { rect, w, codes }
     }
 
+    /// The verdicts with at least `min` pixels.
+    pub(super) fn shown(&self, min: usize) -> Vec<Stability> {
+        let mut count = [0usize; VERDICTS.len() + 1];
+        for &c in &self.codes {
+            count[c as usize] += 1;
+        }
+        VERDICTS
+            .iter()
+            .zip(count)
+            .filter(|&(_, n)| n >= min)
+            .map(|(&v, _)| v)
+            .collect()
+    }
+
     fn at(&self, px: i32, py: i32) -> u8 {
         let (c, r) = ((px - self.rect.x0) as usize, (py - self.rect.y0) as usize);
         self.codes[r * self.w + c]
