@@ -1473,3 +1473,73 @@ fn figures_of_a_computed_family() {
         "one mark per fixed point, and the legend's"
     );
 }
+
+// --- Event labels: placed without overlap, with values on request -------------------------------
+
+/// The boxes of the event labels (the `DejaVu Sans` texts of the annotation size, `7.5 pt` at
+/// 2 px a point): top-left corner at (x, y), width 0.58 em a character (DejaVu Sans averages
+/// less), one em high.
+fn label_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
+    let size = 2.0 * look_font_annotation();
+    svg.split("<text")
+        .skip(1)
+        .filter(|t| t.contains("font-family=\"DejaVu Sans\""))
+        .filter_map(|t| {
+            let attr = |name: &str| -> Option<f64> {
+                let i = t.find(&format!(" {name}=\""))? + name.len() + 3;
+                t[i..].split('"').next()?.parse().ok()
+            };
+            let (x, y, fs) = (attr("x")?, attr("y")?, attr("font-size")?);
+            assert!((fs - size).abs() < 1e-6, "annotation at {fs} px, not {size}");
+            let body = &t[t.find('>')? + 1..];
+            let text = body[..body.find("</text>")?].trim().to_string();
+            let w = 0.58 * fs * text.chars().count() as f64;
+            Some((text, [x, y, x + w, y + fs]))
+        })
+        .collect()
+}
+
+fn look_font_annotation() -> f64 {
+    routh::style::FONT.annotation_pt
+}
+
+#[test]
+fn event_labels_do_not_overlap_and_carry_their_values() {
+    // Six events within a few pixels of one another on the upright branch: the old names stacked
+    // in one column over their markers and overlapped.
+    let mut d = full_diagram();
+    let base = d.events[1].clone();
+    for k in 0..5 {
+        let mut e = base.clone();
+        e.s = 4.0 + 0.02 * (k + 1) as f64;
+        d.events.push(e);
+    }
+    // A mirror image of the fold (the same kind at the same point): named once.
+    let fold = d.events[2].clone();
+    d.events.push(fold);
+    d.events.sort_by(|a, b| a.s.total_cmp(&b.s));
+    let path = out("labels.svg");
+    let opts = PlotOptions {
+        event_values: true,
+        ..PlotOptions::default()
+    };
+    energy_momentum_svg(&d, &path, &opts).unwrap();
+    let svg = read_svg(&path);
+    let boxes = label_boxes(&svg);
+    assert_eq!(boxes.len(), d.events.len() - 1, "{boxes:?}");
+    for (i, (ta, a)) in boxes.iter().enumerate() {
+        for (tb, b) in &boxes[i + 1..] {
+            let apart = a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1];
+            assert!(apart, "{ta} {a:?} overlaps {tb} {b:?}");
+        }
+    }
+    // Each carries its value: the branch point at s = 4 and the fold at s = 5.
+    let texts: Vec<&str> = boxes.iter().map(|b| b.0.as_str()).collect();
+    assert!(texts.contains(&"branch point at 4"), "{texts:?}");
+    assert!(texts.contains(&"fold at 5"), "{texts:?}");
+    assert!(texts.contains(&"branch point at 4.1"), "{texts:?}");
+    // Without `event_values` the bifurcation diagram writes no label at all (the legend names
+    // the markers).
+    bifurcation_diagram_svg(&d, &path, &PlotOptions::default()).unwrap();
+    assert!(label_boxes(&read_svg(&path)).is_empty());
+}

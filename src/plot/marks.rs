@@ -9,7 +9,7 @@ use super::curve::{dashes, smooth, PxF};
 use super::labels::{place, Placed, Rect};
 use super::style::BOUNDARY_UNDERLAY;
 use super::style::{boundary_color, boundary_stroke, cell_fill, Pattern, Stroke};
-use super::style::{font_px, FONT, HATCH_INK, HATCH_SPACING};
+use super::style::{font_px, plotters_size, FONT, HATCH_INK, HATCH_SPACING};
 use super::{drawing_error, PlotError};
 use crate::{EventKind, OrbitEventKind, Stability};
 
@@ -163,7 +163,7 @@ pub(super) fn draw_names(
 ) -> Result<Vec<Placed>, PlotError> {
     let size = font_px(FONT.annotation_pt);
     let placed = place(names, markers, curves, area, size);
-    let font = (FONT.family, size).into_font().color(&BLACK);
+    let font = (FONT.family, plotters_size(size)).into_font().color(&BLACK);
     for p in &placed {
         let r = p.rect;
         if p.leader {
@@ -178,7 +178,7 @@ pub(super) fn draw_names(
             stroke_path(root, &[from, q], RGBColor(110, 110, 110), Stroke::Solid(1))?;
         }
         // A light ground under the text itself (narrower than the box kept clear for it).
-        let ground = (0.5 * size * p.text.chars().count() as f64).ceil() as i32;
+        let ground = (0.56 * size * p.text.chars().count() as f64).ceil() as i32;
         root.draw(&Rectangle::new(
             [(r.x0 - 1, r.y0 + 1), (r.x0 + ground + 1, r.y1 - 1)],
             WHITE.mix(0.8).filled(),

@@ -557,11 +557,16 @@ pub(super) fn sphere_figure(
         let h = opts.height as i32;
         let radius = ((left_w - 60).min(h - top - 30) / 2).max(20);
         let centre = (left_w / 2, top + (h - top) / 2);
-        let to_px = |g: &Vector3<f64>| -> Px {
+        // In fractional pixels: the curves are smoothed before they are rounded.
+        let to_fpx = |g: &Vector3<f64>| -> PxF {
             (
-                centre.0 + (radius as f64 * g.dot(&r)).round() as i32,
-                centre.1 - (radius as f64 * g.dot(&u)).round() as i32,
+                f64::from(centre.0) + radius as f64 * g.dot(&r),
+                f64::from(centre.1) - radius as f64 * g.dot(&u),
             )
+        };
+        let to_px = |g: &Vector3<f64>| -> Px {
+            let (x, y) = to_fpx(g);
+            (x.round() as i32, y.round() as i32)
         };
         // The principal planes, then the limb.
         for i in 0..3 {
@@ -574,7 +579,7 @@ pub(super) fn sphere_figure(
                     a * t.cos() + c * t.sin()
                 })
                 .collect();
-            draw_on_sphere(root, &circle, &w, &to_px, GRID, 1)?;
+            draw_on_sphere(root, &circle, &w, &to_fpx, GRID, 1)?;
         }
         root.draw(&Circle::new(centre, radius as u32, BLACK.stroke_width(1)))
             .map_err(drawing_error)?;
@@ -600,7 +605,7 @@ pub(super) fn sphere_figure(
         }
         for (k, t) in paths.iter().enumerate() {
             let pts: Vec<Vector3<f64>> = t.gamma.iter().map(|g| g.normalize()).collect();
-            draw_on_sphere(root, &pts, &w, &to_px, ramp(k, n, mono), 2)?;
+            draw_on_sphere(root, &pts, &w, &to_fpx, ramp(k, n, mono), 2)?;
         }
         draw_legend(root, (left_w + 10, top), &legend, mono)
     })
@@ -616,11 +621,11 @@ fn draw_on_sphere(
     root: &super::marks::Root,
     pts: &[Vector3<f64>],
     w: &Vector3<f64>,
-    to_px: &impl Fn(&Vector3<f64>) -> Px,
+    to_px: &impl Fn(&Vector3<f64>) -> PxF,
     color: RGBColor,
     width: u32,
 ) -> Result<(), PlotError> {
-    let mut parts: Vec<(bool, Vec<Px>)> = Vec::new();
+    let mut parts: Vec<(bool, Vec<PxF>)> = Vec::new();
     let mut prev: Option<(Vector3<f64>, f64)> = None;
     for p in pts {
         let d = p.dot(w);
@@ -637,10 +642,9 @@ fn draw_on_sphere(
         }
         prev = Some((*p, d));
     }
-    for (near, mut part) in parts {
-        part.dedup();
+    for (near, part) in parts {
         let stroke = if near { Stroke::Solid(width) } else { FAR_SIDE };
-        stroke_path(root, &part, color, stroke)?;
+        stroke_curve(root, &part, color, stroke)?;
     }
     Ok(())
 }

@@ -46,6 +46,12 @@ pub(super) fn font_px(pt: f64) -> f64 {
     pt * PX_PER_PT
 }
 
+/// The size to ask plotters for, to get a font `px` pixels high in the SVG (plotters writes
+/// `font-size` as the size asked for over 1.24).
+pub(super) fn plotters_size(px: f64) -> f64 {
+    1.24 * px
+}
+
 /// The stroke of a look, in pixels.
 fn stroke_of(l: &Look) -> Stroke {
     match l.dash_pt {
