@@ -101,6 +101,12 @@ pub const OKABE_ITO: [&str; 8] = [
     "#000000", "#E69F00", "#56B4E9", "#009E73", "#F0E442", "#0072B2", "#D55E00", "#CC79A7",
 ];
 
+/// The colours of several orbits drawn together (a Poincaré section's, in turn): the Okabe–Ito
+/// colours but yellow, too light on white.
+pub const PALETTE: [&str; 7] = [
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000",
+];
+
 /// Pixels of an SVG per point of [`Look::width_pt`] and [`FONT`] (an 800-pixel-wide SVG is a
 /// figure 5.6 in wide).
 pub const PX_PER_PT: f64 = 2.0;

@@ -1490,7 +1490,10 @@ fn label_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
                 t[i..].split('"').next()?.parse().ok()
             };
             let (x, y, fs) = (attr("x")?, attr("y")?, attr("font-size")?);
-            assert!((fs - size).abs() < 1e-6, "annotation at {fs} px, not {size}");
+            assert!(
+                (fs - size).abs() < 1e-6,
+                "annotation at {fs} px, not {size}"
+            );
             let body = &t[t.find('>')? + 1..];
             let text = body[..body.find("</text>")?].trim().to_string();
             let w = 0.58 * fs * text.chars().count() as f64;

@@ -8,7 +8,8 @@ use pyo3::types::PyDict;
 /// (`#RRGGBB`), `width` (points), `dash` ((on, off) in points, or None: solid), `marker`
 /// (matplotlib's letter, `"O"` an open circle), `fill` and `hatch` (atlas regions) for the groups
 /// "verdict", "event", "boundary", "orbit_verdict", "orbit_event" and "reference"; `style["font"]`
-/// the family and sizes (points), `style["column_width"]` a journal column's width in inches.
+/// the family and sizes (points), `style["column_width"]` a journal column's width in inches,
+/// `style["palette"]` the colours of several orbits drawn together.
 ///
 /// >>> routh.plot_style()["verdict"]["unstable"]["color"]
 /// '#D55E00'
@@ -44,5 +45,6 @@ pub fn plot_style(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     font.set_item("title", f.title_pt)?;
     out.set_item("font", font)?;
     out.set_item("column_width", routh::style::COLUMN_WIDTH_IN)?;
+    out.set_item("palette", routh::style::PALETTE.to_vec())?;
     Ok(out)
 }

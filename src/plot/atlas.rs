@@ -5,9 +5,9 @@ use std::path::Path;
 use plotters::prelude::*;
 
 use super::frame::{clip_polyline, draw_figure, plot_rect, Chart, Frame, Overlays, Polyline};
+use super::labels::Rect;
 use super::legend::{Entry, Swatch};
 use super::marks::{draw_cross, stroke_boundary, stroke_path, Px, Root};
-use super::labels::Rect;
 use super::regions::Regions;
 use super::style::{boundary_color, nonlinear_stroke, KINDS, VERDICTS};
 use super::{drawing_error, label_or, PlotError, PlotOptions};

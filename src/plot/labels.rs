@@ -75,8 +75,8 @@ pub(super) fn place(
             r.inside(&area)
                 && !placed.iter().any(|p| p.rect.overlaps(r, 2))
                 && !markers.iter().any(|m| m.overlaps(r, 1))
-                && !(strict
-                    && curves.iter().any(|&(x, y)| {
+                && (!strict
+                    || !curves.iter().any(|&(x, y)| {
                         x >= r.x0 - 1 && x <= r.x1 + 1 && y >= r.y0 - 1 && y <= r.y1 + 1
                     }))
         };

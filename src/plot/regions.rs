@@ -8,10 +8,13 @@
 use plotters::prelude::*;
 
 use super::labels::Rect;
-use super::marks::Root;
+use super::marks::{Px, Root};
 use super::style::{cell_fill, Pattern, HATCH_INK, HATCH_SPACING, VERDICTS};
 use super::{drawing_error, PlotError};
 use crate::{Stability, StabilityAtlas};
+
+/// A segment of a boundary curve, in data coordinates.
+type Segment = ((f64, f64), (f64, f64));
 
 /// The code of "no verdict" in [`Regions::codes`].
 const NONE: u8 = VERDICTS.len() as u8;
@@ -69,7 +72,7 @@ impl Regions {
         let (nx, ny) = (x.len(), y.len());
         let (cx, cy) = (nx.saturating_sub(1).max(1), ny.saturating_sub(1).max(1));
         // The boundary segments met by each cell of the grid.
-        let mut buckets: Vec<Vec<((f64, f64), (f64, f64))>> = vec![Vec::new(); cx * cy];
+        let mut buckets: Vec<Vec<Segment>> = vec![Vec::new(); cx * cy];
         if nx > 1 && ny > 1 {
             for curve in &atlas.boundaries {
                 for s in curve.points.windows(2) {
@@ -236,8 +239,8 @@ impl Regions {
         let line = |pts: &mut dyn Iterator<Item = (i32, i32)>,
                     on: &dyn Fn(Pattern) -> bool|
          -> Result<(), PlotError> {
-            let mut seg: Option<((i32, i32), (i32, i32))> = None;
-            let flush = |seg: &mut Option<((i32, i32), (i32, i32))>| -> Result<(), PlotError> {
+            let mut seg: Option<(Px, Px)> = None;
+            let flush = |seg: &mut Option<(Px, Px)>| -> Result<(), PlotError> {
                 if let Some((a, b)) = seg.take() {
                     if a != b {
                         root.draw(&PathElement::new(vec![a, b], style))

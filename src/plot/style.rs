@@ -255,17 +255,19 @@ pub(super) fn orbit_event_name(k: OrbitEventKind) -> &'static str {
 /// The grey of the reference lines `k = ±1` of a stability diagram of periodic orbits.
 pub(super) const PARABOLIC_LINE: RGBColor = rgb("#646464");
 
-/// The Okabe–Ito colours but yellow (too light on white), for one curve or cloud of points per
-/// orbit (in turn); black in a monochrome figure.
-const PALETTE: [RGBColor; 7] = [
-    rgb("#0072B2"),
-    rgb("#D55E00"),
-    rgb("#009E73"),
-    rgb("#CC79A7"),
-    rgb("#E69F00"),
-    rgb("#56B4E9"),
-    rgb("#000000"),
-];
+/// [`crate::style::PALETTE`] as plotters' colours; black in a monochrome figure.
+const PALETTE: [RGBColor; 7] = {
+    let p = crate::style::PALETTE;
+    [
+        rgb(p[0]),
+        rgb(p[1]),
+        rgb(p[2]),
+        rgb(p[3]),
+        rgb(p[4]),
+        rgb(p[5]),
+        rgb(p[6]),
+    ]
+};
 
 /// The colour of the `k`-th of several orbits, in turn.
 pub(super) fn palette(k: usize, mono: bool) -> RGBColor {

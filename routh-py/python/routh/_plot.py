@@ -458,7 +458,8 @@ def plot_apex(trajectory, ax=None, axis=(0.0, 0.0, 1.0)):
     ax.set_aspect("equal")
     ax.set_xlabel("x (space, horizontal)")
     ax.set_ylabel("y (space, horizontal)")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=FONT["legend"])
+    _fonts(ax)
     return ax
 
 
@@ -539,16 +540,20 @@ def plot_section(section, ax=None, fixed_points=None):
     M_n), and `fixed_points` ((k, 2): a periodic orbit's crossings) as larger black marks.
     Returns the axes."""
     ax = _axes(ax)
-    for pts in section.points:
+    palette = THE_STYLE["palette"]
+    for k, pts in enumerate(section.points):
         pts = np.asarray(pts)
         if len(pts):
-            ax.plot(pts[:, 0], pts[:, 1], linestyle="none", marker=".", markersize=1.5)
+            ax.plot(pts[:, 0], pts[:, 1], linestyle="none", marker=".", markersize=1.5,
+                    color=palette[k % len(palette)])
     fp = None if fixed_points is None else np.asarray(fixed_points, dtype=float).reshape(-1, 2)
     if fp is not None and len(fp):
         ax.plot(fp[:, 0], fp[:, 1], linestyle="none", marker="x", markersize=8, color="k",
                 label="periodic orbit")
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=FONT["legend"])
     ax.set_xlabel("θ")
     ax.set_ylabel("M_n")
-    ax.set_title(f"p_ψ = {section.p_psi:g}, E = {section.energy:g}", fontsize=9)
+    ax.set_title(f"p_ψ = {_value(section.p_psi)}, E = {_value(section.energy)}",
+                 fontsize=FONT["title"])
+    _fonts(ax)
     return ax
