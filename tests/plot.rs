@@ -304,6 +304,14 @@ fn bifurcation_diagram_has_every_style_marker_and_label() {
     assert!(dashes > 20, "{dashes} unstable segments");
     // Stable runs are one polyline each: thick for secular, thin for gyroscopic.
     assert!(strokes(&svg, c("verdict", "secularly_stable"), 4) >= 3);
+    // Smooth at print resolution: the curves are written in fractional pixels, not rounded to
+    // whole ones, and the circles' branch (few samples, bending) in many short pieces.
+    let runs = polylines(&svg, c("verdict", "secularly_stable"), 4);
+    assert!(runs
+        .iter()
+        .flatten()
+        .any(|p| p.0.fract() != 0.0 || p.1.fract() != 0.0));
+    assert!(runs.iter().map(Vec::len).max().unwrap() > 2 * 41);
     assert!(strokes(&svg, c("verdict", "gyroscopically_stabilized"), 2) >= 1);
     // The event markers: a triangle (polygon), a circle, a square (rect).
     assert!(svg.contains("<polygon"));

@@ -264,7 +264,9 @@ def test_atlas_has_a_legend_of_what_it_draws_and_named_axes(top):
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("mgl", "p_ψ")
     legend = ax.figure.legends[0] if ax.figure.legends else ax.get_legend()
     listed = {t.get_text() for t in legend.get_texts()}
-    present = {v for row in atlas.verdicts for v in row if v is not None}
+    # A verdict at a node or two alone shows as no region, and is not listed.
+    cells = [v for row in atlas.verdicts for v in row if v is not None]
+    present = {v for v in set(cells) if cells.count(v) >= max(2, 81 // 500)}
     assert {THE_STYLE["verdict"][v]["label"] for v in present} <= listed
     absent = set(routh.VERDICTS) - present
     assert not {THE_STYLE["verdict"][v]["label"] for v in absent} & listed

@@ -4,7 +4,10 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::frame::{clip_polyline, draw_figure, plot_rect, Chart, Frame, Overlays, Polyline};
+use super::curve::PxF;
+use super::frame::{
+    clip_polyline, draw_figure, float_px, plot_rect, Chart, Frame, Overlays, Polyline,
+};
 use super::labels::Rect;
 use super::legend::{Entry, Swatch};
 use super::marks::{draw_cross, stroke_boundary, stroke_path, Px, Root};
@@ -159,8 +162,9 @@ pub(super) fn atlas_figure(
         };
         Regions::new(atlas, rect, to_data).paint(root, mono)?;
         draw_crosses(root, chart, atlas, (&ex, &ey))?;
+        let fpx = float_px(chart, &frame);
         for (curve, parts) in &curves {
-            let parts: Vec<Vec<Px>> = parts.iter().map(|p| px(p)).collect();
+            let parts: Vec<Vec<PxF>> = parts.iter().map(|p| p.iter().map(&fpx).collect()).collect();
             stroke_boundary(root, &parts, curve.kind, mono)?;
         }
         draw_nonlinear(root, chart, &nonlinear, mono)?;

@@ -11,7 +11,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::curve::PxF;
 use super::labels::Rect;
 use super::legend::{draw_legend, legend_width, Entry, Swatch};
-use super::marks::{stroke_path, Px, Root};
+use super::marks::{fractional_polylines, reset_fine, stroke_path, Px, Root};
 use super::style::{overlay_stroke, Stroke};
 use super::{drawing_error, PlotError, PlotOptions};
 
@@ -68,13 +68,14 @@ pub(super) fn write_svg(
     draw: impl FnOnce(&Root) -> Result<(), PlotError>,
 ) -> Result<(), PlotError> {
     let mut svg = String::new();
+    reset_fine();
     {
         let root = SVGBackend::with_string(&mut svg, (opts.width, opts.height)).into_drawing_area();
         root.fill(&WHITE).map_err(drawing_error)?;
         draw(&root)?;
         root.present().map_err(drawing_error)?;
     }
-    write_whole(path, svg.as_bytes())
+    write_whole(path, fractional_polylines(&svg).as_bytes())
 }
 
 /// Writes `bytes` to `path` whole or not at all: into a temporary file beside it (same

@@ -1,6 +1,8 @@
 //! Marks drawn in pixels: stroked paths, rings along a branch, event markers, shaded cells and
 //! the × of a missing steady motion.
 
+use std::cell::RefCell;
+
 use plotters::coord::Shift;
 use plotters::element::{DashedPathElement, DottedPathElement};
 use plotters::prelude::*;
@@ -47,15 +49,15 @@ pub(super) fn stroke_path(
 /// then each in its own style.
 pub(super) fn stroke_boundary(
     root: &Root,
-    parts: &[Vec<Px>],
+    parts: &[Vec<PxF>],
     kind: EventKind,
     mono: bool,
 ) -> Result<(), PlotError> {
     for part in parts {
-        stroke_path(root, part, WHITE, BOUNDARY_UNDERLAY)?;
+        stroke_curve(root, part, WHITE, BOUNDARY_UNDERLAY)?;
     }
     for part in parts {
-        stroke_path(
+        stroke_curve(
             root,
             part,
             boundary_color(kind, mono),
@@ -210,6 +212,76 @@ pub(super) fn along(pts: &[PxF]) -> Vec<Px> {
     out
 }
 
+thread_local! {
+    /// The polylines in fractional pixels of the figure being drawn on this thread (plotters'
+    /// SVG backend writes whole pixels only), each put in place of its placeholder by
+    /// [`fractional_polylines`] once the figure is drawn.
+    static FINE: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The text of the placeholder of the `k`-th fine polyline.
+fn fine_tag(k: usize) -> String {
+    format!("routh-fine-polyline-{k}.")
+}
+
+/// Empties the store of fine polylines (before a figure is drawn).
+pub(super) fn reset_fine() {
+    FINE.with(|f| f.borrow_mut().clear());
+}
+
+/// Strokes the polyline `pts` in fractional pixels, solid: a placeholder now, the polyline
+/// itself (coordinates to 1/100 pixel, round joins) in the SVG written.
+fn stroke_fine(root: &Root, pts: &[PxF], color: RGBColor, width: u32) -> Result<(), PlotError> {
+    if pts.len() < 2 {
+        return Ok(());
+    }
+    let mut points = String::new();
+    for p in pts {
+        points.push_str(&format!("{:.2},{:.2} ", p.0, p.1));
+    }
+    let RGBColor(r, g, b) = color;
+    let line = format!(
+        "<polyline fill=\"none\" opacity=\"1\" stroke=\"#{r:02X}{g:02X}{b:02X}\" \
+         stroke-width=\"{width}\" stroke-linejoin=\"round\" stroke-linecap=\"butt\" \
+         points=\"{points}\"/>"
+    );
+    let k = FINE.with(|f| {
+        let mut f = f.borrow_mut();
+        f.push(line);
+        f.len() - 1
+    });
+    root.draw(&Text::new(
+        fine_tag(k),
+        (0, 0),
+        ("sans-serif", 1).into_font(),
+    ))
+    .map_err(drawing_error)
+}
+
+/// The SVG with each placeholder of [`stroke_fine`] (a `<text>` element) replaced by its
+/// polyline, in the order drawn; empties the store.
+pub(super) fn fractional_polylines(svg: &str) -> String {
+    let lines = FINE.with(|f| std::mem::take(&mut *f.borrow_mut()));
+    if lines.is_empty() {
+        return svg.to_string();
+    }
+    let mut out = String::with_capacity(svg.len() + 64 * lines.len());
+    let mut rest = svg;
+    for (k, line) in lines.iter().enumerate() {
+        let tag = fine_tag(k);
+        let Some(at) = rest.find(&tag) else { continue };
+        let (Some(start), Some(end)) = (rest[..at].rfind("<text"), rest[at..].find("</text>"))
+        else {
+            continue;
+        };
+        out.push_str(&rest[..start]);
+        out.push_str(line);
+        rest = &rest[at + end + "</text>".len()..];
+    }
+    out.push_str(rest);
+    out
+}
+
 /// Strokes a curve through the fractional-pixel samples `pts`, smoothed ([`smooth`]) and with
 /// its dashes laid along its whole length ([`dashes`]).
 pub(super) fn stroke_curve(
@@ -219,22 +291,11 @@ pub(super) fn stroke_curve(
     stroke: Stroke,
 ) -> Result<(), PlotError> {
     let smooth = smooth(pts);
-    let round = |v: &[PxF]| -> Vec<Px> {
-        let mut out: Vec<Px> = v
-            .iter()
-            .map(|p| (p.0.round() as i32, p.1.round() as i32))
-            .collect();
-        out.dedup();
-        out
-    };
     match stroke {
-        Stroke::Solid(_) => stroke_path(root, &round(&smooth), color, stroke),
+        Stroke::Solid(w) => stroke_fine(root, &smooth, color, w),
         Stroke::Dashed(w, dash, gap) => {
             for d in dashes(&smooth, dash as f64, gap as f64) {
-                let d = round(&d);
-                if d.len() >= 2 {
-                    stroke_path(root, &d, color, Stroke::Solid(w))?;
-                }
+                stroke_fine(root, &d, color, w)?;
             }
             Ok(())
         }

@@ -348,9 +348,12 @@ def plot_atlas(atlas, ax=None, xlabel="first parameter", ylabel="second paramete
 
     handles = []
     with mpl.rc_context({"hatch.color": "#8C8C8C", "hatch.linewidth": 0.5}):
+        # A verdict seen at a node or two alone (on a boundary, where a test is inconclusive)
+        # shows as no region: it is neither filled nor listed.
+        few = max(2, codes.size // 500)
         for k, n in enumerate(names):
             mask = codes == k
-            if not mask.any():
+            if mask.sum() < few:
                 continue
             hatch = THE_STYLE["verdict"][n]["hatch"] or None
             # Over the cells (pcolormesh, the data as they are), each region's tint and hatch
