@@ -11,7 +11,7 @@ use super::curve::{dashes, smooth, PxF};
 use super::labels::{place, Placed, Rect};
 use super::style::BOUNDARY_UNDERLAY;
 use super::style::{boundary_color, boundary_stroke, cell_fill, Pattern, Stroke};
-use super::style::{font_px, plotters_size, FONT, HATCH_INK, HATCH_SPACING};
+use super::style::{font_px, written_size, FONT, HATCH_INK, HATCH_SPACING};
 use super::{drawing_error, PlotError};
 use crate::{EventKind, OrbitEventKind, Stability};
 
@@ -163,9 +163,12 @@ pub(super) fn draw_names(
     curves: &[Px],
     area: Rect,
 ) -> Result<Vec<Placed>, PlotError> {
-    let size = font_px(FONT.annotation_pt);
+    // Asked for at the style's size in pixels, as every font of the SVGs: plotters writes it
+    // 1.24 times smaller, and the labels are placed at the size written.
+    let asked = font_px(FONT.annotation_pt);
+    let size = written_size(asked);
     let placed = place(names, markers, curves, area, size);
-    let font = (FONT.family, plotters_size(size)).into_font().color(&BLACK);
+    let font = (FONT.family, asked).into_font().color(&BLACK);
     for p in &placed {
         let r = p.rect;
         if p.leader {

@@ -46,10 +46,9 @@ pub(super) fn font_px(pt: f64) -> f64 {
     pt * PX_PER_PT
 }
 
-/// The size to ask plotters for, to get a font `px` pixels high in the SVG (plotters writes
-/// `font-size` as the size asked for over 1.24).
-pub(super) fn plotters_size(px: f64) -> f64 {
-    1.24 * px
+/// The `font-size` plotters writes in the SVG for a font asked for at `px` (over 1.24).
+pub(super) fn written_size(px: f64) -> f64 {
+    px / 1.24
 }
 
 /// The stroke of a look, in pixels.
