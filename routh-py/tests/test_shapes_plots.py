@@ -287,3 +287,27 @@ def test_figures_save_as_pdf_png_and_svg_at_column_width(top, tmp_path):
         assert path.stat().st_size > 1000
     assert (tmp_path / "d.pdf").read_bytes().startswith(b"%PDF")
     plt.close("all")
+
+
+def test_mirror_image_events_are_named_once_and_crowded_labels_kept_apart():
+    plt, _ = _mpl()
+    from matplotlib.text import Text
+
+    from routh._plot import _axes, place_labels
+
+    ax = _axes(None)
+    ax.plot([0.0, 1.0], [0.0, 1.0], color="k")
+    # Two mirror images (same name, same point) and six events a hair apart.
+    items = [(0.5, 0.5, "fold"), (0.5, 0.5, "fold")]
+    items += [(0.3 + 0.004 * k, 0.3, f"branch point {k}") for k in range(6)]
+    texts = place_labels(ax, items)
+    assert [t.get_text() for t in texts].count("fold") == 1
+    assert len(texts) == 7
+    fig = ax.figure
+    fig.canvas.draw()
+    r = fig.canvas.get_renderer()
+    boxes = [Text.get_window_extent(t, r) for t in texts]
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            assert not a.overlaps(b), (a, b)
+    plt.close("all")
