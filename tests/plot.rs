@@ -1554,3 +1554,57 @@ fn event_labels_do_not_overlap_and_carry_their_values() {
     bifurcation_diagram_svg(&d, &path, &PlotOptions::default()).unwrap();
     assert!(label_boxes(&read_svg(&path)).is_empty());
 }
+
+/// The figures as PNG (feature `png`): the atlas rasterised at a column's 600 dpi, its pixels
+/// in the style's tints where the regions are.
+#[cfg(feature = "png")]
+#[test]
+fn figures_as_png_at_column_width() {
+    use routh::plot::png_from_svg;
+
+    let svg = out("atlas-png.svg");
+    stability_atlas_svg(&all_verdicts_atlas(), &svg, &PlotOptions::default()).unwrap();
+    let png = out("atlas.png");
+    png_from_svg(&svg, &png, 2100).unwrap();
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"));
+    // The IHDR chunk: width and height, big-endian, after the 8-byte signature and 8 bytes of
+    // chunk length and type.
+    let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
+    assert_eq!(be(16), 2100);
+    assert_eq!(be(20), 2100 * 600 / 900);
+    // The text is drawn (the fonts found): the PNG of a figure without its legend's and axes'
+    // text is smaller. Drawn again with every text element taken out of the SVG.
+    let bare = std::fs::read_to_string(&svg).unwrap();
+    let bare: String = bare
+        .split("<text")
+        .enumerate()
+        .map(|(k, part)| {
+            if k == 0 {
+                part.to_string()
+            } else {
+                part.split_once("</text>")
+                    .map_or(String::new(), |p| p.1.to_string())
+            }
+        })
+        .collect();
+    let bare_svg = out("atlas-bare.svg");
+    std::fs::write(&bare_svg, bare).unwrap();
+    png_from_svg(&bare_svg, out("atlas-bare.png"), 2100).unwrap();
+    let bare_len = std::fs::metadata(out("atlas-bare.png")).unwrap().len();
+    assert!(
+        bytes.len() as u64 > bare_len + 2000,
+        "{} vs {bare_len}: no text drawn",
+        bytes.len()
+    );
+    assert!(matches!(
+        png_from_svg(&svg, &png, 0),
+        Err(PlotError::InvalidOptions(_))
+    ));
+    let not_svg = out("not.svg");
+    std::fs::write(&not_svg, "plain text").unwrap();
+    assert!(matches!(
+        png_from_svg(&not_svg, out("not.png"), 100),
+        Err(PlotError::InvalidData(_))
+    ));
+}

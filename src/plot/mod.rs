@@ -106,6 +106,8 @@ mod labels;
 mod legend;
 mod marks;
 mod orbits;
+#[cfg(feature = "png")]
+mod png;
 mod regions;
 pub mod style;
 mod trajectory;
@@ -113,6 +115,8 @@ mod trajectory;
 pub use axis::DiagramAxis;
 pub use circles::with_circle_verdicts;
 pub use orbits::stability_index_axis;
+#[cfg(feature = "png")]
+pub use png::png_from_svg;
 pub use trajectory::{apex_locus_svg, apex_path, time_histories_svg};
 
 /// The errors of the plotting functions.
