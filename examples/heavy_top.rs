@@ -231,8 +231,11 @@ fn main() -> Result<(), Box<dyn Error>> {
         .filter(|&(p, _)| p <= range.1)
         .collect();
     let path1 = out.join("bifurcation_diagram.svg");
+    // The tilted circles drawn with their own verdict (stability modulo the symmetry about e₃),
+    // not classify's "degenerate" along a circle.
+    let drawn = plot::with_circle_verdicts(diagram, |p| (top.clone(), p), e3);
     plot::bifurcation_diagram_svg(
-        diagram,
+        &drawn,
         &path1,
         &PlotOptions {
             title: format!(
@@ -243,6 +246,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             ),
             x_label: "cyclic momentum p_ψ".into(),
             y: DiagramAxis::Tilt,
+            event_values: true,
             overlays: vec![Overlay {
                 label: "tilted circles, closed form".into(),
                 points: tilted,
@@ -386,11 +390,13 @@ fn main() -> Result<(), Box<dyn Error>> {
         "\nCheck: U_r(e₃) at the bound = {u:.12}, closed form p²/(2C) + mgl = {:.12}",
         formula * formula / (2.0 * top.c) + top.mgl()
     );
+    let mut figures = vec![path1, path2, path3];
+    figures.extend(apex_loci(&out)?);
+    // Every figure written, and only those.
     println!("\nFigures:");
-    println!("  {}", path1.display());
-    println!("  {}", path2.display());
-    println!("  {}", path3.display());
-    apex_loci(&out)?;
+    for path in &figures {
+        println!("  {}", path.display());
+    }
     println!("Done in {:.2} s.", start.elapsed().as_secs_f64());
     Ok(())
 }
@@ -400,7 +406,9 @@ fn main() -> Result<(), Box<dyn Error>> {
 /// criterion — ψ̇₀ against the spin's precession: loops; ψ̇₀ = 0: cusps; ψ̇₀ with it but slower
 /// than the steady precession: waves — and named from the simulated ψ̇ (its sign changes), not
 /// from ψ̇₀.
-fn apex_loci(out: &std::path::Path) -> Result<(), Box<dyn Error>> {
+/// Returns the figures written.
+fn apex_loci(out: &std::path::Path) -> Result<Vec<std::path::PathBuf>, Box<dyn Error>> {
+    let mut written = Vec::new();
     let top = LagrangeTop::with_mgl(1.0, 0.6, 1.0);
     let (theta0, spin) = (0.5f64, 6.0);
     let slow = top.mgl() / (top.c * spin);
@@ -448,10 +456,12 @@ fn apex_loci(out: &std::path::Path) -> Result<(), Box<dyn Error>> {
             ..PlotOptions::default()
         };
         plot::apex_locus_svg(&tr.attitude, Vector3::z(), &path, &opts)?;
+        written.push(path);
         if name == "looping" {
             let path = out.join("looping_time_histories.svg");
             plot::time_histories_svg(&tr, &path, &PlotOptions::default())?;
+            written.push(path);
         }
     }
-    Ok(())
+    Ok(written)
 }

@@ -79,6 +79,7 @@ pub mod prelude {
 struct ReadmeDoctests;
 #[cfg(feature = "plot")]
 pub mod plot;
+pub mod style;
 
 /// Paths used by the code that `#[derive(Lagrangian)]` generates. Not a public API.
 #[doc(hidden)]

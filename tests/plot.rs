@@ -8,10 +8,19 @@ use routh::plot::{
     bifurcation_diagram_svg, energy_momentum_svg, stability_atlas_svg, DiagramAxis, PlotError,
     PlotOptions,
 };
+use routh::style::look;
 use routh::{
     BifurcationDiagram, BoundaryCurve, Branch, BranchEvent, BranchSample, Complex, EventKind,
     Stability, StabilityAtlas, StabilityReport, SteadyMotion, Vector3,
 };
+
+/// The colour of a look of the style (`routh::style`), as the SVGs write it.
+fn c(group: &str, name: &str) -> &'static str {
+    look(group, name).unwrap().color
+}
+
+/// The ink of the atlas's hatching and dots.
+const HATCH: &str = "#8C8C8C";
 
 fn out(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("routh-plot-tests-{}", std::process::id()));
@@ -119,8 +128,9 @@ fn full_diagram() -> BifurcationDiagram {
             .map(|i| {
                 let u = 0.05 * i as f64;
                 let s = 5.0 - u * u;
+                // Degenerate on a short stretch through the fold, long enough to be seen.
                 let v = match i {
-                    0 => Degenerate,
+                    -2..=2 => Degenerate,
                     i if i < 0 => Unstable,
                     _ => SecularlyStable,
                 };
@@ -228,6 +238,34 @@ impl BoundaryCurveSet {
     }
 }
 
+/// The verdicts named in the legend are those whose style's colour strokes a line in the
+/// figure besides the legend's own swatch: each listed verdict's colour is drawn (at least two
+/// strokes), each verdict not listed is not drawn at all.
+fn assert_legend_is_what_is_drawn(svg: &str) {
+    let keys = [
+        (Stability::SecularlyStable, "secularly_stable"),
+        (
+            Stability::GyroscopicallyStabilized,
+            "gyroscopically_stabilized",
+        ),
+        (Stability::Unstable, "unstable"),
+        (Stability::Degenerate, "degenerate"),
+    ];
+    for (v, key) in keys {
+        let color = c("verdict", key);
+        let n = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline") || l.starts_with("<line"))
+            .filter(|l| l.contains(&format!("stroke=\"{color}\"")))
+            .count();
+        if has_text(svg, &v.to_string()) {
+            assert!(n >= 2, "{v} is listed but drawn {n} times");
+        } else {
+            assert_eq!(n, 0, "{v} is drawn but not listed");
+        }
+    }
+}
+
 const VERDICTS: [Stability; 4] = [
     Stability::SecularlyStable,
     Stability::GyroscopicallyStabilized,
@@ -252,6 +290,7 @@ fn bifurcation_diagram_has_every_style_marker_and_label() {
     for v in VERDICTS {
         assert!(has_text(&svg, &v.to_string()), "legend lacks {v}");
     }
+    assert_legend_is_what_is_drawn(&svg);
     for k in [
         EventKind::Fold,
         EventKind::BranchPoint,
@@ -261,11 +300,19 @@ fn bifurcation_diagram_has_every_style_marker_and_label() {
     }
     assert!(has_text(&svg, "circle of steady motions"));
     // Unstable runs are dashed: many short red segments, not one polyline per run.
-    let dashes = strokes(&svg, "#CD1E1E", 2);
+    let dashes = strokes(&svg, c("verdict", "unstable"), 2);
     assert!(dashes > 20, "{dashes} unstable segments");
     // Stable runs are one polyline each: thick for secular, thin for gyroscopic.
-    assert!(strokes(&svg, "#008237", 4) >= 3);
-    assert!(strokes(&svg, "#1950D2", 1) >= 1);
+    assert!(strokes(&svg, c("verdict", "secularly_stable"), 4) >= 3);
+    // Smooth at print resolution: the curves are written in fractional pixels, not rounded to
+    // whole ones, and the circles' branch (few samples, bending) in many short pieces.
+    let runs = polylines(&svg, c("verdict", "secularly_stable"), 4);
+    assert!(runs
+        .iter()
+        .flatten()
+        .any(|p| p.0.fract() != 0.0 || p.1.fract() != 0.0));
+    assert!(runs.iter().map(Vec::len).max().unwrap() > 2 * 41);
+    assert!(strokes(&svg, c("verdict", "gyroscopically_stabilized"), 2) >= 1);
     // The event markers: a triangle (polygon), a circle, a square (rect).
     assert!(svg.contains("<polygon"));
     assert!(svg.contains("<circle"));
@@ -281,12 +328,34 @@ fn monochrome_keeps_the_line_styles() {
     };
     bifurcation_diagram_svg(&full_diagram(), &path, &opts).unwrap();
     let svg = read_svg(&path);
-    assert!(!svg.contains("#CD1E1E") && !svg.contains("#008237"));
+    assert!(
+        !svg.contains(c("verdict", "unstable")) && !svg.contains(c("verdict", "secularly_stable"))
+    );
     assert!(strokes(&svg, "#000000", 2) > 20, "dashes and dots");
     assert!(strokes(&svg, "#000000", 4) >= 3, "thick secular runs");
     // Default labels: the parameter "s" and the axis of the default `y`.
     assert!(has_text(&svg, "s"));
     assert!(has_text(&svg, DiagramAxis::GammaZ.label()));
+}
+
+#[test]
+fn a_verdict_seen_at_one_sample_under_a_marker_is_neither_drawn_nor_listed() {
+    // The fold's own sample is degenerate (the test is inconclusive exactly there): a stretch of
+    // a pixel or two, under the fold's marker. The legend lists only what the figure shows.
+    let mut d = full_diagram();
+    for (i, p) in d.branches[2].points.iter_mut().enumerate() {
+        p.report.verdict = match i {
+            20 => Stability::Degenerate,
+            i if i < 20 => Stability::Unstable,
+            _ => Stability::SecularlyStable,
+        };
+    }
+    let path = out("bifurcation-one-degenerate.svg");
+    bifurcation_diagram_svg(&d, &path, &PlotOptions::default()).unwrap();
+    let svg = read_svg(&path);
+    assert!(!has_text(&svg, &Stability::Degenerate.to_string()));
+    assert!(!svg.contains(c("verdict", "degenerate")));
+    assert!(has_text(&svg, &Stability::Unstable.to_string()));
 }
 
 #[test]
@@ -343,9 +412,7 @@ fn energy_momentum_diagram() {
     let svg = read_svg(&path);
     assert!(has_text(&svg, "p_ψ"));
     assert!(has_text(&svg, "energy E"));
-    for v in VERDICTS {
-        assert!(has_text(&svg, &v.to_string()), "legend lacks {v}");
-    }
+    assert_legend_is_what_is_drawn(&svg);
     assert!(has_text(&svg, &EventKind::HamiltonianHopf.to_string()));
     // Each event is named beside its marker, besides the legend's entry for its kind.
     let named = |kind: EventKind| {
@@ -368,7 +435,7 @@ fn energy_momentum_diagram() {
             assert_eq!(named(kind), events + 1, "{kind}");
         }
     }
-    assert!(strokes(&svg, "#CD1E1E", 2) > 10);
+    assert!(strokes(&svg, c("verdict", "unstable"), 2) > 10);
 
     let opts = PlotOptions {
         x_label: "momentum".into(),
@@ -404,7 +471,7 @@ fn stability_atlas_has_every_shading_curve_and_label() {
         assert!(has_text(&svg, &format!("{k} boundary")), "legend lacks {k}");
     }
     // Hatching (thin dark lines) and dots (small circles).
-    assert!(strokes(&svg, "#282828", 1) > 50);
+    assert!(strokes(&svg, HATCH, 1) > 50);
     assert!(svg.matches("<circle").count() > 50);
 
     // The same in greys: every verdict still has its own pattern.
@@ -415,9 +482,12 @@ fn stability_atlas_has_every_shading_curve_and_label() {
     };
     stability_atlas_svg(&all_verdicts_atlas(), &path, &mono).unwrap();
     let svg = read_svg(&path);
-    assert!(strokes(&svg, "#282828", 1) > 50);
+    assert!(strokes(&svg, HATCH, 1) > 50);
     assert!(svg.matches("<circle").count() > 50);
-    assert!(!svg.contains("#EEB2AC"), "no tint in monochrome");
+    assert!(
+        !svg.contains(look("verdict", "unstable").unwrap().fill.unwrap()),
+        "no tint in monochrome"
+    );
 }
 
 #[test]
@@ -675,9 +745,9 @@ fn atlas_nonlinear_curves_are_drawn_and_named() {
         // Dashed: many short pieces (plotters writes each dash as a polyline).
         if !mono {
             assert!(
-                strokes(&svg, "#005A96", 2) > 60,
+                strokes(&svg, c("boundary", "arnold_degenerate"), 2) > 60,
                 "{}",
-                strokes(&svg, "#005A96", 2)
+                strokes(&svg, c("boundary", "arnold_degenerate"), 2)
             );
         }
     }
@@ -867,10 +937,10 @@ fn orbit_family_diagram_marks_the_lines_runs_and_events() {
     assert!(y_plus < y_minus);
     // Two elliptic runs (thick green) and the legend's swatch; hyperbolic dashes (red) and
     // inverse-hyperbolic dots (orange).
-    let elliptic = polylines(&svg, "#008237", 4);
+    let elliptic = polylines(&svg, c("orbit_verdict", "elliptic"), 4);
     assert_eq!(elliptic.len(), 3, "{elliptic:?}");
-    assert!(strokes(&svg, "#CD1E1E", 2) > 5);
-    assert!(strokes(&svg, "#C86E00", 2) > 5);
+    assert!(strokes(&svg, c("orbit_verdict", "hyperbolic"), 2) > 5);
+    assert!(strokes(&svg, c("orbit_verdict", "inverse_hyperbolic"), 2) > 5);
     // The first elliptic run ends on k = −1 where the period doubling is marked (◆, 4 vertices,
     // black on a white halo); the second ends on k = 1 at the branch point (●).
     let mut runs = elliptic;
@@ -921,7 +991,10 @@ fn orbit_family_diagram_marks_the_lines_runs_and_events() {
     };
     orbit_family_svg(&swing_family(), &path, &mono).unwrap();
     let svg = read_svg(&path);
-    assert!(!svg.contains("#008237") && !svg.contains("#CD1E1E"));
+    assert!(
+        !svg.contains(c("orbit_verdict", "elliptic"))
+            && !svg.contains(c("orbit_verdict", "hyperbolic"))
+    );
     assert_eq!(polylines(&svg, "#000000", 4).len(), 3);
 }
 
@@ -946,7 +1019,7 @@ fn orbit_family_fold_is_marked_at_the_turn() {
     assert!(has_text(&svg, "fold"));
     let y_plus = parabolic_lines(&svg)[0];
     // The elliptic run (s < 1) ends at the turn, where k = 1 (the legend's swatch left out).
-    let right = polylines(&svg, "#008237", 4)
+    let right = polylines(&svg, c("orbit_verdict", "elliptic"), 4)
         .into_iter()
         .filter(|p| p.len() > 2)
         .flatten()
@@ -993,7 +1066,7 @@ fn orbit_periods_follow_the_family() {
         assert!(has_text(&svg, label), "{label:?}");
     }
     // T = 6 + E² rises: along each elliptic run, y (pixels, downwards) falls with x.
-    for run in polylines(&svg, "#008237", 4)
+    for run in polylines(&svg, c("orbit_verdict", "elliptic"), 4)
         .into_iter()
         .filter(|r| r.len() > 2)
     {
@@ -1407,4 +1480,131 @@ fn figures_of_a_computed_family() {
         fixed.len() + 1,
         "one mark per fixed point, and the legend's"
     );
+}
+
+// --- Event labels: placed without overlap, with values on request -------------------------------
+
+/// The boxes of the event labels (the `DejaVu Sans` texts of the annotation size, `7.5 pt` at
+/// 2 px a point, which plotters writes 1.24 times smaller as all its fonts): top-left corner at
+/// (x, y), width 0.58 em a character (DejaVu Sans averages less), one em high.
+fn label_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
+    let size = 2.0 * look_font_annotation() / 1.24;
+    svg.split("<text")
+        .skip(1)
+        .filter(|t| t.contains("font-family=\"DejaVu Sans\""))
+        .filter_map(|t| {
+            let attr = |name: &str| -> Option<f64> {
+                let i = t.find(&format!(" {name}=\""))? + name.len() + 3;
+                t[i..].split('"').next()?.parse().ok()
+            };
+            let (x, y, fs) = (attr("x")?, attr("y")?, attr("font-size")?);
+            assert!(
+                (fs - size).abs() < 1e-6,
+                "annotation at {fs} px, not {size}"
+            );
+            let body = &t[t.find('>')? + 1..];
+            let text = body[..body.find("</text>")?].trim().to_string();
+            let w = 0.58 * fs * text.chars().count() as f64;
+            Some((text, [x, y, x + w, y + fs]))
+        })
+        .collect()
+}
+
+fn look_font_annotation() -> f64 {
+    routh::style::FONT.annotation_pt
+}
+
+#[test]
+fn event_labels_do_not_overlap_and_carry_their_values() {
+    // Six events within a few pixels of one another on the upright branch: the old names stacked
+    // in one column over their markers and overlapped.
+    let mut d = full_diagram();
+    let base = d.events[1].clone();
+    for k in 0..5 {
+        let mut e = base.clone();
+        e.s = 4.0 + 0.02 * (k + 1) as f64;
+        d.events.push(e);
+    }
+    // A mirror image of the fold (the same kind at the same point): named once.
+    let fold = d.events[2].clone();
+    d.events.push(fold);
+    d.events.sort_by(|a, b| a.s.total_cmp(&b.s));
+    let path = out("labels.svg");
+    let opts = PlotOptions {
+        event_values: true,
+        ..PlotOptions::default()
+    };
+    energy_momentum_svg(&d, &path, &opts).unwrap();
+    let svg = read_svg(&path);
+    let boxes = label_boxes(&svg);
+    assert_eq!(boxes.len(), d.events.len() - 1, "{boxes:?}");
+    for (i, (ta, a)) in boxes.iter().enumerate() {
+        for (tb, b) in &boxes[i + 1..] {
+            let apart = a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1];
+            assert!(apart, "{ta} {a:?} overlaps {tb} {b:?}");
+        }
+    }
+    // Each carries its value: the branch point at s = 4 and the fold at s = 5.
+    let texts: Vec<&str> = boxes.iter().map(|b| b.0.as_str()).collect();
+    assert!(texts.contains(&"branch point at 4"), "{texts:?}");
+    assert!(texts.contains(&"fold at 5"), "{texts:?}");
+    assert!(texts.contains(&"branch point at 4.1"), "{texts:?}");
+    // Without `event_values` the bifurcation diagram writes no label at all (the legend names
+    // the markers).
+    bifurcation_diagram_svg(&d, &path, &PlotOptions::default()).unwrap();
+    assert!(label_boxes(&read_svg(&path)).is_empty());
+}
+
+/// The figures as PNG (feature `png`): the atlas rasterised at a column's 600 dpi, its pixels
+/// in the style's tints where the regions are.
+#[cfg(feature = "png")]
+#[test]
+fn figures_as_png_at_column_width() {
+    use routh::plot::png_from_svg;
+
+    let svg = out("atlas-png.svg");
+    stability_atlas_svg(&all_verdicts_atlas(), &svg, &PlotOptions::default()).unwrap();
+    let png = out("atlas.png");
+    png_from_svg(&svg, &png, 2100).unwrap();
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(b"\x89PNG\r\n\x1a\n"));
+    // The IHDR chunk: width and height, big-endian, after the 8-byte signature and 8 bytes of
+    // chunk length and type.
+    let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
+    assert_eq!(be(16), 2100);
+    assert_eq!(be(20), 2100 * 600 / 900);
+    // The text is drawn (the fonts found): the PNG of a figure without its legend's and axes'
+    // text is smaller. Drawn again with every text element taken out of the SVG.
+    let bare = std::fs::read_to_string(&svg).unwrap();
+    let bare: String = bare
+        .split("<text")
+        .enumerate()
+        .map(|(k, part)| {
+            if k == 0 {
+                part.to_string()
+            } else {
+                part.split_once("</text>")
+                    .map_or(String::new(), |p| p.1.to_string())
+            }
+        })
+        .collect();
+    let bare_svg = out("atlas-bare.svg");
+    std::fs::write(&bare_svg, bare).unwrap();
+    png_from_svg(&bare_svg, out("atlas-bare.png"), 2100).unwrap();
+    let bare_len = std::fs::metadata(out("atlas-bare.png")).unwrap().len();
+    assert!(
+        bytes.len() as u64 > bare_len + 2000,
+        "{} vs {bare_len}: no text drawn",
+        bytes.len()
+    );
+    assert!(matches!(
+        png_from_svg(&svg, &png, 0),
+        Err(PlotError::InvalidOptions(_))
+    ));
+    let not_svg = out("not.svg");
+    std::fs::write(&not_svg, "plain text").unwrap();
+    assert!(matches!(
+        png_from_svg(&not_svg, out("not.png"), 100),
+        Err(PlotError::InvalidData(_))
+    ));
 }

@@ -96,17 +96,24 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
 
 /// The diagram as two tables: its branches, then its events.
 fn render(d: &BifurcationDiagram, x_label: &str) -> String {
-    let mut branches = Table::new(&["branch", "points", "from", "to", "kind"]);
+    let mut branches = Table::new(&["branch", "points", "from", "to", "turns at", "kind"]);
     for (i, b) in d.branches.iter().enumerate() {
         let (from, to) = match (b.points.first(), b.points.last()) {
             (Some(f), Some(l)) => (num(f.s), num(l.s)),
             _ => ("-".into(), "-".into()),
         };
+        let s: Vec<f64> = b.points.iter().map(|p| p.s).collect();
+        let turns = turning_values(&s);
         branches.row(vec![
             i.to_string(),
             b.points.len().to_string(),
             from,
             to,
+            if turns.is_empty() {
+                "-".into()
+            } else {
+                turns.iter().map(|&t| num(t)).collect::<Vec<_>>().join(", ")
+            },
             if b.isolated { "isolated" } else { "family" }.to_string(),
         ]);
     }
@@ -139,4 +146,35 @@ fn render(d: &BifurcationDiagram, x_label: &str) -> String {
         d.events.len(),
         events.render()
     )
+}
+
+/// The values of the parameter where a branch turns back (a fold: `s` rises then falls, or
+/// falls then rises), in order along the branch; empty for a branch monotone in `s`.
+fn turning_values(s: &[f64]) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut dir = 0.0f64; // the sign of the last non-zero step
+    for w in s.windows(2) {
+        let step = w[1] - w[0];
+        if step == 0.0 || !step.is_finite() {
+            continue;
+        }
+        if dir != 0.0 && step.signum() != dir {
+            out.push(w[0]);
+        }
+        dir = step.signum();
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::turning_values;
+
+    #[test]
+    fn a_branch_that_turns_names_its_turning_value() {
+        assert!(turning_values(&[0.0, 1.0, 2.0]).is_empty());
+        assert!(turning_values(&[5.0, 4.0, 4.0, 3.0]).is_empty());
+        assert_eq!(turning_values(&[5.0, 3.0, 2.5, 3.0, 5.0]), vec![2.5]);
+        assert_eq!(turning_values(&[0.0, 2.0, 1.0, 3.0]), vec![2.0, 1.0]);
+    }
 }

@@ -20,6 +20,7 @@ mod latex;
 mod nonlinear;
 mod orbits;
 mod pickle;
+mod plot_style;
 mod progress;
 mod results;
 mod trajectory;
@@ -66,6 +67,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;
     m.add_function(wrap_pyfunction!(pickle::_restore, m)?)?;
+    m.add_function(wrap_pyfunction!(plot_style::plot_style, m)?)?;
     m.add("MAX_ATLAS_NODES", family::MAX_ATLAS_NODES)?;
     Ok(())
 }

@@ -343,12 +343,19 @@ impl Diagram {
     fn consistent(&self) -> bool {
         self.checks.iter().all(|c| c.1 == c.2)
     }
-    /// Draw the diagram (s against γ₃; stable solid, unstable dashed, events marked and named).
-    #[pyo3(signature = (ax=None, component=2))]
-    fn plot(slf: &Bound<'_, Self>, ax: Option<Py<PyAny>>, component: usize) -> PyResult<Py<PyAny>> {
+    /// Draw the diagram (s against γ₃; stable solid, unstable dashed, events marked and named);
+    /// keyword arguments go to `routh._plot.plot_diagram` (`xlabel`, `ylabel`, `values`,
+    /// `circles`, `axis`).
+    #[pyo3(signature = (ax=None, component=2, **kwargs))]
+    fn plot(
+        slf: &Bound<'_, Self>,
+        ax: Option<Py<PyAny>>,
+        component: usize,
+        kwargs: Option<&Bound<'_, pyo3::types::PyDict>>,
+    ) -> PyResult<Py<PyAny>> {
         let py = slf.py();
         let f = py.import("routh._plot")?.getattr("plot_diagram")?;
-        Ok(f.call1((slf, ax, component))?.unbind())
+        Ok(f.call((slf, ax, component), kwargs)?.unbind())
     }
     /// The figure of `plot()` as SVG (Jupyter).
     fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {
@@ -448,12 +455,18 @@ impl Atlas {
 
 #[pymethods]
 impl Atlas {
-    /// Draw the atlas (verdict regions coloured, boundary curves drawn and named).
-    #[pyo3(signature = (ax=None))]
-    fn plot(slf: &Bound<'_, Self>, ax: Option<Py<PyAny>>) -> PyResult<Py<PyAny>> {
+    /// Draw the atlas (verdict regions in their tints and hatches, boundary curves, a legend);
+    /// keyword arguments go to `routh._plot.plot_atlas` (`xlabel`, `ylabel`: the parameters'
+    /// names and units).
+    #[pyo3(signature = (ax=None, **kwargs))]
+    fn plot(
+        slf: &Bound<'_, Self>,
+        ax: Option<Py<PyAny>>,
+        kwargs: Option<&Bound<'_, pyo3::types::PyDict>>,
+    ) -> PyResult<Py<PyAny>> {
         let py = slf.py();
         let f = py.import("routh._plot")?.getattr("plot_atlas")?;
-        Ok(f.call1((slf, ax))?.unbind())
+        Ok(f.call((slf, ax), kwargs)?.unbind())
     }
     /// The figure of `plot()` as SVG (Jupyter).
     fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<Py<PyAny>> {

@@ -4,12 +4,17 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::frame::{clip_polyline, draw_figure, Chart, Frame, Overlays, Polyline};
+use super::curve::PxF;
+use super::frame::{
+    clip_polyline, draw_figure, float_px, plot_rect, Chart, Frame, Overlays, Polyline,
+};
+use super::labels::Rect;
 use super::legend::{Entry, Swatch};
-use super::marks::{draw_cross, shade_cell, stroke_boundary, stroke_path, Px, Root};
+use super::marks::{draw_cross, stroke_boundary, stroke_path, Px, Root};
+use super::regions::Regions;
 use super::style::{boundary_color, nonlinear_stroke, KINDS, VERDICTS};
 use super::{drawing_error, label_or, PlotError, PlotOptions};
-use crate::{BoundaryCurve, NonlinearCurve, Stability, StabilityAtlas};
+use crate::{BoundaryCurve, NonlinearCurve, StabilityAtlas};
 
 /// Cell edges around grid nodes: midpoints between nodes, the end nodes themselves at the ends.
 fn edges(nodes: &[f64]) -> Vec<f64> {
@@ -65,10 +70,28 @@ pub(super) fn atlas_figure(
     };
     let mono = opts.monochrome;
 
-    let occurs = |v: Option<Stability>| atlas.verdicts.iter().flatten().any(|&c| c == v);
+    // The verdicts whose regions show (a node alone on a boundary is cut off on every side and
+    // shows nowhere, or in a sliver under the curve): the regions at about the size of the axes (the legend, which takes its
+    // room, comes first).
+    let nominal = Rect {
+        x0: 0,
+        y0: 0,
+        x1: (0.6 * f64::from(opts.width)) as i32,
+        y1: (0.8 * f64::from(opts.height)) as i32,
+    };
+    let (nw, nh) = (f64::from(nominal.x1), f64::from(nominal.y1));
+    let shown = Regions::new(atlas, nominal, |px, py| {
+        (
+            frame.x.0 + px / nw * (frame.x.1 - frame.x.0),
+            frame.y.1 - py / nh * (frame.y.1 - frame.y.0),
+        )
+    })
+    // A sliver along a boundary curve (a node just off it, under the curve's white band) is no
+    // region a reader sees: at least 1/2000 of the axes, and 60 pixels.
+    .shown(((nominal.x1 * nominal.y1) as usize / 2000).max(60));
     let mut legend: Vec<Entry> = VERDICTS
         .iter()
-        .filter(|&&v| occurs(Some(v)))
+        .filter(|&&v| shown.contains(&v))
         .map(|&v| (Swatch::Cell(Some(v)), v.to_string()))
         .collect();
     // A missing verdict is either no steady motion (beyond a fold) or the motion lost along
@@ -126,9 +149,22 @@ pub(super) fn atlas_figure(
         let px = |pts: &[(f64, f64)]| -> Vec<Px> {
             pts.iter().map(|p| chart.backend_coord(p)).collect()
         };
-        shade_cells(root, chart, atlas, (&ex, &ey), mono)?;
+        let rect = plot_rect(chart, &frame);
+        let (w, h) = (
+            f64::from((rect.x1 - rect.x0).max(1)),
+            f64::from((rect.y1 - rect.y0).max(1)),
+        );
+        let to_data = |px: f64, py: f64| {
+            (
+                frame.x.0 + (px - f64::from(rect.x0)) / w * (frame.x.1 - frame.x.0),
+                frame.y.1 - (py - f64::from(rect.y0)) / h * (frame.y.1 - frame.y.0),
+            )
+        };
+        Regions::new(atlas, rect, to_data).paint(root, mono)?;
+        draw_crosses(root, chart, atlas, (&ex, &ey))?;
+        let fpx = float_px(chart, &frame);
         for (curve, parts) in &curves {
-            let parts: Vec<Vec<Px>> = parts.iter().map(|p| px(p)).collect();
+            let parts: Vec<Vec<PxF>> = parts.iter().map(|p| p.iter().map(&fpx).collect()).collect();
             stroke_boundary(root, &parts, curve.kind, mono)?;
         }
         draw_nonlinear(root, chart, &nonlinear, mono)?;
@@ -174,44 +210,20 @@ fn draw_nonlinear(
     Ok(())
 }
 
-/// Shades the cells of the grid, whose edges are `ex × ey`, by verdict; a small × in each cell
-/// without a steady motion.
-fn shade_cells(
+/// A small × in each cell of the grid (edges `ex × ey`) without a steady motion.
+fn draw_crosses(
     root: &Root,
     chart: &Chart,
     atlas: &StabilityAtlas,
     (ex, ey): (&[f64], &[f64]),
-    mono: bool,
 ) -> Result<(), PlotError> {
-    // Pixel corners of the cell rectangle [ex[i0], ex[i1]] × [ey[j], ey[j + 1]].
-    let rect = |i0: usize, i1: usize, j: usize| -> (Px, Px) {
-        let a = chart.backend_coord(&(ex[i0], ey[j + 1]));
-        let b = chart.backend_coord(&(ex[i1], ey[j]));
-        (a, b)
-    };
-    let nx = atlas.x.len();
     for (j, row) in atlas.verdicts.iter().enumerate() {
-        // Runs of equal verdict along the row, drawn as one rectangle each.
-        let mut i0 = 0;
-        while i0 < nx {
-            let v = row[i0];
-            let mut i1 = i0 + 1;
-            while i1 < nx && row[i1] == v {
-                i1 += 1;
+        for (i, v) in row.iter().enumerate() {
+            if v.is_none() {
+                let a = chart.backend_coord(&(ex[i], ey[j + 1]));
+                let b = chart.backend_coord(&(ex[i + 1], ey[j]));
+                draw_cross(root, a, b)?;
             }
-            match v {
-                Some(v) => {
-                    let (a, b) = rect(i0, i1, j);
-                    shade_cell(root, a, b, v, mono)?;
-                }
-                None => {
-                    for i in i0..i1 {
-                        let (a, b) = rect(i, i + 1, j);
-                        draw_cross(root, a, b)?;
-                    }
-                }
-            }
-            i0 = i1;
         }
     }
     Ok(())

@@ -5,9 +5,11 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::frame::{draw_figure, extent, padded, Frame, Overlays};
+use super::curve::PxF;
+use super::frame::{draw_figure, extent, float_px, padded, plot_rect, Frame, Overlays};
+use super::labels::{value, Rect};
 use super::legend::{Entry, Swatch};
-use super::marks::{draw_event_marker, draw_names, draw_rings, stroke_path, Px};
+use super::marks::{along, draw_event_marker, draw_names, draw_rings, stroke_curve, Px};
 use super::style::{verdict_color, verdict_stroke, KINDS, VERDICTS};
 use super::{drawing_error, PlotError, PlotOptions};
 use crate::{BifurcationDiagram, BranchEvent, BranchSample, EventKind, Stability};
@@ -17,6 +19,8 @@ struct Run {
     verdict: Stability,
     isolated: bool,
     points: Vec<(f64, f64)>,
+    /// The run is its whole branch (one verdict all along).
+    whole: bool,
 }
 
 /// Splits each branch into runs of equal verdict (a change of verdict between two points is put
@@ -28,7 +32,9 @@ fn runs(diagram: &BifurcationDiagram, map: &impl Fn(&BranchSample) -> (f64, f64)
             verdict,
             isolated: branch.isolated,
             points,
+            whole: false,
         };
+        let first = out.len();
         let mut cur: Option<Run> = None;
         let mut prev: Option<((f64, f64), Stability)> = None;
         for p in &branch.points {
@@ -51,6 +57,9 @@ fn runs(diagram: &BifurcationDiagram, map: &impl Fn(&BranchSample) -> (f64, f64)
             prev = Some((q, v));
         }
         out.extend(cur);
+        if out.len() == first + 1 {
+            out[first].whole = true;
+        }
     }
     out
 }
@@ -161,6 +170,7 @@ pub(super) fn branch_figure(
     )
     .map(|(lo, hi)| (hi - lo).max(1e-12 * lo.abs().max(1.0)))
     .unwrap_or(1.0);
+    let values = opts.event_values;
     let events: Vec<(EventKind, (f64, f64), Option<String>)> = diagram
         .events
         .iter()
@@ -170,9 +180,16 @@ pub(super) fn branch_figure(
             let x = ex.or(q.map(|q| q.0))?;
             let y = ey.or(q.map(|q| q.1))?;
             // The name beside the marker: a nonlinear event's always (`1:2`, `D = 0`), every
-            // event's when the figure asks for names.
-            let name =
-                event_name(e).or_else(|| (names == EventNames::Beside).then(|| e.kind.to_string()));
+            // event's when the figure asks for names or values; with its value on request.
+            let name = event_name(e)
+                .or_else(|| (names == EventNames::Beside || values).then(|| e.kind.to_string()));
+            let name = name.map(|n| {
+                if values {
+                    format!("{n} at {}", value(x))
+                } else {
+                    n
+                }
+            });
             (x.is_finite() && y.is_finite()).then_some((e.kind, (x, y), name))
         })
         .collect();
@@ -193,6 +210,10 @@ pub(super) fn branch_figure(
     };
     let mono = opts.monochrome;
 
+    // The runs as they will be drawn: too short a run (a sample or two at an event, under its
+    // marker) is left out, and so from the legend, which lists only what is drawn.
+    let at: Vec<(f64, f64)> = events.iter().map(|e| e.1).collect();
+    let runs: Vec<Run> = drawn_runs(runs, &at, &frame, opts);
     let mut legend: Vec<Entry> = VERDICTS
         .iter()
         .filter(|&&v| runs.iter().any(|r| r.verdict == v))
@@ -222,33 +243,64 @@ pub(super) fn branch_figure(
             v.dedup();
             v
         };
+        let fpx = float_px(chart, &frame);
+        let mut curves = Vec::new();
         // Stable runs last, so that they stay on top where branches cross.
         for &v in VERDICTS.iter().rev() {
             for run in runs.iter().filter(|r| r.verdict == v) {
-                let pts = px(&run.points);
+                let pts: Vec<PxF> = run.points.iter().map(&fpx).collect();
                 let color = verdict_color(v, mono);
-                if pts.len() == 1 {
-                    root.draw(&Circle::new(pts[0], 3, color.filled()))
+                if px(&run.points).len() == 1 {
+                    root.draw(&Circle::new(px(&run.points)[0], 3, color.filled()))
                         .map_err(drawing_error)?;
                     continue;
                 }
-                stroke_path(root, &pts, color, verdict_stroke(v))?;
+                stroke_curve(root, &pts, color, verdict_stroke(v))?;
+                curves.extend(along(&pts));
                 if !run.isolated {
-                    draw_rings(root, &pts, color)?;
+                    draw_rings(root, &px(&run.points), color)?;
                 }
             }
         }
         overlays.draw(root, px)?;
-        // Names above their markers, raised row by row where they would overlap one another.
+        // The markers, then the names placed clear of them and of one another.
         let mut labels = Vec::new();
+        let mut markers = Vec::new();
         for (kind, q, name) in &events {
             let c = chart.backend_coord(q);
             draw_event_marker(root, c, *kind)?;
+            markers.push(Rect::around(c, 8));
             if let Some(name) = name {
                 labels.push((c, name.clone()));
             }
         }
-        draw_names(root, &labels)?;
+        draw_names(root, &labels, &markers, &curves, plot_rect(chart, &frame))?;
         Ok(())
     })
+}
+
+/// The runs that show: not those lying wholly under an event's marker (within about 14 pixels
+/// of it: the sample or two where a test is inconclusive exactly at the event), nor fragments
+/// under 4 pixels long. Pixels are estimated from the figure's size (the axes take about 65 % of
+/// its width and 85 % of its height).
+fn drawn_runs(
+    runs: Vec<Run>,
+    events: &[(f64, f64)],
+    frame: &Frame,
+    opts: &PlotOptions,
+) -> Vec<Run> {
+    let (sx, sy) = (
+        0.65 * f64::from(opts.width) / (frame.x.1 - frame.x.0),
+        0.85 * f64::from(opts.height) / (frame.y.1 - frame.y.0),
+    );
+    let dist = |a: (f64, f64), b: (f64, f64)| ((a.0 - b.0) * sx).hypot((a.1 - b.1) * sy);
+    let length = |pts: &[(f64, f64)]| -> f64 { pts.windows(2).map(|w| dist(w[0], w[1])).sum() };
+    let under_marker = |pts: &[(f64, f64)]| {
+        events
+            .iter()
+            .any(|&e| pts.iter().all(|&p| dist(p, e) <= 14.0))
+    };
+    runs.into_iter()
+        .filter(|r| r.whole || (length(&r.points) >= 4.0 && !under_marker(&r.points)))
+        .collect()
 }

@@ -8,8 +8,10 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::curve::PxF;
+use super::labels::Rect;
 use super::legend::{draw_legend, legend_width, Entry, Swatch};
-use super::marks::{stroke_path, Px, Root};
+use super::marks::{fractional_polylines, reset_fine, stroke_path, Px, Root};
 use super::style::{overlay_stroke, Stroke};
 use super::{drawing_error, PlotError, PlotOptions};
 
@@ -66,13 +68,14 @@ pub(super) fn write_svg(
     draw: impl FnOnce(&Root) -> Result<(), PlotError>,
 ) -> Result<(), PlotError> {
     let mut svg = String::new();
+    reset_fine();
     {
         let root = SVGBackend::with_string(&mut svg, (opts.width, opts.height)).into_drawing_area();
         root.fill(&WHITE).map_err(drawing_error)?;
         draw(&root)?;
         root.present().map_err(drawing_error)?;
     }
-    write_whole(path, svg.as_bytes())
+    write_whole(path, fractional_polylines(&svg).as_bytes())
 }
 
 /// Writes `bytes` to `path` whole or not at all: into a temporary file beside it (same
@@ -316,5 +319,32 @@ impl Overlays {
             }
         }
         Ok(())
+    }
+}
+
+/// The rectangle of the axes in backend pixels.
+pub(super) fn plot_rect(chart: &Chart, frame: &Frame) -> Rect {
+    let a = chart.backend_coord(&(frame.x.0, frame.y.1));
+    let b = chart.backend_coord(&(frame.x.1, frame.y.0));
+    Rect {
+        x0: a.0.min(b.0),
+        y0: a.1.min(b.1),
+        x1: a.0.max(b.0),
+        y1: a.1.max(b.1),
+    }
+}
+
+/// The map from data coordinates to fractional backend pixels (the linear map of the axes,
+/// without plotters' rounding to whole pixels).
+pub(super) fn float_px(chart: &Chart, frame: &Frame) -> impl Fn(&(f64, f64)) -> PxF {
+    let a = chart.backend_coord(&(frame.x.0, frame.y.1));
+    let b = chart.backend_coord(&(frame.x.1, frame.y.0));
+    let ((x0, x1), (y0, y1)) = (frame.x, frame.y);
+    let (ax, ay, bx, by) = (a.0 as f64, a.1 as f64, b.0 as f64, b.1 as f64);
+    move |p: &(f64, f64)| {
+        (
+            ax + (p.0 - x0) / (x1 - x0) * (bx - ax),
+            ay + (y1 - p.1) / (y1 - y0) * (by - ay),
+        )
     }
 }

@@ -83,7 +83,13 @@ pub(super) fn draw_legend(
                 ))
                 .map_err(drawing_error)?;
             }
-            Swatch::Boundary(kind) => stroke_boundary(root, &[line.to_vec()], *kind, mono)?,
+            Swatch::Boundary(kind) => {
+                let line: Vec<(f64, f64)> = line
+                    .iter()
+                    .map(|&(x, y)| (f64::from(x), f64::from(y)))
+                    .collect();
+                stroke_boundary(root, &[line], *kind, mono)?
+            }
             Swatch::OrbitEvent(kind) => {
                 draw_orbit_event_marker(root, ((sx0 + sx1) / 2, cy), *kind)?
             }

@@ -1,12 +1,17 @@
 //! Marks drawn in pixels: stroked paths, rings along a branch, event markers, shaded cells and
 //! the × of a missing steady motion.
 
+use std::cell::RefCell;
+
 use plotters::coord::Shift;
 use plotters::element::{DashedPathElement, DottedPathElement};
 use plotters::prelude::*;
 
+use super::curve::{dashes, smooth, PxF};
+use super::labels::{place, Placed, Rect};
 use super::style::BOUNDARY_UNDERLAY;
 use super::style::{boundary_color, boundary_stroke, cell_fill, Pattern, Stroke};
+use super::style::{font_px, written_size, FONT, HATCH_INK, HATCH_SPACING};
 use super::{drawing_error, PlotError};
 use crate::{EventKind, OrbitEventKind, Stability};
 
@@ -44,15 +49,15 @@ pub(super) fn stroke_path(
 /// then each in its own style.
 pub(super) fn stroke_boundary(
     root: &Root,
-    parts: &[Vec<Px>],
+    parts: &[Vec<PxF>],
     kind: EventKind,
     mono: bool,
 ) -> Result<(), PlotError> {
     for part in parts {
-        stroke_path(root, part, WHITE, BOUNDARY_UNDERLAY)?;
+        stroke_curve(root, part, WHITE, BOUNDARY_UNDERLAY)?;
     }
     for part in parts {
-        stroke_path(
+        stroke_curve(
             root,
             part,
             boundary_color(kind, mono),
@@ -148,26 +153,156 @@ pub(super) fn draw_fixed_point(root: &Root, c: Px) -> Result<(), PlotError> {
         .map_err(drawing_error)
 }
 
-/// Writes each name above and to the right of its marker at `c`, raising a name row by row
-/// where it would overlap one written before.
-pub(super) fn draw_names(root: &Root, names: &[(Px, String)]) -> Result<(), PlotError> {
-    let font = ("sans-serif", 14).into_font().color(&BLACK);
-    let mut placed: Vec<(i32, i32, i32)> = Vec::new(); // left, right, top
-    for (c, name) in names {
-        let w = 8 * name.chars().count() as i32;
-        let (left, right) = (c.0 + 6, c.0 + 6 + w);
-        let mut top = c.1 - 22;
-        while placed
-            .iter()
-            .any(|&(l, r, t)| left < r + 4 && l < right + 4 && (top - t).abs() < 16)
-        {
-            top -= 16;
+/// Writes each name beside its marker at `c`, placed by [`place`] clear of one another, of the
+/// `markers` and inside `area`; a name put away from its marker gets a thin grey leader line.
+/// Returns where each went.
+pub(super) fn draw_names(
+    root: &Root,
+    names: &[(Px, String)],
+    markers: &[Rect],
+    curves: &[Px],
+    area: Rect,
+) -> Result<Vec<Placed>, PlotError> {
+    // Asked for at the style's size in pixels, as every font of the SVGs: plotters writes it
+    // 1.24 times smaller, and the labels are placed at the size written.
+    let asked = font_px(FONT.annotation_pt);
+    let size = written_size(asked);
+    let placed = place(names, markers, curves, area, size);
+    let font = (FONT.family, asked).into_font().color(&BLACK);
+    for p in &placed {
+        let r = p.rect;
+        if p.leader {
+            // From the marker's edge to the nearest point of the box.
+            let q = (p.anchor.0.clamp(r.x0, r.x1), p.anchor.1.clamp(r.y0, r.y1));
+            let (dx, dy) = ((q.0 - p.anchor.0) as f64, (q.1 - p.anchor.1) as f64);
+            let d = dx.hypot(dy).max(1.0);
+            let from = (
+                p.anchor.0 + (9.0 * dx / d).round() as i32,
+                p.anchor.1 + (9.0 * dy / d).round() as i32,
+            );
+            stroke_path(root, &[from, q], RGBColor(110, 110, 110), Stroke::Solid(1))?;
         }
-        placed.push((left, right, top));
-        root.draw(&Text::new(name.clone(), (left, top), font.clone()))
+        // A light ground under the text itself (narrower than the box kept clear for it).
+        let ground = (0.56 * size * p.text.chars().count() as f64).ceil() as i32;
+        root.draw(&Rectangle::new(
+            [(r.x0 - 1, r.y0 + 1), (r.x0 + ground + 1, r.y1 - 1)],
+            WHITE.mix(0.8).filled(),
+        ))
+        .map_err(drawing_error)?;
+        root.draw(&Text::new(p.text.clone(), (r.x0, r.y0 + 1), font.clone()))
             .map_err(drawing_error)?;
     }
-    Ok(())
+    Ok(placed)
+}
+
+/// Points every few pixels along the polyline (fractional pixels), for labels to keep off.
+pub(super) fn along(pts: &[PxF]) -> Vec<Px> {
+    let mut out = Vec::new();
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let n = ((b.0 - a.0).hypot(b.1 - a.1) / 4.0).ceil().max(1.0) as usize;
+        for k in 0..n {
+            let t = k as f64 / n as f64;
+            out.push((
+                (a.0 + t * (b.0 - a.0)).round() as i32,
+                (a.1 + t * (b.1 - a.1)).round() as i32,
+            ));
+        }
+    }
+    if let Some(p) = pts.last() {
+        out.push((p.0.round() as i32, p.1.round() as i32));
+    }
+    out
+}
+
+thread_local! {
+    /// The polylines in fractional pixels of the figure being drawn on this thread (plotters'
+    /// SVG backend writes whole pixels only), each put in place of its placeholder by
+    /// [`fractional_polylines`] once the figure is drawn.
+    static FINE: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The text of the placeholder of the `k`-th fine polyline.
+fn fine_tag(k: usize) -> String {
+    format!("routh-fine-polyline-{k}.")
+}
+
+/// Empties the store of fine polylines (before a figure is drawn).
+pub(super) fn reset_fine() {
+    FINE.with(|f| f.borrow_mut().clear());
+}
+
+/// Strokes the polyline `pts` in fractional pixels, solid: a placeholder now, the polyline
+/// itself (coordinates to 1/100 pixel, round joins) in the SVG written.
+fn stroke_fine(root: &Root, pts: &[PxF], color: RGBColor, width: u32) -> Result<(), PlotError> {
+    if pts.len() < 2 {
+        return Ok(());
+    }
+    let mut points = String::new();
+    for p in pts {
+        points.push_str(&format!("{:.2},{:.2} ", p.0, p.1));
+    }
+    let RGBColor(r, g, b) = color;
+    let line = format!(
+        "<polyline fill=\"none\" opacity=\"1\" stroke=\"#{r:02X}{g:02X}{b:02X}\" \
+         stroke-width=\"{width}\" stroke-linejoin=\"round\" stroke-linecap=\"butt\" \
+         points=\"{points}\"/>"
+    );
+    let k = FINE.with(|f| {
+        let mut f = f.borrow_mut();
+        f.push(line);
+        f.len() - 1
+    });
+    root.draw(&Text::new(
+        fine_tag(k),
+        (0, 0),
+        ("sans-serif", 1).into_font(),
+    ))
+    .map_err(drawing_error)
+}
+
+/// The SVG with each placeholder of [`stroke_fine`] (a `<text>` element) replaced by its
+/// polyline, in the order drawn; empties the store.
+pub(super) fn fractional_polylines(svg: &str) -> String {
+    let lines = FINE.with(|f| std::mem::take(&mut *f.borrow_mut()));
+    if lines.is_empty() {
+        return svg.to_string();
+    }
+    let mut out = String::with_capacity(svg.len() + 64 * lines.len());
+    let mut rest = svg;
+    for (k, line) in lines.iter().enumerate() {
+        let tag = fine_tag(k);
+        let Some(at) = rest.find(&tag) else { continue };
+        let (Some(start), Some(end)) = (rest[..at].rfind("<text"), rest[at..].find("</text>"))
+        else {
+            continue;
+        };
+        out.push_str(&rest[..start]);
+        out.push_str(line);
+        rest = &rest[at + end + "</text>".len()..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Strokes a curve through the fractional-pixel samples `pts`, smoothed ([`smooth`]) and with
+/// its dashes laid along its whole length ([`dashes`]).
+pub(super) fn stroke_curve(
+    root: &Root,
+    pts: &[PxF],
+    color: RGBColor,
+    stroke: Stroke,
+) -> Result<(), PlotError> {
+    let smooth = smooth(pts);
+    match stroke {
+        Stroke::Solid(w) => stroke_fine(root, &smooth, color, w),
+        Stroke::Dashed(w, dash, gap) => {
+            for d in dashes(&smooth, dash as f64, gap as f64) {
+                stroke_fine(root, &d, color, w)?;
+            }
+            Ok(())
+        }
+    }
 }
 
 /// Shades the pixel rectangle with corners `a` (top left) and `b` (bottom right) as a cell of
@@ -197,8 +332,8 @@ fn fill_cell(
     }
     root.draw(&Rectangle::new([(x0, y0), (x1, y1)], color.filled()))
         .map_err(drawing_error)?;
-    const SP: i32 = 9;
-    let ink = RGBColor(40, 40, 40);
+    const SP: i32 = HATCH_SPACING;
+    let ink = HATCH_INK;
     match pattern {
         Pattern::Plain => {}
         Pattern::Dots => {

@@ -29,9 +29,18 @@
 //!   ● [`OrbitEventKind::BranchPoint`] and ◆ [`OrbitEventKind::PeriodDoubling`], each named
 //!   beside its marker.
 //!
-//! A legend to the right of the axes names every line style, marker and shading that occurs.
-//! Colour is added on top (switch it off with [`PlotOptions::monochrome`]). Every figure is
-//! written whole or not at all: into a temporary file beside `path`, then renamed onto it.
+//! A legend to the right of the axes names every line style, marker and shading that is drawn
+//! (a verdict seen only under an event's marker is neither drawn nor listed). Colour is added on
+//! top (switch it off with [`PlotOptions::monochrome`]): the Okabe–Ito colours of the one style
+//! of routh's figures, [`style`] (the table [`crate::style::STYLE`], which the Python package's
+//! matplotlib figures read too). Curves are drawn smooth at print resolution (a cubic Hermite
+//! curve through the samples, in fractional pixels, dashes laid along the whole curve); event
+//! names are placed clear of one another, of the markers and where possible of the curves, on
+//! leader lines when they must stand away, with their values on request
+//! ([`PlotOptions::event_values`]); the regions of an atlas are clipped to its traced boundaries;
+//! [`with_circle_verdicts`] draws circles of steady motions with the verdict of
+//! [`classify_circle`](crate::classify_circle). Every figure is written whole or not at all:
+//! into a temporary file beside `path`, then renamed onto it.
 //!
 //! ```
 //! use routh::plot::{bifurcation_diagram_svg, stability_atlas_svg, DiagramAxis, PlotOptions};
@@ -81,22 +90,33 @@ use crate::{
 use crate::{EventKind, OrbitEventKind, OrbitStability, Stability};
 
 // This file holds the public API; the drawing is split by responsibility: `style` (strokes,
-// colours and fills by verdict and event), `marks` (what is drawn in pixels), `legend`, `frame`
+// colours and fills by verdict and event, from `crate::style`), `curve` (smoothing and dashing),
+// `labels` (placement of event names), `regions` (atlas regions clipped to the boundaries),
+// `circles` (`with_circle_verdicts`), `marks` (what is drawn in pixels), `legend`, `frame`
 // (ranges, clipping, axes, overlays, the SVG file), `diagram` (branches and events), `atlas`
 // (cells and boundaries), `orbits` (families of periodic orbits, the sphere of γ, Poincaré
 // sections) and `axis` (`DiagramAxis`).
 mod atlas;
 mod axis;
+mod circles;
+mod curve;
 mod diagram;
 mod frame;
+mod labels;
 mod legend;
 mod marks;
 mod orbits;
-mod style;
+#[cfg(feature = "png")]
+mod png;
+mod regions;
+pub mod style;
 mod trajectory;
 
 pub use axis::DiagramAxis;
+pub use circles::with_circle_verdicts;
 pub use orbits::stability_index_axis;
+#[cfg(feature = "png")]
+pub use png::png_from_svg;
 pub use trajectory::{apex_locus_svg, apex_path, time_histories_svg};
 
 /// The errors of the plotting functions.
@@ -207,6 +227,10 @@ pub struct PlotOptions {
     /// Reference curves drawn on top of a bifurcation diagram or an atlas, in the data's
     /// coordinates, each named in the legend — e.g. a closed form to compare with (default none).
     pub overlays: Vec<Overlay>,
+    /// Write each event's parameter value beside its marker (`branch point at 2.5`), in the
+    /// diagrams of branches and of families of periodic orbits (default `false`: names only
+    /// where the figure writes them, the legend tells the markers apart).
+    pub event_values: bool,
 }
 
 /// A named reference curve of [`PlotOptions::overlays`], drawn in black over the data (long
@@ -262,6 +286,7 @@ impl Default for PlotOptions {
             y: DiagramAxis::GammaZ,
             monochrome: false,
             overlays: Vec::new(),
+            event_values: false,
         }
     }
 }
@@ -423,12 +448,14 @@ pub fn energy_momentum_svg<P: AsRef<Path>>(
     )
 }
 
-/// Writes the stability atlas as an SVG: the parameter plane with each grid node's cell shaded by
-/// its verdict and the boundary curves on top.
+/// Writes the stability atlas as an SVG: the parameter plane shaded by verdict and the boundary
+/// curves on top. The regions are clipped to the traced boundaries: each pixel takes the verdict
+/// of the nearest grid node it reaches without crossing a boundary curve, so that the shading
+/// meets the curves instead of stepping across them cell by cell.
 ///
-/// Each verdict has a grey level and a pattern: secularly stable plain light, gyroscopically
-/// stabilised dotted, unstable hatched `/`, degenerate cross-hatched; where the steady motion does
-/// not exist (`None`) the cell is white with a small ×. Boundary curves are solid (fold), dashed
+/// Each verdict has a tint (a grey level in monochrome) and a light pattern: secularly stable
+/// plain, gyroscopically stabilised dotted, unstable hatched `/`, degenerate cross-hatched; where
+/// the steady motion does not exist (`None`) the cell is white with a small ×. Boundary curves are solid (fold), dashed
 /// (branch point) or dotted (Hamiltonian–Hopf), on a white underlay. The legend names each shading
 /// and curve that occurs. The axes are labelled [`PlotOptions::x_label`] and
 /// [`PlotOptions::y_label`] (`"y"` when empty); [`PlotOptions::y`] is not used.

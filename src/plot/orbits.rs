@@ -8,9 +8,13 @@ use std::path::Path;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::frame::{draw_figure, extent, padded, write_svg, Frame, Overlays};
+use super::curve::PxF;
+use super::frame::{draw_figure, extent, float_px, padded, plot_rect, write_svg, Frame, Overlays};
+use super::labels::{value, Rect};
 use super::legend::{draw_legend, legend_width, Entry, Swatch};
-use super::marks::{draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_path, Px};
+use super::marks::{
+    along, draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_curve, stroke_path, Px,
+};
 use super::style::{
     orbit_color, orbit_event_name, orbit_stroke, orbit_verdict_name, palette, ramp, Stroke,
     ORBIT_KINDS, ORBIT_VERDICTS, PARABOLIC_LINE,
@@ -293,6 +297,7 @@ pub(super) fn family_figure(
                     .map_err(drawing_error)?;
             }
         }
+        let mut curves = Vec::new();
         // Elliptic runs last, so that they stay on top.
         for &v in ORBIT_VERDICTS.iter().rev() {
             for run in runs.iter().filter(|r| r.verdict == v) {
@@ -303,17 +308,29 @@ pub(super) fn family_figure(
                         .map_err(drawing_error)?;
                     continue;
                 }
-                stroke_path(root, &pts, color, orbit_stroke(v))?;
+                let fpx = float_px(chart, &frame);
+                let fine: Vec<PxF> = run.points.iter().map(fpx).collect();
+                stroke_curve(root, &fine, color, orbit_stroke(v))?;
+                curves.extend(along(&fine));
             }
         }
         overlays.draw(root, px)?;
-        let mut names = Vec::new();
+        let (mut names, mut markers) = (Vec::new(), Vec::new());
         for (kind, q) in &events {
             let c = chart.backend_coord(q);
             draw_orbit_event_marker(root, c, *kind)?;
-            names.push((c, orbit_event_name(*kind).to_string()));
+            markers.push(Rect::around(c, 9));
+            let name = orbit_event_name(*kind);
+            names.push((
+                c,
+                if opts.event_values {
+                    format!("{name} at E = {}", value(q.0))
+                } else {
+                    name.to_string()
+                },
+            ));
         }
-        draw_names(root, &names)
+        draw_names(root, &names, &markers, &curves, plot_rect(chart, &frame)).map(|_| ())
     })
 }
 
@@ -540,11 +557,16 @@ pub(super) fn sphere_figure(
         let h = opts.height as i32;
         let radius = ((left_w - 60).min(h - top - 30) / 2).max(20);
         let centre = (left_w / 2, top + (h - top) / 2);
-        let to_px = |g: &Vector3<f64>| -> Px {
+        // In fractional pixels: the curves are smoothed before they are rounded.
+        let to_fpx = |g: &Vector3<f64>| -> PxF {
             (
-                centre.0 + (radius as f64 * g.dot(&r)).round() as i32,
-                centre.1 - (radius as f64 * g.dot(&u)).round() as i32,
+                f64::from(centre.0) + radius as f64 * g.dot(&r),
+                f64::from(centre.1) - radius as f64 * g.dot(&u),
             )
+        };
+        let to_px = |g: &Vector3<f64>| -> Px {
+            let (x, y) = to_fpx(g);
+            (x.round() as i32, y.round() as i32)
         };
         // The principal planes, then the limb.
         for i in 0..3 {
@@ -557,7 +579,7 @@ pub(super) fn sphere_figure(
                     a * t.cos() + c * t.sin()
                 })
                 .collect();
-            draw_on_sphere(root, &circle, &w, &to_px, GRID, 1)?;
+            draw_on_sphere(root, &circle, &w, &to_fpx, GRID, 1)?;
         }
         root.draw(&Circle::new(centre, radius as u32, BLACK.stroke_width(1)))
             .map_err(drawing_error)?;
@@ -583,7 +605,7 @@ pub(super) fn sphere_figure(
         }
         for (k, t) in paths.iter().enumerate() {
             let pts: Vec<Vector3<f64>> = t.gamma.iter().map(|g| g.normalize()).collect();
-            draw_on_sphere(root, &pts, &w, &to_px, ramp(k, n, mono), 2)?;
+            draw_on_sphere(root, &pts, &w, &to_fpx, ramp(k, n, mono), 2)?;
         }
         draw_legend(root, (left_w + 10, top), &legend, mono)
     })
@@ -599,11 +621,11 @@ fn draw_on_sphere(
     root: &super::marks::Root,
     pts: &[Vector3<f64>],
     w: &Vector3<f64>,
-    to_px: &impl Fn(&Vector3<f64>) -> Px,
+    to_px: &impl Fn(&Vector3<f64>) -> PxF,
     color: RGBColor,
     width: u32,
 ) -> Result<(), PlotError> {
-    let mut parts: Vec<(bool, Vec<Px>)> = Vec::new();
+    let mut parts: Vec<(bool, Vec<PxF>)> = Vec::new();
     let mut prev: Option<(Vector3<f64>, f64)> = None;
     for p in pts {
         let d = p.dot(w);
@@ -620,10 +642,9 @@ fn draw_on_sphere(
         }
         prev = Some((*p, d));
     }
-    for (near, mut part) in parts {
-        part.dedup();
+    for (near, part) in parts {
         let stroke = if near { Stroke::Solid(width) } else { FAR_SIDE };
-        stroke_path(root, &part, color, stroke)?;
+        stroke_curve(root, &part, color, stroke)?;
     }
     Ok(())
 }

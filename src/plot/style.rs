@@ -1,10 +1,63 @@
-//! How each verdict, event kind and overlay is drawn: strokes, colours and fills. Every style
-//! reads without colour; the colour of [`verdict_color`] and [`boundary_color`] is added on top
-//! (black with [`PlotOptions::monochrome`](super::PlotOptions::monochrome)).
+//! The one style of the figures ([`crate::style`]) mapped onto plotters' colours and strokes: how
+//! each verdict, event kind and overlay is drawn. Every style reads without colour; the colour is
+//! added on top (black with [`PlotOptions::monochrome`](super::PlotOptions::monochrome)).
+
+pub use crate::style::{look, Fonts, Look, COLUMN_WIDTH_IN, FONT, OKABE_ITO, PX_PER_PT, STYLE};
 
 use plotters::style::{RGBColor, BLACK};
 
 use crate::{EventKind, OrbitEventKind, OrbitStability, Resonance, Stability};
+
+// What follows maps the table onto plotters' colours and strokes for the SVGs.
+
+/// The colour of `#RRGGBB`.
+pub(super) const fn rgb(hex: &str) -> RGBColor {
+    const fn digit(c: u8) -> u8 {
+        match c {
+            b'0'..=b'9' => c - b'0',
+            b'a'..=b'f' => c - b'a' + 10,
+            b'A'..=b'F' => c - b'A' + 10,
+            _ => 0,
+        }
+    }
+    let b = hex.as_bytes();
+    if b.len() != 7 {
+        return BLACK;
+    }
+    RGBColor(
+        digit(b[1]) * 16 + digit(b[2]),
+        digit(b[3]) * 16 + digit(b[4]),
+        digit(b[5]) * 16 + digit(b[6]),
+    )
+}
+
+/// The look of `name` in `group`; every key used below is in [`STYLE`] (a test checks them).
+fn the(group: &str, name: &str) -> &'static Look {
+    look(group, name).unwrap_or(&STYLE[STYLE.len() - 1])
+}
+
+/// Points to whole pixels, at least one.
+fn px(pt: f64) -> u32 {
+    (pt * PX_PER_PT).round().max(1.0) as u32
+}
+
+/// A font size in pixels.
+pub(super) fn font_px(pt: f64) -> f64 {
+    pt * PX_PER_PT
+}
+
+/// The `font-size` plotters writes in the SVG for a font asked for at `px` (over 1.24).
+pub(super) fn written_size(px: f64) -> f64 {
+    px / 1.24
+}
+
+/// The stroke of a look, in pixels.
+fn stroke_of(l: &Look) -> Stroke {
+    match l.dash_pt {
+        None => Stroke::Solid(px(l.width_pt)),
+        Some((dash, gap)) => Stroke::Dashed(px(l.width_pt), px(dash), px(gap)),
+    }
+}
 
 /// The verdicts in the order of the legend (and the reverse of the drawing order).
 pub(super) const VERDICTS: [Stability; 4] = [
@@ -23,6 +76,36 @@ pub(super) const KINDS: [EventKind; 5] = [
     EventKind::ArnoldDegenerate,
     EventKind::Resonance,
 ];
+
+/// The key of a verdict in [`STYLE`] (and in the Python package).
+pub(super) fn verdict_key(v: Stability) -> &'static str {
+    match v {
+        Stability::SecularlyStable => "secularly_stable",
+        Stability::GyroscopicallyStabilized => "gyroscopically_stabilized",
+        Stability::Unstable => "unstable",
+        Stability::Degenerate => "degenerate",
+    }
+}
+
+/// The key of an event kind in [`STYLE`].
+pub(super) fn event_key(k: EventKind) -> &'static str {
+    match k {
+        EventKind::Fold => "fold",
+        EventKind::BranchPoint => "branch_point",
+        EventKind::HamiltonianHopf => "hamiltonian_hopf",
+        EventKind::ArnoldDegenerate => "arnold_degenerate",
+        EventKind::Resonance => "resonance",
+    }
+}
+
+fn orbit_key(v: OrbitStability) -> &'static str {
+    match v {
+        OrbitStability::Elliptic => "elliptic",
+        OrbitStability::Parabolic => "parabolic",
+        OrbitStability::Hyperbolic => "hyperbolic",
+        OrbitStability::InverseHyperbolic => "inverse_hyperbolic",
+    }
+}
 
 /// How a polyline is stroked.
 #[derive(Debug, Clone, Copy)]
@@ -59,32 +142,16 @@ fn ink(color: RGBColor, mono: bool) -> RGBColor {
 
 /// The stroke of a run of a branch: thick solid, thin solid, dashed, dotted.
 pub(super) fn verdict_stroke(v: Stability) -> Stroke {
-    match v {
-        Stability::SecularlyStable => Stroke::Solid(4),
-        Stability::GyroscopicallyStabilized => Stroke::Solid(1),
-        Stability::Unstable => Stroke::Dashed(2, 9, 6),
-        Stability::Degenerate => Stroke::Dashed(2, 2, 4),
-    }
+    stroke_of(the("verdict", verdict_key(v)))
 }
 
 pub(super) fn verdict_color(v: Stability, mono: bool) -> RGBColor {
-    let color = match v {
-        Stability::SecularlyStable => RGBColor(0, 130, 55),
-        Stability::GyroscopicallyStabilized => RGBColor(25, 80, 210),
-        Stability::Unstable => RGBColor(205, 30, 30),
-        Stability::Degenerate => RGBColor(110, 110, 110),
-    };
-    ink(color, mono)
+    ink(rgb(the("verdict", verdict_key(v)).color), mono)
 }
 
 /// The stroke of a boundary curve of an atlas: solid, dashed, dotted.
 pub(super) fn boundary_stroke(k: EventKind) -> Stroke {
-    match k {
-        EventKind::Fold => Stroke::Solid(3),
-        EventKind::BranchPoint => Stroke::Dashed(3, 12, 5),
-        EventKind::HamiltonianHopf => Stroke::Dashed(3, 3, 4),
-        EventKind::ArnoldDegenerate | EventKind::Resonance => Stroke::Dashed(2, 2, 2),
-    }
+    stroke_of(the("boundary", event_key(k)))
 }
 
 /// The stroke of a nonlinear curve of an atlas ([`StabilityAtlas::nonlinear`]): thin, with dashes
@@ -93,20 +160,14 @@ pub(super) fn boundary_stroke(k: EventKind) -> Stroke {
 /// [`StabilityAtlas::nonlinear`]: crate::StabilityAtlas::nonlinear
 pub(super) fn nonlinear_stroke(resonance: Option<Resonance>) -> Stroke {
     match resonance {
-        None => Stroke::Dashed(2, 2, 3),
-        Some(Resonance::OneToTwo) => Stroke::Dashed(2, 7, 4),
+        None => stroke_of(the("boundary", "arnold_degenerate")),
+        Some(Resonance::OneToTwo) => stroke_of(the("boundary", "resonance")),
         Some(_) => Stroke::Dashed(2, 16, 4),
     }
 }
 
 pub(super) fn boundary_color(k: EventKind, mono: bool) -> RGBColor {
-    let color = match k {
-        EventKind::Fold => BLACK,
-        EventKind::BranchPoint => RGBColor(90, 0, 130),
-        EventKind::HamiltonianHopf => RGBColor(150, 50, 0),
-        EventKind::ArnoldDegenerate | EventKind::Resonance => RGBColor(0, 90, 150),
-    };
-    ink(color, mono)
+    ink(rgb(the("boundary", event_key(k)).color), mono)
 }
 
 /// The pattern over the background of an atlas cell.
@@ -118,19 +179,32 @@ pub(super) enum Pattern {
     CrossHatch,
 }
 
+/// The ink of the atlas's patterns: a light grey, so that the hatching does not crowd the
+/// boundary curves.
+pub(super) const HATCH_INK: RGBColor = RGBColor(140, 140, 140);
+/// The spacing of the atlas's patterns, in pixels.
+pub(super) const HATCH_SPACING: i32 = 12;
+
 /// Fill of an atlas cell: background colour (a grey level in a monochrome figure) and pattern.
 pub(super) fn cell_fill(v: Stability, mono: bool) -> (RGBColor, Pattern) {
-    let (grey, tint, pattern) = match v {
-        Stability::SecularlyStable => (240, RGBColor(228, 244, 228), Pattern::Plain),
-        Stability::GyroscopicallyStabilized => (212, RGBColor(200, 214, 240), Pattern::Dots),
-        Stability::Unstable => (180, RGBColor(238, 178, 172), Pattern::Hatch),
-        Stability::Degenerate => (150, RGBColor(160, 160, 160), Pattern::CrossHatch),
+    let l = the("verdict", verdict_key(v));
+    let grey = match v {
+        Stability::SecularlyStable => 245,
+        Stability::GyroscopicallyStabilized => 225,
+        Stability::Unstable => 205,
+        Stability::Degenerate => 185,
+    };
+    let pattern = match l.hatch {
+        Some(".") => Pattern::Dots,
+        Some("/") => Pattern::Hatch,
+        Some("x") => Pattern::CrossHatch,
+        _ => Pattern::Plain,
     };
     (
         if mono {
             RGBColor(grey, grey, grey)
         } else {
-            tint
+            rgb(l.fill.unwrap_or("#FFFFFF"))
         },
         pattern,
     )
@@ -156,32 +230,16 @@ pub(super) const ORBIT_KINDS: [OrbitEventKind; 3] = [
 /// solid where elliptic (stable), dashed where hyperbolic, dotted where inverse hyperbolic, and a
 /// medium solid line where parabolic (along a whole run only in degenerate families).
 pub(super) fn orbit_stroke(v: OrbitStability) -> Stroke {
-    match v {
-        OrbitStability::Elliptic => Stroke::Solid(4),
-        OrbitStability::Parabolic => Stroke::Solid(2),
-        OrbitStability::Hyperbolic => Stroke::Dashed(2, 9, 6),
-        OrbitStability::InverseHyperbolic => Stroke::Dashed(2, 2, 4),
-    }
+    stroke_of(the("orbit_verdict", orbit_key(v)))
 }
 
 pub(super) fn orbit_color(v: OrbitStability, mono: bool) -> RGBColor {
-    let color = match v {
-        OrbitStability::Elliptic => RGBColor(0, 130, 55),
-        OrbitStability::Parabolic => RGBColor(90, 0, 130),
-        OrbitStability::Hyperbolic => RGBColor(205, 30, 30),
-        OrbitStability::InverseHyperbolic => RGBColor(200, 110, 0),
-    };
-    ink(color, mono)
+    ink(rgb(the("orbit_verdict", orbit_key(v)).color), mono)
 }
 
 /// The legend text of a verdict of periodic orbits.
 pub(super) fn orbit_verdict_name(v: OrbitStability) -> &'static str {
-    match v {
-        OrbitStability::Elliptic => "elliptic, |k| < 1",
-        OrbitStability::Parabolic => "parabolic, k = ±1",
-        OrbitStability::Hyperbolic => "hyperbolic, k > 1",
-        OrbitStability::InverseHyperbolic => "inverse hyperbolic, k < −1",
-    }
+    the("orbit_verdict", orbit_key(v)).label
 }
 
 /// The name of an event of a family of periodic orbits, in the legend and beside its marker.
@@ -194,20 +252,21 @@ pub(super) fn orbit_event_name(k: OrbitEventKind) -> &'static str {
 }
 
 /// The grey of the reference lines `k = ±1` of a stability diagram of periodic orbits.
-pub(super) const PARABOLIC_LINE: RGBColor = RGBColor(100, 100, 100);
+pub(super) const PARABOLIC_LINE: RGBColor = rgb("#646464");
 
-/// Colours told apart on white, for one curve or cloud of points per orbit (in turn); black in a
-/// monochrome figure.
-const PALETTE: [RGBColor; 8] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-    RGBColor(23, 190, 207),
-    RGBColor(140, 86, 75),
-    RGBColor(188, 189, 34),
-];
+/// [`crate::style::PALETTE`] as plotters' colours; black in a monochrome figure.
+const PALETTE: [RGBColor; 7] = {
+    let p = crate::style::PALETTE;
+    [
+        rgb(p[0]),
+        rgb(p[1]),
+        rgb(p[2]),
+        rgb(p[3]),
+        rgb(p[4]),
+        rgb(p[5]),
+        rgb(p[6]),
+    ]
+};
 
 /// The colour of the `k`-th of several orbits, in turn.
 pub(super) fn palette(k: usize, mono: bool) -> RGBColor {
@@ -227,4 +286,40 @@ pub(super) fn ramp(k: usize, n: usize, mono: bool) -> RGBColor {
         RGBColor(mix(20.0, 215.0), mix(60.0, 95.0), mix(190.0, 0.0)),
         mono,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_key_the_figures_use_is_in_the_table() {
+        for v in VERDICTS {
+            assert!(look("verdict", verdict_key(v)).is_some(), "{v:?}");
+        }
+        for k in KINDS {
+            assert!(look("event", event_key(k)).is_some(), "{k:?}");
+            assert!(look("boundary", event_key(k)).is_some(), "{k:?}");
+        }
+        for v in ORBIT_VERDICTS {
+            assert!(look("orbit_verdict", orbit_key(v)).is_some(), "{v:?}");
+        }
+        assert_eq!(rgb("#0072B2"), RGBColor(0, 114, 178));
+    }
+
+    #[test]
+    fn the_verdicts_differ_in_colour_and_in_stroke() {
+        let vs: Vec<_> = STYLE.iter().filter(|l| l.group == "verdict").collect();
+        for (i, a) in vs.iter().enumerate() {
+            for b in &vs[i + 1..] {
+                assert_ne!(a.color, b.color);
+                assert!(
+                    a.dash_pt != b.dash_pt || a.width_pt != b.width_pt,
+                    "{a:?} {b:?}"
+                );
+                assert_ne!(a.hatch, b.hatch);
+            }
+            assert!(OKABE_ITO.contains(&a.color), "{a:?}");
+        }
+    }
 }

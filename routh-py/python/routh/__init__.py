@@ -36,6 +36,7 @@ from ._routh import (
     SympyFormulas,
     Trajectory,
     bifurcation_diagram,
+    plot_style,
     stability_atlas,
 )
 from . import _routh
@@ -60,6 +61,7 @@ ORBIT_STABILITIES = ("elliptic", "parabolic", "hyperbolic", "inverse_hyperbolic"
 ORBIT_EVENT_KINDS = ("fold", "branch_point", "period_doubling")
 
 __all__ = [
+    "plot_style",
     "Atlas",
     "BifurcationDiagram",
     "Boundary",

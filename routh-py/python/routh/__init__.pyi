@@ -233,8 +233,21 @@ class Diagram:
     """(s, on_branches, searched): steady motions on the branches at s against a global search."""
     def consistent(self) -> bool:
         """Whether every count check agreed (True when none was made)."""
-    def plot(self, ax: Any = None, component: int = 2) -> Any:
-        """Draw s against γ[component] on `ax` (a new one if None); returns the axes."""
+    def plot(
+        self,
+        ax: Any = None,
+        component: int = 2,
+        *,
+        xlabel: str = "p_ψ",
+        ylabel: str | None = None,
+        values: bool = False,
+        circles: Model | None = None,
+        axis: Vec3 = (0.0, 0.0, 1.0),
+    ) -> Any:
+        """Draw s against γ[component] on `ax` (a new one, a journal column wide, if None) in
+        the style of `plot_style()`; `xlabel` names the family's parameter, `values` writes each
+        event's value, `circles` (the model) draws the circles with `classify_circle`'s verdict.
+        Returns the axes."""
     def _repr_svg_(self) -> str: ...
     def _repr_html_(self) -> str: ...
 
@@ -293,8 +306,11 @@ class Atlas:
     stop: str | None
     """None when the atlas is complete; otherwise why it stopped early."""
     boundaries: list[Boundary]
-    def plot(self, ax: Any = None) -> Any:
-        """Draw the verdict regions and the named boundary curves; returns the axes."""
+    def plot(
+        self, ax: Any = None, *, xlabel: str = "first parameter", ylabel: str = "second parameter"
+    ) -> Any:
+        """Draw the verdict regions (tints and hatches), the boundary curves and a legend, the
+        axes named `xlabel` and `ylabel`; returns the axes."""
     def _repr_svg_(self) -> str: ...
     def _repr_html_(self) -> str: ...
 
@@ -733,6 +749,9 @@ def bifurcation_diagram(
     nonlinear: bool = False,
     progress: bool = False,
 ) -> Diagram: ...
+def plot_style() -> dict[str, Any]:
+    """The one style of routh's figures (colours, widths, dashes, markers, fonts) as a dict,
+    shared with the Rust SVGs (`routh::style`)."""
 def stability_atlas(
     family: Callable[[float, float], tuple[Model, float]],
     gamma_guess: Vec3,

@@ -1,0 +1,283 @@
+//! The one style of routh's figures, for both renderers: the colour, line width, dash pattern and
+//! marker of each verdict, event and boundary ([`STYLE`]), and the fonts ([`FONT`]). The SVGs of
+//! `routh::plot` draw with it, and the Python package's matplotlib figures read the same table
+//! from the extension module (`routh.plot_style()`), so that there is no second copy.
+//!
+//! The colours are the Okabe–Ito palette (told apart by readers with any common colour-vision
+//! deficiency); every verdict has its own stroke too (thick solid, thin solid, dashed, dotted), and
+//! every event its own marker, so that a figure reads in monochrome
+//! (`PlotOptions::monochrome` draws all in black).
+//!
+//! ```
+//! use routh::style::{look, FONT, STYLE};
+//!
+//! let stable = look("verdict", "secularly_stable").unwrap();
+//! assert_eq!(stable.color, "#009E73");
+//! assert_eq!(stable.dash_pt, None); // solid
+//! assert!(look("verdict", "unstable").unwrap().dash_pt.is_some());
+//! // Each verdict its own colour.
+//! let verdicts: Vec<_> = STYLE.iter().filter(|l| l.group == "verdict").collect();
+//! assert_eq!(verdicts.len(), 4);
+//! assert!(FONT.tick_pt < FONT.label_pt);
+//! ```
+
+/// How one thing is drawn: a verdict's line, an event's marker, a boundary curve, an atlas cell.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Look {
+    /// `"verdict"`, `"event"`, `"boundary"`, `"orbit_verdict"`, `"orbit_event"` or `"reference"`.
+    pub group: &'static str,
+    /// The key within the group: the names of the Python package (`"secularly_stable"`,
+    /// `"branch_point"`, …).
+    pub name: &'static str,
+    /// The text of the legend.
+    pub label: &'static str,
+    /// The colour, `#RRGGBB` (of the line, or of the marker's ink).
+    pub color: &'static str,
+    /// The line width in points (1/72 in).
+    pub width_pt: f64,
+    /// Dash and gap in points; `None`: solid.
+    pub dash_pt: Option<(f64, f64)>,
+    /// The marker, in matplotlib's letters: `"^"` ▲, `"o"` ●, `"s"` ■, `"O"` ○ (open circle),
+    /// `"x"` ✕, `"D"` ◆; `None` for a line.
+    pub marker: Option<&'static str>,
+    /// The light tint of an atlas region of this verdict, `#RRGGBB`.
+    pub fill: Option<&'static str>,
+    /// The pattern over an atlas region: `""` plain, `"."` dots, `"/"` hatching, `"x"`
+    /// cross-hatching (matplotlib's hatch letters).
+    pub hatch: Option<&'static str>,
+}
+
+const fn line(
+    group: &'static str,
+    name: &'static str,
+    label: &'static str,
+    color: &'static str,
+    width_pt: f64,
+    dash_pt: Option<(f64, f64)>,
+) -> Look {
+    Look {
+        group,
+        name,
+        label,
+        color,
+        width_pt,
+        dash_pt,
+        marker: None,
+        fill: None,
+        hatch: None,
+    }
+}
+
+const fn verdict(
+    name: &'static str,
+    label: &'static str,
+    color: &'static str,
+    width_pt: f64,
+    dash_pt: Option<(f64, f64)>,
+    fill: &'static str,
+    hatch: &'static str,
+) -> Look {
+    Look {
+        fill: Some(fill),
+        hatch: Some(hatch),
+        ..line("verdict", name, label, color, width_pt, dash_pt)
+    }
+}
+
+const fn marker(
+    group: &'static str,
+    name: &'static str,
+    label: &'static str,
+    m: &'static str,
+) -> Look {
+    Look {
+        marker: Some(m),
+        ..line(group, name, label, "#000000", 1.0, None)
+    }
+}
+
+/// The Okabe–Ito colours used: bluish green, blue, vermillion, reddish purple, orange, sky blue.
+pub const OKABE_ITO: [&str; 8] = [
+    "#000000", "#E69F00", "#56B4E9", "#009E73", "#F0E442", "#0072B2", "#D55E00", "#CC79A7",
+];
+
+/// The colours of several orbits drawn together (a Poincaré section's, in turn): the Okabe–Ito
+/// colours but yellow, too light on white.
+pub const PALETTE: [&str; 7] = [
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000",
+];
+
+/// Pixels of an SVG per point of [`Look::width_pt`] and [`FONT`] (an 800-pixel-wide SVG is a
+/// figure 5.6 in wide).
+pub const PX_PER_PT: f64 = 2.0;
+
+/// Every look, by group and name.
+pub const STYLE: &[Look] = &[
+    verdict(
+        "secularly_stable",
+        "secularly stable",
+        "#009E73",
+        2.0,
+        None,
+        "#CCECE3",
+        "",
+    ),
+    verdict(
+        "gyroscopically_stabilized",
+        "gyroscopically stabilised",
+        "#0072B2",
+        1.0,
+        None,
+        "#CCE3F0",
+        ".",
+    ),
+    verdict(
+        "unstable",
+        "unstable",
+        "#D55E00",
+        1.0,
+        Some((4.5, 3.0)),
+        "#F7DFCC",
+        "/",
+    ),
+    verdict(
+        "degenerate",
+        "degenerate (test inconclusive)",
+        "#CC79A7",
+        1.0,
+        Some((1.0, 2.0)),
+        "#F5E4ED",
+        "x",
+    ),
+    marker("event", "fold", "fold", "^"),
+    marker("event", "branch_point", "branch point", "o"),
+    marker("event", "hamiltonian_hopf", "Hamiltonian–Hopf", "s"),
+    marker(
+        "event",
+        "arnold_degenerate",
+        "Arnold-degenerate (D = 0)",
+        "O",
+    ),
+    marker("event", "resonance", "resonance", "x"),
+    line("boundary", "fold", "fold boundary", "#000000", 1.5, None),
+    line(
+        "boundary",
+        "branch_point",
+        "branch point boundary",
+        "#000000",
+        1.5,
+        Some((6.0, 2.5)),
+    ),
+    line(
+        "boundary",
+        "hamiltonian_hopf",
+        "Hamiltonian–Hopf boundary",
+        "#000000",
+        1.5,
+        Some((1.5, 2.0)),
+    ),
+    line(
+        "boundary",
+        "arnold_degenerate",
+        "D = 0 (Arnold-degenerate)",
+        "#0072B2",
+        1.0,
+        Some((1.0, 1.5)),
+    ),
+    line(
+        "boundary",
+        "resonance",
+        "resonance",
+        "#0072B2",
+        1.0,
+        Some((3.5, 2.0)),
+    ),
+    line(
+        "orbit_verdict",
+        "elliptic",
+        "elliptic, |k| < 1",
+        "#009E73",
+        2.0,
+        None,
+    ),
+    line(
+        "orbit_verdict",
+        "parabolic",
+        "parabolic, k = ±1",
+        "#CC79A7",
+        1.0,
+        None,
+    ),
+    line(
+        "orbit_verdict",
+        "hyperbolic",
+        "hyperbolic, k > 1",
+        "#D55E00",
+        1.0,
+        Some((4.5, 3.0)),
+    ),
+    line(
+        "orbit_verdict",
+        "inverse_hyperbolic",
+        "inverse hyperbolic, k < −1",
+        "#E69F00",
+        1.0,
+        Some((1.0, 2.0)),
+    ),
+    marker("orbit_event", "fold", "fold", "^"),
+    marker("orbit_event", "branch_point", "branch point", "o"),
+    marker("orbit_event", "period_doubling", "period doubling", "D"),
+    line(
+        "reference",
+        "overlay",
+        "reference curve",
+        "#000000",
+        1.0,
+        Some((6.0, 2.0)),
+    ),
+    line(
+        "reference",
+        "parabolic_line",
+        "k = ±1",
+        "#646464",
+        0.5,
+        None,
+    ),
+    line("reference", "grid", "grid", "#DDDDDD", 0.5, None),
+];
+
+/// The look of `name` in `group`, if there is one.
+pub fn look(group: &str, name: &str) -> Option<&'static Look> {
+    STYLE.iter().find(|l| l.group == group && l.name == name)
+}
+
+/// The fonts of a figure: one sans-serif family (DejaVu Sans, which matplotlib ships and which
+/// draws γ, ψ, ₃ and −), sizes in points.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fonts {
+    /// The family, as CSS and matplotlib name it.
+    pub family: &'static str,
+    /// Tick labels.
+    pub tick_pt: f64,
+    /// Axis labels.
+    pub label_pt: f64,
+    /// Legend rows.
+    pub legend_pt: f64,
+    /// Names and values beside event markers.
+    pub annotation_pt: f64,
+    /// The title.
+    pub title_pt: f64,
+}
+
+/// The fonts of every figure.
+pub const FONT: Fonts = Fonts {
+    family: "DejaVu Sans",
+    tick_pt: 8.0,
+    label_pt: 9.5,
+    legend_pt: 8.5,
+    annotation_pt: 7.5,
+    title_pt: 10.0,
+};
+
+/// The default width of a figure in inches: a journal's single column (89 mm).
+pub const COLUMN_WIDTH_IN: f64 = 3.5;
