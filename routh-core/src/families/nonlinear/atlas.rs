@@ -5,14 +5,16 @@
 //!
 //! At every gyroscopically stabilised node the nonlinear test gives the three indicators of the
 //! diagram's events (`D/scale`, `ω₁/ω₂ − 2`, `ω₁/ω₂ − 3`). Where one changes sign between two
-//! neighbouring such nodes, the crossing on the grid edge is bisected (the same bisection as the
+//! neighbouring such nodes, the crossing on the grid edge is located (the same locator as the
 //! diagram's events, the steady motion re-solved by Newton at each point) to `1e−9` of the edge;
 //! a sign change of D through a pole is dropped. In each cell the crossings of one indicator on
 //! its edges are joined: two by a segment, four (a saddle) by two segments.
 
 use nalgebra::Vector3;
 
-use super::events::{analyse_with_tape, bisect, indicator_kind, indicators, needs_tape, Solved};
+use super::events::{
+    analyse_with_tape, indicator_kind, indicators, locate_crossing, needs_tape, Solved,
+};
 use crate::error::RouthError;
 use crate::families::EventKind;
 use crate::model::Routhian;
@@ -125,8 +127,7 @@ pub(crate) fn atlas_curves<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
             let rep = analyse_with_tape(&model, &steady, opts)?;
             Ok((steady, rep))
         };
-        let done = |lo: f64, hi: f64| hi - lo <= EDGE_TOL;
-        let (t, _) = bisect(&solve, k, (0.0, ga), (1.0, gb), va[k], &done)?;
+        let (t, _) = locate_crossing(&solve, k, (0.0, ga, va[k]), (1.0, gb, vb[k]), &|_| EDGE_TOL)?;
         Some(lerp(t))
     };
     let mut curves = Vec::new();

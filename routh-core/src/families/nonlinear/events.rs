@@ -5,16 +5,18 @@
 //! One engine for the post-pass [`nonlinear_events`] and for
 //! [`ContinuationOptions::nonlinear`](crate::ContinuationOptions::nonlinear): sign changes of
 //! `D/scale`, `ω₁/ω₂ − 2` and `ω₁/ω₂ − 3` between consecutive points of a branch are bracketed and
-//! bisected to `|Δs| ≤ s_tol·max(1, |s|)`, re-solving the steady motion at each intermediate `s`
-//! by Newton from the interpolated γ. A sign change of D through a pole (D has small divisors at
-//! a 1:2 resonance) is not a zero and is dropped: the located point must have
-//! `|D| ≤ 1e−6·scale`. The same bisection ([`bisect`]) locates the curves of the atlas
-//! (`nonlinear/atlas.rs`).
+//! located by the crate's event locator ([`crate::locate`], regula falsi with the Illinois
+//! modification) to `|Δs| ≤ s_tol·max(1, |s|)`, re-solving the steady motion (and its nonlinear
+//! analysis) at each intermediate `s` by Newton from the interpolated γ. A sign change of D
+//! through a pole (D has small divisors at a 1:2 resonance) is not a zero and is dropped: the
+//! located point must have `|D| ≤ 1e−6·scale`. The same location ([`locate_crossing`]) places
+//! the curves of the atlas (`nonlinear/atlas.rs`).
 
 use nalgebra::Vector3;
 
 use crate::error::RouthError;
 use crate::families::{BifurcationDiagram, BranchEvent, ContinuationOptions, EventKind};
+use crate::locate::{locate, within, End, Stop};
 use crate::model::Routhian;
 use crate::nonlinear::Jet;
 use crate::nonlinear::{
@@ -143,46 +145,58 @@ pub(crate) type Solve<'a> = dyn Fn(f64, &Vector3<f64>) -> Result<Solved, RouthEr
 pub(crate) type Analyse<'a, M> =
     dyn Fn(&M, &SteadyMotion) -> Result<NonlinearReport, RouthError> + 'a;
 
-/// Bisects indicator `k` between `lo` and `hi` (parameter `t` and the steady motion's γ there),
-/// the indicator having the sign of `sign_lo` at `lo` and the opposite at `hi`. `solve(t, guess)`
-/// re-solves the steady motion at `t` from `guess`; the bisection stops when `done(lo, hi)`
-/// (after at least one midpoint). `None` when a re-solve fails or leaves the gyroscopic stretch,
-/// or when a sign change of D is a pole; else the midpoint of the last bracket and the solution
-/// at the last midpoint evaluated.
-pub(crate) fn bisect(
+/// One end of a bracket of an indicator: the parameter, the indicator's value and γ there.
+pub(crate) type Bracketed = (f64, Vector3<f64>, f64);
+
+/// Budget of re-solves (each a nonlinear analysis) of one crossing.
+const LOCATE_BUDGET: usize = 100;
+
+/// Locates the zero of indicator `k` between `a` and `b` (values of opposite signs) with the
+/// crate's event locator ([`crate::locate`]). `solve(t, guess)` re-solves the steady motion at
+/// `t` from `guess` (γ interpolated between the bracket's ends); the search stops once the
+/// better end is within `tol(t)` of the zero (bracket width, or its secant estimate), after at
+/// least one re-solve. `None` when a re-solve fails or leaves the gyroscopic stretch, or when a
+/// sign change of D is a pole; else the better end and the solution there.
+pub(crate) fn locate_crossing(
     solve: &Solve<'_>,
     k: usize,
-    (mut lo, mut glo): (f64, Vector3<f64>),
-    (mut hi, mut ghi): (f64, Vector3<f64>),
-    sign_lo: f64,
-    done: &dyn Fn(f64, f64) -> bool,
+    a: Bracketed,
+    b: Bracketed,
+    tol: &dyn Fn(f64) -> f64,
 ) -> Option<(f64, Solved)> {
-    let mut last: Option<Solved> = None;
-    while last.is_none() || !done(lo, hi) {
-        let mid = 0.5 * (lo + hi);
-        if mid == lo || mid == hi {
-            break; // the bracket is down to adjacent floats
-        }
-        let guess = (glo + ghi).normalize();
-        let (st, rep) = solve(mid, &guess).ok()?;
-        let v = indicators(&rep)[k];
-        if v.is_nan() {
-            return None;
-        }
-        if v * sign_lo > 0.0 {
-            lo = mid;
-            glo = st.gamma;
-        } else {
-            hi = mid;
-            ghi = st.gamma;
-        }
-        last = Some((st, rep));
+    type Point = (Vector3<f64>, Option<Solved>);
+    let end = |(at, gamma, value): Bracketed| End::<Point> {
+        at,
+        value,
+        point: (gamma, None),
+    };
+    let found = locate(
+        end(a),
+        end(b),
+        LOCATE_BUDGET,
+        |t, lo, hi| {
+            let f = (t - lo.at) / (hi.at - lo.at);
+            let guess = (lo.point.0 + f * (hi.point.0 - lo.point.0)).normalize();
+            let Ok((st, rep)) = solve(t, &guess) else {
+                return Ok::<_, ()>(None);
+            };
+            let v = indicators(&rep)[k];
+            Ok((!v.is_nan()).then_some((v, (st.gamma, Some((st, rep))))))
+        },
+        |lo, hi| {
+            let solved = lo.point.1.is_some() || hi.point.1.is_some();
+            solved && within(lo, hi, tol(lo.at.abs().max(hi.at.abs())))
+        },
+    )
+    .ok()?;
+    if found.stop == Stop::SolveFailed {
+        return None;
     }
-    let last = last?;
-    if k == 0 && indicators(&last.1)[0].abs() > POLE_CUT {
+    let solved = found.best.point.1?;
+    if k == 0 && indicators(&solved.1)[0].abs() > POLE_CUT {
         return None; // a pole of D, not a zero
     }
-    Some((0.5 * (lo + hi), last))
+    Some((found.best.at, solved))
 }
 
 /// A point of a gyroscopically stabilised stretch: `s`, γ and the nonlinear report.
@@ -213,7 +227,7 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
         let rep = analyse(&model, &steady)?;
         Ok((steady, rep))
     };
-    let done = |lo: f64, hi: f64| (hi - lo).abs() <= s_tol * hi.abs().max(1.0);
+    let tol = |s: f64| s_tol * s.max(1.0);
     let gyroscopic = |rep: &NonlinearReport| {
         rep.linear.verdict == Stability::GyroscopicallyStabilized
             && rep.frequencies.iter().all(|w| w.is_finite())
@@ -234,7 +248,8 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
             if ia[k] * ib[k] >= 0.0 || ia[k].is_nan() || ib[k].is_nan() {
                 continue;
             }
-            let Some((s, (st, rm))) = bisect(&solve, k, (a.0, a.1), (b.0, b.1), ia[k], &done)
+            let Some((s, (st, rm))) =
+                locate_crossing(&solve, k, (a.0, a.1, ia[k]), (b.0, b.1, ib[k]), &tol)
             else {
                 continue;
             };
