@@ -38,7 +38,7 @@
 //! - next to a node where the motion is lost: the eigenvalue of `K` nearest zero at the last point
 //!   the continuation reached (a fold).
 //!
-//! The crossing is bracketed by regula falsi (Illinois) along the edge, γ following by the same
+//! The crossing is located by the crate's event locator (Illinois) along the edge, γ following by the same
 //! continuation, then projected onto the curve by Gauss–Newton with minimum-norm steps on the
 //! three equations `P_bᵀt(γ(ξ); x, y) = 0` (relative to the local scale) and `τ(γ(ξ); x, y) = 0`
 //! in the four unknowns `(ξ, x, y)` (`x`, `y` scaled to the unit square). The curve is then
