@@ -13,7 +13,8 @@
 use nalgebra::Vector3;
 
 use super::events::{
-    analyse_with_tape, indicator_kind, indicators, locate_crossing, needs_tape, Solved,
+    analyse_with_tape, frequencies_only, indicator_kind, indicators, locate_crossing, needs_tape,
+    Solved,
 };
 use crate::error::RouthError;
 use crate::families::EventKind;
@@ -130,11 +131,15 @@ impl<F> Grid<'_, F> {
         let (xs, ys) = (self.xs, self.ys);
         let (pa, pb) = ((xs[a.0], ys[a.1]), (xs[b.0], ys[b.1]));
         let lerp = |t: f64| (pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1));
-        let solve = |t: f64, guess: &Vector3<f64>| -> Result<Solved, RouthError> {
+        let solve = |t: f64, guess: &Vector3<f64>, full: bool| -> Result<Solved, RouthError> {
             let (x, y) = lerp(t);
             let (model, p) = (self.family)(x, y);
             let steady = steady_motion_near(&model, *guess, p)?;
-            let rep = analyse_with_tape(&model, &steady, self.opts)?;
+            let rep = if full {
+                analyse_with_tape(&model, &steady, self.opts)?
+            } else {
+                frequencies_only(&model, &steady, &self.opts.classify)?
+            };
             Ok((steady, rep))
         };
         let (t, _) = locate_crossing(&solve, k, (0.0, ga, va[k]), (1.0, gb, vb[k]), &|_| EDGE_TOL)?;
