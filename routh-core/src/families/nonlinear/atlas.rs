@@ -142,7 +142,14 @@ impl<F> Grid<'_, F> {
             };
             Ok((steady, rep))
         };
-        let (t, _) = locate_crossing(&solve, k, (0.0, ga, va[k]), (1.0, gb, vb[k]), &|_| EDGE_TOL)?;
+        let (t, _) = locate_crossing(
+            &solve,
+            k,
+            (0.0, ga, va[k]),
+            (1.0, gb, vb[k]),
+            &|_| EDGE_TOL,
+            false,
+        )?;
         Some(lerp(t))
     }
 

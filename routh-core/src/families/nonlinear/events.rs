@@ -195,7 +195,8 @@ const LOCATE_BUDGET: usize = 100;
 /// Locates the zero of indicator `k` between `a` and `b` (values of opposite signs) with the
 /// crate's event locator ([`crate::locate`]). `solve(t, guess, full)` re-solves the steady motion
 /// at `t` from `guess` (γ interpolated between the bracket's ends), for a resonance (`k ≥ 1`)
-/// only as far as the frequencies and fully once, at the located point; the search stops once the
+/// only as far as the frequencies and fully once, at the located point if `report` asks for the
+/// nonlinear report there (else the returned report is the frequencies'); the search stops once the
 /// better end is within `tol(t)` of the zero (bracket width, or its secant estimate), after at
 /// least one re-solve. `None` when a re-solve fails or leaves the gyroscopic stretch, or when a
 /// sign change of D is a pole; else the better end and the solution there.
@@ -205,6 +206,7 @@ pub(crate) fn locate_crossing(
     a: Bracketed,
     b: Bracketed,
     tol: &dyn Fn(f64) -> f64,
+    report: bool,
 ) -> Option<(f64, Solved)> {
     type Point = (Vector3<f64>, Option<Solved>);
     let end = |(at, gamma, value): Bracketed| End::<Point> {
@@ -235,7 +237,7 @@ pub(crate) fn locate_crossing(
         return None;
     }
     let (gamma, solved) = (found.best.point.0, found.best.point.1?);
-    let solved = if k == 0 {
+    let solved = if k == 0 || !report {
         solved
     } else {
         solve(found.best.at, &gamma, true).ok()?
@@ -302,7 +304,7 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
                 continue;
             }
             let Some((s, (st, rm))) =
-                locate_crossing(&solve, k, (a.0, a.1, ia[k]), (b.0, b.1, ib[k]), &tol)
+                locate_crossing(&solve, k, (a.0, a.1, ia[k]), (b.0, b.1, ib[k]), &tol, true)
             else {
                 continue;
             };
