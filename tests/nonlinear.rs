@@ -447,3 +447,37 @@ fn diagram_option_on_the_oblate_lagrange_top_matches_the_closed_forms() {
         assert_eq!(n.after, NonlinearVerdict::LyapunovStable);
     }
 }
+
+/// `AtlasOptions::nonlinear` on the atlas's threads: the curves of the sleeping prolate Lagrange
+/// top above (A = 1, C = 0.8) from `stability_atlas_parallel` on 1, 2 and 3 threads are those of
+/// the sequential `stability_atlas`, bit for bit (each crossing is located from its own edge).
+#[test]
+fn atlas_nonlinear_curves_do_not_depend_on_the_number_of_threads() {
+    use routh::{stability_atlas, stability_atlas_parallel, AtlasOptions};
+    let family = |mgl: f64, p: f64| {
+        (
+            Top {
+                inertia: Vector3::new(1.0, 1.0, 0.8),
+                l: mgl,
+            },
+            p,
+        )
+    };
+    let opts = AtlasOptions {
+        nx: 7,
+        ny: 9,
+        nonlinear: Some(NonlinearOptions::default()),
+        ..Default::default()
+    };
+    let (x, y) = ((0.5, 1.5), (1.5, 4.0));
+    let sequential = stability_atlas(family, Vector3::z(), x, y, &opts).unwrap();
+    assert!(sequential.nonlinear.len() >= 2);
+    for threads in [1, 2, 3] {
+        let o = AtlasOptions {
+            threads,
+            ..opts.clone()
+        };
+        let parallel = stability_atlas_parallel(family, Vector3::z(), x, y, &o).unwrap();
+        assert_eq!(parallel, sequential, "{threads} threads");
+    }
+}

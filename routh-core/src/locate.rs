@@ -1,15 +1,22 @@
 //! The event locator: the zero of a test function along a one-parameter path, bracketed by two
 //! solved points, found by regula falsi with the Illinois modification (docs/method.md §11).
+//! The one locator of the crate: the events of the bifurcation diagrams (`families::continuation`)
+//! and of the orbit families (`periodic`), the starts of the atlas's boundary curves
+//! (`families::atlas::edge`), the nonlinear events and curves (`families::nonlinear`), Poincaré
+//! crossings and returns, and the degenerate critical points of the global search
+//! (`steady::search`).
 //!
 //! The caller gives the bracket `[a, b]` in its own path parameter with the test values at both
 //! ends (opposite signs), a `solve` callback that re-solves its equations at an interior
-//! parameter and returns the test value there with whatever the caller keeps of the point, and a
-//! stop rule on the current bracket (its own scale: `|ΔE| ≤ 1e−9·max(1, |E|)` for orbit events).
-//! The locator returns the end of the final bracket with the smaller test value. The same steps
-//! as the continuation's `Ctx::locate`: the secant point, kept at least `1e−3` of the bracket
-//! from either end (else the midpoint), and the retained end's value halved when the same end
-//! moves twice (Illinois), which makes the convergence superlinear where plain regula falsi
-//! would stall at one end.
+//! parameter (starting from the points at the current bracket's ends) and returns the test
+//! value there with whatever the caller keeps of the point, a budget of solves and a stop rule
+//! on the current bracket, in the event's own scale (`|Δs| ≤ 1e−10·max(1, |s|)` for the events
+//! of a diagram, `|ΔE| ≤ 1e−9·max(1, |E|)` for orbit events). The locator returns the end of the
+//! final bracket with the smaller test value and why it stopped ([`Stop`]). Each step: the
+//! secant point, kept at least `1e−3` of the bracket from either end, and the retained end's
+//! value halved when the same end moves twice (Illinois), which makes the convergence
+//! superlinear where plain regula falsi would stall at one end (and bisection would take one
+//! solve per bit).
 
 /// One end of a bracket: the path parameter, the test value there and the caller's point.
 #[derive(Debug, Clone)]
@@ -28,11 +35,134 @@ pub(crate) fn estimated_distance<P>(lo: &End<P>, hi: &End<P>) -> f64 {
     best * (hi.at - lo.at).abs() / (hi.value - lo.value).abs()
 }
 
+/// Why [`locate`] stopped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Stop {
+    /// The stop rule held on the final bracket.
+    Converged,
+    /// The test function was exactly zero at an end or at a solved point.
+    Zero,
+    /// The bracket is down to adjacent floating-point numbers.
+    Floats,
+    /// A re-solve failed (`Ok(None)`): the better end so far.
+    SolveFailed,
+    /// The budget of solves ran out before the stop rule held.
+    Budget,
+}
+
+/// What [`locate`] found: the end of the final bracket with the smaller test value, the number
+/// of solves made and why it stopped.
+#[derive(Debug, Clone)]
+pub(crate) struct Located<P> {
+    pub best: End<P>,
+    /// Read by the tests (the count is the locator's cost).
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub solves: usize,
+    pub stop: Stop,
+}
+
+/// The stop rule "within `tol` of the zero in the path parameter": the bracket is at most `tol`
+/// wide or its better end is estimated ([`estimated_distance`]) within `tol` of the zero. The
+/// estimate is that of a simple zero; at a zero of higher order (a cubic) it is too small, and
+/// a rule on the bracket's width alone is the safe one.
+pub(crate) fn within<P>(lo: &End<P>, hi: &End<P>, tol: f64) -> bool {
+    (hi.at - lo.at).abs() <= tol || estimated_distance(lo, hi) <= tol
+}
+
 /// The zero of the test function between `lo` and `hi` (values of opposite signs, or one zero).
 ///
-/// `solve(t)` re-solves at the parameter `t` strictly inside the bracket: `Ok(None)` when it
-/// cannot (the locator then returns the better end so far). `done(lo, hi)` is the stop rule on
-/// the bracket; at most `max_iter` solves are made.
+/// `solve(t, lo, hi)` re-solves at the parameter `t` strictly inside the current bracket
+/// `[lo, hi]` (whose points are there to start from): `Ok(None)` when it cannot (the locator
+/// then returns the better end so far). `done(lo, hi)` is the stop rule on the bracket (the
+/// caller's own scale: e.g. `|Δs| ≤ tol·max(1, |s|)` in the quantity the event is reported in,
+/// which need not be the path parameter); at most `budget` solves are made.
+pub(crate) fn locate<P: Clone, E>(
+    lo: End<P>,
+    hi: End<P>,
+    budget: usize,
+    mut solve: impl FnMut(f64, &End<P>, &End<P>) -> Result<Option<(f64, P)>, E>,
+    done: impl Fn(&End<P>, &End<P>) -> bool,
+) -> Result<Located<P>, E> {
+    let (mut lo, mut hi) = if lo.at <= hi.at { (lo, hi) } else { (hi, lo) };
+    let finish = |lo: End<P>, hi: End<P>, solves: usize, stop: Stop| Located {
+        best: if lo.value.abs() <= hi.value.abs() {
+            lo
+        } else {
+            hi
+        },
+        solves,
+        stop,
+    };
+    if lo.value == 0.0 || hi.value == 0.0 {
+        return Ok(finish(lo, hi, 0, Stop::Zero));
+    }
+    let mut lo_value = lo.value;
+    let mut hi_value = hi.value;
+    let mut side = 0i32;
+    let mut solves = 0;
+    let stop = loop {
+        if done(&lo, &hi) {
+            break Stop::Converged;
+        }
+        if solves >= budget {
+            break Stop::Budget;
+        }
+        let w = hi.at - lo.at;
+        let mid = 0.5 * (lo.at + hi.at);
+        if mid <= lo.at || mid >= hi.at {
+            break Stop::Floats;
+        }
+        let t = if hi_value != lo_value {
+            lo.at - lo_value * w / (hi_value - lo_value)
+        } else {
+            mid
+        };
+        // Kept 1e−3 of the bracket inside it: once one end has converged the secant point
+        // crowds it, and the clamped point then lands just past the zero, cutting the bracket a
+        // thousandfold (a midpoint would only halve it).
+        let t = if t.is_nan() {
+            mid
+        } else {
+            t.clamp(lo.at + 1e-3 * w, hi.at - 1e-3 * w)
+        };
+        // Strictly inside, also where the bracket is a few floats wide.
+        let t = if t > lo.at && t < hi.at { t } else { mid };
+        solves += 1;
+        let Some((v, point)) = solve(t, &lo, &hi)? else {
+            break Stop::SolveFailed;
+        };
+        let end = End {
+            at: t,
+            value: v,
+            point,
+        };
+        if v == 0.0 {
+            return Ok(Located {
+                best: end,
+                solves,
+                stop: Stop::Zero,
+            });
+        }
+        if (v < 0.0) == (lo.value < 0.0) {
+            lo = end;
+            lo_value = v;
+            if side == -1 {
+                hi_value *= 0.5;
+            }
+            side = -1;
+        } else {
+            hi = end;
+            hi_value = v;
+            if side == 1 {
+                lo_value *= 0.5;
+            }
+            side = 1;
+        }
+    };
+    Ok(finish(lo, hi, solves, stop))
+}
+
+/// [`locate`] with a re-solve that needs only the parameter, returning the better end.
 pub(crate) fn illinois<P: Clone, E>(
     lo: End<P>,
     hi: End<P>,
@@ -40,73 +170,7 @@ pub(crate) fn illinois<P: Clone, E>(
     mut solve: impl FnMut(f64) -> Result<Option<(f64, P)>, E>,
     done: impl Fn(&End<P>, &End<P>) -> bool,
 ) -> Result<End<P>, E> {
-    let (mut lo, mut hi) = (lo, hi);
-    if lo.value == 0.0 {
-        return Ok(lo);
-    }
-    if hi.value == 0.0 {
-        return Ok(hi);
-    }
-    let mut lo_value = lo.value;
-    let mut hi_value = hi.value;
-    let mut side = 0i32;
-    for _ in 0..max_iter {
-        if done(&lo, &hi) {
-            break;
-        }
-        let w = hi.at - lo.at;
-        let mut t = if hi_value != lo_value {
-            lo.at - lo_value * w / (hi_value - lo_value)
-        } else {
-            0.5 * (lo.at + hi.at)
-        };
-        // Kept 1e−3 of the bracket inside it: once one end has converged the secant point
-        // crowds it, and the clamped point then lands just past the zero, cutting the bracket a
-        // thousandfold (a midpoint would only halve it).
-        t = if t.is_nan() {
-            0.5 * (lo.at + hi.at)
-        } else {
-            t.clamp(lo.at + 1e-3 * w, hi.at - 1e-3 * w)
-        };
-        let Some((v, point)) = solve(t)? else {
-            break;
-        };
-        if v == 0.0 {
-            return Ok(End {
-                at: t,
-                value: v,
-                point,
-            });
-        }
-        if (v < 0.0) == (lo.value < 0.0) {
-            lo = End {
-                at: t,
-                value: v,
-                point,
-            };
-            lo_value = v;
-            if side == -1 {
-                hi_value *= 0.5;
-            }
-            side = -1;
-        } else {
-            hi = End {
-                at: t,
-                value: v,
-                point,
-            };
-            hi_value = v;
-            if side == 1 {
-                lo_value *= 0.5;
-            }
-            side = 1;
-        }
-    }
-    Ok(if lo.value.abs() <= hi.value.abs() {
-        lo
-    } else {
-        hi
-    })
+    Ok(locate(lo, hi, max_iter, |t, _, _| solve(t), done)?.best)
 }
 
 #[cfg(test)]
@@ -157,6 +221,67 @@ mod tests {
         }
     }
 
+    /// A zero of order three (`x³`, a pitchfork's gradient along its kernel) by the bracket's
+    /// width alone, and the stop reasons: converged, out of budget, down to adjacent floats.
+    #[test]
+    fn cubic_zero_budget_and_stop_reasons() {
+        let f = |x: f64| (x - 0.1).powi(3);
+        let run = |budget: usize, tol: f64| {
+            let mut solves = 0;
+            let got = locate(
+                end(-0.3, &f),
+                end(0.7, &f),
+                budget,
+                |t, lo, hi| {
+                    assert!(lo.at < t && t < hi.at);
+                    solves += 1;
+                    Ok::<_, ()>(Some((f(t), ())))
+                },
+                |lo, hi| hi.at - lo.at <= tol,
+            )
+            .unwrap();
+            assert_eq!(got.solves, solves);
+            got
+        };
+        let got = run(200, 1e-12);
+        assert_eq!(got.stop, Stop::Converged);
+        assert!((got.best.at - 0.1).abs() <= 1e-12, "{}", got.best.at);
+        // Bisection: log₂(1/1e−12) ≈ 40 solves.
+        assert!(got.solves <= 80, "{} solves", got.solves);
+        let short = run(3, 1e-12);
+        assert_eq!((short.stop, short.solves), (Stop::Budget, 3));
+        let floats = run(10_000, 0.0);
+        assert!(
+            matches!(floats.stop, Stop::Floats | Stop::Zero),
+            "{:?}",
+            floats.stop
+        );
+        assert!((floats.best.at - 0.1).abs() <= 1e-15, "{}", floats.best.at);
+        // The secant estimate of the distance to a cubic zero is far too small: `within` on a
+        // simple zero only.
+        let lo = end(0.1 - 1e-3, &f);
+        let hi = end(0.7, &f);
+        assert!(estimated_distance(&lo, &hi) < 1e-7);
+    }
+
+    /// The tolerance of `within` on the path parameter, on a simple zero: `eᵗ − 2` on [0, 3]
+    /// (zero ln 2), asked to 1e−11.
+    #[test]
+    fn within_a_tolerance_on_a_simple_zero() {
+        let f = |x: f64| x.exp() - 2.0;
+        let got = locate(
+            end(0.0, &f),
+            end(3.0, &f),
+            100,
+            |t, _, _| Ok::<_, ()>(Some((f(t), ()))),
+            |lo, hi| within(lo, hi, 1e-11),
+        )
+        .unwrap();
+        assert!(matches!(got.stop, Stop::Converged | Stop::Zero));
+        assert!((got.best.at - 2f64.ln()).abs() <= 1e-11, "{}", got.best.at);
+        assert!(got.solves < 15, "{} solves", got.solves);
+    }
+
     /// A solve that fails ends the search with the better end so far.
     #[test]
     fn stops_when_a_solve_fails() {
@@ -170,5 +295,14 @@ mod tests {
         )
         .unwrap();
         assert_eq!(got.at, 0.0);
+        let got = locate(
+            end(0.0, &f),
+            end(1.0, &f),
+            100,
+            |_, _, _| Ok::<_, ()>(None),
+            |_, _| false,
+        )
+        .unwrap();
+        assert_eq!((got.stop, got.solves), (Stop::SolveFailed, 1));
     }
 }

@@ -711,3 +711,34 @@ fn continue_branch_uses_the_search_options_for_its_first_point() {
         "{source:?}"
     );
 }
+
+/// Events are located in their own scale, not the range's: over p ∈ [0, 1000] the Routh
+/// function at the far end (where branches are seeded) is ~10⁵ times larger than at the folds
+/// near p ≈ 2, and a residual relative to it placed the folds ~1e−8 (up to 1.6e−7) off. The body
+/// J = diag(1, 1.2, 2), mgl = 1 folds in both principal planes through e₃ (the closed form
+/// [`plane_fold`] with A = 1 and with A = 1.2: p ≈ 1.7548 and 2.1273), each fold twice (mirror
+/// images); every one within `2·event_tol·max(1, |s|)` on every range.
+#[test]
+fn folds_are_located_to_their_own_scale_on_wide_ranges() {
+    let (a, b, c, mgl) = (1.0, 1.2, 2.0, 1.0);
+    let top = asymmetric(a, b, c, mgl);
+    let exact = [plane_fold(a, c, mgl).0, plane_fold(b, c, mgl).0];
+    for hi in [5.0, 100.0, 1000.0] {
+        let d = bifurcation_diagram(
+            |p| (top.clone(), p),
+            (0.0, hi),
+            &ContinuationOptions::default(),
+        )
+        .unwrap();
+        let folds = events(&d, EventKind::Fold);
+        assert_eq!(folds.len(), 4, "[0, {hi}]: {:#?}", d.events);
+        for f in folds {
+            let near = if (f - exact[0]).abs() < (f - exact[1]).abs() {
+                exact[0]
+            } else {
+                exact[1]
+            };
+            assert_located(f, near, &format!("[0, {hi}]: fold"));
+        }
+    }
+}

@@ -21,6 +21,7 @@ use super::equations::{
 };
 use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
+use crate::locate::{locate, End};
 use crate::model::Routhian;
 use crate::path::{sphere_head, Corrected, Failure, Path, PathOptions, Point, Prediction};
 use crate::sphere::newton::{Linearised, Newton, Row};
@@ -32,6 +33,9 @@ use crate::zero::{ZeroTest, DOUBLE_REL, EIGEN_REL};
 /// Evaluations of `F` by the corrector before it gives up ([`Newton::continuation`] takes one
 /// step fewer).
 pub(crate) const CORRECTOR_MAX_ITER: usize = 16;
+
+/// Re-solves of the event locator on one step before it returns the better end so far.
+const LOCATE_BUDGET: usize = 200;
 
 /// A converged point of a branch with its tangent and test functions.
 #[derive(Debug, Clone)]
@@ -406,8 +410,16 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         self.node(&g, s, Some((&a.tau_g, a.tau_s)))
     }
 
-    /// Locates the zero of `phi` on the step from `a` (arclength 0) to `b` (arclength `h`) by the
-    /// Illinois method, to `|Δs| ≤ event_tol·max(1, |s|)`. Returns the node at the zero.
+    /// Locates the zero of `phi` on the step from `a` (arclength 0) to `b` (arclength `h`) with
+    /// the crate's event locator ([`crate::locate`]), to `|Δs| ≤ event_tol·max(1, |s|)` (and the
+    /// arclength to `1e−6·h`: at a fold `s` is stationary). Returns the node at the zero.
+    ///
+    /// The points re-solved on the step are corrected relative to the tangential scale at the
+    /// event ([`Local::scale`] at `a`), not the branch's (set at its first point, possibly at the
+    /// far end of a wide range where the Routh function is a thousandfold larger): at a fold an
+    /// error `r` in the residual moves the point by `r/|∂F/∂s|` in `s`, so a residual relative
+    /// to a larger scale places the event further off. The node returned has its test
+    /// functions relative to the branch's scale, as every node of the branch.
     pub fn locate(
         &self,
         a: &Node,
@@ -415,44 +427,59 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         h: f64,
         phi: &dyn Fn(&Node) -> f64,
     ) -> Result<Node, RouthError> {
-        let (mut lo, mut hi) = ((0.0, phi(a), a.clone()), (h, phi(b), b.clone()));
-        let mut side = 0i32;
-        for _ in 0..200 {
-            let tol = self.opts.event_tol * 1f64.max(lo.2.s.abs());
-            if (hi.2.s - lo.2.s).abs() <= tol && (hi.0 - lo.0) <= 1e-6 * h.max(1e-12) {
-                break;
-            }
-            let mut t = if hi.1 != lo.1 {
-                lo.0 - lo.1 * (hi.0 - lo.0) / (hi.1 - lo.1)
-            } else {
-                0.5 * (lo.0 + hi.0)
-            };
-            let w = hi.0 - lo.0;
-            if !(t > lo.0 + 1e-3 * w && t < hi.0 - 1e-3 * w) {
-                t = 0.5 * (lo.0 + hi.0);
-            }
-            let Some(n) = self.advance(a, t)? else {
-                break;
-            };
-            let v = phi(&n);
-            if v == 0.0 {
-                return Ok(n);
-            }
-            if (v < 0.0) == (lo.1 < 0.0) {
-                lo = (t, v, n);
-                if side == -1 {
-                    hi.1 *= 0.5;
-                }
-                side = -1;
-            } else {
-                hi = (t, v, n);
-                if side == 1 {
-                    lo.1 *= 0.5;
-                }
-                side = 1;
-            }
-        }
-        Ok(if lo.1.abs() <= hi.1.abs() { lo.2 } else { hi.2 })
+        let own = self.own_scale(a)?;
+        let local = Ctx {
+            family: self.family,
+            len: self.len,
+            opts: self.opts,
+            scale: own,
+            isolated: self.isolated,
+            failed_residual: Cell::new(f64::NAN),
+            _model: std::marker::PhantomData,
+        };
+        // The test functions at the ends relative to the same scale as the re-solved points
+        // (`eig` is divided by it; the others are relative already).
+        let rescale = |n: &Node, by: f64| {
+            let mut n = n.clone();
+            n.eig = [n.eig[0] * by, n.eig[1] * by];
+            n
+        };
+        let to_own = self.scale.max(f64::MIN_POSITIVE) / own;
+        let (a_own, b_own) = (rescale(a, to_own), rescale(b, to_own));
+        let lo = End {
+            at: 0.0,
+            value: phi(&a_own),
+            point: a_own,
+        };
+        let hi = End {
+            at: h,
+            value: phi(&b_own),
+            point: b_own,
+        };
+        let found = locate(
+            lo,
+            hi,
+            LOCATE_BUDGET,
+            |t, _, _| Ok::<_, RouthError>(local.advance(a, t)?.map(|n| (phi(&n), n))),
+            |lo, hi| {
+                let tol = self.opts.event_tol * 1f64.max(lo.point.s.abs());
+                (hi.point.s - lo.point.s).abs() <= tol && (hi.at - lo.at) <= 1e-6 * h.max(1e-12)
+            },
+        )?;
+        Ok(rescale(&found.best.point, 1.0 / to_own))
+    }
+
+    /// The tangential scale at `n` ([`Local::scale`]), or the branch's where it is not positive
+    /// and finite.
+    fn own_scale(&self, n: &Node) -> Result<f64, RouthError> {
+        let (m, p) = member(self.family, n.s)?;
+        let l = Local::at(&m, &n.gamma, p).map_err(|e| super::equations::at(n.s, e))?;
+        let sc = l.scale();
+        Ok(if sc > 0.0 && sc.is_finite() {
+            sc
+        } else {
+            self.scale.max(f64::MIN_POSITIVE)
+        })
     }
 
     /// Whether the Jacobian `[∂F/∂ξ | ∂F/∂σ]` at `n` has rank below 2 (a branch point rather

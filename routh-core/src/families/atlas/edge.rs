@@ -1,6 +1,6 @@
 //! The start of a boundary curve on an edge of the grid whose end nodes differ in verdict:
-//! the test function bracketed by regula falsi (Illinois) along the edge, then projected onto
-//! the curve (see the module docs of [`super`], "The boundary curves").
+//! the test function located along the edge by the crate's event locator ([`crate::locate`]),
+//! then projected onto the curve (see the module docs of [`super`], "The boundary curves").
 
 use nalgebra::{Vector3, Vector4};
 
@@ -8,6 +8,7 @@ use super::super::equations::{restricted_eigen, Local};
 use super::curve::{CurvePoint, Test};
 use super::grid::Node;
 use super::Ctx;
+use crate::locate::{locate, End, Stop};
 use crate::model::Routhian;
 use crate::sphere::{sym2_eigen, tangent_basis};
 
@@ -69,50 +70,39 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                     let (x, y) = point(s);
                     self.tau(&test, g, x, y).ok().map(|t| t.0)
                 };
-                let (mut sa, mut ga, mut fa): (f64, _, _) = (0.0, na.gamma, tau(0.0, &na.gamma)?);
-                let (mut sb, mut gb, mut fb) = (1.0, nb.gamma, tau(1.0, &nb.gamma)?);
+                let (fa, fb) = (tau(0.0, &na.gamma)?, tau(1.0, &nb.gamma)?);
                 if fa * fb > 0.0 || (fa == 0.0 && fb == 0.0) {
                     return None;
                 }
-                // Illinois on τ(s) along the edge, γ(s) by continuation from the bracket.
-                let (mut sc, mut gc) = if fa.abs() <= fb.abs() {
-                    (sa, ga)
-                } else {
-                    (sb, gb)
-                };
-                for _ in 0..LOCATE_MAX_ITER {
-                    if fa == 0.0 {
-                        (sc, gc) = (sa, ga);
-                        break;
-                    }
-                    if fb == 0.0 {
-                        (sc, gc) = (sb, gb);
-                        break;
-                    }
-                    if (sb - sa).abs() <= 1e-12 {
-                        break;
-                    }
-                    let mut s = (sa * fb - sb * fa) / (fb - fa);
-                    if !(s.is_finite() && s > sa.min(sb) && s < sa.max(sb)) {
-                        s = 0.5 * (sa + sb);
-                    }
-                    let g = self
-                        .follow(point(sb), &gb, point(s))
-                        .reached
-                        .or_else(|| self.follow(point(sa), &ga, point(s)).reached)?;
-                    let f = tau(s, &g)?;
-                    (sc, gc) = (s, g);
-                    if f.abs() <= 1e-3 * self.opts.curve_tol {
-                        break;
-                    }
-                    if f * fb < 0.0 {
-                        (sa, ga, fa) = (sb, gb, fb);
-                    } else {
-                        fa /= 2.0;
-                    }
-                    (sb, gb, fb) = (s, g, f);
+                // τ(s) along the edge, γ(s) by continuation from the nearer end of the bracket
+                // (else the other).
+                let end = |at: f64, value: f64, point: Vector3<f64>| End { at, value, point };
+                let found = locate(
+                    end(0.0, fa, na.gamma),
+                    end(1.0, fb, nb.gamma),
+                    LOCATE_MAX_ITER,
+                    |s, lo, hi| {
+                        let (near, far) = if s - lo.at <= hi.at - s {
+                            (lo, hi)
+                        } else {
+                            (hi, lo)
+                        };
+                        let g = self
+                            .follow(point(near.at), &near.point, point(s))
+                            .reached
+                            .or_else(|| self.follow(point(far.at), &far.point, point(s)).reached);
+                        Ok::<_, ()>(g.and_then(|g| Some((tau(s, &g)?, g))))
+                    },
+                    |lo, hi| {
+                        lo.value.abs().min(hi.value.abs()) <= 1e-3 * self.opts.curve_tol
+                            || hi.at - lo.at <= 1e-12
+                    },
+                )
+                .ok()?;
+                if found.stop == Stop::SolveFailed {
+                    return None;
                 }
-                (test, sc, gc)
+                (test, found.best.at, found.best.point)
             }
         };
         let (x, y) = point(s0);

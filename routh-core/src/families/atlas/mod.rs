@@ -38,7 +38,7 @@
 //! - next to a node where the motion is lost: the eigenvalue of `K` nearest zero at the last point
 //!   the continuation reached (a fold).
 //!
-//! The crossing is bracketed by regula falsi (Illinois) along the edge, γ following by the same
+//! The crossing is located by the crate's event locator (Illinois) along the edge, γ following by the same
 //! continuation, then projected onto the curve by Gauss–Newton with minimum-norm steps on the
 //! three equations `P_bᵀt(γ(ξ); x, y) = 0` (relative to the local scale) and `τ(γ(ξ); x, y) = 0`
 //! in the four unknowns `(ξ, x, y)` (`x`, `y` scaled to the unit square). The curve is then
@@ -85,9 +85,11 @@ use std::marker::PhantomData;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 
+use super::nonlinear::GridNode;
 use super::{AtlasOptions, StabilityAtlas, StopReason};
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::nonlinear::NonlinearOptions;
 use crate::steady::steady_motion_near;
 use grid::{Line, Node};
 
@@ -229,6 +231,7 @@ pub fn stability_atlas<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
                 .map(|j| ctx.row(xs, ys[j], i0, column[j].0, column[j].1))
                 .collect()
         },
+        |xs, ys, nodes, nl| super::nonlinear::atlas_curves(&family, xs, ys, nodes, nl),
     )
 }
 
@@ -278,6 +281,9 @@ pub fn stability_atlas_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>
                     .collect()
             })
         },
+        |xs, ys, nodes, nl| {
+            pool.install(|| super::nonlinear::atlas_curves_parallel(&family, xs, ys, nodes, nl))
+        },
     )
 }
 
@@ -287,8 +293,11 @@ type Rows = Result<Vec<Line>, RouthError>;
 /// The first column: at each ordinate γ at the start column, if reached, and whether it was lost.
 type Column = [(Option<Vector3<f64>>, bool)];
 
+/// The nonlinear curves from the grid's nodes, or an error.
+type Curves = Result<Vec<super::NonlinearCurve>, RouthError>;
+
 /// The atlas, with the rows computed by `rows` (sequentially or in parallel) from the start
-/// column.
+/// column, and the nonlinear curves (if asked for) by `curves` (likewise).
 fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     family: &'a F,
     gamma_guess: Vector3<f64>,
@@ -296,6 +305,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     y: (f64, f64),
     opts: &'a AtlasOptions,
     rows: impl FnOnce(&Ctx<'a, M, F>, &[f64], &[f64], usize, &Column) -> Rows,
+    curves: impl FnOnce(&[f64], &[f64], &[Vec<GridNode>], &NonlinearOptions) -> Curves,
 ) -> Result<StabilityAtlas, RouthError> {
     validate(x, y, opts)?;
     let ctx = Ctx::new(family, x, y, opts);
@@ -374,7 +384,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     let boundaries = ctx.boundaries(&xs, &ys, &rows)?;
     let nonlinear = match &opts.nonlinear {
         Some(nl) => {
-            let nodes: Vec<Vec<_>> = rows
+            let nodes: Vec<Vec<GridNode>> = rows
                 .iter()
                 .map(|r| {
                     r.iter()
@@ -382,7 +392,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
                         .collect()
                 })
                 .collect();
-            super::nonlinear::atlas_curves(family, &xs, &ys, &nodes, nl)?
+            curves(&xs, &ys, &nodes, nl)?
         }
         None => Vec::new(),
     };

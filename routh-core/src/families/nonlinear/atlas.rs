@@ -5,14 +5,17 @@
 //!
 //! At every gyroscopically stabilised node the nonlinear test gives the three indicators of the
 //! diagram's events (`D/scale`, `ω₁/ω₂ − 2`, `ω₁/ω₂ − 3`). Where one changes sign between two
-//! neighbouring such nodes, the crossing on the grid edge is bisected (the same bisection as the
+//! neighbouring such nodes, the crossing on the grid edge is located (the same locator as the
 //! diagram's events, the steady motion re-solved by Newton at each point) to `1e−9` of the edge;
 //! a sign change of D through a pole is dropped. In each cell the crossings of one indicator on
 //! its edges are joined: two by a segment, four (a saddle) by two segments.
 
 use nalgebra::Vector3;
 
-use super::events::{analyse_with_tape, bisect, indicator_kind, indicators, needs_tape, Solved};
+use super::events::{
+    analyse_with_tape, frequencies_only, indicator_kind, indicators, locate_crossing, needs_tape,
+    Solved,
+};
 use crate::error::RouthError;
 use crate::families::EventKind;
 use crate::model::Routhian;
@@ -68,6 +71,125 @@ impl NonlinearCurve {
     }
 }
 
+/// The grid of an atlas with its followed steady motions, for the nonlinear curves.
+struct Grid<'a, F> {
+    family: &'a F,
+    xs: &'a [f64],
+    ys: &'a [f64],
+    opts: &'a NonlinearOptions,
+}
+
+/// The crossings of one indicator on one row of edges: `h[j][i]` on the edge
+/// `(i, j)–(i + 1, j)`, `v[j][i]` on `(i, j)–(i, j + 1)`.
+type EdgeRow = Vec<Option<(f64, f64)>>;
+
+impl<F> Grid<'_, F> {
+    /// The indicators at the gyroscopically stabilised nodes of row `j`.
+    fn indicated_row<M: Routhian>(
+        &self,
+        j: usize,
+        row: &[GridNode],
+    ) -> Result<Vec<Indicated>, RouthError>
+    where
+        F: Fn(f64, f64) -> (M, f64),
+    {
+        let mut out = vec![None; self.xs.len()];
+        for (i, node) in row.iter().enumerate().take(self.xs.len()) {
+            let Some((gamma, Stability::GyroscopicallyStabilized)) = node else {
+                continue;
+            };
+            let (model, p) = (self.family)(self.xs[i], self.ys[j]);
+            let Ok(steady) = SteadyMotion::at(&model, *gamma, p, true) else {
+                continue;
+            };
+            match analyse_with_tape(&model, &steady, self.opts) {
+                Ok(rep) => out[i] = Some((steady.gamma, indicators(&rep))),
+                Err(RouthError::NotASteadyMotion { .. }) => {}
+                Err(e) => return Err(e),
+            }
+        }
+        Ok(out)
+    }
+
+    /// The crossing of indicator `k` on the edge from node `a` to node `b` (`(i, j)` each), if
+    /// any.
+    fn crossing<M: Routhian>(
+        &self,
+        ind: &[Vec<Indicated>],
+        a: (usize, usize),
+        b: (usize, usize),
+        k: usize,
+    ) -> Option<(f64, f64)>
+    where
+        F: Fn(f64, f64) -> (M, f64),
+    {
+        let (ga, va) = ind[a.1][a.0]?;
+        let (gb, vb) = ind[b.1][b.0]?;
+        if va[k] * vb[k] >= 0.0 || va[k].is_nan() || vb[k].is_nan() {
+            return None;
+        }
+        let (xs, ys) = (self.xs, self.ys);
+        let (pa, pb) = ((xs[a.0], ys[a.1]), (xs[b.0], ys[b.1]));
+        let lerp = |t: f64| (pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1));
+        let solve = |t: f64, guess: &Vector3<f64>, full: bool| -> Result<Solved, RouthError> {
+            let (x, y) = lerp(t);
+            let (model, p) = (self.family)(x, y);
+            let steady = steady_motion_near(&model, *guess, p)?;
+            let rep = if full {
+                analyse_with_tape(&model, &steady, self.opts)?
+            } else {
+                frequencies_only(&model, &steady, &self.opts.classify)?
+            };
+            Ok((steady, rep))
+        };
+        let (t, _) = locate_crossing(
+            &solve,
+            k,
+            (0.0, ga, va[k]),
+            (1.0, gb, vb[k]),
+            &|_| EDGE_TOL,
+            false,
+        )?;
+        Some(lerp(t))
+    }
+
+    fn h_row<M: Routhian>(&self, ind: &[Vec<Indicated>], j: usize, k: usize) -> EdgeRow
+    where
+        F: Fn(f64, f64) -> (M, f64),
+    {
+        (0..self.xs.len() - 1)
+            .map(|i| self.crossing(ind, (i, j), (i + 1, j), k))
+            .collect()
+    }
+
+    fn v_row<M: Routhian>(&self, ind: &[Vec<Indicated>], j: usize, k: usize) -> EdgeRow
+    where
+        F: Fn(f64, f64) -> (M, f64),
+    {
+        (0..self.xs.len())
+            .map(|i| self.crossing(ind, (i, j), (i, j + 1), k))
+            .collect()
+    }
+}
+
+/// Whether the family's model has a Routh-function tape, checked at the first gyroscopically
+/// stabilised node (none: nothing to check).
+fn check_tape<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
+    family: &F,
+    xs: &[f64],
+    ys: &[f64],
+    nodes: &[Vec<GridNode>],
+) -> Result<(), RouthError> {
+    for (j, row) in nodes.iter().enumerate().take(ys.len()) {
+        for (i, node) in row.iter().enumerate().take(xs.len()) {
+            if let Some((_, Stability::GyroscopicallyStabilized)) = node {
+                return needs_tape(&family(xs[i], ys[j]).0, "AtlasOptions::nonlinear");
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The nonlinear curves of an atlas: `nodes[j][i]` is the followed steady motion's γ and linear
 /// verdict at `(xs[i], ys[j])`, if it exists there.
 ///
@@ -85,63 +207,69 @@ pub(crate) fn atlas_curves<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     opts: &NonlinearOptions,
 ) -> Result<Vec<NonlinearCurve>, RouthError> {
     opts.validate()?;
-    let (nx, ny) = (xs.len(), ys.len());
-    // The indicators at the gyroscopically stabilised nodes.
-    let mut ind: Vec<Vec<Indicated>> = vec![vec![None; nx]; ny];
-    let mut checked = false;
-    for (j, row) in nodes.iter().enumerate().take(ny) {
-        for (i, node) in row.iter().enumerate().take(nx) {
-            let Some((gamma, Stability::GyroscopicallyStabilized)) = node else {
-                continue;
-            };
-            let (model, p) = family(xs[i], ys[j]);
-            if !checked {
-                needs_tape(&model, "AtlasOptions::nonlinear")?;
-                checked = true;
-            }
-            let Ok(steady) = SteadyMotion::at(&model, *gamma, p, true) else {
-                continue;
-            };
-            match analyse_with_tape(&model, &steady, opts) {
-                Ok(rep) => ind[j][i] = Some((steady.gamma, indicators(&rep))),
-                Err(RouthError::NotASteadyMotion { .. }) => {}
-                Err(e) => return Err(e),
-            }
-        }
-    }
-    // The crossing of indicator k on the edge from node a to node b ((i, j) each), if any.
-    let crossing = |a: (usize, usize), b: (usize, usize), k: usize| -> Option<(f64, f64)> {
-        let (ga, va) = ind[a.1][a.0]?;
-        let (gb, vb) = ind[b.1][b.0]?;
-        if va[k] * vb[k] >= 0.0 || va[k].is_nan() || vb[k].is_nan() {
-            return None;
-        }
-        let (pa, pb) = ((xs[a.0], ys[a.1]), (xs[b.0], ys[b.1]));
-        let lerp = |t: f64| (pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1));
-        let solve = |t: f64, guess: &Vector3<f64>| -> Result<Solved, RouthError> {
-            let (x, y) = lerp(t);
-            let (model, p) = family(x, y);
-            let steady = steady_motion_near(&model, *guess, p)?;
-            let rep = analyse_with_tape(&model, &steady, opts)?;
-            Ok((steady, rep))
-        };
-        let done = |lo: f64, hi: f64| hi - lo <= EDGE_TOL;
-        let (t, _) = bisect(&solve, k, (0.0, ga), (1.0, gb), va[k], &done)?;
-        Some(lerp(t))
+    check_tape(family, xs, ys, nodes)?;
+    let g = Grid {
+        family,
+        xs,
+        ys,
+        opts,
     };
+    let ind = (0..ys.len())
+        .map(|j| g.indicated_row(j, &nodes[j]))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(join(xs.len(), ys.len(), |k| {
+        let h = (0..ys.len()).map(|j| g.h_row(&ind, j, k)).collect();
+        let v = (0..ys.len() - 1).map(|j| g.v_row(&ind, j, k)).collect();
+        (h, v)
+    }))
+}
+
+/// [`atlas_curves`] with the rows of nodes and of edges on the current thread pool (that of
+/// [`stability_atlas_parallel`](crate::stability_atlas_parallel)): the same result, bit for bit,
+/// each crossing being located from its own edge's ends alone.
+pub(crate) fn atlas_curves_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + Sync>(
+    family: &F,
+    xs: &[f64],
+    ys: &[f64],
+    nodes: &[Vec<GridNode>],
+    opts: &NonlinearOptions,
+) -> Result<Vec<NonlinearCurve>, RouthError> {
+    use rayon::prelude::*;
+    opts.validate()?;
+    check_tape(family, xs, ys, nodes)?;
+    let g = Grid {
+        family,
+        xs,
+        ys,
+        opts,
+    };
+    let ind = (0..ys.len())
+        .into_par_iter()
+        .map(|j| g.indicated_row(j, &nodes[j]))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(join(xs.len(), ys.len(), |k| {
+        let h = (0..ys.len())
+            .into_par_iter()
+            .map(|j| g.h_row(&ind, j, k))
+            .collect();
+        let v = (0..ys.len() - 1)
+            .into_par_iter()
+            .map(|j| g.v_row(&ind, j, k))
+            .collect();
+        (h, v)
+    }))
+}
+
+/// The curves from the crossings of each indicator `k` on the horizontal and vertical edges
+/// (`edges(k)`), joined within the cells: two crossings by a segment, four (a saddle) by two.
+fn join(
+    nx: usize,
+    ny: usize,
+    edges: impl Fn(usize) -> (Vec<EdgeRow>, Vec<EdgeRow>),
+) -> Vec<NonlinearCurve> {
     let mut curves = Vec::new();
     for k in 0..3 {
-        // h[j][i] on the edge (i, j)–(i + 1, j), v[j][i] on (i, j)–(i, j + 1).
-        let h: Vec<Vec<Option<(f64, f64)>>> = (0..ny)
-            .map(|j| {
-                (0..nx - 1)
-                    .map(|i| crossing((i, j), (i + 1, j), k))
-                    .collect()
-            })
-            .collect();
-        let v: Vec<Vec<Option<(f64, f64)>>> = (0..ny - 1)
-            .map(|j| (0..nx).map(|i| crossing((i, j), (i, j + 1), k)).collect())
-            .collect();
+        let (h, v) = edges(k);
         let crossings: Vec<(f64, f64)> = h
             .iter()
             .chain(&v)
@@ -173,5 +301,5 @@ pub(crate) fn atlas_curves<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
             segments,
         });
     }
-    Ok(curves)
+    curves
 }

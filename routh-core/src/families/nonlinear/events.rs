@@ -5,23 +5,25 @@
 //! One engine for the post-pass [`nonlinear_events`] and for
 //! [`ContinuationOptions::nonlinear`](crate::ContinuationOptions::nonlinear): sign changes of
 //! `D/scale`, `ω₁/ω₂ − 2` and `ω₁/ω₂ − 3` between consecutive points of a branch are bracketed and
-//! bisected to `|Δs| ≤ s_tol·max(1, |s|)`, re-solving the steady motion at each intermediate `s`
-//! by Newton from the interpolated γ. A sign change of D through a pole (D has small divisors at
-//! a 1:2 resonance) is not a zero and is dropped: the located point must have
-//! `|D| ≤ 1e−6·scale`. The same bisection ([`bisect`]) locates the curves of the atlas
-//! (`nonlinear/atlas.rs`).
+//! located by the crate's event locator ([`crate::locate`], regula falsi with the Illinois
+//! modification) to `|Δs| ≤ s_tol·max(1, |s|)`, re-solving the steady motion (and its nonlinear
+//! analysis) at each intermediate `s` by Newton from the interpolated γ. A sign change of D
+//! through a pole (D has small divisors at a 1:2 resonance) is not a zero and is dropped: the
+//! located point must have `|D| ≤ 1e−6·scale`. The same location ([`locate_crossing`]) places
+//! the curves of the atlas (`nonlinear/atlas.rs`).
 
 use nalgebra::Vector3;
 
 use crate::error::RouthError;
 use crate::families::{BifurcationDiagram, BranchEvent, ContinuationOptions, EventKind};
+use crate::locate::{locate, within, End, Stop};
 use crate::model::Routhian;
 use crate::nonlinear::Jet;
 use crate::nonlinear::{
     nonlinear_stability, nonlinear_stability_from_jet, NonlinearOptions, NonlinearReport,
 };
 use crate::nonlinear::{NonlinearVerdict, Resonance, RouthianJet};
-use crate::stability::{ClassifyOptions, Stability};
+use crate::stability::{classify_with, ClassifyOptions, Stability};
 use crate::steady::{steady_motion_near, SteadyMotion};
 
 /// A located zero of `D` is kept only if `|D|/scale` is below this there (else it was a pole).
@@ -136,53 +138,114 @@ pub(crate) fn indicator_kind(k: usize) -> (EventKind, Option<Resonance>) {
 /// A steady motion re-solved at a parameter, with its nonlinear report.
 pub(crate) type Solved = (SteadyMotion, NonlinearReport);
 
-/// Re-solves the steady motion at a parameter from a guess of γ, and analyses it.
-pub(crate) type Solve<'a> = dyn Fn(f64, &Vector3<f64>) -> Result<Solved, RouthError> + 'a;
+/// Re-solves the steady motion at a parameter from a guess of γ, and analyses it: fully
+/// (`true`), or only as far as the frequencies (`false`: the linear test, [`frequencies_only`]).
+pub(crate) type Solve<'a> = dyn Fn(f64, &Vector3<f64>, bool) -> Result<Solved, RouthError> + 'a;
+
+/// The report of a steady motion as far as the frequencies: its linear test (relaxed next to a
+/// linear event, as [`analyse_with_tape`]) and `ω₁ ≥ ω₂` from the roots `±iω` of `f₂` where it is
+/// gyroscopically stabilised (else NaN); the rest NaN or undecided. Enough for the resonance
+/// indicators `ω₁/ω₂ − 2`, `ω₁/ω₂ − 3`, at the cost of the linear test, not of the Birkhoff
+/// normal form.
+pub(crate) fn frequencies_only<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    opts: &ClassifyOptions,
+) -> Result<NonlinearReport, RouthError> {
+    let linear = match classify_with(model, steady, opts) {
+        Err(RouthError::NotASteadyMotion { .. }) => {
+            let relaxed = ClassifyOptions {
+                steady_tol: 0.5,
+                ..opts.clone()
+            };
+            classify_with(model, steady, &relaxed)?
+        }
+        r => r?,
+    };
+    let mut frequencies = [f64::NAN; 2];
+    if linear.verdict == Stability::GyroscopicallyStabilized {
+        let mut w = linear.f2_roots.map(|r| r.im.abs());
+        w.sort_by(|a, b| b.total_cmp(a));
+        frequencies = [w[0], w[3]];
+    }
+    Ok(NonlinearReport {
+        linear,
+        frequencies,
+        krein_signs: [0, 0],
+        normal_form: [f64::NAN; 3],
+        arnold_determinant: f64::NAN,
+        resonance: None,
+        resonance_distance: f64::NAN,
+        verdict: NonlinearVerdict::Undecided,
+        reason: String::new(),
+        normalisation_defect: f64::NAN,
+    })
+}
 
 /// The nonlinear analysis of a member's steady motion.
 pub(crate) type Analyse<'a, M> =
     dyn Fn(&M, &SteadyMotion) -> Result<NonlinearReport, RouthError> + 'a;
 
-/// Bisects indicator `k` between `lo` and `hi` (parameter `t` and the steady motion's γ there),
-/// the indicator having the sign of `sign_lo` at `lo` and the opposite at `hi`. `solve(t, guess)`
-/// re-solves the steady motion at `t` from `guess`; the bisection stops when `done(lo, hi)`
-/// (after at least one midpoint). `None` when a re-solve fails or leaves the gyroscopic stretch,
-/// or when a sign change of D is a pole; else the midpoint of the last bracket and the solution
-/// at the last midpoint evaluated.
-pub(crate) fn bisect(
+/// One end of a bracket of an indicator: the parameter, the indicator's value and γ there.
+pub(crate) type Bracketed = (f64, Vector3<f64>, f64);
+
+/// Budget of re-solves (each a nonlinear analysis) of one crossing.
+const LOCATE_BUDGET: usize = 100;
+
+/// Locates the zero of indicator `k` between `a` and `b` (values of opposite signs) with the
+/// crate's event locator ([`crate::locate`]). `solve(t, guess, full)` re-solves the steady motion
+/// at `t` from `guess` (γ interpolated between the bracket's ends), for a resonance (`k ≥ 1`)
+/// only as far as the frequencies and fully once, at the located point if `report` asks for the
+/// nonlinear report there (else the returned report is the frequencies'); the search stops once the
+/// better end is within `tol(t)` of the zero (bracket width, or its secant estimate), after at
+/// least one re-solve. `None` when a re-solve fails or leaves the gyroscopic stretch, or when a
+/// sign change of D is a pole; else the better end and the solution there.
+pub(crate) fn locate_crossing(
     solve: &Solve<'_>,
     k: usize,
-    (mut lo, mut glo): (f64, Vector3<f64>),
-    (mut hi, mut ghi): (f64, Vector3<f64>),
-    sign_lo: f64,
-    done: &dyn Fn(f64, f64) -> bool,
+    a: Bracketed,
+    b: Bracketed,
+    tol: &dyn Fn(f64) -> f64,
+    report: bool,
 ) -> Option<(f64, Solved)> {
-    let mut last: Option<Solved> = None;
-    while last.is_none() || !done(lo, hi) {
-        let mid = 0.5 * (lo + hi);
-        if mid == lo || mid == hi {
-            break; // the bracket is down to adjacent floats
-        }
-        let guess = (glo + ghi).normalize();
-        let (st, rep) = solve(mid, &guess).ok()?;
-        let v = indicators(&rep)[k];
-        if v.is_nan() {
-            return None;
-        }
-        if v * sign_lo > 0.0 {
-            lo = mid;
-            glo = st.gamma;
-        } else {
-            hi = mid;
-            ghi = st.gamma;
-        }
-        last = Some((st, rep));
+    type Point = (Vector3<f64>, Option<Solved>);
+    let end = |(at, gamma, value): Bracketed| End::<Point> {
+        at,
+        value,
+        point: (gamma, None),
+    };
+    let found = locate(
+        end(a),
+        end(b),
+        LOCATE_BUDGET,
+        |t, lo, hi| {
+            let f = (t - lo.at) / (hi.at - lo.at);
+            let guess = (lo.point.0 + f * (hi.point.0 - lo.point.0)).normalize();
+            let Ok((st, rep)) = solve(t, &guess, k == 0) else {
+                return Ok::<_, ()>(None);
+            };
+            let v = indicators(&rep)[k];
+            Ok((!v.is_nan()).then_some((v, (st.gamma, Some((st, rep))))))
+        },
+        |lo, hi| {
+            let solved = lo.point.1.is_some() || hi.point.1.is_some();
+            solved && within(lo, hi, tol(lo.at.abs().max(hi.at.abs())))
+        },
+    )
+    .ok()?;
+    if found.stop == Stop::SolveFailed {
+        return None;
     }
-    let last = last?;
-    if k == 0 && indicators(&last.1)[0].abs() > POLE_CUT {
+    let (gamma, solved) = (found.best.point.0, found.best.point.1?);
+    let solved = if k == 0 || !report {
+        solved
+    } else {
+        solve(found.best.at, &gamma, true).ok()?
+    };
+    if k == 0 && indicators(&solved.1)[0].abs() > POLE_CUT {
         return None; // a pole of D, not a zero
     }
-    Some((0.5 * (lo + hi), last))
+    Some((found.best.at, solved))
 }
 
 /// A point of a gyroscopically stabilised stretch: `s`, γ and the nonlinear report.
@@ -204,16 +267,22 @@ const END_PROBES: [f64; 3] = [1e-6, 1e-4, 1e-2];
 pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
     family: &F,
     analyse: &Analyse<'_, M>,
+    classify: &ClassifyOptions,
     diagram: &BifurcationDiagram,
     s_tol: f64,
 ) -> Result<Vec<NonlinearEvent>, RouthError> {
-    let solve = |s: f64, guess: &Vector3<f64>| -> Result<Solved, RouthError> {
+    let solve = |s: f64, guess: &Vector3<f64>, full: bool| -> Result<Solved, RouthError> {
         let (model, p) = family(s);
         let steady = steady_motion_near(&model, *guess, p)?;
-        let rep = analyse(&model, &steady)?;
+        let rep = if full {
+            analyse(&model, &steady)?
+        } else {
+            frequencies_only(&model, &steady, classify)?
+        };
         Ok((steady, rep))
     };
-    let done = |lo: f64, hi: f64| (hi - lo).abs() <= s_tol * hi.abs().max(1.0);
+    // A quarter of the tolerance: the secant's estimate of the distance is an estimate.
+    let tol = |s: f64| 0.25 * s_tol * s.max(1.0);
     let gyroscopic = |rep: &NonlinearReport| {
         rep.linear.verdict == Stability::GyroscopicallyStabilized
             && rep.frequencies.iter().all(|w| w.is_finite())
@@ -223,7 +292,7 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
         END_PROBES.iter().find_map(|&f| {
             let at = end.s + f * (s - end.s);
             let guess = (end.steady.gamma + f * (g - end.steady.gamma)).normalize();
-            let (st, rep) = solve(at, &guess).ok()?;
+            let (st, rep) = solve(at, &guess, true).ok()?;
             gyroscopic(&rep).then_some((at, st.gamma, rep))
         })
     };
@@ -234,7 +303,8 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
             if ia[k] * ib[k] >= 0.0 || ia[k].is_nan() || ib[k].is_nan() {
                 continue;
             }
-            let Some((s, (st, rm))) = bisect(&solve, k, (a.0, a.1), (b.0, b.1), ia[k], &done)
+            let Some((s, (st, rm))) =
+                locate_crossing(&solve, k, (a.0, a.1, ia[k]), (b.0, b.1, ib[k]), &tol, true)
             else {
                 continue;
             };
@@ -329,7 +399,7 @@ where
         let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(model, w, g, p);
         nonlinear_stability_from_jet(model, steady, &jets as &dyn RouthianJet, opts)
     };
-    branch_events(&family, &analyse, diagram, s_tol)
+    branch_events(&family, &analyse, &opts.classify, diagram, s_tol)
 }
 
 /// [`nonlinear_stability`], and where the steady motion is next to a linear event (the diagram
@@ -387,7 +457,7 @@ pub(crate) fn add_to_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
     };
     needs_tape(&family(first.s).0, "ContinuationOptions::nonlinear")?;
     let analyse = |model: &M, steady: &SteadyMotion| analyse_with_tape(model, steady, nl);
-    let events = branch_events(family, &analyse, diagram, opts.event_tol)?;
+    let events = branch_events(family, &analyse, &nl.classify, diagram, opts.event_tol)?;
     diagram
         .events
         .extend(events.iter().map(NonlinearEvent::to_branch_event));

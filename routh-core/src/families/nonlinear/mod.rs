@@ -6,7 +6,7 @@
 mod atlas;
 mod events;
 
-pub(crate) use atlas::atlas_curves;
 pub use atlas::NonlinearCurve;
+pub(crate) use atlas::{atlas_curves, atlas_curves_parallel, GridNode};
 pub(crate) use events::add_to_diagram;
 pub use events::{nonlinear_events, NonlinearEvent, NonlinearEventVerdicts};

@@ -12,6 +12,7 @@ use nalgebra::{Vector2, Vector3, Vector4};
 
 use super::SearchOptions;
 use crate::error::RouthError;
+use crate::locate::{locate, End};
 use crate::model::Routhian;
 use crate::sphere::newton::{Jacobian, Linearised, Newton, Why};
 use crate::sphere::{fibonacci_grid, tangent_basis, Tangential, NOISE, ROUND};
@@ -23,6 +24,9 @@ use curves::{curve_axis, Curve};
 /// Two values of `U_r` are equal when they differ by at most this much relative to the larger of
 /// `|U_r|` and the raw scale (round-off in `U_r` is a few `ε` of the terms that form it).
 const LEVEL_TOL: f64 = 1e-10;
+/// Trial points of [`Search::polish_degenerate`]'s locator (bisection would take 80 to reach
+/// adjacent floats from a bracket of `1e−2`).
+const POLISH_BUDGET: usize = 80;
 /// First step of the continuation along a curve of non-isolated critical points, in radians.
 const TRACE_STEP: f64 = 0.05;
 /// Number of continuation step lengths tried, each a quarter of the previous one (down to
@@ -555,7 +559,8 @@ impl<M: Routhian> Search<'_, M> {
     /// (6e−5 rad at the Kovalevskaya top's pitchfork). Here: the sign change of `φ(t) = g·v` along
     /// the kernel direction `v` is bracketed within `±r` (`r` from `1e−8` doubling to `1e−2`),
     /// each trial point corrected across the kernel by Newton steps along the other eigenvector,
-    /// and bisected to round-off in `φ`: to about `(ε·s_raw/|φ⁽ⁿ⁾|)^{1/n}` (`~1e−5` rad for a
+    /// and located by the crate's event locator ([`crate::locate`]) to round-off in `t`, which
+    /// leaves it at round-off in `φ`: to about `(ε·s_raw/|φ⁽ⁿ⁾|)^{1/n}` (`~1e−5` rad for a
     /// cubic gradient). Unchanged when no sign change is bracketed (a curve of critical points,
     /// where `φ ≡ 0`, or an even order).
     fn polish_degenerate(&self, loc: Local) -> Local {
@@ -601,39 +606,34 @@ impl<M: Routhian> Search<'_, M> {
                 continue;
             }
             if pa * pb < 0.0 {
-                bracket = Some((-r, pa, r));
+                bracket = Some(((-r, pa, la), (r, pb, lb)));
                 break;
             }
             r *= 2.0;
         }
-        let Some((mut a, mut pa, mut b)) = bracket else {
+        let Some(((a, pa, la), (b, pb, lb))) = bracket else {
             return loc;
         };
-        for _ in 0..80 {
-            let m = 0.5 * (a + b);
-            if m <= a || m >= b {
-                break;
+        // Located to round-off in `t` by the bracket's width alone: at a zero of order `n > 1`
+        // the secant's estimate of the distance is far too small.
+        let end = |at: f64, value: f64, point: Local| End { at, value, point };
+        let found = locate(
+            end(a, pa, la),
+            end(b, pb, lb),
+            POLISH_BUDGET,
+            |t, _, _| Ok::<_, ()>(at(t).map(|(l, p)| (p, l))),
+            |lo, hi| hi.at - lo.at <= 4.0 * f64::EPSILON * lo.at.abs().max(hi.at.abs()),
+        );
+        match found {
+            Ok(f) => {
+                let l = f.best.point;
+                if l.degenerate() && l.residual() <= self.gradient_tol.max(loc.residual()) {
+                    l
+                } else {
+                    loc
+                }
             }
-            let Some((_, pm)) = at(m) else { break };
-            if pm == 0.0 {
-                a = m;
-                b = m;
-                break;
-            }
-            if (pm < 0.0) == (pa < 0.0) {
-                a = m;
-                pa = pm;
-            } else {
-                b = m;
-            }
-        }
-        match at(0.5 * (a + b)) {
-            Some((l, _))
-                if l.degenerate() && l.residual() <= self.gradient_tol.max(loc.residual()) =>
-            {
-                l
-            }
-            _ => loc,
+            Err(()) => loc,
         }
     }
 
