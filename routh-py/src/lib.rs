@@ -11,6 +11,7 @@
 
 #![forbid(unsafe_code)]
 
+mod continuation;
 mod convert;
 mod family;
 mod guard;
