@@ -39,10 +39,11 @@ fn every_test_file_is_a_module() {
         let Some(stem) = path.file_stem().and_then(|s| s.to_str()) else {
             continue;
         };
-        if path.extension().is_some_and(|e| e == "rs") && stem != "main" {
-            if !main.lines().any(|l| l.trim() == format!("mod {stem};")) {
-                missing.push(stem.to_owned());
-            }
+        if path.extension().is_some_and(|e| e == "rs")
+            && stem != "main"
+            && !main.lines().any(|l| l.trim() == format!("mod {stem};"))
+        {
+            missing.push(stem.to_owned());
         }
     }
     assert!(
