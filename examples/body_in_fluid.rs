@@ -14,12 +14,12 @@ use std::time::Instant;
 use common::plot::{verdict_series, Figure, Series, Style};
 use common::{linspace, lpad, rpad, verdict_label};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
-use routh::fluid::{kirchhoff_lagrangian, FluidError, FluidParameters};
+use routh::fluid::{kirchhoff_lagrangian, FluidParameters};
 use routh::plot::{self, Overlay, PlotOptions};
 use routh::stability_threshold;
 use routh::{
     classified_steady_motions, classify_at, simulate_full, stability_atlas, AtlasOptions,
-    Lagrangian, Matrix3, SimOptions, Vector3,
+    Lagrangian, Matrix3, RouthError, SimOptions, Vector3,
 };
 
 /// A rigid body in an ideal fluid as a body with a fixed point (errata E3, E7):
@@ -84,7 +84,7 @@ impl Kirchhoff {
     }
 
     /// The reduced Lagrangian's matrices at impulse magnitude `k`.
-    pub fn parameters(&self, k: f64) -> Result<FluidParameters, FluidError> {
+    pub fn parameters(&self, k: f64) -> Result<FluidParameters, RouthError> {
         kirchhoff_lagrangian(self.a, self.b, self.c, k)
     }
 

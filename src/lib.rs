@@ -55,8 +55,6 @@ pub use routh_macros::Lagrangian;
 /// docs/models.md).
 pub use routh_runtime::{Evaluation, Model, ModelError, Param};
 
-pub mod fluid;
-
 /// What most programs use, in one import: `use routh::prelude::*;`.
 ///
 /// The derive and the model traits, the vector types, the analyses of a single model

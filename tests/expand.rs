@@ -1,6 +1,6 @@
 //! Expansion snapshots (after pin-project's `expandtest.rs`): every `examples/expanded/NAME.rs`
 //! is expanded with the code generator and compared with `NAME.expanded.rs`, so that any change
-//! to generated code shows up in review. `ROUTH_BLESS=1 cargo test --test expand` rewrites them.
+//! to generated code shows up in review. `ROUTH_BLESS=1 cargo test --test main expand::` rewrites them.
 
 use std::path::Path;
 
@@ -51,7 +51,7 @@ fn expansions_match_snapshots() {
             let old = std::fs::read_to_string(&snap).unwrap_or_default();
             assert!(
                 old == expanded,
-                "generated code for {name} changed; review and run `ROUTH_BLESS=1 cargo test --test expand`\n--- new ---\n{expanded}"
+                "generated code for {name} changed; review and run `ROUTH_BLESS=1 cargo test --test main expand::`\n--- new ---\n{expanded}"
             );
         }
         checked += 1;

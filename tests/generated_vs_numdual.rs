@@ -2,7 +2,7 @@
 //! of R written by hand (crate `test-models`), at random points including |γ| ≠ 1
 //! (docs/method.md §4).
 
-mod common;
+use crate::common;
 
 use common::{close, m, s, v};
 use derived_models::{Ellipsoid, Gyrostat};

@@ -16,6 +16,8 @@
 
 use std::collections::HashMap;
 
+use crate::common::close_to;
+
 use derived_models::{
     AsymmetricTop, DiagonalEllipsoid, Ellipsoid, FluidBody, Gyrostat, LagrangeTop,
 };
@@ -395,9 +397,10 @@ fn unit(rng: &mut ChaCha8Rng) -> Vector3<f64> {
     }
 }
 
-fn close(a: f64, b: f64, scale: f64, what: &str) {
+/// Asserts that a LaTeX formula's value `a` agrees with the generated code's `b`.
+fn agrees(a: f64, b: f64, scale: f64, what: &str) {
     assert!(
-        (a - b).abs() <= 1e-9 * scale.max(1.0),
+        close_to(a, b, 1e-9, scale),
         "{what}: LaTeX {a} vs generated {b}"
     );
 }
@@ -435,7 +438,7 @@ fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usi
         e.insert("p_\\psi".to_string(), p);
         if printed(&f.lagrangian) {
             let want = model.lagrangian(&w, &gamma);
-            close(
+            agrees(
                 eval(&f.lagrangian, &e),
                 want,
                 want.abs(),
@@ -444,11 +447,11 @@ fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usi
         }
         if printed(&f.psi_dot) {
             let want = model.psi_dot(&w, &gamma, p);
-            close(eval(&f.psi_dot, &e), want, want.abs(), &format!("{name} ψ̇"));
+            agrees(eval(&f.psi_dot, &e), want, want.abs(), &format!("{name} ψ̇"));
         }
         if printed(&f.routhian) {
             let want = model.routhian(&w, &gamma, p);
-            close(
+            agrees(
                 eval(&f.routhian, &e),
                 want,
                 want.abs(),
@@ -457,7 +460,7 @@ fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usi
         }
         if printed(&f.amended_potential) {
             let want = model.amended_potential(&gamma, p);
-            close(
+            agrees(
                 eval(&f.amended_potential, &e),
                 want,
                 want.abs(),
@@ -470,7 +473,7 @@ fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usi
                 let got = eval_matrix(tex, &e);
                 let scale = m.amax();
                 for k in 0..9 {
-                    close(got[k], m[k], scale, &format!("{name} {what}"));
+                    agrees(got[k], m[k], scale, &format!("{name} {what}"));
                 }
             }
         }

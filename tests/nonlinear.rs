@@ -2,6 +2,7 @@
 //! `Model`'s), against the same method fed by a hand-written `R` (39) evaluated at jets: the
 //! tape must give the same frequencies, Krein signs, Birkhoff coefficients and verdicts.
 
+use crate::common::close_to;
 use routh::nonlinear::{nonlinear_stability_from_jet, Jet};
 use routh::{
     nonlinear_stability, Lagrangian, Model, NonlinearOptions, NonlinearVerdict, Stability,
@@ -31,10 +32,6 @@ fn hand_r(top: &Top) -> impl Fn(&[Jet; 3], &[Jet; 3], f64) -> Jet + '_ {
     }
 }
 
-fn close(a: f64, b: f64, scale: f64) -> bool {
-    (a - b).abs() <= 1e-9 * scale.max(1.0)
-}
-
 #[test]
 fn the_tape_gives_the_hand_written_normal_form() {
     let opts = NonlinearOptions::default();
@@ -59,16 +56,17 @@ fn the_tape_gives_the_hand_written_normal_form() {
             assert_eq!(rep.krein_signs, hand.krein_signs);
             assert_eq!(rep.resonance, hand.resonance);
             for k in 0..2 {
-                assert!(close(
+                assert!(close_to(
                     rep.frequencies[k],
                     hand.frequencies[k],
+                    1e-9,
                     hand.frequencies[0]
                 ));
             }
             let scale = hand.normal_form.iter().fold(0.0f64, |m, c| m.max(c.abs()));
             for k in 0..3 {
                 assert!(
-                    close(rep.normal_form[k], hand.normal_form[k], scale),
+                    close_to(rep.normal_form[k], hand.normal_form[k], 1e-9, scale),
                     "c[{k}]: {} vs {}",
                     rep.normal_form[k],
                     hand.normal_form[k]

@@ -1,7 +1,7 @@
 //! The generated Routh function against the paper's closed forms (38)–(41), the corrected (51)
 //! (errata E1, E2), Theorem 2 and the identities of errata E4–E6, at random points.
 
-mod common;
+use crate::common;
 
 use common::close;
 use derived_models::{Ellipsoid, Gyrostat};

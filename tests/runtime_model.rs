@@ -6,7 +6,7 @@
 //! JIT (the default); its interpreted copy agrees with the derive to the same 1e−14, and with
 //! the JIT exactly (the two do the same IEEE operations: every output equal).
 
-mod common;
+use crate::common;
 
 use common::close;
 use derived_models::ellipsoid::DiagonalEllipsoid;

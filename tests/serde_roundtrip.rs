@@ -34,8 +34,7 @@
 //!
 //! Not covered, on purpose: `Model` itself (an input holding compiled tapes; its text and
 //! parameters are what to save), the tapes of routh-tape (internal to the derive), the plot
-//! options and `fluid::FluidError` / `plot::PlotError` (errors of constructors and of writing a
-//! file, not results of an analysis).
+//! options and `plot::PlotError` (errors of writing a file, not results of an analysis).
 #![cfg(feature = "serde")]
 
 use derived_models::{AsymmetricTop, LagrangeTop};

@@ -2,7 +2,7 @@
 // its kinetic matrix is `J = diag(I) + m v vᵀ`, so the derive emits `constant_inertia` and the
 // `rank_one` part of the equations (docs/method.md §2a).
 // `tests/expand.rs` re-expands this file and fails if the snapshot differs
-// (run `ROUTH_BLESS=1 cargo test --test expand` to accept a change to the generated code).
+// (run `ROUTH_BLESS=1 cargo test --test main expand::` to accept a change to the generated code).
 
 /// A heavy ellipsoid on a smooth horizontal plane (paper Example 2, errata E1, E2, E6).
 #[derive(Lagrangian)]

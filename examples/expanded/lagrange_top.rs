@@ -1,6 +1,6 @@
 // A small model whose generated code is shown beside it in `lagrange_top.expanded.rs`.
 // `tests/expand.rs` re-expands this file and fails if the snapshot differs
-// (run `ROUTH_BLESS=1 cargo test --test expand` to accept a change to the generated code).
+// (run `ROUTH_BLESS=1 cargo test --test main expand::` to accept a change to the generated code).
 
 /// The Lagrange top: a heavy symmetric top about a fixed point on its axis.
 #[derive(Lagrangian)]

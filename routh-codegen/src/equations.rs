@@ -10,7 +10,8 @@
 
 use crate::layout::JacobianTerms;
 use crate::lower::Symbols;
-use crate::reduce::{Outputs, M3, V3};
+use crate::nodes::{M3, V3};
+use crate::reduce::Outputs;
 use routh_symbolic::{Graph, Id, Var};
 
 /// The right sides, one node per component.

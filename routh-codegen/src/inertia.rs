@@ -15,7 +15,7 @@
 //! without the form, and the runtime factorises `J` as before.
 
 use crate::lower::Symbols;
-use crate::reduce::{M3, V3};
+use crate::nodes::{M3, V3};
 use routh_symbolic::{degree, Degree, Graph, Id, Node};
 
 /// `J = J₀ + c v vᵀ`, as nodes.

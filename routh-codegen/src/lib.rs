@@ -24,6 +24,7 @@ pub mod latex;
 pub mod layout;
 pub mod lower;
 pub mod methods;
+pub mod nodes;
 pub mod order;
 pub mod reduce;
 pub mod system;

@@ -7,7 +7,8 @@ use crate::equations::Equations;
 use crate::inertia::RankOne;
 use crate::layout::{Bundle, BundleAndSystem, EquationTerms, Gyroscopic, JacobianTerms};
 use crate::lower::Symbols;
-use crate::reduce::{Outputs, M3, V3};
+use crate::nodes::{M3, V3};
+use crate::reduce::Outputs;
 use routh_symbolic::Id;
 use std::fmt::Write;
 

@@ -4,13 +4,11 @@
 
 use crate::layout::{Bundle, BundleAndSystem, Gyroscopic};
 use crate::lower::Lowered;
+pub use crate::nodes::{M3, V3};
 use crate::system::gyroscopic;
 use routh_symbolic::shape::dot3;
 use routh_symbolic::{degree, extra_cost, Degree, Graph, Id, Var};
 use std::collections::HashMap;
-
-pub type V3 = [Id; 3];
-pub type M3 = [[Id; 3]; 3];
 
 /// Every generated output, as nodes of one graph (so that everything is shared).
 pub struct Outputs {

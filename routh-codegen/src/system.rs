@@ -3,7 +3,7 @@
 //! `gyroscopic_system` and `bundle_and_system`, and in the same form as
 //! `GyroscopicSystem::from_bundle` of routh-core.
 
-use crate::reduce::{M3, V3};
+use crate::nodes::{M3, V3};
 use routh_symbolic::shape::dot3;
 use routh_symbolic::{Graph, Id};
 

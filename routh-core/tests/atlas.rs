@@ -3,7 +3,7 @@
 //! asymmetric top derived by hand from the linearised Euler–Poisson equations, `classify` at
 //! random nodes, and the eigenvalues of a finite-difference Jacobian of the full equations (8).
 
-mod common;
+use crate::common;
 
 use common::HeavyTop;
 use rand::{Rng, SeedableRng};

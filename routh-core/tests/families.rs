@@ -7,7 +7,7 @@
 //! budgets, which end with a partial diagram and say where, and unreachable branches,
 //! which are errors.
 
-mod common;
+use crate::common;
 
 use common::HeavyTop;
 

@@ -12,8 +12,8 @@
 //! ([`steady_motion_search`]) must agree with the closed form wherever its Morse self-check says
 //! `consistent`; the points where it does not are counted (and printed).
 //!
-//! `cargo test -p routh-core --test families_sweep` runs 150 bodies;
-//! `cargo test -p routh-core --test families_sweep -- --ignored --nocapture` runs 1000.
+//! `cargo test -p routh-core --test main families_sweep::` runs 150 bodies;
+//! `cargo test -p routh-core --test main families_sweep:: -- --ignored --nocapture` runs 1000.
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

@@ -12,7 +12,7 @@ use routh_core::{
 use test_models::jacobian::{fd_jacobian, match_roots_within, sleeping_top_roots};
 use test_models::{Ellipsoid, Gyrostat};
 
-mod common;
+use crate::common;
 use common::HeavyTop;
 
 // ---------------------------------------------------------------------------------------------

@@ -11,7 +11,7 @@ use routh_core::{
 };
 use test_models::{Ellipsoid, Gyrostat};
 
-mod common;
+use crate::common;
 use common::HeavyTop;
 
 // ---------------------------------------------------------------------------------------------

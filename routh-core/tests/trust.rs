@@ -483,7 +483,7 @@ fn the_self_check_flags_incomplete_counts() {
         let r = steady_motion_search(&body, 0.0, &opts).unwrap();
         let complete = r.motions.len() == 10;
         assert!(
-            complete || !r.consistent || r.motions.len() % 2 == 0,
+            complete || !r.consistent || r.motions.len().is_multiple_of(2),
             "starts = {starts}"
         );
         assert!(r.motions.len() <= 10, "starts = {starts}: duplicates");

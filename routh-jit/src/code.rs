@@ -8,15 +8,13 @@
 
 use cranelift_jit::JITModule;
 use cranelift_module::FuncId;
+use routh_tape::INPUTS;
 use std::fmt;
 use std::mem::ManuallyDrop;
 use std::sync::Arc;
 
 /// The signature of a compiled tape: `f(inputs, params, out)`.
 type RawFn = unsafe extern "C" fn(*const f64, *const f64, *mut f64);
-
-/// The number of inputs before the parameters (`ω`, `γ`, `p_ψ`), read by every function.
-const INPUTS: usize = crate::compile::INPUTS;
 
 /// A finalized `JITModule`: its code and constants stay mapped until this is dropped.
 pub(crate) struct Code {

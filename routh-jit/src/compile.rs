@@ -18,9 +18,6 @@ use routh_tape::{Func, Tape};
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
-/// The number of inputs before the parameters: `ω` (or `Ω`), `γ`, `p_ψ`.
-pub const INPUTS: usize = 7;
-
 /// The most parameters a tape compiled with its parameters unbound may read.
 pub const MAX_PARAMS: usize = 1 << 20;
 

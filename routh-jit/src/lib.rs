@@ -43,8 +43,10 @@ mod compile;
 mod emit;
 mod libcalls;
 
-pub use compile::{is_supported, OptLevel, INPUTS, MAX_PARAMS};
+pub use compile::{is_supported, OptLevel, MAX_PARAMS};
 use routh_tape::Tape;
+/// The number of inputs before the parameters: `ω` (or `Ω`), `γ`, `p_ψ` (routh-tape's).
+pub use routh_tape::INPUTS;
 
 /// Why a tape could not be compiled or a compiled function not run.
 #[derive(Clone, PartialEq, Eq, Debug, thiserror::Error)]

@@ -4,65 +4,15 @@
 //! it to call Python. A Python exception raised by the family stops the work (every later
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
+use crate::continuation::{continuation_options, ContinuationKw};
 use crate::convert::{routh_err, vector3, Real, RouthError};
 use crate::guard::cooperative;
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::results::{Atlas, Diagram};
 use pyo3::prelude::*;
-use routh::{AtlasOptions, ContinuationOptions};
+use routh::AtlasOptions;
 use std::sync::Mutex;
-
-/// The keyword options of a continuation (None: the Rust default).
-pub struct ContinuationKw {
-    pub initial_step: Option<f64>,
-    pub max_step: Option<f64>,
-    pub min_step: Option<f64>,
-    pub max_steps: Option<usize>,
-    pub max_branches: Option<usize>,
-    pub newton_tol: Option<f64>,
-    pub event_tol: Option<f64>,
-    pub seeds: Option<usize>,
-    pub verify_counts: Option<bool>,
-    /// Also locate the nonlinear events (Arnold's D = 0, 1:2 and 1:3 resonances).
-    pub nonlinear: bool,
-}
-
-/// The Rust defaults with the given keywords applied.
-pub fn continuation_options(kw: ContinuationKw) -> ContinuationOptions {
-    let mut o = ContinuationOptions::default();
-    if let Some(v) = kw.initial_step {
-        o.initial_step = v;
-    }
-    if let Some(v) = kw.max_step {
-        o.max_step = v;
-    }
-    if let Some(v) = kw.min_step {
-        o.min_step = v;
-    }
-    if let Some(v) = kw.max_steps {
-        o.max_steps = v;
-    }
-    if let Some(v) = kw.max_branches {
-        o.max_branches = v;
-    }
-    if let Some(v) = kw.newton_tol {
-        o.newton_tol = v;
-    }
-    if let Some(v) = kw.event_tol {
-        o.event_tol = v;
-    }
-    if let Some(v) = kw.seeds {
-        o.seeds = v;
-    }
-    if let Some(v) = kw.verify_counts {
-        o.verify_counts = v;
-    }
-    if kw.nonlinear {
-        o.nonlinear = Some(routh::NonlinearOptions::default());
-    }
-    o
-}
 
 /// A Python family `f(*args) -> (Model, p_psi)` made callable from Rust threads.
 struct PyFamily {

@@ -12,6 +12,7 @@
 #![forbid(unsafe_code)]
 
 mod aliases;
+mod continuation;
 mod convert;
 mod export;
 mod family;

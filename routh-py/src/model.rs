@@ -1,7 +1,7 @@
 //! `routh.Model`: the run-time model and the analyses on it.
 
+use crate::continuation::{continuation_options, ContinuationKw};
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3, Real};
-use crate::family::{continuation_options, ContinuationKw};
 use crate::guard::{cooperative, detached, interruptible};
 use crate::latex::{aligned, LatexFormulas, SympyFormulas};
 use crate::nonlinear::NonlinearReport;

@@ -22,8 +22,9 @@ use std::cell::RefCell;
 use std::fmt;
 use std::sync::Arc;
 
-/// The number of inputs of a kernel: `ω` (or `Ω`), `γ`, `p_ψ`.
-pub const INPUTS: usize = 7;
+/// The number of inputs of a kernel: `ω` (or `Ω`), `γ`, `p_ψ` (one constant with the tape's and
+/// the JIT's).
+pub use routh_tape::INPUTS;
 
 /// One tape, ready to evaluate with `f64`.
 pub trait Kernel: Send + Sync + fmt::Debug {

@@ -8,8 +8,8 @@
 //! and its kernels are made again for new values.
 
 use crate::compile::{Compiled, TAPES};
+use crate::evaluation::Evaluation;
 use crate::kernel::{Backend, Interpreter, Kernel, INPUTS};
-use crate::model::Evaluation;
 use std::fmt;
 use std::sync::{Arc, OnceLock};
 

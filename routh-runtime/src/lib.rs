@@ -39,6 +39,7 @@
 
 mod compile;
 mod error;
+mod evaluation;
 mod hoist;
 pub mod kernel;
 mod kernels;
@@ -48,5 +49,6 @@ mod results;
 mod toml_file;
 
 pub use error::ModelError;
-pub use model::{Evaluation, Model};
+pub use evaluation::Evaluation;
+pub use model::Model;
 pub use param::Param;

@@ -2,6 +2,7 @@
 
 use crate::compile::{compile, index, Compiled};
 use crate::error::ModelError;
+use crate::evaluation::Evaluation;
 use crate::kernel::{Backend, INPUTS};
 use crate::kernels::{Kernels, Maker};
 use crate::results::{gyroscopic, routh_bundle, BUNDLE_LEN};
@@ -64,17 +65,6 @@ pub struct Model {
     /// `J₀` of `J = J₀ + c v vᵀ` at these values.
     constant_inertia: Option<Matrix3<f64>>,
     kernels: Arc<Kernels>,
-}
-
-/// How a [`Model`] evaluates its tapes ([`Model::evaluation`]).
-#[derive(Copy, Clone, PartialEq, Eq, Debug)]
-pub enum Evaluation {
-    /// Compiled to native code by Cranelift (feature `jit`, the default).
-    Jit,
-    /// By the interpreter ([`crate::kernel::Interpreter`]).
-    Interpreter,
-    /// By a backend given to [`Model::with_backend`].
-    Custom,
 }
 
 /// The JIT where it is available, optimizing (see `docs/performance.md`: optimized code is

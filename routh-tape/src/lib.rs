@@ -35,4 +35,4 @@ pub use bound::{
 pub use func::{sign, Func};
 pub use rust::RustPaths;
 pub use scalar::TapeScalar;
-pub use tape::{Inputs, Op, Output, Tape, TapeError};
+pub use tape::{Inputs, Op, Output, Tape, TapeError, INPUTS};

@@ -152,6 +152,11 @@ impl fmt::Display for TapeError {
 
 impl std::error::Error for TapeError {}
 
+/// The number of scalar inputs of a tape before its parameters: `ω` (or `Ω`), `γ`, `p_ψ` — the
+/// length of [`Inputs`] laid out flat as `[ω₀, ω₁, ω₂, γ₀, γ₁, γ₂, p_ψ]`, the layout the
+/// interpreter's kernels and the JIT's compiled functions read.
+pub const INPUTS: usize = 7;
+
 /// The inputs of a tape: `ω` (or `Ω`), `γ` and `p_ψ`, in any scalar type.
 #[derive(Copy, Clone, PartialEq, Debug)]
 pub struct Inputs<S> {

@@ -33,6 +33,7 @@ mod gyrostat;
 mod hand;
 pub use hand::{hand_gyrostat_bundle, hand_gyrostat_bundle_and_system, hand_gyrostat_system};
 pub mod birkhoff;
+pub mod compare;
 mod heavy_top;
 pub mod identities;
 pub mod jacobian;

@@ -4,23 +4,8 @@
 
 use routh::{Matrix3, Vector3};
 
-/// Normwise relative agreement: `‖a − b‖∞ ≤ tol · max(‖b‖∞, floor)`, the floor guarding outputs
-/// that are exactly zero in the reference.
-/// Returns the relative error `‖a − b‖∞ / max(‖b‖∞, floor)` on success.
-pub fn close(a: &[f64], b: &[f64], tol: f64, floor: f64) -> Result<f64, String> {
-    let scale = b.iter().fold(floor, |m, x| m.max(x.abs()));
-    let err = a
-        .iter()
-        .zip(b)
-        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-    if err <= tol * scale && a.iter().all(|x| x.is_finite()) {
-        Ok(err / scale)
-    } else {
-        Err(format!(
-            "error {err:e} > {tol:e} × {scale:e}\n  got      {a:?}\n  expected {b:?}"
-        ))
-    }
-}
+/// The shared comparisons (test-models): `close` for lists, `close_to` for scalars.
+pub use test_models::compare::{close, close_to};
 
 pub fn s(x: f64) -> Vec<f64> {
     vec![x]

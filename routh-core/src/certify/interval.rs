@@ -181,7 +181,7 @@ impl Interval {
             return self;
         }
         let half = self.powi_pos(n / 2).sqr();
-        if n % 2 == 0 {
+        if n.is_multiple_of(2) {
             half
         } else {
             half * self

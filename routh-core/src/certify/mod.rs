@@ -28,7 +28,10 @@
 //! expression DAG as the generated f64 code, evaluated with [`Interval`]s), so a hand-written
 //! model, which has no tape, cannot be certified.
 
+mod chart;
 mod interval;
+mod krawczyk;
+mod regions;
 mod tape;
 
 /// The interval arithmetic and the tape's scalar interface behind the certificate: public for
@@ -42,6 +45,10 @@ pub use routh_tape::{Func, GradHess, TapeScalar};
 /// what [`crate::Routhian::certification_tape`] returns (the typed tape of `routh-tape`).
 #[doc(hidden)]
 pub type RouthTape = routh_tape::CertificationTape;
+
+use chart::{ChartBox, Evaluator, Face};
+use krawczyk::{inflate, refine, test_box, tighten, Verdict, MAX_ENCLOSURE};
+use regions::{distinct, regions, Found};
 
 use crate::error::RouthError;
 use crate::model::Routhian;
@@ -161,250 +168,6 @@ impl std::fmt::Display for Certificate {
             self.elapsed.as_secs_f64() * 1e3
         )
     }
-}
-
-/// A face of the cube: `x = σe_k + u e_a + v e_b`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Face {
-    k: usize,
-    sigma: f64,
-}
-
-impl Face {
-    fn all() -> [Face; 6] {
-        std::array::from_fn(|i| Face {
-            k: i / 2,
-            sigma: if i % 2 == 0 { 1.0 } else { -1.0 },
-        })
-    }
-    /// The two free axes `(a, b)`.
-    fn ab(self) -> (usize, usize) {
-        ((self.k + 1) % 3, (self.k + 2) % 3)
-    }
-    /// `γ(u, v)` and `1/r`, as intervals.
-    fn gamma(self, u: Interval, v: Interval) -> ([Interval; 3], Interval) {
-        let one = Interval::point(1.0);
-        let r_inv = (one + u.sqr() + v.sqr()).sqrt().recip();
-        let (a, b) = self.ab();
-        let mut g = [Interval::point(0.0); 3];
-        g[self.k] = Interval::point(self.sigma) * r_inv;
-        g[a] = u * r_inv;
-        g[b] = v * r_inv;
-        (g, r_inv)
-    }
-    /// The chart coordinates `(u, v) = σ(γ_a, γ_b)/γ_k` of a box of γ (`None` if `γ_k` may vanish
-    /// or has the other sign).
-    fn coordinates(self, g: &[Interval; 3]) -> Option<(Interval, Interval)> {
-        let gk = Interval::point(self.sigma) * g[self.k];
-        if gk.lo <= 0.0 {
-            return None;
-        }
-        let (a, b) = self.ab();
-        Some((g[a] / gk, g[b] / gk))
-    }
-}
-
-/// A box of a chart.
-#[derive(Debug, Clone, Copy)]
-struct ChartBox {
-    face: Face,
-    u: Interval,
-    v: Interval,
-}
-
-/// `F` and (optionally) `F'` over a chart box.
-struct Field {
-    f: [Interval; 2],
-    df: Option<[[Interval; 2]; 2]>,
-}
-
-fn dot(a: &[Interval; 3], b: &[Interval; 3]) -> Interval {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-/// The evaluator: the tape, `p_ψ` and a scratch buffer.
-struct Evaluator<'a> {
-    tape: &'a RouthTape,
-    p: Interval,
-    scratch: Vec<Interval>,
-}
-
-impl Evaluator<'_> {
-    /// `F = (t_a, t_b)` over the box, and `F'` if `jacobian`.
-    fn field(&mut self, b: &ChartBox, jacobian: bool) -> Field {
-        let (gamma, r_inv) = b.face.gamma(b.u, b.v);
-        let (g, h) = self.tape.eval(gamma, self.p, &mut self.scratch);
-        let gg = dot(&g, &gamma);
-        let (ia, ib) = b.face.ab();
-        let t = |i: usize| g[i] - gg * gamma[i];
-        let f = [t(ia), t(ib)];
-        if !jacobian {
-            return Field { f, df: None };
-        }
-        // dt/dγ = H − γ(Hγ + g)ᵀ − (g·γ)I.
-        let w: [Interval; 3] = std::array::from_fn(|j| dot(&h[j], &gamma) + g[j]);
-        let dt = |i: usize, j: usize| {
-            let x = h[i][j] - gamma[i] * w[j];
-            if i == j {
-                x - gg
-            } else {
-                x
-            }
-        };
-        // dγ/du = (e_a − γγ_a)/r, dγ/dv = (e_b − γγ_b)/r.
-        let dgamma = |c: usize| -> [Interval; 3] {
-            std::array::from_fn(|j| {
-                let e = if j == c {
-                    Interval::point(1.0)
-                } else {
-                    Interval::point(0.0)
-                };
-                (e - gamma[j] * gamma[c]) * r_inv
-            })
-        };
-        let (du, dv) = (dgamma(ia), dgamma(ib));
-        let row = |i: usize| -> [Interval; 2] {
-            let d: [Interval; 3] = std::array::from_fn(|j| dt(i, j));
-            [dot(&d, &du), dot(&d, &dv)]
-        };
-        Field {
-            f,
-            df: Some([row(ia), row(ib)]),
-        }
-    }
-}
-
-/// What one Krawczyk step found on a box.
-enum Verdict {
-    /// No steady motion in the box.
-    Excluded,
-    /// Exactly one, inside the given sub-box.
-    Unique(Interval, Interval),
-    /// Not decided at this size; the Krawczyk contraction estimate `‖I − Y F'(X)‖∞` (∞ when it
-    /// could not be formed). It halves with the box near a regular zero and stays large near a
-    /// circle of zeros, where `F'` is singular.
-    Split(f64),
-}
-
-fn excludes_zero(x: Interval) -> bool {
-    x.lo > 0.0 || x.hi < 0.0
-}
-
-/// `x` widened by 5% of its width on each side.
-fn inflate(x: Interval) -> Interval {
-    let e = 0.05 * x.width();
-    Interval::new((x.lo - e).next_down(), (x.hi + e).next_up())
-}
-
-/// One test of a box: exclusion by the natural and mean-value enclosures, then Krawczyk. The
-/// tests run on the box widened by 5%: a steady motion on the edge of a box (the centre of a
-/// face, on the first split, is one) can never map into the interior of that box, but it does
-/// into the interior of the wider one. A verdict on the wider box holds for the box.
-fn test_box(ev: &mut Evaluator<'_>, b: &ChartBox) -> Verdict {
-    let b = &ChartBox {
-        face: b.face,
-        u: inflate(b.u),
-        v: inflate(b.v),
-    };
-    let field = ev.field(b, true);
-    if field.f.iter().any(|&x| excludes_zero(x)) {
-        return Verdict::Excluded;
-    }
-    let Some(df) = field.df else {
-        return Verdict::Split(f64::INFINITY);
-    };
-    if df.iter().flatten().any(|x| !x.is_bounded()) {
-        return Verdict::Split(f64::INFINITY);
-    }
-    let (mu, mv) = (b.u.mid(), b.v.mid());
-    let centre = ChartBox {
-        face: b.face,
-        u: Interval::point(mu),
-        v: Interval::point(mv),
-    };
-    let fm = ev.field(&centre, false).f;
-    if fm.iter().any(|x| !x.is_bounded()) {
-        return Verdict::Split(f64::INFINITY);
-    }
-    let d = [b.u - centre.u, b.v - centre.v];
-    // Mean-value form: F(X) ⊆ F(m) + F'(X)(X − m).
-    for i in 0..2 {
-        let mv_form = fm[i] + df[i][0] * d[0] + df[i][1] * d[1];
-        if excludes_zero(mv_form) {
-            return Verdict::Excluded;
-        }
-    }
-    // Y ≈ F'(m)⁻¹ from the midpoints (any real matrix keeps Krawczyk valid).
-    let m = [
-        [df[0][0].mid(), df[0][1].mid()],
-        [df[1][0].mid(), df[1][1].mid()],
-    ];
-    let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
-    let scale = m.iter().flatten().fold(0.0f64, |s, x| s.max(x.abs()));
-    if !det.is_finite() || det.abs() <= 1e-14 * scale * scale {
-        return Verdict::Split(f64::INFINITY);
-    }
-    let y = [
-        [m[1][1] / det, -m[0][1] / det],
-        [-m[1][0] / det, m[0][0] / det],
-    ];
-    let yp = |i: usize, j: usize| Interval::point(y[i][j]);
-    let mut k = [centre.u, centre.v];
-    let mut q = 0.0f64;
-    for (i, ki) in k.iter_mut().enumerate() {
-        let yf = yp(i, 0) * fm[0] + yp(i, 1) * fm[1];
-        let mut acc = *ki - yf;
-        let mut row = 0.0;
-        for j in 0..2 {
-            // (I − Y F'(X))_ij
-            let ydf = yp(i, 0) * df[0][j] + yp(i, 1) * df[1][j];
-            let e = if i == j {
-                Interval::point(1.0)
-            } else {
-                Interval::point(0.0)
-            };
-            let c = e - ydf;
-            row += c.mag();
-            acc = acc + c * d[j];
-        }
-        q = q.max(row);
-        *ki = acc;
-    }
-    let x = [b.u, b.v];
-    if k[0].intersect(x[0]).is_none() || k[1].intersect(x[1]).is_none() {
-        return Verdict::Excluded;
-    }
-    if k[0].interior_of(x[0]) && k[1].interior_of(x[1]) {
-        return Verdict::Unique(k[0], k[1]);
-    }
-    Verdict::Split(q)
-}
-
-/// A certified zero: its chart, the box where it is unique, and a tight enclosure in γ.
-struct Found {
-    face: Face,
-    unique: (Interval, Interval),
-    gamma: [Interval; 3],
-}
-
-fn overlaps(a: &[Interval; 3], b: &[Interval; 3]) -> bool {
-    (0..3).all(|i| a[i].intersect(b[i]).is_some())
-}
-
-/// Whether the motion enclosed by `inner` is the one unique in `outer`'s box.
-fn same_motion(inner: &Found, outer: &Found) -> bool {
-    match outer.face.coordinates(&inner.gamma) {
-        Some((u, v)) => u.subset_of(outer.unique.0) && v.subset_of(outer.unique.1),
-        None => false,
-    }
-}
-
-fn find(parent: &mut [usize], mut i: usize) -> usize {
-    while parent[i] != i {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    i
 }
 
 /// Proves how many steady motions the model has at `p_psi` (the critical points of the amended
@@ -545,27 +308,9 @@ pub fn steady_motions_certified<M: Routhian>(
         }
     }
 
-    // The same motion certified in two boxes (a box edge or a chart edge through it).
-    let mut parent: Vec<usize> = (0..found.len()).collect();
-    let mut ambiguous_pairs = 0;
-    for i in 0..found.len() {
-        for j in i + 1..found.len() {
-            if !overlaps(&found[i].gamma, &found[j].gamma) {
-                continue;
-            }
-            if same_motion(&found[j], &found[i]) || same_motion(&found[i], &found[j]) {
-                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
-                parent[b] = a;
-            } else {
-                ambiguous_pairs += 1;
-            }
-        }
-    }
+    let (distinct, ambiguous_pairs) = distinct(&found);
     let mut motions = Vec::new();
-    for (i, f) in found.iter().enumerate() {
-        if find(&mut parent, i) != i {
-            continue;
-        }
+    for f in distinct {
         let g = &f.gamma;
         let centre = Vector3::new(g[0].mid(), g[1].mid(), g[2].mid()).normalize();
         motions.push(CertifiedMotion {
@@ -584,135 +329,4 @@ pub fn steady_motions_certified<M: Routhian>(
         excluded,
         elapsed: start.elapsed(),
     })
-}
-
-/// Widest enclosure (per component of γ) of a certified motion; a motion that cannot be
-/// enclosed tighter is reported undecided.
-const MAX_ENCLOSURE: f64 = 1e-10;
-
-/// A tight enclosure of the zero certified unique in `unique` (found in `k`): Newton's method
-/// in floating point from the centre of `k`, then Krawczyk on boxes of half-width `1e−14` to
-/// `1e−11` around the Newton point; the first one certified (it lies in `unique`, so it holds
-/// the same zero) is the enclosure. `None` when Newton leaves `unique` or no small box is
-/// certified.
-fn tighten(
-    ev: &mut Evaluator<'_>,
-    face: Face,
-    unique: (Interval, Interval),
-    k: (Interval, Interval),
-) -> Option<(Interval, Interval)> {
-    let (mut u, mut v) = (k.0.mid(), k.1.mid());
-    for _ in 0..40 {
-        let at = ChartBox {
-            face,
-            u: Interval::point(u),
-            v: Interval::point(v),
-        };
-        let field = ev.field(&at, true);
-        let df = field.df?;
-        let (f0, f1) = (field.f[0].mid(), field.f[1].mid());
-        let m = [
-            [df[0][0].mid(), df[0][1].mid()],
-            [df[1][0].mid(), df[1][1].mid()],
-        ];
-        let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
-        if !(det.is_finite() && det != 0.0) {
-            return None;
-        }
-        let du = (m[1][1] * f0 - m[0][1] * f1) / det;
-        let dv = (-m[1][0] * f0 + m[0][0] * f1) / det;
-        if !(du.is_finite() && dv.is_finite()) {
-            return None;
-        }
-        u -= du;
-        v -= dv;
-        if !(unique.0.lo <= u && u <= unique.0.hi && unique.1.lo <= v && v <= unique.1.hi) {
-            return None;
-        }
-        if du.abs().max(dv.abs()) <= 1e-16 * (1.0 + u.abs().max(v.abs())) {
-            break;
-        }
-    }
-    for r in [1e-14, 1e-13, 1e-12, 1e-11] {
-        let small = ChartBox {
-            face,
-            u: Interval::new(u - r, u + r),
-            v: Interval::new(v - r, v + r),
-        };
-        // The box the test really uses is 5% wider; it must lie in the uniqueness box.
-        let wide = (inflate(small.u), inflate(small.v));
-        if !(wide.0.interior_of(unique.0) && wide.1.interior_of(unique.1)) {
-            return None;
-        }
-        if let Verdict::Unique(ku, kv) = test_box(ev, &small) {
-            if let (Some(a), Some(b)) = (ku.intersect(wide.0), kv.intersect(wide.1)) {
-                return Some((a, b));
-            }
-        }
-    }
-    None
-}
-
-/// Shrinks the enclosure of a certified zero by Krawczyk steps (every zero of the box stays in
-/// `K ∩ X`).
-fn refine(
-    ev: &mut Evaluator<'_>,
-    face: Face,
-    mut x: (Interval, Interval),
-    iterations: usize,
-) -> (Interval, Interval) {
-    for _ in 0..iterations {
-        let b = ChartBox {
-            face,
-            u: x.0,
-            v: x.1,
-        };
-        let before = x.0.width() + x.1.width();
-        match test_box(ev, &b) {
-            Verdict::Unique(ku, kv) => match (ku.intersect(x.0), kv.intersect(x.1)) {
-                (Some(u), Some(v)) => x = (u, v),
-                _ => break,
-            },
-            _ => break,
-        }
-        if x.0.width() + x.1.width() >= 0.5 * before {
-            break;
-        }
-    }
-    x
-}
-
-/// Groups undecided chart boxes into connected regions of the sphere (boxes whose γ-hulls meet).
-fn regions(boxes: &[ChartBox]) -> Vec<UndecidedRegion> {
-    let hulls: Vec<[Interval; 3]> = boxes.iter().map(|b| b.face.gamma(b.u, b.v).0).collect();
-    let mut parent: Vec<usize> = (0..hulls.len()).collect();
-    // Sweep along γ₁: only boxes whose γ₁-ranges overlap can meet.
-    let mut order: Vec<usize> = (0..hulls.len()).collect();
-    order.sort_by(|&a, &b| hulls[a][0].lo.total_cmp(&hulls[b][0].lo));
-    for (pos, &i) in order.iter().enumerate() {
-        for &j in &order[pos + 1..] {
-            if hulls[j][0].lo > hulls[i][0].hi {
-                break;
-            }
-            if overlaps(&hulls[i], &hulls[j]) {
-                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
-                parent[b] = a;
-            }
-        }
-    }
-    let mut out: Vec<UndecidedRegion> = Vec::new();
-    let mut index = vec![usize::MAX; hulls.len()];
-    for (i, h) in hulls.iter().enumerate() {
-        let r = find(&mut parent, i);
-        if index[r] == usize::MAX {
-            index[r] = out.len();
-            out.push(UndecidedRegion { hull: *h, boxes: 0 });
-        }
-        let reg = &mut out[index[r]];
-        reg.boxes += 1;
-        for (acc, x) in reg.hull.iter_mut().zip(h) {
-            *acc = acc.hull(*x);
-        }
-    }
-    out
 }

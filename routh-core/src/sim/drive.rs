@@ -175,3 +175,8 @@ where
 pub(super) fn split3<const N: usize>(y: &SVector<f64, N>, at: usize) -> Vector3<f64> {
     Vector3::new(y[at], y[at + 1], y[at + 2])
 }
+
+/// A field of `N` components extended by the attitude quaternion `q` at `y[N..N + 4]`, moved by
+/// the angular velocity `ω` (full) or Ω (reduced) of `y[0..3]`: `q̇ = ½ q ⊗ (0, ω)` (module
+/// [`attitude`]). For [`Method::Dop853`] only (the Lie method moves the attitude exactly).
+pub(super) struct WithAttitude<F>(pub(super) F);

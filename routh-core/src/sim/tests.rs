@@ -1,7 +1,8 @@
 //! Unit tests of the simulation drivers: input validation, zero-length runs, output times.
 
 use super::*;
-use nalgebra::Matrix3;
+use crate::{Lagrangian, RouthError};
+use nalgebra::{Matrix3, Vector3};
 
 /// A torque-free asymmetric rigid body with a hand-written `L = ½ωᵀIω`.
 struct Free {

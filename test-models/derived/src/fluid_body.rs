@@ -1,7 +1,8 @@
 //! Paper Example 3: a rigid body in an ideal fluid, through [`routh::fluid::kirchhoff_lagrangian`]
 //! (errata E3, E7).
 
-use routh::fluid::{kirchhoff_lagrangian, FluidError, FluidParameters};
+use routh::fluid::{kirchhoff_lagrangian, FluidParameters};
+use routh::RouthError;
 use routh::{Lagrangian, Matrix3, Vector3};
 
 /// `L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)` with the matrices of
@@ -65,7 +66,7 @@ impl Kirchhoff {
     }
 
     /// The reduced Lagrangian's matrices at impulse magnitude `k`.
-    pub fn parameters(&self, k: f64) -> Result<FluidParameters, FluidError> {
+    pub fn parameters(&self, k: f64) -> Result<FluidParameters, RouthError> {
         kirchhoff_lagrangian(self.a, self.b, self.c, k)
     }
 

@@ -94,8 +94,8 @@ impl Part<'_> {
 
     fn other_command(&self) -> &'static str {
         match self {
-            Part::Hand => "`cargo test -p routh --test runtime_properties`",
-            Part::Derived(_) => "`cargo test -p routh-core --test runtime_properties`",
+            Part::Hand => "`cargo test -p routh --test main runtime_properties::`",
+            Part::Derived(_) => "`cargo test -p routh-core --test main runtime_properties::`",
         }
     }
 

@@ -31,8 +31,8 @@
 //! [`FluidParameters::kirchhoff_constant`].
 //!
 //! ```
-//! use routh::fluid::kirchhoff_lagrangian;
-//! use routh::{Matrix3, Vector3};
+//! use routh_core::fluid::kirchhoff_lagrangian;
+//! use routh_core::{Matrix3, Vector3};
 //!
 //! let a = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 0.4));
 //! let b = Matrix3::new(0.1, 0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0, 0.2);
@@ -48,10 +48,11 @@
 //! let v = f.velocity(&w, &g);
 //! let t = 0.5 * (w.dot(&(a * w)) + 2.0 * v.dot(&(b * w)) + v.dot(&(c * v)));
 //! assert!((f.lagrangian(&w, &g) - (t - 2.0 * g.dot(&v))).abs() < 1e-12);
-//! # Ok::<(), routh::fluid::FluidError>(())
+//! # Ok::<(), routh_core::RouthError>(())
 //! ```
 
-use routh_core::nalgebra::{Matrix3, SymmetricEigen, Vector3};
+use crate::error::RouthError;
+use nalgebra::{Matrix3, SymmetricEigen, Vector3};
 
 /// The matrices of the Lagrangian `L(ω, γ) = ½(Aω, ω) + (Λγ, ω) − ½(Πγ, γ)` of a body in an
 /// ideal fluid with impulse of magnitude `k` (errata E3; see the [module documentation](self)).
@@ -101,68 +102,20 @@ impl FluidParameters {
     }
 }
 
-/// Why [`kirchhoff_lagrangian`] rejected its input.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[non_exhaustive]
-pub enum FluidError {
-    /// An entry of `a`, `b`, `c` or `k` is NaN or infinite.
-    #[error("non-finite entry in {what}")]
-    NonFinite {
-        /// Which input.
-        what: &'static str,
-    },
-    /// `a` or `c` is not symmetric (relative asymmetry `‖M − Mᵀ‖/‖M‖` above `1e−12`).
-    #[error("{what} is not symmetric (relative asymmetry {asymmetry:e})")]
-    NotSymmetric {
-        /// Which input.
-        what: &'static str,
-        /// `‖M − Mᵀ‖/‖M‖` (Frobenius norms).
-        asymmetry: f64,
-    },
-    /// `c`, or the kinetic form `T` of (53) (equivalently `A = a − bᵀc⁻¹b` with `c`), is not
-    /// positive definite.
-    #[error("{what} is not positive definite (smallest eigenvalue {min_eigenvalue:e})")]
-    NotPositiveDefinite {
-        /// Which matrix.
-        what: &'static str,
-        /// Its smallest eigenvalue.
-        min_eigenvalue: f64,
-    },
-    /// `k = |p|` must be positive (56).
-    #[error("the impulse magnitude k = {k} must be positive")]
-    NonPositiveImpulse {
-        /// The value given.
-        k: f64,
-    },
-}
+/// The error of [`kirchhoff_lagrangian`], now [`RouthError`]: a non-finite input is
+/// [`RouthError::NonFinite`], every other rejection [`RouthError::InvalidModel`] naming the input.
+#[deprecated(note = "kirchhoff_lagrangian returns routh::RouthError")]
+pub type FluidError = RouthError;
 
-impl FluidError {
-    /// Which input of [`kirchhoff_lagrangian`] the error is about.
-    fn what(&self) -> &'static str {
-        match self {
-            FluidError::NonFinite { what }
-            | FluidError::NotSymmetric { what, .. }
-            | FluidError::NotPositiveDefinite { what, .. } => what,
-            FluidError::NonPositiveImpulse { .. } => "k",
-        }
-    }
-}
-
-/// A fluid body that cannot be built is an invalid model, so `?` works in functions returning
-/// [`RouthError`](crate::RouthError).
-impl From<FluidError> for crate::RouthError {
-    fn from(e: FluidError) -> Self {
-        crate::RouthError::InvalidModel {
-            what: e.what(),
-            reason: e.to_string(),
-        }
-    }
+/// The rejection of the input `what` for `reason`.
+fn invalid(what: &'static str, reason: String) -> RouthError {
+    RouthError::InvalidModel { what, reason }
 }
 
 /// Relative asymmetry above which `a` or `c` is rejected.
 const SYMMETRY_TOL: f64 = 1e-12;
 
-fn check_symmetric(what: &'static str, m: &Matrix3<f64>) -> Result<(), FluidError> {
+fn check_symmetric(what: &'static str, m: &Matrix3<f64>) -> Result<(), RouthError> {
     let norm = m.norm();
     let asymmetry = if norm > 0.0 {
         (m - m.transpose()).norm() / norm
@@ -170,19 +123,26 @@ fn check_symmetric(what: &'static str, m: &Matrix3<f64>) -> Result<(), FluidErro
         0.0
     };
     if asymmetry > SYMMETRY_TOL {
-        return Err(FluidError::NotSymmetric { what, asymmetry });
+        return Err(invalid(
+            what,
+            format!("{what} is not symmetric (relative asymmetry {asymmetry:e})"),
+        ));
     }
     Ok(())
 }
 
-fn check_positive_definite(what: &'static str, m: &Matrix3<f64>) -> Result<(), FluidError> {
+fn not_positive_definite(what: &'static str, min_eigenvalue: f64) -> RouthError {
+    invalid(
+        what,
+        format!("{what} is not positive definite (smallest eigenvalue {min_eigenvalue:e})"),
+    )
+}
+
+fn check_positive_definite(what: &'static str, m: &Matrix3<f64>) -> Result<(), RouthError> {
     let min_eigenvalue = SymmetricEigen::new(*m).eigenvalues.min();
     // Relative to the largest entry, so that round-off cannot pass off a singular form.
     if min_eigenvalue.is_nan() || min_eigenvalue <= 1e-14 * m.amax() {
-        return Err(FluidError::NotPositiveDefinite {
-            what,
-            min_eigenvalue,
-        });
+        return Err(not_positive_definite(what, min_eigenvalue));
     }
     Ok(())
 }
@@ -196,25 +156,31 @@ fn check_positive_definite(what: &'static str, m: &Matrix3<f64>) -> Result<(), F
 /// `kinetic = 0.5 * omega.dot(a_kin * omega), linear = (lin * gamma).dot(omega),
 /// potential = 0.5 * gamma.dot(pot * gamma)`.
 ///
-/// Errors: non-finite input; `a` or `c` not symmetric (relative tolerance `1e−12`); `c` or the
-/// kinetic form `T` not positive definite (checked as `c > 0` and `A > 0`, its Schur complement);
-/// `k ≤ 0`.
+/// Errors: [`RouthError::NonFinite`] for a non-finite entry; [`RouthError::InvalidModel`] naming
+/// the input for `a` or `c` not symmetric (relative tolerance `1e−12`), `c` or the kinetic form
+/// `T` not positive definite (checked as `c > 0` and `A > 0`, its Schur complement), `k ≤ 0`.
 pub fn kirchhoff_lagrangian(
     a: Matrix3<f64>,
     b: Matrix3<f64>,
     c: Matrix3<f64>,
     k: f64,
-) -> Result<FluidParameters, FluidError> {
+) -> Result<FluidParameters, RouthError> {
     for (what, m) in [("a", &a), ("b", &b), ("c", &c)] {
-        if !m.iter().all(|x| x.is_finite()) {
-            return Err(FluidError::NonFinite { what });
+        if let Some(&value) = m.iter().find(|x| !x.is_finite()) {
+            return Err(RouthError::NonFinite { what, value });
         }
     }
     if !k.is_finite() {
-        return Err(FluidError::NonFinite { what: "k" });
+        return Err(RouthError::NonFinite {
+            what: "k",
+            value: k,
+        });
     }
     if k <= 0.0 {
-        return Err(FluidError::NonPositiveImpulse { k });
+        return Err(invalid(
+            "k",
+            format!("the impulse magnitude k = {k} must be positive (56)"),
+        ));
     }
     check_symmetric("a", &a)?;
     check_symmetric("c", &c)?;
@@ -222,10 +188,7 @@ pub fn kirchhoff_lagrangian(
     let c_inv = c
         .cholesky()
         .map(|ch| ch.inverse())
-        .ok_or(FluidError::NotPositiveDefinite {
-            what: "c",
-            min_eigenvalue: SymmetricEigen::new(c).eigenvalues.min(),
-        })?;
+        .ok_or_else(|| not_positive_definite("c", SymmetricEigen::new(c).eigenvalues.min()))?;
     let c_inv = 0.5 * (c_inv + c_inv.transpose());
     let kinetic = a - b.transpose() * c_inv * b;
     let kinetic = 0.5 * (kinetic + kinetic.transpose());
@@ -247,27 +210,34 @@ mod tests {
     #[test]
     fn rejects_bad_input() {
         let id = Matrix3::identity();
-        assert!(matches!(
+        let invalid = |r: Result<FluidParameters, RouthError>, input: &str, why: &str| match r {
+            Err(RouthError::InvalidModel { what, reason }) => what == input && reason.contains(why),
+            _ => false,
+        };
+        assert!(invalid(
             kirchhoff_lagrangian(id, id * 0.1, id, 0.0),
-            Err(FluidError::NonPositiveImpulse { .. })
+            "k",
+            "must be positive"
         ));
         assert!(matches!(
             kirchhoff_lagrangian(id, id * f64::NAN, id, 1.0),
-            Err(FluidError::NonFinite { what: "b" })
+            Err(RouthError::NonFinite { what: "b", value }) if value.is_nan()
         ));
         let skew = Matrix3::new(1.0, 0.5, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0);
-        assert!(matches!(
+        assert!(invalid(
             kirchhoff_lagrangian(skew, id, id, 1.0),
-            Err(FluidError::NotSymmetric { what: "a", .. })
+            "a",
+            "not symmetric"
         ));
-        assert!(matches!(
+        assert!(invalid(
             kirchhoff_lagrangian(id, id * 0.1, -id, 1.0),
-            Err(FluidError::NotPositiveDefinite { what: "c", .. })
+            "c",
+            "not positive definite"
         ));
         // b too strong: T is indefinite although a and c are positive definite.
         assert!(matches!(
             kirchhoff_lagrangian(id, id * 2.0, id, 1.0),
-            Err(FluidError::NotPositiveDefinite { .. })
+            Err(RouthError::InvalidModel { reason, .. }) if reason.contains("not positive definite")
         ));
     }
 }
