@@ -12,13 +12,13 @@
 //! `sign` inline, exactly as [`routh_tape::sign`]; `sin`, `cos`, `tan`, `exp`, `ln` and `powf`
 //! as calls to the Rust wrappers of `crate::libcalls`.
 
-use crate::compile::INPUTS;
 use crate::{libcalls, JitError};
 use cranelift_codegen::ir::condcodes::FloatCC;
 use cranelift_codegen::ir::{types, FuncRef, InstBuilder, MemFlagsData, Value};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use cranelift_jit::JITModule;
 use cranelift_module::{FuncId, Module};
+use routh_tape::INPUTS;
 use routh_tape::{Func, Op, Tape};
 use std::collections::HashMap;
 

@@ -5,6 +5,8 @@
 
 /// A point in fractional pixels.
 pub(super) type PxF = (f64, f64);
+/// A point in whole pixels.
+pub(super) type Px = (i32, i32);
 
 /// Points closer than this (pixels) to the last one kept are dropped before interpolating: a
 /// dense branch has many points per pixel, whose rounding noise would otherwise show.

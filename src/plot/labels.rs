@@ -1,7 +1,7 @@
 //! Labels beside markers, placed so that no two overlap and none covers a marker: each label
 //! tries positions around its marker, nearest first, then farther out on a short leader line.
 
-use super::marks::Px;
+use super::curve::Px;
 
 /// A pixel rectangle `[x0, x1] × [y0, y1]`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -17,8 +17,8 @@ use crate::{EventKind, OrbitEventKind, Stability};
 
 /// The whole figure, in backend pixels.
 pub(super) type Root<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-/// A point in backend pixels.
-pub(super) type Px = (i32, i32);
+// A point in backend pixels (defined beside the fractional one).
+pub(super) use super::curve::Px;
 
 /// Strokes the polyline `pts` (nothing for fewer than two points).
 pub(super) fn stroke_path(

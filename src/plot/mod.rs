@@ -32,7 +32,7 @@
 //! A legend to the right of the axes names every line style, marker and shading that is drawn
 //! (a verdict seen only under an event's marker is neither drawn nor listed). Colour is added on
 //! top (switch it off with [`PlotOptions::monochrome`]): the Okabe–Ito colours of the one style
-//! of routh's figures, [`style`] (the table [`crate::style::STYLE`], which the Python package's
+//! of routh's figures, [`crate::style`] (the table [`crate::style::STYLE`], which the Python package's
 //! matplotlib figures read too). Curves are drawn smooth at print resolution (a cubic Hermite
 //! curve through the samples, in fractional pixels, dashes laid along the whole curve); event
 //! names are placed clear of one another, of the markers and where possible of the curves, on
@@ -109,7 +109,7 @@ mod orbits;
 #[cfg(feature = "png")]
 mod png;
 mod regions;
-pub mod style;
+mod style;
 mod trajectory;
 
 pub use axis::DiagramAxis;

@@ -2,7 +2,7 @@
 //! each verdict, event kind and overlay is drawn. Every style reads without colour; the colour is
 //! added on top (black with [`PlotOptions::monochrome`](super::PlotOptions::monochrome)).
 
-pub use crate::style::{look, Fonts, Look, COLUMN_WIDTH_IN, FONT, OKABE_ITO, PX_PER_PT, STYLE};
+pub(super) use crate::style::{look, Look, FONT, PX_PER_PT, STYLE};
 
 use plotters::style::{RGBColor, BLACK};
 
@@ -291,6 +291,7 @@ pub(super) fn ramp(k: usize, n: usize, mono: bool) -> RGBColor {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::style::OKABE_ITO;
 
     #[test]
     fn every_key_the_figures_use_is_in_the_table() {
