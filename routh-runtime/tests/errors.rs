@@ -380,7 +380,13 @@ fn hostile_texts_build_or_are_refused_never_crash() {
     for (name, expected, word) in cases {
         let out = std::process::Command::new(&exe)
             .args([
-                "hostile_texts_build_or_are_refused_never_crash",
+                // The test's path in the one test binary (tests/main.rs) of this crate.
+                concat!(
+                    module_path!(),
+                    "::hostile_texts_build_or_are_refused_never_crash"
+                )
+                .split_once("::")
+                .map_or("", |(_, path)| path),
                 "--exact",
                 "--nocapture",
                 "--test-threads=1",
