@@ -27,27 +27,42 @@ mod runtime_properties;
 mod serde_roundtrip;
 mod ui;
 
-/// Every `tests/*.rs` file is compiled as a module of this binary (cargo does not build them on
-/// their own: `autotests = false`), so a test file left out would silently never run.
+/// Every `tests/*.rs` file of every crate whose integration tests are one binary (a
+/// `tests/main.rs`) is compiled as a module of it (cargo does not build the files on their own:
+/// `autotests = false`), so a test file left out would silently never run. One check for the
+/// whole workspace, here in the facade's harness.
 #[test]
 fn every_test_file_is_a_module() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
-    let main = std::fs::read_to_string(dir.join("main.rs")).unwrap();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut crates = vec![root.to_path_buf()];
+    for entry in std::fs::read_dir(root).unwrap() {
+        crates.push(entry.unwrap().path());
+    }
     let mut missing = Vec::new();
-    for entry in std::fs::read_dir(&dir).unwrap() {
-        let path = entry.unwrap().path();
-        let Some(stem) = path.file_stem().and_then(|s| s.to_str()) else {
+    let mut harnesses = 0;
+    for krate in crates {
+        let dir = krate.join("tests");
+        let Ok(main) = std::fs::read_to_string(dir.join("main.rs")) else {
             continue;
         };
-        if path.extension().is_some_and(|e| e == "rs")
-            && stem != "main"
-            && !main.lines().any(|l| l.trim() == format!("mod {stem};"))
-        {
-            missing.push(stem.to_owned());
+        harnesses += 1;
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            let Some(stem) = path.file_stem().and_then(|s| s.to_str()) else {
+                continue;
+            };
+            if path.extension().is_some_and(|e| e == "rs")
+                && stem != "main"
+                && !main.lines().any(|l| l.trim() == format!("mod {stem};"))
+            {
+                missing.push(path.display().to_string());
+            }
         }
     }
+    // The facade, routh-core, routh-codegen, routh-runtime and routh-symbolic.
+    assert!(harnesses >= 5, "found {harnesses} test harnesses");
     assert!(
         missing.is_empty(),
-        "tests/*.rs not in tests/main.rs: {missing:?}"
+        "not a module of their tests/main.rs: {missing:?}"
     );
 }
