@@ -279,6 +279,9 @@ impl GyroscopicSystem {
 
 /// The Routh function of Theorem 1 and its derivatives, with arguments `(Ω, γ, p_ψ)`: Ω is the
 /// angular velocity relative to the frame rotating about the vertical, `ω = Ω + ψ̇γ` (7).
+///
+/// A model written by hand implements the required methods of both traits; the example of
+/// [`steady_motions`](crate::steady_motions) does so for the Lagrange top.
 pub trait Routhian: Lagrangian {
     /// `ψ̇(Ω, γ, p_ψ)` solving (12); for `L` of the form above this is (38) with `J(γ)`:
     /// `ψ̇ = (p_ψ − (∂L/∂ω(Ω, γ), γ)) / (γᵀJγ)`.
@@ -348,54 +351,13 @@ pub trait Routhian: Lagrangian {
     /// in registers.
     ///
     /// ```
-    /// # use routh_core::{GyroscopicSystem, Lagrangian, Routhian, Matrix3, Vector3};
-    /// # struct Free;
-    /// # fn j() -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(2.0, 2.0, 1.0)) }
-    /// # impl Lagrangian for Free {
-    /// #     fn lagrangian(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> f64 {
-    /// #         0.5 * w.dot(&(j() * w))
-    /// #     }
-    /// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { j() * w }
-    /// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
-    /// #         Vector3::zeros()
-    /// #     }
-    /// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { j() }
-    /// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
-    /// #         Matrix3::zeros()
-    /// #     }
-    /// # }
-    /// # impl Routhian for Free {
-    /// #     fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
-    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-    /// #         0.5 * w.dot(&(j() * w)) - 0.5 * q * q / n
-    /// #     }
-    /// #     fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-    /// #         j() * w + (q / n) * (j() * g)
-    /// #     }
-    /// #     fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-    /// #         (q / n) * (j() * w) + (q * q / (n * n)) * (j() * g)
-    /// #     }
-    /// #     fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
-    /// #         let n = g.dot(&(j() * g));
-    /// #         j() - (j() * g) * (j() * g).transpose() / n
-    /// #     }
-    /// #     fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-    /// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
-    /// #         (j() * g) * dqn.transpose() + (q / n) * j()
-    /// #     }
-    /// #     fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-    /// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-    /// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
-    /// #         (j() * w) * dqn.transpose() + (q * q / (n * n)) * j()
-    /// #             + (2.0 * q / n) * (j() * g) * dqn.transpose()
-    /// #     }
-    /// # }
-    /// // A free symmetric body J = diag(2, 2, 1) spinning about its axis, p_ψ = 1.
+    /// # use routh_core::{GyroscopicSystem, Routhian, Vector3};
+    /// # use test_models::HeavyTop;
+    /// // A free symmetric body J = diag(2, 2, 1) (a top without weight, its Routh function written
+    /// // by hand in closed form) spinning about its axis, p_ψ = 1.
+    /// let free = HeavyTop::lagrange(2.0, 1.0, 0.0);
     /// let gamma = Vector3::z();
-    /// let (bundle, system) = Free.bundle_and_system(&Vector3::zeros(), &gamma, 1.0);
+    /// let (bundle, system) = free.bundle_and_system(&Vector3::zeros(), &gamma, 1.0);
     /// assert_eq!(system, GyroscopicSystem::from_bundle(&bundle, &gamma));
     /// // ψ̇ = p_ψ/(γᵀJγ) = 1 (38); M = ψ̇J − 2ψ̇ (Jγ)(Jγ)ᵀ/(γᵀJγ) has trace 5 − 2 = 3, and
     /// // 2G = (tr M)[γ]×, so G₂₁ = 3/2.

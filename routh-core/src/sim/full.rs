@@ -35,32 +35,14 @@ use crate::{Lagrangian, RouthError};
 ///
 /// # Example
 ///
-/// A heavy symmetric (Lagrange) top `L = ½(A(ω₁² + ω₂²) + Cω₃²) − m g l γ₃`, written by hand:
+/// A heavy symmetric (Lagrange) top `L = ½(A(ω₁² + ω₂²) + Cω₃²) − m g l γ₃` (a model written by
+/// hand is shown at [`steady_motions`](crate::steady_motions)):
 ///
 /// ```
-/// use routh_core::{simulate_full, Lagrangian, Matrix3, SimOptions, Vector3};
+/// # use test_models::HeavyTop;
+/// use routh_core::{simulate_full, SimOptions, Vector3};
 ///
-/// struct Top { a: f64, c: f64, mgl: f64 }
-///
-/// impl Lagrangian for Top {
-///     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
-///         0.5 * (self.a * (w.x * w.x + w.y * w.y) + self.c * w.z * w.z) - self.mgl * g.z
-///     }
-///     fn dl_domega(&self, w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
-///         Vector3::new(self.a * w.x, self.a * w.y, self.c * w.z)
-///     }
-///     fn dl_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Vector3<f64> {
-///         Vector3::new(0.0, 0.0, -self.mgl)
-///     }
-///     fn d2l_domega2(&self, _g: &Vector3<f64>) -> Matrix3<f64> {
-///         Matrix3::from_diagonal(&Vector3::new(self.a, self.a, self.c))
-///     }
-///     fn d2l_domega_dgamma(&self, _w: &Vector3<f64>, _g: &Vector3<f64>) -> Matrix3<f64> {
-///         Matrix3::zeros()
-///     }
-/// }
-///
-/// let top = Top { a: 2.0, c: 1.0, mgl: 1.0 };
+/// let top = HeavyTop::lagrange(2.0, 1.0, 1.0); // A = 2, C = 1, m g l = 1
 /// let gamma0 = Vector3::new(0.6, 0.0, 0.8); // tilted
 /// let omega0 = Vector3::new(0.0, 0.3, 5.0); // spinning fast
 /// let traj = simulate_full(&top, omega0, gamma0, 10.0, &SimOptions::default())?;

@@ -91,58 +91,17 @@ use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamm
 /// non-finite derivatives or the roots of `f₂` exceed the range of `f64`.
 ///
 /// ```
-/// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
+/// # use routh_core::Vector3;
+/// # use test_models::HeavyTop;
 /// use routh_core::{classify, SteadyMotion, Stability};
-/// /// A free symmetric body (no potential, J = diag(2, 2, 1)), written with its Routh function.
-/// struct Free;
-/// # fn j() -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(2.0, 2.0, 1.0)) }
-/// # impl Lagrangian for Free {
-/// #     fn lagrangian(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> f64 {
-/// #         0.5 * w.dot(&(j() * w))
-/// #     }
-/// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { j() * w }
-/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
-/// #         Vector3::zeros()
-/// #     }
-/// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { j() }
-/// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
-/// #         Matrix3::zeros()
-/// #     }
-/// # }
-/// # impl Routhian for Free {
-/// #     fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
-/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-/// #         0.5 * w.dot(&(j() * w)) - 0.5 * q * q / n
-/// #     }
-/// #     fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-/// #         j() * w + (q / n) * (j() * g)
-/// #     }
-/// #     fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-/// #         (q / n) * (j() * w) + (q * q / (n * n)) * (j() * g)
-/// #     }
-/// #     fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
-/// #         let n = g.dot(&(j() * g));
-/// #         j() - (j() * g) * (j() * g).transpose() / n
-/// #     }
-/// #     fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-/// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
-/// #         (j() * g) * dqn.transpose() + (q / n) * j()
-/// #     }
-/// #     fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-/// #         let (n, q) = (g.dot(&(j() * g)), p - (j() * w).dot(g));
-/// #         let dqn = -(j() * w) / n - (2.0 * q / (n * n)) * (j() * g);
-/// #         (j() * w) * dqn.transpose() + (q * q / (n * n)) * j()
-/// #             + (2.0 * q / n) * (j() * g) * dqn.transpose()
-/// #     }
-/// # }
+/// // A free symmetric body (no potential, J = diag(2, 2, 1)): a top without weight, its Routh
+/// // function written by hand in closed form.
+/// let free = HeavyTop::lagrange(2.0, 1.0, 0.0);
 /// // Spin about the axis of least inertia: U_r = ½p²/(γᵀJγ) has its maximum there, but the
 /// // gyroscopic forces stabilise it (all roots of f₂ on the imaginary axis).
 /// let p = 1.0;
-/// let spin = SteadyMotion::at(&Free, Vector3::z(), p, true)?;
-/// let report = classify(&Free, &spin)?;
+/// let spin = SteadyMotion::at(&free, Vector3::z(), p, true)?;
+/// let report = classify(&free, &spin)?;
 /// assert_eq!(report.degree_of_instability, 2);
 /// assert_eq!(report.verdict, Stability::GyroscopicallyStabilized);
 /// assert!(report.f2_roots.iter().all(|r| r.re == 0.0));

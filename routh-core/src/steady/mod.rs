@@ -255,6 +255,10 @@ impl SearchOptions {
 /// `J(γ) = ∂²L/∂ω²` fails to be positive definite at a point of the search grid;
 /// [`RouthError::NoConvergence`] when no start converges.
 ///
+/// The example writes its model by hand, both traits in closed form: it is the one example of
+/// the crate that shows how (the others take the same top ready-made, and `routh`'s derive
+/// writes all of this from the Lagrangian alone).
+///
 /// ```
 /// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
 /// # use routh_core::{steady_motions, classify, Stability};

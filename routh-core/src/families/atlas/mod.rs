@@ -137,64 +137,12 @@ const PARAM_FD: f64 = 1e-6;
 /// `AtParameter { s: x, source: AtParameter { s: y, source } }`.
 ///
 /// ```
-/// # use routh_core::{Lagrangian, Routhian, Matrix3, Vector3};
+/// # use routh_core::Vector3;
+/// # use test_models::HeavyTop;
 /// use routh_core::{stability_atlas, AtlasOptions, EventKind, Stability};
-/// /// The Lagrange top J = diag(A₁, A₁, C), U = mgl·γ₃, written with its Routh function.
-/// struct Top { a1: f64, c: f64, mgl: f64 }
-/// # impl Top {
-/// #     fn j(&self) -> Matrix3<f64> { Matrix3::from_diagonal(&Vector3::new(self.a1, self.a1, self.c)) }
-/// #     fn nq(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> (f64, f64) {
-/// #         (g.dot(&(self.j() * g)), p - (self.j() * w).dot(g))
-/// #     }
-/// #     fn dqn(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-/// #         let (n, q) = self.nq(w, g, p);
-/// #         -(self.j() * w) / n - (2.0 * q / (n * n)) * (self.j() * g)
-/// #     }
-/// # }
-/// # impl Lagrangian for Top {
-/// #     fn lagrangian(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> f64 {
-/// #         0.5 * w.dot(&(self.j() * w)) - self.mgl * g.z
-/// #     }
-/// #     fn dl_domega(&self, w: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> { self.j() * w }
-/// #     fn dl_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Vector3<f64> {
-/// #         Vector3::new(0.0, 0.0, -self.mgl)
-/// #     }
-/// #     fn d2l_domega2(&self, _: &Vector3<f64>) -> Matrix3<f64> { self.j() }
-/// #     fn d2l_domega_dgamma(&self, _: &Vector3<f64>, _: &Vector3<f64>) -> Matrix3<f64> {
-/// #         Matrix3::zeros()
-/// #     }
-/// # }
-/// # impl Routhian for Top {
-/// #     fn routhian(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> f64 {
-/// #         let (n, q) = self.nq(w, g, p);
-/// #         0.5 * w.dot(&(self.j() * w)) - self.mgl * g.z - 0.5 * q * q / n
-/// #     }
-/// #     fn dr_domega(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-/// #         let (n, q) = self.nq(w, g, p);
-/// #         self.j() * w + (q / n) * (self.j() * g)
-/// #     }
-/// #     fn dr_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Vector3<f64> {
-/// #         let (n, q) = self.nq(w, g, p);
-/// #         Vector3::new(0.0, 0.0, -self.mgl) + (q / n) * (self.j() * w)
-/// #             + (q * q / (n * n)) * (self.j() * g)
-/// #     }
-/// #     fn d2r_domega2(&self, _: &Vector3<f64>, g: &Vector3<f64>, _: f64) -> Matrix3<f64> {
-/// #         let jg = self.j() * g;
-/// #         self.j() - jg * jg.transpose() / g.dot(&jg)
-/// #     }
-/// #     fn d2r_domega_dgamma(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-/// #         let (n, q) = self.nq(w, g, p);
-/// #         (self.j() * g) * self.dqn(w, g, p).transpose() + (q / n) * self.j()
-/// #     }
-/// #     fn d2r_dgamma2(&self, w: &Vector3<f64>, g: &Vector3<f64>, p: f64) -> Matrix3<f64> {
-/// #         let (n, q) = self.nq(w, g, p);
-/// #         let dqn = self.dqn(w, g, p);
-/// #         (self.j() * w) * dqn.transpose() + (q * q / (n * n)) * self.j()
-/// #             + (2.0 * q / n) * (self.j() * g) * dqn.transpose()
-/// #     }
-/// # }
-/// // The sleeping top γ = e₃ over (mgl, p_ψ) ∈ [0.5, 2] × [0.5, 5], A₁ = 1, C = 1.2.
-/// let family = |mgl: f64, p: f64| (Top { a1: 1.0, c: 1.2, mgl }, p);
+/// // The sleeping top γ = e₃ over (mgl, p_ψ) ∈ [0.5, 2] × [0.5, 5], A₁ = 1, C = 1.2: the Lagrange
+/// // top J = diag(A₁, A₁, C), U = mgl·γ₃, with its Routh function written by hand.
+/// let family = |mgl: f64, p: f64| (HeavyTop::lagrange(1.0, 1.2, mgl), p);
 /// let opts = AtlasOptions { nx: 21, ny: 21, ..AtlasOptions::default() };
 /// let atlas = stability_atlas(family, Vector3::z(), (0.5, 2.0), (0.5, 5.0), &opts)?;
 /// // Slow: unstable; fast: secularly stable; in between gyroscopically stabilised.
