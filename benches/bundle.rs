@@ -119,13 +119,9 @@ impl Setup {
             v
         }
         fn assert_close(what: &str, a: &Output, b: &Output) {
-            let (a, b) = (flat(a), flat(b));
-            let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-            let err = a
-                .iter()
-                .zip(&b)
-                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-            assert!(err <= 1e-10 * scale, "{what}: error {err:e}");
+            // ‖a − b‖∞ ≤ 1e−10 · max(‖b‖∞, 1), and a finite.
+            test_models::compare::close(&flat(a), &flat(b), 1e-10, 1.0)
+                .unwrap_or_else(|e| panic!("{what}: {e}"));
         }
         for pt in &self.pts {
             let m1 = self.m1_numdual(pt);

@@ -18,6 +18,7 @@ use num_dual::DualNum;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use routh_symbolic::{Func, Graph, Id, Node, Var};
+use test_models::compare::close_to;
 
 const NVARS: usize = 4;
 const SEEDS: [u64; 4] = [0x5eed_0001, 0x5eed_0002, 0xdead_beef, 2024];
@@ -405,8 +406,9 @@ impl Gen<'_> {
     }
 }
 
+/// Agreement to `TOL` relative to the larger magnitude (floor 1), by the project's one rule.
 fn close(a: f64, b: f64) -> bool {
-    (a - b).abs() <= TOL * 1f64.max(a.abs()).max(b.abs())
+    close_to(a, b, TOL, a.abs().max(b.abs()))
 }
 
 fn sample_point(rng: &mut ChaCha8Rng) -> [f64; NVARS] {

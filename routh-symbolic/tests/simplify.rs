@@ -4,9 +4,11 @@ use std::collections::HashMap;
 
 use routh_symbolic::shape::{self, Value};
 use routh_symbolic::{degree, op_counts, schedule, to_infix, Degree, Func, Graph, Id, Node, Var};
+use test_models::compare::close_to;
 
+/// Agreement to 1e−13 relative to the larger magnitude (floor 1), by the project's one rule.
 fn close(a: f64, b: f64) -> bool {
-    (a - b).abs() <= 1e-13 * 1f64.max(a.abs()).max(b.abs())
+    close_to(a, b, 1e-13, a.abs().max(b.abs()))
 }
 
 /// A graph with variables `x, y, z` (slots 0, 1, 2).

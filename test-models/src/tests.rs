@@ -50,7 +50,7 @@ fn fd_hessian(f: &dyn Fn(&V6) -> f64, x: &V6, h: f64) -> SMatrix<f64, 6, 6> {
 
 fn assert_close(what: &str, got: f64, want: f64, tol: f64) {
     assert!(
-        (got - want).abs() <= tol * (1.0 + want.abs()),
+        crate::compare::close_to(got, want, tol, 1.0 + want.abs()),
         "{what}: got {got:e}, want {want:e}, diff {:e}",
         (got - want).abs()
     );
