@@ -457,252 +457,153 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
     }
 }
 
-#[pymethods]
-impl Model {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let m = self.get()?;
-        let params = m
-            .parameters()
-            .iter()
-            .map(|(n, p)| Ok((n.clone(), param_plain(py, p)?)))
-            .collect::<PyResult<Vec<_>>>()?;
-        let state = (
-            m.lagrangian_text().to_string(),
-            params,
-            m.symmetric().to_vec(),
-            m.latex_symbols().clone(),
-        );
-        reduce(py, "Model", state)
-    }
-}
-
-#[pymethods]
-impl SteadyMotion {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        reduce(py, "SteadyMotion", json!(&self.inner)?)
-    }
-}
-
-#[pymethods]
-impl PeriodicOrbit {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        reduce(py, "PeriodicOrbit", json!(&self.inner)?)
-    }
-}
-
-#[pymethods]
-impl OrbitFamily {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        reduce(py, "OrbitFamily", json!(&self.inner)?)
-    }
-}
-
-#[pymethods]
-impl OrbitEvent {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        reduce(py, "OrbitEvent", json!(&self.inner)?)
-    }
-}
-
-#[pymethods]
-impl StabilityReport {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let state = (
-            self.verdict,
-            self.degree_of_instability,
-            self.restricted_hessian_eigenvalues.clone_ref(py),
-            self.f2_roots.clone_ref(py),
-        );
-        reduce(py, "StabilityReport", state)
-    }
-}
-
-#[pymethods]
-impl CircleReport {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let state = (
-            self.verdict,
-            self.curvature,
-            self.across,
-            self.momentum_term,
-            self.axis_momentum,
-            self.axis.clone_ref(py),
-            self.report.clone_ref(py),
-        );
-        reduce(py, "CircleReport", state)
-    }
-}
-
-#[pymethods]
-impl Branch {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let state = (
-            self.s.clone_ref(py),
-            self.gamma.clone_ref(py),
-            self.p_psi.clone_ref(py),
-            self.energy.clone_ref(py),
-            self.verdicts.clone(),
-            self.isolated,
-        );
-        reduce(py, "Branch", state)
-    }
-}
-
-#[pymethods]
-impl Event {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let state = (
-            self.kind,
-            self.s,
-            self.gamma.clone_ref(py),
-            self.branch,
-            self.before,
-            self.after,
-            self.resonance.clone(),
-            self.nonlinear,
-        );
-        reduce(py, "Event", state)
-    }
-}
-
-#[pymethods]
-impl Diagram {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let branches: Vec<Py<Branch>> = self.branches.iter().map(|b| b.clone_ref(py)).collect();
-        let events: Vec<Py<Event>> = self.events.iter().map(|e| e.clone_ref(py)).collect();
-        let state = (branches, events, self.stop.clone(), self.checks.clone());
-        reduce(py, "Diagram", state)
-    }
-}
-
-#[pymethods]
-impl Boundary {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        reduce(py, "Boundary", (self.kind, self.points.clone_ref(py)))
-    }
-}
-
-#[pymethods]
-impl Atlas {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let boundaries: Vec<Py<Boundary>> =
-            self.boundaries.iter().map(|b| b.clone_ref(py)).collect();
-        let state = (
-            self.x.clone_ref(py),
-            self.y.clone_ref(py),
-            self.verdicts.clone(),
-            self.lost.clone(),
-            self.stop.clone(),
-            boundaries,
-        );
-        reduce(py, "Atlas", state)
-    }
+/// `__reduce__` of each class: `(routh._restore, (kind, state))` with `kind` the class's name
+/// (what [`_restore`] matches on) and `state` the expression after `=>`, in which `$s` is the
+/// object and `$py` the GIL token.
+macro_rules! reduce_by {
+    ($($ty:ident |$s:ident, $py:ident| => $state:expr;)*) => {$(
+        #[pymethods]
+        impl $ty {
+            fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+                let ($s, $py) = (self, py);
+                reduce(py, stringify!($ty), $state)
+            }
+        }
+    )*};
 }
 
 fn opt(py: Python<'_>, o: &Option<Py<PyAny>>) -> Option<Py<PyAny>> {
     o.as_ref().map(|a| a.clone_ref(py))
 }
 
-#[pymethods]
-impl Trajectory {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let state = (
-            self.t.clone_ref(py),
-            self.omega.clone_ref(py),
-            self.gamma.clone_ref(py),
-            self.energy.clone_ref(py),
-            self.p_psi.clone_ref(py),
-            opt(py, &self.attitude),
-            opt(py, &self.euler),
-            self.len,
-        );
-        reduce(py, "Trajectory", state)
-    }
+fn refs<T>(py: Python<'_>, v: &[Py<T>]) -> Vec<Py<T>> {
+    v.iter().map(|x| x.clone_ref(py)).collect()
 }
 
-#[pymethods]
-impl ReducedTrajectory {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let arrays = (
-            self.t.clone_ref(py),
-            self.big_omega.clone_ref(py),
-            self.gamma.clone_ref(py),
-            self.psi.clone_ref(py),
-            self.psi_dot.clone_ref(py),
-            self.omega.clone_ref(py),
-            self.energy.clone_ref(py),
-            self.p_psi.clone_ref(py),
-        );
-        let state = (
-            arrays,
-            opt(py, &self.attitude),
-            opt(py, &self.euler),
-            self.len,
-        );
-        reduce(py, "ReducedTrajectory", state)
-    }
-}
-
-#[pymethods]
-impl Certificate {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let motions: Vec<Py<SteadyMotion>> = self.motions.iter().map(|m| m.clone_ref(py)).collect();
-        let state = (
-            self.complete,
-            motions,
-            self.p_psi,
-            self.boxes,
-            self.undecided,
-        );
-        reduce(py, "Certificate", state)
-    }
-}
-
-#[pymethods]
-impl NonlinearReport {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let state = (
-            self.verdict,
-            self.reason.clone(),
-            self.linear.clone_ref(py),
-            self.frequencies.clone_ref(py),
-            self.krein_signs,
-            self.normal_form.clone_ref(py),
-            self.arnold_determinant,
-            self.resonance.clone(),
-            self.resonance_distance,
-        );
-        reduce(py, "NonlinearReport", state)
-    }
-}
-
-#[pymethods]
-impl LatexFormulas {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let state = (
-            self.lagrangian.clone(),
-            self.psi_dot.clone(),
-            self.routhian.clone(),
-            self.amended_potential.clone(),
-            self.a.clone(),
-            self.g.clone(),
-            self.c.clone(),
-        );
-        reduce(py, "LatexFormulas", state)
-    }
-}
-
-#[pymethods]
-impl PoincareSection {
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let points: Vec<Py<PyAny>> = self.points.iter().map(|p| p.clone_ref(py)).collect();
-        let state = (
-            self.p_psi,
-            self.energy,
-            self.normal.clone_ref(py),
-            points,
-            self.starts.clone_ref(py),
-        );
-        reduce(py, "PoincareSection", state)
-    }
+reduce_by! {
+    Model |o, py| => {
+        let m = o.get()?;
+        let params = m
+            .parameters()
+            .iter()
+            .map(|(n, p)| Ok((n.clone(), param_plain(py, p)?)))
+            .collect::<PyResult<Vec<_>>>()?;
+        (
+            m.lagrangian_text().to_string(),
+            params,
+            m.symmetric().to_vec(),
+            m.latex_symbols().clone(),
+        )
+    };
+    SteadyMotion |o, _py| => json!(&o.inner)?;
+    PeriodicOrbit |o, _py| => json!(&o.inner)?;
+    OrbitFamily |o, _py| => json!(&o.inner)?;
+    OrbitEvent |o, _py| => json!(&o.inner)?;
+    StabilityReport |o, py| => (
+        o.verdict,
+        o.degree_of_instability,
+        o.restricted_hessian_eigenvalues.clone_ref(py),
+        o.f2_roots.clone_ref(py),
+    );
+    CircleReport |o, py| => (
+        o.verdict,
+        o.curvature,
+        o.across,
+        o.momentum_term,
+        o.axis_momentum,
+        o.axis.clone_ref(py),
+        o.report.clone_ref(py),
+    );
+    Branch |o, py| => (
+        o.s.clone_ref(py),
+        o.gamma.clone_ref(py),
+        o.p_psi.clone_ref(py),
+        o.energy.clone_ref(py),
+        o.verdicts.clone(),
+        o.isolated,
+    );
+    Event |o, py| => (
+        o.kind,
+        o.s,
+        o.gamma.clone_ref(py),
+        o.branch,
+        o.before,
+        o.after,
+        o.resonance.clone(),
+        o.nonlinear,
+    );
+    Diagram |o, py| => (
+        refs(py, &o.branches),
+        refs(py, &o.events),
+        o.stop.clone(),
+        o.checks.clone(),
+    );
+    Boundary |o, py| => (o.kind, o.points.clone_ref(py));
+    Atlas |o, py| => (
+        o.x.clone_ref(py),
+        o.y.clone_ref(py),
+        o.verdicts.clone(),
+        o.lost.clone(),
+        o.stop.clone(),
+        refs(py, &o.boundaries),
+    );
+    Trajectory |o, py| => (
+        o.t.clone_ref(py),
+        o.omega.clone_ref(py),
+        o.gamma.clone_ref(py),
+        o.energy.clone_ref(py),
+        o.p_psi.clone_ref(py),
+        opt(py, &o.attitude),
+        opt(py, &o.euler),
+        o.len,
+    );
+    ReducedTrajectory |o, py| => (
+        (
+            o.t.clone_ref(py),
+            o.big_omega.clone_ref(py),
+            o.gamma.clone_ref(py),
+            o.psi.clone_ref(py),
+            o.psi_dot.clone_ref(py),
+            o.omega.clone_ref(py),
+            o.energy.clone_ref(py),
+            o.p_psi.clone_ref(py),
+        ),
+        opt(py, &o.attitude),
+        opt(py, &o.euler),
+        o.len,
+    );
+    Certificate |o, py| => (
+        o.complete,
+        refs(py, &o.motions),
+        o.p_psi,
+        o.boxes,
+        o.undecided,
+    );
+    NonlinearReport |o, py| => (
+        o.verdict,
+        o.reason.clone(),
+        o.linear.clone_ref(py),
+        o.frequencies.clone_ref(py),
+        o.krein_signs,
+        o.normal_form.clone_ref(py),
+        o.arnold_determinant,
+        o.resonance.clone(),
+        o.resonance_distance,
+    );
+    LatexFormulas |o, _py| => (
+        o.lagrangian.clone(),
+        o.psi_dot.clone(),
+        o.routhian.clone(),
+        o.amended_potential.clone(),
+        o.a.clone(),
+        o.g.clone(),
+        o.c.clone(),
+    );
+    PoincareSection |o, py| => (
+        o.p_psi,
+        o.energy,
+        o.normal.clone_ref(py),
+        refs(py, &o.points),
+        o.starts.clone_ref(py),
+    );
 }
