@@ -510,6 +510,9 @@ fn atlas_of_one_verdict_and_monochrome() {
     assert!(!has_text(&svg, &Stability::SecularlyStable.to_string()));
     assert!(!svg.contains("boundary"));
     assert!(has_text(&svg, "y"));
+    // The atlas knows no names of its parameters: the default x label is "x", not the "s" of a
+    // bifurcation diagram's parameter.
+    assert!(has_text(&svg, "x") && !has_text(&svg, "s"));
 }
 
 #[test]
@@ -1439,12 +1442,21 @@ fn figures_of_a_computed_family() {
         "one ◆ per period doubling, and the legend's"
     );
     assert_eq!(parabolic_lines(&svg).len(), 2);
-    // Every period doubling sits on k = −1.
+    // Every period doubling sits on k = −1. The ◆ of the axes are those left of the right end of
+    // the lines k = ±1 (the legend's is to the right of the axes, wherever the legend's width
+    // puts it).
     let y_minus = parabolic_lines(&svg)[1];
-    assert!(polygon_centres(&svg, "#000000", 4)
-        .iter()
-        .filter(|c| c.0 < 650.0)
-        .all(|c| (c.1 - y_minus).abs() <= 1.5));
+    let right = polylines(&svg, "#646464", 1)
+        .into_iter()
+        .filter(|p| p.len() == 2 && p[0].1 == p[1].1 && (p[1].0 - p[0].0).abs() > 200.0)
+        .map(|p| p[0].0.max(p[1].0))
+        .fold(f64::MIN, f64::max);
+    let in_axes: Vec<_> = polygon_centres(&svg, "#000000", 4)
+        .into_iter()
+        .filter(|c| c.0 < right)
+        .collect();
+    assert_eq!(in_axes.len(), doublings);
+    assert!(in_axes.iter().all(|c| (c.1 - y_minus).abs() <= 1.5));
 
     let orbits: Vec<_> = family
         .orbits

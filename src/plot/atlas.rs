@@ -13,7 +13,7 @@ use super::legend::{Entry, Swatch};
 use super::marks::{draw_cross, stroke_boundary, stroke_path, Px, Root};
 use super::regions::Regions;
 use super::style::{boundary_color, nonlinear_stroke, KINDS, VERDICTS};
-use super::{drawing_error, label_or, PlotError, PlotOptions};
+use super::{drawing_error, label_or, x_label_or, PlotError, PlotOptions};
 use crate::{BoundaryCurve, NonlinearCurve, StabilityAtlas};
 
 /// Cell edges around grid nodes: midpoints between nodes, the end nodes themselves at the ends.
@@ -63,7 +63,7 @@ pub(super) fn atlas_figure(
     let frame = Frame {
         x: (ex[0], ex[atlas.x.len()]),
         y: (ey[0], ey[atlas.y.len()]),
-        x_label: &opts.x_label,
+        x_label: x_label_or(&opts.x_label, "x"),
         y_label: label_or(&opts.y_label, "y"),
         mesh: false,
         y_ticks: None,

@@ -208,8 +208,10 @@ fn drawing_error<E: fmt::Display>(e: E) -> PlotError {
 pub struct PlotOptions {
     /// Caption above the axes (empty: none; default empty).
     pub title: String,
-    /// Label of the horizontal axis: the parameter's name (default `"s"`). The energy–momentum
-    /// diagram, whose horizontal axis is always `p_ψ`, says `"p_ψ"` when this is `"s"` or empty.
+    /// Label of the horizontal axis: the parameter's name (default `"s"`, the parameter of a
+    /// bifurcation diagram). The figures whose horizontal axis is something else say what it is
+    /// when this is `"s"` or empty: `"p_ψ"` (energy–momentum diagram), `"x"` (atlas: name its
+    /// parameters), `"E"` (families of periodic orbits), `"θ"` (Poincaré sections).
     pub x_label: String,
     /// Label of the vertical axis (empty, the default: [`DiagramAxis::label`] of [`Self::y`] for
     /// a bifurcation diagram, `"energy E"` for an energy–momentum diagram, `"y"` for an atlas).
@@ -309,6 +311,15 @@ fn label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
         default
     } else {
         label
+    }
+}
+
+/// `label`, or `default` when it is empty or the default `"s"` of [`PlotOptions::x_label`].
+fn x_label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
+    if label == "s" {
+        default
+    } else {
+        label_or(label, default)
     }
 }
 
@@ -431,11 +442,7 @@ pub fn energy_momentum_svg<P: AsRef<Path>>(
     path: P,
     opts: &PlotOptions,
 ) -> Result<(), PlotError> {
-    let x_label = if opts.x_label == "s" {
-        "p_ψ"
-    } else {
-        label_or(&opts.x_label, "p_ψ")
-    };
+    let x_label = x_label_or(&opts.x_label, "p_ψ");
     diagram::branch_figure(
         diagram,
         path.as_ref(),
@@ -457,8 +464,9 @@ pub fn energy_momentum_svg<P: AsRef<Path>>(
 /// plain, gyroscopically stabilised dotted, unstable hatched `/`, degenerate cross-hatched; where
 /// the steady motion does not exist (`None`) the cell is white with a small ×. Boundary curves are solid (fold), dashed
 /// (branch point) or dotted (Hamiltonian–Hopf), on a white underlay. The legend names each shading
-/// and curve that occurs. The axes are labelled [`PlotOptions::x_label`] and
-/// [`PlotOptions::y_label`] (`"y"` when empty); [`PlotOptions::y`] is not used.
+/// and curve that occurs. The axes are labelled [`PlotOptions::x_label`] (`"x"` when it is the
+/// default `"s"` or empty) and [`PlotOptions::y_label`] (`"y"` when empty); [`PlotOptions::y`] is
+/// not used.
 ///
 /// # Errors
 ///

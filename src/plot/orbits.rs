@@ -19,7 +19,7 @@ use super::style::{
     orbit_color, orbit_event_name, orbit_stroke, orbit_verdict_name, palette, ramp, Stroke,
     ORBIT_KINDS, ORBIT_VERDICTS, PARABOLIC_LINE,
 };
-use super::{drawing_error, PlotError, PlotOptions};
+use super::{drawing_error, x_label_or, PlotError, PlotOptions};
 use crate::{OrbitFamily, OrbitStability, PeriodicOrbit, PoincareSection, Trajectory, Vector3};
 
 /// The vertical coordinate of the stability index `k` in [`orbit_family_svg`](super::orbit_family_svg):
@@ -180,15 +180,6 @@ pub(super) enum FamilyAxis {
     Index,
     /// The period.
     Period,
-}
-
-/// `label`, or `default` when it is empty or the default `"s"` of [`PlotOptions::x_label`].
-fn x_label_or<'a>(label: &'a str, default: &'a str) -> &'a str {
-    if label.is_empty() || label == "s" {
-        default
-    } else {
-        label
-    }
 }
 
 /// The figure of a family: the energy across, the index or the period up, runs styled by
