@@ -10,9 +10,10 @@
 /// assert!(!close_to(1.0 + 1e-11, 1.0, 1e-12, 1.0));
 /// assert!(close_to(1e3 + 1e-10, 1e3, 1e-12, 1e3)); // relative to the scale 1e3
 /// assert!(!close_to(f64::NAN, f64::NAN, 1.0, 1.0));
+/// assert!(!close_to(f64::INFINITY, 1.0, 1.0, f64::INFINITY)); // an infinite value never agrees
 /// ```
 pub fn close_to(a: f64, b: f64, tol: f64, scale: f64) -> bool {
-    (a - b).abs() <= tol * scale.max(1.0)
+    a.is_finite() && b.is_finite() && (a - b).abs() <= tol * scale.max(1.0)
 }
 
 /// Normwise relative agreement of two lists: `‖a − b‖∞ ≤ tol · max(‖b‖∞, floor)`, the floor
