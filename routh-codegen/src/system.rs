@@ -24,7 +24,7 @@ fn half_trace_skew(g: &mut Graph, gm: &V3, mx: &M3) -> M3 {
 /// G is written in closed form: `M[γ]× + [γ]×Mᵀ = [(tr M)γ − Mᵀγ]×` holds for every 3×3 `M`, and
 /// differentiating Theorem 2's identity (17), `(∂R/∂Ω, γ) ≡ p_ψ`, by γ gives `Mᵀγ = −∂R/∂Ω`
 /// for every Routh function (at every Ω, so at Ω = 0 too). Hence `2G = (tr M)[γ]×` exactly; the
-/// matrix products are not formed; G is [`half_trace_skew`], C is [`stiffness_sandwich`].
+/// matrix products are not formed; G is `half_trace_skew`, C is `stiffness_sandwich`.
 pub fn gyroscopic(g: &mut Graph, gm: &V3, dr_dg: &V3, mx: &M3, h: &M3) -> (M3, M3) {
     let gyro_g = half_trace_skew(g, gm, mx);
     let mu = dot3(g, dr_dg, gm);

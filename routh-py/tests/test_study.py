@@ -146,7 +146,12 @@ import psutil
 import routh
 
 
+MARKS = os.path.abspath("marks")
+
+
 def slow(model, p_psi, **_):
+    # A mark per worker process that has started a task (the script's cwd is the test's tmp_path).
+    open(os.path.join(MARKS, f"started-{os.getpid()}"), "w").close()
     time.sleep(2.0)
     return p_psi
 
@@ -163,6 +168,8 @@ def workers():
 
 
 if __name__ == "__main__":
+    when = sys.argv[1]
+    os.makedirs(MARKS)
     top = routh.Model(
         "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
         {"inertia": [1.0, 1.0, 1.25], "mgl": 1.0})
@@ -170,10 +177,16 @@ if __name__ == "__main__":
     stop = threading.Event()
 
     def interrupt():
-        # Once the study's 2 workers run (and have had time to start their tasks): Ctrl-C.
-        while not stop.is_set() and len({p.pid for p in workers()} - before) < 2:
-            time.sleep(0.1)
-        if not stop.wait(3.0):
+        # "starting": Ctrl-C as soon as the first worker process of the study's cluster exists,
+        # while LocalCluster(...) still waits for its workers to start. "waiting": Ctrl-C once
+        # both workers run a task, while the study waits for the results.
+        if when == "starting":
+            while not stop.is_set() and not {p.pid for p in workers()} - before:
+                time.sleep(0.02)
+        else:
+            while not stop.is_set() and len(os.listdir(MARKS)) < 2:
+                time.sleep(0.1)
+        if not stop.is_set():
             os.kill(os.getpid(), signal.SIGINT)
 
     threading.Thread(target=interrupt, daemon=True).start()
@@ -194,14 +207,17 @@ if __name__ == "__main__":
 """
 
 
-def test_an_interrupted_study_leaves_no_worker(tmp_path):
-    """Ctrl-C while the study waits: KeyboardInterrupt reaches the caller, the tasks are
-    cancelled and the study's own cluster is closed. Run in a child interpreter, so that the
-    signal cannot land in pytest's own machinery and end the session."""
+@pytest.mark.parametrize("when", ["starting", "waiting"])
+def test_an_interrupted_study_leaves_no_worker(tmp_path, when):
+    """Ctrl-C while the study's own cluster starts, or while the study waits for its tasks:
+    KeyboardInterrupt reaches the caller, the tasks are cancelled and the cluster is closed, no
+    worker process left. (A Ctrl-C that landed inside LocalCluster(...) once left the workers
+    running, closed only by dask's exit hook.) Run in a child interpreter, so that the signal
+    cannot land in pytest's own machinery and end the session."""
     import subprocess
 
     script = tmp_path / "interrupted.py"
     script.write_text(INTERRUPTED)
-    r = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+    r = subprocess.run([sys.executable, str(script), when], capture_output=True, text=True,
                        timeout=180, cwd=tmp_path)
     assert r.returncode == 0, r.stdout + r.stderr

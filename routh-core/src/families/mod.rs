@@ -115,7 +115,7 @@ pub struct ContinuationOptions {
     /// [`BranchEvent::nonlinear`] (docs/method.md §10.7). The branches are the same as without
     /// it, and the count checks ignore these events. Needs a model with a Routh-function tape
     /// (derived or run-time; for a hand-written one use
-    /// [`nonlinear_events`](crate::families::nonlinear_events)). Default `None`: no nonlinear
+    /// [`nonlinear_events`]). Default `None`: no nonlinear
     /// test, the diagram of the linear verdicts alone.
     ///
     /// ```
@@ -415,7 +415,7 @@ pub enum EventKind {
     /// A zero of Arnold's determinant `D` on a gyroscopically stabilised stretch: the
     /// Arnold–Moser test is inconclusive there (docs/method.md §10). Reported only when
     /// [`ContinuationOptions::nonlinear`] asks (or by the post-pass
-    /// [`nonlinear_events`](crate::families::nonlinear_events)).
+    /// [`nonlinear_events`]).
     ArnoldDegenerate,
     /// A 1:2 or 1:3 resonance between the two frequencies on a gyroscopically stabilised
     /// stretch (docs/method.md §10); [`BranchEvent::nonlinear`] says which. Reported only when

@@ -294,7 +294,7 @@ fn crossings<M: Lagrangian + Sync + ?Sized>(
 }
 
 /// The Poincaré section at `(p_ψ, E)`: [`SectionOptions::orbits`] orbits started on the plane
-/// ([`section_starts`]), each integrated (in parallel, rayon) for [`SectionOptions::crossings`]
+/// (`section_starts`), each integrated (in parallel, rayon) for [`SectionOptions::crossings`]
 /// upward crossings of `γ·n = 0`, located on the integrator's dense output by the crate's event
 /// locator. An orbit that cannot be integrated or stops crossing keeps what it has, with
 /// [`SectionOrbit::stop`] saying why.

@@ -31,7 +31,8 @@ pub enum Output {
     Times(Vec<f64>),
 }
 
-/// Options of [`simulate_full`] and [`simulate_reduced`].
+/// Options of [`simulate_full`](super::simulate_full) and
+/// [`simulate_reduced`](super::simulate_reduced).
 ///
 /// Build with struct-update syntax, e.g. `SimOptions { rtol: 1e-12, ..SimOptions::default() }`.
 ///
@@ -77,8 +78,10 @@ pub struct SimOptions {
     /// Which points are recorded. Default [`Output::Steps`].
     pub output: Output,
     /// Also integrate the attitude of the body, the rotation `R` body → space, as a unit
-    /// quaternion (`Ṙ = R[ω]×`, module [`attitude`]), recorded in [`Trajectory::attitude`] /
-    /// [`ReducedTrajectory::attitude`]. Default `false` (no cost when off).
+    /// quaternion (`Ṙ = R[ω]×`, module [`attitude`](super::attitude)), recorded in
+    /// [`Trajectory::attitude`](super::Trajectory::attitude) /
+    /// [`ReducedTrajectory::attitude`](super::ReducedTrajectory::attitude). Default `false` (no
+    /// cost when off).
     ///
     /// With [`Method::LieRk4`] the attitude moves by the same exact rotations as γ, so it stays
     /// a unit quaternion and `γ = Rᵀe₃` holds to round-off. With [`Method::Dop853`] the
@@ -86,7 +89,7 @@ pub struct SimOptions {
     /// recorded attitude is normalised and turned by the (tolerance-sized) smallest rotation
     /// that makes `Rᵀe₃` equal the direction of the integrated γ, so `γ/|γ| = Rᵀe₃` holds to
     /// round-off there too (|γ| itself drifts at the tolerance, see
-    /// [`Trajectory::gamma_norm_error`]).
+    /// [`Trajectory::gamma_norm_error`](super::Trajectory::gamma_norm_error)).
     pub attitude: bool,
 }
 

@@ -62,8 +62,8 @@ impl<M: Routhian + ?Sized> Field<7> for ReducedRhs<'_, M> {
 ///
 /// # Errors
 ///
-/// As [`simulate_full`] (an overflowing input is named `"p_psi"` or `"big_omega0"`), plus
-/// [`RouthError::DegenerateVerticalInertia`] when
+/// As [`simulate_full`](super::simulate_full) (an overflowing input is named `"p_psi"` or
+/// `"big_omega0"`), plus [`RouthError::DegenerateVerticalInertia`] when
 /// `γ₀ᵀJ(γ₀)γ₀ ≤ 0` (ψ̇ of (38) undefined), and
 /// [`RouthError::SingularReducedKinetic`] when `∂²R/∂Ω² + cγγᵀ` has no Cholesky factor.
 pub fn simulate_reduced<M: Routhian>(

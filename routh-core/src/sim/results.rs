@@ -19,23 +19,27 @@ pub struct SimStats {
     pub rhs_evaluations: usize,
 }
 
-/// A solution of the full equations (8), from [`simulate_full`].
+/// A solution of the full equations (8), from [`simulate_full`](super::simulate_full).
 #[derive(Debug, Clone, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Trajectory {
-    /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
+    /// Times: `t = 0` first, then every accepted step (or the requested
+    /// [`Output::Times`](super::Output::Times)).
     pub t: Vec<f64>,
     /// Body angular velocity ω.
     pub omega: Vec<Vector3<f64>>,
     /// Body coordinates γ of the upward vertical.
     pub gamma: Vec<Vector3<f64>>,
-    /// The Painlevé–Jacobi energy (3) `E = (∂L/∂ω, ω) − L` ([`Lagrangian::energy`]).
+    /// The Painlevé–Jacobi energy (3) `E = (∂L/∂ω, ω) − L`
+    /// ([`Lagrangian::energy`](crate::Lagrangian::energy)).
     pub energy: Vec<f64>,
-    /// The cyclic momentum (9) `p_ψ = (∂L/∂ω, γ)` ([`Lagrangian::cyclic_momentum`]).
+    /// The cyclic momentum (9) `p_ψ = (∂L/∂ω, γ)`
+    /// ([`Lagrangian::cyclic_momentum`](crate::Lagrangian::cyclic_momentum)).
     pub p_psi: Vec<f64>,
     /// `|γ|²` (the geometric integral (4) is `|γ|² − 1 = 0`).
     pub gamma_norm_sq: Vec<f64>,
-    /// The attitude `R` (body → space) at each point when [`SimOptions::attitude`] is set,
+    /// The attitude `R` (body → space) at each point when
+    /// [`SimOptions::attitude`](super::SimOptions::attitude) is set,
     /// empty otherwise: `γ = Rᵀe₃`, `Ṙ = R[ω]×`, and `R(0)` the attitude with Euler angle
     /// `ψ(0) = 0`: `R(0) = R_x(θ₀) R_z(φ₀)` with `γ₀ = (sin θ₀ sin φ₀, sin θ₀ cos φ₀, cos θ₀)`.
     pub attitude: Vec<UnitQuaternion<f64>>,
@@ -44,11 +48,12 @@ pub struct Trajectory {
 }
 
 /// A solution of the reduced equations (13) with the reconstruction (15), from
-/// [`simulate_reduced`].
+/// [`simulate_reduced`](super::simulate_reduced).
 #[derive(Debug, Clone, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReducedTrajectory {
-    /// Times: `t = 0` first, then every accepted step (or the requested [`Output::Times`]).
+    /// Times: `t = 0` first, then every accepted step (or the requested
+    /// [`Output::Times`](super::Output::Times)).
     pub t: Vec<f64>,
     /// Angular velocity Ω relative to the frame rotating about the vertical (7).
     pub big_omega: Vec<Vector3<f64>>,
@@ -57,7 +62,7 @@ pub struct ReducedTrajectory {
     /// Rotation angle ψ of the rotating frame about the vertical, integrated from
     /// `ψ̇ = −∂R/∂p_ψ` (15) with `ψ(0) = 0`.
     pub psi: Vec<f64>,
-    /// `ψ̇(Ω, γ, p_ψ)` of (12)/(38) ([`Routhian::psi_dot`]).
+    /// `ψ̇(Ω, γ, p_ψ)` of (12)/(38) ([`Routhian::psi_dot`](crate::Routhian::psi_dot)).
     pub psi_dot: Vec<f64>,
     /// The reconstructed body angular velocity `ω = Ω + ψ̇γ` (7).
     pub omega: Vec<Vector3<f64>>,
@@ -67,7 +72,8 @@ pub struct ReducedTrajectory {
     pub p_psi: Vec<f64>,
     /// `|γ|²`.
     pub gamma_norm_sq: Vec<f64>,
-    /// The attitude `R` (body → space) at each point when [`SimOptions::attitude`] is set,
+    /// The attitude `R` (body → space) at each point when
+    /// [`SimOptions::attitude`](super::SimOptions::attitude) is set,
     /// empty otherwise, reconstructed by (15): `R = R_z(ψ) R_Ω` with `R_Ω` the attitude of the
     /// body relative to the frame rotating about the vertical (`Ṙ_Ω = R_Ω[Ω]×`,
     /// `R_Ω(0)` the attitude with Euler angle ψ = 0 whose `Rᵀe₃` is `γ₀`) and ψ the angle of [`psi`](Self::psi);

@@ -16,7 +16,8 @@ use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamm
 /// for `|p_ψ|` beyond about `1e77`; [`classify`](super::classify) solves the same polynomial in a
 /// scaled variable, which does not.
 ///
-/// Errors: as [`classify`], and [`RouthError::NonFiniteModel`] when a coefficient overflows.
+/// Errors: as [`classify`](super::classify), and [`RouthError::NonFiniteModel`] when a coefficient
+/// overflows.
 pub fn f2_coefficients<M: Routhian>(
     model: &M,
     gamma: &Vector3<f64>,
@@ -41,7 +42,7 @@ pub fn f2_coefficients<M: Routhian>(
 /// neither overflow nor underflow in any units (`p_ψ = 1e±150`), and ratios such as the relative
 /// discriminant `(ĉ₂² − 4ĉ₄ĉ₀)/(ĉ₂² + 4|ĉ₄ĉ₀|)` equal those of the raw coefficients.
 ///
-/// Errors: as [`classify`].
+/// Errors: as [`classify`](super::classify).
 pub(crate) fn f2_coefficients_scaled<M: Routhian>(
     model: &M,
     gamma: &Vector3<f64>,
@@ -52,7 +53,8 @@ pub(crate) fn f2_coefficients_scaled<M: Routhian>(
 }
 
 /// The linearisation on the tangent plane, `a ẍ + 2g J ẋ + c x = 0` (`a = PᵀAP`, `c = PᵀCP`,
-/// `J = [[0, 1], [−1, 0]]`), and the same in the scaled variables that [`classify`] works with.
+/// `J = [[0, 1], [−1, 0]]`), and the same in the scaled variables that
+/// [`classify`](super::classify) works with.
 ///
 /// With `α` the largest entry of `a` (positive: `a` is positive definite) and the characteristic
 /// frequency `ω = max(√(‖c‖_max/α), |g|/α)` (1 when `c` and `g` vanish), put `â = a/α`,

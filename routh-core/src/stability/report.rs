@@ -4,7 +4,7 @@ use std::fmt;
 
 use nalgebra::Complex;
 
-/// The stability verdict of [`classify`].
+/// The stability verdict of [`classify`](super::classify).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Stability {

@@ -61,13 +61,14 @@ impl fmt::Display for KreinReport {
     }
 }
 
-/// [`classify_with`] and the Krein signatures of the roots of `f₂` (see [`KreinReport`]): on the
-/// tangent plane the linearisation is `a ẍ + 2gJẋ + cx = 0` with conserved energy
-/// `½ẋᵀaẋ + ½xᵀcx`; on the mode `u` of a root `λ = iω` it is proportional to `ω²uᴴau + uᴴcu`, and
-/// its sign is the root's signature. They explain a verdict: a secularly stable motion has only
-/// `+1`; a gyroscopically stabilised one has one mode of each sign per sign of ω.
+/// [`classify_with`](super::classify_with) and the Krein signatures of the roots of `f₂` (see
+/// [`KreinReport`]): on the tangent plane the linearisation is `a ẍ + 2gJẋ + cx = 0` with
+/// conserved energy `½ẋᵀaẋ + ½xᵀcx`; on the mode `u` of a root `λ = iω` it is proportional to
+/// `ω²uᴴau + uᴴcu`, and its sign is the root's signature. They explain a verdict: a secularly
+/// stable motion has only `+1`; a gyroscopically stabilised one has one mode of each sign per
+/// sign of ω.
 ///
-/// Errors: as [`classify_with`].
+/// Errors: as [`classify_with`](super::classify_with).
 ///
 /// See the example on [`KreinReport`].
 pub fn krein_report<M: Routhian>(

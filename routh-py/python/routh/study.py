@@ -5,9 +5,12 @@ Dask, distributed and pandas are optional: ``pip install ./routh-py[dask]``.
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import math
 import numbers
+import signal
+import threading
 
 import numpy as np
 
@@ -24,6 +27,35 @@ def _imports():
     except ImportError as e:
         raise ImportError(f"{_EXTRA} ({e})") from e
     return distributed, pandas
+
+
+@contextlib.contextmanager
+def _ctrl_c_held():
+    """Holds a Ctrl-C (SIGINT) that arrives inside the block until the block ends, then raises
+    it as usual. Starting a ``LocalCluster`` takes seconds, and a KeyboardInterrupt raised
+    inside its constructor (which catches only ``Exception``) leaves its worker processes
+    running with no object in hand to close them; held, it is raised once the cluster is
+    assigned, and the study's ``finally`` closes it. A second Ctrl-C is not held (a start that
+    hangs can still be left). Signals reach Python code in the main thread only: elsewhere, or
+    with a SIGINT handler that is not a Python callable, nothing is held."""
+    previous = signal.getsignal(signal.SIGINT)
+    if threading.current_thread() is not threading.main_thread() or not callable(previous):
+        yield
+        return
+    held = []
+
+    def hold(signum, frame):
+        if held:
+            previous(signum, frame)
+        held.append((signum, frame))
+
+    signal.signal(signal.SIGINT, hold)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+        if held:
+            previous(*held[0])
 
 
 def _points(grid):
@@ -118,7 +150,8 @@ def study(
     - `timeout`: seconds; past it the tasks are cancelled and ``TimeoutError`` is raised.
 
     If the study is interrupted (Ctrl-C, a timeout) its tasks are cancelled, and a cluster it
-    made is closed, its worker processes ended.
+    made is closed, its worker processes ended. A Ctrl-C while that cluster starts is held until
+    it has started (then raised and the cluster closed); a second Ctrl-C is not held.
 
     >>> import numpy as np, routh
     >>> top = routh.Model("kinetic = 0.5 * omega.dot(diag(inertia) * omega), "
@@ -138,13 +171,14 @@ def study(
     futures = []
     try:
         if client is None:
-            own_cluster = distributed.LocalCluster(
-                n_workers=n_workers,
-                threads_per_worker=1,
-                processes=True,
-                dashboard_address=":0",
-            )
-            client = own_client = distributed.Client(own_cluster)
+            with _ctrl_c_held():
+                own_cluster = distributed.LocalCluster(
+                    n_workers=n_workers,
+                    threads_per_worker=1,
+                    processes=True,
+                    dashboard_address=":0",
+                )
+                client = own_client = distributed.Client(own_cluster)
         elif isinstance(client, str):
             client = own_client = distributed.Client(client)
         threads = max(1, sum(client.nthreads().values()))

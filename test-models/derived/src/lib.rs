@@ -8,7 +8,7 @@
 //! second path to routh-core's types), so it stays routh-core-only, and the derived half lives
 //! here, used only by the facade's tests, benches and examples.
 //!
-//! The bench models are declared through [`model!`] so that their source text is kept too
+//! The bench models are declared through `model!` so that their source text is kept too
 //! ([`GYROSTAT_SRC`], [`DIAGONAL_ELLIPSOID_SRC`]): `benches/expand.rs` times the expansion of
 //! exactly the models that `benches/bundle.rs` evaluates.
 #![forbid(unsafe_code)]
