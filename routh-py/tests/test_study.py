@@ -99,6 +99,17 @@ def test_a_failing_point_is_recorded_and_the_rest_complete(client, top):
     assert df["error"].str.contains("ModelError").all()
 
 
+def test_studies_one_after_another_on_one_client(client, top):
+    """The same model scattered by study after study on one client: each study's tasks find it
+    (with the content's hash as key, the release of the previous study's copy could drop the
+    next one's, and its tasks were cancelled for "lost dependencies" a few times in 40)."""
+    ref = serial(sleeping, top, {"mgl": [1.0], "p_psi": [1.0, 3.0]})
+    for _ in range(30):
+        df = routh.study(sleeping, top, {"mgl": [1.0], "p_psi": [1.0, 3.0]}, client=client,
+                         progress=False)
+        pd.testing.assert_frame_equal(df.drop(columns="error"), ref)
+
+
 def workers():
     """The live child processes (multiprocessing's resource tracker, which outlives any
     cluster by design, aside)."""
@@ -221,3 +232,46 @@ def test_an_interrupted_study_leaves_no_worker(tmp_path, when):
     r = subprocess.run([sys.executable, str(script), when], capture_output=True, text=True,
                        timeout=180, cwd=tmp_path)
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+HELD = r"""
+import os, signal, time
+
+from routh.study import _ctrl_c_held
+
+
+def ctrl_c():
+    os.kill(os.getpid(), signal.SIGINT)
+    time.sleep(0.2)  # the handler runs in this (main) thread at the next bytecode
+
+
+ran = []
+try:
+    with _ctrl_c_held():
+        ctrl_c()
+        ran.append("after one")
+except KeyboardInterrupt:
+    ran.append("raised at the end")
+try:
+    with _ctrl_c_held():
+        ctrl_c()
+        ctrl_c()
+        ran.append("after two")
+except KeyboardInterrupt:
+    ran.append("raised at the second")
+ran.append(signal.getsignal(signal.SIGINT) is signal.default_int_handler)
+print(ran)
+"""
+
+
+def test_a_ctrl_c_while_the_cluster_starts_is_held_and_a_second_is_not(tmp_path):
+    """The study's guard around LocalCluster(...): one Ctrl-C is raised when the block ends
+    (the block runs to its end), a second one at once; the handler is restored after."""
+    import subprocess
+
+    script = tmp_path / "held.py"
+    script.write_text(HELD)
+    r = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                       timeout=60, cwd=tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert r.stdout.strip() == str(["after one", "raised at the end", "raised at the second", True])

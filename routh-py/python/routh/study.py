@@ -185,7 +185,11 @@ def study(
         if chunk is None:
             chunk = min(2000, max(1, math.ceil(len(points) / (8 * threads))))
         chunks = [points[i : i + chunk] for i in range(0, len(points), chunk)]
-        shipped = client.scatter(model, broadcast=True)
+        # A key of its own (hash=False): with the content's hash as key, the same model
+        # scattered by the previous study on this client shares it, and that study's release
+        # of the key can reach the scheduler after this scatter, dropping the model under
+        # this study's tasks ("lost dependencies").
+        shipped = client.scatter(model, broadcast=True, hash=False)
         futures = [
             client.submit(_run_chunk, job, shipped, c, parameters, pure=False)
             for c in chunks
