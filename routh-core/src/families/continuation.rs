@@ -16,15 +16,14 @@ use std::cell::Cell;
 
 use nalgebra::{Matrix2x3, Matrix4, Vector2, Vector3, Vector4};
 
-use super::equations::{
-    chart_eval, member, relative_discriminant, restricted_eigen, ChartEval, Local,
-};
+use super::equations::{chart_eval, member, relative_discriminant, restricted_eigen, ChartEval};
 use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
 use crate::locate::{locate, End};
 use crate::model::Routhian;
 use crate::path::row::LinearRow;
 use crate::path::{sphere_head, Corrected, Failure, Path, PathOptions, Point, Prediction};
+use crate::sphere::local::Local;
 use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{tangent_basis, NOISE};
 use crate::stability::{classify_with, ClassifyOptions, Stability};
@@ -180,7 +179,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
                 jac[(i, 2)] = e.jac[(i, 2)] * self.len / sc;
             }
             let f = Vector4::new(e.f.x / sc, e.f.y / sc, 0.0, 0.0);
-            let l = Linearised::new(f, jac, NOISE * e.local.grad.norm() / sc);
+            let l = Linearised::new(f, jac, NOISE * e.local.grad().norm() / sc);
             Ok(Some((e, l)))
         };
         let failed = |best: f64| {

@@ -6,12 +6,13 @@ use nalgebra::Vector3;
 use super::CountCheck;
 use crate::error::RouthError;
 use crate::families::continuation::{Ctx, Node};
-use crate::families::equations::{at, member, Local};
+use crate::families::equations::{at, member};
 use crate::families::{
     BifurcationDiagram, Branch, BranchEvent, ContinuationOptions, EventKind, StopReason,
 };
 use crate::model::Routhian;
 use crate::path::row::LinearRow;
+use crate::sphere::local::Local;
 use crate::stability::Stability;
 use crate::steady::steady_motion_search;
 
