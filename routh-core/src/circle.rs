@@ -150,6 +150,7 @@ pub fn classify_circle_with<M: Routhian>(
             gamma,
             bundle,
             system,
+            tangential,
         },
     ) = classify_evaluated(model, steady, opts)?;
     // Scaled by its largest component first, so that the axis is the same axis at any scale
@@ -190,9 +191,10 @@ pub fn classify_circle_with<M: Routhian>(
     let (dm_t, dm_n) = (dm.dot(&tau), dm.dot(&n));
     check_model_finite("∂²R/∂Ω² on the axis", &[eae], &gamma)?;
 
-    // The symmetry at γ: K τ = 0 and eᵀMτ = 0, to the zero test of `classify`.
-    let knorm = k.norm();
-    let raw = mu.abs().max(bundle.d2r_dgamma2.norm());
+    // The symmetry at γ: K τ = 0 and eᵀMτ = 0, to the zero test of `classify`, on the scales it
+    // judged K by: ‖K‖ and the raw size max(|∂R/∂γ|, ‖∂²R/∂γ²‖) of the terms K is the
+    // difference of (`sphere::Tangential`).
+    let (knorm, raw) = (tangential.knorm, tangential.raw);
     let k_zero = ZeroTest::with_floor(opts.zero_eigenvalue_tol, knorm, ROUND * raw);
     let dm_zero = ZeroTest::with_floor(opts.zero_eigenvalue_tol, dm.norm(), ROUND * dm.norm());
     if !(k_zero.is_zero(k_tt) && k_zero.is_zero(k_tn) && dm_zero.is_zero(dm_t)) {

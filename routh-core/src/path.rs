@@ -3,10 +3,11 @@
 //!
 //! - **Predictor**: `w + h·t`, passed through the caller's retraction (the normalisation of γ
 //!   where the point lives on the sphere).
-//! - **Row**: the equation the corrector adds to `F = 0`: pseudo-arclength `t·(w − w_pred) = 0`
-//!   ([`Row::Arclength`], `h` an arclength), a fixed parameter `w_k = w_pred,k` ([`Row::Parameter`],
-//!   natural-parameter stepping, `h` a step in `w_k`), or none ([`Row::Free`]: the curve is a set
-//!   of solutions of a square system and the corrector slides to the nearest one).
+//! - **Stepping**: what `h` measures and the [`LinearRow`] the corrector adds to `F = 0`:
+//!   pseudo-arclength `t·(w − w_pred) = 0` ([`Stepping::Arclength`], `h` an arclength), a fixed
+//!   parameter `w_k = w_pred,k` ([`Stepping::Parameter`], natural-parameter stepping, `h` a step
+//!   in `w_k`), or no row ([`Stepping::Free`]: the curve is a set of solutions of a square system
+//!   and the corrector slides to the nearest one).
 //! - **Corrector**: a closure of the caller (each analysis's own equations, solved by the one
 //!   Newton corrector, `sphere::newton`), then a second closure that completes an accepted point
 //!   (its tangent, its test functions).
@@ -24,11 +25,16 @@
 //! the atlas grid's segments (`families/atlas/grid.rs`, [`PathOptions::grid_segment`]). Each keeps
 //! its own equations, events and ends.
 
+pub(crate) mod row;
+
 use nalgebra::SVector;
 
-/// The equation closing the corrector's system (see the module docs).
+use row::LinearRow;
+
+/// How a step is parametrised, and so which linear row closes the corrector's system (see the
+/// module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Row {
+pub(crate) enum Stepping {
     /// Pseudo-arclength `t·(w − w_pred) = 0`; `h` is an arclength along the unit tangent.
     Arclength,
     /// Natural parameter: `w_k = w_pred,k`; `h` is a step in `w_k` and the predictor is
@@ -41,7 +47,7 @@ pub(crate) enum Row {
 /// Settings of the predictor–corrector; a named constructor per user.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PathOptions {
-    pub row: Row,
+    pub stepping: Stepping,
     /// Below this step the curve cannot be continued ([`Outcome::Stalled`]).
     pub h_min: f64,
     /// Largest step.
@@ -68,7 +74,7 @@ impl PathOptions {
     /// by 1.5 after at most 2 Newton iterations, shrunk by 0.7 after 6 or more.
     pub fn diagram(min_step: f64, max_step: f64) -> Self {
         PathOptions {
-            row: Row::Arclength,
+            stepping: Stepping::Arclength,
             h_min: min_step,
             h_max: max_step,
             max_move: 0.5,
@@ -87,7 +93,7 @@ impl PathOptions {
     /// `acos 0.8 ≈ 37°` rejected; grown by 1.5 after at most 3 iterations.
     pub fn atlas_boundary(h_max: f64) -> Self {
         PathOptions {
-            row: Row::Arclength,
+            stepping: Stepping::Arclength,
             h_min: 1e-4 * h_max,
             h_max,
             max_move: 0.5,
@@ -106,7 +112,7 @@ impl PathOptions {
     /// caller's check (relative to the predicted move in ξ, and the eigenvalues of `K`).
     pub fn grid_segment(k: usize) -> Self {
         PathOptions {
-            row: Row::Parameter(k),
+            stepping: Stepping::Parameter(k),
             h_min: 1e-6,
             h_max: 1.0,
             max_move: f64::INFINITY,
@@ -126,7 +132,7 @@ impl PathOptions {
     /// `4·min_step`; grown by 1.5 after at most 3 Gauss–Newton steps, shrunk by 0.7 after 7.
     pub fn orbit_family(min_step: f64, max_step: f64) -> Self {
         PathOptions {
-            row: Row::Arclength,
+            stepping: Stepping::Arclength,
             h_min: min_step,
             h_max: max_step,
             max_move: 0.5,
@@ -146,7 +152,7 @@ impl PathOptions {
     /// caller's check.
     pub fn search_curve(h: f64) -> Self {
         PathOptions {
-            row: Row::Free,
+            stepping: Stepping::Free,
             h_min: h,
             h_max: h,
             max_move: f64::INFINITY,
@@ -166,8 +172,9 @@ impl PathOptions {
 pub(crate) struct Prediction<const N: usize> {
     /// The predicted point `w_pred` (retracted).
     pub point: SVector<f64, N>,
-    /// The normal `a` of the row `a·(w − w_pred) = 0` (`None` for [`Row::Free`]).
-    pub normal: Option<SVector<f64, N>>,
+    /// The row `a·(w − w_pred) = 0` through it, as `a·w = a·w_pred` (`None` for
+    /// [`Stepping::Free`]).
+    pub row: Option<LinearRow<N>>,
     /// Whether the step was cut to the caller's limit (the end of the curve's domain).
     pub at_limit: bool,
 }
@@ -303,9 +310,9 @@ impl<const N: usize> Path<N> {
         at_limit: bool,
         correct: &mut impl FnMut(&Prediction<N>) -> Result<Option<Corrected<N, X>>, E>,
     ) -> Result<Result<Corrected<N, X>, Failure>, E> {
-        let (raw, normal) = match self.opts.row {
-            Row::Arclength => (w + t * h, Some(*t)),
-            Row::Parameter(k) => {
+        let (raw, normal) = match self.opts.stepping {
+            Stepping::Arclength => (w + t * h, Some(*t)),
+            Stepping::Parameter(k) => {
                 if t[k] == 0.0 || !t[k].is_finite() {
                     return Ok(Err(Failure::Tangent));
                 }
@@ -313,11 +320,12 @@ impl<const N: usize> Path<N> {
                 e[k] = 1.0;
                 (w + t * (h / t[k].abs()), Some(e))
             }
-            Row::Free => (w + t * h, None),
+            Stepping::Free => (w + t * h, None),
         };
+        let point = (self.retract)(raw);
         let pred = Prediction {
-            point: (self.retract)(raw),
-            normal,
+            point,
+            row: normal.map(|a| LinearRow::through(a, &point)),
             at_limit,
         };
         let Some(c) = correct(&pred)? else {

@@ -16,15 +16,15 @@ use std::cell::Cell;
 
 use nalgebra::{Matrix2x3, Matrix4, Vector2, Vector3, Vector4};
 
-use super::equations::{
-    chart_eval, member, relative_discriminant, restricted_eigen, ChartEval, Local,
-};
+use super::equations::{chart_eval, member, relative_discriminant, restricted_eigen, ChartEval};
 use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
 use crate::locate::{locate, End};
 use crate::model::Routhian;
+use crate::path::row::LinearRow;
 use crate::path::{sphere_head, Corrected, Failure, Path, PathOptions, Point, Prediction};
-use crate::sphere::newton::{Linearised, Newton, Row};
+use crate::sphere::local::Local;
+use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{tangent_basis, NOISE};
 use crate::stability::{classify_with, ClassifyOptions, Stability};
 use crate::steady::record;
@@ -85,16 +85,6 @@ impl Node {
 /// A corrected point of a branch on its path, with `(γ, s)`.
 pub(crate) type BranchCorrected = Corrected<4, (Vector3<f64>, f64)>;
 
-/// A linear constraint `a_g·(γ − γ_ref) + a_s(σ − σ_ref) = c` of the corrector.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Constraint {
-    pub a_g: Vector3<f64>,
-    pub a_s: f64,
-    pub gamma_ref: Vector3<f64>,
-    pub sigma_ref: f64,
-    pub c: f64,
-}
-
 /// The continuation context of one family over one range.
 pub(crate) struct Ctx<'a, M, F> {
     pub family: &'a F,
@@ -134,14 +124,15 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         Ok(restricted_eigen(&l).1)
     }
 
-    /// Newton's method from `(gamma_p, sigma_p)` on `F = 0` plus `constraint` (plus `c·ξ = 0`
-    /// for a branch of circles). `Ok(None)` when it does not converge, with the smallest residual
+    /// Newton's method from `(gamma_p, sigma_p)` on `F = 0` plus `row` (plus `c·ξ = 0` for a
+    /// branch of circles), the row `n_γ·(γ − γ_p) + n_σ(σ − σ_p) = c` in `(γ, σ)` relative to
+    /// the predicted point. `Ok(None)` when it does not converge, with the smallest residual
     /// reached in [`Ctx::failed_residual`].
     pub fn correct(
         &self,
         gamma_p: &Vector3<f64>,
         sigma_p: f64,
-        constraint: &Constraint,
+        row: &LinearRow<4>,
         circle: Option<Vector3<f64>>,
     ) -> Result<Option<(Vector3<f64>, f64, usize)>, RouthError> {
         let basis = tangent_basis(gamma_p);
@@ -152,22 +143,14 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
                 Some(basis.transpose() * self.circle_direction(gamma_p, sigma_p * self.len)?)
             }
         };
-        let a_xi = basis.transpose() * constraint.a_g;
-        // The constraint is linear in (ξ, σ) around the predicted point; the unknowns are
+        let a_g: Vector3<f64> = row.normal.fixed_rows::<3>(0).into_owned();
+        let a_xi = basis.transpose() * a_g;
+        // The row is linear in (ξ, σ) around the predicted point; the unknowns are
         // w = (ξ, σ − σ_p).
-        let c0 = constraint.c
-            - constraint.a_g.dot(&(gamma_p - constraint.gamma_ref))
-            - constraint.a_s * (sigma_p - constraint.sigma_ref);
         let c = circle.unwrap_or_default();
         let rows = [
-            Row {
-                a: Vector4::new(a_xi.x, a_xi.y, constraint.a_s, 0.0),
-                b: c0,
-            },
-            Row {
-                a: Vector4::new(c.x, c.y, 0.0, 0.0),
-                b: 0.0,
-            },
+            LinearRow::new(Vector4::new(a_xi.x, a_xi.y, row.normal[3], 0.0), row.rhs),
+            LinearRow::new(Vector4::new(c.x, c.y, 0.0, 0.0), 0.0),
         ];
         let rows = &rows[..1 + usize::from(circle.is_some())];
         // F and its Jacobian relative to the residual scale; the round-off floor of `F` is that
@@ -196,7 +179,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
                 jac[(i, 2)] = e.jac[(i, 2)] * self.len / sc;
             }
             let f = Vector4::new(e.f.x / sc, e.f.y / sc, 0.0, 0.0);
-            let l = Linearised::new(f, jac, NOISE * e.local.grad.norm() / sc);
+            let l = Linearised::new(f, jac, NOISE * e.local.grad().norm() / sc);
             Ok(Some((e, l)))
         };
         let failed = |best: f64| {
@@ -326,17 +309,12 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
     ) -> impl FnMut(&Prediction<4>) -> Result<Option<BranchCorrected>, RouthError> + 'b {
         move |p| {
             let g_p = p.point.fixed_rows::<3>(0).into_owned();
-            let n = p.normal.unwrap_or_else(Vector4::zeros);
-            let con = Constraint {
-                a_g: n.fixed_rows::<3>(0).into_owned(),
-                a_s: n[3],
-                gamma_ref: g_p,
-                sigma_ref: p.point[3],
-                c: 0.0,
-            };
+            // The path's row through the prediction, relative to it: `n·(w − w_pred) = 0`.
+            let n = p.row.map_or_else(Vector4::zeros, |r| r.normal);
+            let row = LinearRow::new(n, 0.0);
             let circle = meridian_normal(&g_p, &a.tau_g);
             Ok(self
-                .correct(&g_p, p.point[3], &con, circle)?
+                .correct(&g_p, p.point[3], &row, circle)?
                 .map(|(g, s, it)| Corrected {
                     point: Vector4::new(g.x, g.y, g.z, s / self.len),
                     iterations: it,
@@ -396,15 +374,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
     ) -> Result<Option<Node>, RouthError> {
         let t = ((target - a.s) / (b.s - a.s)).clamp(0.0, 1.0);
         let g_p = (a.gamma + t * (b.gamma - a.gamma)).normalize();
-        let con = Constraint {
-            a_g: Vector3::zeros(),
-            a_s: 1.0,
-            gamma_ref: g_p,
-            sigma_ref: target / self.len,
-            c: 0.0,
-        };
+        let row = LinearRow::fixed(3, 0.0);
         let circle = meridian_normal(&g_p, &a.tau_g);
-        let Some((g, s, _)) = self.correct(&g_p, target / self.len, &con, circle)? else {
+        let Some((g, s, _)) = self.correct(&g_p, target / self.len, &row, circle)? else {
             return Ok(None);
         };
         self.node(&g, s, Some((&a.tau_g, a.tau_s)))

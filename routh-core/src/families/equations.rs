@@ -16,14 +16,14 @@
 //!   steady motion `∂t/∂γ` restricted to the tangent plane is exactly `K`);
 //! - the discriminant of `f₂` in `λ²`, `c₂² − 4c₄c₀`, relative to `c₂² + 4|c₄c₀|` (errata E5).
 
-use nalgebra::{Matrix2, Matrix2x3, Matrix3, Matrix3x2, Vector2, Vector3};
+use nalgebra::{Matrix2x3, Matrix3, Matrix3x2, Vector2, Vector3};
 
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::sphere::{restricted_hessian, sym2_eigen, tangent_basis};
+use crate::sphere::local::Local;
+use crate::sphere::{sym2_eigen, tangent_basis};
 use crate::stability::f2_coefficients_scaled;
-use crate::validate::{check_finite, check_kinetic, check_model_finite};
-use crate::zero::tangential_scale;
+use crate::validate::check_finite;
 
 /// The family member at `s`, with errors that name `s`.
 pub(crate) fn member<M: Routhian, F: Fn(f64) -> (M, f64)>(
@@ -43,59 +43,6 @@ pub(crate) fn at(s: f64, e: RouthError) -> RouthError {
             s,
             source: Box::new(e),
         },
-    }
-}
-
-/// The amended potential's first and second derivatives at one point of one member.
-#[derive(Debug, Clone)]
-pub(crate) struct Local {
-    pub gamma: Vector3<f64>,
-    /// `∇U_r = −∂R/∂γ` at `Ω = 0`.
-    pub grad: Vector3<f64>,
-    /// `H = −∂²R/∂γ²` at `Ω = 0`, symmetrised.
-    pub hess: Matrix3<f64>,
-}
-
-impl Local {
-    pub fn at<M: Routhian>(model: &M, gamma: &Vector3<f64>, p: f64) -> Result<Self, RouthError> {
-        check_kinetic(model, gamma)?;
-        let b = model.bundle(&Vector3::zeros(), gamma, p);
-        check_model_finite("dr_dgamma", b.dr_dgamma.as_slice(), gamma)?;
-        check_model_finite("d2r_dgamma2", b.d2r_dgamma2.as_slice(), gamma)?;
-        let h = -b.d2r_dgamma2;
-        Ok(Local {
-            gamma: *gamma,
-            grad: -b.dr_dgamma,
-            hess: 0.5 * (h + h.transpose()),
-        })
-    }
-
-    /// The tangential gradient `(E − γγᵀ)∇U_r`.
-    pub fn tangential(&self) -> Vector3<f64> {
-        self.grad - self.gamma * self.gamma.dot(&self.grad)
-    }
-
-    /// `∂t/∂γ` as a 3×3 map on tangent vectors (see the module docs).
-    pub fn dt_dgamma(&self) -> Matrix3<f64> {
-        let g = self.gamma;
-        let proj = Matrix3::identity() - g * g.transpose();
-        proj * self.hess
-            - Matrix3::from_diagonal_element(g.dot(&self.grad))
-            - g * self.grad.transpose()
-    }
-
-    /// The restricted second variation `K` (62)–(63) in the basis `tangent_basis(γ)`.
-    pub fn restricted(&self) -> Matrix2<f64> {
-        let p = tangent_basis(&self.gamma);
-        // K = Pᵀ(μE − ∂²R/∂γ²)P with μ = (∂R/∂γ, γ) = −(∇U_r, γ).
-        restricted_hessian(&p, -self.grad.dot(&self.gamma), &(-self.hess))
-    }
-
-    /// The local tangential scale [`tangential_scale`] at this point: linear in the units of the
-    /// Lagrangian and unchanged by adding `k|γ|²` to `U` (docs/method.md §5). The residual of the
-    /// corrector and the test functions of the atlas are relative to it.
-    pub fn scale(&self) -> f64 {
-        tangential_scale(&self.gamma, &self.grad, &self.hess)
     }
 }
 

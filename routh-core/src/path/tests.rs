@@ -12,7 +12,7 @@ fn newton2(
     f: impl Fn(&Vector2<f64>) -> f64,
     df: impl Fn(&Vector2<f64>) -> Vector2<f64>,
 ) -> Option<Corrected<2, ()>> {
-    let a = p.normal?;
+    let a = p.row?.normal;
     let mut w = p.point;
     for it in 0..30 {
         let r = Vector2::new(f(&w), a.dot(&(w - p.point)));

@@ -5,8 +5,9 @@
 use nalgebra::{SMatrix, Vector6};
 
 use super::family::{restart, smallest, Tracer};
-use super::shoot::{correct, LinearRow, Problem, Scales, W};
+use super::shoot::{correct, Problem, Scales, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions};
+use crate::path::row::LinearRow;
 use crate::{RouthError, Routhian};
 
 /// The family of orbits of twice the period born at a [`OrbitEventKind::PeriodDoubling`] event,
@@ -68,7 +69,7 @@ pub fn period_doubled_family<M: Routhian>(
     let mut first = None;
     while h >= opts.min_step {
         let pred = w_pd + n * h;
-        let row = LinearRow::arclength(&n, &pred);
+        let row = LinearRow::through(n, &pred);
         if let Ok(sol) = correct(model, &prob, &row, &pred, opts)? {
             first = Some(sol);
             break;

@@ -12,9 +12,10 @@
 use nalgebra::{Complex, Matrix6, SMatrix, Vector6};
 
 use super::flow::{field_and_jacobian, join, split};
-use super::shoot::{check_guess, correct, orbit_of, LinearRow, Problem, Scales, Solved, W};
+use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Solved, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
 use crate::locate::{estimated_distance, illinois, End};
+use crate::path::row::LinearRow;
 use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
 use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
 
@@ -80,7 +81,7 @@ impl<M: Routhian> Tracer<'_, M> {
     fn resolve(&self, a: &Node, sigma: f64) -> Result<Option<Node>, RouthError> {
         let pred = a.solved.w + a.tangent * sigma;
         let prob = self.problem_at(&a.solved.w)?;
-        let row = LinearRow::arclength(&a.tangent, &pred);
+        let row = LinearRow::through(a.tangent, &pred);
         Ok(match correct(self.model, &prob, &row, &pred, self.opts)? {
             Ok(s) => Some(self.node(s, Some(&a.tangent))),
             Err(_) => None,
@@ -154,7 +155,7 @@ impl<M: Routhian> Tracer<'_, M> {
         let f = ((bound - ea) / (eb - ea)).clamp(0.0, 1.0);
         let guess = a.solved.w + (b.solved.w - a.solved.w) * f;
         let prob = self.problem_at(&a.solved.w)?;
-        let row = LinearRow::energy(&self.scales, bound);
+        let row = self.scales.energy_row(bound);
         Ok(match correct(self.model, &prob, &row, &guess, self.opts)? {
             Ok(s) => Some(self.node(s, Some(&a.tangent))),
             Err(_) => None,
@@ -191,8 +192,9 @@ impl<M: Routhian> Tracer<'_, M> {
                 &t,
                 f64::INFINITY,
                 |pred| {
-                    let normal = pred.normal.unwrap_or(t);
-                    let row = LinearRow::arclength(&normal, &pred.point);
+                    let row = pred
+                        .row
+                        .unwrap_or_else(|| LinearRow::through(t, &pred.point));
                     Ok::<_, RouthError>(match correct(self.model, &prob, &row, &pred.point, o)? {
                         Ok(s) => Some(Corrected {
                             point: s.w,
@@ -378,7 +380,7 @@ pub fn lyapunov_family<M: Routhian>(
         first_period: period,
     };
     let prob = Problem::at(model, &x0, steady.p_psi, scales)?;
-    let row = LinearRow::energy(&scales, e0);
+    let row = scales.energy_row(e0);
     let first = match correct(model, &prob, &row, &scales.pack(&x0, period, e0), opts)? {
         Ok(s) => s,
         Err(best) => {
@@ -421,7 +423,7 @@ pub(super) fn restart<M: Routhian>(
         e: 1f64.max(e.abs()),
     };
     let prob = Problem::at(model, &x, p, scales)?;
-    let row = LinearRow::energy(&scales, e);
+    let row = scales.energy_row(e);
     match correct(model, &prob, &row, &scales.pack(&x, orbit.period, e), opts)? {
         Ok(s) => Ok((s, scales)),
         Err(best) => Err(RouthError::NoConvergence {

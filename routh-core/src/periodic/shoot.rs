@@ -17,6 +17,7 @@ use nalgebra::{SMatrix, SVector, Vector3, Vector6};
 use super::flow::{field, integrals, join, precession, shoot, split, Shot};
 use super::{OrbitOptions, OrbitStability, PeriodicOrbit};
 use crate::locate::{estimated_distance, illinois, End};
+use crate::path::row::LinearRow;
 use crate::sim::dop853::{self, Accepted, Config};
 use crate::validate::{check_finite, unit_gamma};
 use crate::{Lagrangian, RouthError};
@@ -45,28 +46,10 @@ impl Scales {
     pub fn energy(&self, w: &W) -> f64 {
         w[7] * self.e
     }
-}
-
-/// The linear row closing the system: `a·w = b`.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct LinearRow {
-    pub a: W,
-    pub b: f64,
-}
-
-impl LinearRow {
-    /// The energy fixed at `e`.
-    pub fn energy(scales: &Scales, e: f64) -> Self {
-        let mut a = W::zeros();
-        a[7] = 1.0;
-        LinearRow { a, b: e / scales.e }
-    }
-    /// Pseudo-arclength `n·(w − w_pred) = 0`.
-    pub fn arclength(n: &W, w_pred: &W) -> Self {
-        LinearRow {
-            a: *n,
-            b: n.dot(w_pred),
-        }
+    /// The linear row closing the system with the energy fixed at `e`: `w₇ = e/e_s` (or the
+    /// continuation's pseudo-arclength row, [`LinearRow::through`]).
+    pub fn energy_row(&self, e: f64) -> LinearRow<8> {
+        LinearRow::fixed(7, e / self.e)
     }
 }
 
@@ -120,7 +103,7 @@ pub(crate) struct ShotSummary {
 fn linearise<M: Lagrangian + ?Sized>(
     model: &M,
     prob: &Problem,
-    row: &LinearRow,
+    row: &LinearRow<8>,
     w: &W,
     opts: &OrbitOptions,
 ) -> Result<(SVector<f64, 11>, Jac, Shot), RouthError> {
@@ -155,7 +138,7 @@ fn linearise<M: Lagrangian + ?Sized>(
     r[7] = (e - prob.scales.energy(w)) / ne;
     r[8] = (p - prob.p_psi) / np;
     r[9] = 0.5 * (g.norm_squared() - 1.0);
-    r[10] = row.a.dot(w) - row.b;
+    r[10] = row.residual(w);
     for k in 0..6 {
         j[(6, k)] = prob.f_ref[k];
         j[(7, k)] = de[k] / ne;
@@ -166,7 +149,7 @@ fn linearise<M: Lagrangian + ?Sized>(
         j[(9, 3 + k)] = g[k];
     }
     for k in 0..8 {
-        j[(10, k)] = row.a[k];
+        j[(10, k)] = row.normal[k];
     }
     Ok((r, j, s))
 }
@@ -176,7 +159,7 @@ fn linearise<M: Lagrangian + ?Sized>(
 pub(crate) fn correct<M: Lagrangian + ?Sized>(
     model: &M,
     prob: &Problem,
-    row: &LinearRow,
+    row: &LinearRow<8>,
     w0: &W,
     opts: &OrbitOptions,
 ) -> Result<Result<Solved, f64>, RouthError> {
@@ -399,7 +382,7 @@ pub fn periodic_orbit<M: crate::Routhian>(
         e: 1f64.max(e.abs()),
     };
     let prob = Problem::at(model, &x, p, scales)?;
-    let row = LinearRow::energy(&scales, e);
+    let row = scales.energy_row(e);
     let t0 = return_time(model, &prob, period_guess, opts).unwrap_or(period_guess);
     let w0 = scales.pack(&x, t0, e);
     match correct(model, &prob, &row, &w0, opts)? {

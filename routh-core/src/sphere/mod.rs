@@ -3,6 +3,7 @@
 //! of the amended potential, a Fibonacci grid of starting points, and the one Newton corrector
 //! on the sphere ([`newton`]).
 
+pub(crate) mod local;
 pub(crate) mod newton;
 
 use crate::norm::stable_norm;

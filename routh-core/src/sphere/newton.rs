@@ -6,7 +6,7 @@
 //! The unknowns are `w ∈ ℝ⁴`: the chart coordinates `ξ₁, ξ₂` of γ on the sphere, then up to two
 //! parameters (unused trailing entries stay 0). The caller evaluates its equations at an iterate
 //! and returns them [`Linearised`] (residual rows scaled by the local tangential scale, their
-//! Jacobian, the round-off floor); the engine adds up to two linear [`Row`]s `a·w = b`, solves for
+//! Jacobian, the round-off floor); the engine adds up to two [`LinearRow`]s `n·w = c`, solves for
 //! the minimum-norm step (SVD of the fixed 4×4, singular values below a relative cut dropped, no
 //! allocation; closed form when the Jacobian is a symmetric 2×2), optionally damps it
 //! (Levenberg–Marquardt, a step accepted only if it decreases the residual) and stops by one rule:
@@ -21,9 +21,10 @@
 use nalgebra::{Matrix4, Vector2, Vector4};
 
 use crate::norm::stable_norm;
+use crate::path::row::LinearRow;
 use crate::zero::ZeroTest;
 
-/// A linear row `a·w = b` is satisfied when `|a·w − b|` is at most this.
+/// A linear row `n·w = c` is satisfied when `|n·w − c|` is at most this.
 pub(crate) const ROW_TOL: f64 = 1e-13;
 /// A step this short is at round-off: the looser tolerance applies.
 pub(crate) const ROUND_STEP: f64 = 1e-13;
@@ -111,14 +112,6 @@ impl Newton {
     }
 }
 
-/// A linear equation `a·w = b` on the unknowns (a pseudo-arclength or fixed-parameter row, the
-/// meridian-plane row of a branch of circles).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Row {
-    pub a: Vector4<f64>,
-    pub b: f64,
-}
-
 /// The Jacobian of the residual rows with respect to `w`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Jacobian {
@@ -154,7 +147,7 @@ impl Jacobian {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Linearised {
     /// The residual rows `F(w)`, relative to the local scale (unused rows 0; the last
-    /// `rows.len()` rows are left to the linear [`Row`]s).
+    /// `rows.len()` rows are left to the [`LinearRow`]s).
     pub rows: Vector4<f64>,
     /// `∂F/∂w`.
     pub jac: Jacobian,
@@ -233,7 +226,7 @@ impl Newton {
     pub(crate) fn solve<P, E>(
         &self,
         w0: Vector4<f64>,
-        rows: &[Row],
+        rows: &[LinearRow<4>],
         start: P,
         lin: impl Fn(&P) -> Linearised,
         mut next: impl FnMut(&P, &Vector4<f64>, &Vector4<f64>) -> Result<Option<P>, E>,
@@ -261,7 +254,7 @@ impl Newton {
             let mut rhs = l.rows;
             let first = 4 - rows.len();
             for (k, r) in rows.iter().enumerate() {
-                rhs[first + k] = r.a.dot(&w) - r.b;
+                rhs[first + k] = r.residual(&w);
             }
             if self.converged(&l, &rhs, first, prev, last_step) {
                 return Ok(Ok(Solved {
@@ -391,7 +384,7 @@ struct System {
 impl System {
     /// `None` when the Jacobian or the right-hand side is not finite.
     #[inline(always)]
-    fn new(l: &Linearised, rows: &[Row], rhs: Vector4<f64>, cut: f64) -> Option<System> {
+    fn new(l: &Linearised, rows: &[LinearRow<4>], rhs: Vector4<f64>, cut: f64) -> Option<System> {
         if !rhs.iter().all(|v| v.is_finite()) {
             return None;
         }
@@ -430,11 +423,16 @@ impl System {
     }
 
     /// The SVD of the padded 4×4 (rows of the caller, then the linear rows).
-    fn general(l: &Linearised, rows: &[Row], rhs: Vector4<f64>, cut: f64) -> Option<System> {
+    fn general(
+        l: &Linearised,
+        rows: &[LinearRow<4>],
+        rhs: Vector4<f64>,
+        cut: f64,
+    ) -> Option<System> {
         let mut m = l.jac.matrix();
         let first = 4 - rows.len();
         for (k, r) in rows.iter().enumerate() {
-            m.set_row(first + k, &r.a.transpose());
+            m.set_row(first + k, &r.normal.transpose());
         }
         let a = m.amax();
         if !a.is_finite() {

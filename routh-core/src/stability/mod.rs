@@ -127,11 +127,13 @@ pub fn classify_with<M: Routhian>(
 }
 
 /// The unit γ, the bundle and `A`, `G`, `C` at `Ω = 0` that a classification evaluated there,
-/// for analyses that read more of them ([`crate::classify_circle`]).
+/// with the tangential quantities and scales it judged them by, for analyses that read more of
+/// them ([`crate::classify_circle`]).
 pub(crate) struct Evaluated {
     pub gamma: Vector3<f64>,
     pub bundle: RouthBundle,
     pub system: GyroscopicSystem,
+    pub tangential: Tangential,
 }
 
 /// [`classify_with`] and what it evaluated (one evaluation of the model).
@@ -242,6 +244,7 @@ fn classify_parts<M: Routhian>(
             gamma,
             bundle,
             system,
+            tangential: tan,
         },
     ))
 }

@@ -7,11 +7,13 @@ use std::convert::Infallible;
 
 use nalgebra::{Matrix3x2, Matrix3x4, Matrix4, Vector2, Vector3, Vector4};
 
-use super::super::equations::{chart, chart_eval, relative_discriminant, Local};
+use super::super::equations::{chart, chart_eval, relative_discriminant};
 use super::Ctx;
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::sphere::newton::{Linearised, Newton, Row};
+use crate::path::row::LinearRow;
+use crate::sphere::local::Local;
+use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{sym2_eigen, tangent_basis};
 
 const XI_FD: f64 = 1e-6;
@@ -181,14 +183,14 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
     }
 
     /// Gauss–Newton with minimum-norm steps ([`Newton::curve`]) on the curve equations, plus the
-    /// linear equation `a·w = b` if given, from `w0` in the chart around `base`.
+    /// linear equation `row` (`n·w = c`) if given, from `w0` in the chart around `base`.
     pub(super) fn correct(
         &self,
         test: &Test,
         base: &Vector3<f64>,
         basis: &Matrix3x2<f64>,
         w0: Vector4<f64>,
-        extra: Option<(Vector4<f64>, f64)>,
+        row: Option<LinearRow<4>>,
     ) -> Option<(Vector4<f64>, Ext, usize)> {
         // The residual is the largest of the three equations (each relative to its own scale).
         let eval = |w: &Vector4<f64>| -> Result<Option<(Ext, Linearised)>, Infallible> {
@@ -201,12 +203,11 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             l.residual = e.g.amax();
             Ok(Some((e, l)))
         };
-        let rows = extra.map(|(a, b)| Row { a, b });
         let start = eval(&w0).ok()??;
         let out = Newton::curve(self.opts.curve_tol)
             .solve(
                 w0,
-                rows.as_slice(),
+                row.as_slice(),
                 start,
                 |p| p.1,
                 |_, w, _| eval(w),

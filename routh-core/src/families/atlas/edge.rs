@@ -4,12 +4,13 @@
 
 use nalgebra::{Vector3, Vector4};
 
-use super::super::equations::{restricted_eigen, Local};
+use super::super::equations::restricted_eigen;
 use super::curve::{CurvePoint, Test};
 use super::grid::Node;
 use super::Ctx;
 use crate::locate::{locate, End, Stop};
 use crate::model::Routhian;
+use crate::sphere::local::Local;
 use crate::sphere::{sym2_eigen, tangent_basis};
 
 const LOCATE_MAX_ITER: usize = 80;

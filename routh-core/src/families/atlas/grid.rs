@@ -7,11 +7,12 @@ use std::convert::Infallible;
 
 use nalgebra::{Matrix2, Matrix3x2, Matrix4, Vector2, Vector3, Vector4};
 
-use super::super::equations::{chart, chart_eval, relative_discriminant, Local};
+use super::super::equations::{chart, chart_eval, relative_discriminant};
 use super::{at_xy, Ctx, PINV_CUT};
 use crate::error::RouthError;
 use crate::model::Routhian;
 use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
+use crate::sphere::local::Local;
 use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{sym2_eigen, tangent_basis};
 use crate::stability::{classify_with, StabilityReport};

@@ -12,6 +12,7 @@ use super::grid::Node;
 use super::Ctx;
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::path::row::LinearRow;
 use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
 use crate::sphere::tangent_basis;
 
@@ -74,8 +75,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
             // In the chart around the current point: the corrector on the test's equations and
             // the row of the path, the tangent from the null vector of the extended Jacobian.
             let correct = |p: &Prediction<4>| {
-                let row = p.normal.map(|a| (a, a.dot(&p.point)));
-                Ok::<_, RouthError>(self.correct(&test, &cur.gamma, &basis, p.point, row).map(
+                Ok::<_, RouthError>(self.correct(&test, &cur.gamma, &basis, p.point, p.row).map(
                     |(wc, e, it)| Corrected {
                         point: wc,
                         iterations: it,
@@ -112,9 +112,9 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 }
                 if let Some((lam, k, bound)) = best {
                     let guess = w + (wc - w) * lam;
-                    let a = Vector4::ith(k, 1.0);
+                    let row = LinearRow::fixed(k, bound);
                     if let Some((we, ee, _)) =
-                        self.correct(&test, &cur.gamma, &basis, guess, Some((a, bound)))
+                        self.correct(&test, &cur.gamma, &basis, guess, Some(row))
                     {
                         let (mut u, mut v) = (we[2], we[3]);
                         if k == 2 {

@@ -5,12 +5,14 @@ use nalgebra::Vector3;
 
 use super::CountCheck;
 use crate::error::RouthError;
-use crate::families::continuation::{Constraint, Ctx, Node};
-use crate::families::equations::{at, member, Local};
+use crate::families::continuation::{Ctx, Node};
+use crate::families::equations::{at, member};
 use crate::families::{
     BifurcationDiagram, Branch, BranchEvent, ContinuationOptions, EventKind, StopReason,
 };
 use crate::model::Routhian;
+use crate::path::row::LinearRow;
+use crate::sphere::local::Local;
 use crate::stability::Stability;
 use crate::steady::steady_motion_search;
 
@@ -165,14 +167,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         isolated: bool,
     ) -> Result<Option<NotStarted>, RouthError> {
         let ctx = self.ctx(isolated, self.scale_at(&gamma, s)?);
-        let con = Constraint {
-            a_g: Vector3::zeros(),
-            a_s: 1.0,
-            gamma_ref: gamma,
-            sigma_ref: s / ctx.len,
-            c: 0.0,
-        };
-        let Some((g, s1, _)) = ctx.correct(&gamma, s / ctx.len, &con, None)? else {
+        // σ fixed at the seed's.
+        let row = LinearRow::fixed(3, 0.0);
+        let Some((g, s1, _)) = ctx.correct(&gamma, s / ctx.len, &row, None)? else {
             return Ok(Some(NotStarted::Corrector(ctx.failed_residual.get())));
         };
         let Some(start) = ctx.node(&g, s1, None)? else {

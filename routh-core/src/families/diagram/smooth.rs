@@ -3,10 +3,13 @@
 //! item 5). The points come from the branch's own corrector ([`Ctx::correct`]); only where they
 //! go is decided here, by the curvature of the curve, not by the continuation step.
 
+use nalgebra::Vector4;
+
 use super::builder::Builder;
 use crate::error::RouthError;
-use crate::families::continuation::{meridian_normal, Constraint, Ctx, Node};
+use crate::families::continuation::{meridian_normal, Ctx, Node};
 use crate::model::Routhian;
+use crate::path::row::LinearRow;
 
 /// Shortest chord that is still split, in plot-normalised coordinates (`s` over the range, `E`
 /// over its extent on the diagram): about a fifth of a pixel on a 900-pixel figure.
@@ -63,15 +66,10 @@ impl<M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'_, M, F> {
             s_p += 0.125 * l * (ta_s - tb_s);
         }
         let g_p = g_p.normalize();
-        let con = Constraint {
-            a_g: dg / l,
-            a_s: ds / l,
-            gamma_ref: g_p,
-            sigma_ref: s_p,
-            c: 0.0,
-        };
+        let a_g = dg / l;
+        let row = LinearRow::new(Vector4::new(a_g.x, a_g.y, a_g.z, ds / l), 0.0);
         let circle = meridian_normal(&g_p, &ta_g);
-        let Some((g, s, _)) = self.correct(&g_p, s_p, &con, circle)? else {
+        let Some((g, s, _)) = self.correct(&g_p, s_p, &row, circle)? else {
             return Ok(None);
         };
         let moved = ((g - g_p).norm_squared() + (s / len - s_p).powi(2)).sqrt();

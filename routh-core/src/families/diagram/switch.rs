@@ -2,14 +2,15 @@
 //! `[K | F_s]` orthogonal to the branch (a pitchfork), or as a branch of circles where `K`
 //! vanishes altogether (a symmetric body).
 
-use nalgebra::{Vector2, Vector3};
+use nalgebra::{Vector2, Vector3, Vector4};
 
 use super::builder::Builder;
 use super::join::join_tolerances;
 use crate::error::RouthError;
-use crate::families::continuation::{Constraint, Node};
+use crate::families::continuation::Node;
 use crate::families::StopReason;
 use crate::model::Routhian;
+use crate::path::row::LinearRow;
 use crate::sphere::tangent_basis;
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
@@ -107,14 +108,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         let len = ctx.len;
         let g_p = (n.gamma + eps * dg).normalize();
         let s_p = n.s / len + eps * ds;
-        let con = Constraint {
-            a_g: dg,
-            a_s: ds,
-            gamma_ref: n.gamma,
-            sigma_ref: n.s / len,
-            c: eps,
-        };
-        let Some((g, s, _)) = ctx.correct(&g_p, s_p, &con, None)? else {
+        // `dg·(γ − γ_n) + ds(σ − σ_n) = eps`, relative to the predicted point.
+        let rhs = eps - dg.dot(&(g_p - n.gamma)) - ds * (s_p - n.s / len);
+        let row = LinearRow::new(Vector4::new(dg.x, dg.y, dg.z, ds), rhs);
+        let Some((g, s, _)) = ctx.correct(&g_p, s_p, &row, None)? else {
             return Ok(());
         };
         if s < self.range.0 || s > self.range.1 || (g - n.gamma).norm() < 0.2 * eps {

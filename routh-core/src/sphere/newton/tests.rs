@@ -12,7 +12,7 @@ type At = (Vector4<f64>, Linearised);
 fn run(
     newton: &Newton,
     w0: Vector4<f64>,
-    rows: &[Row],
+    rows: &[LinearRow<4>],
     f: impl Fn(&Vector4<f64>) -> Linearised,
 ) -> Result<Solved<At>, Stop<At>> {
     let start = (w0, f(&w0));
@@ -44,10 +44,7 @@ fn circle_and_line_meet_at_the_closed_form_point() {
             0.0,
         )
     };
-    let row = Row {
-        a: Vector4::new(1.0, -1.0, 0.0, 0.0),
-        b: 0.2,
-    };
+    let row = LinearRow::new(Vector4::new(1.0, -1.0, 0.0, 0.0), 0.2);
     let s = run(
         &Newton::continuation(1e-14),
         Vector4::new(1.0, 0.5, 0.0, 0.0),

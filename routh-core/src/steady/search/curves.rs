@@ -31,7 +31,7 @@ pub(super) fn curve_axis(vertices: &[Vector3<f64>]) -> Option<Vector3<f64>> {
 
 /// A traced curve of non-isolated critical points.
 pub(super) struct Curve {
-    pub(super) start: Local,
+    pub(super) start: Riemannian,
     /// Vertices in order along the curve (the trace may have gone both ways from the start: the
     /// vertices of the second direction then follow those of the first, reversed at the seam).
     pub(super) vertices: Vec<Vector3<f64>>,
@@ -42,7 +42,7 @@ pub(super) struct Curve {
 impl Curve {
     /// Whether `loc` lies on this curve: degenerate, same level of `U_r` and within `h/2` of the
     /// polyline through the traced vertices (closed when the trace came back to its start).
-    pub(super) fn contains(&self, loc: &Local) -> bool {
+    pub(super) fn contains(&self, loc: &Riemannian) -> bool {
         // A point of a curve of critical points has a zero eigenvalue; a non-degenerate point
         // close to a small curve (the pole inside a small circle) is not on it.
         if !same_level(&self.start, loc) || !loc.degenerate() {
@@ -69,7 +69,7 @@ impl<M: Routhian> Search<'_, M> {
     /// The index of the degenerate isolated critical point `loc`: the winding number of the
     /// gradient on the circle of radius `min(r, INDEX_RADIUS)` around it. `None` when the gradient
     /// vanishes (within round-off) somewhere on the circle or turns too fast to be followed.
-    pub(super) fn index(&self, loc: &Local, r: f64) -> Option<i64> {
+    pub(super) fn index(&self, loc: &Riemannian, r: f64) -> Option<i64> {
         let r = r.min(INDEX_RADIUS);
         if r.is_nan() || r <= 0.0 {
             return None;
@@ -111,10 +111,10 @@ impl<M: Routhian> Search<'_, M> {
     fn continue_from(
         &self,
         path: &mut Path<3>,
-        from: &Local,
+        from: &Riemannian,
         dir: &Vector3<f64>,
-        level: &Local,
-    ) -> Result<Local, bool> {
+        level: &Riemannian,
+    ) -> Result<Riemannian, bool> {
         let mut back = false;
         let correct = |p: &Prediction<3>| {
             Ok::<_, Infallible>(match self.refine(&p.point, None) {
@@ -126,7 +126,7 @@ impl<M: Routhian> Search<'_, M> {
                 _ => None,
             })
         };
-        let check = |p: &Point<3, Local>, h: f64| {
+        let check = |p: &Point<3, Riemannian>, h: f64| {
             let loc = &p.value;
             if same_point(loc, from) {
                 back = true;
@@ -139,7 +139,7 @@ impl<M: Routhian> Search<'_, M> {
                 Check::Shorten
             }
         };
-        let complete = |c: Corrected<3, Local>| Ok(Some(c.bare()));
+        let complete = |c: Corrected<3, Riemannian>| Ok(Some(c.bare()));
         let Ok(step) = path.step(&from.gamma, dir, f64::INFINITY, correct, complete, check);
         match step {
             Outcome::Accepted { point, .. } => Ok(point.value),
@@ -149,7 +149,7 @@ impl<M: Routhian> Search<'_, M> {
 
     /// Traces the curve of critical points through the degenerate critical point `start` along
     /// the kernel of `K`; `None` when there is no such curve (a degenerate isolated point).
-    pub(super) fn trace(&self, start: &Local) -> Option<Curve> {
+    pub(super) fn trace(&self, start: &Riemannian) -> Option<Curve> {
         let t0 = start.null_direction();
         let mut h = TRACE_STEP;
         for level in 0..TRACE_LEVELS {

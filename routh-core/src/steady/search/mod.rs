@@ -14,6 +14,7 @@ use super::SearchOptions;
 use crate::error::RouthError;
 use crate::locate::{locate, End};
 use crate::model::Routhian;
+use crate::sphere::local::Local;
 use crate::sphere::newton::{Jacobian, Linearised, Newton, Why};
 use crate::sphere::{fibonacci_grid, tangent_basis, Tangential, NOISE, ROUND};
 use crate::validate::check_kinetic;
@@ -197,15 +198,17 @@ pub(super) fn near<M: Routhian>(
     Ok((loc.gamma, isolated))
 }
 
-/// The amended potential and its Riemannian derivatives at one unit γ.
+/// What the search keeps of one evaluation of the model ([`Local`]) at a unit γ: the amended
+/// potential and its Riemannian derivatives there ([`Tangential`]). The families' equations keep
+/// the derivatives in ℝ³ instead (their chart is not `tangent_basis(γ)`).
 #[derive(Debug, Clone, Copy)]
-struct Local {
+struct Riemannian {
     gamma: Vector3<f64>,
     t: Tangential,
     u_r: f64,
 }
 
-impl Local {
+impl Riemannian {
     /// `None` when the model returns non-finite values at γ.
     #[inline(always)]
     fn at<M: Routhian>(
@@ -213,24 +216,21 @@ impl Local {
         gamma: &Vector3<f64>,
         p_psi: f64,
         zero_rel: f64,
-    ) -> Option<Local> {
+    ) -> Option<Riemannian> {
         // The basis depends on γ alone: formed first, it is ready when the model returns.
         let basis = tangent_basis(gamma);
-        let b = model.bundle(&Vector3::zeros(), gamma, p_psi);
-        let finite = b.routhian.is_finite()
-            && b.dr_dgamma.iter().all(|v| v.is_finite())
-            && b.d2r_dgamma2.iter().all(|v| v.is_finite());
-        if !finite {
+        let l = Local::evaluate(model, gamma, p_psi);
+        if !l.is_finite() {
             return None;
         }
-        let t = Tangential::with_basis(gamma, basis, &b.dr_dgamma, &b.d2r_dgamma2, zero_rel);
+        let t = l.tangential_quantities(basis, zero_rel);
         if !(t.knorm.is_finite() && t.raw.is_finite()) {
             return None;
         }
-        Some(Local {
+        Some(Riemannian {
             gamma: *gamma,
             t,
-            u_r: -b.routhian,
+            u_r: l.u_r,
         })
     }
 
@@ -302,7 +302,7 @@ impl Local {
     }
 }
 
-fn same_level(a: &Local, b: &Local) -> bool {
+fn same_level(a: &Riemannian, b: &Riemannian) -> bool {
     let s = a.u_r.abs().max(b.u_r.abs()).max(a.t.raw).max(b.t.raw);
     (a.u_r - b.u_r).abs() <= LEVEL_TOL * s
 }
@@ -315,7 +315,7 @@ fn same_level(a: &Local, b: &Local) -> bool {
 /// −e₃: `1 + γ₃ = θ²/2` is 0 in floating point for θ below 1e−8), every point of it is a zero of
 /// the computed gradient with a Newton step of 0, and copies landing anywhere on the cap would
 /// otherwise each count as a critical point.
-fn same_point(a: &Local, b: &Local) -> bool {
+fn same_point(a: &Riemannian, b: &Riemannian) -> bool {
     let d = (a.gamma - b.gamma).norm();
     d <= MERGE_FACTOR * (a.radius() + b.radius()) + 8.0 * f64::EPSILON
         || (d <= FLAT_RADIUS && a.degenerate() && b.degenerate() && same_level(a, b))
@@ -323,11 +323,11 @@ fn same_point(a: &Local, b: &Local) -> bool {
 
 /// The critical points found so far by [`global`].
 struct Found {
-    isolated: Vec<Local>,
+    isolated: Vec<Riemannian>,
     /// The non-degenerate points of `isolated` (their γ): the targets of early capture.
     anchors: Vec<Vector3<f64>>,
     curves: Vec<Curve>,
-    planar: Vec<Local>,
+    planar: Vec<Riemannian>,
     best_residual: f64,
 }
 
@@ -481,12 +481,12 @@ impl Found {
 /// The end of one Newton iteration.
 enum Refined {
     /// A critical point.
-    Converged(Local),
+    Converged(Riemannian),
     /// The iteration joined a known critical point (early de-duplication of a basin).
     Captured,
     /// The iteration stopped at a point that is not critical (budget spent, or a local minimum
     /// of `|g|`).
-    Stalled(Local),
+    Stalled(Riemannian),
 }
 
 struct Search<'a, M> {
@@ -498,8 +498,8 @@ struct Search<'a, M> {
 }
 
 impl<M: Routhian> Search<'_, M> {
-    fn local(&self, gamma: &Vector3<f64>) -> Option<Local> {
-        Local::at(self.model, gamma, self.p_psi, self.zero_rel)
+    fn local(&self, gamma: &Vector3<f64>) -> Option<Riemannian> {
+        Riemannian::at(self.model, gamma, self.p_psi, self.zero_rel)
     }
 
     /// Safeguarded Newton (Levenberg–Marquardt, [`Newton::search`]) on the sphere from `gamma0`;
@@ -515,11 +515,11 @@ impl<M: Routhian> Search<'_, M> {
         let start = self.local(gamma0)?;
         // Each step is taken in the tangent plane at the current point, then retracted onto the
         // sphere: the chart moves with the iterate.
-        let next = |cur: &Local, _: &Vector4<f64>, d: &Vector4<f64>| {
+        let next = |cur: &Riemannian, _: &Vector4<f64>, d: &Vector4<f64>| {
             let gamma = (cur.gamma + cur.t.basis * Vector2::new(d[0], d[1])).normalize();
             Ok::<_, Infallible>(self.local(&gamma))
         };
-        let joined = |cur: &Local| {
+        let joined = |cur: &Riemannian| {
             capture.is_some_and(|(known, ratio)| {
                 let target = cur.gamma + cur.t.basis * cur.t.step;
                 known.iter().any(|p| {
@@ -533,7 +533,7 @@ impl<M: Routhian> Search<'_, M> {
             Vector4::zeros(),
             &[],
             start,
-            Local::linearised,
+            Riemannian::linearised,
             next,
             joined,
         ) {
@@ -563,7 +563,7 @@ impl<M: Routhian> Search<'_, M> {
     /// leaves it at round-off in `φ`: to about `(ε·s_raw/|φ⁽ⁿ⁾|)^{1/n}` (`~1e−5` rad for a
     /// cubic gradient). Unchanged when no sign change is bracketed (a curve of critical points,
     /// where `φ ≡ 0`, or an even order).
-    fn polish_degenerate(&self, loc: Local) -> Local {
+    fn polish_degenerate(&self, loc: Riemannian) -> Riemannian {
         let v = loc.null_direction();
         let i_w = if loc.t.values[0].abs() <= loc.t.values[1].abs() {
             1
@@ -576,7 +576,7 @@ impl<M: Routhian> Search<'_, M> {
             return loc;
         }
         // The point at offset t along v, corrected across it, and φ there.
-        let at = |t: f64| -> Option<(Local, f64)> {
+        let at = |t: f64| -> Option<(Riemannian, f64)> {
             let mut g = (loc.gamma + t * v).normalize();
             let mut l = self.local(&g)?;
             for _ in 0..4 {
@@ -616,7 +616,7 @@ impl<M: Routhian> Search<'_, M> {
         };
         // Located to round-off in `t` by the bracket's width alone: at a zero of order `n > 1`
         // the secant's estimate of the distance is far too small.
-        let end = |at: f64, value: f64, point: Local| End { at, value, point };
+        let end = |at: f64, value: f64, point: Riemannian| End { at, value, point };
         let found = locate(
             end(a, pa, la),
             end(b, pb, lb),
@@ -640,7 +640,7 @@ impl<M: Routhian> Search<'_, M> {
     /// Whether the degenerate critical point `loc` (both eigenvalues of `K` zero) lies in a
     /// two-dimensional set of critical points: the gradient vanishes within round-off at four
     /// neighbours at [`PLANAR_PROBE`]. At a higher-order isolated point (x⁴ + y⁴) it does not.
-    fn is_planar(&self, loc: &Local) -> bool {
+    fn is_planar(&self, loc: &Riemannian) -> bool {
         (0..4).all(|k| {
             let a = std::f64::consts::FRAC_PI_2 * k as f64 + 0.3;
             let t = loc.t.basis * Vector2::new(a.cos(), a.sin());
