@@ -244,8 +244,11 @@ pub fn nonlinear_stability<M: Routhian>(
     };
     // R at jets from the model's own expression DAG (the tape the derive or the run-time model
     // built): its Taylor coefficients are the exact derivatives, no finite differences.
+    // One working storage for the tape's six evaluations.
+    let slots = std::cell::RefCell::new(Vec::new());
     let r = |big_omega: &[Jet; 3], gamma: &[Jet; 3], p_psi: f64| {
-        tape.routhian(big_omega, gamma, Jet::constant(p_psi))
+        let slots = &mut *slots.borrow_mut();
+        tape.routhian_with(big_omega, gamma, Jet::constant(p_psi), slots)
     };
     nonlinear_stability_from_jet(model, steady, &r, opts)
 }
