@@ -15,12 +15,15 @@
 //! **Hamiltonian.** `R` is quadratic in Ω, so `ℒ = ½ẋᵀm(x)ẋ + β(x)·ẋ + R₀(x)` with
 //! `m = WᵀAW`, `β = Wᵀ∂R/∂Ω + p_ψ(0, F)`, `R₀ = R(0, γ(x), p_ψ) = −U_r` (34), `W = −[γ]×∂γ/∂x`.
 //! The momenta are `p = mẋ + β` and `H = ½(p − β)ᵀm⁻¹(p − β) − R₀`, the reduced energy. We
-//! expand in `x` and `y = p − β(0)` (the steady motion is `x = 0, y = 0`). `m`, `β`, `R₀` come
-//! from six evaluations of `R` at jets (polarisation of the quadratic form), exact in Ω.
+//! expand in `x` and `y = p − β(0)` (the steady motion is `x = 0, y = 0`). `m`, `β`, `R₀` are
+//! the parts of degree 2, 1, 0 in ẋ of one evaluation of `R(W(x)ẋ, γ(x), p_ψ)` at jets in
+//! `(x, ẋ)`; the truncation at order four leaves `m` to degree 2 in `x`, `β` to degree 3 and
+//! `R₀` to degree 4, exactly what `H` to order four needs (`p − β` vanishes at the steady
+//! motion).
 
 use nalgebra::Vector3;
 
-use super::jet::Jet;
+use super::jet::{lower_index, monomials, Jet};
 
 /// `R(Ω, γ, p_ψ)` evaluated at Taylor jets: what the nonlinear test needs of a model. A derived
 /// model gets it from its expression tape; a hand-written generic `R` can implement it directly
@@ -50,12 +53,35 @@ fn dot(a: &V, b: &V) -> Jet {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn scale(a: &V, s: f64) -> V {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
-
 fn add(a: &V, b: &V) -> V {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+fn times(a: &V, s: &Jet) -> V {
+    [a[0] * *s, a[1] * *s, a[2] * *s]
+}
+
+/// The coefficient of `ẋ₁^k₀ ẋ₂^k₁` (jet variables 2, 3) in `l`, as a jet in `x` (variables 0,
+/// 1): exact to the degree `4 − k₀ − k₁` the truncation leaves it.
+fn velocity_part(l: &Jet, k: [u8; 2]) -> Jet {
+    let mut out = Jet::constant(0.0);
+    for (i, e) in monomials().iter().enumerate() {
+        if e[2] == k[0] && e[3] == k[1] {
+            // The monomial divided by ẋ₁^k₀ ẋ₂^k₁.
+            let mut j = Some(i);
+            for v in [2; 2]
+                .iter()
+                .take(k[0].into())
+                .chain([3; 2].iter().take(k[1].into()))
+            {
+                j = j.and_then(|j| lower_index(*v, j));
+            }
+            if let Some(j) = j {
+                out.c[j] = l.c[i];
+            }
+        }
+    }
+    out
 }
 
 /// A right-handed orthonormal frame `(u, v, γ₀)`.
@@ -100,18 +126,18 @@ pub fn reduced_hamiltonian<R: RouthianJet + ?Sized>(
     // The area form in the chart and α = F dx₂ with ∂F/∂x₁ = (∂₁γ × ∂₂γ)·γ.
     let f = dot(&cross(&d1, &d2), &g);
     let big_f = f.integrate(0);
-    let zero = [Jet::constant(0.0); 3];
-    let r0 = r.routhian_jet(&zero, &g, p_psi);
-    let rp1 = r.routhian_jet(&w1, &g, p_psi);
-    let rm1 = r.routhian_jet(&scale(&w1, -1.0), &g, p_psi);
-    let rp2 = r.routhian_jet(&w2, &g, p_psi);
-    let rm2 = r.routhian_jet(&scale(&w2, -1.0), &g, p_psi);
-    let r12 = r.routhian_jet(&add(&w1, &w2), &g, p_psi);
-    let m11 = rp1 + rm1 - r0 * 2.0;
-    let m22 = rp2 + rm2 - r0 * 2.0;
-    let b1 = (rp1 - rm1) * 0.5;
-    let b2 = (rp2 - rm2) * 0.5;
-    let m12 = r12 - r0 - b1 - b2 - (m11 + m22) * 0.5;
+    // ℒ without the monopole term in one evaluation: R at Ω = W(x)ẋ with the velocities ẋ₁, ẋ₂
+    // as jet variables 2 and 3 (free until H is assembled).
+    let (v1, v2) = (Jet::variable(0.0, 2), Jet::variable(0.0, 3));
+    let omega = add(&times(&w1, &v1), &times(&w2, &v2));
+    let lagrangian = r.routhian_jet(&omega, &g, p_psi);
+    // Its parts of degree 0, 1, 2 in ẋ as jets in x: R₀, b, ½m.
+    let part = |k: [u8; 2]| velocity_part(&lagrangian, k);
+    let r0 = part([0, 0]);
+    let (b1, b2) = (part([1, 0]), part([0, 1]));
+    let m11 = part([2, 0]) * 2.0;
+    let m22 = part([0, 2]) * 2.0;
+    let m12 = part([1, 1]);
     let beta1 = b1;
     let beta2 = b2 + big_f * p_psi;
     let p1 = Jet::variable(0.0, 2) - (beta1 - beta1.value());

@@ -28,10 +28,59 @@ struct Tables {
     exps: [Exponents; NCOEF],
     /// `(i, j, k)`: monomial i times monomial j is monomial k.
     products: Vec<(u8, u8, u8)>,
+    /// `products` gathered by result, for [`Jet`]'s product.
+    gathered: Gathered,
+    /// The same for the products of the monomials in `x₀, x₁` alone (70 of the 495).
+    gathered01: Gathered,
+    /// Whether each monomial has `x₂` or `x₃`.
+    with23: [bool; NCOEF],
     /// `lower[v][k]`: the index of monomial k divided by variable v (when its exponent is ≥ 1).
     lower: [[Option<u8>; NCOEF]; NVARS],
     /// `raise[v][k]`: the index of monomial k times variable v (when of degree < 4).
     raise: [[Option<u8>; NCOEF]; NVARS],
+}
+
+/// A product table gathered by result: for each monomial `k` in increasing order, the pairs
+/// `(i, j)` whose product it is, in the order of the table (so that each coefficient of a
+/// product is summed in the same order, one accumulator per coefficient).
+struct Gathered {
+    pairs: Vec<(u8, u8)>,
+    /// `(k, end)`: the pairs of `k` end at `end` and start at the previous end.
+    ends: Vec<(u8, u16)>,
+}
+
+impl Gathered {
+    fn new(products: impl Iterator<Item = (u8, u8, u8)>) -> Self {
+        let mut by_k: Vec<(u8, u8, u8)> = products.collect();
+        by_k.sort_by_key(|&(_, _, k)| k); // stable: the table's order within each k
+        let mut ends: Vec<(u8, u16)> = Vec::new();
+        for (n, &(_, _, k)) in by_k.iter().enumerate() {
+            match ends.last_mut() {
+                Some((last, end)) if *last == k => *end = n as u16 + 1,
+                _ => ends.push((k, n as u16 + 1)),
+            }
+        }
+        Gathered {
+            pairs: by_k.iter().map(|&(i, j, _)| (i, j)).collect(),
+            ends,
+        }
+    }
+
+    /// The product of the jets with coefficients `a` and `b`.
+    fn product(&self, a: &[f64; NCOEF], b: &[f64; NCOEF]) -> [f64; NCOEF] {
+        let mut out = [0.0; NCOEF];
+        let mut start = 0;
+        for &(k, end) in &self.ends {
+            let end = usize::from(end);
+            let mut acc = 0.0;
+            for &(i, j) in &self.pairs[start..end] {
+                acc += a[usize::from(i)] * b[usize::from(j)];
+            }
+            out[usize::from(k)] = acc;
+            start = end;
+        }
+        out
+    }
 }
 
 fn degree(e: &Exponents) -> usize {
@@ -70,6 +119,15 @@ fn tables() -> &'static Tables {
                 }
             }
         }
+        let in01 = |e: &Exponents| e[2] == 0 && e[3] == 0;
+        let gathered = Gathered::new(products.iter().copied());
+        let gathered01 = Gathered::new(
+            products
+                .iter()
+                .copied()
+                .filter(|&(i, j, _)| in01(&exps[i as usize]) && in01(&exps[j as usize])),
+        );
+        let with23 = exps.map(|e| !in01(&e));
         let mut lower = [[None; NCOEF]; NVARS];
         let mut raise = [[None; NCOEF]; NVARS];
         for v in 0..NVARS {
@@ -90,6 +148,9 @@ fn tables() -> &'static Tables {
         Tables {
             exps,
             products,
+            gathered,
+            gathered01,
+            with23,
             lower,
             raise,
         }
@@ -113,6 +174,11 @@ pub(crate) fn product_table() -> &'static [(u8, u8, u8)] {
 
 pub(crate) fn lower_index(v: usize, k: usize) -> Option<usize> {
     tables().lower[v][k].map(usize::from)
+}
+
+/// `raise_table()[v][k]`: [`raise_index`]`(v, k)` as stored.
+pub(crate) fn raise_table() -> &'static [[Option<u8>; NCOEF]; NVARS] {
+    &tables().raise
 }
 
 pub(crate) fn raise_index(v: usize, k: usize) -> Option<usize> {
@@ -246,8 +312,10 @@ impl Jet {
                 if k & 1 == 1 {
                     out = out * base;
                 }
-                base = base * base;
                 k >>= 1;
+                if k > 0 {
+                    base = base * base;
+                }
             }
             out
         } else {
@@ -392,11 +460,23 @@ impl Mul for Jet {
         if self.c[1..].iter().all(|&c| c == 0.0) {
             return o * self.c[0];
         }
-        let mut out = [0.0; NCOEF];
-        for &(i, j, k) in product_table() {
-            out[k as usize] += self.c[i as usize] * o.c[j as usize];
+        // Both in x₀, x₁ alone (the chart's position variables: the jets of γ, Ω and of the
+        // Routh function there): 70 products.
+        let t = tables();
+        // Without early exit, which vectorises: a NaN takes the general table.
+        let in01 = |a: &Jet| {
+            !a.c.iter()
+                .zip(&t.with23)
+                .fold(false, |any, (&c, &m)| any | (m & (c != 0.0)))
+        };
+        let table = if in01(&self) && in01(&o) {
+            &t.gathered01
+        } else {
+            &t.gathered
+        };
+        Jet {
+            c: table.product(&self.c, &o.c),
         }
-        Jet { c: out }
     }
 }
 

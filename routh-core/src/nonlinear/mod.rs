@@ -232,6 +232,18 @@ pub fn nonlinear_stability<M: Routhian>(
     steady: &SteadyMotion,
     opts: &NonlinearOptions,
 ) -> Result<NonlinearReport, RouthError> {
+    nonlinear_stability_after(model, steady, None, opts)
+}
+
+/// [`nonlinear_stability`], the linear test taken from `linear` when given: it must be what
+/// [`classify_with`] gives for `(model, steady, opts.classify)` (a bifurcation diagram's own
+/// report of a branch point, classified with the same options).
+pub(crate) fn nonlinear_stability_after<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    linear: Option<&StabilityReport>,
+    opts: &NonlinearOptions,
+) -> Result<NonlinearReport, RouthError> {
     opts.validate()?;
     let Some(tape) = model.routh_tape() else {
         return Err(RouthError::InvalidModel {
@@ -247,7 +259,11 @@ pub fn nonlinear_stability<M: Routhian>(
     let r = |big_omega: &[Jet; 3], gamma: &[Jet; 3], p_psi: f64| {
         tape.routhian(big_omega, gamma, Jet::constant(p_psi))
     };
-    nonlinear_stability_from_jet(model, steady, &r, opts)
+    let linear = match linear {
+        Some(l) => l.clone(),
+        None => classify_with(model, steady, &opts.classify)?,
+    };
+    beyond_linear(linear, steady, &r, opts)
 }
 
 /// [`nonlinear_stability`] with the Routh function evaluated at jets by `r`, which must be the
@@ -263,6 +279,17 @@ pub fn nonlinear_stability_from_jet<M: Routhian, R: RouthianJet + ?Sized>(
 ) -> Result<NonlinearReport, RouthError> {
     opts.validate()?;
     let linear = classify_with(model, steady, &opts.classify)?;
+    beyond_linear(linear, steady, r, opts)
+}
+
+/// The nonlinear test after the linear one (`linear`, of this steady motion): the normal form
+/// where the linear verdict leaves the question open.
+fn beyond_linear<R: RouthianJet + ?Sized>(
+    linear: StabilityReport,
+    steady: &SteadyMotion,
+    r: &R,
+    opts: &NonlinearOptions,
+) -> Result<NonlinearReport, RouthError> {
     let nan2 = [f64::NAN; 2];
     let mut report = NonlinearReport {
         linear: linear.clone(),

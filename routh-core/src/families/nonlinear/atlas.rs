@@ -83,6 +83,10 @@ struct Grid<'a, F> {
 /// `(i, j)–(i + 1, j)`, `v[j][i]` on `(i, j)–(i, j + 1)`.
 type EdgeRow = Vec<Option<(f64, f64)>>;
 
+/// The crossings of each indicator on the edges of one row of nodes: `(h, v)`, `v` `None` on
+/// the top row.
+type RowEdges = [(EdgeRow, Option<EdgeRow>); 3];
+
 impl<F> Grid<'_, F> {
     /// The indicators at the gyroscopically stabilised nodes of row `j`.
     fn indicated_row<M: Routhian>(
@@ -153,22 +157,25 @@ impl<F> Grid<'_, F> {
         Some(lerp(t))
     }
 
-    fn h_row<M: Routhian>(&self, ind: &[Vec<Indicated>], j: usize, k: usize) -> EdgeRow
+    /// The crossings of each indicator on the edges of row `j`: rightwards from each node, and
+    /// upwards unless `j` is the top row.
+    fn edge_row<M: Routhian>(&self, ind: &[Vec<Indicated>], j: usize) -> RowEdges
     where
         F: Fn(f64, f64) -> (M, f64),
     {
-        (0..self.xs.len() - 1)
-            .map(|i| self.crossing(ind, (i, j), (i + 1, j), k))
-            .collect()
-    }
-
-    fn v_row<M: Routhian>(&self, ind: &[Vec<Indicated>], j: usize, k: usize) -> EdgeRow
-    where
-        F: Fn(f64, f64) -> (M, f64),
-    {
-        (0..self.xs.len())
-            .map(|i| self.crossing(ind, (i, j), (i, j + 1), k))
-            .collect()
+        let nx = self.xs.len();
+        let up = j + 1 < self.ys.len();
+        [0, 1, 2].map(|k| {
+            let h = (0..nx - 1)
+                .map(|i| self.crossing(ind, (i, j), (i + 1, j), k))
+                .collect();
+            let v = up.then(|| {
+                (0..nx)
+                    .map(|i| self.crossing(ind, (i, j), (i, j + 1), k))
+                    .collect()
+            });
+            (h, v)
+        })
     }
 }
 
@@ -206,22 +213,21 @@ pub(crate) fn atlas_curves<M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
     nodes: &[Vec<GridNode>],
     opts: &NonlinearOptions,
 ) -> Result<Vec<NonlinearCurve>, RouthError> {
-    opts.validate()?;
-    check_tape(family, xs, ys, nodes)?;
-    let g = Grid {
-        family,
-        xs,
-        ys,
-        opts,
-    };
-    let ind = (0..ys.len())
-        .map(|j| g.indicated_row(j, &nodes[j]))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(join(xs.len(), ys.len(), |k| {
-        let h = (0..ys.len()).map(|j| g.h_row(&ind, j, k)).collect();
-        let v = (0..ys.len() - 1).map(|j| g.v_row(&ind, j, k)).collect();
-        (h, v)
-    }))
+    curves_with(
+        &Grid {
+            family,
+            xs,
+            ys,
+            opts,
+        },
+        nodes,
+        |g| {
+            (0..ys.len())
+                .map(|j| g.indicated_row(j, &nodes[j]))
+                .collect()
+        },
+        |g, ind| (0..ys.len()).map(|j| g.edge_row(ind, j)).collect(),
+    )
 }
 
 /// [`atlas_curves`] with the rows of nodes and of edges on the current thread pool (that of
@@ -235,41 +241,52 @@ pub(crate) fn atlas_curves_parallel<M: Routhian, F: Fn(f64, f64) -> (M, f64) + S
     opts: &NonlinearOptions,
 ) -> Result<Vec<NonlinearCurve>, RouthError> {
     use rayon::prelude::*;
-    opts.validate()?;
-    check_tape(family, xs, ys, nodes)?;
-    let g = Grid {
-        family,
-        xs,
-        ys,
-        opts,
-    };
-    let ind = (0..ys.len())
-        .into_par_iter()
-        .map(|j| g.indicated_row(j, &nodes[j]))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(join(xs.len(), ys.len(), |k| {
-        let h = (0..ys.len())
-            .into_par_iter()
-            .map(|j| g.h_row(&ind, j, k))
-            .collect();
-        let v = (0..ys.len() - 1)
-            .into_par_iter()
-            .map(|j| g.v_row(&ind, j, k))
-            .collect();
-        (h, v)
-    }))
+    curves_with(
+        &Grid {
+            family,
+            xs,
+            ys,
+            opts,
+        },
+        nodes,
+        |g| {
+            (0..ys.len())
+                .into_par_iter()
+                .map(|j| g.indicated_row(j, &nodes[j]))
+                .collect()
+        },
+        |g, ind| {
+            (0..ys.len())
+                .into_par_iter()
+                .map(|j| g.edge_row(ind, j))
+                .collect()
+        },
+    )
+}
+
+/// The body of [`atlas_curves`] and [`atlas_curves_parallel`], the rows of the grid mapped by
+/// `indicate` (the indicators at the nodes of each row) and then by `edges` (the crossings on
+/// each row's edges), sequentially or in parallel.
+fn curves_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
+    g: &Grid<'a, F>,
+    nodes: &[Vec<GridNode>],
+    indicate: impl FnOnce(&Grid<'a, F>) -> Result<Vec<Vec<Indicated>>, RouthError>,
+    edges: impl FnOnce(&Grid<'a, F>, &[Vec<Indicated>]) -> Vec<RowEdges>,
+) -> Result<Vec<NonlinearCurve>, RouthError> {
+    g.opts.validate()?;
+    check_tape(g.family, g.xs, g.ys, nodes)?;
+    let ind = indicate(g)?;
+    Ok(join(g.xs.len(), g.ys.len(), &edges(g, &ind)))
 }
 
 /// The curves from the crossings of each indicator `k` on the horizontal and vertical edges
-/// (`edges(k)`), joined within the cells: two crossings by a segment, four (a saddle) by two.
-fn join(
-    nx: usize,
-    ny: usize,
-    edges: impl Fn(usize) -> (Vec<EdgeRow>, Vec<EdgeRow>),
-) -> Vec<NonlinearCurve> {
+/// (`edges[j][k]`, row by row), joined within the cells: two crossings by a segment, four (a
+/// saddle) by two.
+fn join(nx: usize, ny: usize, edges: &[RowEdges]) -> Vec<NonlinearCurve> {
     let mut curves = Vec::new();
     for k in 0..3 {
-        let (h, v) = edges(k);
+        let h: Vec<&EdgeRow> = edges.iter().map(|row| &row[k].0).collect();
+        let v: Vec<&EdgeRow> = edges.iter().filter_map(|row| row[k].1.as_ref()).collect();
         let crossings: Vec<(f64, f64)> = h
             .iter()
             .chain(&v)

@@ -20,10 +20,11 @@ use crate::locate::{locate, within, End, Stop};
 use crate::model::Routhian;
 use crate::nonlinear::Jet;
 use crate::nonlinear::{
-    nonlinear_stability, nonlinear_stability_from_jet, NonlinearOptions, NonlinearReport,
+    nonlinear_stability, nonlinear_stability_after, nonlinear_stability_from_jet, NonlinearOptions,
+    NonlinearReport,
 };
 use crate::nonlinear::{NonlinearVerdict, Resonance, RouthianJet};
-use crate::stability::{classify_with, ClassifyOptions, Stability};
+use crate::stability::{classify_with, ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{steady_motion_near, SteadyMotion};
 
 /// A located zero of `D` is kept only if `|D|/scale` is below this there (else it was a pole).
@@ -182,9 +183,10 @@ pub(crate) fn frequencies_only<M: Routhian>(
     })
 }
 
-/// The nonlinear analysis of a member's steady motion.
+/// The nonlinear analysis of a member's steady motion, with its linear report when known (a
+/// branch point's, when the diagram classified it with the options of the analysis).
 pub(crate) type Analyse<'a, M> =
-    dyn Fn(&M, &SteadyMotion) -> Result<NonlinearReport, RouthError> + 'a;
+    dyn Fn(&M, &SteadyMotion, Option<&StabilityReport>) -> Result<NonlinearReport, RouthError> + 'a;
 
 /// One end of a bracket of an indicator: the parameter, the indicator's value and γ there.
 pub(crate) type Bracketed = (f64, Vector3<f64>, f64);
@@ -263,11 +265,13 @@ const END_PROBES: [f64; 3] = [1e-6, 1e-4, 1e-2];
 /// point (ω₁ = ω₂) and the first point of the stretch is found too. A branch point whose
 /// analysis fails with [`RouthError::NotASteadyMotion`] (next to a linear event, where the
 /// diagram classified it on the corrector's word) interrupts the stretch; other errors are
-/// returned.
+/// returned. With `same_linear` the branch points' reports are those `classify` gives (the
+/// diagram was built with these options), and their analyses start from them.
 pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
     family: &F,
     analyse: &Analyse<'_, M>,
     classify: &ClassifyOptions,
+    same_linear: bool,
     diagram: &BifurcationDiagram,
     s_tol: f64,
 ) -> Result<Vec<NonlinearEvent>, RouthError> {
@@ -275,7 +279,7 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
         let (model, p) = family(s);
         let steady = steady_motion_near(&model, *guess, p)?;
         let rep = if full {
-            analyse(&model, &steady)?
+            analyse(&model, &steady, None)?
         } else {
             frequencies_only(&model, &steady, classify)?
         };
@@ -340,7 +344,7 @@ pub(crate) fn branch_events<M: Routhian, F: Fn(f64) -> (M, f64)>(
                 continue;
             }
             let (model, _) = family(q.s);
-            let rep = match analyse(&model, &q.steady) {
+            let rep = match analyse(&model, &q.steady, same_linear.then_some(&q.report)) {
                 Ok(rep) => rep,
                 Err(RouthError::NotASteadyMotion { .. }) => {
                     prev = None;
@@ -395,11 +399,12 @@ where
         });
     }
     opts.validate()?;
-    let analyse = |model: &M, steady: &SteadyMotion| {
+    // The diagram's options are not known: each analysis classifies its steady motion.
+    let analyse = |model: &M, steady: &SteadyMotion, _: Option<&StabilityReport>| {
         let jets = |w: &[Jet; 3], g: &[Jet; 3], p: f64| r(model, w, g, p);
         nonlinear_stability_from_jet(model, steady, &jets as &dyn RouthianJet, opts)
     };
-    branch_events(&family, &analyse, &opts.classify, diagram, s_tol)
+    branch_events(&family, &analyse, &opts.classify, false, diagram, s_tol)
 }
 
 /// [`nonlinear_stability`], and where the steady motion is next to a linear event (the diagram
@@ -456,8 +461,23 @@ pub(crate) fn add_to_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
         return Ok(());
     };
     needs_tape(&family(first.s).0, "ContinuationOptions::nonlinear")?;
-    let analyse = |model: &M, steady: &SteadyMotion| analyse_with_tape(model, steady, nl);
-    let events = branch_events(family, &analyse, &nl.classify, diagram, opts.event_tol)?;
+    let analyse = |model: &M, steady: &SteadyMotion, linear: Option<&StabilityReport>| match linear
+    {
+        Some(l) => nonlinear_stability_after(model, steady, Some(l), nl),
+        None => analyse_with_tape(model, steady, nl),
+    };
+    // The branch points were classified with `opts.classify` (relaxed next to a linear event as
+    // `analyse_with_tape` relaxes it): their reports are the analysis's own linear test when the
+    // options agree.
+    let same_linear = opts.classify == nl.classify;
+    let events = branch_events(
+        family,
+        &analyse,
+        &nl.classify,
+        same_linear,
+        diagram,
+        opts.event_tol,
+    )?;
     diagram
         .events
         .extend(events.iter().map(NonlinearEvent::to_branch_event));
