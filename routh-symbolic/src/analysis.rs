@@ -115,10 +115,17 @@ impl Plan {
             needed[o.index()] = true;
         }
         let mut uses = vec![0u32; n];
-        for i in (0..n).rev() {
+        // Backwards by hand, without `rev()` or `flatten()` (each a call per step unoptimised).
+        let mut i = n;
+        while i > 0 {
+            i -= 1;
             if needed[i] {
                 let (a, b) = kids(nodes[i]);
-                for c in [a, b].into_iter().flatten() {
+                if let Some(c) = a {
+                    needed[c.index()] = true;
+                    uses[c.index()] += 1;
+                }
+                if let Some(c) = b {
                     needed[c.index()] = true;
                     uses[c.index()] += 1;
                 }
@@ -134,11 +141,17 @@ impl Plan {
         for o in outputs {
             plan.emit[o.index()] = true;
         }
-        for i in (0..n).rev() {
+        let mut i = n;
+        while i > 0 {
+            i -= 1;
             if plan.emit[i] {
                 let id = Id::from_index(i);
                 let (a, b) = kids(nodes[i]);
-                for c in [a, b].into_iter().flatten() {
+                if let Some(c) = a {
+                    let c = plan.folds(g, id, c).unwrap_or(c);
+                    plan.emit[c.index()] = true;
+                }
+                if let Some(c) = b {
                     let c = plan.folds(g, id, c).unwrap_or(c);
                     plan.emit[c.index()] = true;
                 }
@@ -153,18 +166,23 @@ impl Plan {
     /// At most one operand is folded: the second when both could be (`(−y) + (−x)` is written
     /// `a - x` with `a = −y` a statement of its own), none when both are the same node.
     pub fn folds(&self, g: &Graph, parent: Id, child: Id) -> Option<Id> {
-        let fold = |c: Id| match (g.node(parent), g.node(c)) {
-            (Node::Add(..), Node::Neg(x)) => Some(x),
-            (Node::Mul(..), Node::Recip(x)) if self.uses[c.index()] == 1 => Some(x),
+        // Called for every operand of every statement, several times: the cheap tests first.
+        let nodes = g.nodes();
+        if !matches!(nodes[child.index()], Node::Neg(_) | Node::Recip(_)) {
+            return None;
+        }
+        let (add, b) = match nodes[parent.index()] {
+            Node::Add(a, b) if a != b => (true, b),
+            Node::Mul(a, b) if a != b => (false, b),
+            _ => return None,
+        };
+        let fold = |c: Id| match nodes[c.index()] {
+            Node::Neg(x) if add => Some(x),
+            Node::Recip(x) if !add && self.uses[c.index()] == 1 => Some(x),
             _ => None,
         };
         let x = fold(child)?;
-        match g.node(parent) {
-            Node::Add(a, b) | Node::Mul(a, b) if a != b => {
-                (child == b || fold(b).is_none()).then_some(x)
-            }
-            _ => None,
-        }
+        (child == b || fold(b).is_none()).then_some(x)
     }
 
     /// The values a node reads when written out (folded children replaced by their operand).
