@@ -86,12 +86,34 @@ fn lit(out: &mut String, c: f64) {
 
 /// `__t<id>`.
 fn local(out: &mut String, id: Id) {
-    let _ = write!(out, "__t{}", id.index());
+    name(out, b't', id.index());
 }
 
 /// `__v<var>`: the local an input is read into.
 fn input_local(out: &mut String, v: Var) {
-    let _ = write!(out, "__v{}", v.index());
+    name(out, b'v', v.index());
+}
+
+/// `__<letter><n>`, formed by hand in one buffer and written in one piece: the names of locals
+/// are most of the text, and `write!` (or a `push` per digit) costs several times as much
+/// unoptimised.
+fn name(out: &mut String, letter: u8, mut n: usize) {
+    let mut buf = [b'_'; 24];
+    let mut i = buf.len();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    i -= 1;
+    buf[i] = letter;
+    // `buf[i - 2..i]` is `__` already.
+    if let Ok(s) = std::str::from_utf8(&buf[i - 2..]) {
+        out.push_str(s);
+    }
 }
 
 impl<'a> Emitter<'a> {
@@ -261,11 +283,8 @@ impl<'a> Emitter<'a> {
         let plan = Plan::new(g, &all);
         // Inputs first (only those read), then the nodes in order.
         let nodes = g.nodes();
-        for (i, &emitted) in plan.emit.iter().enumerate() {
-            if !emitted {
-                continue;
-            }
-            if let Node::Var(v) = nodes[i] {
+        for &id in &plan.emitted {
+            if let Node::Var(v) = nodes[id.index()] {
                 out.push_str("let ");
                 input_local(out, v);
                 out.push_str(": __F64 = ");

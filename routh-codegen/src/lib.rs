@@ -168,10 +168,15 @@ pub fn expand_with(
     // …;`, which name no alias but `__F64` (in a literal such as `__F64::NAN`; every method's
     // signature names it too): most of the text is statements, and searching all of it for
     // every alias was a tenth of an unoptimised expansion.
-    let skeleton: String = (lag_text.lines().chain(routh_text.lines()))
-        .filter(|line| !line.starts_with("let __t") && !line.starts_with("let __v"))
-        .collect::<Vec<_>>()
-        .join("\n");
+    let mut skeleton = String::new();
+    for text in [&lag_text, &routh_text] {
+        for line in text.split('\n') {
+            if !(line.starts_with("let __t") || line.starts_with("let __v")) {
+                skeleton.push_str(line);
+                skeleton.push('\n');
+            }
+        }
+    }
     let used = |alias: &str| skeleton.contains(alias);
     let used_aliases: Vec<_> = emit::ALIASES.iter().filter(|(a, _)| used(a)).collect();
     let lag = lex(lag_text)?;

@@ -41,17 +41,17 @@ pub fn latency(g: &Graph, plan: &Plan, id: Id) -> u32 {
 /// needed), each group in latency order (see the module documentation). Every statement
 /// appears once, after the statements it reads.
 pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
-    // The statements, and the dense index of each (`usize::MAX` for leaves), in plain loops:
-    // this runs once per generated method, unoptimised in a user's debug build, where
-    // iterator adaptors over the whole graph cost more than the scheduling itself.
+    // The statements, and the dense index of each (`usize::MAX` for leaves), in plain loops
+    // over the emitted nodes only: this runs once per generated method, unoptimised in a
+    // user's debug build, where walking the whole graph cost more than the scheduling itself.
     let n = plan.emit.len();
     let nodes = g.nodes();
-    let mut stmts: Vec<Id> = Vec::new();
+    let mut stmts: Vec<Id> = Vec::with_capacity(plan.emitted.len());
     let mut slot = vec![usize::MAX; n];
-    for i in 0..n {
-        if plan.emit[i] && !matches!(nodes[i], Node::Const(_) | Node::Var(_)) {
-            slot[i] = stmts.len();
-            stmts.push(Id::from_index(i));
+    for &id in &plan.emitted {
+        if !matches!(nodes[id.index()], Node::Const(_) | Node::Var(_)) {
+            slot[id.index()] = stmts.len();
+            stmts.push(id);
         }
     }
     // The statements each statement reads (at most two; `x * x` reads `x` once), and who reads
@@ -95,7 +95,10 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
         }
     }
     let users = |k: usize| &user_list[readers[k] as usize..readers[k + 1] as usize];
-    let lat: Vec<u32> = stmts.iter().map(|&id| latency(g, plan, id)).collect();
+    let mut lat: Vec<u32> = Vec::with_capacity(stmts.len());
+    for &id in &stmts {
+        lat.push(latency(g, plan, id));
+    }
     // Height: the latency-weighted longest path from a statement to an output (users come
     // after their operands in id order, so one backward sweep).
     let mut height = vec![0u32; stmts.len()];
@@ -132,7 +135,10 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
         }
     }
 
-    let mut waiting: Vec<u32> = arity.iter().map(|&m| u32::from(m)).collect();
+    let mut waiting: Vec<u32> = Vec::with_capacity(stmts.len());
+    for &m in &arity {
+        waiting.push(u32::from(m));
+    }
     // Cycle (in issue slots: ISSUE_WIDTH per cycle) at which each operand's value is ready.
     let mut ready_at = vec![0u64; stmts.len()];
     let mut groups = vec![Vec::new(); parts.len().max(1)];

@@ -101,6 +101,9 @@ pub struct Plan {
     pub uses: Vec<u32>,
     /// Whether each node is emitted as a statement (constants and variables included).
     pub emit: Vec<bool>,
+    /// The nodes [`Plan::emit`] marks, in increasing id: a generator walks these rather than
+    /// the whole of `emit` (once per generated method, unoptimised in a user's debug build).
+    pub emitted: Vec<Id>,
 }
 
 impl Plan {
@@ -137,6 +140,7 @@ impl Plan {
         let mut plan = Plan {
             uses,
             emit: vec![false; n],
+            emitted: Vec::new(),
         };
         for o in outputs {
             plan.emit[o.index()] = true;
@@ -145,7 +149,9 @@ impl Plan {
         while i > 0 {
             i -= 1;
             if plan.emit[i] {
+                // Final: only the nodes after it (its users) mark it.
                 let id = Id::from_index(i);
+                plan.emitted.push(id);
                 let (a, b) = kids(nodes[i]);
                 if let Some(c) = a {
                     let c = plan.folds(g, id, c).unwrap_or(c);
@@ -157,6 +163,7 @@ impl Plan {
                 }
             }
         }
+        plan.emitted.reverse();
         plan
     }
 
@@ -210,8 +217,40 @@ impl Plan {
 pub fn extra_cost(g: &Graph, candidate: Id, base: &[Id]) -> usize {
     let mut roots = base.to_vec();
     roots.push(candidate);
-    let with = schedule(g, &roots).len();
-    with - schedule(g, base).len()
+    let with = needed_operations(g, &roots);
+    with - needed_operations(g, base)
+}
+
+/// `schedule(g, outputs).len()`, counted in plain loops (it runs on the whole graph for each
+/// candidate form of R, unoptimised in a user's debug build).
+fn needed_operations(g: &Graph, outputs: &[Id]) -> usize {
+    let Some(max) = outputs.iter().max() else {
+        return 0;
+    };
+    let nodes = g.nodes();
+    let mut need = vec![false; max.index() + 1];
+    for o in outputs {
+        need[o.index()] = true;
+    }
+    let mut count = 0;
+    let mut i = need.len();
+    while i > 0 {
+        i -= 1;
+        if !need[i] {
+            continue;
+        }
+        let (a, b) = kids(nodes[i]);
+        if let Some(a) = a {
+            need[a.index()] = true;
+        }
+        if let Some(b) = b {
+            need[b.index()] = true;
+        }
+        if a.is_some() {
+            count += 1;
+        }
+    }
+    count
 }
 
 /// Floating-point operations of the straight-line code written for a [`Plan`]: a subtraction
