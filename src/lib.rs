@@ -104,4 +104,9 @@ pub mod __private {
     /// `sign(x)` with `sign(0) = 0`: the derivative of `abs` (the one definition, in
     /// `routh-tape`).
     pub use routh_tape::sign;
+
+    /// What the derive's `DerivedFormulas::latex` returns, and the struct's text it prints
+    /// the formulas from on the first call.
+    pub use routh_core::LatexFormulas;
+    pub use routh_runtime::DerivedLatex;
 }

@@ -611,3 +611,35 @@ fn fluid_body() {
         .matrix("pot", &b.pot);
     assert_eq!(check("body in a fluid", &b, &env), 7);
 }
+
+/// The derive prints its LaTeX at run time, on the first call, from the struct's text it emits
+/// (its fields and `#[lagrangian]` attributes): the same formulas as the printer gives on the
+/// declaration itself, symbols of the fields included (the gyrostat's `I`).
+#[test]
+fn printed_at_run_time_as_from_the_declaration() {
+    let twin = test_models::Gyrostat::random(&mut ChaCha8Rng::seed_from_u64(3));
+    let d = DiagonalEllipsoid::random(&mut ChaCha8Rng::seed_from_u64(5));
+    let models = [
+        (derived_models::GYROSTAT_SRC, Gyrostat::from(&twin).latex()),
+        (derived_models::DIAGONAL_ELLIPSOID_SRC, d.latex()),
+    ];
+    for (src, f) in models {
+        let file: syn::File = syn::parse_str(src).expect("the declaration parses");
+        let item = (file.items.into_iter())
+            .find_map(|i| match i {
+                syn::Item::Struct(s) => Some(s),
+                _ => None,
+            })
+            .expect("a struct");
+        let di: syn::DeriveInput =
+            syn::parse2(quote::ToTokens::into_token_stream(item)).expect("a DeriveInput");
+        let m = routh_codegen::analyse(&di).expect("the model analyses");
+        let t = routh_codegen::latex::latex_formulas(&m, &m.latex_symbols);
+        assert!(!f.lagrangian.is_empty());
+        assert_eq!(f.lagrangian, t.lagrangian);
+        assert_eq!(f.psi_dot, t.psi_dot);
+        assert_eq!(f.routhian, t.routhian);
+        assert_eq!(f.amended_potential, t.amended_potential);
+        assert_eq!((f.a, f.g, f.c), (t.a, t.g, t.c));
+    }
+}

@@ -86,12 +86,34 @@ fn lit(out: &mut String, c: f64) {
 
 /// `__t<id>`.
 fn local(out: &mut String, id: Id) {
-    let _ = write!(out, "__t{}", id.index());
+    name(out, b't', id.index());
 }
 
 /// `__v<var>`: the local an input is read into.
 fn input_local(out: &mut String, v: Var) {
-    let _ = write!(out, "__v{}", v.index());
+    name(out, b'v', v.index());
+}
+
+/// `__<letter><n>`, formed by hand in one buffer and written in one piece: the names of locals
+/// are most of the text, and `write!` (or a `push` per digit) costs several times as much
+/// unoptimised.
+fn name(out: &mut String, letter: u8, mut n: usize) {
+    let mut buf = [b'_'; 24];
+    let mut i = buf.len();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    i -= 1;
+    buf[i] = letter;
+    // `buf[i - 2..i]` is `__` already.
+    if let Ok(s) = std::str::from_utf8(&buf[i - 2..]) {
+        out.push_str(s);
+    }
 }
 
 impl<'a> Emitter<'a> {
@@ -171,8 +193,10 @@ impl<'a> Emitter<'a> {
     /// 2026-11-26): the gyrostat's `bundle_and_system` compiles to 501 instructions instead of
     /// 521, and its `bundle` then `from_bundle` runs 6 % faster; the ellipsoid's runs 2–3 % slower.
     fn commutative(&self, out: &mut String, a: Id, op: &str, b: Id, rank: &[u32]) {
-        let key = |x: Id| (rank.get(x.index()).copied().unwrap_or(0), x);
-        let (first, second) = if key(a) > key(b) { (a, b) } else { (b, a) };
+        let rank_of = |x: Id| rank.get(x.index()).map_or(0, |&r| r);
+        let (ra, rb) = (rank_of(a), rank_of(b));
+        let a_first = ra > rb || (ra == rb && a.index() > b.index());
+        let (first, second) = if a_first { (a, b) } else { (b, a) };
         self.binary(out, first, op, second);
     }
 
@@ -258,8 +282,9 @@ impl<'a> Emitter<'a> {
         let all: Vec<Id> = parts.iter().flat_map(|p| p.iter().copied()).collect();
         let plan = Plan::new(g, &all);
         // Inputs first (only those read), then the nodes in order.
-        for (i, _) in plan.emit.iter().enumerate().filter(|(_, &e)| e) {
-            if let Node::Var(v) = g.node(Id::from_index(i)) {
+        let nodes = g.nodes();
+        for &id in &plan.emitted {
+            if let Node::Var(v) = nodes[id.index()] {
                 out.push_str("let ");
                 input_local(out, v);
                 out.push_str(": __F64 = ");

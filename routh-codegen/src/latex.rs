@@ -1,7 +1,8 @@
 //! The derived formulas in LaTeX and in SymPy's syntax, from the same graph as the generated
-//! code: the strings behind `DerivedFormulas::latex()` (emitted as consts by the derive), and
-//! what a run-time model built from a [`Model`] returns — both call [`latex_formulas`]; the
-//! SymPy strings ([`sympy_formulas`]) are printed for run-time models only, when asked for.
+//! code: the strings behind `DerivedFormulas::latex()` (printed at run time, on the first call,
+//! from the struct's text the derive emits), and what a run-time model built from a [`Model`]
+//! returns — both call [`latex_formulas`]; the SymPy strings ([`sympy_formulas`]) are printed
+//! for run-time models only, when asked for.
 
 use std::collections::HashMap;
 

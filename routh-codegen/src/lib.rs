@@ -168,10 +168,15 @@ pub fn expand_with(
     // …;`, which name no alias but `__F64` (in a literal such as `__F64::NAN`; every method's
     // signature names it too): most of the text is statements, and searching all of it for
     // every alias was a tenth of an unoptimised expansion.
-    let skeleton: String = (lag_text.lines().chain(routh_text.lines()))
-        .filter(|line| !line.starts_with("let __t") && !line.starts_with("let __v"))
-        .collect::<Vec<_>>()
-        .join("\n");
+    let mut skeleton = String::new();
+    for text in [&lag_text, &routh_text] {
+        for line in text.split('\n') {
+            if !(line.starts_with("let __t") || line.starts_with("let __v")) {
+                skeleton.push_str(line);
+                skeleton.push('\n');
+            }
+        }
+    }
     let used = |alias: &str| skeleton.contains(alias);
     let used_aliases: Vec<_> = emit::ALIASES.iter().filter(|(a, _)| used(a)).collect();
     let lag = lex(lag_text)?;
@@ -203,14 +208,9 @@ pub fn expand_with(
     let o = &model.outputs;
     let [f_l, f_ur, f_pd] = [o.lagrangian, o.amended_potential, o.psi_dot_at_rest]
         .map(|id| routh_symbolic::to_infix(graph, id));
-    let tex = latex::latex_formulas(&model, &model.latex_symbols);
-    let (t_l, t_pd, t_r, t_ur) = (
-        &tex.lagrangian,
-        &tex.psi_dot,
-        &tex.routhian,
-        &tex.amended_potential,
-    );
-    let (t_a, t_g, t_c) = (&tex.a, &tex.g, &tex.c);
+    // The LaTeX is printed at run time, on the first call of `latex()`, from the struct's text
+    // (`routh::__private::DerivedLatex`): printing it here was a fifth of the expansion.
+    let source = latex_source(di);
     Ok(quote! {
         #[doc(hidden)]
         #[allow(non_upper_case_globals, unused_qualifications, clippy::all, clippy::pedantic, clippy::nursery)]
@@ -230,16 +230,29 @@ pub fn expand_with(
                 const LAGRANGIAN: &'static str = #f_l;
                 const AMENDED_POTENTIAL: &'static str = #f_ur;
                 const PSI_DOT_AT_REST: &'static str = #f_pd;
-                const LATEX_LAGRANGIAN: &'static str = #t_l;
-                const LATEX_PSI_DOT: &'static str = #t_pd;
-                const LATEX_ROUTHIAN: &'static str = #t_r;
-                const LATEX_AMENDED_POTENTIAL: &'static str = #t_ur;
-                const LATEX_A: &'static str = #t_a;
-                const LATEX_G: &'static str = #t_g;
-                const LATEX_C: &'static str = #t_c;
+                fn latex(&self) -> #krate::__private::LatexFormulas {
+                    static __LATEX: #krate::__private::DerivedLatex =
+                        #krate::__private::DerivedLatex::new(#source);
+                    __LATEX.get()
+                }
             }
         };
     })
+}
+
+/// The text `DerivedFormulas::latex` prints the formulas from at run time: the struct with
+/// only its `#[lagrangian(...)]` attributes (on the struct and its fields), which is all that
+/// [`analyse`] reads.
+fn latex_source(di: &syn::DeriveInput) -> String {
+    let ours = |attrs: &mut Vec<syn::Attribute>| attrs.retain(|a| a.path().is_ident("lagrangian"));
+    let mut di = di.clone();
+    ours(&mut di.attrs);
+    if let syn::Data::Struct(s) = &mut di.data {
+        for f in s.fields.iter_mut() {
+            ours(&mut f.attrs);
+        }
+    }
+    quote!(#di).to_string()
 }
 
 /// On error: the errors as `compile_error!`s plus stub impls of both traits, so that code using

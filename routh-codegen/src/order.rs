@@ -9,8 +9,6 @@
 //! and everything it needs come first; the work independent of it fills its latency.
 
 use routh_symbolic::{Func, Graph, Id, Node, Plan};
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
 
 /// Operations the simulated machine issues per cycle (two floating-point ports).
 pub const ISSUE_WIDTH: u32 = 2;
@@ -43,23 +41,34 @@ pub fn latency(g: &Graph, plan: &Plan, id: Id) -> u32 {
 /// needed), each group in latency order (see the module documentation). Every statement
 /// appears once, after the statements it reads.
 pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
-    let stmts: Vec<Id> = plan.statements(g).collect();
+    // The statements, and the dense index of each (`usize::MAX` for leaves), in plain loops
+    // over the emitted nodes only: this runs once per generated method, unoptimised in a
+    // user's debug build, where walking the whole graph cost more than the scheduling itself.
     let n = plan.emit.len();
-    // Dense index of each statement; `usize::MAX` for leaves.
+    let nodes = g.nodes();
+    let mut stmts: Vec<Id> = Vec::with_capacity(plan.emitted.len());
     let mut slot = vec![usize::MAX; n];
-    for (k, id) in stmts.iter().enumerate() {
-        slot[id.index()] = k;
+    for &id in &plan.emitted {
+        if !matches!(nodes[id.index()], Node::Const(_) | Node::Var(_)) {
+            slot[id.index()] = stmts.len();
+            stmts.push(id);
+        }
     }
     // The statements each statement reads (at most two; `x * x` reads `x` once), and who reads
-    // each, in flat arrays: this runs once per generated method, unoptimised in a user's debug
-    // build, where a `Vec` per statement was most of its cost.
+    // each, in flat arrays (a `Vec` per statement was most of the cost).
     let mut operands: Vec<[usize; 2]> = Vec::with_capacity(stmts.len());
     let mut arity: Vec<u8> = Vec::with_capacity(stmts.len());
     let mut readers = vec![0u32; stmts.len() + 1];
     for &id in &stmts {
         let mut ops = [usize::MAX; 2];
         let mut m = 0usize;
-        for c in g.node(id).children() {
+        let (a, b) = match nodes[id.index()] {
+            Node::Const(_) | Node::Var(_) => (None, None),
+            Node::Add(a, b) | Node::Mul(a, b) | Node::Powf(a, b) => (Some(a), Some(b)),
+            Node::Neg(a) | Node::Recip(a) | Node::Powi(a, _) | Node::Func(_, a) => (Some(a), None),
+        };
+        for c in [a, b] {
+            let Some(c) = c else { break };
             let s = slot[plan.folds(g, id, c).unwrap_or(c).index()];
             if s != usize::MAX && (m == 0 || ops[m - 1] != s) {
                 ops[m] = s;
@@ -86,12 +95,20 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
         }
     }
     let users = |k: usize| &user_list[readers[k] as usize..readers[k + 1] as usize];
-    let lat: Vec<u32> = stmts.iter().map(|&id| latency(g, plan, id)).collect();
+    let mut lat: Vec<u32> = Vec::with_capacity(stmts.len());
+    for &id in &stmts {
+        lat.push(latency(g, plan, id));
+    }
     // Height: the latency-weighted longest path from a statement to an output (users come
     // after their operands in id order, so one backward sweep).
     let mut height = vec![0u32; stmts.len()];
-    for k in (0..stmts.len()).rev() {
-        let above = users(k).iter().map(|&u| height[u]).max().unwrap_or(0);
+    let mut k = stmts.len();
+    while k > 0 {
+        k -= 1;
+        let mut above = 0;
+        for &u in users(k) {
+            above = above.max(height[u]);
+        }
         height[k] = lat[k] + above;
     }
     // Which part first needs each statement.
@@ -118,39 +135,45 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
         }
     }
 
-    let mut waiting: Vec<u32> = arity.iter().map(|&m| u32::from(m)).collect();
+    let mut waiting: Vec<u32> = Vec::with_capacity(stmts.len());
+    for &m in &arity {
+        waiting.push(u32::from(m));
+    }
     // Cycle (in issue slots: ISSUE_WIDTH per cycle) at which each operand's value is ready.
     let mut ready_at = vec![0u64; stmts.len()];
     let mut groups = vec![Vec::new(); parts.len().max(1)];
-    // Statements whose operands are all written, by part: (ready slot, statement).
-    let mut pending: Vec<BinaryHeap<Reverse<(u64, usize)>>> = vec![BinaryHeap::new(); groups.len()];
+    // Statements whose operands are all written, by part: (ready slot, statement), earliest
+    // first, packed into one integer (see [`Key`]).
+    let mut pending: Vec<Heap> = vec![Heap::default(); groups.len()];
     for (k, w) in waiting.iter().enumerate() {
         if *w == 0 {
-            pending[part_of[k]].push(Reverse((0, k)));
+            pending[part_of[k]].push(Key::earliest(0, k));
         }
     }
     let width = u64::from(ISSUE_WIDTH);
     let mut now = 0u64;
     for p in 0..groups.len() {
         // Ready statements of this part: highest first, then the smaller id.
-        let mut ready: BinaryHeap<(u32, Reverse<usize>)> = BinaryHeap::new();
+        let mut ready = Heap::default();
         loop {
-            while let Some(&Reverse((at, k))) = pending[p].peek() {
+            while let Some(key) = pending[p].peek() {
+                let (at, k) = key.of_earliest();
                 if at > now {
                     break;
                 }
                 pending[p].pop();
-                ready.push((height[k], Reverse(k)));
+                ready.push(Key::highest(height[k], k));
             }
-            let Some((_, Reverse(k))) = ready.pop() else {
+            let Some(key) = ready.pop() else {
                 match pending[p].peek() {
-                    Some(&Reverse((at, _))) => {
-                        now = at;
+                    Some(key) => {
+                        now = key.of_earliest().0;
                         continue;
                     }
                     None => break,
                 }
             };
+            let k = key.of_highest();
             groups[p].push(stmts[k]);
             let done = now + u64::from(lat[k]) * width;
             now += 1;
@@ -159,12 +182,99 @@ pub fn latency_order(g: &Graph, plan: &Plan, parts: &[&[Id]]) -> Vec<Vec<Id>> {
                 waiting[u] -= 1;
                 if waiting[u] == 0 {
                     // A later part's statement waits for its part (and is ready by then).
-                    pending[part_of[u]].push(Reverse((ready_at[u], u)));
+                    pending[part_of[u]].push(Key::earliest(ready_at[u], u));
                 }
             }
         }
     }
     groups
+}
+
+/// A statement and its priority packed into one `u64`, the greatest first in a [`Heap`]:
+/// unoptimised, comparing tuples (`(u32, Reverse<usize>)`) was most of the scheduler's cost.
+/// Statement indices and issue slots are far below 2³² (a slot is at most the number of
+/// statements times the longest latency, doubled).
+#[derive(Clone, Copy)]
+struct Key(u64);
+
+const LOW: u64 = u32::MAX as u64;
+
+impl Key {
+    /// Ordered as `(height, Reverse(k))`: the highest statement, then the smaller index.
+    fn highest(height: u32, k: usize) -> Key {
+        Key(u64::from(height) << 32 | (LOW - k as u64))
+    }
+
+    fn of_highest(self) -> usize {
+        (LOW - (self.0 & LOW)) as usize
+    }
+
+    /// Ordered as `Reverse((at, k))`: the earliest ready slot, then the smaller index.
+    fn earliest(at: u64, k: usize) -> Key {
+        Key(!(at << 32 | k as u64))
+    }
+
+    fn of_earliest(self) -> (u64, usize) {
+        let v = !self.0;
+        (v >> 32, (v & LOW) as usize)
+    }
+}
+
+/// A max-heap of [`Key`]s, sifted by hand in safe code: unoptimised, `BinaryHeap` runs the
+/// debug checks of its unsafe moves at every step. The keys of one heap are distinct (each
+/// holds a statement index), so the order they come out in is the same as `BinaryHeap`'s.
+#[derive(Clone, Default)]
+struct Heap(Vec<u64>);
+
+impl Heap {
+    fn push(&mut self, key: Key) {
+        let h = &mut self.0;
+        let mut i = h.len();
+        h.push(key.0);
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            if h[parent] >= key.0 {
+                break;
+            }
+            h[i] = h[parent];
+            i = parent;
+        }
+        h[i] = key.0;
+    }
+
+    fn peek(&self) -> Option<Key> {
+        self.0.first().map(|&k| Key(k))
+    }
+
+    fn pop(&mut self) -> Option<Key> {
+        let h = &mut self.0;
+        let last = h.pop()?;
+        let n = h.len();
+        if n == 0 {
+            return Some(Key(last));
+        }
+        let top = h[0];
+        let mut i = 0;
+        loop {
+            let left = 2 * i + 1;
+            if left >= n {
+                break;
+            }
+            let right = left + 1;
+            let c = if right < n && h[right] > h[left] {
+                right
+            } else {
+                left
+            };
+            if h[c] <= last {
+                break;
+            }
+            h[i] = h[c];
+            i = c;
+        }
+        h[i] = last;
+        Some(Key(top))
+    }
 }
 
 #[cfg(test)]

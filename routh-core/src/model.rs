@@ -436,7 +436,9 @@ pub trait DerivedFormulas {
     const AMENDED_POTENTIAL: &'static str;
     /// `ψ̇(0, γ, p_ψ)` of (38): the rate of rotation about the vertical of a steady motion at γ.
     const PSI_DOT_AT_REST: &'static str;
-    /// [`LatexFormulas::lagrangian`] (emitted by the derive; empty by default).
+    /// [`LatexFormulas::lagrangian`] (empty by default). These consts are what the default
+    /// [`DerivedFormulas::latex`] returns, for a hand-written model; the derive leaves them
+    /// empty and implements `latex` itself, printing the formulas on its first call.
     const LATEX_LAGRANGIAN: &'static str = "";
     /// [`LatexFormulas::psi_dot`].
     const LATEX_PSI_DOT: &'static str = "";

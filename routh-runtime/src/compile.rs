@@ -215,7 +215,7 @@ const ANALYSIS_STACK: usize = 512 << 20;
 /// refused before this ([`check_nesting`], [`check_prefix_runs`]); this is what makes long
 /// flat texts safe whatever thread builds the model. Falls back to the caller's thread when a
 /// thread cannot be started.
-fn on_large_stack<R: Send>(f: impl FnOnce() -> R + Send) -> R {
+pub(crate) fn on_large_stack<R: Send>(f: impl FnOnce() -> R + Send) -> R {
     let f = std::sync::Mutex::new(Some(f));
     let run = || (f.lock().unwrap_or_else(|e| e.into_inner()).take()).map(|f| f());
     let out = std::thread::scope(|s| {

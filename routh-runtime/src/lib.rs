@@ -38,6 +38,7 @@
 #![forbid(unsafe_code)]
 
 mod compile;
+mod derived;
 mod error;
 mod evaluation;
 mod hoist;
@@ -48,6 +49,8 @@ mod param;
 mod results;
 mod toml_file;
 
+#[doc(hidden)]
+pub use derived::DerivedLatex;
 pub use error::ModelError;
 pub use evaluation::Evaluation;
 pub use model::Model;

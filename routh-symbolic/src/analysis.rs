@@ -101,6 +101,9 @@ pub struct Plan {
     pub uses: Vec<u32>,
     /// Whether each node is emitted as a statement (constants and variables included).
     pub emit: Vec<bool>,
+    /// The nodes [`Plan::emit`] marks, in increasing id: a generator walks these rather than
+    /// the whole of `emit` (once per generated method, unoptimised in a user's debug build).
+    pub emitted: Vec<Id>,
 }
 
 impl Plan {
@@ -115,10 +118,17 @@ impl Plan {
             needed[o.index()] = true;
         }
         let mut uses = vec![0u32; n];
-        for i in (0..n).rev() {
+        // Backwards by hand, without `rev()` or `flatten()` (each a call per step unoptimised).
+        let mut i = n;
+        while i > 0 {
+            i -= 1;
             if needed[i] {
                 let (a, b) = kids(nodes[i]);
-                for c in [a, b].into_iter().flatten() {
+                if let Some(c) = a {
+                    needed[c.index()] = true;
+                    uses[c.index()] += 1;
+                }
+                if let Some(c) = b {
                     needed[c.index()] = true;
                     uses[c.index()] += 1;
                 }
@@ -130,20 +140,30 @@ impl Plan {
         let mut plan = Plan {
             uses,
             emit: vec![false; n],
+            emitted: Vec::new(),
         };
         for o in outputs {
             plan.emit[o.index()] = true;
         }
-        for i in (0..n).rev() {
+        let mut i = n;
+        while i > 0 {
+            i -= 1;
             if plan.emit[i] {
+                // Final: only the nodes after it (its users) mark it.
                 let id = Id::from_index(i);
+                plan.emitted.push(id);
                 let (a, b) = kids(nodes[i]);
-                for c in [a, b].into_iter().flatten() {
+                if let Some(c) = a {
+                    let c = plan.folds(g, id, c).unwrap_or(c);
+                    plan.emit[c.index()] = true;
+                }
+                if let Some(c) = b {
                     let c = plan.folds(g, id, c).unwrap_or(c);
                     plan.emit[c.index()] = true;
                 }
             }
         }
+        plan.emitted.reverse();
         plan
     }
 
@@ -153,18 +173,23 @@ impl Plan {
     /// At most one operand is folded: the second when both could be (`(−y) + (−x)` is written
     /// `a - x` with `a = −y` a statement of its own), none when both are the same node.
     pub fn folds(&self, g: &Graph, parent: Id, child: Id) -> Option<Id> {
-        let fold = |c: Id| match (g.node(parent), g.node(c)) {
-            (Node::Add(..), Node::Neg(x)) => Some(x),
-            (Node::Mul(..), Node::Recip(x)) if self.uses[c.index()] == 1 => Some(x),
+        // Called for every operand of every statement, several times: the cheap tests first.
+        let nodes = g.nodes();
+        if !matches!(nodes[child.index()], Node::Neg(_) | Node::Recip(_)) {
+            return None;
+        }
+        let (add, b) = match nodes[parent.index()] {
+            Node::Add(a, b) if a != b => (true, b),
+            Node::Mul(a, b) if a != b => (false, b),
+            _ => return None,
+        };
+        let fold = |c: Id| match nodes[c.index()] {
+            Node::Neg(x) if add => Some(x),
+            Node::Recip(x) if !add && self.uses[c.index()] == 1 => Some(x),
             _ => None,
         };
         let x = fold(child)?;
-        match g.node(parent) {
-            Node::Add(a, b) | Node::Mul(a, b) if a != b => {
-                (child == b || fold(b).is_none()).then_some(x)
-            }
-            _ => None,
-        }
+        (child == b || fold(b).is_none()).then_some(x)
     }
 
     /// The values a node reads when written out (folded children replaced by their operand).
@@ -192,8 +217,40 @@ impl Plan {
 pub fn extra_cost(g: &Graph, candidate: Id, base: &[Id]) -> usize {
     let mut roots = base.to_vec();
     roots.push(candidate);
-    let with = schedule(g, &roots).len();
-    with - schedule(g, base).len()
+    let with = needed_operations(g, &roots);
+    with - needed_operations(g, base)
+}
+
+/// `schedule(g, outputs).len()`, counted in plain loops (it runs on the whole graph for each
+/// candidate form of R, unoptimised in a user's debug build).
+fn needed_operations(g: &Graph, outputs: &[Id]) -> usize {
+    let Some(max) = outputs.iter().max() else {
+        return 0;
+    };
+    let nodes = g.nodes();
+    let mut need = vec![false; max.index() + 1];
+    for o in outputs {
+        need[o.index()] = true;
+    }
+    let mut count = 0;
+    let mut i = need.len();
+    while i > 0 {
+        i -= 1;
+        if !need[i] {
+            continue;
+        }
+        let (a, b) = kids(nodes[i]);
+        if let Some(a) = a {
+            need[a.index()] = true;
+        }
+        if let Some(b) = b {
+            need[b.index()] = true;
+        }
+        if a.is_some() {
+            count += 1;
+        }
+    }
+    count
 }
 
 /// Floating-point operations of the straight-line code written for a [`Plan`]: a subtraction

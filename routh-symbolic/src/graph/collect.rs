@@ -94,11 +94,7 @@ impl Graph {
     /// How many nodes writing `k + Σ (c/common)·x`, times `common`, would add (an estimate that
     /// builds nothing: every step not already in the table counts as one).
     fn new_nodes_for(&self, merged: &[(Id, f64)], k: f64, common: f64) -> usize {
-        let konst = |c: f64| {
-            self.memo
-                .get(&Node::Const(if c == 0.0 { 0.0f64 } else { c }.to_bits()))
-                .copied()
-        };
+        let konst = |c: f64| self.find(&Node::Const(if c == 0.0 { 0.0f64 } else { c }.to_bits()));
         let mut new = 0;
         let mut acc: Option<Option<Id>> = if k != 0.0 { Some(konst(k)) } else { None };
         for &(x, c) in merged {
@@ -106,11 +102,11 @@ impl Graph {
             let term = if c == 1.0 {
                 Some(x)
             } else if c == -1.0 {
-                self.memo.get(&Node::Neg(x)).copied()
+                self.find(&Node::Neg(x))
             } else {
                 konst(c).and_then(|c| {
                     let (a, b) = self.order(c, x);
-                    self.memo.get(&Node::Mul(a, b)).copied()
+                    self.find(&Node::Mul(a, b))
                 })
             };
             if term.is_none() {
@@ -120,7 +116,7 @@ impl Graph {
                 (None, t) => t,
                 (Some(Some(s)), Some(t)) => {
                     let (a, b) = self.order(s, t);
-                    let found = self.memo.get(&Node::Add(a, b)).copied();
+                    let found = self.find(&Node::Add(a, b));
                     new += usize::from(found.is_none());
                     found
                 }

@@ -22,11 +22,10 @@
 mod collect;
 mod diff;
 mod eval;
-mod fx;
 mod rewrite;
+mod table;
 mod tape;
 
-use std::collections::HashMap;
 use std::fmt;
 
 /// The name of a node in a [`Graph`].
@@ -126,7 +125,7 @@ pub struct Graph {
     /// Every node, children before parents; an [`Id`] is an index into it.
     nodes: Vec<Node>,
     /// The hash-cons table: the id of every node in `nodes`.
-    memo: HashMap<Node, Id, fx::FxBuild>,
+    memo: table::Table,
     /// The variables, by slot.
     vars: Vec<VarSlot>,
     /// `∂f/∂v` already computed: `diff_memo[v][f]`, [`Id::NONE`] where not yet (see `diff`).
@@ -198,18 +197,12 @@ impl Graph {
     /// The id of `node`, added if it is new. Only the constructors call this, with a node
     /// they have already simplified.
     fn intern(&mut self, node: Node) -> Id {
-        if let Some(&id) = self.memo.get(&node) {
-            return id;
-        }
-        let id = u32::try_from(self.nodes.len())
-            .ok()
-            .filter(|&i| i != Id::NONE.0)
-            .map(Id)
-            .expect("expression graph exceeds u32 nodes");
-        debug_assert!(node.children().all(|c| c < id));
-        self.nodes.push(node);
-        self.memo.insert(node, id);
-        id
+        self.memo.intern(&mut self.nodes, node)
+    }
+
+    /// The id of `node` if the graph has it (builds nothing).
+    fn find(&self, node: &Node) -> Option<Id> {
+        self.memo.get(&self.nodes, node)
     }
 
     /// A new variable called `name` (names need not be unique; each call is a new variable).

@@ -75,7 +75,7 @@ impl Graph {
             };
             for (part, rest) in [(x, y), (y, x)] {
                 let (m, n) = self.order(part, other);
-                if let Some(&found) = self.memo.get(&Node::Add(m, n)) {
+                if let Some(found) = self.find(&Node::Add(m, n)) {
                     // Written as is: like-term collection (which found nothing to cancel in
                     // `a + b`) would only undo it.
                     return Some(self.add_plain(found, rest));
