@@ -643,3 +643,49 @@ fn printed_at_run_time_as_from_the_declaration() {
         assert_eq!((f.a, f.g, f.c), (t.a, t.g, t.c));
     }
 }
+
+/// A tag the macro below names through `$crate`, a path no text parses back.
+#[derive(Debug, Clone, Default)]
+pub struct Tag;
+
+/// The Lagrange top declared by a `macro_rules!` whose skipped field's type names `$crate`: the
+/// struct's text does not parse back at run time, so the derive prints its LaTeX at expansion.
+macro_rules! lagrange_top_in_a_macro {
+    () => {
+        #[derive(routh::Lagrangian, Debug, Clone)]
+        #[lagrangian(
+            kinetic = 0.5 * (a1 * (omega.x * omega.x + omega.y * omega.y) + c * omega.z * omega.z),
+            potential = mass * g * l * gamma.z,
+        )]
+        struct TaggedTop {
+            #[lagrangian(latex = "A_1")]
+            a1: f64,
+            #[lagrangian(latex = "C")]
+            c: f64,
+            mass: f64,
+            g: f64,
+            l: f64,
+            #[lagrangian(skip)]
+            #[allow(dead_code)]
+            tag: $crate::latex::Tag,
+        }
+    };
+}
+lagrange_top_in_a_macro!();
+
+#[test]
+fn a_struct_declared_by_a_macro_with_crate_paths_prints_its_latex() {
+    let (a1, c, mgl) = (1.3, 0.7, 2.1);
+    let tagged = TaggedTop {
+        a1,
+        c,
+        mass: 1.0,
+        g: 1.0,
+        l: mgl,
+        tag: Tag,
+    };
+    let plain = LagrangeTop::with_mgl(a1, c, mgl);
+    let (t, p) = (tagged.latex(), plain.latex());
+    assert!(!t.lagrangian.is_empty() && !t.c.is_empty(), "{t:#?}");
+    assert_eq!(t, p);
+}

@@ -209,8 +209,39 @@ pub fn expand_with(
     let [f_l, f_ur, f_pd] = [o.lagrangian, o.amended_potential, o.psi_dot_at_rest]
         .map(|id| routh_symbolic::to_infix(graph, id));
     // The LaTeX is printed at run time, on the first call of `latex()`, from the struct's text
-    // (`routh::__private::DerivedLatex`): printing it here was a fifth of the expansion.
+    // (`routh::__private::DerivedLatex`): printing it here was a fifth of the expansion. A text
+    // that does not parse back (tokens only a macro expansion can hold, such as `$crate`) would
+    // print nothing then, so its formulas are printed here instead.
     let source = latex_source(di);
+    let latex_body = if syn::parse_str::<syn::DeriveInput>(&source).is_ok() {
+        quote! {
+            static __LATEX: #krate::__private::DerivedLatex =
+                #krate::__private::DerivedLatex::new(#source);
+            __LATEX.get()
+        }
+    } else {
+        let t = latex::latex_formulas(&model, &model.latex_symbols);
+        let [l, pd, r, ur, a, g, c] = [
+            &t.lagrangian,
+            &t.psi_dot,
+            &t.routhian,
+            &t.amended_potential,
+            &t.a,
+            &t.g,
+            &t.c,
+        ];
+        quote! {
+            #krate::__private::LatexFormulas {
+                lagrangian: ::std::string::String::from(#l),
+                psi_dot: ::std::string::String::from(#pd),
+                routhian: ::std::string::String::from(#r),
+                amended_potential: ::std::string::String::from(#ur),
+                a: ::std::string::String::from(#a),
+                g: ::std::string::String::from(#g),
+                c: ::std::string::String::from(#c),
+            }
+        }
+    };
     Ok(quote! {
         #[doc(hidden)]
         #[allow(non_upper_case_globals, unused_qualifications, clippy::all, clippy::pedantic, clippy::nursery)]
@@ -231,9 +262,7 @@ pub fn expand_with(
                 const AMENDED_POTENTIAL: &'static str = #f_ur;
                 const PSI_DOT_AT_REST: &'static str = #f_pd;
                 fn latex(&self) -> #krate::__private::LatexFormulas {
-                    static __LATEX: #krate::__private::DerivedLatex =
-                        #krate::__private::DerivedLatex::new(#source);
-                    __LATEX.get()
+                    #latex_body
                 }
             }
         };
