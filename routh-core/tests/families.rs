@@ -746,11 +746,15 @@ fn folds_are_located_to_their_own_scale_on_wide_ranges() {
 /// Nothing is lost on a wide range: the events of a Lagrange top (A₁, C, mgl) over
 /// p_ψ ∈ [0, 5], [0, 100] and [0, 1000] are the same, each at its closed form (Maievskii's
 /// Hamiltonian–Hopf point p² = 4A₁mgl, the secular branch point p² = mglC²/(C − A₁), the fold of
-/// circles [`plane_fold`] when C > 4A₁/3) and no other. Steps sized for [0, 1000] are ~10⁴ times
-/// the distance between the Hamiltonian–Hopf point and the branch point of (1, 1.5, 0.7)
-/// (p ≈ 1.673 and 1.775): on the old code both fell in the first step from p = 0 and the
-/// Hamiltonian–Hopf point of (1, 1.5, 0.7), and the fold and the Hamiltonian–Hopf point of
-/// (1, 3, 2), were missing on [0, 1000].
+/// circles [`plane_fold`] when C > 4A₁/3) within `2·event_tol·max(1, |s|)`, no other, and the
+/// count checks agree. Before steps were bounded in the local scale of s, the first step from
+/// p = 0 on [0, 1000] reached p = 10, past the Hamiltonian–Hopf point and the branch point
+/// (0.1 apart for (1, 1.5, 0.7)), where the discriminant of f₂ starts at zero (its double root
+/// at p = 0): every Hamiltonian–Hopf point on [0, 1000] was lost. A branch of circles seeded at
+/// p = 250, whose eigenvalues were relative to the scale there, was taken to reach its axis
+/// before its fold ((1, 3, 2)), or was traced twice ((1, 1.5, 0.7) on [0, 100]: the fold twice);
+/// a step from p = 1 to exactly 2.5, the secular bound of (1, 1.25, 1), hid both of its events
+/// on [0, 100]. Ten of the eighteen diagrams were wrong.
 #[test]
 fn wide_ranges_find_the_events_of_narrow_ones() {
     let mut wrong = Vec::new();

@@ -41,8 +41,8 @@ const LOCATE_BUDGET: usize = 200;
 /// `max(1, |s|)` (the scale events are located in): a quarter. Steps sized for the range alone
 /// (`max_step` of its length) are as long as 50 on [0, 1000], and two events 0.1 apart near
 /// p = 1.7 fall in one step with a test function that is zero at its start (the double root of
-/// `f₂` of a sleeping top at p = 0): no sign change shows them. On [0, 5] the bound is the
-/// `max_step` of the range (0.25), so ordinary diagrams take the same steps.
+/// `f₂` of a sleeping top at p = 0): no sign change shows them. With the default `max_step`
+/// (5 % of the range) the bound never binds on a range of length 5 or less.
 const STEP_S_REL: f64 = 0.25;
 
 /// A converged point of a branch with its tangent and test functions.
