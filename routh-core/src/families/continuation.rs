@@ -572,18 +572,26 @@ pub(crate) fn changes(a: &Node, b: &Node, isolated: bool) -> Vec<Change> {
     out
 }
 
-/// Whether a test function is exactly zero at `n` (an eigenvalue of `K`, their sum on a branch
-/// of circles, the discriminant of `f₂`, the σ component of the tangent): a node on an event
-/// hides it from the sign tests of [`changes`] (`a·b < 0`) on both of its steps, and its verdict
-/// is that of the event. A symmetric body's closed forms land exactly on such nodes: the
-/// secular bound p = 2.5 of the Lagrange top (1, 1.25, 1) after steps of 1 and 1.5.
-pub(crate) fn on_a_zero(n: &Node, isolated: bool) -> bool {
-    let eig = if isolated {
-        n.eig[0] == 0.0 || n.eig[1] == 0.0
-    } else {
-        n.eig[0] + n.eig[1] == 0.0
+/// Whether a test function that is not zero at `a` is exactly zero at `b` (an eigenvalue of
+/// `K`, their sum on a branch of circles, the discriminant of `f₂`, the σ component of the
+/// tangent): a node on an event hides it from the sign tests of [`changes`] (`a·b < 0`) on both
+/// of its steps, and its verdict is that of the event. A symmetric body's closed forms land
+/// exactly on such nodes: the secular bound p = 2.5 of the Lagrange top (1, 1.25, 1) after steps
+/// of 1 and 1.5. (A function zero all along, as the discriminant of a spherical body's double
+/// roots, is no event.)
+pub(crate) fn lands_on_a_zero(a: &Node, b: &Node, isolated: bool) -> bool {
+    let tests = |n: &Node| {
+        let eig = if isolated {
+            n.eig
+        } else {
+            [n.eig[0] + n.eig[1]; 2]
+        };
+        [eig[0], eig[1], n.disc, n.tau_s]
     };
-    eig || n.disc == 0.0 || n.tau_s == 0.0
+    tests(a)
+        .iter()
+        .zip(tests(b))
+        .any(|(x, y)| *x != 0.0 && y == 0.0)
 }
 
 /// The value of the test function of `change` at `n`.

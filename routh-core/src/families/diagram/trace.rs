@@ -4,7 +4,7 @@
 
 use super::builder::{dist, Builder, Switch, Traced};
 use crate::error::RouthError;
-use crate::families::continuation::{changes, on_a_zero, test_value, Change, Ctx, Node};
+use crate::families::continuation::{changes, lands_on_a_zero, test_value, Change, Ctx, Node};
 use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
 use crate::path::{Check, Outcome, Point};
@@ -74,7 +74,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             // the axis the end (`finish` appends the point on the axis).
             // Shorten the step also when two events share it, when the verdict changes with
             // no test function changing sign, or when the new point lies exactly on a zero of a
-            // test function ([`on_a_zero`]).
+            // test function ([`lands_on_a_zero`]).
             let check = |p: &Point<4, Node>, h: f64| {
                 let b = &p.value;
                 if !ctx.isolated && !circle_point(b) {
@@ -88,7 +88,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 let eigen = ch.iter().filter(|c| matches!(c, Change::Eigen(_))).count();
                 let unexplained = ch.is_empty() && a.verdict() != b.verdict();
                 let shared = eigen > 0 && ch.contains(&Change::Discriminant);
-                if (shared || eigen > 1 || unexplained || on_a_zero(b, ctx.isolated)) && h > short {
+                if (shared || eigen > 1 || unexplained || lands_on_a_zero(&a, b, ctx.isolated))
+                    && h > short
+                {
                     Check::Shorten
                 } else {
                     Check::Accept
