@@ -338,9 +338,10 @@ impl<const N: usize> Path<N> {
     }
 
     /// The next point from `w` along `t`: attempts with the current step (cut to `limit`, the
-    /// distance to the end of the curve's domain), halved after every failure, until one passes
-    /// the corrector, the distance bound, `complete` (which gives the point's tangent), the
-    /// tangent cosine and `check`; then the step for the next point is adapted.
+    /// distance to the end of the curve's domain or the caller's longest step from `w`), halved
+    /// after every failure, until one passes the corrector, the distance bound, `complete` (which
+    /// gives the point's tangent), the tangent cosine and `check`; then the step for the next
+    /// point is adapted.
     pub fn step<X, Y, E>(
         &mut self,
         w: &SVector<f64, N>,

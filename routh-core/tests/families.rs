@@ -742,3 +742,62 @@ fn folds_are_located_to_their_own_scale_on_wide_ranges() {
         }
     }
 }
+
+/// Nothing is lost on a wide range: the events of a Lagrange top (A₁, C, mgl) over
+/// p_ψ ∈ [0, 5], [0, 100] and [0, 1000] are the same, each at its closed form (Maievskii's
+/// Hamiltonian–Hopf point p² = 4A₁mgl, the secular branch point p² = mglC²/(C − A₁), the fold of
+/// circles [`plane_fold`] when C > 4A₁/3) within `2·event_tol·max(1, |s|)`, no other, and the
+/// count checks agree. Before steps were bounded in the local scale of s, the first step from
+/// p = 0 on [0, 1000] reached p = 10, past the Hamiltonian–Hopf point and the branch point
+/// (0.1 apart for (1, 1.5, 0.7)), where the discriminant of f₂ starts at zero (its double root
+/// at p = 0): every Hamiltonian–Hopf point on [0, 1000] was lost. A branch of circles seeded at
+/// p = 250, whose eigenvalues were relative to the scale there, was taken to reach its axis
+/// before its fold ((1, 3, 2)), or was traced twice ((1, 1.5, 0.7) on [0, 100]: the fold twice);
+/// a step from p = 1 to exactly 2.5, the secular bound of (1, 1.25, 1), hid both of its events
+/// on [0, 100]. Ten of the eighteen diagrams were wrong.
+#[test]
+fn wide_ranges_find_the_events_of_narrow_ones() {
+    let mut wrong = Vec::new();
+    for (a1, c, mgl) in [
+        (1.0, 1.5, 0.7),
+        (1.0, 3.0, 2.0),
+        (1.0, 1.25, 1.0),
+        (2.0, 2.5, 1.3),
+        (1.0, 1.2, 1.0),
+        (1.5, 4.0, 0.3),
+    ] {
+        let top = HeavyTop::lagrange(a1, c, mgl);
+        let mut exact = vec![
+            (EventKind::HamiltonianHopf, (4.0 * a1 * mgl).sqrt()),
+            (EventKind::BranchPoint, (mgl * c * c / (c - a1)).sqrt()),
+        ];
+        if c > 4.0 * a1 / 3.0 {
+            exact.push((EventKind::Fold, plane_fold(a1, c, mgl).0));
+        }
+        exact.sort_by(|x, y| x.1.total_cmp(&y.1));
+        for hi in [5.0, 100.0, 1000.0] {
+            let what = format!("A₁ = {a1}, C = {c}, mgl = {mgl} on [0, {hi}]");
+            let d = bifurcation_diagram(
+                |p| (top.clone(), p),
+                (0.0, hi),
+                &ContinuationOptions::default(),
+            )
+            .unwrap();
+            let found: Vec<(EventKind, f64)> = d.events.iter().map(|e| (e.kind, e.s)).collect();
+            let kinds = |v: &[(EventKind, f64)]| v.iter().map(|e| e.0).collect::<Vec<_>>();
+            let located = found.len() == exact.len()
+                && found
+                    .iter()
+                    .zip(&exact)
+                    .all(|(f, e)| f.0 == e.0 && (f.1 - e.1).abs() <= 2e-10 * e.1.abs().max(1.0));
+            println!("{what}: {found:?}");
+            if !located || kinds(&found) != kinds(&exact) || !d.consistent() {
+                wrong.push(format!(
+                    "{what}: found {found:?}, closed forms {exact:?}, counts {}",
+                    d.consistent()
+                ));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{wrong:#?}");
+}

@@ -37,6 +37,14 @@ pub(crate) const CORRECTOR_MAX_ITER: usize = 16;
 /// Re-solves of the event locator on one step before it returns the better end so far.
 const LOCATE_BUDGET: usize = 200;
 
+/// The largest change of `s` on one step, relative to the local scale of the parameter
+/// `max(1, |s|)` (the scale events are located in): a quarter. Steps sized for the range alone
+/// (`max_step` of its length) are as long as 50 on [0, 1000], and two events 0.1 apart near
+/// p = 1.7 fall in one step with a test function that is zero at its start (the double root of
+/// `f₂` of a sleeping top at p = 0): no sign change shows them. With the default `max_step`
+/// (5 % of the range) the bound never binds on a range of length 5 or less.
+const STEP_S_REL: f64 = 0.25;
+
 /// A converged point of a branch with its tangent and test functions.
 #[derive(Debug, Clone)]
 pub(crate) struct Node {
@@ -46,8 +54,14 @@ pub(crate) struct Node {
     pub tau_g: Vector3<f64>,
     /// σ part of the unit tangent.
     pub tau_s: f64,
-    /// Eigenvalues of `K`, ascending.
+    /// Eigenvalues of `K`, ascending, relative to [`Node::scale`].
     pub eig: [f64; 2],
+    /// The tangential scale at the point itself ([`Local::scale`]; the branch's where it is not
+    /// positive and finite), to which `eig` and the zero tests on `jac` are relative. Not the
+    /// branch's scale (set at its first point): over a wide range that point can be a seed
+    /// where the Routh function is 10⁵ times larger than at the events, and eigenvalues relative
+    /// to it look zero long before they are.
+    pub scale: f64,
     /// Relative discriminant of `f₂` in `λ²`.
     pub disc: f64,
     pub point: BranchSample,
@@ -65,7 +79,7 @@ impl Node {
         self.point.report.degree_of_instability == 2 && self.verdict() != Stability::Degenerate
     }
     /// How many eigenvalues of `K` are zero: below [`EIGEN_REL`] relative to the tangential
-    /// scale of the branch (`eig` is already divided by it; docs/method.md §5).
+    /// scale at the point (`eig` is already divided by it; docs/method.md §5).
     pub fn eig_zeros(&self) -> usize {
         ZeroTest::relative(EIGEN_REL, 1.0).count(&self.eig)
     }
@@ -279,13 +293,19 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             r => r.map_err(at)?,
         };
         let disc = relative_discriminant(&m, gamma, p).map_err(at)?;
-        let sc = self.scale.max(f64::MIN_POSITIVE);
+        let own = e.local.scale();
+        let sc = if own > 0.0 && own.is_finite() {
+            own
+        } else {
+            self.scale.max(f64::MIN_POSITIVE)
+        };
         Ok(Some(Node {
             gamma: *gamma,
             s,
             tau_g,
             tau_s,
             eig: [eig[0] / sc, eig[1] / sc],
+            scale: sc,
             disc,
             point: BranchSample { s, steady, report },
             jac,
@@ -390,8 +410,8 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
     /// event ([`Local::scale`] at `a`), not the branch's (set at its first point, possibly at the
     /// far end of a wide range where the Routh function is a thousandfold larger): at a fold an
     /// error `r` in the residual moves the point by `r/|∂F/∂s|` in `s`, so a residual relative
-    /// to a larger scale places the event further off. The node returned has its test
-    /// functions relative to the branch's scale, as every node of the branch.
+    /// to a larger scale places the event further off. The test functions of every node are
+    /// relative to its own scale ([`Node::scale`]) already.
     pub fn locate(
         &self,
         a: &Node,
@@ -399,34 +419,24 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         h: f64,
         phi: &dyn Fn(&Node) -> f64,
     ) -> Result<Node, RouthError> {
-        let own = self.own_scale(a)?;
         let local = Ctx {
             family: self.family,
             len: self.len,
             opts: self.opts,
-            scale: own,
+            scale: self.own_scale(a)?,
             isolated: self.isolated,
             failed_residual: Cell::new(f64::NAN),
             _model: std::marker::PhantomData,
         };
-        // The test functions at the ends relative to the same scale as the re-solved points
-        // (`eig` is divided by it; the others are relative already).
-        let rescale = |n: &Node, by: f64| {
-            let mut n = n.clone();
-            n.eig = [n.eig[0] * by, n.eig[1] * by];
-            n
-        };
-        let to_own = self.scale.max(f64::MIN_POSITIVE) / own;
-        let (a_own, b_own) = (rescale(a, to_own), rescale(b, to_own));
         let lo = End {
             at: 0.0,
-            value: phi(&a_own),
-            point: a_own,
+            value: phi(a),
+            point: a.clone(),
         };
         let hi = End {
             at: h,
-            value: phi(&b_own),
-            point: b_own,
+            value: phi(b),
+            point: b.clone(),
         };
         let found = locate(
             lo,
@@ -438,7 +448,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
                 (hi.point.s - lo.point.s).abs() <= tol && (hi.at - lo.at) <= 1e-6 * h.max(1e-12)
             },
         )?;
-        Ok(rescale(&found.best.point, 1.0 / to_own))
+        Ok(found.best.point)
     }
 
     /// The tangential scale at `n` ([`Local::scale`]), or the branch's where it is not positive
@@ -454,14 +464,28 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
         })
     }
 
+    /// The longest step from `a` (an arclength in `(γ, σ)`): the one along its tangent whose
+    /// change of `s` is [`STEP_S_REL`]` · max(1, |s|)`; unbounded where the branch does not
+    /// move in `s`.
+    pub fn longest_step(&self, a: &Node) -> f64 {
+        let ds = STEP_S_REL * 1f64.max(a.s.abs());
+        // ds/dh along the tangent: σ = s/len moves by τ_σ per unit of arclength.
+        let rate = a.tau_s.abs() * self.len;
+        if rate > 0.0 && rate.is_finite() {
+            ds * rate.recip()
+        } else {
+            f64::INFINITY
+        }
+    }
+
     /// Whether the Jacobian `[∂F/∂ξ | ∂F/∂σ]` at `n` has rank below 2 (a branch point rather
     /// than a fold).
     pub fn is_branch_point(&self, n: &Node) -> bool {
         if !self.isolated {
             // Along a branch of circles the Jacobian always has the circle direction in its
             // kernel; the branch meets another one only where it vanishes altogether (the
-            // circle shrinks to its axis).
-            return n.jac.norm() <= 1e-6 * self.scale;
+            // circle shrinks to its axis), relative to the scale at the point.
+            return n.jac.norm() <= 1e-6 * n.scale;
         }
         let sv = n.jac.svd(false, false).singular_values;
         let (big, small) = (sv.max(), sv.min());
@@ -518,6 +542,28 @@ pub(crate) fn changes(a: &Node, b: &Node, isolated: bool) -> Vec<Change> {
         out.push(Change::Turn);
     }
     out
+}
+
+/// Whether a test function that is not zero at `a` is exactly zero at `b` (an eigenvalue of
+/// `K`, their sum on a branch of circles, the discriminant of `f₂`, the σ component of the
+/// tangent): a node on an event hides it from the sign tests of [`changes`] (`a·b < 0`) on both
+/// of its steps, and its verdict is that of the event. A symmetric body's closed forms land
+/// exactly on such nodes: the secular bound p = 2.5 of the Lagrange top (1, 1.25, 1) after steps
+/// of 1 and 1.5. (A function zero all along, as the discriminant of a spherical body's double
+/// roots, is no event.)
+pub(crate) fn lands_on_a_zero(a: &Node, b: &Node, isolated: bool) -> bool {
+    let tests = |n: &Node| {
+        let eig = if isolated {
+            n.eig
+        } else {
+            [n.eig[0] + n.eig[1]; 2]
+        };
+        [eig[0], eig[1], n.disc, n.tau_s]
+    };
+    tests(a)
+        .iter()
+        .zip(tests(b))
+        .any(|(x, y)| *x != 0.0 && y == 0.0)
 }
 
 /// The value of the test function of `change` at `n`.

@@ -4,7 +4,7 @@
 
 use super::builder::{dist, Builder, Switch, Traced};
 use crate::error::RouthError;
-use crate::families::continuation::{changes, test_value, Change, Ctx, Node};
+use crate::families::continuation::{changes, lands_on_a_zero, test_value, Change, Ctx, Node};
 use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
 use crate::path::{Check, Outcome, Point};
@@ -12,14 +12,14 @@ use crate::zero::{ZeroTest, AXIS_REL, EIGEN_REL};
 
 /// Whether a point of a branch of circles is next to the axis of its circles, where they shrink
 /// to a pole: both eigenvalues of `K` below `1e−5` and the whole Jacobian `[K | F_s]` below
-/// `1e−2`, relative to the branch's scale (at the pole both vanish by symmetry; at a fold of
-/// circles `F_s` does not).
-fn near_axis(scale: f64, n: &Node) -> bool {
-    ZeroTest::relative(AXIS_REL, 1.0).count(&n.eig) == 2 && n.jac.norm() <= 1e-2 * scale
+/// `1e−2`, relative to the scale at the point ([`Node::scale`]; at the pole both vanish by
+/// symmetry; at a fold of circles `F_s` does not).
+fn near_axis(n: &Node) -> bool {
+    ZeroTest::relative(AXIS_REL, 1.0).count(&n.eig) == 2 && n.jac.norm() <= 1e-2 * n.scale
 }
 
 /// Whether a point of a branch of circles has the zero eigenvalue of `K` of a circle: below
-/// `1e−6` relative to the branch's scale, or below `1e−3` of the other eigenvalue (a
+/// `1e−6` relative to the scale at the point, or below `1e−3` of the other eigenvalue (a
 /// near-spherical body, whose `K` is small altogether: the point of the pole next to the axis has
 /// two nearly equal eigenvalues instead).
 fn circle_point(n: &Node) -> bool {
@@ -72,8 +72,9 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             // pole (where K is a multiple of the identity), and a step can slide onto that
             // branch: a point with no zero eigenvalue is not a circle. Shorter steps, and next to
             // the axis the end (`finish` appends the point on the axis).
-            // Shorten the step also when two events share it, or when the verdict changes with
-            // no test function changing sign.
+            // Shorten the step also when two events share it, when the verdict changes with
+            // no test function changing sign, or when the new point lies exactly on a zero of a
+            // test function ([`lands_on_a_zero`]).
             let check = |p: &Point<4, Node>, h: f64| {
                 let b = &p.value;
                 if !ctx.isolated && !circle_point(b) {
@@ -87,17 +88,21 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                 let eigen = ch.iter().filter(|c| matches!(c, Change::Eigen(_))).count();
                 let unexplained = ch.is_empty() && a.verdict() != b.verdict();
                 let shared = eigen > 0 && ch.contains(&Change::Discriminant);
-                if (shared || eigen > 1 || unexplained) && h > short {
+                if (shared || eigen > 1 || unexplained || lands_on_a_zero(&a, b, ctx.isolated))
+                    && h > short
+                {
                     Check::Shorten
                 } else {
                     Check::Accept
                 }
             };
             let w = a.on_path(ctx.len);
+            // Steps bounded in the local scale of s, not the range's alone
+            // ([`Ctx::longest_step`]).
             let step = path.step(
                 &w,
                 &a.tangent(),
-                f64::INFINITY,
+                ctx.longest_step(&a),
                 ctx.corrector(&a),
                 ctx.completer(&a),
                 check,
@@ -119,7 +124,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
                     // the circle shrinks to the pole of the symmetry), where the circle direction
                     // is lost in round-off: the rest is the same circles again, down to the axis,
                     // which `finish` appends from the branch point on the axis.
-                    if !ctx.isolated && near_axis(ctx.scale, &a) {
+                    if !ctx.isolated && near_axis(&a) {
                         break;
                     }
                     return Err(RouthError::AtParameter {
@@ -214,7 +219,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
             }
             let hi = b.eig[0].abs().max(b.eig[1].abs());
             widest = widest.max(hi);
-            if !ctx.isolated && near_axis(ctx.scale, &b) && hi <= 1e-3 * widest {
+            if !ctx.isolated && near_axis(&b) && hi <= 1e-3 * widest {
                 // Next to the axis the steps would shrink without end (the circle direction is
                 // lost in round-off): end here; `finish` appends the point on the axis. (The
                 // eigenvalues of `K` must also have shrunk along the branch: a near-spherical
