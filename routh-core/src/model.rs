@@ -454,7 +454,9 @@ pub trait DerivedFormulas {
     const LATEX_C: &'static str = "";
 
     /// The derived formulas in LaTeX: L, ψ̇ (38), R (14), U_r (34) and A, G, C (64) as
-    /// matrices (see [`LatexFormulas`] for the symbols and the `|γ|² = 1` rule).
+    /// matrices (see [`LatexFormulas`] for the symbols and the `|γ|² = 1` rule). A derived
+    /// model prints them on the first call (the derive's analysis runs again, a few ms in an
+    /// optimised build) and returns the kept text afterwards.
     fn latex(&self) -> LatexFormulas {
         LatexFormulas {
             lagrangian: Self::LATEX_LAGRANGIAN.to_string(),
