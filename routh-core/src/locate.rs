@@ -26,6 +26,13 @@ pub(crate) struct End<P> {
     pub point: P,
 }
 
+impl<P> End<P> {
+    /// The end at `at` where the function is `value`, with its `point`.
+    pub(crate) fn new(at: f64, value: f64, point: P) -> Self {
+        End { at, value, point }
+    }
+}
+
 /// The distance from the better end of a bracket to the zero, estimated by the secant through
 /// both ends (in the path parameter): `|v_best|·|Δt|/|Δv|`. A stop rule on it ends the search once
 /// one end is at the zero to the wanted accuracy; a rule on the bracket's width would wait for

@@ -428,16 +428,8 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
             failed_residual: Cell::new(f64::NAN),
             _model: std::marker::PhantomData,
         };
-        let lo = End {
-            at: 0.0,
-            value: phi(a),
-            point: a.clone(),
-        };
-        let hi = End {
-            at: h,
-            value: phi(b),
-            point: b.clone(),
-        };
+        let lo = End::new(0.0, phi(a), a.clone());
+        let hi = End::new(h, phi(b), b.clone());
         let found = locate(
             lo,
             hi,

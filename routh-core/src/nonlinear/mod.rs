@@ -162,6 +162,26 @@ pub struct NonlinearReport {
     pub normalisation_defect: f64,
 }
 
+impl NonlinearReport {
+    /// A report with the linear test and the frequencies alone: undecided, without a reason,
+    /// the normal form and the rest NaN or absent (what the analysis starts from, and what a
+    /// frequencies-only re-solve of the events returns).
+    pub(crate) fn undecided(linear: StabilityReport, frequencies: [f64; 2]) -> Self {
+        NonlinearReport {
+            linear,
+            frequencies,
+            krein_signs: [0, 0],
+            normal_form: [f64::NAN; 3],
+            arnold_determinant: f64::NAN,
+            resonance: None,
+            resonance_distance: f64::NAN,
+            verdict: NonlinearVerdict::Undecided,
+            reason: String::new(),
+            normalisation_defect: f64::NAN,
+        }
+    }
+}
+
 impl fmt::Display for NonlinearReport {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let [w1, w2] = self.frequencies;
@@ -290,19 +310,7 @@ fn beyond_linear<R: RouthianJet + ?Sized>(
     r: &R,
     opts: &NonlinearOptions,
 ) -> Result<NonlinearReport, RouthError> {
-    let nan2 = [f64::NAN; 2];
-    let mut report = NonlinearReport {
-        linear: linear.clone(),
-        frequencies: nan2,
-        krein_signs: [0, 0],
-        normal_form: [f64::NAN; 3],
-        arnold_determinant: f64::NAN,
-        resonance: None,
-        resonance_distance: f64::NAN,
-        verdict: NonlinearVerdict::Undecided,
-        reason: String::new(),
-        normalisation_defect: f64::NAN,
-    };
+    let mut report = NonlinearReport::undecided(linear.clone(), [f64::NAN; 2]);
     match linear.verdict {
         Stability::Unstable => {
             report.verdict = NonlinearVerdict::Unstable;

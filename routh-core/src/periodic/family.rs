@@ -108,16 +108,8 @@ impl<M: Routhian> Tracer<'_, M> {
             }));
         }
         for (kind, test) in tests {
-            let lo = End {
-                at: 0.0,
-                value: test(a),
-                point: a.clone(),
-            };
-            let hi = End {
-                at: h,
-                value: test(b),
-                point: b.clone(),
-            };
+            let lo = End::new(0.0, test(a), a.clone());
+            let hi = End::new(h, test(b), b.clone());
             let tol = self.opts.event_tol;
             let found = illinois(
                 lo,

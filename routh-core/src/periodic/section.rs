@@ -255,16 +255,8 @@ fn crossings<M: Lagrangian + Sync + ?Sized>(
                     let (_, g) = split(&dense.eval(t));
                     g.dot(n)
                 };
-                let lo = End {
-                    at: prev.0,
-                    value: prev.1,
-                    point: (),
-                };
-                let hi = End {
-                    at: now.0,
-                    value: now.1,
-                    point: (),
-                };
+                let lo = End::new(prev.0, prev.1, ());
+                let hi = End::new(now.0, now.1, ());
                 let tol = 1e-14 * 1f64.max(now.0.abs());
                 let z = illinois(
                     lo,

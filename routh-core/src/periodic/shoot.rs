@@ -279,16 +279,8 @@ fn return_time<M: Lagrangian + ?Sized>(
             if prev.1 < 0.0 && now.1 >= 0.0 && s.t > 0.5 * period {
                 if let Some(d) = s.dense {
                     let z = illinois(
-                        End {
-                            at: prev.0,
-                            value: prev.1,
-                            point: (),
-                        },
-                        End {
-                            at: now.0,
-                            value: now.1,
-                            point: (),
-                        },
+                        End::new(prev.0, prev.1, ()),
+                        End::new(now.0, now.1, ()),
                         100,
                         |t| Ok::<_, RouthError>(Some((g(&d.eval(t)), ()))),
                         |lo, hi| estimated_distance(lo, hi) <= 1e-12 * hi.at,

@@ -77,7 +77,7 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
                 }
                 // τ(s) along the edge, γ(s) by continuation from the nearer end of the bracket
                 // (else the other).
-                let end = |at: f64, value: f64, point: Vector3<f64>| End { at, value, point };
+                let end = End::new;
                 let found = locate(
                     end(0.0, fa, na.gamma),
                     end(1.0, fb, nb.gamma),

@@ -169,18 +169,7 @@ pub(crate) fn frequencies_only<M: Routhian>(
         w.sort_by(|a, b| b.total_cmp(a));
         frequencies = [w[0], w[3]];
     }
-    Ok(NonlinearReport {
-        linear,
-        frequencies,
-        krein_signs: [0, 0],
-        normal_form: [f64::NAN; 3],
-        arnold_determinant: f64::NAN,
-        resonance: None,
-        resonance_distance: f64::NAN,
-        verdict: NonlinearVerdict::Undecided,
-        reason: String::new(),
-        normalisation_defect: f64::NAN,
-    })
+    Ok(NonlinearReport::undecided(linear, frequencies))
 }
 
 /// The nonlinear analysis of a member's steady motion, with its linear report when known (a

@@ -616,7 +616,7 @@ impl<M: Routhian> Search<'_, M> {
         };
         // Located to round-off in `t` by the bracket's width alone: at a zero of order `n > 1`
         // the secant's estimate of the distance is far too small.
-        let end = |at: f64, value: f64, point: Riemannian| End { at, value, point };
+        let end = End::new;
         let found = locate(
             end(a, pa, la),
             end(b, pb, lb),
