@@ -11,10 +11,10 @@
 
 use nalgebra::{Complex, Matrix6, SMatrix, Vector6};
 
-use super::flow::{field_and_jacobian, join, split};
+use super::flow::{field_and_jacobian, integrals, join, split};
 use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Solved, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
-use crate::locate::{estimated_distance, illinois, End};
+use crate::locate::{estimated_distance, locate, End};
 use crate::path::row::LinearRow;
 use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
 use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
@@ -51,6 +51,23 @@ fn tangent_of(s: &Solved, along: Option<&W>) -> W {
     t
 }
 
+/// Whether `b` continues the family of `a`: the tangents at both ends make about the same angle
+/// with the chord between them, as on one smooth curve (an arc turns by as much at either end);
+/// a corrector that landed on a family crossing at a branch point has the other family's
+/// tangent there, at the crossing angle to the chord. Allowed: twice the larger of the angles at
+/// `a` plus 0.02 rad (families crossing at less than that are not told apart).
+pub(super) fn same_family(a: &Node, b: &Node) -> bool {
+    let chord = b.solved.w - a.solved.w;
+    let len = chord.norm();
+    if !(len > 0.0) {
+        return true;
+    }
+    let c = chord / len;
+    let angle = |t: &W| t.dot(&c).abs().min(1.0).acos();
+    let (ta, tb) = (angle(&a.tangent), angle(&b.tangent));
+    tb <= 2.0 * ta + 0.02 && ta <= 2.0 * tb + 0.02
+}
+
 /// The family's state: the model, the options, the scales, the orbits so far.
 pub(super) struct Tracer<'a, M: Routhian> {
     pub model: &'a M,
@@ -77,15 +94,40 @@ impl<M: Routhian> Tracer<'_, M> {
         }
     }
 
-    /// Re-solves on the step from `a` at arclength `sigma`.
-    fn resolve(&self, a: &Node, sigma: f64) -> Result<Option<Node>, RouthError> {
-        let pred = a.solved.w + a.tangent * sigma;
+    /// Re-solves between two orbits `lo` (at arclength `s_lo`) and `hi` (at `s_hi`) of the family
+    /// at the arclength `sigma` strictly between them: predicted on the cubic Hermite curve
+    /// through both ends and their tangents (its error shrinks as the bracket's width to the
+    /// fourth power), corrected in the hyperplane normal to the curve there, and kept only if it
+    /// lies on the same family as both ends ([`same_family`]): near a branch point the corrector
+    /// may otherwise land on the family that crosses.
+    fn resolve_between(
+        &self,
+        lo: (&Node, f64),
+        hi: (&Node, f64),
+        sigma: f64,
+    ) -> Result<Option<Node>, RouthError> {
+        let ((a, sa), (b, sb)) = (lo, hi);
+        let span = sb - sa;
+        let u = (sigma - sa) / span;
+        let chord = (b.solved.w - a.solved.w).norm();
+        let (ma, mb) = (a.tangent * chord, b.tangent * chord);
+        let (u2, u3) = (u * u, u * u * u);
+        let pred = a.solved.w * (2.0 * u3 - 3.0 * u2 + 1.0)
+            + ma * (u3 - 2.0 * u2 + u)
+            + b.solved.w * (-2.0 * u3 + 3.0 * u2)
+            + mb * (u3 - u2);
+        let slope = (a.solved.w * (6.0 * u2 - 6.0 * u)
+            + ma * (3.0 * u2 - 4.0 * u + 1.0)
+            + b.solved.w * (-6.0 * u2 + 6.0 * u)
+            + mb * (3.0 * u2 - 2.0 * u))
+            .normalize();
         let prob = self.problem_at(&a.solved.w)?;
-        let row = LinearRow::through(a.tangent, &pred);
-        Ok(match correct(self.model, &prob, &row, &pred, self.opts)? {
-            Ok(s) => Some(self.node(s, Some(&a.tangent))),
-            Err(_) => None,
-        })
+        let row = LinearRow::through(slope, &pred);
+        let Ok(s) = correct(self.model, &prob, &row, &pred, self.opts)? else {
+            return Ok(None);
+        };
+        let n = self.node(s, Some(&slope));
+        Ok((same_family(a, &n) && same_family(&n, b)).then_some(n))
     }
 
     /// The events on the step from `a` to `b` (arclength `h`).
@@ -111,15 +153,21 @@ impl<M: Routhian> Tracer<'_, M> {
             let lo = End::new(0.0, test(a), a.clone());
             let hi = End::new(h, test(b), b.clone());
             let tol = self.opts.event_tol;
-            let found = illinois(
+            let found = locate(
                 lo,
                 hi,
                 80,
-                |sigma| Ok::<_, RouthError>(self.resolve(a, sigma)?.map(|n| (test(&n), n))),
+                |sigma, lo, hi| {
+                    Ok::<_, RouthError>(
+                        self.resolve_between((&lo.point, lo.at), (&hi.point, hi.at), sigma)?
+                            .map(|n| (test(&n), n)),
+                    )
+                },
                 |lo, hi| {
                     // The energy's error at the better end: its distance to the zero in
-                    // arclength times |dE/dσ| (the secant through the ends); at a fold E is
-                    // stationary, so the arclength itself is located (to 1e−7 of the step).
+                    // arclength times |dE/dσ| (the secant through the ends), and the test itself
+                    // (k ∓ 1) within the tolerance there; at a fold E is stationary, so the
+                    // arclength itself is located (to 1e−7 of the step).
                     let (el, eh) = (lo.point.orbit.energy, hi.point.orbit.energy);
                     let d_sigma = estimated_distance(lo, hi);
                     if kind == OrbitEventKind::Fold {
@@ -127,9 +175,12 @@ impl<M: Routhian> Tracer<'_, M> {
                     }
                     let slope = (eh - el).abs() / (hi.at - lo.at).abs().max(f64::MIN_POSITIVE);
                     let scale = tol * 1f64.max(el.abs());
-                    d_sigma * slope <= scale || (eh - el).abs() <= scale
+                    let best = lo.value.abs().min(hi.value.abs());
+                    (eh - el).abs() <= 1e-3 * scale
+                        || ((d_sigma * slope <= scale || (eh - el).abs() <= scale) && best <= tol)
                 },
-            )?;
+            )?
+            .best;
             out.push(OrbitEvent {
                 kind,
                 energy: found.point.orbit.energy,
@@ -205,7 +256,15 @@ impl<M: Routhian> Tracer<'_, M> {
                         value: n,
                     }))
                 },
-                |_, _| Check::Accept,
+                // A step that lands on a family crossing at a branch point is refused (and
+                // so shortened until it stays on this one).
+                |p, _| {
+                    if same_family(&cur, &p.value) {
+                        Check::Accept
+                    } else {
+                        Check::Shorten
+                    }
+                },
             )?;
             let (next, h) = match outcome {
                 Outcome::Accepted { point, h } => (point.value, h),
@@ -307,6 +366,28 @@ fn mode_vector(a: &Matrix6<f64>, omega: f64) -> Vector6<f64> {
     u / u.norm()
 }
 
+/// The point nearest `x` with `p_ψ = p` and `|γ| = 1`: minimum-norm Gauss–Newton steps on the
+/// two constraints (three are plenty from a point off them at second order).
+fn onto_level<M: Routhian>(model: &M, x: &Vector6<f64>, p: f64) -> Vector6<f64> {
+    let mut x = *x;
+    for _ in 0..4 {
+        let (_, _, px, dp) = integrals(model, &x);
+        let (_, g) = split(&x);
+        let c = nalgebra::Vector2::new(px - p, 0.5 * (g.norm_squared() - 1.0));
+        let mut j = SMatrix::<f64, 2, 6>::zeros();
+        j.set_row(0, &dp.transpose());
+        for k in 0..3 {
+            j[(1, 3 + k)] = g[k];
+        }
+        let Some(inv) = (j * j.transpose()).try_inverse() else {
+            break;
+        };
+        x -= j.transpose() * (inv * c);
+    }
+    let (w, g) = split(&x);
+    join(&w, &g.normalize())
+}
+
 /// The Lyapunov family of periodic orbits of mode `mode` (0: the faster frequency ω₁, 1: ω₂)
 /// born at an elliptic steady motion, followed at the steady motion's `p_ψ` through the energy
 /// (docs/method.md §11).
@@ -353,12 +434,26 @@ pub fn lyapunov_family<M: Routhian>(
     let (_, a) = field_and_jacobian(model, &xs)?;
     let u = mode_vector(&a, wk);
     let period = 2.0 * std::f64::consts::PI / wk;
-    let x0 = xs + u * opts.initial_amplitude;
-    // Back onto |γ| = 1 (the mode is tangent to the sphere; this removes the second order).
+    // Onto the steady motion's level of p_ψ and |γ| = 1: the mode is tangent to both, so the
+    // linear orbit leaves them at second order in the amplitude, and at a spinning steady motion
+    // (ψ̇ ≠ 0) the energy of a point off the level is off by ψ̇·Δp_ψ, of the same order as the
+    // energy above the steady motion: the first orbit's energy would not belong to the level.
+    let x0 = onto_level(model, &(xs + u * opts.initial_amplitude), steady.p_psi);
     let (w0, g0) = split(&x0);
-    let x0 = join(&w0, &g0.normalize());
-    check_guess(model, &w0, &g0.normalize(), period)?;
-    let e0 = model.energy(&w0, &g0.normalize());
+    check_guess(model, &w0, &g0, period)?;
+    let e0 = model.energy(&w0, &g0);
+    if let Some((lo, hi)) = opts.energy_bounds {
+        if !(lo <= e0 && e0 <= hi) {
+            return Err(RouthError::InvalidOption {
+                what: "OrbitOptions::energy_bounds",
+                reason: format!(
+                    "the family starts at the steady motion's energy {:.12} (its first orbit at \
+                     {e0:.12}), outside the bounds ({lo}, {hi})",
+                    steady.energy
+                ),
+            });
+        }
+    }
     let scales = Scales {
         t: period,
         e: 1f64.max(steady.energy.abs()),
@@ -445,6 +540,16 @@ pub fn continue_orbit<M: Routhian>(
             reason: format!("need finite lo < hi, got ({lo}, {hi})"),
         });
     }
+    if !(lo <= orbit.energy && orbit.energy <= hi) {
+        return Err(RouthError::InvalidOption {
+            what: "energy_range",
+            reason: format!(
+                "the orbit's energy {:.12} is outside the range ({lo}, {hi}); a family is \
+                 continued from an orbit inside the range",
+                orbit.energy
+            ),
+        });
+    }
     let (s, scales) = restart(model, orbit, opts)?;
     let tracer = Tracer {
         model,
@@ -461,10 +566,23 @@ pub fn continue_orbit<M: Routhian>(
     let mut down = up.clone();
     down.tangent = -down.tangent;
     let budget = opts.max_orbits.saturating_sub(1);
-    let (n_up, ev_up, stop_up) = tracer.trace(up.clone(), budget.div_ceil(2), None)?;
-    let (n_dn, ev_dn, stop_dn) = tracer.trace(down, budget / 2, None)?;
+    let traced_up = tracer.trace(up.clone(), budget.div_ceil(2), None)?;
+    let traced_down = tracer.trace(down, budget / 2, None)?;
+    Ok(merge_halves(up.orbit, traced_up, traced_down))
+}
+
+/// One direction of a family traced from a centre: its orbits, events and stop.
+pub(super) type Half = (Vec<Node>, Vec<OrbitEvent>, OrbitStop);
+
+/// The family through `centre` from the halves traced both ways (`up`, `down`): the orbits from
+/// the far end of `down` through `centre` to the far end of `up`, the events in that order (those
+/// of `down` with `before` and `after` exchanged), and the stop: `None` when both halves reached
+/// an energy bound, else the first other reason.
+pub(super) fn merge_halves(centre: PeriodicOrbit, up: Half, down: Half) -> OrbitFamily {
+    let (n_up, ev_up, stop_up) = up;
+    let (n_dn, ev_dn, stop_dn) = down;
     let mut orbits: Vec<PeriodicOrbit> = n_dn.iter().rev().map(|n| n.orbit.clone()).collect();
-    orbits.push(up.orbit.clone());
+    orbits.push(centre);
     orbits.extend(n_up.into_iter().map(|n| n.orbit));
     let mut events: Vec<OrbitEvent> = ev_dn
         .into_iter()
@@ -484,9 +602,9 @@ pub fn continue_orbit<M: Routhian>(
     } else {
         Some(stop_dn)
     };
-    Ok(OrbitFamily {
+    OrbitFamily {
         orbits,
         events,
         stop,
-    })
+    }
 }

@@ -23,6 +23,7 @@
 //! - **Sections** ([`poincare_section`]): many orbits at one `(p_ψ, E)` crossing a plane through
 //!   the vertical's body coordinates, in parallel (rayon).
 
+mod branch;
 mod doubling;
 mod family;
 mod flow;
@@ -33,6 +34,7 @@ use std::fmt;
 
 use nalgebra::{Complex, Vector3};
 
+pub use branch::switch_branch;
 pub use doubling::period_doubled_family;
 pub use family::{continue_orbit, lyapunov_family};
 pub use flow::orbit_path;

@@ -184,7 +184,12 @@ pub(crate) fn correct<M: Lagrangian + ?Sized>(
         if !res.is_finite() {
             return Ok(Err(best));
         }
-        if res <= opts.newton_tol {
+        // The guess itself is accepted only when its gap is small against the orbit's own size
+        // (a relative test): the linear orbit of a Lyapunov family at amplitude a closes to
+        // O(a²) in absolute terms, below any absolute tolerance, and one Gauss–Newton step
+        // gives the period its nonlinear correction.
+        let relative = it > 0 || r.fixed_rows::<6>(0).amax() <= opts.newton_tol * s.reach;
+        if res <= opts.newton_tol && relative {
             let (_, g) = split(&x);
             let mut w = w;
             let gn = g.normalize();
@@ -244,17 +249,16 @@ pub(crate) fn orbit_of<M: Lagrangian + ?Sized>(
     }
 }
 
-/// The time of the guess's closest return through its own phase plane within `(T/2, 4T)` of the
-/// period guessed: where `g(t) = F̂_ref·(x(t) − x_ref)` crosses zero upwards (as at `t = 0`, where
-/// `g' = |F| > 0`), the earliest crossing about as near to `x_ref` as the nearest. A user's period guess is often off by tens
-/// of per cent (a pendulum's period doubles near the separatrix); Newton's basin in `T` is
-/// narrower. `None`: no return (then the guess is used as it is).
-fn return_time<M: Lagrangian + ?Sized>(
+/// The upward crossings `(t, |x(t) − x_ref|)` of the phase plane `F̂_ref·(x − x_ref) = 0` by the
+/// flow from `x_ref`, for `from < t < to` (upwards as at `t = 0`, where the test's derivative is
+/// `|F| > 0`), each located by the crate's one locator on the dense output.
+fn plane_returns<M: Lagrangian + ?Sized>(
     model: &M,
     prob: &Problem,
-    period: f64,
+    from: f64,
+    to: f64,
     opts: &OrbitOptions,
-) -> Option<f64> {
+) -> Vec<(f64, f64)> {
     let (rtol, atol) = (opts.rtol.max(1e-10), opts.atol.max(1e-12));
     let weights = dop853::componentwise(rtol, atol);
     let cfg = Config {
@@ -272,11 +276,11 @@ fn return_time<M: Lagrangian + ?Sized>(
         rhs,
         0.0,
         prob.x_ref,
-        4.0 * period,
+        to,
         &cfg,
         |s: &Accepted<'_, 6>| {
             let now = (s.t, g(s.y));
-            if prev.1 < 0.0 && now.1 >= 0.0 && s.t > 0.5 * period {
+            if prev.1 < 0.0 && now.1 >= 0.0 && s.t > from {
                 if let Some(d) = s.dense {
                     let z = illinois(
                         End::new(prev.0, prev.1, ()),
@@ -285,18 +289,52 @@ fn return_time<M: Lagrangian + ?Sized>(
                         |t| Ok::<_, RouthError>(Some((g(&d.eval(t)), ()))),
                         |lo, hi| estimated_distance(lo, hi) <= 1e-12 * hi.at,
                     )?;
-                    returns.push((z.at, (d.eval(z.at) - prob.x_ref).norm()));
+                    if z.at > from && z.at < to {
+                        returns.push((z.at, (d.eval(z.at) - prob.x_ref).norm()));
+                    }
                 }
             }
             prev = now;
             Ok(())
         },
     );
+    returns
+}
+
+/// The time of the guess's closest return through its own phase plane within `(T/2, 4T)` of the
+/// period guessed, the earliest crossing about as near to `x_ref` as the nearest. A user's period
+/// guess is often off by tens of per cent (a pendulum's period doubles near the separatrix);
+/// Newton's basin in `T` is narrower. `None`: no return (then the guess is used as it is).
+fn return_time<M: Lagrangian + ?Sized>(
+    model: &M,
+    prob: &Problem,
+    period: f64,
+    opts: &OrbitOptions,
+) -> Option<f64> {
+    let returns = plane_returns(model, prob, 0.5 * period, 4.0 * period, opts);
     // The earliest return about as close as the closest: on an orbit the returns after 2T, 3T
     // are as close as the first (to round-off), and the first is the period.
     let closest = returns.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
     let near = 2.0 * closest + 1e-8 * 1f64.max(prob.x_ref.norm());
     returns.iter().find(|r| r.1 <= near).map(|r| r.0)
+}
+
+/// The orbit's minimal period, when a corrected orbit of period `T` is one of period `T/n`
+/// traversed `n ≥ 2` times: its earliest return onto its starting point within `(0, T)` (to
+/// `min(1e−6·max(1, |x₀|), 1e−3·amplitude)`; a near miss of a different orbit is farther by the
+/// orbit's own size). `None`: `T` is minimal.
+fn shorter_period<M: Lagrangian + ?Sized>(
+    model: &M,
+    prob: &Problem,
+    period: f64,
+    amplitude: f64,
+    opts: &OrbitOptions,
+) -> Option<f64> {
+    let close = (1e-6 * 1f64.max(prob.x_ref.norm())).min(1e-3 * amplitude);
+    plane_returns(model, prob, 1e-3 * period, (1.0 - 1e-3) * period, opts)
+        .into_iter()
+        .find(|r| r.1 <= close)
+        .map(|r| r.0)
 }
 
 /// Checks a guess: finite, `|γ| = 1`, `T > 0`, and not a steady motion (a point that moves by
@@ -377,21 +415,32 @@ pub fn periodic_orbit<M: crate::Routhian>(
     let row = scales.energy_row(e);
     let t0 = return_time(model, &prob, period_guess, opts).unwrap_or(period_guess);
     let w0 = scales.pack(&x, t0, e);
-    match correct(model, &prob, &row, &w0, opts)? {
-        Ok(s) => {
-            if s.shot.reach <= 1e-8 * 1f64.max(x.norm()) {
-                return Err(RouthError::NoConvergence {
-                    what: "periodic orbit (the guess converged to a steady motion)",
-                    iterations: s.iterations,
-                    residual: 0.0,
-                });
-            }
-            Ok(orbit_of(model, &s, &scales, opts))
+    let s = match correct(model, &prob, &row, &w0, opts)? {
+        Ok(s) => s,
+        Err(best) => {
+            return Err(RouthError::NoConvergence {
+                what: "periodic orbit",
+                iterations: opts.max_iter,
+                residual: best,
+            })
         }
-        Err(best) => Err(RouthError::NoConvergence {
-            what: "periodic orbit",
-            iterations: opts.max_iter,
-            residual: best,
-        }),
+    };
+    if s.shot.reach <= 1e-8 * 1f64.max(x.norm()) {
+        return Err(RouthError::NoConvergence {
+            what: "periodic orbit (the guess converged to a steady motion)",
+            iterations: s.iterations,
+            residual: 0.0,
+        });
     }
+    // A guess near a multiple of the period converges to the orbit traversed several times:
+    // corrected again at its minimal period.
+    let t = scales.period(&s.w);
+    let x1: Vector6<f64> = s.w.fixed_rows::<6>(0).into();
+    let at = Problem::at(model, &x1, p, scales)?;
+    if let Some(t_min) = shorter_period(model, &at, t, s.shot.reach, opts) {
+        if let Ok(m) = correct(model, &at, &row, &scales.pack(&x1, t_min, e), opts)? {
+            return Ok(orbit_of(model, &m, &scales, opts));
+        }
+    }
+    Ok(orbit_of(model, &s, &scales, opts))
 }
