@@ -65,8 +65,9 @@ pub use nonlinear::{
     nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
 };
 pub use periodic::{
-    continue_orbit, lyapunov_family, orbit_crossings, orbit_path, period_doubled_family,
-    periodic_orbit, poincare_section, switch_branch, OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions,
+    axial_symmetry, continue_orbit, lyapunov_family, orbit_crossings, orbit_path,
+    period_doubled_family, periodic_orbit, poincare_section, switch_branch, OrbitEvent,
+    OrbitEventKind, OrbitFamily, OrbitOptions,
     OrbitStability, OrbitStop, PeriodicOrbit, PoincareSection, SectionOptions,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};

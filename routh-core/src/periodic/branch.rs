@@ -5,7 +5,7 @@
 use nalgebra::SMatrix;
 
 use super::family::{merge_halves, restart, smallest, Tracer};
-use super::shoot::{correct, Problem, W};
+use super::shoot::{correct, Problem, TOP, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions};
 use crate::path::row::LinearRow;
 use crate::{RouthError, Routhian};
@@ -44,8 +44,9 @@ pub fn switch_branch<M: Routhian>(
         });
     }
     let (s, scales) = restart(model, &event.orbit, opts)?;
-    // The null vector of the ten rows with the energy held: the crossing family's tangent.
-    let top: SMatrix<f64, 10, 7> = s.jac.fixed_view::<10, 7>(0, 0).into();
+    // The null vector of the rows with the energy held (its column removed): the crossing
+    // family's tangent.
+    let top: SMatrix<f64, TOP, { UNKNOWNS - 1 }> = s.tangent_rows().remove_column(7);
     let svd = top.svd(false, true);
     let v_t = svd.v_t.expect("asked for V");
     let values = svd.singular_values.as_slice();
@@ -64,8 +65,8 @@ pub fn switch_branch<M: Routhian>(
         });
     }
     let mut n = W::zeros();
-    for k in 0..7 {
-        n[k] = v_t[(imin, k)];
+    for k in 0..UNKNOWNS - 1 {
+        n[if k < 7 { k } else { k + 1 }] = v_t[(imin, k)];
     }
     n /= n.norm();
     // Deterministic orientation: the largest component of the state's part positive.

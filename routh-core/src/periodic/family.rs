@@ -12,7 +12,7 @@
 use nalgebra::{Complex, Matrix6, SMatrix, Vector6};
 
 use super::flow::{field_and_jacobian, integrals, join, split};
-use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Solved, W};
+use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Solved, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
 use crate::locate::{estimated_distance, locate, End};
 use crate::path::row::LinearRow;
@@ -37,8 +37,7 @@ pub(super) fn smallest(values: &[f64]) -> usize {
 /// The unit null vector of the first ten rows of the shooting system (the family's tangent),
 /// oriented along `along` when given.
 fn tangent_of(s: &Solved, along: Option<&W>) -> W {
-    let top: SMatrix<f64, 10, 8> = s.jac.fixed_rows::<10>(0).into();
-    let svd = top.svd(false, true);
+    let svd = s.tangent_rows().svd(false, true);
     let v_t = svd.v_t.expect("asked for V");
     let imin = smallest(svd.singular_values.as_slice());
     let mut t: W = v_t.row(imin).transpose();
@@ -214,7 +213,7 @@ impl<M: Routhian> Tracer<'_, M> {
         origin: Option<&Vector6<f64>>,
     ) -> Result<(Vec<Node>, Vec<OrbitEvent>, OrbitStop), RouthError> {
         let o = self.opts;
-        let mut path: Path<8> = Path::new(
+        let mut path: Path<UNKNOWNS> = Path::new(
             PathOptions::orbit_family(o.min_step, o.max_step),
             o.initial_step,
         )
@@ -419,7 +418,9 @@ pub fn lyapunov_family<M: Routhian>(
     let (wk, wj) = (w[mode], w[1 - mode]);
     let ratio = wj / wk;
     let n = ratio.round();
-    if n >= 1.0 && (ratio - n).abs() <= opts.resonance_tol {
+    // An axially symmetric body at rest on its axis: 1:1 by the symmetry, mode 0 its swings.
+    let swing = super::symmetry::rest_swing(model, steady, mode)?;
+    if swing.is_none() && n >= 1.0 && (ratio - n).abs() <= opts.resonance_tol {
         return Err(RouthError::InvalidOption {
             what: "mode",
             reason: format!(
@@ -432,7 +433,7 @@ pub fn lyapunov_family<M: Routhian>(
     let gamma = crate::validate::unit_gamma("steady.gamma", &steady.gamma)?;
     let xs = join(&(gamma * steady.psi_dot), &gamma);
     let (_, a) = field_and_jacobian(model, &xs)?;
-    let u = mode_vector(&a, wk);
+    let u = swing.unwrap_or_else(|| mode_vector(&a, wk));
     let period = 2.0 * std::f64::consts::PI / wk;
     // Onto the steady motion's level of p_ψ and |γ| = 1: the mode is tangent to both, so the
     // linear orbit leaves them at second order in the amplitude, and at a spinning steady motion
@@ -511,7 +512,8 @@ pub(super) fn restart<M: Routhian>(
     };
     let prob = Problem::at(model, &x, p, scales)?;
     let row = scales.energy_row(e);
-    match correct(model, &prob, &row, &scales.pack(&x, orbit.period, e), opts)? {
+    let w = scales.pack_turned(&x, orbit.period, e, orbit.body_turn);
+    match correct(model, &prob, &row, &w, opts)? {
         Ok(s) => Ok((s, scales)),
         Err(best) => Err(RouthError::NoConvergence {
             what: "the starting orbit (not a periodic orbit)",

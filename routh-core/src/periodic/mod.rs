@@ -29,6 +29,7 @@ mod family;
 mod flow;
 mod section;
 mod shoot;
+mod symmetry;
 
 use std::fmt;
 
@@ -42,6 +43,7 @@ pub use section::{
     orbit_crossings, poincare_section, PoincareSection, SectionOptions, SectionOrbit,
 };
 pub use shoot::periodic_orbit;
+pub use symmetry::{axial_symmetry, AXIAL_SYMMETRY_TOL};
 
 use crate::RouthError;
 
@@ -242,14 +244,29 @@ pub struct PeriodicOrbit {
     pub energy: f64,
     /// The cyclic momentum (9).
     pub p_psi: f64,
-    /// `Δψ ∈ (−π, π]`: `R(T)R(0)ᵀ` is the turn by `Δψ` about the upward vertical.
+    /// `Δψ ∈ (−π, π]`: `R(T) = Rot(e_z, Δψ)·R(0)·Rot(e₃, Δφ)` (`R` body → space), the turn
+    /// about the upward vertical after one period.
     pub precession: f64,
+    /// `Δφ ∈ (−π, π]`, the turn about the body axis `e₃` in the same identity: on an axially
+    /// symmetric body ([`axial_symmetry`]) the orbit is periodic modulo it,
+    /// `x(T) = (Rot(e₃, −Δφ)ω₀, Rot(e₃, −Δφ)γ₀)`; exactly 0 on any other body (docs/method.md
+    /// §11a).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub body_turn: f64,
     /// `μ, 1/μ`: `|μ₀| ≥ 1`, and `Im μ₀ ≥ 0` on the unit circle.
     pub multipliers: [Complex<f64>; 2],
     /// `k = (μ + 1/μ)/2 = (tr Φ(T) − 4)/2`.
     pub stability_index: f64,
     /// The verdict from `k`.
     pub stability: OrbitStability,
+    /// The orbit is not isolated on its energy level: a relative periodic orbit of an axially
+    /// symmetric body that is not a relative equilibrium of the two turns (a nutation, a planar
+    /// swing). The reduced system is then integrable (the momentum about `e₃` is a further
+    /// integral), the monodromy modulo the body turn has every multiplier 1, and the orbit is
+    /// reported with `k = 1`, `μ = 1/μ = 1` and `Parabolic` by that theorem (docs/method.md §11a);
+    /// families of such orbits report no branch points or period doublings (`k` never crosses ±1).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub degenerate: bool,
     /// Half the largest distance between points of the orbit in `(ω, γ)` (0 at a steady motion).
     pub amplitude: f64,
 }
@@ -272,13 +289,15 @@ impl fmt::Display for PeriodicOrbit {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "periodic orbit: T = {:.10}, E = {:.10}, p_ψ = {}, Δψ = {:.6}, k = {:.8} ({}), ω₀ = ({:.6}, {:.6}, {:.6}), γ₀ = ({:.6}, {:.6}, {:.6})",
+            "periodic orbit: T = {:.10}, E = {:.10}, p_ψ = {}, Δψ = {:.6}, Δφ = {:.6}, k = {:.8} ({}{}), ω₀ = ({:.6}, {:.6}, {:.6}), γ₀ = ({:.6}, {:.6}, {:.6})",
             self.period,
             self.energy,
             self.p_psi,
             self.precession,
+            self.body_turn,
             self.stability_index,
             self.stability,
+            if self.degenerate { ", degenerate" } else { "" },
             self.omega0.x,
             self.omega0.y,
             self.omega0.z,

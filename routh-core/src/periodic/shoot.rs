@@ -1,10 +1,12 @@
 //! The shooting corrector of periodic orbits and [`periodic_orbit`] (docs/method.md §11).
 //!
-//! Unknowns `w = (x₀, T/t_s, E/e_s) ∈ ℝ⁸` (`t_s`, `e_s` scales of the family, so that a
-//! pseudo-arclength in `w` weighs the period and the energy like the state). Rows:
-//! `φ_T(x₀) − x₀` (6), the phase `F̂_ref·(x₀ − x_ref)`, `E(x₀) − E`, `p_ψ(x₀) − p_ψ`,
-//! `(|γ₀|² − 1)/2` (the gradient rows scaled to unit length) and one linear row (the energy fixed,
-//! or the continuation's). The 11 × 8 system is consistent and of full column rank at a regular
+//! Unknowns `w = (x₀, T/t_s, E/e_s, Δφ) ∈ ℝ⁹` (`t_s`, `e_s` scales of the family, so that a
+//! pseudo-arclength in `w` weighs the period and the energy like the state; `Δφ` the body turn
+//! of an axially symmetric body, docs/method.md §11a). Rows: `S_Δφ φ_T(x₀) − x₀` (6), the phase
+//! `F̂_ref·(x₀ − x_ref)`, `E(x₀) − E`, `p_ψ(x₀) − p_ψ`, `(|γ₀|² − 1)/2` (the gradient rows scaled
+//! to unit length), the gauge `ξ̂_ref·(x₀ − x_ref)` and `p_φ(x₀) − p_φ` on an axially symmetric
+//! body (else `Δφ = 0` and an empty row), and one linear row (the energy fixed, or the
+//! continuation's). The 13 × 9 system is consistent and of full column rank at a regular
 //! orbit; each step is its minimum-norm least-squares solution (SVD, singular values below
 //! `1e−12` of the largest dropped), the step in `T` limited to a third of the period.
 //!
@@ -15,6 +17,7 @@
 use nalgebra::{SMatrix, SVector, Vector3, Vector6};
 
 use super::flow::{field, integrals, join, precession, shoot, split, Shot};
+use super::symmetry::{self, Turn};
 use super::{OrbitOptions, OrbitStability, PeriodicOrbit};
 use crate::locate::{estimated_distance, illinois, End};
 use crate::path::row::LinearRow;
@@ -22,8 +25,14 @@ use crate::sim::dop853::{self, Accepted, Config};
 use crate::validate::{check_finite, unit_gamma};
 use crate::{Lagrangian, RouthError};
 
-pub(crate) type W = SVector<f64, 8>;
-type Jac = SMatrix<f64, 11, 8>;
+/// The number of unknowns, `w = (x₀, T/t_s, E/e_s, Δφ)`.
+pub(crate) const UNKNOWNS: usize = 9;
+/// The rows without the linear row (the family's tangent is their null vector).
+pub(crate) const TOP: usize = 12;
+pub(crate) type W = SVector<f64, UNKNOWNS>;
+type Jac = SMatrix<f64, { TOP + 1 }, UNKNOWNS>;
+/// The index of the body turn `Δφ` in `w`.
+pub(crate) const TURN: usize = 8;
 
 /// The scales of the period and the energy in the unknowns.
 #[derive(Debug, Clone, Copy)]
@@ -40,6 +49,12 @@ impl Scales {
         w[7] = e / self.e;
         w
     }
+    /// As [`Scales::pack`] with the body turn `Δφ` (docs/method.md §11a).
+    pub fn pack_turned(&self, x: &Vector6<f64>, t: f64, e: f64, body_turn: f64) -> W {
+        let mut w = self.pack(x, t, e);
+        w[TURN] = body_turn;
+        w
+    }
     pub fn period(&self, w: &W) -> f64 {
         w[6] * self.t
     }
@@ -48,7 +63,7 @@ impl Scales {
     }
     /// The linear row closing the system with the energy fixed at `e`: `w₇ = e/e_s` (or the
     /// continuation's pseudo-arclength row, [`LinearRow::through`]).
-    pub fn energy_row(&self, e: f64) -> LinearRow<8> {
+    pub fn energy_row(&self, e: f64) -> LinearRow<UNKNOWNS> {
         LinearRow::fixed(7, e / self.e)
     }
 }
@@ -61,6 +76,8 @@ pub(crate) struct Problem {
     /// `F(x_ref)/|F(x_ref)|`.
     pub f_ref: Vector6<f64>,
     pub scales: Scales,
+    /// The gauge and the momentum about `e₃` of an axially symmetric body (`None`: `Δφ = 0`).
+    pub turn: Option<Turn>,
 }
 
 impl Problem {
@@ -77,6 +94,7 @@ impl Problem {
             x_ref: *x,
             f_ref: f / f.norm(),
             scales,
+            turn: symmetry::turn_at(model, x)?,
         })
     }
 }
@@ -90,6 +108,14 @@ pub(crate) struct Solved {
     pub iterations: usize,
 }
 
+impl Solved {
+    /// The rows of the system without the linear row, whose null vector is the family's
+    /// tangent.
+    pub fn tangent_rows(&self) -> SMatrix<f64, TOP, UNKNOWNS> {
+        self.jac.fixed_rows::<TOP>(0).into()
+    }
+}
+
 /// What is kept of the last integration.
 #[derive(Clone)]
 pub(crate) struct ShotSummary {
@@ -99,14 +125,16 @@ pub(crate) struct ShotSummary {
     pub monodromy: nalgebra::Matrix6<f64>,
 }
 
-/// The residual and Jacobian of the system at `w`, with the flow.
+/// The residual and Jacobian of the system at `w`, with the flow. On an axially symmetric body
+/// (`prob.turn`) the shot's monodromy and turn are returned modulo the body turn `β = w₈`:
+/// `S_β Φ(T)` and `R(T)·Rot(e₃, −β)` (docs/method.md §11a).
 fn linearise<M: Lagrangian + ?Sized>(
     model: &M,
     prob: &Problem,
-    row: &LinearRow<8>,
+    row: &LinearRow<UNKNOWNS>,
     w: &W,
     opts: &OrbitOptions,
-) -> Result<(SVector<f64, 11>, Jac, Shot), RouthError> {
+) -> Result<(SVector<f64, { TOP + 1 }>, Jac, Shot), RouthError> {
     let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
     let t = prob.scales.period(w);
     if !(t.is_finite() && t > 0.0) {
@@ -116,7 +144,7 @@ fn linearise<M: Lagrangian + ?Sized>(
             residual: f64::NAN,
         });
     }
-    let s = shoot(model, &x, t, opts)?;
+    let mut s = shoot(model, &x, t, opts)?;
     let f_end = field(model, &s.end)?;
     let (e, de, p, dp) = integrals(model, &x);
     let (_, g) = split(&x);
@@ -124,9 +152,25 @@ fn linearise<M: Lagrangian + ?Sized>(
         de.norm().max(f64::MIN_POSITIVE),
         dp.norm().max(f64::MIN_POSITIVE),
     );
-    let mut r = SVector::<f64, 11>::zeros();
+    let mut r = SVector::<f64, { TOP + 1 }>::zeros();
     let mut j = Jac::zeros();
-    let gap = s.end - x;
+    // Periodicity modulo the body turn: S_β φ_T(x₀) − x₀, with ∂/∂x₀ = S_βΦ − I,
+    // ∂/∂T = S_β F(φ_T(x₀)) and ∂/∂β = ξ(S_β φ_T(x₀)); β = 0 without the symmetry.
+    let beta = if prob.turn.is_some() { w[TURN] } else { 0.0 };
+    let (end, f_end) = (symmetry::act(beta, &s.end), symmetry::act(beta, &f_end));
+    if prob.turn.is_some() {
+        let r3 = symmetry::rot(beta);
+        let mut sb = nalgebra::Matrix6::zeros();
+        sb.fixed_view_mut::<3, 3>(0, 0).copy_from(&r3);
+        sb.fixed_view_mut::<3, 3>(3, 3).copy_from(&r3);
+        s.monodromy = sb * s.monodromy;
+        s.turn = symmetry::less_body_turn(&s.turn, beta);
+        let xi = symmetry::generator(&end);
+        for i in 0..6 {
+            j[(i, TURN)] = xi[i];
+        }
+    }
+    let gap = end - x;
     for i in 0..6 {
         r[i] = gap[i];
         for k in 0..6 {
@@ -138,7 +182,6 @@ fn linearise<M: Lagrangian + ?Sized>(
     r[7] = (e - prob.scales.energy(w)) / ne;
     r[8] = (p - prob.p_psi) / np;
     r[9] = 0.5 * (g.norm_squared() - 1.0);
-    r[10] = row.residual(w);
     for k in 0..6 {
         j[(6, k)] = prob.f_ref[k];
         j[(7, k)] = de[k] / ne;
@@ -148,8 +191,27 @@ fn linearise<M: Lagrangian + ?Sized>(
     for k in 0..3 {
         j[(9, 3 + k)] = g[k];
     }
-    for k in 0..8 {
-        j[(10, k)] = row.normal[k];
+    // The gauge ξ̂_ref·(x₀ − x_ref) = 0 (the phase of the turn) and p_φ(x₀) = p_φ; without the
+    // symmetry β = 0 and an empty row.
+    match &prob.turn {
+        Some(turn) => {
+            let (pf, dpf) = symmetry::body_momentum(model, &x);
+            let npf = dpf.norm().max(f64::MIN_POSITIVE);
+            r[10] = turn.xi_ref.dot(&(x - prob.x_ref));
+            r[11] = (pf - turn.p_phi) / npf;
+            for k in 0..6 {
+                j[(10, k)] = turn.xi_ref[k];
+                j[(11, k)] = dpf[k] / npf;
+            }
+        }
+        None => {
+            r[10] = w[TURN];
+            j[(10, TURN)] = 1.0;
+        }
+    }
+    r[TOP] = row.residual(w);
+    for k in 0..UNKNOWNS {
+        j[(TOP, k)] = row.normal[k];
     }
     Ok((r, j, s))
 }
@@ -159,7 +221,7 @@ fn linearise<M: Lagrangian + ?Sized>(
 pub(crate) fn correct<M: Lagrangian + ?Sized>(
     model: &M,
     prob: &Problem,
-    row: &LinearRow<8>,
+    row: &LinearRow<UNKNOWNS>,
     w0: &W,
     opts: &OrbitOptions,
 ) -> Result<Result<Solved, f64>, RouthError> {
@@ -225,7 +287,10 @@ pub(crate) fn correct<M: Lagrangian + ?Sized>(
     Ok(Err(best))
 }
 
-/// The orbit of a solved system.
+/// The orbit of a solved system. On an axially symmetric body the body turn is `w₈` (else 0),
+/// and an orbit that is not a relative equilibrium of the two turns is degenerate: `k = 1`,
+/// `μ = 1/μ = 1`, `Parabolic` (docs/method.md §11a; the monodromy modulo the turn has every
+/// multiplier 1 there, which the tests check against finite differences of `simulate_full`).
 pub(crate) fn orbit_of<M: Lagrangian + ?Sized>(
     model: &M,
     s: &Solved,
@@ -234,7 +299,19 @@ pub(crate) fn orbit_of<M: Lagrangian + ?Sized>(
 ) -> PeriodicOrbit {
     let x: Vector6<f64> = s.w.fixed_rows::<6>(0).into();
     let (omega0, gamma0) = split(&x);
-    let k = 0.5 * (s.shot.trace - 4.0);
+    // An integration failure here (there was none over the same state in the corrector) keeps
+    // the ordinary reading.
+    let degenerate = matches!(symmetry::turn_at(model, &x), Ok(Some(_)));
+    let body_turn = if symmetry::axial_symmetry(model) {
+        symmetry::wrap(s.w[TURN])
+    } else {
+        0.0
+    };
+    let k = if degenerate {
+        1.0
+    } else {
+        0.5 * (s.shot.trace - 4.0)
+    };
     PeriodicOrbit {
         omega0,
         gamma0,
@@ -242,23 +319,28 @@ pub(crate) fn orbit_of<M: Lagrangian + ?Sized>(
         energy: model.energy(&omega0, &gamma0),
         p_psi: model.cyclic_momentum(&omega0, &gamma0),
         precession: s.shot.precession,
+        body_turn,
         multipliers: PeriodicOrbit::multipliers_from_index(k),
         stability_index: k,
         stability: OrbitStability::from_index(k, opts.parabolic_tol),
+        degenerate,
         amplitude: s.shot.reach,
     }
 }
 
-/// The upward crossings `(t, |x(t) − x_ref|)` of the phase plane `F̂_ref·(x − x_ref) = 0` by the
-/// flow from `x_ref`, for `from < t < to` (upwards as at `t = 0`, where the test's derivative is
-/// `|F| > 0`), each located by the crate's one locator on the dense output.
+/// The upward crossings `(t, |S_β x(t) − x_ref|, β)` of the phase plane `F̂_ref·(x − x_ref) = 0`
+/// by the flow from `x_ref`, for `from < t < to` (upwards as at `t = 0`, where the test's
+/// derivative is `|F| > 0`), each located by the crate's one locator on the dense output. On an
+/// axially symmetric body (`prob.turn`) the state is first turned about `e₃` onto `x_ref`
+/// ([`symmetry::align`]) by `β`, so that returns modulo the body turn count (docs/method.md
+/// §11a; else `β = 0`).
 fn plane_returns<M: Lagrangian + ?Sized>(
     model: &M,
     prob: &Problem,
     from: f64,
     to: f64,
     opts: &OrbitOptions,
-) -> Vec<(f64, f64)> {
+) -> Vec<(f64, f64, f64)> {
     let (rtol, atol) = (opts.rtol.max(1e-10), opts.atol.max(1e-12));
     let weights = dop853::componentwise(rtol, atol);
     let cfg = Config {
@@ -268,9 +350,18 @@ fn plane_returns<M: Lagrangian + ?Sized>(
         max_steps: opts.max_steps,
         dense: true,
     };
-    let g = |x: &Vector6<f64>| prob.f_ref.dot(&(x - prob.x_ref));
+    let turned = |x: &Vector6<f64>| -> (Vector6<f64>, f64) {
+        match prob.turn {
+            Some(_) => {
+                let b = symmetry::align(x, &prob.x_ref);
+                (symmetry::act(b, x), b)
+            }
+            None => (*x, 0.0),
+        }
+    };
+    let g = |x: &Vector6<f64>| prob.f_ref.dot(&(turned(x).0 - prob.x_ref));
     let mut prev = (0.0, 0.0);
-    let mut returns: Vec<(f64, f64)> = Vec::new();
+    let mut returns: Vec<(f64, f64, f64)> = Vec::new();
     let rhs = |_t: f64, x: &Vector6<f64>| field(model, x);
     let _ = dop853::integrate(
         rhs,
@@ -290,7 +381,8 @@ fn plane_returns<M: Lagrangian + ?Sized>(
                         |lo, hi| estimated_distance(lo, hi) <= 1e-12 * hi.at,
                     )?;
                     if z.at > from && z.at < to {
-                        returns.push((z.at, (d.eval(z.at) - prob.x_ref).norm()));
+                        let (y, b) = turned(&d.eval(z.at));
+                        returns.push((z.at, (y - prob.x_ref).norm(), b));
                     }
                 }
             }
@@ -304,19 +396,20 @@ fn plane_returns<M: Lagrangian + ?Sized>(
 /// The time of the guess's closest return through its own phase plane within `(T/2, 4T)` of the
 /// period guessed, the earliest crossing about as near to `x_ref` as the nearest. A user's period
 /// guess is often off by tens of per cent (a pendulum's period doubles near the separatrix);
-/// Newton's basin in `T` is narrower. `None`: no return (then the guess is used as it is).
+/// Newton's basin in `T` is narrower. Returns the time and the body turn there (0 without the
+/// axial symmetry). `None`: no return (then the guess is used as it is).
 fn return_time<M: Lagrangian + ?Sized>(
     model: &M,
     prob: &Problem,
     period: f64,
     opts: &OrbitOptions,
-) -> Option<f64> {
+) -> Option<(f64, f64)> {
     let returns = plane_returns(model, prob, 0.5 * period, 4.0 * period, opts);
     // The earliest return about as close as the closest: on an orbit the returns after 2T, 3T
     // are as close as the first (to round-off), and the first is the period.
     let closest = returns.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
     let near = 2.0 * closest + 1e-8 * 1f64.max(prob.x_ref.norm());
-    returns.iter().find(|r| r.1 <= near).map(|r| r.0)
+    returns.iter().find(|r| r.1 <= near).map(|r| (r.0, r.2))
 }
 
 /// The orbit's minimal period, when a corrected orbit of period `T` is one of period `T/n`
@@ -329,12 +422,12 @@ fn shorter_period<M: Lagrangian + ?Sized>(
     period: f64,
     amplitude: f64,
     opts: &OrbitOptions,
-) -> Option<f64> {
+) -> Option<(f64, f64)> {
     let close = (1e-6 * 1f64.max(prob.x_ref.norm())).min(1e-3 * amplitude);
     plane_returns(model, prob, 1e-3 * period, (1.0 - 1e-3) * period, opts)
         .into_iter()
         .find(|r| r.1 <= close)
-        .map(|r| r.0)
+        .map(|r| (r.0, r.2))
 }
 
 /// Checks a guess: finite, `|γ| = 1`, `T > 0`, and not a steady motion (a point that moves by
@@ -413,8 +506,8 @@ pub fn periodic_orbit<M: crate::Routhian>(
     };
     let prob = Problem::at(model, &x, p, scales)?;
     let row = scales.energy_row(e);
-    let t0 = return_time(model, &prob, period_guess, opts).unwrap_or(period_guess);
-    let w0 = scales.pack(&x, t0, e);
+    let (t0, b0) = return_time(model, &prob, period_guess, opts).unwrap_or((period_guess, 0.0));
+    let w0 = scales.pack_turned(&x, t0, e, b0);
     let s = match correct(model, &prob, &row, &w0, opts)? {
         Ok(s) => s,
         Err(best) => {
@@ -437,8 +530,9 @@ pub fn periodic_orbit<M: crate::Routhian>(
     let t = scales.period(&s.w);
     let x1: Vector6<f64> = s.w.fixed_rows::<6>(0).into();
     let at = Problem::at(model, &x1, p, scales)?;
-    if let Some(t_min) = shorter_period(model, &at, t, s.shot.reach, opts) {
-        if let Ok(m) = correct(model, &at, &row, &scales.pack(&x1, t_min, e), opts)? {
+    if let Some((t_min, b)) = shorter_period(model, &at, t, s.shot.reach, opts) {
+        let w = scales.pack_turned(&x1, t_min, e, b);
+        if let Ok(m) = correct(model, &at, &row, &w, opts)? {
             return Ok(orbit_of(model, &m, &scales, opts));
         }
     }
