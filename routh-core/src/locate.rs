@@ -62,6 +62,9 @@ pub(crate) enum Stop {
 #[derive(Debug, Clone)]
 pub(crate) struct Located<P> {
     pub best: End<P>,
+    /// The final bracket's other end (the same as `best` after [`Stop::Zero`] at an end).
+    #[allow(dead_code)]
+    pub other: End<P>,
     /// Read by the tests (the count is the locator's cost).
     #[cfg_attr(not(test), allow(dead_code))]
     pub solves: usize,
@@ -91,14 +94,18 @@ pub(crate) fn locate<P: Clone, E>(
     done: impl Fn(&End<P>, &End<P>) -> bool,
 ) -> Result<Located<P>, E> {
     let (mut lo, mut hi) = if lo.at <= hi.at { (lo, hi) } else { (hi, lo) };
-    let finish = |lo: End<P>, hi: End<P>, solves: usize, stop: Stop| Located {
-        best: if lo.value.abs() <= hi.value.abs() {
-            lo
+    let finish = |lo: End<P>, hi: End<P>, solves: usize, stop: Stop| {
+        let (best, other) = if lo.value.abs() <= hi.value.abs() {
+            (lo, hi)
         } else {
-            hi
-        },
-        solves,
-        stop,
+            (hi, lo)
+        };
+        Located {
+            best,
+            other,
+            solves,
+            stop,
+        }
     };
     if lo.value == 0.0 || hi.value == 0.0 {
         return Ok(finish(lo, hi, 0, Stop::Zero));
@@ -145,6 +152,7 @@ pub(crate) fn locate<P: Clone, E>(
         };
         if v == 0.0 {
             return Ok(Located {
+                other: end.clone(),
                 best: end,
                 solves,
                 stop: Stop::Zero,

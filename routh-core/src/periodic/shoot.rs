@@ -78,6 +78,9 @@ pub(crate) struct Problem {
     pub scales: Scales,
     /// The gauge and the momentum about `e₃` of an axially symmetric body (`None`: `Δφ = 0`).
     pub turn: Option<Turn>,
+    /// The Gauss–Newton step drops the singular values below this fraction of the largest
+    /// (1e−12; larger at a branch point, whose second null direction is the crossing family's).
+    pub cut: f64,
 }
 
 impl Problem {
@@ -95,6 +98,7 @@ impl Problem {
             f_ref: f / f.norm(),
             scales,
             turn: symmetry::turn_at(model, x)?,
+            cut: 1e-12,
         })
     }
 }
@@ -273,7 +277,7 @@ pub(crate) fn correct<M: Lagrangian + ?Sized>(
             break;
         }
         let svd = j.svd(true, true);
-        let cut = 1e-12 * svd.singular_values.max();
+        let cut = prob.cut * svd.singular_values.max();
         let Ok(step) = svd.solve(&r, cut) else {
             return Ok(Err(best));
         };
