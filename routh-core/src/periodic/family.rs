@@ -11,7 +11,7 @@
 
 use nalgebra::{Complex, Matrix6, SMatrix, Vector6};
 
-use super::flow::{field_and_jacobian, integrals, join, split};
+use super::flow::{field_and_jacobian, join, onto_level, split};
 use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Solved, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
 use crate::locate::{estimated_distance, locate, End};
@@ -433,28 +433,6 @@ fn mode_vector(a: &Matrix6<f64>, omega: f64) -> Vector6<f64> {
     u / u.norm()
 }
 
-/// The point nearest `x` with `p_ψ = p` and `|γ| = 1`: minimum-norm Gauss–Newton steps on the
-/// two constraints (three are plenty from a point off them at second order).
-fn onto_level<M: Routhian>(model: &M, x: &Vector6<f64>, p: f64) -> Vector6<f64> {
-    let mut x = *x;
-    for _ in 0..4 {
-        let (_, _, px, dp) = integrals(model, &x);
-        let (_, g) = split(&x);
-        let c = nalgebra::Vector2::new(px - p, 0.5 * (g.norm_squared() - 1.0));
-        let mut j = SMatrix::<f64, 2, 6>::zeros();
-        j.set_row(0, &dp.transpose());
-        for k in 0..3 {
-            j[(1, 3 + k)] = g[k];
-        }
-        let Some(inv) = (j * j.transpose()).try_inverse() else {
-            break;
-        };
-        x -= j.transpose() * (inv * c);
-    }
-    let (w, g) = split(&x);
-    join(&w, &g.normalize())
-}
-
 /// The Lyapunov family of periodic orbits of mode `mode` (0: the faster frequency ω₁, 1: ω₂)
 /// born at an elliptic steady motion, followed at the steady motion's `p_ψ` through the energy
 /// (docs/method.md §11).
@@ -535,7 +513,10 @@ pub fn lyapunov_family<M: Routhian>(
         bounds: opts.energy_bounds,
         first_period: period,
     };
-    let prob = Problem::at(model, &x0, steady.p_psi, scales)?;
+    let mut prob = Problem::at(model, &x0, steady.p_psi, scales)?;
+    if super::symmetry::mode_is_a_turn(&xs, &a, &u) {
+        prob.turn = None;
+    }
     let row = scales.energy_row(e0);
     let first = match correct(model, &prob, &row, &scales.pack(&x0, period, e0), opts)? {
         Ok(s) => s,

@@ -211,3 +211,25 @@ pub fn orbit_path<M: Lagrangian>(
         .at_times(times);
     simulate_full(model, orbit.omega0, orbit.gamma0, orbit.period, &opts)
 }
+
+/// The point nearest `x` with `p_ψ = p` and `|γ| = 1`: minimum-norm Gauss–Newton steps on the
+/// two constraints (three are plenty from a point off them at second order).
+pub(crate) fn onto_level<M: Lagrangian + ?Sized>(model: &M, x: &Vector6<f64>, p: f64) -> Vector6<f64> {
+    let mut x = *x;
+    for _ in 0..4 {
+        let (_, _, px, dp) = integrals(model, &x);
+        let (_, g) = split(&x);
+        let c = nalgebra::Vector2::new(px - p, 0.5 * (g.norm_squared() - 1.0));
+        let mut j = nalgebra::SMatrix::<f64, 2, 6>::zeros();
+        j.set_row(0, &dp.transpose());
+        for k in 0..3 {
+            j[(1, 3 + k)] = g[k];
+        }
+        let Some(inv) = (j * j.transpose()).try_inverse() else {
+            break;
+        };
+        x -= j.transpose() * (inv * c);
+    }
+    let (w, g) = split(&x);
+    join(&w, &g.normalize())
+}

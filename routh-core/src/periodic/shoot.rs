@@ -16,7 +16,7 @@
 
 use nalgebra::{SMatrix, SVector, Vector3, Vector6};
 
-use super::flow::{field, integrals, join, precession, shoot, split, Shot};
+use super::flow::{field, integrals, join, onto_level, precession, shoot, split, Shot};
 use super::symmetry::{self, Turn};
 use super::{OrbitOptions, OrbitStability, PeriodicOrbit};
 use crate::locate::{estimated_distance, illinois, End};
@@ -256,10 +256,12 @@ pub(crate) fn correct<M: Lagrangian + ?Sized>(
         // gives the period its nonlinear correction.
         let relative = it > 0 || r.fixed_rows::<6>(0).amax() <= opts.newton_tol * s.reach;
         if res <= opts.newton_tol && relative {
-            let (_, g) = split(&x);
+            // Onto the level of p_ψ and |γ| = 1 exactly (the rows hold them to newton_tol):
+            // a move of the order of round-off, which the closure does not see.
+            let xl = onto_level(model, &x, prob.p_psi);
+            let (_, gn) = split(&xl);
             let mut w = w;
-            let gn = g.normalize();
-            w.fixed_rows_mut::<3>(3).copy_from(&gn);
+            w.fixed_rows_mut::<6>(0).copy_from(&xl);
             let trace = s.monodromy.trace();
             return Ok(Ok(Solved {
                 w,

@@ -154,6 +154,26 @@ pub(crate) fn less_body_turn(turn: &UnitQuaternion<f64>, body_turn: f64) -> Unit
 /// turn, `F(x) ∥ ξ(x)`) when the part of `F` normal to `ξ` is at most this of `|F|`.
 pub(crate) const RELATIVE_EQUILIBRIUM_TOL: f64 = 1e-6;
 
+/// Whether the linear mode `u` of the steady motion `xs` (Jacobian `a` of the field there) is
+/// itself a turn about `e₃`: `xs` on the axis (`ξ(xs) = 0`) and the mode's velocity `a·u`
+/// parallel to `ξ(u)` (to 1e−6). The small orbits of such a mode (a sleeping top's circular
+/// precessions) are relative equilibria of the two turns, periodic in the ordinary sense with
+/// `Δφ = 0`: their family is corrected without the body turn, which the test of [`turn_at`]
+/// would otherwise switch on at a finite amplitude (the linear orbit is a turn to first order
+/// only).
+pub(crate) fn mode_is_a_turn(
+    xs: &Vector6<f64>,
+    a: &nalgebra::Matrix6<f64>,
+    u: &Vector6<f64>,
+) -> bool {
+    if generator(xs).norm() > 1e-12 * 1f64.max(xs.norm()) {
+        return false;
+    }
+    let (v, xi) = (a * u, generator(u));
+    let n = xi.norm_squared();
+    n > 0.0 && (v - xi * (v.dot(&xi) / n)).norm() <= RELATIVE_EQUILIBRIUM_TOL * v.norm()
+}
+
 /// What the corrector adds on an axially symmetric body (docs/method.md §11a): the gauge
 /// plane through `x_ref` normal to the generator, and the momentum about the axis to keep.
 #[derive(Debug, Clone, Copy)]

@@ -1,0 +1,378 @@
+//! The events of orbit families (docs/method.md §11), each re-located by a computation routh does
+//! not make: planar swings of a heavy body with distinct moments are pendulum motions whose
+//! period is `4K(m)/ω₀` in closed form, and whose stability index is the trace of a monodromy
+//! integrated here by a fixed-step classical Runge–Kutta method on the Euler–Poisson equations
+//! and their variational equations, written out in this file (not the crate's vector field,
+//! integrator or corrector). The swing amplitude where `k = ±1` is found by bisection on that
+//! trace; routh's events must sit there, at any `max_step`, with their own orbit on the family.
+
+use routh_core::{
+    lyapunov_family, simulate_full, steady_motions, switch_branch, Matrix3, OrbitEvent,
+    OrbitEventKind, OrbitFamily, OrbitOptions, SimOptions, SteadyMotion, Vector3,
+};
+use std::f64::consts::PI;
+use test_models::HeavyTop;
+
+/// The body: `J = diag(1, 1.6, 2.3)`, centre of mass on `e₃`, `mgl = 1` (`U = mgl γ₃`).
+const J: [f64; 3] = [1.0, 1.6, 2.3];
+const MGL: f64 = 1.0;
+
+fn body() -> HeavyTop {
+    HeavyTop {
+        j: Matrix3::from_diagonal(&Vector3::new(J[0], J[1], J[2])),
+        mgr: Vector3::new(0.0, 0.0, MGL),
+    }
+}
+
+fn hanging(m: &HeavyTop, p_psi: f64) -> SteadyMotion {
+    steady_motions(m, p_psi)
+        .unwrap()
+        .into_iter()
+        .find(|s| s.gamma.z < -0.9)
+        .expect("the hanging steady motion")
+}
+
+/// `K(m) = π / (2 AGM(1, √(1 − m)))`.
+fn elliptic_k(m: f64) -> f64 {
+    let (mut a, mut g) = (1.0f64, (1.0 - m).sqrt());
+    for _ in 0..60 {
+        let (an, gn) = (0.5 * (a + g), (a * g).sqrt());
+        a = an;
+        g = gn;
+    }
+    PI / (2.0 * a)
+}
+
+/// `e_i × v` for the state layout below.
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The Euler–Poisson equations `Jω̇ = Jω × ω − mgl e₃ × γ`, `γ̇ = γ × ω` and their variational
+/// equations for the columns of `Φ` (state: ω, γ, then 6 columns of 6).
+fn rhs(y: &[f64; 42]) -> [f64; 42] {
+    let w = [y[0], y[1], y[2]];
+    let g = [y[3], y[4], y[5]];
+    let jw = [J[0] * w[0], J[1] * w[1], J[2] * w[2]];
+    let e3 = [0.0, 0.0, MGL];
+    let mut out = [0.0; 42];
+    let t = cross(jw, w);
+    let u = cross(e3, g);
+    let gd = cross(g, w);
+    for i in 0..3 {
+        out[i] = (t[i] - u[i]) / J[i];
+        out[3 + i] = gd[i];
+    }
+    for c in 0..6 {
+        let o = 6 + 6 * c;
+        let dw = [y[o], y[o + 1], y[o + 2]];
+        let dg = [y[o + 3], y[o + 4], y[o + 5]];
+        let jdw = [J[0] * dw[0], J[1] * dw[1], J[2] * dw[2]];
+        let (a, b, u) = (cross(jdw, w), cross(jw, dw), cross(e3, dg));
+        let (p, q) = (cross(dg, w), cross(g, dw));
+        for i in 0..3 {
+            out[o + i] = (a[i] + b[i] - u[i]) / J[i];
+            out[o + 3 + i] = p[i] + q[i];
+        }
+    }
+    out
+}
+
+/// The stability index `k = (tr Φ(T) − 4)/2` of the planar swing about the principal axis
+/// `axis` (0 or 1) with amplitude `theta0`, over its closed-form period, by `n` classical RK4
+/// steps.
+fn index_of_swing(axis: usize, theta0: f64, n: usize) -> f64 {
+    let w0 = (MGL / J[axis]).sqrt();
+    let period = 4.0 * elliptic_k((0.5 * theta0).sin().powi(2)) / w0;
+    let mut y = [0.0; 42];
+    // Turning point: ω = 0, γ in the plane normal to the axis.
+    let other = 1 - axis;
+    y[3 + other] = theta0.sin();
+    y[5] = -theta0.cos();
+    for c in 0..6 {
+        y[6 + 7 * c] = 1.0;
+    }
+    let h = period / n as f64;
+    let add = |y: &[f64; 42], k: &[f64; 42], s: f64| {
+        let mut z = *y;
+        for i in 0..42 {
+            z[i] += s * k[i];
+        }
+        z
+    };
+    for _ in 0..n {
+        let k1 = rhs(&y);
+        let k2 = rhs(&add(&y, &k1, 0.5 * h));
+        let k3 = rhs(&add(&y, &k2, 0.5 * h));
+        let k4 = rhs(&add(&y, &k3, h));
+        for i in 0..42 {
+            y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+    }
+    let trace: f64 = (0..6).map(|c| y[6 + 7 * c]).sum();
+    0.5 * (trace - 4.0)
+}
+
+/// The energies `−mgl cos θ₀` of the swings about `axis` where `k = target`, for amplitudes up
+/// to `max_energy`: a scan of 80 amplitudes and bisection to `1e−13` in `θ₀`.
+fn independent_events(axis: usize, target: f64, max_energy: f64) -> Vec<f64> {
+    let n = 6000;
+    let f = |th: f64| index_of_swing(axis, th, n) - target;
+    let top = (-max_energy / MGL).acos();
+    let grid: Vec<f64> = (1..=80).map(|i| top * i as f64 / 80.0).collect();
+    let mut out = Vec::new();
+    let mut prev = (grid[0], f(grid[0]));
+    for &th in &grid[1..] {
+        let v = f(th);
+        if prev.1 * v < 0.0 {
+            let (mut lo, mut hi, mut flo) = (prev.0, th, prev.1);
+            while hi - lo > 1e-13 {
+                let mid = 0.5 * (lo + hi);
+                let fm = f(mid);
+                if fm * flo > 0.0 {
+                    lo = mid;
+                    flo = fm;
+                } else {
+                    hi = mid;
+                }
+            }
+            out.push(-MGL * (0.5 * (lo + hi)).cos());
+        }
+        prev = (th, v);
+    }
+    out
+}
+
+/// The axis of a planar swing family: the axis its angular velocity is about.
+fn swing_axis(f: &OrbitFamily) -> usize {
+    let o = &f.orbits[f.orbits.len() / 2];
+    if o.omega0.x.abs() >= o.omega0.y.abs() {
+        0
+    } else {
+        1
+    }
+}
+
+fn kind_target(kind: OrbitEventKind) -> f64 {
+    match kind {
+        OrbitEventKind::BranchPoint => 1.0,
+        OrbitEventKind::PeriodDoubling => -1.0,
+        OrbitEventKind::Fold => f64::NAN,
+    }
+}
+
+/// (1) Every branch point and period doubling of both planar swing families of the hanging
+/// body at `p_ψ = 0` (energies up to 0.9), at `max_step` 0.02, 0.04 and 0.08, is where the
+/// independent monodromy puts it: `|ΔE| ≤ 1e−9·max(1, |E|)` (the contract's `event_tol`); its
+/// orbit is on the family (planar, `k` within 1e−9 of ±1, the period `4K(m)/ω₀` of its own
+/// amplitude) and none is missing or spurious.
+#[test]
+fn events_of_planar_swings_are_where_an_independent_monodromy_puts_them() {
+    let m = body();
+    let h = hanging(&m, 0.0);
+    let max_energy = 0.9;
+    // The independent events, per swing axis and kind (the scan is the same for every step).
+    let reference: Vec<Vec<(OrbitEventKind, f64)>> = (0..2)
+        .map(|axis| {
+            let mut v: Vec<(OrbitEventKind, f64)> = Vec::new();
+            for kind in [OrbitEventKind::BranchPoint, OrbitEventKind::PeriodDoubling] {
+                for e in independent_events(axis, kind_target(kind), max_energy) {
+                    v.push((kind, e));
+                }
+            }
+            v
+        })
+        .collect();
+    assert!(
+        reference.iter().map(Vec::len).sum::<usize>() >= 2,
+        "the scan finds the branch points of both families: {reference:?}"
+    );
+    eprintln!("independent events: {reference:?}");
+    for max_step in [0.02, 0.04, 0.08] {
+        let opts = OrbitOptions {
+            max_step,
+            max_orbits: 400,
+            energy_bounds: Some((-2.0, max_energy)),
+            ..OrbitOptions::default()
+        };
+        for mode in 0..2 {
+            let f = lyapunov_family(&m, &h, mode, &opts).unwrap();
+            let axis = swing_axis(&f);
+            let want = &reference[axis];
+            let got: Vec<&OrbitEvent> = f.events.iter().collect();
+            assert_eq!(
+                got.len(),
+                want.len(),
+                "max_step {max_step}, mode {mode}: routh {:?} vs independent {want:?}",
+                got.iter().map(|e| (e.kind, e.energy)).collect::<Vec<_>>()
+            );
+            for (e, (kind, energy)) in got.iter().zip(want) {
+                assert_eq!(e.kind, *kind);
+                assert!(
+                    (e.energy - energy).abs() <= 1e-9 * energy.abs().max(1.0),
+                    "max_step {max_step}, mode {mode}: {:?} at E = {:.12}, independent {energy:.12} (ΔE = {:.2e})",
+                    e.kind,
+                    e.energy,
+                    e.energy - energy
+                );
+                let o = &e.orbit;
+                assert!(
+                    (o.stability_index - kind_target(e.kind)).abs() <= 1e-9,
+                    "the event orbit's k = {:.12}",
+                    o.stability_index
+                );
+                // On the planar family: out-of-plane components zero, period of the pendulum.
+                let out_of_plane = if axis == 0 {
+                    [o.omega0.y, o.omega0.z, o.gamma0.x]
+                } else {
+                    [o.omega0.x, o.omega0.z, o.gamma0.y]
+                };
+                assert!(
+                    out_of_plane.iter().all(|c| c.abs() < 1e-9),
+                    "event orbit off the plane: {out_of_plane:?}"
+                );
+                let theta0 = (-o.energy / MGL).acos();
+                let exact = 4.0 * elliptic_k((0.5 * theta0).sin().powi(2)) / (MGL / J[axis]).sqrt();
+                assert!(
+                    (o.period - exact).abs() <= 1e-8 * exact,
+                    "event period {} vs 4K/ω₀ {exact}",
+                    o.period
+                );
+            }
+            // The whole family stays planar (the issue saw drifts of 3.7e−3).
+            for o in &f.orbits {
+                let off = if axis == 0 {
+                    o.gamma0.x.abs().max(o.omega0.y.abs()).max(o.omega0.z.abs())
+                } else {
+                    o.gamma0.y.abs().max(o.omega0.x.abs()).max(o.omega0.z.abs())
+                };
+                assert!(off < 1e-9, "orbit at E = {} off its plane by {off:e}", o.energy);
+            }
+        }
+    }
+}
+
+/// The independent index itself converges: RK4 at 6000 and 12000 steps agree to 1e−11 on a large
+/// swing (so the bisection above resolves the events to far better than 1e−9).
+#[test]
+fn the_independent_index_is_converged() {
+    let a = index_of_swing(0, 2.0, 6000);
+    let b = index_of_swing(0, 2.0, 12000);
+    assert!((a - b).abs() < 1e-11, "{a} vs {b}");
+}
+
+/// (1) The issue's case: `p_ψ = 0.5`, the non-planar family of mode 1 and its branch point at
+/// E ≈ 0.46244683 (placed there by an independent scipy computation of k along the family): the
+/// event is found at three step sizes at one energy (to 1e−9), with `k = 1` to 1e−9, and its orbit
+/// closes under `simulate_full` (a different integrator, no corrector).
+#[test]
+fn a_branch_point_off_the_planes_is_the_same_at_every_step() {
+    let m = body();
+    let h = hanging(&m, 0.5);
+    let mut energies = Vec::new();
+    for max_step in [0.02, 0.04, 0.08] {
+        let opts = OrbitOptions {
+            max_step,
+            max_orbits: 400,
+            energy_bounds: Some((-2.0, 0.6)),
+            ..OrbitOptions::default()
+        };
+        let f = lyapunov_family(&m, &h, 1, &opts).unwrap();
+        let bp: Vec<_> = f
+            .events
+            .iter()
+            .filter(|e| e.kind == OrbitEventKind::BranchPoint)
+            .collect();
+        assert_eq!(bp.len(), 1, "max_step {max_step}: {:?}", f.events);
+        let e = bp[0];
+        assert!((e.orbit.stability_index - 1.0).abs() <= 1e-9);
+        assert!((e.energy - 0.46244683).abs() < 2e-8, "E = {}", e.energy);
+        let o = &e.orbit;
+        let tr = simulate_full(
+            &m,
+            o.omega0,
+            o.gamma0,
+            o.period,
+            &SimOptions::with_tolerances(1e-12, 1e-13),
+        )
+        .unwrap();
+        let n = tr.t.len() - 1;
+        let gap = (tr.omega[n] - o.omega0).norm() + (tr.gamma[n] - o.gamma0).norm();
+        assert!(gap < 1e-8, "the event orbit does not close: {gap:e}");
+        energies.push(e.energy);
+    }
+    let spread = energies.iter().cloned().fold(f64::MIN, f64::max)
+        - energies.iter().cloned().fold(f64::MAX, f64::min);
+    assert!(spread <= 1e-9, "{energies:?}");
+}
+
+/// (5) Branch switching: the family crossing the planar swings at their branch point is made of
+/// periodic orbits (closed by `simulate_full`) that leave the plane, at energies on one side of
+/// the branch point (a pitchfork: the energy is stationary there), and passes through the event.
+#[test]
+fn switch_branch_follows_the_crossing_family() {
+    let m = body();
+    let h = hanging(&m, 0.0);
+    let opts = OrbitOptions {
+        max_orbits: 400,
+        energy_bounds: Some((-2.0, 0.9)),
+        ..OrbitOptions::default()
+    };
+    let f = lyapunov_family(&m, &h, 0, &opts).unwrap();
+    let axis = swing_axis(&f);
+    let bp = f
+        .events
+        .iter()
+        .find(|e| e.kind == OrbitEventKind::BranchPoint)
+        .expect("a branch point on the swings");
+    let sw = switch_branch(
+        &m,
+        bp,
+        &OrbitOptions {
+            max_orbits: 30,
+            ..opts
+        },
+    )
+    .unwrap();
+    assert!(sw.orbits.len() >= 10, "{} orbits", sw.orbits.len());
+    let side = sw
+        .orbits
+        .iter()
+        .map(|o| (o.energy - bp.energy).signum())
+        .filter(|s| *s != 0.0)
+        .collect::<Vec<_>>();
+    let mut off_plane = 0;
+    for o in &sw.orbits {
+        let tr = simulate_full(
+            &m,
+            o.omega0,
+            o.gamma0,
+            o.period,
+            &SimOptions::with_tolerances(1e-12, 1e-13),
+        )
+        .unwrap();
+        let n = tr.t.len() - 1;
+        let gap = (tr.omega[n] - o.omega0).norm() + (tr.gamma[n] - o.gamma0).norm();
+        assert!(gap < 1e-7, "orbit at E = {} does not close: {gap:e}", o.energy);
+        let off = if axis == 0 {
+            o.gamma0.x.abs().max(o.omega0.y.abs())
+        } else {
+            o.gamma0.y.abs().max(o.omega0.x.abs())
+        };
+        if off > 1e-3 {
+            off_plane += 1;
+        }
+    }
+    assert!(off_plane >= 5, "the crossing family leaves the plane");
+    // A pitchfork: far from the event the crossing family lies on one side of it in energy.
+    let far: Vec<f64> = side.iter().rev().take(3).cloned().collect();
+    assert!(far.iter().all(|s| *s == far[0]), "{side:?}");
+    // A period doubling's family is not a branch point's: the wrong event is an error.
+    let mut wrong = bp.clone();
+    wrong.kind = OrbitEventKind::PeriodDoubling;
+    assert!(switch_branch(&m, &wrong, &opts).is_err());
+}
