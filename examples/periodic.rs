@@ -19,8 +19,8 @@ use common::{fmt_vec, num};
 
 use routh::plot::{self, Overlay, PlotOptions};
 use routh::{
-    continue_orbit, lyapunov_family, orbit_crossings, orbit_path, period_doubled_family,
-    poincare_section, steady_motions, Lagrangian, OrbitEventKind, OrbitFamily, OrbitOptions,
+    axial_symmetry, continue_orbit, lyapunov_family, orbit_crossings, orbit_path,
+    period_doubled_family, poincare_section, steady_motions, switch_branch, Lagrangian, OrbitEventKind, OrbitFamily, OrbitOptions,
     OrbitStability, PeriodicOrbit, SectionOptions, SteadyMotion, Vector3,
 };
 
@@ -371,6 +371,39 @@ fn main() -> Result<(), Box<dyn Error>> {
     )?;
     written.push(path);
 
+    // --- Branch switching: the family crossing the swings about e₁ ------------------------------
+    if let Some(bp) = swings
+        .events
+        .iter()
+        .find(|e| e.kind == OrbitEventKind::BranchPoint)
+    {
+        let crossing = switch_branch(&body, bp, &OrbitOptions::default().with_max_orbits(40))?;
+        let off_plane = crossing
+            .orbits
+            .iter()
+            .map(|o| o.gamma0.x.abs().max(o.omega0.y.abs()))
+            .fold(0.0f64, f64::max);
+        println!(
+            "\n  switch_branch at the branch point at E = {:.9}: {} orbits of the crossing family, \
+             E from {:.6} to {:.6}, out of the plane γ₁ = 0 by up to {:.3}",
+            bp.energy,
+            crossing.orbits.len(),
+            crossing
+                .orbits
+                .iter()
+                .map(|o| o.energy)
+                .fold(f64::MAX, f64::min),
+            crossing
+                .orbits
+                .iter()
+                .map(|o| o.energy)
+                .fold(f64::MIN, f64::max),
+            off_plane
+        );
+    }
+
+    lagrange_top(&out, &mut written)?;
+
     // --- A Poincaré section of the heavy asymmetric top ---------------------------------------
     // At E = 0.8 the swing about e₁ (amplitude 122°) is still elliptic: an island around it,
     // chains of smaller islands, and a chaotic sea. The plane γ₂ = 0 is crossed by that swing
@@ -427,6 +460,103 @@ fn main() -> Result<(), Box<dyn Error>> {
         println!("  {}", p.display());
     }
     println!("Done in {:.2} s.", start.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// The README's Lagrange top (A₁ = A₂ = 1, C = 1.25, mgl = 1): an axially symmetric body, whose
+/// periodic motions are periodic modulo both turns (docs/method.md §11a). At p_ψ = 0 hanging,
+/// its Lyapunov family is its planar swings (the two frequencies are equal by the symmetry),
+/// each a pendulum, degenerate (the body is integrable); at p_ψ = 3 the sleeping top's two modes
+/// are regular precessions, isolated on their energy level, with a stability index.
+fn lagrange_top(
+    out: &std::path::Path,
+    written: &mut Vec<std::path::PathBuf>,
+) -> Result<(), Box<dyn Error>> {
+    let (a1, c, mgl) = (1.0, 1.25, 1.0);
+    let top = HeavyBody {
+        inertia: Vector3::new(a1, a1, c),
+        mgr: Vector3::new(0.0, 0.0, mgl),
+    };
+    println!(
+        "\nThe Lagrange top A₁ = A₂ = {}, C = {}, mgl = {} (axially symmetric: {})",
+        num(a1, 3),
+        num(c, 3),
+        num(mgl, 3),
+        axial_symmetry(&top)
+    );
+    let hang = hanging(&top)?;
+    let opts = OrbitOptions::default()
+        .with_energy_bounds(-mgl, 0.95 * mgl)
+        .with_max_orbits(200);
+    let swings = lyapunov_family(&top, &hang, 0, &opts)?;
+    let w0 = (mgl / a1).sqrt();
+    let worst = swings
+        .orbits
+        .iter()
+        .map(|o| {
+            let exact = 4.0 * elliptic_k(0.5 * (1.0 + o.energy / mgl)) / w0;
+            (o.period - exact).abs() / exact
+        })
+        .fold(0.0f64, f64::max);
+    println!(
+        "  p_ψ = 0, hanging: {} planar swings up to E = {:.4}, all degenerate: {}, events: {}; \
+         periods against 4K(m)/ω₀: largest relative difference {worst:.1e}",
+        swings.orbits.len(),
+        swings.orbits.last().map_or(f64::NAN, |o| o.energy),
+        swings.orbits.iter().all(|o| o.degenerate),
+        swings.events.len()
+    );
+    let p_psi = 3.0;
+    let sleeping = steady_motions(&top, p_psi)?
+        .into_iter()
+        .find(|s| s.gamma.z > 0.999)
+        .ok_or("no sleeping top at p_ψ = 3")?;
+    let mut families = Vec::new();
+    for mode in 0..2 {
+        let f = lyapunov_family(
+            &top,
+            &sleeping,
+            mode,
+            &OrbitOptions::default()
+                .with_energy_bounds(sleeping.energy - 1.0, sleeping.energy + 1.0)
+                .with_max_orbits(150),
+        )?;
+        let first = &f.orbits[0];
+        println!(
+            "  p_ψ = {p_psi}, sleeping (E = {:.6}), mode {mode}: {} orbits (regular precessions, \
+             degenerate: {}), T from {:.6}, k from {:+.6}; events: {}; ended: {}",
+            sleeping.energy,
+            f.orbits.len(),
+            f.orbits.iter().any(|o| o.degenerate),
+            first.period,
+            first.stability_index,
+            f.events
+                .iter()
+                .map(|e| format!("{} at E = {:.9}", e.kind, e.energy))
+                .collect::<Vec<_>>()
+                .join(", "),
+            f.stop
+                .as_ref()
+                .map_or_else(|| "range reached".into(), |s| s.to_string())
+        );
+        families.push(f);
+    }
+    for (mode, f) in families.iter().enumerate() {
+        let path = out.join(format!("lagrange_top_p3_mode{mode}.svg"));
+        plot::orbit_family_svg(
+            f,
+            &path,
+            &PlotOptions {
+                title: format!(
+                    "sleeping Lagrange top, p_ψ = {p_psi}: mode {mode}, stability index"
+                ),
+                x_label: "energy E".into(),
+                y_label: "stability index k".into(),
+                ..PlotOptions::default()
+            },
+        )?;
+        written.push(path);
+    }
     Ok(())
 }
 

@@ -9,7 +9,7 @@
 //! `BranchPoint`; of `k + 1` a `PeriodDoubling`. Each is located by the crate's one event locator
 //! (`locate.rs`) on re-solves along the step, to `|ΔE| ≤ event_tol·max(1, |E|)`.
 
-use nalgebra::{Complex, Matrix6, SMatrix, Vector6};
+use nalgebra::{Complex, Matrix6, Vector6};
 
 use super::flow::{field_and_jacobian, join, onto_level, split};
 use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Solved, UNKNOWNS, W};

@@ -43,7 +43,7 @@ pub use section::{
     orbit_crossings, poincare_section, PoincareSection, SectionOptions, SectionOrbit,
 };
 pub use shoot::periodic_orbit;
-pub use symmetry::{axial_symmetry, AXIAL_SYMMETRY_TOL};
+pub use symmetry::axial_symmetry;
 
 use crate::RouthError;
 

@@ -20,7 +20,7 @@ use crate::{Lagrangian, RouthError, SteadyMotion};
 /// scale `1 + |L| + |ω||∂L/∂ω| + |∂L/∂γ| + |J|` of the point. The models evaluate these to a
 /// few units of round-off of that scale (1e−15); a body off the symmetry by 1e−9 of it (an
 /// inertia `A₂ = A₁(1 + 1e−8)`, a centre of mass 1e−8 off the axis) is not symmetric.
-pub const AXIAL_SYMMETRY_TOL: f64 = 1e-9;
+pub(crate) const AXIAL_SYMMETRY_TOL: f64 = 1e-9;
 
 /// The turns tried: neither is a rational multiple of π, so a body with an `n`-fold symmetry
 /// only (a term `cos nφ`) fails both.
@@ -43,7 +43,7 @@ pub(crate) fn rot(a: f64) -> Matrix3<f64> {
 /// `J = ∂²L/∂ω²`) unchanged by turns of the body frame about `e₃`,
 /// `L(Rω, Rγ) = L(ω, γ)`, `∂L/∂ω(Rω, Rγ) = R ∂L/∂ω(ω, γ)`, `∂L/∂γ(Rω, Rγ) = R ∂L/∂γ(ω, γ)` and
 /// `J(Rγ) = R J(γ) Rᵀ` for `R = Rot(e₃, α)`, checked at three fixed pseudo-random states and two
-/// angles `α` (0.7 and 2.3 rad) to [`AXIAL_SYMMETRY_TOL`] of each state's scale. The Lagrange
+/// angles `α` (0.7 and 2.3 rad) to 1e−9 of each state's scale. The Lagrange
 /// top (`A₁ = A₂`, centre of mass on `e₃`) is; Kovalevskaya's and Goryachev–Chaplygin's bodies
 /// (`A₁ = A₂` but the centre of mass off the axis) are not. Works alike for derived models,
 /// run-time `Model`s and hand-written ones: it only evaluates the [`Lagrangian`] trait.
