@@ -777,9 +777,11 @@ fn orbit(e: f64, k: f64, t: f64) -> PeriodicOrbit {
         energy: e,
         p_psi: 0.0,
         precession: 0.0,
+        body_turn: 0.0,
         multipliers: PeriodicOrbit::multipliers_from_index(k),
         stability_index: k,
         stability: OrbitStability::from_index(k, 1e-9),
+        degenerate: false,
         amplitude: e,
     }
 }

@@ -16,6 +16,8 @@ mod families_sweep;
 mod invariance;
 mod nonlinear;
 mod periodic;
+mod periodic_bodies;
+mod periodic_events;
 mod runtime_properties;
 mod simulation;
 mod stability;

@@ -5,8 +5,8 @@
 //! first orbit's nonlinear period against the elliptic integral, and the ranges' errors.
 
 use routh_core::{
-    axial_symmetry, continue_orbit, lyapunov_family, periodic_orbit, simulate_full,
-    steady_motions, Matrix3, OrbitOptions, PeriodicOrbit, SimOptions, SteadyMotion, Vector3,
+    axial_symmetry, continue_orbit, lyapunov_family, periodic_orbit, simulate_full, steady_motions,
+    Matrix3, OrbitOptions, PeriodicOrbit, SimOptions, SteadyMotion, Vector3,
 };
 use std::f64::consts::PI;
 use test_models::HeavyTop;
@@ -84,16 +84,19 @@ fn spinning_tops_start_their_families() {
                     max_orbits: 6,
                     ..OrbitOptions::default()
                 };
-                let f = lyapunov_family(&m, &s, mode, &opts).unwrap_or_else(|e| {
-                    panic!("p_ψ = {p_psi}, mode {mode}, amplitude {amp}: {e}")
-                });
+                let f = lyapunov_family(&m, &s, mode, &opts)
+                    .unwrap_or_else(|e| panic!("p_ψ = {p_psi}, mode {mode}, amplitude {amp}: {e}"));
                 assert_eq!(f.orbits.len(), 6, "the family goes on: {:?}", f.stop);
                 for o in &f.orbits {
                     // The corrector stops at newton_tol (1e−9) times max(1, |x₀|) per row; a
                     // spinning top's |ω| is 2.4–4.
                     let gap = closure_gap(&m, o) / o.omega0.norm().max(1.0);
                     assert!(gap < 1e-8, "mode {mode}, amplitude {amp}: gap {gap:e}");
-                    assert!((o.p_psi - p_psi).abs() <= 1e-11 * p_psi, "p_ψ = {}", o.p_psi);
+                    assert!(
+                        (o.p_psi - p_psi).abs() <= 1e-11 * p_psi,
+                        "p_ψ = {}",
+                        o.p_psi
+                    );
                 }
                 periods.push(f.orbits[0].period);
             }
@@ -137,7 +140,12 @@ fn the_symmetric_body_swings_in_planes() {
         ..OrbitOptions::default()
     };
     let f = lyapunov_family(&m, &s, 0, &opts).unwrap();
-    assert!(f.orbits.len() >= 20, "{} orbits, {:?}", f.orbits.len(), f.stop);
+    assert!(
+        f.orbits.len() >= 20,
+        "{} orbits, {:?}",
+        f.orbits.len(),
+        f.stop
+    );
     assert!(f.events.is_empty(), "spurious events: {:?}", f.events);
     let w0 = (mgl / a).sqrt();
     for o in &f.orbits {

@@ -250,7 +250,11 @@ fn events_of_planar_swings_are_where_an_independent_monodromy_puts_them() {
                 } else {
                     o.gamma0.y.abs().max(o.omega0.x.abs()).max(o.omega0.z.abs())
                 };
-                assert!(off < 1e-9, "orbit at E = {} off its plane by {off:e}", o.energy);
+                assert!(
+                    off < 1e-9,
+                    "orbit at E = {} off its plane by {off:e}",
+                    o.energy
+                );
             }
         }
     }
@@ -357,7 +361,11 @@ fn switch_branch_follows_the_crossing_family() {
         .unwrap();
         let n = tr.t.len() - 1;
         let gap = (tr.omega[n] - o.omega0).norm() + (tr.gamma[n] - o.gamma0).norm();
-        assert!(gap < 1e-7, "orbit at E = {} does not close: {gap:e}", o.energy);
+        assert!(
+            gap < 1e-7,
+            "orbit at E = {} does not close: {gap:e}",
+            o.energy
+        );
         let off = if axis == 0 {
             o.gamma0.x.abs().max(o.omega0.y.abs())
         } else {

@@ -544,9 +544,11 @@ pub fn stability_atlas_svg<P: AsRef<Path>>(
 ///         energy: e,
 ///         p_psi: 0.0,
 ///         precession: 0.0,
+///         body_turn: 0.0,
 ///         multipliers: PeriodicOrbit::multipliers_from_index(k),
 ///         stability_index: k,
 ///         stability: OrbitStability::from_index(k, 1e-9),
+///         degenerate: false,
 ///         amplitude: e,
 ///     }
 /// };

@@ -214,7 +214,11 @@ pub fn orbit_path<M: Lagrangian>(
 
 /// The point nearest `x` with `p_ψ = p` and `|γ| = 1`: minimum-norm Gauss–Newton steps on the
 /// two constraints (three are plenty from a point off them at second order).
-pub(crate) fn onto_level<M: Lagrangian + ?Sized>(model: &M, x: &Vector6<f64>, p: f64) -> Vector6<f64> {
+pub(crate) fn onto_level<M: Lagrangian + ?Sized>(
+    model: &M,
+    x: &Vector6<f64>,
+    p: f64,
+) -> Vector6<f64> {
     let mut x = *x;
     for _ in 0..4 {
         let (_, _, px, dp) = integrals(model, &x);
