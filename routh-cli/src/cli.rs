@@ -51,7 +51,8 @@ pub enum Command {
     /// p_ψ = P (each mode, or `--mode`), or with `--continue` the family through one corrected
     /// orbit: energy, period, precession Δψ and stability index k of the orbits, and the folds,
     /// branch points and period doublings along each family; with `--doubling` also the
-    /// period-doubled families born at the period doublings.
+    /// period-doubled families born at the period doublings, with `--switch` the families
+    /// crossing at the branch points.
     Orbits(Orbits),
     /// A Poincaré section at p_ψ = P and energy E: many orbits crossing the plane γ·n = 0 (the
     /// points as CSV or JSON; regular motion shows as curves, chaos as scattered dots).
@@ -287,6 +288,10 @@ pub struct Orbits {
     /// computed (one generation: the doubled families' own doublings are listed, not followed).
     #[arg(long)]
     pub doubling: bool,
+    /// Also follow the family crossing at each branch point of the families computed (one
+    /// generation, as `--doubling`; both may be given).
+    #[arg(long)]
+    pub switch: bool,
     /// The most orbits per family.
     #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u16).range(1..=10000))]
     pub max_orbits: u16,
@@ -295,11 +300,11 @@ pub struct Orbits {
     pub rows: usize,
     /// Draw the family's stability diagram (the index k against E, the lines k = ±1, events
     /// named) into this SVG file; needs exactly one family (choose it with `--mode` and
-    /// `--gamma`).
-    #[arg(long, value_name = "FILE")]
+    /// `--gamma`; not with `--doubling` or `--switch`).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["doubling", "switch"])]
     pub svg: Option<PathBuf>,
     /// Draw the family's periods against E into this SVG file (one family, as `--svg`).
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["doubling", "switch"])]
     pub periods_svg: Option<PathBuf>,
     /// Output format.
     #[command(flatten)]

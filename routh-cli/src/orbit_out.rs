@@ -7,15 +7,15 @@
 //! `routh.PeriodicOrbit.from_json`, `routh.OrbitFamily.from_json`) reads what the CLI prints, and
 //! Rust reads it with `serde_json::from_str::<routh::PeriodicOrbit>` (the two keys are ignored).
 //! A family of `routh orbits` also says where it comes from: `origin` (`"lyapunov"`,
-//! `"continued"`, `"period_doubled"`), and `motion` (the steady motion, a `SteadyMotion`
-//! document) and `mode` of a Lyapunov family, `parent` (the index of the family in the same
-//! output) and `event` (the index of the period doubling among the parent's events) of a
-//! period-doubled one; `null` where they do not apply.
+//! `"continued"`, `"period_doubled"`, `"switched"`), and `motion` (the steady motion, a
+//! `SteadyMotion` document) and `mode` of a Lyapunov family, `parent` (the index of the family in
+//! the same output) and `event` (the index of the period doubling or branch point among the
+//! parent's events) of a period-doubled or switched one; `null` where they do not apply.
 //!
 //! CSV. The columns of Python's `PeriodicOrbit.to_pandas()` (docs/python.md, "Export"):
-//! `period, energy, p_psi, precession, stability_index, stability, amplitude, omega1..3,
-//! gamma1..3` (the initial conditions `omega0`, `gamma0`), `multiplier1_re, multiplier1_im,
-//! multiplier2_re, multiplier2_im`. A family adds in front `family, origin, parent, mode,
+//! `period, energy, p_psi, precession, body_turn, degenerate, stability_index, stability,
+//! amplitude, omega1..3, gamma1..3` (the initial conditions `omega0`, `gamma0`),
+//! `multiplier1_re, multiplier1_im, multiplier2_re, multiplier2_im`. A family adds in front `family, origin, parent, mode,
 //! steady_gamma1..3, kind` and at the end `before, after`, as Python's `OrbitFamily.to_pandas()`
 //! (`kind` is `orbit` for an orbit, else the event's kind): every orbit of every family, then
 //! every event (their own section of rows, same columns). Numbers in Rust's shortest round-trip
@@ -55,14 +55,27 @@ pub enum Origin {
     Continued,
     /// Born at the period doubling `event` (an index into its events) of the family `parent`.
     PeriodDoubled { parent: usize, event: usize },
+    /// Crossing the family `parent` at its branch point `event` (an index into its events).
+    Switched { parent: usize, event: usize },
 }
 
 impl Origin {
-    fn name(&self) -> &'static str {
+    pub fn name(&self) -> &'static str {
         match self {
             Origin::Lyapunov { .. } => "lyapunov",
             Origin::Continued => "continued",
             Origin::PeriodDoubled { .. } => "period_doubled",
+            Origin::Switched { .. } => "switched",
+        }
+    }
+
+    /// The family and event it was born at, for a period-doubled or switched family.
+    pub fn parent(&self) -> Option<(usize, usize)> {
+        match self {
+            Origin::PeriodDoubled { parent, event } | Origin::Switched { parent, event } => {
+                Some((*parent, *event))
+            }
+            Origin::Lyapunov { .. } | Origin::Continued => None,
         }
     }
 }
@@ -97,18 +110,13 @@ pub fn families_json(families: &[Family]) -> Result<String, serde_json::Error> {
     let docs: Vec<FamilyDocument> = families
         .iter()
         .map(|f| {
-            let (motion, mode, parent, event) = match &f.origin {
-                Origin::Lyapunov { motion, mode } => (
-                    Some(Document::new("SteadyMotion", motion)),
-                    Some(*mode),
-                    None,
-                    None,
-                ),
-                Origin::Continued => (None, None, None, None),
-                Origin::PeriodDoubled { parent, event } => {
-                    (None, None, Some(*parent), Some(*event))
+            let (motion, mode) = match &f.origin {
+                Origin::Lyapunov { motion, mode } => {
+                    (Some(Document::new("SteadyMotion", motion)), Some(*mode))
                 }
+                _ => (None, None),
             };
+            let (parent, event) = f.origin.parent().unzip();
             FamilyDocument {
                 routh: "OrbitFamily",
                 format: FORMAT,
@@ -125,7 +133,8 @@ pub fn families_json(families: &[Family]) -> Result<String, serde_json::Error> {
 }
 
 /// The columns of one orbit (Python's `PeriodicOrbit.to_pandas()`).
-const ORBIT_COLUMNS: &str = "period,energy,p_psi,precession,stability_index,stability,amplitude,\
+const ORBIT_COLUMNS: &str = "period,energy,p_psi,precession,body_turn,degenerate,\
+stability_index,stability,amplitude,\
 omega1,omega2,omega3,gamma1,gamma2,gamma3,\
 multiplier1_re,multiplier1_im,multiplier2_re,multiplier2_im";
 
@@ -133,11 +142,13 @@ multiplier1_re,multiplier1_im,multiplier2_re,multiplier2_im";
 fn orbit_fields(o: &PeriodicOrbit) -> String {
     let [m1, m2] = o.multipliers;
     format!(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
         o.period,
         o.energy,
         o.p_psi,
         o.precession,
+        o.body_turn,
+        o.degenerate,
         o.stability_index,
         o.stability,
         o.amplitude,
@@ -171,7 +182,9 @@ pub fn families_csv(families: &[Family]) -> String {
                 format!("{i},lyapunov,,{mode},{},{},{}", g.x, g.y, g.z)
             }
             Origin::Continued => format!("{i},continued,,,,,"),
-            Origin::PeriodDoubled { parent, .. } => format!("{i},period_doubled,{parent},,,,"),
+            Origin::PeriodDoubled { parent, .. } | Origin::Switched { parent, .. } => {
+                format!("{i},{},{parent},,,,", f.origin.name())
+            }
         }
     };
     for (i, f) in families.iter().enumerate() {
@@ -204,8 +217,9 @@ pub fn orbit_table(o: &PeriodicOrbit) -> String {
         ("energy", format!("{:.12}", o.energy)),
         ("p_psi", num(o.p_psi)),
         ("precession", num(o.precession)),
+        ("body_turn", num(o.body_turn)),
         ("stability_index", format!("{:+.9}", o.stability_index)),
-        ("stability", o.stability.to_string()),
+        ("stability", stability(o)),
         ("multiplier1", complex(&o.multipliers[0])),
         ("multiplier2", complex(&o.multipliers[1])),
         ("amplitude", num(o.amplitude)),
@@ -238,6 +252,9 @@ pub fn family_table(i: usize, f: &Family, rows: usize, followed: &[(usize, usize
             "period-doubled, born at event {event} of family {parent} (E = {})",
             num(fam.orbits.first().map_or(f64::NAN, |o| o.energy))
         ),
+        Origin::Switched { parent, event } => {
+            format!("switched, crossing family {parent} at its branch point (event {event})")
+        }
     };
     let mut out = format!(
         "family {i}: {from}: {} orbits{}\n",
@@ -247,24 +264,52 @@ pub fn family_table(i: usize, f: &Family, rows: usize, followed: &[(usize, usize
             .map_or(String::new(), |s| format!(", ended: {s}"))
     );
     let step = fam.orbits.len().div_ceil(rows.max(1)).max(1);
-    let mut t = Table::new(&["#", "E", "T", "precession", "k", "stability"]);
+    // The turn about the body axis only where it can be other than 0 (an axially symmetric
+    // body: its orbits turn about e3, or are degenerate).
+    let turns = fam
+        .orbits
+        .iter()
+        .any(|o| o.body_turn != 0.0 || o.degenerate);
+    let mut header = vec!["#", "E", "T", "precession"];
+    if turns {
+        header.push("body_turn");
+    }
+    header.extend(["k", "stability"]);
+    let mut t = Table::new(&header);
     for (j, o) in fam.orbits.iter().enumerate() {
         if j % step == 0 || j + 1 == fam.orbits.len() {
-            t.row(vec![
+            let mut row = vec![
                 j.to_string(),
                 num(o.energy),
                 num(o.period),
                 num(o.precession),
-                num(o.stability_index),
-                o.stability.to_string(),
-            ]);
+            ];
+            if turns {
+                row.push(num(o.body_turn));
+            }
+            row.extend([num(o.stability_index), stability(o)]);
+            t.row(row);
         }
     }
     out.push_str(&t.render());
     for (j, e) in fam.events.iter().enumerate() {
-        out.push_str(&format!("  {}{}\n", event_line(e), followed_note(j, followed)));
+        out.push_str(&format!(
+            "  {}{}\n",
+            event_line(e),
+            followed_note(j, followed)
+        ));
     }
     out
+}
+
+/// The orbit's stability, "(degenerate)" after it when it is not isolated on its energy level
+/// (its `k = 1` comes from the theorem, not from the monodromy).
+fn stability(o: &PeriodicOrbit) -> String {
+    if o.degenerate {
+        format!("{} (degenerate)", o.stability)
+    } else {
+        o.stability.to_string()
+    }
 }
 
 fn event_line(e: &OrbitEvent) -> String {

@@ -11,8 +11,8 @@ use crate::table::{num, vec3, Table};
 use routh::plot::{orbit_family_svg, orbit_periods_svg, poincare_section_svg, PlotOptions};
 use routh::{
     classify, continue_orbit, lyapunov_family, period_doubled_family, periodic_orbit,
-    poincare_section, steady_motions, Model, OrbitEventKind, OrbitOptions, PeriodicOrbit,
-    RouthError, SectionOptions, Stability, Vector3,
+    poincare_section, steady_motions, switch_branch, Model, OrbitEventKind, OrbitOptions,
+    PeriodicOrbit, RouthError, SectionOptions, Stability, Vector3,
 };
 
 /// The orbit corrected from a guess; the library's refusals of the guess (not finite, γ not a
@@ -48,13 +48,7 @@ fn correct(
 /// Runs `routh orbit` and returns what it prints.
 pub fn orbit(a: &OrbitArgs) -> Result<String, CliError> {
     let model = load(&a.model)?;
-    let o = correct(
-        &model,
-        a.omega,
-        a.gamma,
-        a.period,
-        &OrbitOptions::default(),
-    )?;
+    let o = correct(&model, a.omega, a.gamma, a.period, &OrbitOptions::default())?;
     if a.output.json {
         return Ok(orbit_out::orbit_json(&o)?);
     }
@@ -117,6 +111,70 @@ fn lyapunov_families(
     Ok(out)
 }
 
+/// `--doubling` and `--switch`: the family born at each period doubling (with `--doubling`) and
+/// each branch point (with `--switch`) of the families computed so far, appended to `families`
+/// (one generation: the new families' own events are listed, not followed). Returns, per family,
+/// the events followed and the family each started; what could not start goes to `skipped`.
+fn follow_events(
+    a: &Orbits,
+    model: &Model,
+    opts: &OrbitOptions,
+    families: &mut Vec<Family>,
+    skipped: &mut Vec<String>,
+) -> Vec<Vec<(usize, usize)>> {
+    let mut followed: Vec<Vec<(usize, usize)>> = vec![Vec::new(); families.len()];
+    let (mut doublings, mut branch_points) = (0, 0);
+    for i in 0..families.len() {
+        for j in 0..families[i].family.events.len() {
+            let e = &families[i].family.events[j];
+            let started = match e.kind {
+                OrbitEventKind::PeriodDoubling if a.doubling => {
+                    doublings += 1;
+                    period_doubled_family(model, e, opts).map(|f| {
+                        (
+                            f,
+                            Origin::PeriodDoubled {
+                                parent: i,
+                                event: j,
+                            },
+                        )
+                    })
+                }
+                OrbitEventKind::BranchPoint if a.switch => {
+                    branch_points += 1;
+                    switch_branch(model, e, opts).map(|f| {
+                        (
+                            f,
+                            Origin::Switched {
+                                parent: i,
+                                event: j,
+                            },
+                        )
+                    })
+                }
+                _ => continue,
+            };
+            match started {
+                Ok((family, origin)) => {
+                    followed[i].push((j, families.len()));
+                    families.push(Family { origin, family });
+                }
+                Err(err) => {
+                    skipped.push(format!("family {i}, {} at E = {}: {err}", e.kind, e.energy))
+                }
+            }
+        }
+    }
+    if a.doubling && doublings == 0 {
+        skipped.push("--doubling: no period doubling along the families computed".into());
+    }
+    if a.switch && branch_points == 0 {
+        skipped.push("--switch: no branch point along the families computed".into());
+    }
+    followed.resize(families.len(), Vec::new());
+    followed
+}
+
 /// Runs `routh orbits` and returns what it prints.
 pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let model = load(&a.model)?;
@@ -174,53 +232,21 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
             ))
         }
     };
-    // --doubling: one generation of period-doubled families.
-    let mut followed: Vec<Vec<(usize, usize)>> = vec![Vec::new(); families.len()];
-    if a.doubling {
-        let primary = families.len();
-        let mut doublings = 0;
-        for i in 0..primary {
-            for j in 0..families[i].family.events.len() {
-                let e = &families[i].family.events[j];
-                if e.kind != OrbitEventKind::PeriodDoubling {
-                    continue;
-                }
-                doublings += 1;
-                match period_doubled_family(&model, e, &opts) {
-                    Ok(family) => {
-                        followed[i].push((j, families.len()));
-                        families.push(Family {
-                            origin: Origin::PeriodDoubled {
-                                parent: i,
-                                event: j,
-                            },
-                            family,
-                        });
-                    }
-                    Err(err) => skipped.push(format!(
-                        "family {i}, period doubling at E = {}: {err}",
-                        e.energy
-                    )),
-                }
-            }
+    // --doubling, --switch: one generation of the families born at the events.
+    let followed = follow_events(a, &model, &opts, &mut families, &mut skipped);
+    let mut title = title;
+    for (on, name, what) in [
+        (a.doubling, "period_doubled", "period-doubled"),
+        (a.switch, "switched", "switched"),
+    ] {
+        if on {
+            let n = families.iter().filter(|f| f.origin.name() == name).count();
+            title.push_str(&format!(
+                ", {n} {what} famil{}",
+                if n == 1 { "y" } else { "ies" }
+            ));
         }
-        if doublings == 0 {
-            skipped.push("--doubling: no period doubling along the families computed".into());
-        }
-        followed.resize(families.len(), Vec::new());
     }
-    let n_doubled = families
-        .iter()
-        .filter(|f| matches!(f.origin, Origin::PeriodDoubled { .. }))
-        .count();
-    let title = if a.doubling {
-        format!(
-            "{title}, {n_doubled} period-doubled famil{}",
-            if n_doubled == 1 { "y" } else { "ies" }
-        )
-    } else {
-        title
-    };
     let mut files = Outputs::new();
     if a.svg.is_some() || a.periods_svg.is_some() {
         let [one] = families.as_slice() else {

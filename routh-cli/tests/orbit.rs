@@ -1,12 +1,19 @@
-//! `routh orbit` and `routh orbits --continue`, `--doubling`, run as a user would, their numbers
-//! checked against what routh did not compute: the pendulum's period 4K(m)/ω₀ (K by the
-//! arithmetic–geometric mean) for the planar swings of a heavy body J = diag(1, 2, 3) with
-//! m g l = 1.5, and the period-doubled orbits integrated again here by a plain RK4 of the
-//! Euler–Poisson equations.
+//! `routh orbit` and `routh orbits --continue`, `--doubling`, `--switch`, run as a user would,
+//! their numbers checked against what routh did not compute: the pendulum's period 4K(m)/ω₀ (K by
+//! the arithmetic–geometric mean) for the planar swings of a heavy body J = diag(1, 2, 3) with
+//! m g l = 1.5, and the period-doubled and switched orbits integrated again here by a plain RK4
+//! of the Euler–Poisson equations.
 
 use std::process::{Command, Output};
 
-const BODY: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/models/swinging_body.toml");
+const BODY: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/models/swinging_body.toml"
+);
+const BRANCHING: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/models/branching_body.toml"
+);
 const ASYMMETRIC: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/../examples/models/asymmetric_top.toml"
@@ -39,7 +46,12 @@ fn ok(args: &[&str]) -> String {
 /// Exit code `code` and a message on stderr containing `needle`, no panic, nothing on stdout.
 fn fails(args: &[&str], code: i32, needle: &str) {
     let o = routh(args);
-    assert_eq!(o.status.code(), Some(code), "{args:?}: stderr {}", stderr(&o));
+    assert_eq!(
+        o.status.code(),
+        Some(code),
+        "{args:?}: stderr {}",
+        stderr(&o)
+    );
     assert!(
         stderr(&o).contains(needle),
         "{args:?}: stderr {:?} lacks {needle:?}",
@@ -116,6 +128,8 @@ fn orbit_period_is_the_pendulums() {
             "energy",
             "p_psi",
             "precession",
+            "body_turn",
+            "degenerate",
             "stability_index",
             "stability",
             "amplitude",
@@ -136,7 +150,15 @@ fn orbit_period_is_the_pendulums() {
     let col = |name: &str| row[header.iter().position(|h| *h == name).unwrap()];
     assert_eq!(col("period").parse::<f64>().unwrap(), t);
     assert_eq!(col("energy").parse::<f64>().unwrap(), e);
-    assert_eq!(col("stability"), v["stability"].as_str().unwrap().to_lowercase());
+    assert_eq!(
+        col("stability"),
+        v["stability"].as_str().unwrap().to_lowercase()
+    );
+    // Δφ and the degenerate flag: 0 and false on a body without axial symmetry.
+    assert_eq!(col("body_turn").parse::<f64>().unwrap(), f(&v["body_turn"]));
+    assert_eq!(f(&v["body_turn"]), 0.0);
+    assert_eq!(col("degenerate"), "false");
+    assert_eq!(v["degenerate"], false);
     let g0 = v3(&v["gamma0"]);
     for (i, name) in ["gamma1", "gamma2", "gamma3"].iter().enumerate() {
         assert_eq!(col(name).parse::<f64>().unwrap(), g0[i]);
@@ -151,17 +173,23 @@ fn orbit_period_is_the_pendulums() {
 fn orbit_refuses_bad_guesses_with_the_documented_codes() {
     // Bad input, exit code 2: γ not a unit vector, T ≤ 0, a steady motion, a malformed vector.
     fails(
-        &["orbit", BODY, "--omega", "1,0,0", "--gamma", "0,0,-2", "--period", "5"],
+        &[
+            "orbit", BODY, "--omega", "1,0,0", "--gamma", "0,0,-2", "--period", "5",
+        ],
         2,
         "unit vector",
     );
     fails(
-        &["orbit", BODY, "--omega", "1,0,0", "--gamma", "0,0,-1", "--period", "-5"],
+        &[
+            "orbit", BODY, "--omega", "1,0,0", "--gamma", "0,0,-1", "--period", "-5",
+        ],
         2,
         "must be above 0",
     );
     fails(
-        &["orbit", BODY, "--omega", "1,0", "--gamma", "0,0,-1", "--period", "5"],
+        &[
+            "orbit", BODY, "--omega", "1,0", "--gamma", "0,0,-1", "--period", "5",
+        ],
         2,
         "not a vector",
     );
@@ -171,7 +199,16 @@ fn orbit_refuses_bad_guesses_with_the_documented_codes() {
         "--period",
     );
     fails(
-        &["orbit", "no/such/model.toml", "--omega", "1,0,0", "--gamma", "0,0,-1", "--period", "5"],
+        &[
+            "orbit",
+            "no/such/model.toml",
+            "--omega",
+            "1,0,0",
+            "--gamma",
+            "0,0,-1",
+            "--period",
+            "5",
+        ],
         2,
         "no/such/model.toml",
     );
@@ -286,66 +323,109 @@ fn continue_refuses_what_it_cannot_do() {
         2,
         "--omega",
     );
-    let mut a = vec!["orbits", BODY, "--continue", "-p", "0", "--energy=-1.4..-0.5"];
+    let mut a = vec![
+        "orbits",
+        BODY,
+        "--continue",
+        "-p",
+        "0",
+        "--energy=-1.4..-0.5",
+    ];
     a.extend(guess);
     fails(&a, 2, "cannot be used with");
     // A guess without --continue, and no momentum at all.
     fails(
-        &["orbits", BODY, "-p", "0", "--omega", "1,0,0", "--period", "5"],
+        &[
+            "orbits", BODY, "-p", "0", "--omega", "1,0,0", "--period", "5",
+        ],
         2,
         "--continue",
     );
     fails(&["orbits", BODY], 2, "--momentum");
 }
 
-/// The Euler–Poisson equations of the asymmetric top (J = diag(1, 3, 6), m g c = (0.4, 0.3,
-/// 1.5)): Jω' = Jω × ω + γ × mgc, γ' = γ × ω.
-fn euler_poisson(x: &[f64; 6]) -> [f64; 6] {
-    let j = [1.0, 3.0, 6.0];
-    let c = [0.4, 0.3, 1.5];
-    let (w, g) = ([x[0], x[1], x[2]], [x[3], x[4], x[5]]);
-    let cross = |a: [f64; 3], b: [f64; 3]| {
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    };
-    let jw = [j[0] * w[0], j[1] * w[1], j[2] * w[2]];
-    let t1 = cross(jw, w);
-    let t2 = cross(g, c);
-    let dg = cross(g, w);
+/// A heavy body for the Euler–Poisson equations: J = diag(`j`) about the fixed point, the
+/// centre of mass at m g c = `c`.
+struct Body {
+    j: [f64; 3],
+    c: [f64; 3],
+}
+
+/// The asymmetric top of examples/models/asymmetric_top.toml.
+const ASYMMETRIC_TOP: Body = Body {
+    j: [1.0, 3.0, 6.0],
+    c: [0.4, 0.3, 1.5],
+};
+
+/// The body of tests/models/branching_body.toml.
+const BRANCHING_BODY: Body = Body {
+    j: [1.0, 1.6, 2.3],
+    c: [0.0, 0.0, 1.0],
+};
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
-        (t1[0] + t2[0]) / j[0],
-        (t1[1] + t2[1]) / j[1],
-        (t1[2] + t2[2]) / j[2],
-        dg[0],
-        dg[1],
-        dg[2],
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
     ]
 }
 
-/// The state after time `t` by RK4 with `n` steps.
-fn rk4(x0: [f64; 6], t: f64, n: usize) -> [f64; 6] {
-    let h = t / n as f64;
-    let mut x = x0;
-    let add = |x: &[f64; 6], k: &[f64; 6], s: f64| {
-        let mut y = *x;
-        for i in 0..6 {
-            y[i] += s * k[i];
-        }
-        y
-    };
-    for _ in 0..n {
-        let k1 = euler_poisson(&x);
-        let k2 = euler_poisson(&add(&x, &k1, 0.5 * h));
-        let k3 = euler_poisson(&add(&x, &k2, 0.5 * h));
-        let k4 = euler_poisson(&add(&x, &k3, h));
-        for i in 0..6 {
-            x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-        }
+impl Body {
+    /// The Euler–Poisson equations: Jω' = Jω × ω + γ × mgc, γ' = γ × ω.
+    fn rhs(&self, x: &[f64; 6]) -> [f64; 6] {
+        let j = self.j;
+        let (w, g) = ([x[0], x[1], x[2]], [x[3], x[4], x[5]]);
+        let jw = [j[0] * w[0], j[1] * w[1], j[2] * w[2]];
+        let t1 = cross(jw, w);
+        let t2 = cross(g, self.c);
+        let dg = cross(g, w);
+        [
+            (t1[0] + t2[0]) / j[0],
+            (t1[1] + t2[1]) / j[1],
+            (t1[2] + t2[2]) / j[2],
+            dg[0],
+            dg[1],
+            dg[2],
+        ]
     }
-    x
+
+    /// The states over time `t` by RK4 with `n` steps: `n + 1` of them, `x0` first.
+    fn path(&self, x0: [f64; 6], t: f64, n: usize) -> Vec<[f64; 6]> {
+        let h = t / n as f64;
+        let add = |x: &[f64; 6], k: &[f64; 6], s: f64| {
+            let mut y = *x;
+            for i in 0..6 {
+                y[i] += s * k[i];
+            }
+            y
+        };
+        let mut x = x0;
+        let mut out = Vec::with_capacity(n + 1);
+        out.push(x);
+        for _ in 0..n {
+            let k1 = self.rhs(&x);
+            let k2 = self.rhs(&add(&x, &k1, 0.5 * h));
+            let k3 = self.rhs(&add(&x, &k2, 0.5 * h));
+            let k4 = self.rhs(&add(&x, &k3, h));
+            for i in 0..6 {
+                x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+            }
+            out.push(x);
+        }
+        out
+    }
+
+    /// The state after time `t` by RK4 with `n` steps.
+    fn rk4(&self, x0: [f64; 6], t: f64, n: usize) -> [f64; 6] {
+        *self.path(x0, t, n).last().expect("n + 1 states")
+    }
+}
+
+/// (ω₀, γ₀) of an orbit's JSON.
+fn start(o: &serde_json::Value) -> [f64; 6] {
+    let (w, g) = (v3(&o["omega0"]), v3(&o["gamma0"]));
+    [w[0], w[1], w[2], g[0], g[1], g[2]]
 }
 
 fn distance(a: &[f64; 6], b: &[f64; 6]) -> f64 {
@@ -406,18 +486,27 @@ fn doubling_follows_the_period_doubled_families() {
         // Born at the event: twice its period, k = 2k² − 1 = +1 there.
         let first = &orbits[0];
         let t = f(&first["period"]);
-        assert!((t / (2.0 * t_event) - 1.0).abs() < 2e-2, "T = {t}, 2T_event = {}", 2.0 * t_event);
+        assert!(
+            (t / (2.0 * t_event) - 1.0).abs() < 2e-2,
+            "T = {t}, 2T_event = {}",
+            2.0 * t_event
+        );
         assert!((f(&first["energy"]) - f(&event["energy"])).abs() < 1e-2);
         for o in orbits.iter().take(3).chain(orbits.last()) {
-            let w = v3(&o["omega0"]);
-            let g = v3(&o["gamma0"]);
-            let x0 = [w[0], w[1], w[2], g[0], g[1], g[2]];
+            let x0 = start(o);
             let t = f(&o["period"]);
-            let scale = 1.0 + w.iter().map(|x| x * x).sum::<f64>().sqrt();
-            let closed = distance(&rk4(x0, t, 40_000), &x0);
-            assert!(closed < 1e-7 * scale, "not closed after T = {t}: {closed:e}");
-            let half = distance(&rk4(x0, 0.5 * t, 20_000), &x0);
-            assert!(half > 1e-4 * scale, "closed after T/2 = {}: {half:e}", 0.5 * t);
+            let scale = 1.0 + x0[..3].iter().map(|x| x * x).sum::<f64>().sqrt();
+            let closed = distance(&ASYMMETRIC_TOP.rk4(x0, t, 40_000), &x0);
+            assert!(
+                closed < 1e-7 * scale,
+                "not closed after T = {t}: {closed:e}"
+            );
+            let half = distance(&ASYMMETRIC_TOP.rk4(x0, 0.5 * t, 20_000), &x0);
+            assert!(
+                half > 1e-4 * scale,
+                "closed after T/2 = {}: {half:e}",
+                0.5 * t
+            );
         }
     }
     // The table says which family followed which event.
@@ -458,13 +547,21 @@ fn doubling_follows_the_period_doubled_families() {
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    let n_orbits: usize = fams.iter().map(|f| f["orbits"].as_array().unwrap().len()).sum();
-    let n_events: usize = fams.iter().map(|f| f["events"].as_array().unwrap().len()).sum();
+    let n_orbits: usize = fams
+        .iter()
+        .map(|f| f["orbits"].as_array().unwrap().len())
+        .sum();
+    let n_events: usize = fams
+        .iter()
+        .map(|f| f["events"].as_array().unwrap().len())
+        .sum();
     assert_eq!(rows.len(), n_orbits + n_events);
     // The events come after every orbit: their own section.
     let first_event = rows.iter().position(|r| r[at("kind")] != "orbit").unwrap();
     assert!(rows[first_event..].iter().all(|r| r[at("kind")] != "orbit"));
-    assert!(rows[..first_event].iter().all(|r| r[at("before")].is_empty()));
+    assert!(rows[..first_event]
+        .iter()
+        .all(|r| r[at("before")].is_empty()));
     let pd: Vec<&Vec<&str>> = rows
         .iter()
         .filter(|r| r[at("kind")] == "period_doubling" && r[at("family")] == "0")
@@ -501,4 +598,160 @@ fn doubling_without_a_period_doubling_says_so() {
         "{}",
         stdout(&o)
     );
+}
+
+/// `orbits` of the branching body's planar swings (mode 0 at the hanging rest, p_ψ = 0), with
+/// `extra` options.
+fn branching(extra: &[&str]) -> String {
+    let mut args = vec![
+        "orbits",
+        BRANCHING,
+        "-p",
+        "0",
+        "--mode",
+        "0",
+        "--gamma",
+        "0,0,-1",
+        "--max-orbits",
+        "30",
+    ];
+    args.extend(extra);
+    ok(&args)
+}
+
+/// The largest |γ₁| and |ω₂| + |ω₃| along one period of an orbit: 0 on a planar swing about e₁.
+fn off_plane(o: &serde_json::Value) -> f64 {
+    let path = BRANCHING_BODY.path(start(o), f(&o["period"]), 4_000);
+    path.iter()
+        .map(|x| x[3].abs().max(x[1].abs() + x[2].abs()))
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn switch_follows_the_family_crossing_at_the_branch_point() {
+    // A heavy body J = diag(1, 1.6, 2.3), m g l = 1 hanging at p_ψ = 0: its mode-0 orbits are
+    // planar swings about e₁ (the smallest moment); at E ≈ 0.2725 they lose stability at a
+    // branch point, where a family of non-planar orbits crosses them (a pitchfork: the
+    // swings' plane is a plane of symmetry), its energy stationary there.
+    let out = branching(&["--switch", "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let fams = v.as_array().unwrap();
+    assert_eq!(fams.len(), 2, "the swings and one switched family");
+    let (parent, switched) = (&fams[0], &fams[1]);
+    assert_eq!(parent["origin"], "lyapunov");
+    assert_eq!(switched["origin"], "switched");
+    assert_eq!(switched["parent"], 0);
+    assert!(switched["motion"].is_null() && switched["mode"].is_null());
+    let j = switched["event"].as_u64().unwrap() as usize;
+    let event = &parent["events"][j];
+    assert_eq!(event["kind"], "BranchPoint");
+    let e_branch = f(&event["energy"]);
+    assert!((0.2..0.35).contains(&e_branch), "E = {e_branch}");
+    // The parent's orbits are planar swings.
+    for o in parent["orbits"].as_array().unwrap().iter().step_by(7) {
+        assert!(
+            off_plane(o) < 1e-9,
+            "a swing leaves the plane: {}",
+            off_plane(o)
+        );
+        assert!(f(&o["precession"]).abs() < 1e-9);
+    }
+    let orbits = switched["orbits"].as_array().unwrap();
+    assert!(orbits.len() >= 10, "{} orbits", orbits.len());
+    // Through the branch point: the energy is least there, with the event's period.
+    let nearest = orbits
+        .iter()
+        .min_by(|a, b| f(&a["energy"]).total_cmp(&f(&b["energy"])))
+        .unwrap();
+    assert!(
+        (f(&nearest["energy"]) - e_branch).abs() < 2e-2,
+        "least E {} against the branch point's {e_branch}",
+        f(&nearest["energy"])
+    );
+    let t_event = f(&event["orbit"]["period"]);
+    assert!((f(&nearest["period"]) / t_event - 1.0).abs() < 1e-2);
+    // Both ways from the branch point: above it on either side, with Δψ of both signs.
+    let precessions: Vec<f64> = orbits.iter().map(|o| f(&o["precession"])).collect();
+    assert!(precessions.iter().any(|p| *p > 0.1) && precessions.iter().any(|p| *p < -0.1));
+    // Each orbit closes (integrated again here), and is not a planar swing: it leaves the plane.
+    for o in orbits.iter().step_by(6).chain(orbits.last()) {
+        let x0 = start(o);
+        let t = f(&o["period"]);
+        assert_eq!(f(&o["body_turn"]), 0.0);
+        assert_eq!(o["degenerate"], false);
+        let scale = 1.0 + x0[..3].iter().map(|x| x * x).sum::<f64>().sqrt();
+        let closed = distance(&BRANCHING_BODY.rk4(x0, t, 40_000), &x0);
+        assert!(
+            closed < 1e-7 * scale,
+            "not closed after T = {t}: {closed:e}"
+        );
+        if (f(&o["energy"]) - e_branch).abs() > 0.05 {
+            assert!(off_plane(o) > 1e-2, "E = {}: planar", f(&o["energy"]));
+        }
+    }
+    // The table and the CSV name it.
+    let table = branching(&["--switch"]);
+    assert!(table.contains(", 1 switched family"), "{table}");
+    assert!(table.contains("(followed: family 1)"), "{table}");
+    assert!(
+        table.contains("switched, crossing family 0 at its branch point"),
+        "{table}"
+    );
+    let csv = branching(&["--switch", "--csv"]);
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let switched_rows: Vec<&Vec<&str>> = rows
+        .iter()
+        .filter(|r| r[at("origin")] == "switched" && r[at("kind")] == "orbit")
+        .collect();
+    assert_eq!(switched_rows.len(), orbits.len());
+    for (r, o) in switched_rows.iter().zip(orbits) {
+        assert_eq!(r[at("family")], "1");
+        assert_eq!(r[at("parent")], "0");
+        assert_eq!(r[at("body_turn")], "0");
+        assert_eq!(r[at("degenerate")], "false");
+        assert_eq!(r[at("omega2")].parse::<f64>().unwrap(), start(o)[1]);
+    }
+}
+
+#[test]
+fn switch_refuses_what_it_cannot_do() {
+    // No branch point along the swings of the pendulum-like body over this range: said.
+    let out = ok(&[
+        "orbits",
+        BODY,
+        "--continue",
+        "--omega",
+        "1,0,0",
+        "--gamma",
+        "0,0,-1",
+        "--period",
+        "5.4",
+        "--energy=-1.2..-0.9",
+        "--switch",
+        "--doubling",
+    ]);
+    assert!(
+        out.contains("skipped: --switch: no branch point along the families computed"),
+        "{out}"
+    );
+    assert!(out.contains("0 switched families"), "{out}");
+    // Figures draw one family: not with the families born at events (a usage error, before
+    // any computation; no file written).
+    let svg = std::env::temp_dir().join(format!("routh-switch-{}.svg", std::process::id()));
+    let svg = svg.to_str().unwrap();
+    for flag in ["--switch", "--doubling"] {
+        for figure in ["--svg", "--periods-svg"] {
+            fails(
+                &[
+                    "orbits", BRANCHING, "-p", "0", "--mode", "0", flag, figure, svg,
+                ],
+                2,
+                "cannot be used with",
+            );
+        }
+    }
+    assert!(!std::path::Path::new(svg).exists());
 }
