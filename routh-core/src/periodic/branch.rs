@@ -114,7 +114,8 @@ pub fn switch_branch<M: Routhian>(
             });
         };
         let start = tracer.node(sol, Some(&dir));
-        let (mut nodes, events, stop) = tracer.trace(start.clone(), share.saturating_sub(1), None)?;
+        let (mut nodes, events, stop) =
+            tracer.trace(start.clone(), share.saturating_sub(1), None)?;
         nodes.insert(0, start);
         halves.push((nodes, events, stop));
     }

@@ -363,33 +363,26 @@ fn plane_returns<M: Lagrangian + ?Sized>(
     let mut prev = (0.0, 0.0);
     let mut returns: Vec<(f64, f64, f64)> = Vec::new();
     let rhs = |_t: f64, x: &Vector6<f64>| field(model, x);
-    let _ = dop853::integrate(
-        rhs,
-        0.0,
-        prob.x_ref,
-        to,
-        &cfg,
-        |s: &Accepted<'_, 6>| {
-            let now = (s.t, g(s.y));
-            if prev.1 < 0.0 && now.1 >= 0.0 && s.t > from {
-                if let Some(d) = s.dense {
-                    let z = illinois(
-                        End::new(prev.0, prev.1, ()),
-                        End::new(now.0, now.1, ()),
-                        100,
-                        |t| Ok::<_, RouthError>(Some((g(&d.eval(t)), ()))),
-                        |lo, hi| estimated_distance(lo, hi) <= 1e-12 * hi.at,
-                    )?;
-                    if z.at > from && z.at < to {
-                        let (y, b) = turned(&d.eval(z.at));
-                        returns.push((z.at, (y - prob.x_ref).norm(), b));
-                    }
+    let _ = dop853::integrate(rhs, 0.0, prob.x_ref, to, &cfg, |s: &Accepted<'_, 6>| {
+        let now = (s.t, g(s.y));
+        if prev.1 < 0.0 && now.1 >= 0.0 && s.t > from {
+            if let Some(d) = s.dense {
+                let z = illinois(
+                    End::new(prev.0, prev.1, ()),
+                    End::new(now.0, now.1, ()),
+                    100,
+                    |t| Ok::<_, RouthError>(Some((g(&d.eval(t)), ()))),
+                    |lo, hi| estimated_distance(lo, hi) <= 1e-12 * hi.at,
+                )?;
+                if z.at > from && z.at < to {
+                    let (y, b) = turned(&d.eval(z.at));
+                    returns.push((z.at, (y - prob.x_ref).norm(), b));
                 }
             }
-            prev = now;
-            Ok(())
-        },
-    );
+        }
+        prev = now;
+        Ok(())
+    });
     returns
 }
 

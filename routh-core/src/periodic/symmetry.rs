@@ -110,10 +110,7 @@ pub(crate) fn body_momentum<M: Lagrangian + ?Sized>(
     let e3 = Vector3::z();
     let j = model.d2l_domega2(&g);
     let n = model.d2l_domega_dgamma(&w, &g);
-    (
-        model.dl_domega(&w, &g).z,
-        join(&(j * e3), &n.tr_mul(&e3)),
-    )
+    (model.dl_domega(&w, &g).z, join(&(j * e3), &n.tr_mul(&e3)))
 }
 
 /// The turn `α` that brings `S_α x` closest to `x_ref` (least squares over the six
