@@ -175,6 +175,11 @@ fn follow_events(
     followed
 }
 
+/// "1 `what` family", "`n` `what` families".
+fn count(n: usize, what: &str) -> String {
+    format!("{n} {what} famil{}", if n == 1 { "y" } else { "ies" })
+}
+
 /// Runs `routh orbits` and returns what it prints.
 pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let model = load(&a.model)?;
@@ -184,7 +189,7 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     }
     let mut skipped = Vec::new();
     // The families asked for, and the title of the table.
-    let (mut families, title) = match (a.continue_orbit, a.momentum) {
+    let (mut families, mut title) = match (a.continue_orbit, a.momentum) {
         (true, _) => {
             let (Some(omega), Some(gamma), Some(period), Some((lo, hi))) =
                 (a.omega, a.gamma, a.period, a.energy)
@@ -220,11 +225,7 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
         (false, Some(p)) => {
             let fams = lyapunov_families(a, &model, p, &opts, &mut skipped)?;
             let n = fams.len();
-            let title = format!(
-                "{n} Lyapunov famil{} at p_psi = {p}",
-                if n == 1 { "y" } else { "ies" }
-            );
-            (fams, title)
+            (fams, format!("{} at p_psi = {p}", count(n, "Lyapunov")))
         }
         (false, None) => {
             return Err(CliError::Input(
@@ -234,17 +235,13 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     };
     // --doubling, --switch: one generation of the families born at the events.
     let followed = follow_events(a, &model, &opts, &mut families, &mut skipped);
-    let mut title = title;
     for (on, name, what) in [
         (a.doubling, "period_doubled", "period-doubled"),
         (a.switch, "switched", "switched"),
     ] {
         if on {
             let n = families.iter().filter(|f| f.origin.name() == name).count();
-            title.push_str(&format!(
-                ", {n} {what} famil{}",
-                if n == 1 { "y" } else { "ies" }
-            ));
+            title.push_str(&format!(", {}", count(n, what)));
         }
     }
     let mut files = Outputs::new();
