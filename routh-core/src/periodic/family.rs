@@ -58,7 +58,8 @@ fn tangent_of(s: &Solved, along: Option<&W>) -> W {
 pub(super) fn same_family(a: &Node, b: &Node) -> bool {
     let chord = b.solved.w - a.solved.w;
     let len = chord.norm();
-    if !(len > 0.0) {
+    // NaN too.
+    if len.is_nan() || len <= 0.0 {
         return true;
     }
     let c = chord / len;

@@ -174,7 +174,8 @@ pub(crate) fn turn_at<M: Lagrangian + ?Sized>(
     }
     let xi = generator(x);
     let nxi = xi.norm();
-    if !(nxi > 1e-12 * 1f64.max(x.norm())) {
+    // NaN too.
+    if nxi.is_nan() || nxi <= 1e-12 * 1f64.max(x.norm()) {
         return Ok(None);
     }
     let f = field(model, x)?;
