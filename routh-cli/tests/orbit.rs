@@ -755,3 +755,72 @@ fn switch_refuses_what_it_cannot_do() {
     }
     assert!(!std::path::Path::new(svg).exists());
 }
+
+/// The commands whose output routh-py/tests/test_cli_json.py reads from routh-py/tests/data/
+/// (the Python tests do not need a built CLI): the file and the arguments after `routh`.
+fn python_data() -> [(&'static str, Vec<&'static str>); 2] {
+    [
+        (
+            "cli_orbit.json",
+            vec![
+                "orbit", BODY, "--omega", "1,0,0", "--gamma", "0,0,-1", "--period", "5.4", "--json",
+            ],
+        ),
+        (
+            "cli_orbits.json",
+            vec![
+                "orbits",
+                ASYMMETRIC,
+                "-p",
+                "0",
+                "--mode",
+                "0",
+                "--gamma=-0.25,-0.19,-0.95",
+                "--max-orbits",
+                "20",
+                "--energy=-1.6..-0.85",
+                "--doubling",
+                "--json",
+            ],
+        ),
+    ]
+}
+
+/// The shape of a JSON value: its keys, array lengths and strings, every number as `0`.
+fn shape(v: &serde_json::Value) -> serde_json::Value {
+    use serde_json::Value;
+    match v {
+        Value::Number(_) => Value::from(0),
+        Value::Array(a) => Value::Array(a.iter().map(shape).collect()),
+        Value::Object(o) => Value::Object(o.iter().map(|(k, v)| (k.clone(), shape(v))).collect()),
+        v => v.clone(),
+    }
+}
+
+#[test]
+fn the_python_tests_data_is_what_the_cli_prints() {
+    // The CLI still prints what the Python tests read: the same keys (a field added to
+    // PeriodicOrbit must reach the data too), families, orbits, events and strings. With
+    // ROUTH_BLESS=1 the files are written again from the CLI.
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../routh-py/tests/data");
+    for (name, args) in python_data() {
+        let out = ok(&args);
+        let path = dir.join(name);
+        if std::env::var_os("ROUTH_BLESS").is_some_and(|v| v == "1") {
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(&path, &out).unwrap();
+        }
+        let kept = std::fs::read_to_string(&path)
+            .unwrap_or_else(|e| panic!("{}: {e} (ROUTH_BLESS=1 writes it)", path.display()));
+        let (kept, now): (serde_json::Value, serde_json::Value) = (
+            serde_json::from_str(&kept).expect("JSON"),
+            serde_json::from_str(&out).expect("JSON"),
+        );
+        assert_eq!(
+            shape(&kept),
+            shape(&now),
+            "{name} is not what `routh {}` prints now (ROUTH_BLESS=1 writes it again)",
+            args.join(" ")
+        );
+    }
+}

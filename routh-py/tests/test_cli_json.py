@@ -2,9 +2,11 @@
 `routh orbits --json` print is read by `from_json` into PeriodicOrbit and OrbitFamily objects
 with the same numbers, bit for bit; the bare serde text of the Rust values is read too.
 
-The CLI's output is kept in tests/data/ (routh-cli/tests/orbit.rs checks that the CLI still prints
-that shape, and regenerates nothing: see that test for the commands). When a `routh` binary is at
-hand (the environment variable ROUTH_BIN, or `routh` on the PATH) it is also run live."""
+The CLI's output is kept in tests/data/ (routh-cli/tests/orbit.rs,
+`the_python_tests_data_is_what_the_cli_prints`, names the commands and checks that the CLI still
+prints that shape; `ROUTH_BLESS=1 cargo test -p routh-cli --test orbit` writes the files again).
+When a `routh` binary is at hand (the environment variable ROUTH_BIN, `routh` on the PATH, or one
+built in the workspace's target/) it is also run live."""
 
 import json
 import math
@@ -29,8 +31,10 @@ def load(name):
 
 def same_orbit(o, d):
     """The Python orbit `o` has the numbers of the JSON object `d`, bit for bit."""
-    for name in ("period", "energy", "p_psi", "precession", "stability_index", "amplitude"):
+    for name in ("period", "energy", "p_psi", "precession", "body_turn", "stability_index",
+                 "amplitude"):
         assert getattr(o, name) == d[name], name
+    assert o.degenerate is d["degenerate"]
     np.testing.assert_array_equal(o.omega0, np.array(d["omega0"], dtype=float))
     np.testing.assert_array_equal(o.gamma0, np.array(d["gamma0"], dtype=float))
     mu = np.array([complex(re, im) for re, im in d["multipliers"]])
@@ -138,13 +142,10 @@ def test_the_cli_orbit_is_the_python_orbit():
 def routh_bin():
     exe = os.environ.get("ROUTH_BIN") or shutil.which("routh")
     if exe is None:
-        for target in ("target-faces", "target"):
-            for profile in ("release", "debug"):
-                p = ROOT.parent / target / profile / "routh"
-                p2 = ROOT / target / profile / "routh"
-                for c in (p, p2):
-                    if c.exists():
-                        return str(c)
+        for profile in ("release", "debug"):
+            p = ROOT / "target" / profile / "routh"
+            if p.exists():
+                return str(p)
     return exe
 
 
@@ -160,4 +161,15 @@ def test_live_cli_json_reads():
          "--period", "5.4", "--energy=-1.2..-0.9", "--json"],
         capture_output=True, text=True, check=True).stdout
     for f, d in zip(routh.from_json(out), json.loads(out)):
+        same_family(f, d)
+    # --switch: the family crossing at the branch point of the swings, read as any family.
+    branching = ROOT / "routh-cli" / "tests" / "models" / "branching_body.toml"
+    out = subprocess.run(
+        [exe, "orbits", str(branching), "-p", "0", "--mode", "0", "--gamma", "0,0,-1",
+         "--max-orbits", "30", "--switch", "--json"],
+        capture_output=True, text=True, check=True).stdout
+    docs = json.loads(out)
+    assert [d["origin"] for d in docs] == ["lyapunov", "switched"]
+    assert docs[0]["events"][docs[1]["event"]]["kind"] == "BranchPoint"
+    for f, d in zip(routh.OrbitFamily.from_json(out), docs):
         same_family(f, d)
