@@ -44,9 +44,15 @@ pub enum Command {
     Simulate(Simulate),
     /// The steady motions at p_ψ = P with an interval-arithmetic certificate that none is missed.
     Certify(Certify),
+    /// One periodic orbit corrected from a guess (`--omega`, `--gamma`, `--period`) at the
+    /// energy and p_ψ of the guess: its period, precession Δψ, stability index k and multipliers.
+    Orbit(OrbitArgs),
     /// The Lyapunov families of periodic orbits born at the linearly stable steady motions at
-    /// p_ψ = P (each mode, or `--mode`): energy, period, precession Δψ and stability index k of
-    /// the orbits, and the folds, branch points and period doublings along each family.
+    /// p_ψ = P (each mode, or `--mode`), or with `--continue` the family through one corrected
+    /// orbit: energy, period, precession Δψ and stability index k of the orbits, and the folds,
+    /// branch points and period doublings along each family; with `--doubling` also the
+    /// period-doubled families born at the period doublings, with `--switch` the families
+    /// crossing at the branch points.
     Orbits(Orbits),
     /// A Poincaré section at p_ψ = P and energy E: many orbits crossing the plane γ·n = 0 (the
     /// points as CSV or JSON; regular motion shows as curves, chaos as scattered dots).
@@ -219,23 +225,73 @@ pub struct Certify {
     pub json: bool,
 }
 
+/// `orbit`.
+#[derive(Debug, Args)]
+pub struct OrbitArgs {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// `X,Y,Z`: ω of the guess (body frame).
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub omega: [f64; 3],
+    /// `X,Y,Z`: γ of the guess (body frame, a unit vector); the orbit keeps the guess's energy
+    /// and p_ψ.
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub gamma: [f64; 3],
+    /// The guess of the period T (above 0).
+    #[arg(long, value_parser = args::positive, allow_hyphen_values = true)]
+    pub period: f64,
+    /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
 /// `orbits`.
 #[derive(Debug, Args)]
 pub struct Orbits {
     /// The model file (TOML, see docs/models.md).
     pub model: PathBuf,
-    /// The cyclic momentum p_ψ.
-    #[arg(long, short = 'p', value_parser = args::finite, allow_hyphen_values = true)]
-    pub momentum: f64,
+    /// The cyclic momentum p_ψ (not with `--continue`: the guess gives it).
+    #[arg(
+        long,
+        short = 'p',
+        value_parser = args::finite,
+        allow_hyphen_values = true,
+        required_unless_present = "continue",
+        conflicts_with = "continue"
+    )]
+    pub momentum: Option<f64>,
     /// 0 (the faster frequency ω₁) or 1 (the slower ω₂); both when omitted.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "continue")]
     pub mode: Option<usize>,
-    /// `X,Y,Z`: only the steady motion nearest this γ.
+    /// `X,Y,Z`: only the steady motion nearest this γ; with `--continue`, γ of the guess.
     #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
     pub gamma: Option<[f64; 3]>,
-    /// `LO..HI`: keep each family within these energies.
+    /// `LO..HI`: keep each family within these energies; with `--continue`, the range to
+    /// continue over (needed).
     #[arg(long, value_parser = args::range, allow_hyphen_values = true)]
     pub energy: Option<(f64, f64)>,
+    /// Continue the family through the orbit corrected from the guess `--omega`, `--gamma`,
+    /// `--period` (as `routh orbit`) over `--energy LO..HI`, instead of the Lyapunov families.
+    #[arg(
+        long = "continue",
+        id = "continue",
+        requires_all = ["omega", "gamma", "period", "energy"]
+    )]
+    pub continue_orbit: bool,
+    /// `X,Y,Z`: ω of the guess of `--continue`.
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true, requires = "continue")]
+    pub omega: Option<[f64; 3]>,
+    /// The guess of the period of `--continue`.
+    #[arg(long, value_parser = args::positive, allow_hyphen_values = true, requires = "continue")]
+    pub period: Option<f64>,
+    /// Also follow the period-doubled family born at each period doubling of the families
+    /// computed (one generation: the doubled families' own doublings are listed, not followed).
+    #[arg(long)]
+    pub doubling: bool,
+    /// Also follow the family crossing at each branch point of the families computed (one
+    /// generation, as `--doubling`; both may be given).
+    #[arg(long)]
+    pub switch: bool,
     /// The most orbits per family.
     #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u16).range(1..=10000))]
     pub max_orbits: u16,
@@ -244,11 +300,11 @@ pub struct Orbits {
     pub rows: usize,
     /// Draw the family's stability diagram (the index k against E, the lines k = ±1, events
     /// named) into this SVG file; needs exactly one family (choose it with `--mode` and
-    /// `--gamma`).
-    #[arg(long, value_name = "FILE")]
+    /// `--gamma`; not with `--doubling` or `--switch`).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["doubling", "switch"])]
     pub svg: Option<PathBuf>,
     /// Draw the family's periods against E into this SVG file (one family, as `--svg`).
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["doubling", "switch"])]
     pub periods_svg: Option<PathBuf>,
     /// Output format.
     #[command(flatten)]

@@ -11,6 +11,7 @@ mod diagram;
 mod error;
 mod files;
 mod nonlinear;
+mod orbit_out;
 mod orbits;
 mod progress;
 mod simulate;
@@ -30,6 +31,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Atlas(a) => atlas::atlas(a),
         Command::Simulate(s) => simulate::simulate(s),
         Command::Certify(c) => certify::certify(c),
+        Command::Orbit(o) => orbits::orbit(o),
         Command::Orbits(o) => orbits::orbits(o),
         Command::Section(s) => orbits::section(s),
         Command::Formulas(f) => commands::formulas(f),

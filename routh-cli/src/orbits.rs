@@ -2,32 +2,72 @@
 //! linearly stable steady motions at one momentum (period, precession, stability index, events),
 //! and Poincaré sections at one (p_ψ, E) (docs/method.md §11).
 
-use crate::cli::{Orbits, Section};
+use crate::cli::{OrbitArgs, Orbits, Section};
 use crate::commands::load;
 use crate::error::CliError;
+use crate::files::Outputs;
+use crate::orbit_out::{self, Family, Origin};
 use crate::table::{num, vec3, Table};
 use routh::plot::{orbit_family_svg, orbit_periods_svg, poincare_section_svg, PlotOptions};
 use routh::{
-    classify, lyapunov_family, poincare_section, steady_motions, OrbitFamily, OrbitOptions,
-    SectionOptions, Stability, SteadyMotion, Vector3,
+    classify, continue_orbit, lyapunov_family, period_doubled_family, periodic_orbit,
+    poincare_section, steady_motions, switch_branch, Model, OrbitEventKind, OrbitOptions,
+    PeriodicOrbit, RouthError, SectionOptions, Stability, Vector3,
 };
 
-/// One family with where it starts.
-#[derive(serde::Serialize)]
-struct Started {
-    motion: SteadyMotion,
-    mode: usize,
-    family: OrbitFamily,
+/// The orbit corrected from a guess; the library's refusals of the guess (not finite, γ not a
+/// unit vector, T ≤ 0, a steady motion) are bad input, a corrector that does not converge a
+/// failed computation.
+fn correct(
+    model: &Model,
+    omega: [f64; 3],
+    gamma: [f64; 3],
+    period: f64,
+    opts: &OrbitOptions,
+) -> Result<PeriodicOrbit, CliError> {
+    periodic_orbit(
+        model,
+        Vector3::from(omega),
+        Vector3::from(gamma),
+        period,
+        opts,
+    )
+    .map_err(|e| match e {
+        RouthError::NonFinite { .. }
+        | RouthError::NonUnitGamma { .. }
+        | RouthError::InvalidOption { .. } => {
+            CliError::Input(format!("the guess (--omega, --gamma, --period): {e}"))
+        }
+        e => CliError::Compute(format!(
+            "no periodic orbit from the guess: {e} (try a period guess nearer the orbit's, or \
+             a guess nearer a periodic orbit)"
+        )),
+    })
 }
 
-/// Runs `routh orbits` and returns what it prints.
-pub fn orbits(a: &Orbits) -> Result<String, CliError> {
+/// Runs `routh orbit` and returns what it prints.
+pub fn orbit(a: &OrbitArgs) -> Result<String, CliError> {
     let model = load(&a.model)?;
-    let mut opts = OrbitOptions::default().with_max_orbits(usize::from(a.max_orbits));
-    if let Some((lo, hi)) = a.energy {
-        opts = opts.with_energy_bounds(lo, hi);
+    let o = correct(&model, a.omega, a.gamma, a.period, &OrbitOptions::default())?;
+    if a.output.json {
+        return Ok(orbit_out::orbit_json(&o)?);
     }
-    let mut motions = steady_motions(&model, a.momentum)?;
+    if a.output.csv {
+        return Ok(orbit_out::orbit_csv(&o));
+    }
+    Ok(orbit_out::orbit_table(&o))
+}
+
+/// The Lyapunov families at `p`: one per linearly stable steady motion (the one nearest
+/// `--gamma`, if given) and mode; what could not start is described in `skipped`.
+fn lyapunov_families(
+    a: &Orbits,
+    model: &Model,
+    p: f64,
+    opts: &OrbitOptions,
+    skipped: &mut Vec<String>,
+) -> Result<Vec<Family>, CliError> {
+    let mut motions = steady_motions(model, p)?;
     if let Some(g) = a.gamma {
         let g = Vector3::from(g);
         motions.sort_by(|x, y| (x.gamma - g).norm().total_cmp(&(y.gamma - g).norm()));
@@ -42,10 +82,9 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
         Some(m) => vec![m],
         None => vec![0, 1],
     };
-    let mut started = Vec::new();
-    let mut skipped = Vec::new();
+    let mut out = Vec::new();
     for m in motions {
-        let verdict = classify(&model, &m)?.verdict;
+        let verdict = classify(model, &m)?.verdict;
         if !matches!(
             verdict,
             Stability::SecularlyStable | Stability::GyroscopicallyStabilized
@@ -57,108 +96,209 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
             continue;
         }
         for &mode in &modes {
-            match lyapunov_family(&model, &m, mode, &opts) {
-                Ok(family) => started.push(Started {
-                    motion: m.clone(),
-                    mode,
+            match lyapunov_family(model, &m, mode, opts) {
+                Ok(family) => out.push(Family {
+                    origin: Origin::Lyapunov {
+                        motion: m.clone(),
+                        mode,
+                    },
                     family,
                 }),
                 Err(e) => skipped.push(format!("{} mode {mode}: {e}", vec3(&m.gamma))),
             }
         }
     }
+    Ok(out)
+}
+
+/// `--doubling` and `--switch`: the family born at each period doubling (with `--doubling`) and
+/// each branch point (with `--switch`) of the families computed so far, appended to `families`
+/// (one generation: the new families' own events are listed, not followed). Returns, per family,
+/// the events followed and the family each started; what could not start goes to `skipped`.
+fn follow_events(
+    a: &Orbits,
+    model: &Model,
+    opts: &OrbitOptions,
+    families: &mut Vec<Family>,
+    skipped: &mut Vec<String>,
+) -> Vec<Vec<(usize, usize)>> {
+    let mut followed: Vec<Vec<(usize, usize)>> = vec![Vec::new(); families.len()];
+    let (mut doublings, mut branch_points) = (0, 0);
+    for i in 0..families.len() {
+        for j in 0..families[i].family.events.len() {
+            let e = &families[i].family.events[j];
+            let started = match e.kind {
+                OrbitEventKind::PeriodDoubling if a.doubling => {
+                    doublings += 1;
+                    period_doubled_family(model, e, opts).map(|f| {
+                        (
+                            f,
+                            Origin::PeriodDoubled {
+                                parent: i,
+                                event: j,
+                            },
+                        )
+                    })
+                }
+                OrbitEventKind::BranchPoint if a.switch => {
+                    branch_points += 1;
+                    switch_branch(model, e, opts).map(|f| {
+                        (
+                            f,
+                            Origin::Switched {
+                                parent: i,
+                                event: j,
+                            },
+                        )
+                    })
+                }
+                _ => continue,
+            };
+            match started {
+                Ok((family, origin)) => {
+                    followed[i].push((j, families.len()));
+                    families.push(Family { origin, family });
+                }
+                Err(err) => {
+                    skipped.push(format!("family {i}, {} at E = {}: {err}", e.kind, e.energy))
+                }
+            }
+        }
+    }
+    if a.doubling && doublings == 0 {
+        skipped.push("--doubling: no period doubling along the families computed".into());
+    }
+    if a.switch && branch_points == 0 {
+        skipped.push("--switch: no branch point along the families computed".into());
+    }
+    followed.resize(families.len(), Vec::new());
+    followed
+}
+
+/// "1 `what` family", "`n` `what` families".
+fn count(n: usize, what: &str) -> String {
+    format!("{n} {what} famil{}", if n == 1 { "y" } else { "ies" })
+}
+
+/// Runs `routh orbits` and returns what it prints.
+pub fn orbits(a: &Orbits) -> Result<String, CliError> {
+    let model = load(&a.model)?;
+    let mut opts = OrbitOptions::default().with_max_orbits(usize::from(a.max_orbits));
+    if let Some((lo, hi)) = a.energy {
+        opts = opts.with_energy_bounds(lo, hi);
+    }
+    let mut skipped = Vec::new();
+    // The families asked for, and the title of the table.
+    let (mut families, mut title) = match (a.continue_orbit, a.momentum) {
+        (true, _) => {
+            let (Some(omega), Some(gamma), Some(period), Some((lo, hi))) =
+                (a.omega, a.gamma, a.period, a.energy)
+            else {
+                return Err(CliError::Input(
+                    "--continue needs --omega X,Y,Z --gamma X,Y,Z --period T --energy LO..HI"
+                        .into(),
+                ));
+            };
+            let start = correct(&model, omega, gamma, period, &opts)?;
+            if !(lo..=hi).contains(&start.energy) {
+                return Err(CliError::Input(format!(
+                    "the corrected orbit has E = {} (the energy of the guess), outside --energy \
+                     {lo}..{hi}: the range must contain it",
+                    start.energy
+                )));
+            }
+            let family = continue_orbit(&model, &start, (lo, hi), &opts)?;
+            let title = format!(
+                "1 family through the orbit at p_psi = {}, E = {} (T = {}) over E in [{lo}, {hi}]",
+                start.p_psi,
+                num(start.energy),
+                num(start.period)
+            );
+            (
+                vec![Family {
+                    origin: Origin::Continued,
+                    family,
+                }],
+                title,
+            )
+        }
+        (false, Some(p)) => {
+            let fams = lyapunov_families(a, &model, p, &opts, &mut skipped)?;
+            let n = fams.len();
+            (fams, format!("{} at p_psi = {p}", count(n, "Lyapunov")))
+        }
+        (false, None) => {
+            return Err(CliError::Input(
+                "orbits needs --momentum P (or --continue with a guess)".into(),
+            ))
+        }
+    };
+    // --doubling, --switch: one generation of the families born at the events.
+    let followed = follow_events(a, &model, &opts, &mut families, &mut skipped);
+    for (on, name, what) in [
+        (a.doubling, "period_doubled", "period-doubled"),
+        (a.switch, "switched", "switched"),
+    ] {
+        if on {
+            let n = families.iter().filter(|f| f.origin.name() == name).count();
+            title.push_str(&format!(", {}", count(n, what)));
+        }
+    }
+    let mut files = Outputs::new();
     if a.svg.is_some() || a.periods_svg.is_some() {
-        let [one] = started.as_slice() else {
+        let [one] = families.as_slice() else {
             return Err(CliError::Input(format!(
                 "--svg and --periods-svg draw one family, and this run has {}: choose it with \
                  --mode and --gamma",
-                started.len()
+                families.len()
             )));
         };
         let stem = crate::args::model_name(&a.model);
-        let title = format!(
-            "{stem}: periodic orbits of mode {} at p_ψ = {}",
-            one.mode, a.momentum
-        );
+        let title = match &one.origin {
+            Origin::Lyapunov { mode, .. } => format!(
+                "{stem}: periodic orbits of mode {mode} at p_ψ = {}",
+                one.family.orbits.first().map_or(f64::NAN, |o| o.p_psi)
+            ),
+            _ => format!(
+                "{stem}: periodic orbits at p_ψ = {}",
+                one.family.orbits.first().map_or(f64::NAN, |o| o.p_psi)
+            ),
+        };
         let opts = PlotOptions {
             x_label: "E".into(),
             title,
             ..PlotOptions::default()
         };
         if let Some(path) = &a.svg {
-            orbit_family_svg(&one.family, path, &opts)?;
+            files.write(path, |tmp| orbit_family_svg(&one.family, tmp, &opts))?;
         }
         if let Some(path) = &a.periods_svg {
-            orbit_periods_svg(&one.family, path, &opts)?;
+            files.write(path, |tmp| orbit_periods_svg(&one.family, tmp, &opts))?;
         }
     }
-    if a.output.json {
-        return Ok(serde_json::to_string_pretty(&started)? + "\n");
-    }
-    if a.output.csv {
-        let mut s = String::from(
-            "family,gamma1,gamma2,gamma3,mode,energy,period,precession,stability_index,stability\n",
-        );
-        for (i, f) in started.iter().enumerate() {
-            let g = f.motion.gamma;
-            for o in &f.family.orbits {
-                s.push_str(&format!(
-                    "{i},{},{},{},{},{},{},{},{},{}\n",
-                    g.x,
-                    g.y,
-                    g.z,
-                    f.mode,
-                    o.energy,
-                    o.period,
-                    o.precession,
-                    o.stability_index,
-                    o.stability
-                ));
-            }
+    let text = if a.output.json || a.output.csv {
+        // What could not start goes to stderr: stdout is data.
+        for s in &skipped {
+            eprintln!("note: skipped: {s}");
         }
-        return Ok(s);
-    }
-    let mut out = format!(
-        "{} Lyapunov famil{} at p_psi = {}\n",
-        started.len(),
-        if started.len() == 1 { "y" } else { "ies" },
-        a.momentum
-    );
-    for (i, f) in started.iter().enumerate() {
-        let fam = &f.family;
-        out.push_str(&format!(
-            "\nfamily {i}: from {} (E = {}), mode {}: {} orbits{}\n",
-            vec3(&f.motion.gamma),
-            num(f.motion.energy),
-            f.mode,
-            fam.orbits.len(),
-            fam.stop
-                .as_ref()
-                .map_or(String::new(), |s| format!(", ended: {s}"))
-        ));
-        let step = fam.orbits.len().div_ceil(a.rows.max(1)).max(1);
-        let mut t = Table::new(&["#", "E", "T", "precession", "k", "stability"]);
-        for (j, o) in fam.orbits.iter().enumerate() {
-            if j % step == 0 || j + 1 == fam.orbits.len() {
-                t.row(vec![
-                    j.to_string(),
-                    num(o.energy),
-                    num(o.period),
-                    num(o.precession),
-                    num(o.stability_index),
-                    o.stability.to_string(),
-                ]);
-            }
+        if a.output.json {
+            orbit_out::families_json(&families)?
+        } else {
+            orbit_out::families_csv(&families)
         }
-        out.push_str(&t.render());
-        for e in &fam.events {
-            out.push_str(&format!("  {e}\n"));
+    } else {
+        let mut out = format!("{title}\n");
+        for (i, f) in families.iter().enumerate() {
+            out.push('\n');
+            out.push_str(&orbit_out::family_table(i, f, a.rows, &followed[i]));
         }
-    }
-    for s in &skipped {
-        out.push_str(&format!("skipped: {s}\n"));
-    }
-    Ok(out)
+        for s in &skipped {
+            out.push_str(&format!("skipped: {s}\n"));
+        }
+        out
+    };
+    files.commit()?;
+    Ok(text)
 }
 
 /// Runs `routh section` and returns what it prints.
@@ -178,7 +318,9 @@ pub fn section(a: &Section) -> Result<String, CliError> {
             ),
             ..PlotOptions::default()
         };
-        poincare_section_svg(&sec, &[], path, &opts)?;
+        let mut files = Outputs::new();
+        files.write(path, |tmp| poincare_section_svg(&sec, &[], tmp, &opts))?;
+        files.commit()?;
     }
     if a.output.json {
         return Ok(serde_json::to_string_pretty(&sec)? + "\n");

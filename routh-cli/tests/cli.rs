@@ -777,6 +777,10 @@ fn diagram_nonlinear_locates_arnolds_degenerate_point() {
     assert!(table.contains("Lyapunov stable -> "), "{table}");
 }
 
+const RESONANT: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/models/resonant_body.toml"
+);
 const ASYMMETRIC: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/../examples/models/asymmetric_top.toml"
@@ -807,18 +811,19 @@ fn orbits_follow_the_swings_and_name_their_events() {
     for (i, ci) in [0.4, 0.3, 1.5].iter().enumerate() {
         assert!((g[i].as_f64().unwrap() + ci / c).abs() < 1e-9);
     }
-    let orbits = f["family"]["orbits"].as_array().unwrap();
+    let orbits = f["orbits"].as_array().unwrap();
     assert_eq!(orbits.len(), 40);
-    let doublings: Vec<f64> = f["family"]["events"]
+    let events = f["events"].as_array().unwrap();
+    let doublings: Vec<f64> = f["events"]
         .as_array()
         .unwrap()
         .iter()
         .filter(|e| e["kind"] == "PeriodDoubling")
         .map(|e| e["orbit"]["stability_index"].as_f64().unwrap())
         .collect();
-    assert_eq!(doublings.len(), 2, "{}", f["family"]["events"]);
+    assert_eq!(doublings.len(), 2, "{}", f["events"]);
     assert!(doublings.iter().all(|k| (k + 1.0).abs() < 1e-6));
-    // CSV: one row per orbit; the table names the events.
+    // CSV: a header, one row per orbit, then one per event; the table names the events.
     let o = routh(&[
         "orbits",
         ASYMMETRIC,
@@ -832,7 +837,7 @@ fn orbits_follow_the_swings_and_name_their_events() {
         "40",
         "--csv",
     ]);
-    assert_eq!(stdout(&o).lines().count(), 41);
+    assert_eq!(stdout(&o).lines().count(), 1 + 40 + events.len());
     let o = routh(&[
         "orbits",
         ASYMMETRIC,
@@ -854,13 +859,31 @@ fn orbits_follow_the_swings_and_name_their_events() {
 
 #[test]
 fn orbits_refuse_a_resonant_start_and_draw_one_family() {
-    // The hanging Lagrange top at p_ψ = 0 has two equal frequencies √(mgl/A₁): a 1:1
-    // resonance, so neither mode starts a family; the sleeping (upright) top is unstable.
-    let o = routh(&["orbits", TOP, "--momentum", "0"]);
+    // A body J = diag(1, 4, 4.5) hanging at p_ψ = 0 has the frequencies √(mgl/J₁) = 1 and
+    // √(mgl/J₂) = 1/2: a 1:2 resonance, so mode 1 starts no family; the upright body is
+    // unstable.
+    let o = routh(&["orbits", RESONANT, "--momentum", "0", "--max-orbits", "3"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let out = stdout(&o);
-    assert!(out.starts_with("0 Lyapunov families"), "{out}");
-    assert!(out.contains("resonant start"), "{out}");
+    assert!(out.starts_with("1 Lyapunov family"), "{out}");
+    assert!(
+        out.contains("mode 1: invalid option mode: resonant start"),
+        "{out}"
+    );
+    assert!(out.contains("unstable: no Lyapunov family"), "{out}");
+    // The hanging Lagrange top at p_ψ = 0 has two equal frequencies √(mgl/A₁), and one family
+    // of small orbits, its planar swings (mode 0): degenerate (not isolated on their energy
+    // level, k = 1), with their turn about the axis.
+    let o = routh(&["orbits", TOP, "--momentum", "0", "--max-orbits", "5"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("1 Lyapunov family"), "{out}");
+    assert!(out.contains("body_turn"), "{out}");
+    assert_eq!(out.matches("parabolic (degenerate)").count(), 5, "{out}");
+    assert!(
+        out.contains("mode 1: invalid option mode: an axially symmetric body"),
+        "{out}"
+    );
     assert!(out.contains("unstable: no Lyapunov family"), "{out}");
     // --svg needs one family.
     let dir = std::env::temp_dir().join(format!("routh-cli-orbits-{}", std::process::id()));

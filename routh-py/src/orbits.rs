@@ -1,5 +1,6 @@
 //! Periodic motions in Python: `Model.periodic_orbit`, `Model.lyapunov_family`,
-//! `Model.continue_orbit`, `Model.period_doubled_family`, `Model.poincare_section`,
+//! `Model.continue_orbit`, `Model.period_doubled_family`, `Model.switch_branch`,
+//! `Model.poincare_section`,
 //! `Model.orbit_crossings`, `Model.orbit_path`, and their results `PeriodicOrbit`,
 //! `OrbitFamily`, `OrbitEvent`, `PoincareSection` (numpy arrays, lower-case strings).
 
@@ -14,9 +15,12 @@ use routh::{Complex, OrbitOptions, SectionOptions};
 
 /// A periodic orbit of the full equations (8), a relative periodic orbit of the body: a point
 /// `omega0`, `gamma0` ((3,) float64), `period`, `energy`, `p_psi`, the precession Δψ over one
-/// period (`precession`, in (−π, π]), the Floquet `multipliers` μ, 1/μ ((2,) complex128), the
-/// `stability_index` k = (μ + 1/μ)/2 and `stability` ("elliptic", "parabolic", "hyperbolic",
-/// "inverse_hyperbolic").
+/// period (`precession`, in (−π, π]), the turn Δφ about the body axis e₃ over one period
+/// (`body_turn`, in (−π, π]; 0 unless the body is axially symmetric), the Floquet `multipliers`
+/// μ, 1/μ ((2,) complex128), the `stability_index` k = (μ + 1/μ)/2, `stability` ("elliptic",
+/// "parabolic", "hyperbolic", "inverse_hyperbolic") and `degenerate` (True: the orbit is not
+/// isolated on its energy level, a planar swing or nutation of an axially symmetric body,
+/// reported with k = 1 by theorem).
 #[pyclass(module = "routh", frozen)]
 pub struct PeriodicOrbit {
     /// ω at a point of the orbit, (3,).
@@ -37,6 +41,10 @@ pub struct PeriodicOrbit {
     /// Δψ over one period, in (−π, π].
     #[pyo3(get)]
     pub precession: f64,
+    /// Δφ, the turn about the body axis e₃ over one period, in (−π, π]: on an axially symmetric
+    /// body the orbit is periodic modulo it; 0 on any other body.
+    #[pyo3(get)]
+    pub body_turn: f64,
     /// μ, 1/μ, (2,) complex128.
     #[pyo3(get)]
     pub multipliers: Py<PyAny>,
@@ -46,6 +54,10 @@ pub struct PeriodicOrbit {
     /// "elliptic", "parabolic", "hyperbolic" or "inverse_hyperbolic".
     #[pyo3(get)]
     pub stability: &'static str,
+    /// True: not isolated on its energy level (a planar swing or nutation of an axially
+    /// symmetric body); k = 1, μ = 1/μ = 1 and "parabolic" by theorem.
+    #[pyo3(get)]
+    pub degenerate: bool,
     /// Half the orbit's extent in (ω, γ).
     #[pyo3(get)]
     pub amplitude: f64,
@@ -62,9 +74,11 @@ impl PeriodicOrbit {
             energy: o.energy,
             p_psi: o.p_psi,
             precession: o.precession,
+            body_turn: o.body_turn,
             multipliers: PyArray1::from_vec(py, mu).into_any().unbind(),
             stability_index: o.stability_index,
             stability: o.stability.as_str(),
+            degenerate: o.degenerate,
             amplitude: o.amplitude,
             inner: o.clone(),
         }
@@ -75,8 +89,15 @@ impl PeriodicOrbit {
 impl PeriodicOrbit {
     fn __repr__(&self) -> String {
         format!(
-            "PeriodicOrbit(period={:.10}, energy={:.10}, p_psi={}, precession={:.6}, stability_index={:.8}, stability='{}')",
-            self.period, self.energy, self.p_psi, self.precession, self.stability_index, self.stability
+            "PeriodicOrbit(period={:.10}, energy={:.10}, p_psi={}, precession={:.6}, body_turn={:.6}, stability_index={:.8}, stability='{}', degenerate={})",
+            self.period,
+            self.energy,
+            self.p_psi,
+            self.precession,
+            self.body_turn,
+            self.stability_index,
+            self.stability,
+            if self.degenerate { "True" } else { "False" }
         )
     }
 }
@@ -414,6 +435,32 @@ impl Model {
         let e = event.inner.clone();
         let f = detached(py, || routh::period_doubled_family(&m, &e, &opts))?
             .map_err(|e| routh_err(py, &e))?;
+        OrbitFamily::new(py, &f)
+    }
+
+    /// The family of orbits crossing this one's family at a "branch_point" event, followed both
+    /// ways from it (docs/method.md §11): at a symmetry-breaking branch point (planar swings of
+    /// a body with a plane of symmetry) the orbits that leave the plane. Raises `RouthError`
+    /// (kind "InvalidOption") for an event that is not a branch point, or one where no second
+    /// family crosses with its energy stationary, and (kind "NoConvergence") when the crossing
+    /// family's first orbit cannot be corrected.
+    ///
+    /// >>> f = m.lyapunov_family(hanging, 0, max_orbits=30)
+    /// >>> bp = next(e for e in f.events if e.kind == "branch_point")
+    /// >>> g = m.switch_branch(bp, max_orbits=20)
+    #[pyo3(signature = (event, *, max_orbits=None, max_step=None))]
+    fn switch_branch(
+        &self,
+        py: Python<'_>,
+        event: &OrbitEvent,
+        max_orbits: Option<usize>,
+        max_step: Option<f64>,
+    ) -> PyResult<OrbitFamily> {
+        let opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
+        let m = self.get()?;
+        let e = event.inner.clone();
+        let f =
+            detached(py, || routh::switch_branch(&m, &e, &opts))?.map_err(|e| routh_err(py, &e))?;
         OrbitFamily::new(py, &f)
     }
 

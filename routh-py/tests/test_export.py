@@ -124,7 +124,8 @@ REPORT = ["verdict", "degree_of_instability", "kappa1", "kappa2"] + [
     f"f2_root{k}_{p}" for k in range(1, 5) for p in ("re", "im")
 ]
 ORBIT = [
-    "period", "energy", "p_psi", "precession", "stability_index", "stability", "amplitude",
+    "period", "energy", "p_psi", "precession", "body_turn", "degenerate", "stability_index",
+    "stability", "amplitude",
     "omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3",
     "multiplier1_re", "multiplier1_im", "multiplier2_re", "multiplier2_im",
 ]
@@ -368,7 +369,21 @@ def test_periodic_orbits_export(tmp_path):
     documented(df, "PeriodicOrbit")
     assert complex(df.multiplier1_re[0], df.multiplier1_im[0]) == o.multipliers[0]
     assert [df.gamma1[0], df.gamma2[0], df.gamma3[0]] == list(o.gamma0)
+    assert df.body_turn[0] == 0.0 and not df.degenerate[0]
     csv_trip(o, tmp_path)
+    # A nutation of the Lagrange top: Δφ and the degenerate flag in the JSON and the frame.
+    top = routh.Model(
+        "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+        {"inertia": [1.0, 1.0, 1.25], "mgl": 1.0},
+    )
+    n = top.periodic_orbit([0.3, 0, 3.0], [0, math.sin(0.5), math.cos(0.5)], 2.0)
+    doc = round_trip(n)
+    assert doc["body_turn"] == n.body_turn and doc["degenerate"] is True
+    back = routh.PeriodicOrbit.from_json(n.to_json())
+    assert back.body_turn == n.body_turn and back.degenerate is True
+    df = n.to_pandas()
+    assert df.body_turn[0] == n.body_turn and bool(df.degenerate[0]) is True
+    csv_trip(n, tmp_path)
 
     s = body.poincare_section(o.p_psi, o.energy, normal=[0, 1, 0], orbits=3, crossings=5)
     round_trip(s)

@@ -120,3 +120,65 @@ def test_bad_guesses_raise_routh_errors(body):
         body.periodic_orbit([0, 0, 0], [0, 0.1, -1.0], -1.0)
     with pytest.raises(routh.RouthError):
         body.lyapunov_family(s, 2)
+
+
+@pytest.fixture
+def branching():
+    """A heavy body J = diag(1, 1.6, 2.3), mgl = 1 (routh-cli/tests/models/branching_body.toml):
+    hanging at p_ψ = 0, its mode-0 orbits are planar swings about e₁, which meet a branch point
+    at E ≈ 0.2725, where a family of non-planar orbits crosses them."""
+    return routh.Model(PENDULUM, {"inertia": [1.0, 1.6, 2.3], "mgl": 1.0})
+
+
+def off_plane(m, o):
+    """The largest |γ₁| and |ω₂|, |ω₃| along one period: 0 on a planar swing about e₁."""
+    p = m.orbit_path(o, 200)
+    return max(np.abs(p.gamma[:, 0]).max(), np.abs(p.omega[:, 1:]).max())
+
+
+def test_switch_branch_leaves_the_plane_of_the_swings(branching):
+    f = branching.lyapunov_family(hanging(branching), 0, max_orbits=30)
+    bps = [e for e in f.events if e.kind == "branch_point"]
+    assert len(bps) == 1, f.events
+    bp = bps[0]
+    assert 0.2 < bp.energy < 0.35
+    # The parent's orbits are planar swings.
+    assert all(off_plane(branching, o) < 1e-9 for o in f.orbits)
+    assert np.abs(f.precession).max() < 1e-9
+    g = branching.switch_branch(bp, max_orbits=20)
+    assert isinstance(g, routh.OrbitFamily) and len(g) == 20
+    # Through the branch point, its energy least there (a pitchfork), at the event's period.
+    near = g.orbits[int(np.argmin(g.energy))]
+    assert abs(near.energy - bp.energy) < 2e-2
+    assert abs(near.period / bp.orbit.period - 1) < 1e-2
+    # Away from the branch point the crossing family's orbits leave the plane and precess, both
+    # ways (its two halves are mirror images).
+    away = [o for o in g.orbits if o.energy > bp.energy + 0.05]
+    assert len(away) >= 4
+    assert all(off_plane(branching, o) > 1e-2 for o in away)
+    assert min(g.precession) < -0.1 and max(g.precession) > 0.1
+    for o in g.orbits:
+        assert o.body_turn == 0.0 and not o.degenerate and abs(o.p_psi) < 1e-9
+    # A closed orbit: the path ends where it starts.
+    o = away[0]
+    p = branching.orbit_path(o, 50)
+    assert np.allclose(p.omega[-1], o.omega0, atol=1e-7) and np.allclose(p.gamma[-1], o.gamma0, atol=1e-7)
+
+
+def test_switch_branch_refuses_other_events(branching, asymmetric):
+    f = asymmetric.lyapunov_family(hanging(asymmetric), 0, max_orbits=40)
+    pd = next(e for e in f.events if e.kind == "period_doubling")
+    with pytest.raises(routh.RouthError) as e:
+        asymmetric.switch_branch(pd)
+    assert e.value.kind == "InvalidOption"
+    assert "a branch point is needed, got a period_doubling" in str(e.value)
+    bp = next(e for e in branching.lyapunov_family(hanging(branching), 0, max_orbits=30).events
+              if e.kind == "branch_point")
+    with pytest.raises(routh.RouthError) as e:
+        branching.period_doubled_family(bp)
+    assert e.value.kind == "InvalidOption" and "period doubling is needed" in str(e.value)
+    with pytest.raises(TypeError):
+        branching.switch_branch(bp.orbit)
+    with pytest.raises(routh.RouthError) as e:
+        branching.switch_branch(bp, max_orbits=0)
+    assert e.value.kind == "InvalidOption"

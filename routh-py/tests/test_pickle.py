@@ -141,6 +141,16 @@ def test_periodic_orbits_pickle():
     assert f.events
     trips(f)
     trips(f.events[0])
+    # A nutation of the Lagrange top: degenerate, with its turn Δφ about the axis.
+    top = routh.Model(
+        "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+        {"inertia": [1.0, 1.0, 1.25], "mgl": 1.0},
+    )
+    n = top.periodic_orbit([0.3, 0, 3.0], [0, math.sin(0.5), math.cos(0.5)], 2.0)
+    assert n.degenerate and abs(n.body_turn) > 0.1
+    for back in (pickle.loads(pickle.dumps(n)), copy.deepcopy(n)):
+        assert back.body_turn == n.body_turn and back.degenerate is True
+    trips(n)
 
 
 def test_a_state_not_made_by_reduce_is_refused():

@@ -483,9 +483,11 @@ class PeriodicOrbit:
     energy: float
     p_psi: float
     precession: float
+    body_turn: float
     multipliers: npt.NDArray[np.complex128]
     stability_index: float
     stability: OrbitStability
+    degenerate: bool
     amplitude: float
     def to_pandas(self) -> Any:
         """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
@@ -669,6 +671,16 @@ class Model:
     def period_doubled_family(
         self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None
     ) -> OrbitFamily: ...
+    def switch_branch(
+        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None
+    ) -> OrbitFamily:
+        """The family crossing `event`'s family at that "branch_point", followed both ways from it.
+
+        RouthError (kind "InvalidOption") for an event that is not a branch point.
+
+        >>> bp = next(e for e in f.events if e.kind == "branch_point")
+        >>> g = m.switch_branch(bp, max_orbits=20)
+        """
     def poincare_section(
         self,
         p_psi: float,

@@ -9,7 +9,12 @@ JSON. ``to_json()`` is a JSON object ``{"routh": "<class>", "format": 1, <fields
 
 - ``SteadyMotion``, ``PeriodicOrbit``, ``OrbitEvent``, ``OrbitFamily`` hold a Rust value; their
   fields are its serde form (what ``serde_json`` writes for ``routh::SteadyMotion`` etc., so
-  Rust reads the text back with ``serde_json::from_str``: the two extra keys are ignored).
+  Rust reads the text back with ``serde_json::from_str``: the two extra keys are ignored). The
+  same schema is what ``routh orbit --json`` prints (one ``PeriodicOrbit`` document) and
+  ``routh orbits --json`` (an array of ``OrbitFamily`` documents with the keys ``origin``,
+  ``motion``, ``mode``, ``parent``, ``event`` besides, ignored here); and with the class named
+  (``routh.PeriodicOrbit.from_json(text)``), the bare serde text of the Rust value, without the
+  two keys, is read too. A JSON array gives a list (of ``cls``, when it is named).
 - Every other class: its attributes by name (numpy arrays as nested lists, a complex number as
   ``[re, im]``, a nested result as its own JSON object), and for the trajectories
   ``euler_angles`` (None without attitude).
@@ -295,8 +300,21 @@ def _decode(v, kind, where):
     return v
 
 
+def _serde(name, body, where):
+    """The result of class `name` (one of _SERDE) from the serde form of its Rust value."""
+    try:
+        return _routh._restore(name, json.dumps(body))
+    except _routh.RouthError as e:
+        msg = str(e).removeprefix("unpickling: ")
+        raise _routh.RouthError(f"from_json: {where}: not a {name}: {msg}") from None
+
+
 def _object(doc, expected, where="text"):
     """The result of a JSON object (a dict); `expected` a class name or None (any)."""
+    if isinstance(doc, dict) and "routh" not in doc and expected in _SERDE:
+        # The bare serde form of the Rust value (serde_json::to_string(&orbit) in Rust), read
+        # when the class is named: PeriodicOrbit.from_json(text).
+        return _serde(expected, doc, where)
     if not isinstance(doc, dict) or "routh" not in doc:
         raise _routh.RouthError(f"from_json: {where}: not a routh result (no \"routh\" key)")
     name = doc["routh"]
@@ -307,8 +325,10 @@ def _object(doc, expected, where="text"):
     if doc.get("format") != FORMAT:
         raise _routh.RouthError(f"from_json: {where}: format {doc.get('format')!r}, expected {FORMAT}")
     if name in _SERDE:
+        # Keys the Rust type does not have (the CLI's "origin", "motion", "mode", "parent",
+        # "event" of a family) are ignored, as serde ignores them.
         body = {k: v for k, v in doc.items() if k not in ("routh", "format")}
-        return _routh._restore(name, json.dumps(body))
+        return _serde(name, body, where)
     values = []
     for field, kind in _FIELDS[name]:
         if field not in doc:
@@ -349,8 +369,10 @@ def from_json(text, cls=None):
     except (TypeError, ValueError) as e:
         raise _routh.RouthError(f"from_json: not JSON: {e}") from None
     expected = None if cls is None else cls.__name__
-    if isinstance(doc, list) and cls is None:
-        return [_object(d, None, f"[{i}]") for i, d in enumerate(doc)]
+    if isinstance(doc, list):
+        # A list of results (routh.to_json of a list; `routh orbits --json`): each must be one
+        # of `cls` when it is given.
+        return [_object(d, expected, f"[{i}]") for i, d in enumerate(doc)]
     return _object(doc, expected)
 
 

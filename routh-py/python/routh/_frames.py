@@ -89,6 +89,8 @@ def _orbit_row(o):
         "energy": o.energy,
         "p_psi": o.p_psi,
         "precession": o.precession,
+        "body_turn": o.body_turn,
+        "degenerate": o.degenerate,
         "stability_index": o.stability_index,
         "stability": o.stability,
         "amplitude": o.amplitude,
@@ -219,8 +221,8 @@ def _frame(obj):
             row = dict(kind=e.kind, **_orbit_row(e.orbit))
             row.update(before=e.before, after=e.after)
             rows.append(row)
-        cols = ["kind", "period", "energy", "p_psi", "precession", "stability_index", "stability",
-                "amplitude", "omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3",
+        cols = ["kind", "period", "energy", "p_psi", "precession", "body_turn", "degenerate",
+                "stability_index", "stability", "amplitude", "omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3",
                 "multiplier1_re", "multiplier1_im", "multiplier2_re", "multiplier2_im", "before", "after"]
         df = pd.DataFrame(rows, columns=cols)
         if name == "OrbitFamily":
