@@ -20,8 +20,9 @@ use common::{fmt_vec, num};
 use routh::plot::{self, Overlay, PlotOptions};
 use routh::{
     axial_symmetry, continue_orbit, lyapunov_family, orbit_crossings, orbit_path,
-    period_doubled_family, poincare_section, steady_motions, switch_branch, Lagrangian, OrbitEventKind, OrbitFamily, OrbitOptions,
-    OrbitStability, PeriodicOrbit, SectionOptions, SteadyMotion, Vector3,
+    period_doubled_family, poincare_section, steady_motions, switch_branch, Lagrangian,
+    OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStability, PeriodicOrbit, SectionOptions,
+    SteadyMotion, Vector3,
 };
 
 // The body, declared here: `#[derive(Lagrangian)]` differentiates L at build time, the Jacobian
