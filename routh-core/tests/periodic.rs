@@ -4,6 +4,7 @@
 //! monodromy built by finite differences of `simulate_full` and from the growth of perturbations
 //! in long simulations, time reversal, and the period-doubled orbits next to a period doubling.
 
+use crate::common::{elliptic_k, heavy_body as body, HeavyTop};
 use routh_core::{
     continue_orbit, lyapunov_family, orbit_crossings, period_doubled_family, periodic_orbit,
     poincare_section, simulate_full, steady_motions, Lagrangian, Matrix3, OrbitEventKind,
@@ -11,26 +12,6 @@ use routh_core::{
     Vector3,
 };
 use std::f64::consts::PI;
-use test_models::HeavyTop;
-
-/// A heavy body `J = diag(a, b, c)` with its centre of mass on the third axis (`U = mgl γ₃`).
-fn body(a: f64, b: f64, c: f64, mgl: f64) -> HeavyTop {
-    HeavyTop {
-        j: Matrix3::from_diagonal(&Vector3::new(a, b, c)),
-        mgr: Vector3::new(0.0, 0.0, mgl),
-    }
-}
-
-/// The complete elliptic integral `K(m) = π / (2 AGM(1, √(1 − m)))`.
-fn elliptic_k(m: f64) -> f64 {
-    let (mut a, mut g) = (1.0f64, (1.0 - m).sqrt());
-    for _ in 0..60 {
-        let (an, gn) = (0.5 * (a + g), (a * g).sqrt());
-        a = an;
-        g = gn;
-    }
-    PI / (2.0 * a)
-}
 
 /// The hanging position of `body` at `p_ψ = 0`.
 fn hanging(m: &HeavyTop) -> SteadyMotion {

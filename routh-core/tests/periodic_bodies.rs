@@ -4,19 +4,12 @@
 //! nutations against the quadrature of its cubic (period, Δψ, Δφ), the minimal period and the
 //! first orbit's nonlinear period against the elliptic integral, and the ranges' errors.
 
+use crate::common::{closure_gap, elliptic_k, heavy_body as body, HeavyTop};
 use routh_core::{
-    axial_symmetry, continue_orbit, lyapunov_family, periodic_orbit, simulate_full, steady_motions,
-    Matrix3, OrbitOptions, PeriodicOrbit, SimOptions, SteadyMotion, Vector3,
+    axial_symmetry, continue_orbit, lyapunov_family, periodic_orbit, steady_motions, Matrix3,
+    OrbitOptions, SteadyMotion, Vector3,
 };
 use std::f64::consts::PI;
-use test_models::HeavyTop;
-
-fn body(a: f64, b: f64, c: f64, mgl: f64) -> HeavyTop {
-    HeavyTop {
-        j: Matrix3::from_diagonal(&Vector3::new(a, b, c)),
-        mgr: Vector3::new(0.0, 0.0, mgl),
-    }
-}
 
 fn steady_at(m: &HeavyTop, p_psi: f64, gamma3: f64) -> SteadyMotion {
     steady_motions(m, p_psi)
@@ -24,33 +17,6 @@ fn steady_at(m: &HeavyTop, p_psi: f64, gamma3: f64) -> SteadyMotion {
         .into_iter()
         .find(|s| (s.gamma.z - gamma3).abs() < 1e-6)
         .expect("the steady motion on the axis")
-}
-
-/// `K(m) = π / (2 AGM(1, √(1 − m)))`.
-fn elliptic_k(m: f64) -> f64 {
-    let (mut a, mut g) = (1.0f64, (1.0 - m).sqrt());
-    for _ in 0..60 {
-        let (an, gn) = (0.5 * (a + g), (a * g).sqrt());
-        a = an;
-        g = gn;
-    }
-    PI / (2.0 * a)
-}
-
-/// The state after one period by `simulate_full` (not the corrector's integration), less the
-/// start, turned back by the body turn `Δφ` about `e₃` (`x(T) = Rot(e₃, −Δφ)x(0)`).
-fn closure_gap(m: &HeavyTop, o: &PeriodicOrbit) -> f64 {
-    let tr = simulate_full(
-        m,
-        o.omega0,
-        o.gamma0,
-        o.period,
-        &SimOptions::with_tolerances(1e-12, 1e-13),
-    )
-    .unwrap();
-    let n = tr.t.len() - 1;
-    let r = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), -o.body_turn);
-    (tr.omega[n] - r * o.omega0).norm() + (tr.gamma[n] - r * o.gamma0).norm()
 }
 
 fn wrap(a: f64) -> f64 {

@@ -6,12 +6,11 @@
 //! integrator or corrector). The swing amplitude where `k = ±1` is found by bisection on that
 //! trace; routh's events must sit there, at any `max_step`, with their own orbit on the family.
 
+use crate::common::{closure_gap, elliptic_k, HeavyTop};
 use routh_core::{
-    lyapunov_family, simulate_full, steady_motions, switch_branch, Matrix3, OrbitEvent,
-    OrbitEventKind, OrbitFamily, OrbitOptions, SimOptions, SteadyMotion, Vector3,
+    lyapunov_family, steady_motions, switch_branch, Matrix3, OrbitEvent, OrbitEventKind,
+    OrbitFamily, OrbitOptions, SteadyMotion, Vector3,
 };
-use std::f64::consts::PI;
-use test_models::HeavyTop;
 
 /// The body: `J = diag(1, 1.6, 2.3)`, centre of mass on `e₃`, `mgl = 1` (`U = mgl γ₃`).
 const J: [f64; 3] = [1.0, 1.6, 2.3];
@@ -30,17 +29,6 @@ fn hanging(m: &HeavyTop, p_psi: f64) -> SteadyMotion {
         .into_iter()
         .find(|s| s.gamma.z < -0.9)
         .expect("the hanging steady motion")
-}
-
-/// `K(m) = π / (2 AGM(1, √(1 − m)))`.
-fn elliptic_k(m: f64) -> f64 {
-    let (mut a, mut g) = (1.0f64, (1.0 - m).sqrt());
-    for _ in 0..60 {
-        let (an, gn) = (0.5 * (a + g), (a * g).sqrt());
-        a = an;
-        g = gn;
-    }
-    PI / (2.0 * a)
 }
 
 /// `e_i × v` for the state layout below.
@@ -296,16 +284,7 @@ fn a_branch_point_off_the_planes_is_the_same_at_every_step() {
         assert!((e.orbit.stability_index - 1.0).abs() <= 1e-9);
         assert!((e.energy - 0.46244683).abs() < 2e-8, "E = {}", e.energy);
         let o = &e.orbit;
-        let tr = simulate_full(
-            &m,
-            o.omega0,
-            o.gamma0,
-            o.period,
-            &SimOptions::with_tolerances(1e-12, 1e-13),
-        )
-        .unwrap();
-        let n = tr.t.len() - 1;
-        let gap = (tr.omega[n] - o.omega0).norm() + (tr.gamma[n] - o.gamma0).norm();
+        let gap = closure_gap(&m, o);
         assert!(gap < 1e-8, "the event orbit does not close: {gap:e}");
         energies.push(e.energy);
     }
@@ -351,16 +330,7 @@ fn switch_branch_follows_the_crossing_family() {
         .collect::<Vec<_>>();
     let mut off_plane = 0;
     for o in &sw.orbits {
-        let tr = simulate_full(
-            &m,
-            o.omega0,
-            o.gamma0,
-            o.period,
-            &SimOptions::with_tolerances(1e-12, 1e-13),
-        )
-        .unwrap();
-        let n = tr.t.len() - 1;
-        let gap = (tr.omega[n] - o.omega0).norm() + (tr.gamma[n] - o.gamma0).norm();
+        let gap = closure_gap(&m, o);
         assert!(
             gap < 1e-7,
             "orbit at E = {} does not close: {gap:e}",
