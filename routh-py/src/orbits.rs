@@ -332,6 +332,29 @@ fn orbit_options(
     o
 }
 
+impl Model {
+    /// A family started at an event of another (`period_doubled_family`, `switch_branch`), the
+    /// GIL released while it runs.
+    fn family_at_event(
+        &self,
+        py: Python<'_>,
+        event: &OrbitEvent,
+        max_orbits: Option<usize>,
+        max_step: Option<f64>,
+        start: fn(
+            &routh::Model,
+            &routh::OrbitEvent,
+            &routh::OrbitOptions,
+        ) -> Result<routh::OrbitFamily, routh::RouthError>,
+    ) -> PyResult<OrbitFamily> {
+        let opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
+        let m = self.get()?;
+        let e = event.inner.clone();
+        let f = detached(py, || start(&m, &e, &opts))?.map_err(|e| routh_err(py, &e))?;
+        OrbitFamily::new(py, &f)
+    }
+}
+
 #[pymethods]
 impl Model {
     /// Correct a guess (ω, γ, T) to a periodic orbit of the full equations at the guess's
@@ -430,12 +453,13 @@ impl Model {
         max_orbits: Option<usize>,
         max_step: Option<f64>,
     ) -> PyResult<OrbitFamily> {
-        let opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
-        let m = self.get()?;
-        let e = event.inner.clone();
-        let f = detached(py, || routh::period_doubled_family(&m, &e, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
-        OrbitFamily::new(py, &f)
+        self.family_at_event(
+            py,
+            event,
+            max_orbits,
+            max_step,
+            routh::period_doubled_family,
+        )
     }
 
     /// The family of orbits crossing this one's family at a "branch_point" event, followed both
@@ -456,12 +480,7 @@ impl Model {
         max_orbits: Option<usize>,
         max_step: Option<f64>,
     ) -> PyResult<OrbitFamily> {
-        let opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
-        let m = self.get()?;
-        let e = event.inner.clone();
-        let f =
-            detached(py, || routh::switch_branch(&m, &e, &opts))?.map_err(|e| routh_err(py, &e))?;
-        OrbitFamily::new(py, &f)
+        self.family_at_event(py, event, max_orbits, max_step, routh::switch_branch)
     }
 
     /// The Poincaré section at (p_psi, energy): `orbits` orbits started on the plane γ·n = 0,
