@@ -299,7 +299,14 @@ impl<M: Routhian> Tracer<'_, M> {
         let prob = self.problem_at(&a.solved.w)?;
         let row = self.scales.energy_row(bound);
         Ok(match correct(self.slot, &prob, &row, &guess, self.opts)? {
-            Ok(s) => Some(self.node(s, Some(&a.tangent))?),
+            Ok(mut s) => {
+                // A parameter is put on the bound exactly (the row holds it to round-off; its
+                // scale is a power of two, so `(bound/s_s)·s_s` is the bound).
+                if let Slot::Parameter { .. } = self.slot {
+                    s.w[7] = bound / self.scales.e;
+                }
+                Some(self.node(s, Some(&a.tangent))?)
+            }
             Err(_) => None,
         })
     }

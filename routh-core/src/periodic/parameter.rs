@@ -121,9 +121,11 @@ pub fn continue_orbit_in<M: Routhian, F: Fn(f64) -> (M, f64)>(
             ),
         });
     }
+    // The scale of s: max(1, |s0|) rounded up to a power of two, so that w₇ = s/s_s and back
+    // are exact (an end of the range is reached exactly).
     let scales = Scales {
         t: orbit.period,
-        e: 1f64.max(s0.abs()),
+        e: 2f64.powi(1f64.max(s0.abs()).log2().ceil().min(1023.0) as i32),
     };
     let slot = Slot::Parameter {
         family: fam,
