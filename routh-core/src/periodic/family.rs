@@ -2,6 +2,10 @@
 //! elliptic steady motion, [`continue_orbit`] from any orbit (and, in `doubling.rs`,
 //! [`period_doubled_family`](super::period_doubled_family) from a period doubling; docs/method.md §11).
 //!
+//! The same [`Tracer`] follows the families at a fixed energy through a parameter of the model
+//! (`parameter.rs`, [`continue_orbit_in`](super::continue_orbit_in)): the eighth unknown is
+//! then the parameter ([`Slot`]), and a fold is where the family turns back in it.
+//!
 //! Pseudo-arclength in `w = (x₀, T/t_s, E/e_s)` on the crate's one predictor–corrector
 //! (`path.rs`, [`PathOptions::orbit_family`]); the tangent is the null vector of the ten rows of
 //! the shooting system without the linear row. Between two accepted orbits `a` and `b`:

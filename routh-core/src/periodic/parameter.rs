@@ -47,8 +47,9 @@ pub struct OrbitParameterFamily {
 /// lower end of the part traced to the upper end, in the order of continuation; a family ends at
 /// an end of `range` (its last orbit corrected onto it, [`OrbitStop::ParameterBound`]), its
 /// budget of orbits, a period bound, a return onto a steady motion, a closed loop or a stall, as
-/// [`continue_orbit`](super::continue_orbit) does. [`OrbitOptions::energy_bounds`] is not used
-/// (the energy is fixed).
+/// [`continue_orbit`](super::continue_orbit) does (a stall reports the fixed energy; the
+/// last entry of [`OrbitParameterFamily::parameter`] on that side says where).
+/// [`OrbitOptions::energy_bounds`] is not used (the energy is fixed).
 ///
 /// Errors ([`RouthError`], never a panic): an empty or non-finite `range`, `s0` outside it,
 /// invalid options, an `orbit` that is not one of `family(s0)` at `p_ψ = family(s0).1` (its
