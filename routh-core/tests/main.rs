@@ -18,6 +18,7 @@ mod nonlinear;
 mod periodic;
 mod periodic_bodies;
 mod periodic_events;
+mod periodic_param;
 mod runtime_properties;
 mod simulation;
 mod stability;

@@ -5,7 +5,7 @@
 use nalgebra::SMatrix;
 
 use super::family::{merge_halves, restart, smallest, Tracer};
-use super::shoot::{correct, Problem, TOP, UNKNOWNS, W};
+use super::shoot::{correct, Problem, Slot, TOP, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions};
 use crate::path::row::LinearRow;
 use crate::{RouthError, Routhian};
@@ -78,7 +78,7 @@ pub fn switch_branch<M: Routhian>(
     }
     let x: nalgebra::Vector6<f64> = s.w.fixed_rows::<6>(0).into();
     let tracer = Tracer {
-        model,
+        slot: Slot::Energy(model),
         opts,
         p_psi: event.orbit.p_psi,
         scales,
@@ -91,7 +91,7 @@ pub fn switch_branch<M: Routhian>(
         while h >= opts.min_step {
             let pred = s.w + dir * h;
             let row = LinearRow::through(dir, &pred);
-            if let Ok(sol) = correct(model, &prob, &row, &pred, opts)? {
+            if let Ok(sol) = correct(Slot::Energy(model), &prob, &row, &pred, opts)? {
                 // Kept only if it left along the crossing family: the corrector moved it by
                 // little against the step.
                 if (sol.w - pred).norm() <= 0.25 * h {
@@ -102,7 +102,7 @@ pub fn switch_branch<M: Routhian>(
         }
         Ok(None)
     };
-    let centre = tracer.node(s.clone(), Some(&n));
+    let centre = tracer.node(s.clone(), Some(&n))?;
     let budget = opts.max_orbits.saturating_sub(1);
     let mut halves = Vec::new();
     for (dir, share) in [(n, budget.div_ceil(2)), (-n, budget / 2)] {
@@ -113,7 +113,7 @@ pub fn switch_branch<M: Routhian>(
                 residual: f64::NAN,
             });
         };
-        let start = tracer.node(sol, Some(&dir));
+        let start = tracer.node(sol, Some(&dir))?;
         let (mut nodes, events, stop) =
             tracer.trace(start.clone(), share.saturating_sub(1), None)?;
         nodes.insert(0, start);

@@ -5,7 +5,7 @@
 use nalgebra::{SMatrix, Vector6};
 
 use super::family::{restart, smallest, Tracer};
-use super::shoot::{correct, Problem, Scales, W};
+use super::shoot::{correct, Problem, Scales, Slot, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions};
 use crate::path::row::LinearRow;
 use crate::{RouthError, Routhian};
@@ -57,7 +57,7 @@ pub fn period_doubled_family<M: Routhian>(
     let mut n = W::zeros();
     n.fixed_rows_mut::<6>(0).copy_from(&(v / v.norm()));
     let tracer = Tracer {
-        model,
+        slot: Slot::Energy(model),
         opts,
         p_psi: event.orbit.p_psi,
         scales: doubled,
@@ -70,7 +70,7 @@ pub fn period_doubled_family<M: Routhian>(
     while h >= opts.min_step {
         let pred = w_pd + n * h;
         let row = LinearRow::through(n, &pred);
-        if let Ok(sol) = correct(model, &prob, &row, &pred, opts)? {
+        if let Ok(sol) = correct(Slot::Energy(model), &prob, &row, &pred, opts)? {
             first = Some(sol);
             break;
         }
@@ -83,7 +83,7 @@ pub fn period_doubled_family<M: Routhian>(
             residual: f64::NAN,
         });
     };
-    let mut start = tracer.node(first, None);
+    let mut start = tracer.node(first, None)?;
     let away: Vector6<f64> = start.solved.w.fixed_rows::<6>(0) - x;
     let tx: Vector6<f64> = start.tangent.fixed_rows::<6>(0).into();
     if tx.dot(&away) < 0.0 {
@@ -94,7 +94,7 @@ pub fn period_doubled_family<M: Routhian>(
     orbits.extend(nodes.into_iter().map(|n| n.orbit));
     Ok(OrbitFamily {
         orbits,
-        events,
+        events: events.into_iter().map(|(e, _)| e).collect(),
         stop: Some(stop),
     })
 }

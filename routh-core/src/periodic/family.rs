@@ -2,6 +2,10 @@
 //! elliptic steady motion, [`continue_orbit`] from any orbit (and, in `doubling.rs`,
 //! [`period_doubled_family`](super::period_doubled_family) from a period doubling; docs/method.md §11).
 //!
+//! The same [`Tracer`] follows the families at a fixed energy through a parameter of the model
+//! (`parameter.rs`, [`continue_orbit_in`](super::continue_orbit_in)): the eighth unknown is
+//! then the parameter ([`Slot`]), and a fold is where the family turns back in it.
+//!
 //! Pseudo-arclength in `w = (x₀, T/t_s, E/e_s)` on the crate's one predictor–corrector
 //! (`path.rs`, [`PathOptions::orbit_family`]); the tangent is the null vector of the ten rows of
 //! the shooting system without the linear row. Between two accepted orbits `a` and `b`:
@@ -12,7 +16,7 @@
 use nalgebra::{Complex, Matrix6, Vector6};
 
 use super::flow::{field_and_jacobian, join, onto_level, split};
-use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Solved, UNKNOWNS, W};
+use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Slot, Solved, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
 use crate::locate::{estimated_distance, locate, End};
 use crate::path::row::LinearRow;
@@ -67,12 +71,15 @@ pub(super) fn same_family(a: &Node, b: &Node) -> bool {
     tb <= 2.0 * ta + 0.02 && ta <= 2.0 * tb + 0.02
 }
 
-/// The family's state: the model, the options, the scales, the orbits so far.
+/// The family's state: what the eighth unknown is (the energy of one model, or the parameter
+/// of a family of models at a fixed energy), the options, the scales, the orbits so far.
 pub(super) struct Tracer<'a, M: Routhian> {
-    pub model: &'a M,
+    pub slot: Slot<'a, M>,
     pub opts: &'a OrbitOptions,
+    /// `p_ψ` of a family through the energy (a family in a parameter has the family's).
     pub p_psi: f64,
     pub scales: Scales,
+    /// The bounds of the eighth unknown (energies, or parameter values).
     pub bounds: Option<(f64, f64)>,
     pub first_period: f64,
 }
@@ -80,16 +87,38 @@ pub(super) struct Tracer<'a, M: Routhian> {
 impl<M: Routhian> Tracer<'_, M> {
     fn problem_at(&self, w: &W) -> Result<Problem, RouthError> {
         let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
-        Problem::at(self.model, &x, self.p_psi, self.scales)
+        let (model, p) = self.slot.member(w, &self.scales, self.p_psi)?;
+        Problem::at(&*model, &x, p, self.scales)
     }
 
-    pub(super) fn node(&self, s: Solved, along: Option<&W>) -> Node {
+    /// The accepted orbit of `s` with its tangent (oriented along `along`). Errors: a family
+    /// whose member at the orbit's parameter is invalid (there was none at the same parameter
+    /// in the corrector).
+    pub(super) fn node(&self, s: Solved, along: Option<&W>) -> Result<Node, RouthError> {
         let tangent = tangent_of(&s, along);
-        let orbit = orbit_of(self.model, &s, &self.scales, self.opts);
-        Node {
+        let (model, _) = self.slot.member(&s.w, &self.scales, self.p_psi)?;
+        let orbit = orbit_of(&*model, &s, &self.scales, self.opts);
+        Ok(Node {
             solved: s,
             tangent,
             orbit,
+        })
+    }
+
+    /// Where a node is along the family: its energy (the orbit's, for a family through the
+    /// energy) or its parameter.
+    pub(super) fn value(&self, n: &Node) -> f64 {
+        match self.slot {
+            Slot::Energy(_) => n.orbit.energy,
+            Slot::Parameter { .. } => self.scales.parameter(&n.solved.w),
+        }
+    }
+
+    /// The stop at the bound `b` of the eighth unknown.
+    fn bound_stop(&self, b: f64) -> OrbitStop {
+        match self.slot {
+            Slot::Energy(_) => OrbitStop::EnergyBound { energy: b },
+            Slot::Parameter { .. } => OrbitStop::ParameterBound { s: b },
         }
     }
 
@@ -125,11 +154,11 @@ impl<M: Routhian> Tracer<'_, M> {
         let mut prob = self.problem_at(&a.solved.w)?;
         prob.cut = cut;
         let row = LinearRow::through(slope, &pred);
-        let Ok(s) = correct(self.model, &prob, &row, &pred, self.opts)? else {
+        let Ok(s) = correct(self.slot, &prob, &row, &pred, self.opts)? else {
             return Ok(None);
         };
         let near = (s.w - pred).norm() <= 1e-2 * chord;
-        let n = self.node(s, Some(&slope));
+        let n = self.node(s, Some(&slope))?;
         Ok((near || (same_family(a, &n) && same_family(&n, b))).then_some(n))
     }
 
@@ -145,7 +174,8 @@ impl<M: Routhian> Tracer<'_, M> {
     /// order of that distance squared (1e−13 at the default steps). The event's orbit is then
     /// corrected at that arclength with the crossing direction dropped from the Gauss–Newton
     /// steps (singular values below `1e−8` of the largest; docs/method.md §11).
-    fn events(&self, a: &Node, b: &Node, h: f64) -> Result<Vec<OrbitEvent>, RouthError> {
+    /// Each event comes with its place along the family ([`Tracer::value`]).
+    fn events(&self, a: &Node, b: &Node, h: f64) -> Result<Vec<(OrbitEvent, f64)>, RouthError> {
         let mut out = Vec::new();
         let (ka, kb) = (a.orbit.stability_index, b.orbit.stability_index);
         let fold = a.tangent[7] * b.tangent[7] < 0.0;
@@ -186,18 +216,23 @@ impl<M: Routhian> Tracer<'_, M> {
                     estimated_distance(lo, hi) <= near
                 },
             )?;
-            let orbit = if kind == OrbitEventKind::Fold {
-                found.best.point.orbit.clone()
+            let node = if kind == OrbitEventKind::Fold {
+                found.best.point.clone()
             } else {
                 self.polish(&found, test, kind, h, &solve)?
             };
-            out.push(OrbitEvent {
-                kind,
-                energy: orbit.energy,
-                orbit,
-                before: a.orbit.stability,
-                after: b.orbit.stability,
-            });
+            let at = self.value(&node);
+            let orbit = node.orbit;
+            out.push((
+                OrbitEvent {
+                    kind,
+                    energy: orbit.energy,
+                    orbit,
+                    before: a.orbit.stability,
+                    after: b.orbit.stability,
+                },
+                at,
+            ));
         }
         Ok(out)
     }
@@ -213,9 +248,9 @@ impl<M: Routhian> Tracer<'_, M> {
         kind: OrbitEventKind,
         h: f64,
         solve: &dyn Fn(f64, f64) -> Result<Option<Node>, RouthError>,
-    ) -> Result<PeriodicOrbit, RouthError> {
+    ) -> Result<Node, RouthError> {
         let (b, o) = (&found.best, &found.other);
-        let fallback = b.point.orbit.clone();
+        let fallback = b.point.clone();
         let estimate = if o.value != b.value && o.at != b.at {
             b.at - b.value * (o.at - b.at) / (o.value - b.value)
         } else {
@@ -254,20 +289,28 @@ impl<M: Routhian> Tracer<'_, M> {
             best = Some(n);
         }
         Ok(match best {
-            Some(n) if test(&n).abs() <= b.value.abs() => n.orbit,
+            Some(n) if test(&n).abs() <= b.value.abs() => n,
             _ => fallback,
         })
     }
 
-    /// The orbit at the energy bound `bound`, corrected from the step between `a` and `b`.
+    /// The orbit at the bound `bound` (of the energy, or of the parameter), corrected from the
+    /// step between `a` and `b` with the eighth unknown fixed there.
     fn at_bound(&self, a: &Node, b: &Node, bound: f64) -> Result<Option<Node>, RouthError> {
-        let (ea, eb) = (a.orbit.energy, b.orbit.energy);
+        let (ea, eb) = (self.value(a), self.value(b));
         let f = ((bound - ea) / (eb - ea)).clamp(0.0, 1.0);
         let guess = a.solved.w + (b.solved.w - a.solved.w) * f;
         let prob = self.problem_at(&a.solved.w)?;
         let row = self.scales.energy_row(bound);
-        Ok(match correct(self.model, &prob, &row, &guess, self.opts)? {
-            Ok(s) => Some(self.node(s, Some(&a.tangent))),
+        Ok(match correct(self.slot, &prob, &row, &guess, self.opts)? {
+            Ok(mut s) => {
+                // A parameter is put on the bound exactly (the row holds it to round-off; its
+                // scale is a power of two, so `(bound/s_s)·s_s` is the bound).
+                if let Slot::Parameter { .. } = self.slot {
+                    s.w[7] = bound / self.scales.e;
+                }
+                Some(self.node(s, Some(&a.tangent))?)
+            }
             Err(_) => None,
         })
     }
@@ -279,7 +322,7 @@ impl<M: Routhian> Tracer<'_, M> {
         start: Node,
         budget: usize,
         origin: Option<&Vector6<f64>>,
-    ) -> Result<(Vec<Node>, Vec<OrbitEvent>, OrbitStop), RouthError> {
+    ) -> Result<Half, RouthError> {
         let o = self.opts;
         let mut path: Path<UNKNOWNS> = Path::new(
             PathOptions::orbit_family(o.min_step, o.max_step),
@@ -305,7 +348,7 @@ impl<M: Routhian> Tracer<'_, M> {
                     let row = pred
                         .row
                         .unwrap_or_else(|| LinearRow::through(t, &pred.point));
-                    Ok::<_, RouthError>(match correct(self.model, &prob, &row, &pred.point, o)? {
+                    Ok::<_, RouthError>(match correct(self.slot, &prob, &row, &pred.point, o)? {
                         Ok(s) => Some(Corrected {
                             point: s.w,
                             iterations: s.iterations,
@@ -315,7 +358,7 @@ impl<M: Routhian> Tracer<'_, M> {
                     })
                 },
                 |c| {
-                    let n = self.node(c.value, Some(&t));
+                    let n = self.node(c.value, Some(&t))?;
                     Ok(Some(Point {
                         point: n.solved.w,
                         tangent: Some(n.tangent),
@@ -347,9 +390,9 @@ impl<M: Routhian> Tracer<'_, M> {
                 }
                 Outcome::Exhausted => return Ok((nodes, events, OrbitStop::MaxOrbits)),
             };
-            // An energy bound crossed: end exactly on it.
+            // A bound crossed (of the energy, or of the parameter): end exactly on it.
             if let Some((lo, hi)) = self.bounds {
-                let e = next.orbit.energy;
+                let e = self.value(&next);
                 if e < lo || e > hi {
                     let bound = if e < lo { lo } else { hi };
                     if let Some(end) = self.at_bound(&cur, &next, bound)? {
@@ -357,7 +400,7 @@ impl<M: Routhian> Tracer<'_, M> {
                         events.extend(self.events(&cur, &end, sigma)?);
                         nodes.push(end);
                     }
-                    return Ok((nodes, events, OrbitStop::EnergyBound { energy: bound }));
+                    return Ok((nodes, events, self.bound_stop(bound)));
                 }
             }
             events.extend(self.events(&cur, &next, h)?);
@@ -506,7 +549,7 @@ pub fn lyapunov_family<M: Routhian>(
         e: 1f64.max(steady.energy.abs()),
     };
     let tracer = Tracer {
-        model,
+        slot: Slot::Energy(model),
         opts,
         p_psi: steady.p_psi,
         scales,
@@ -518,7 +561,13 @@ pub fn lyapunov_family<M: Routhian>(
         prob.turn = None;
     }
     let row = scales.energy_row(e0);
-    let first = match correct(model, &prob, &row, &scales.pack(&x0, period, e0), opts)? {
+    let first = match correct(
+        Slot::Energy(model),
+        &prob,
+        &row,
+        &scales.pack(&x0, period, e0),
+        opts,
+    )? {
         Ok(s) => s,
         Err(best) => {
             return Err(RouthError::NoConvergence {
@@ -528,7 +577,7 @@ pub fn lyapunov_family<M: Routhian>(
             })
         }
     };
-    let mut start = tracer.node(first, None);
+    let mut start = tracer.node(first, None)?;
     // Oriented towards larger amplitudes.
     let dx: Vector6<f64> = start.solved.w.fixed_rows::<6>(0) - xs;
     let tx: Vector6<f64> = start.tangent.fixed_rows::<6>(0).into();
@@ -541,7 +590,7 @@ pub fn lyapunov_family<M: Routhian>(
     orbits.extend(nodes.into_iter().map(|n| n.orbit));
     Ok(OrbitFamily {
         orbits,
-        events,
+        events: events.into_iter().map(|(e, _)| e).collect(),
         stop: Some(stop),
     })
 }
@@ -562,7 +611,7 @@ pub(super) fn restart<M: Routhian>(
     let prob = Problem::at(model, &x, p, scales)?;
     let row = scales.energy_row(e);
     let w = scales.pack_turned(&x, orbit.period, e, orbit.body_turn);
-    match correct(model, &prob, &row, &w, opts)? {
+    match correct(Slot::Energy(model), &prob, &row, &w, opts)? {
         Ok(s) => Ok((s, scales)),
         Err(best) => Err(RouthError::NoConvergence {
             what: "the starting orbit (not a periodic orbit)",
@@ -603,14 +652,14 @@ pub fn continue_orbit<M: Routhian>(
     }
     let (s, scales) = restart(model, orbit, opts)?;
     let tracer = Tracer {
-        model,
+        slot: Slot::Energy(model),
         opts,
         p_psi: orbit.p_psi,
         scales,
         bounds: Some((lo, hi)),
         first_period: orbit.period,
     };
-    let mut up = tracer.node(s, None);
+    let mut up = tracer.node(s, None)?;
     if up.tangent[7] < 0.0 {
         up.tangent = -up.tangent;
     }
@@ -622,30 +671,54 @@ pub fn continue_orbit<M: Routhian>(
     Ok(merge_halves(up.orbit, traced_up, traced_down))
 }
 
-/// One direction of a family traced from a centre: its orbits, events and stop.
-pub(super) type Half = (Vec<Node>, Vec<OrbitEvent>, OrbitStop);
+/// One direction of a family traced from a centre: its orbits, events (each with its place along
+/// the family, [`Tracer::value`]) and stop.
+pub(super) type Half = (Vec<Node>, Vec<(OrbitEvent, f64)>, OrbitStop);
 
 /// The family through `centre` from the halves traced both ways (`up`, `down`): the orbits from
 /// the far end of `down` through `centre` to the far end of `up`, the events in that order (those
 /// of `down` with `before` and `after` exchanged), and the stop: `None` when both halves reached
-/// an energy bound, else the first other reason.
+/// a bound (of the energy, or of the parameter), else the first other reason.
 pub(super) fn merge_halves(centre: PeriodicOrbit, up: Half, down: Half) -> OrbitFamily {
+    merge_along((centre, 0.0), up, down, &|_| 0.0).0
+}
+
+/// As [`merge_halves`], with the places along the family of the orbits (`centre.1` the centre's,
+/// `value` the others') and of the events, in the same order.
+pub(super) fn merge_along(
+    centre: (PeriodicOrbit, f64),
+    up: Half,
+    down: Half,
+    value: &dyn Fn(&Node) -> f64,
+) -> (OrbitFamily, Vec<f64>, Vec<f64>) {
     let (n_up, ev_up, stop_up) = up;
     let (n_dn, ev_dn, stop_dn) = down;
-    let mut orbits: Vec<PeriodicOrbit> = n_dn.iter().rev().map(|n| n.orbit.clone()).collect();
-    orbits.push(centre);
+    let mut places: Vec<f64> = n_dn.iter().rev().map(value).collect();
+    places.push(centre.1);
+    places.extend(n_up.iter().map(value));
+    let mut orbits: Vec<PeriodicOrbit> = n_dn.into_iter().rev().map(|n| n.orbit).collect();
+    orbits.push(centre.0);
     orbits.extend(n_up.into_iter().map(|n| n.orbit));
-    let mut events: Vec<OrbitEvent> = ev_dn
-        .into_iter()
-        .rev()
-        .map(|e| OrbitEvent {
+    let mut event_places = Vec::new();
+    let mut events: Vec<OrbitEvent> = Vec::new();
+    for (e, at) in ev_dn.into_iter().rev() {
+        events.push(OrbitEvent {
             before: e.after,
             after: e.before,
             ..e
-        })
-        .collect();
-    events.extend(ev_up);
-    let bound = |s: &OrbitStop| matches!(s, OrbitStop::EnergyBound { .. });
+        });
+        event_places.push(at);
+    }
+    for (e, at) in ev_up {
+        events.push(e);
+        event_places.push(at);
+    }
+    let bound = |s: &OrbitStop| {
+        matches!(
+            s,
+            OrbitStop::EnergyBound { .. } | OrbitStop::ParameterBound { .. }
+        )
+    };
     let stop = if bound(&stop_up) && bound(&stop_dn) {
         None
     } else if !bound(&stop_up) {
@@ -653,9 +726,13 @@ pub(super) fn merge_halves(centre: PeriodicOrbit, up: Half, down: Half) -> Orbit
     } else {
         Some(stop_dn)
     };
-    OrbitFamily {
-        orbits,
-        events,
-        stop,
-    }
+    (
+        OrbitFamily {
+            orbits,
+            events,
+            stop,
+        },
+        places,
+        event_places,
+    )
 }

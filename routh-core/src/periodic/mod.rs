@@ -19,7 +19,9 @@
 //!   linear row (the energy, or the pseudo-arclength row of the continuation), an overdetermined
 //!   but consistent system solved by minimum-norm Gauss–Newton steps (SVD).
 //! - **Families** ([`lyapunov_family`], [`continue_orbit`]): pseudo-arclength in `(x₀, T, E)` on
-//!   the crate's one predictor–corrector, events located on the crate's one event locator.
+//!   the crate's one predictor–corrector, events located on the crate's one event locator; and
+//!   at a fixed energy through a parameter of the model ([`continue_orbit_in`]), on the same
+//!   corrector, predictor–corrector and locator with the parameter in place of the energy.
 //! - **Sections** ([`poincare_section`]): many orbits at one `(p_ψ, E)` crossing a plane through
 //!   the vertical's body coordinates, in parallel (rayon).
 
@@ -27,6 +29,7 @@ mod branch;
 mod doubling;
 mod family;
 mod flow;
+mod parameter;
 mod section;
 mod shoot;
 mod symmetry;
@@ -39,6 +42,7 @@ pub use branch::switch_branch;
 pub use doubling::period_doubled_family;
 pub use family::{continue_orbit, lyapunov_family};
 pub use flow::orbit_path;
+pub use parameter::{continue_orbit_in, OrbitParameterFamily};
 pub use section::{
     orbit_crossings, poincare_section, PoincareSection, SectionOptions, SectionOrbit,
 };
@@ -393,6 +397,12 @@ pub enum OrbitStop {
         /// The energy of the last orbit.
         energy: f64,
     },
+    /// A family in a parameter ([`continue_orbit_in`]) reached an end of its parameter range
+    /// (its last orbit corrected onto it).
+    ParameterBound {
+        /// The end reached.
+        s: f64,
+    },
 }
 
 impl fmt::Display for OrbitStop {
@@ -412,6 +422,7 @@ impl fmt::Display for OrbitStop {
             OrbitStop::Stalled { energy } => {
                 write!(f, "the continuation stalled at E = {energy}")
             }
+            OrbitStop::ParameterBound { s } => write!(f, "reached the parameter bound s = {s}"),
         }
     }
 }

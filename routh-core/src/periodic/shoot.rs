@@ -2,7 +2,10 @@
 //!
 //! Unknowns `w = (x₀, T/t_s, E/e_s, Δφ) ∈ ℝ⁹` (`t_s`, `e_s` scales of the family, so that a
 //! pseudo-arclength in `w` weighs the period and the energy like the state; `Δφ` the body turn
-//! of an axially symmetric body, docs/method.md §11a). Rows: `S_Δφ φ_T(x₀) − x₀` (6), the phase
+//! of an axially symmetric body, docs/method.md §11a). Along a family in a parameter
+//! ([`Slot::Parameter`]) the eighth unknown is the parameter `s/s_s` instead, the energy row holds
+//! the family's fixed energy and the momentum row its `p_ψ(s)` (docs/method.md §11, "Families in
+//! a parameter"). Rows: `S_Δφ φ_T(x₀) − x₀` (6), the phase
 //! `F̂_ref·(x₀ − x_ref)`, `E(x₀) − E`, `p_ψ(x₀) − p_ψ`, `(|γ₀|² − 1)/2` (the gradient rows scaled
 //! to unit length), the gauge `ξ̂_ref·(x₀ − x_ref)` and `p_φ(x₀) − p_φ` on an axially symmetric
 //! body (else `Δφ = 0` and an empty row), and one linear row (the energy fixed, or the
@@ -13,6 +16,8 @@
 //! This is a second Newton next to the sphere's fixed-size 4 × 4 one (`sphere::newton`), kept
 //! apart deliberately: its unknowns are eight, its residual is a flow, and its stop rule is on
 //! the flow's integration tolerance (docs/architecture.md).
+
+use std::ops::Deref;
 
 use nalgebra::{SMatrix, SVector, Vector3, Vector6};
 
@@ -34,7 +39,8 @@ type Jac = SMatrix<f64, { TOP + 1 }, UNKNOWNS>;
 /// The index of the body turn `Δφ` in `w`.
 pub(crate) const TURN: usize = 8;
 
-/// The scales of the period and the energy in the unknowns.
+/// The scales of the period and of the eighth unknown (the energy, or the parameter of a
+/// [`Slot::Parameter`] family) in the unknowns.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Scales {
     pub t: f64,
@@ -61,10 +67,94 @@ impl Scales {
     pub fn energy(&self, w: &W) -> f64 {
         w[7] * self.e
     }
+    /// The parameter `s = w₇·s_s` of a [`Slot::Parameter`] family (the same unknown as the
+    /// energy of [`Scales::energy`]).
+    pub fn parameter(&self, w: &W) -> f64 {
+        w[7] * self.e
+    }
     /// The linear row closing the system with the energy fixed at `e`: `w₇ = e/e_s` (or the
     /// continuation's pseudo-arclength row, [`LinearRow::through`]).
     pub fn energy_row(&self, e: f64) -> LinearRow<UNKNOWNS> {
         LinearRow::fixed(7, e / self.e)
+    }
+}
+
+/// What the eighth unknown `w₇` is, and where the model of a point `w` comes from.
+pub(crate) enum Slot<'a, M> {
+    /// The energy `E = w₇·e_s` of one model (`p_ψ` the problem's): the families through the
+    /// energy and [`periodic_orbit`].
+    Energy(&'a M),
+    /// The parameter `s = w₇·s_s` of a family `s ↦ (model, p_ψ)` at the fixed energy `energy`
+    /// (docs/method.md §11, "Families in a parameter"): the energy row holds `E(x₀; model(s))`
+    /// at `energy`, the momentum row `p_ψ(x₀; model(s))` at `p_ψ(s)`, and the column of `s` is
+    /// a central difference of the residual in `s`.
+    Parameter {
+        family: &'a dyn Fn(f64) -> (M, f64),
+        energy: f64,
+    },
+}
+
+impl<M> Clone for Slot<'_, M> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<M> Copy for Slot<'_, M> {}
+
+/// A model: the slot's own, or a member of the family made at a parameter value.
+pub(crate) enum Member<'a, M> {
+    Borrowed(&'a M),
+    Owned(M),
+}
+
+impl<M> Deref for Member<'_, M> {
+    type Target = M;
+    fn deref(&self) -> &M {
+        match self {
+            Member::Borrowed(m) => m,
+            Member::Owned(m) => m,
+        }
+    }
+}
+
+/// Wraps an error with the parameter value where it happened (as the diagrams do).
+pub(crate) fn at_parameter(s: f64, e: RouthError) -> RouthError {
+    match e {
+        RouthError::AtParameter { .. } => e,
+        e => RouthError::AtParameter {
+            s,
+            source: Box::new(e),
+        },
+    }
+}
+
+/// The member of `family` at `s`: the model and a finite `p_ψ` (else an error at `s`).
+pub(crate) fn member_at<M>(
+    family: &dyn Fn(f64) -> (M, f64),
+    s: f64,
+) -> Result<(M, f64), RouthError> {
+    let (m, p) = family(s);
+    check_finite("p_psi returned by the family", &[p]).map_err(|e| at_parameter(s, e))?;
+    Ok((m, p))
+}
+
+impl<'a, M> Slot<'a, M> {
+    /// The model and `p_ψ` at `w`: the slot's model with `p_psi` (the problem's), or the
+    /// family's member at `s = w₇·s_s`.
+    pub fn member(
+        &self,
+        w: &W,
+        scales: &Scales,
+        p_psi: f64,
+    ) -> Result<(Member<'a, M>, f64), RouthError> {
+        match *self {
+            Slot::Energy(m) => Ok((Member::Borrowed(m), p_psi)),
+            Slot::Parameter { family, .. } => {
+                let (m, p) = member_at(family, scales.parameter(w))?;
+                Ok((Member::Owned(m), p))
+            }
+        }
     }
 }
 
@@ -129,17 +219,21 @@ pub(crate) struct ShotSummary {
     pub monodromy: nalgebra::Matrix6<f64>,
 }
 
-/// The residual and Jacobian of the system at `w`, with the flow. On an axially symmetric body
-/// (`prob.turn`) the shot's monodromy and turn are returned modulo the body turn `β = w₈`:
-/// `S_β Φ(T)` and `R(T)·Rot(e₃, −β)` (docs/method.md §11a).
-fn linearise<M: Lagrangian + ?Sized>(
-    model: &M,
+type Residual = SVector<f64, { TOP + 1 }>;
+
+/// The residual and Jacobian of the system at `w`, with the flow and the model there (see
+/// [`Slot`]). On an axially symmetric body (`prob.turn`) the shot's monodromy and turn are
+/// returned modulo the body turn `β = w₈`: `S_β Φ(T)` and `R(T)·Rot(e₃, −β)` (docs/method.md
+/// §11a). Along a family in a parameter the column of `s` is the central difference of the
+/// residual between `s ± δ`, `δ = 1e−6·max(1, |s|)`, the models from the family (the family is
+/// a closure, not a formula, as for the steady motions' families).
+fn linearise<'a, M: Lagrangian>(
+    slot: &Slot<'a, M>,
     prob: &Problem,
     row: &LinearRow<UNKNOWNS>,
     w: &W,
     opts: &OrbitOptions,
-) -> Result<(SVector<f64, { TOP + 1 }>, Jac, Shot), RouthError> {
-    let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
+) -> Result<(Residual, Jac, Shot, Member<'a, M>, f64), RouthError> {
     let t = prob.scales.period(w);
     if !(t.is_finite() && t > 0.0) {
         return Err(RouthError::NoConvergence {
@@ -148,6 +242,44 @@ fn linearise<M: Lagrangian + ?Sized>(
             residual: f64::NAN,
         });
     }
+    let (model, p) = slot.member(w, &prob.scales, prob.p_psi)?;
+    match *slot {
+        Slot::Energy(_) => {
+            let target = prob.scales.energy(w);
+            let (r, j, s) = system(&*model, p, (target, true), prob, row, w, opts)?;
+            Ok((r, j, s, model, p))
+        }
+        Slot::Parameter { family, energy } => {
+            let (r, mut j, s) = system(&*model, p, (energy, false), prob, row, w, opts)?;
+            let s0 = prob.scales.parameter(w);
+            let ds = 1e-6 * s0.abs().max(1.0);
+            let (sp, sm) = (s0 + ds, s0 - ds);
+            let side = |s: f64| -> Result<Residual, RouthError> {
+                let (m, p) = member_at(family, s)?;
+                Ok(system(&m, p, (energy, false), prob, row, w, opts)?.0)
+            };
+            let (rp, rm) = (side(sp)?, side(sm)?);
+            for i in 0..TOP {
+                j[(i, 7)] = (rp[i] - rm[i]) / (sp - sm) * prob.scales.e;
+            }
+            Ok((r, j, s, model, p))
+        }
+    }
+}
+
+/// The rows of [`linearise`] for one model at momentum `p_psi`, the energy row at
+/// `energy.0` (and its column that of an unknown energy `w₇·e_s` when `energy.1`; else empty).
+fn system<M: Lagrangian + ?Sized>(
+    model: &M,
+    p_psi: f64,
+    energy: (f64, bool),
+    prob: &Problem,
+    row: &LinearRow<UNKNOWNS>,
+    w: &W,
+    opts: &OrbitOptions,
+) -> Result<(Residual, Jac, Shot), RouthError> {
+    let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
+    let t = prob.scales.period(w);
     let mut s = shoot(model, &x, t, opts)?;
     let f_end = field(model, &s.end)?;
     let (e, de, p, dp) = integrals(model, &x);
@@ -156,7 +288,7 @@ fn linearise<M: Lagrangian + ?Sized>(
         de.norm().max(f64::MIN_POSITIVE),
         dp.norm().max(f64::MIN_POSITIVE),
     );
-    let mut r = SVector::<f64, { TOP + 1 }>::zeros();
+    let mut r = Residual::zeros();
     let mut j = Jac::zeros();
     // Periodicity modulo the body turn: S_β φ_T(x₀) − x₀, with ∂/∂x₀ = S_βΦ − I,
     // ∂/∂T = S_β F(φ_T(x₀)) and ∂/∂β = ξ(S_β φ_T(x₀)); β = 0 without the symmetry.
@@ -183,15 +315,17 @@ fn linearise<M: Lagrangian + ?Sized>(
         j[(i, 6)] = f_end[i] * prob.scales.t;
     }
     r[6] = prob.f_ref.dot(&(x - prob.x_ref));
-    r[7] = (e - prob.scales.energy(w)) / ne;
-    r[8] = (p - prob.p_psi) / np;
+    r[7] = (e - energy.0) / ne;
+    r[8] = (p - p_psi) / np;
     r[9] = 0.5 * (g.norm_squared() - 1.0);
     for k in 0..6 {
         j[(6, k)] = prob.f_ref[k];
         j[(7, k)] = de[k] / ne;
         j[(8, k)] = dp[k] / np;
     }
-    j[(7, 7)] = -prob.scales.e / ne;
+    if energy.1 {
+        j[(7, 7)] = -prob.scales.e / ne;
+    }
     for k in 0..3 {
         j[(9, 3 + k)] = g[k];
     }
@@ -222,8 +356,8 @@ fn linearise<M: Lagrangian + ?Sized>(
 
 /// Corrects `w` to an orbit (`Ok(None)`: no convergence within `max_iter` steps, or the period
 /// left `(0, ∞)`; integration failures are errors).
-pub(crate) fn correct<M: Lagrangian + ?Sized>(
-    model: &M,
+pub(crate) fn correct<M: Lagrangian>(
+    slot: Slot<'_, M>,
     prob: &Problem,
     row: &LinearRow<UNKNOWNS>,
     w0: &W,
@@ -236,12 +370,17 @@ pub(crate) fn correct<M: Lagrangian + ?Sized>(
         if !(t.is_finite() && t > 0.0) {
             return Ok(Err(best));
         }
-        let (r, j, s) = match linearise(model, prob, row, &w, opts) {
+        let (r, j, s, model, p) = match linearise(&slot, prob, row, &w, opts) {
             Ok(v) => v,
             Err(RouthError::TooManySteps { .. })
             | Err(RouthError::StepSizeUnderflow { .. })
             | Err(RouthError::NonFiniteState { .. }) => return Ok(Err(best)),
-            Err(e) => return Err(e),
+            Err(e) => {
+                return Err(match slot {
+                    Slot::Energy(_) => e,
+                    Slot::Parameter { .. } => at_parameter(prob.scales.parameter(&w), e),
+                })
+            }
         };
         let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
         let scale = 1f64.max(x.norm());
@@ -258,7 +397,7 @@ pub(crate) fn correct<M: Lagrangian + ?Sized>(
         if res <= opts.newton_tol && relative {
             // Onto the level of p_ψ and |γ| = 1 exactly (the rows hold them to newton_tol):
             // a move of the order of round-off, which the closure does not see.
-            let xl = onto_level(model, &x, prob.p_psi);
+            let xl = onto_level(&*model, &x, p);
             let (_, gn) = split(&xl);
             let mut w = w;
             w.fixed_rows_mut::<6>(0).copy_from(&xl);
@@ -507,7 +646,7 @@ pub fn periodic_orbit<M: crate::Routhian>(
     let row = scales.energy_row(e);
     let (t0, b0) = return_time(model, &prob, period_guess, opts).unwrap_or((period_guess, 0.0));
     let w0 = scales.pack_turned(&x, t0, e, b0);
-    let s = match correct(model, &prob, &row, &w0, opts)? {
+    let s = match correct(Slot::Energy(model), &prob, &row, &w0, opts)? {
         Ok(s) => s,
         Err(best) => {
             return Err(RouthError::NoConvergence {
@@ -531,7 +670,7 @@ pub fn periodic_orbit<M: crate::Routhian>(
     let at = Problem::at(model, &x1, p, scales)?;
     if let Some((t_min, b)) = shorter_period(model, &at, t, s.shot.reach, opts) {
         let w = scales.pack_turned(&x1, t_min, e, b);
-        if let Ok(m) = correct(model, &at, &row, &w, opts)? {
+        if let Ok(m) = correct(Slot::Energy(model), &at, &row, &w, opts)? {
             return Ok(orbit_of(model, &m, &scales, opts));
         }
     }
