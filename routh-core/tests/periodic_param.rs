@@ -6,31 +6,11 @@
 //! (not the crate's vector field, integrator or corrector) crosses 1; `periodic_orbit` on the
 //! member models; and the families through the energy at the other end of a family in `p_ψ`.
 
+use crate::common::{elliptic_k, heavy_body as body, HeavyTop};
 use routh_core::{
-    continue_orbit_in, lyapunov_family, periodic_orbit, steady_motions, Matrix3, OrbitEventKind,
+    continue_orbit_in, lyapunov_family, periodic_orbit, steady_motions, OrbitEventKind,
     OrbitOptions, OrbitStop, PeriodicOrbit, RouthError, SteadyMotion, Vector3,
 };
-use std::f64::consts::PI;
-use test_models::HeavyTop;
-
-/// A heavy body `J = diag(a, b, c)` with its centre of mass on the third axis (`U = mgl γ₃`).
-fn body(a: f64, b: f64, c: f64, mgl: f64) -> HeavyTop {
-    HeavyTop {
-        j: Matrix3::from_diagonal(&Vector3::new(a, b, c)),
-        mgr: Vector3::new(0.0, 0.0, mgl),
-    }
-}
-
-/// `K(m) = π / (2 AGM(1, √(1 − m)))`.
-fn elliptic_k(m: f64) -> f64 {
-    let (mut a, mut g) = (1.0f64, (1.0 - m).sqrt());
-    for _ in 0..60 {
-        let (an, gn) = (0.5 * (a + g), (a * g).sqrt());
-        a = an;
-        g = gn;
-    }
-    PI / (2.0 * a)
-}
 
 /// The turning point `γ = (0, sin θ₀, −cos θ₀)` of the planar swing about `e₁`.
 fn turning(theta0: f64) -> Vector3<f64> {

@@ -27,6 +27,7 @@
 
 mod branch;
 mod doubling;
+mod events;
 mod family;
 mod flow;
 mod parameter;
