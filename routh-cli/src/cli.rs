@@ -49,7 +49,7 @@ pub enum Command {
     Orbit(OrbitArgs),
     /// The Lyapunov families of periodic orbits born at the linearly stable steady motions at
     /// p_ψ = P (each mode, or `--mode`), or with `--continue` the family through one corrected
-    /// orbit: energy, period, precession Δψ and stability index k of the orbits, and the folds,
+    /// orbit (over the energy, or with `--parameter` at its energy over a parameter): energy, period, precession Δψ and stability index k of the orbits, and the folds,
     /// branch points and period doublings along each family; with `--doubling` also the
     /// period-doubled families born at the period doublings, with `--switch` the families
     /// crossing at the branch points.
@@ -267,17 +267,31 @@ pub struct Orbits {
     #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
     pub gamma: Option<[f64; 3]>,
     /// `LO..HI`: keep each family within these energies; with `--continue`, the range to
-    /// continue over (needed).
+    /// continue over (needed, unless `--parameter`).
     #[arg(long, value_parser = args::range, allow_hyphen_values = true)]
     pub energy: Option<(f64, f64)>,
     /// Continue the family through the orbit corrected from the guess `--omega`, `--gamma`,
-    /// `--period` (as `routh orbit`) over `--energy LO..HI`, instead of the Lyapunov families.
+    /// `--period` (as `routh orbit`) over `--energy LO..HI` (or, with `--parameter`, over a
+    /// parameter at the orbit's energy), instead of the Lyapunov families.
     #[arg(
         long = "continue",
         id = "continue",
-        requires_all = ["omega", "gamma", "period", "energy"]
+        requires_all = ["omega", "gamma", "period"]
     )]
     pub continue_orbit: bool,
+    /// `NAME=LO..HI`: with `--continue`, follow the family at the corrected orbit's fixed
+    /// energy through this scalar parameter of the model (or `momentum`, p_ψ) instead of the
+    /// energy. The guess is corrected at the model file's value of NAME (for `momentum`, at the
+    /// guess's p_ψ), which must lie in LO..HI.
+    #[arg(
+        long,
+        value_name = "NAME=LO..HI",
+        value_parser = args::named_range,
+        allow_hyphen_values = true,
+        requires = "continue",
+        conflicts_with_all = ["energy", "doubling", "switch", "svg", "periods_svg"]
+    )]
+    pub parameter: Option<NamedRange>,
     /// `X,Y,Z`: ω of the guess of `--continue`.
     #[arg(long, value_parser = args::vec3, allow_hyphen_values = true, requires = "continue")]
     pub omega: Option<[f64; 3]>,

@@ -10,7 +10,11 @@
 //! `"continued"`, `"period_doubled"`, `"switched"`), and `motion` (the steady motion, a
 //! `SteadyMotion` document) and `mode` of a Lyapunov family, `parent` (the index of the family in
 //! the same output) and `event` (the index of the period doubling or branch point among the
-//! parent's events) of a period-doubled or switched one; `null` where they do not apply.
+//! parent's events) of a period-doubled or switched one; `null` where they do not apply. A
+//! family of `--continue --parameter NAME=LO..HI` (at a fixed energy, through a parameter) has
+//! three keys more: `parameter_name` (NAME), `parameter` (NAME at each orbit, in the order of
+//! `orbits`) and `event_parameter` (NAME at each event, in the order of `events`); the other
+//! families do not have them.
 //!
 //! CSV. The columns of Python's `PeriodicOrbit.to_pandas()` (docs/python.md, "Export"):
 //! `period, energy, p_psi, precession, body_turn, degenerate, stability_index, stability,
@@ -18,8 +22,9 @@
 //! `multiplier1_re, multiplier1_im, multiplier2_re, multiplier2_im`. A family adds in front `family, origin, parent, mode,
 //! steady_gamma1..3, kind` and at the end `before, after`, as Python's `OrbitFamily.to_pandas()`
 //! (`kind` is `orbit` for an orbit, else the event's kind): every orbit of every family, then
-//! every event (their own section of rows, same columns). Numbers in Rust's shortest round-trip
-//! form; an empty field where a column does not apply.
+//! every event (their own section of rows, same columns). With `--parameter NAME=LO..HI`, two
+//! columns at the end: `parameter_name` (NAME) and `parameter` (NAME at the orbit or the event).
+//! Numbers in Rust's shortest round-trip form; an empty field where a column does not apply.
 
 use crate::table::{num, vec3, Table};
 use routh::{OrbitEvent, OrbitFamily, PeriodicOrbit, SteadyMotion};
@@ -84,6 +89,19 @@ impl Origin {
 pub struct Family {
     pub origin: Origin,
     pub family: OrbitFamily,
+    /// For a family through a parameter (`--continue --parameter`): the parameter's name and
+    /// values.
+    pub along: Option<Along>,
+}
+
+/// The parameter along a family at a fixed energy (`routh orbits --continue --parameter`).
+pub struct Along {
+    /// NAME of `--parameter NAME=LO..HI` (a parameter of the model, or `momentum`).
+    pub name: String,
+    /// NAME at each orbit of the family, in the same order.
+    pub parameter: Vec<f64>,
+    /// NAME at each event of the family, in the same order.
+    pub event_parameter: Vec<f64>,
 }
 
 /// The JSON document of a family of `routh orbits`.
@@ -98,6 +116,12 @@ struct FamilyDocument<'a> {
     mode: Option<usize>,
     parent: Option<usize>,
     event: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    parameter_name: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    parameter: Option<&'a [f64]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    event_parameter: Option<&'a [f64]>,
 }
 
 /// `routh orbit --json`.
@@ -126,6 +150,9 @@ pub fn families_json(families: &[Family]) -> Result<String, serde_json::Error> {
                 mode,
                 parent,
                 event,
+                parameter_name: f.along.as_ref().map(|a| a.name.as_str()),
+                parameter: f.along.as_ref().map(|a| a.parameter.as_slice()),
+                event_parameter: f.along.as_ref().map(|a| a.event_parameter.as_slice()),
             }
         })
         .collect();
@@ -170,11 +197,23 @@ pub fn orbit_csv(o: &PeriodicOrbit) -> String {
     format!("{ORBIT_COLUMNS}\n{}\n", orbit_fields(o))
 }
 
-/// `routh orbits --csv`: every orbit of every family, then every event.
+/// `routh orbits --csv`: every orbit of every family, then every event (with
+/// `parameter_name, parameter` at the end when a family is through a parameter).
 pub fn families_csv(families: &[Family]) -> String {
+    let swept = families.iter().any(|f| f.along.is_some());
     let mut s = format!(
-        "family,origin,parent,mode,steady_gamma1,steady_gamma2,steady_gamma3,kind,{ORBIT_COLUMNS},before,after\n"
+        "family,origin,parent,mode,steady_gamma1,steady_gamma2,steady_gamma3,kind,{ORBIT_COLUMNS},before,after{}\n",
+        if swept { ",parameter_name,parameter" } else { "" }
     );
+    // `,NAME,value` of the orbit or event `j` of family `f` (empty fields for a family not
+    // through a parameter), nothing when no family is.
+    let tail = |f: &Family, values: fn(&Along) -> &[f64], j: usize| -> String {
+        match &f.along {
+            Some(a) => format!(",{},{}", a.name, values(a)[j]),
+            None if swept => ",,".to_string(),
+            None => String::new(),
+        }
+    };
     let prefix = |i: usize, f: &Family| -> String {
         match &f.origin {
             Origin::Lyapunov { motion, mode } => {
@@ -189,19 +228,24 @@ pub fn families_csv(families: &[Family]) -> String {
     };
     for (i, f) in families.iter().enumerate() {
         let p = prefix(i, f);
-        for o in &f.family.orbits {
-            s.push_str(&format!("{p},orbit,{},,\n", orbit_fields(o)));
+        for (j, o) in f.family.orbits.iter().enumerate() {
+            s.push_str(&format!(
+                "{p},orbit,{},,{}\n",
+                orbit_fields(o),
+                tail(f, |a| &a.parameter, j)
+            ));
         }
     }
     for (i, f) in families.iter().enumerate() {
         let p = prefix(i, f);
-        for e in &f.family.events {
+        for (j, e) in f.family.events.iter().enumerate() {
             s.push_str(&format!(
-                "{p},{},{},{},{}\n",
+                "{p},{},{},{},{}{}\n",
                 e.kind,
                 orbit_fields(&e.orbit),
                 e.before,
-                e.after
+                e.after,
+                tail(f, |a| &a.event_parameter, j)
             ));
         }
     }
@@ -247,7 +291,14 @@ pub fn family_table(i: usize, f: &Family, rows: usize, followed: &[(usize, usize
             vec3(&motion.gamma),
             num(motion.energy)
         ),
-        Origin::Continued => "continued through the corrected orbit".to_string(),
+        Origin::Continued => match &f.along {
+            Some(a) => format!(
+                "continued through the corrected orbit over {} at E = {}",
+                a.name,
+                num(fam.orbits.first().map_or(f64::NAN, |o| o.energy))
+            ),
+            None => "continued through the corrected orbit".to_string(),
+        },
         Origin::PeriodDoubled { parent, event } => format!(
             "period-doubled, born at event {event} of family {parent} (E = {})",
             num(fam.orbits.first().map_or(f64::NAN, |o| o.energy))
@@ -270,7 +321,11 @@ pub fn family_table(i: usize, f: &Family, rows: usize, followed: &[(usize, usize
         .orbits
         .iter()
         .any(|o| o.body_turn != 0.0 || o.degenerate);
-    let mut header = vec!["#", "E", "T", "precession"];
+    let mut header = vec!["#"];
+    if let Some(a) = &f.along {
+        header.push(a.name.as_str());
+    }
+    header.extend(["E", "T", "precession"]);
     if turns {
         header.push("body_turn");
     }
@@ -278,12 +333,11 @@ pub fn family_table(i: usize, f: &Family, rows: usize, followed: &[(usize, usize
     let mut t = Table::new(&header);
     for (j, o) in fam.orbits.iter().enumerate() {
         if j % step == 0 || j + 1 == fam.orbits.len() {
-            let mut row = vec![
-                j.to_string(),
-                num(o.energy),
-                num(o.period),
-                num(o.precession),
-            ];
+            let mut row = vec![j.to_string()];
+            if let Some(a) = &f.along {
+                row.push(num(a.parameter[j]));
+            }
+            row.extend([num(o.energy), num(o.period), num(o.precession)]);
             if turns {
                 row.push(num(o.body_turn));
             }
@@ -295,7 +349,12 @@ pub fn family_table(i: usize, f: &Family, rows: usize, followed: &[(usize, usize
     for (j, e) in fam.events.iter().enumerate() {
         out.push_str(&format!(
             "  {}{}\n",
-            event_line(e),
+            event_line(
+                e,
+                f.along
+                    .as_ref()
+                    .map(|a| (a.name.as_str(), a.event_parameter[j]))
+            ),
             followed_note(j, followed)
         ));
     }
@@ -312,8 +371,16 @@ fn stability(o: &PeriodicOrbit) -> String {
     }
 }
 
-fn event_line(e: &OrbitEvent) -> String {
-    e.to_string()
+/// The event as `OrbitEvent`'s `Display` says it, or along a parameter `(NAME, s)` where it is:
+/// `fold at NAME = s (E = …, T = …): before -> after`.
+fn event_line(e: &OrbitEvent, at: Option<(&str, f64)>) -> String {
+    match at {
+        None => e.to_string(),
+        Some((name, s)) => format!(
+            "{} at {name} = {s:.12} (E = {:.12}, T = {:.10}): {} -> {}",
+            e.kind, e.energy, e.orbit.period, e.before, e.after
+        ),
+    }
 }
 
 fn followed_note(j: usize, followed: &[(usize, usize)]) -> String {

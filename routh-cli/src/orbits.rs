@@ -3,17 +3,19 @@
 //! and Poincaré sections at one (p_ψ, E) (docs/method.md §11).
 
 use crate::cli::{OrbitArgs, Orbits, Section};
-use crate::commands::load;
+use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::files::Outputs;
-use crate::orbit_out::{self, Family, Origin};
+use crate::orbit_out::{self, Along, Family, Origin};
 use crate::table::{num, vec3, Table};
 use routh::plot::{orbit_family_svg, orbit_periods_svg, poincare_section_svg, PlotOptions};
 use routh::{
-    classify, continue_orbit, lyapunov_family, period_doubled_family, periodic_orbit,
-    poincare_section, steady_motions, switch_branch, Model, OrbitEventKind, OrbitOptions,
-    PeriodicOrbit, RouthError, SectionOptions, Stability, Vector3,
+    classify, continue_orbit, continue_orbit_in, lyapunov_family, period_doubled_family,
+    periodic_orbit, poincare_section, steady_motions, switch_branch, Model, ModelError,
+    OrbitEventKind, OrbitOptions, Param, PeriodicOrbit, RouthError, SectionOptions, Stability,
+    Vector3,
 };
+use std::cell::RefCell;
 
 /// The orbit corrected from a guess; the library's refusals of the guess (not finite, γ not a
 /// unit vector, T ≤ 0, a steady motion) are bad input, a corrector that does not converge a
@@ -103,6 +105,7 @@ fn lyapunov_families(
                         mode,
                     },
                     family,
+                    along: None,
                 }),
                 Err(e) => skipped.push(format!("{} mode {mode}: {e}", vec3(&m.gamma))),
             }
@@ -157,7 +160,11 @@ fn follow_events(
             match started {
                 Ok((family, origin)) => {
                     followed[i].push((j, families.len()));
-                    families.push(Family { origin, family });
+                    families.push(Family {
+                        origin,
+                        family,
+                        along: None,
+                    });
                 }
                 Err(err) => {
                     skipped.push(format!("family {i}, {} at E = {}: {err}", e.kind, e.energy))
@@ -175,6 +182,101 @@ fn follow_events(
     followed
 }
 
+/// `--continue --parameter NAME=LO..HI`: the guess corrected at the model file's value of NAME
+/// (`momentum`: at the guess's p_ψ), then its family at its energy through NAME over LO..HI
+/// (`continue_orbit_in`), with the table's title. A NAME that is not a scalar parameter of the
+/// model, or a value of it outside LO..HI, is bad input; a family that fails is a failed
+/// computation.
+fn continued_in_parameter(
+    a: &Orbits,
+    model: &Model,
+    opts: &OrbitOptions,
+) -> Result<(Family, String), CliError> {
+    let (Some(par), Some(omega), Some(gamma), Some(period)) =
+        (&a.parameter, a.omega, a.gamma, a.period)
+    else {
+        return Err(CliError::Input(
+            "--continue --parameter needs --omega X,Y,Z --gamma X,Y,Z --period T".into(),
+        ));
+    };
+    let (name, (lo, hi)) = (par.name.as_str(), par.range);
+    let momentum = name == "momentum";
+    // The file's value of NAME (a scalar), checked before any work: bad input, exit code 2.
+    let file_value = if momentum {
+        None
+    } else {
+        model
+            .with(name, lo)
+            .map_err(|e| CliError::Input(format!("--parameter: {}", describe(&e, None))))?;
+        match model.get(name) {
+            Some(Param::Scalar(v)) => Some(v),
+            _ => {
+                return Err(CliError::Input(format!(
+                    "--parameter: `{name}` is not a scalar parameter of the model"
+                )))
+            }
+        }
+    };
+    let outside = |s0: f64, what: &str| {
+        CliError::Input(format!(
+            "--parameter {name}={lo}..{hi}: the orbit is corrected at {name} = {s0} ({what}), \
+             outside the range: the range must contain it"
+        ))
+    };
+    if let Some(v) = file_value {
+        if !(lo..=hi).contains(&v) {
+            return Err(outside(v, "the model file's value"));
+        }
+    }
+    let start = correct(model, omega, gamma, period, opts)?;
+    let s0 = file_value.unwrap_or(start.p_psi);
+    if !(lo..=hi).contains(&s0) {
+        return Err(outside(s0, "the guess's p_psi"));
+    }
+    let result = if momentum {
+        continue_orbit_in(|s| (model.clone(), s), &start, s0, (lo, hi), opts)
+    } else {
+        // `with` cannot fail on a finite value of a scalar checked above; should it, the first
+        // failure is reported (and a NaN p_ψ stops the family at once).
+        let failure: RefCell<Option<ModelError>> = RefCell::new(None);
+        let p = start.p_psi;
+        let family = |s: f64| match model.with(name, s) {
+            Ok(m) => (m, p),
+            Err(e) => {
+                failure.borrow_mut().get_or_insert(e);
+                (model.clone(), f64::NAN)
+            }
+        };
+        let r = continue_orbit_in(family, &start, s0, (lo, hi), opts);
+        if let Some(e) = failure.into_inner() {
+            return Err(CliError::Compute(format!("{name}: {}", describe(&e, None))));
+        }
+        r
+    };
+    let f = result.map_err(|e| {
+        CliError::Compute(format!(
+            "the family through {name} from {name} = {s0} failed: {e}"
+        ))
+    })?;
+    let title = format!(
+        "1 family through the orbit at p_psi = {}, E = {} (T = {}) at {name} = {s0} over {name} \
+         in [{lo}, {hi}] at fixed energy",
+        start.p_psi,
+        num(start.energy),
+        num(start.period)
+    );
+    let family = Family {
+        origin: Origin::Continued,
+        family: f.family,
+        along: Some(Along {
+            name: name.to_string(),
+            parameter: f.parameter,
+            event_parameter: f.event_parameter,
+        }),
+    };
+    Ok((family, title))
+}
+
 /// "1 `what` family", "`n` `what` families".
 fn count(n: usize, what: &str) -> String {
     format!("{n} {what} famil{}", if n == 1 { "y" } else { "ies" })
@@ -190,12 +292,17 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let mut skipped = Vec::new();
     // The families asked for, and the title of the table.
     let (mut families, mut title) = match (a.continue_orbit, a.momentum) {
+        (true, _) if a.parameter.is_some() => {
+            let (family, title) = continued_in_parameter(a, &model, &opts)?;
+            (vec![family], title)
+        }
         (true, _) => {
             let (Some(omega), Some(gamma), Some(period), Some((lo, hi))) =
                 (a.omega, a.gamma, a.period, a.energy)
             else {
                 return Err(CliError::Input(
-                    "--continue needs --omega X,Y,Z --gamma X,Y,Z --period T --energy LO..HI"
+                    "--continue needs --omega X,Y,Z --gamma X,Y,Z --period T and --energy \
+                     LO..HI (or --parameter NAME=LO..HI, at the orbit's energy)"
                         .into(),
                 ));
             };
@@ -218,6 +325,7 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
                 vec![Family {
                     origin: Origin::Continued,
                     family,
+                    along: None,
                 }],
                 title,
             )

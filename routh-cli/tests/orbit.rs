@@ -359,6 +359,179 @@ fn continue_refuses_what_it_cannot_do() {
     fails(&["orbits", BODY], 2, "--momentum");
 }
 
+const SWING_IN_A: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/models/swinging_in_a.toml"
+);
+
+/// The arguments of `routh orbits` continuing the swing of amplitude arccos(2/3) (E = −1) of
+/// tests/models/swinging_in_a.toml through `--parameter` `par`, and `extra`.
+fn through<'a>(par: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+    let mut a = vec![
+        "orbits",
+        SWING_IN_A,
+        "--continue",
+        "--omega",
+        "1,0,0",
+        "--gamma",
+        "0,0,-1",
+        "--period",
+        "5.4",
+        "--parameter",
+        par,
+    ];
+    a.extend(extra);
+    a
+}
+
+#[test]
+fn continue_through_a_parameter_follows_the_pendulum_at_fixed_energy() {
+    // J = diag(a, 2, 3), mgl = 1.5: at E = −1 each planar swing is a pendulum of amplitude
+    // θ₀ = arccos(2/3) whatever a, ω₀ = √(mgl/a): T(a) = 4K(sin²(θ₀/2))/√(mgl/a).
+    let out = ok(&through("a=0.8..1.5", &["--json"]));
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let fams = v.as_array().expect("an array of families");
+    assert_eq!(fams.len(), 1);
+    let fam = &fams[0];
+    assert_eq!(fam["routh"], "OrbitFamily");
+    assert_eq!(fam["origin"], "continued");
+    assert_eq!(fam["parameter_name"], "a");
+    assert!(fam["stop"].is_null(), "{}", fam["stop"]);
+    let orbits = fam["orbits"].as_array().unwrap();
+    let a: Vec<f64> = fam["parameter"].as_array().unwrap().iter().map(f).collect();
+    assert_eq!(a.len(), orbits.len());
+    assert_eq!(
+        fam["event_parameter"].as_array().unwrap().len(),
+        fam["events"].as_array().unwrap().len()
+    );
+    assert!(orbits.len() >= 5, "{} orbits", orbits.len());
+    // From one end of the range to the other, both reached (the family is monotone in a).
+    assert_eq!((a[0], a[a.len() - 1]), (0.8, 1.5), "{a:?}");
+    let theta0 = (2.0f64 / 3.0).acos();
+    let m = (theta0 / 2.0).sin().powi(2);
+    for (o, &a) in orbits.iter().zip(&a) {
+        assert!((0.8..=1.5).contains(&a), "a = {a}");
+        let e = f(&o["energy"]);
+        assert!((e + 1.0).abs() < 1e-9, "a = {a}: E = {e}");
+        assert!(f(&o["p_psi"]).abs() < 1e-9);
+        let t = f(&o["period"]);
+        let want = 4.0 * ellip_k(m) / (MGL / a).sqrt();
+        assert!(
+            (t - want).abs() < 1e-8,
+            "a = {a}: T = {t}, 4K(m)/√(mgl/a) = {want}, off by {:e}",
+            t - want
+        );
+    }
+    // Rust reads the array as its own families (the three keys more are ignored).
+    let back: Vec<routh::OrbitFamily> = serde_json::from_str(&out).expect("OrbitFamily values");
+    assert_eq!(back[0].orbits.len(), orbits.len());
+    // CSV: `parameter_name, parameter` at the end, a row per orbit, the JSON's numbers.
+    let csv = ok(&through("a=0.8..1.5", &["--csv"]));
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header[header.len() - 2..], ["parameter_name", "parameter"]);
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert!(rows.iter().all(|r| r.len() == header.len()));
+    assert_eq!(
+        rows.len(),
+        orbits.len() + fam["events"].as_array().unwrap().len()
+    );
+    let col = |r: &Vec<&str>, name: &str| -> String {
+        r[header.iter().position(|h| *h == name).unwrap()].to_string()
+    };
+    for ((r, o), &a) in rows.iter().zip(orbits).zip(&a) {
+        assert_eq!(col(r, "kind"), "orbit");
+        assert_eq!(col(r, "parameter_name"), "a");
+        assert_eq!(col(r, "parameter").parse::<f64>().unwrap(), a);
+        assert_eq!(col(r, "period").parse::<f64>().unwrap(), f(&o["period"]));
+    }
+    // The table: a column named after the parameter, the range in the title.
+    let table = ok(&through("a=0.8..1.5", &[]));
+    assert!(
+        table.contains("at a = 1 over a in [0.8, 1.5] at fixed energy"),
+        "{table}"
+    );
+    let head = table
+        .lines()
+        .find(|l| l.starts_with('#'))
+        .expect("a header");
+    assert_eq!(
+        head.split_whitespace().take(4).collect::<Vec<_>>(),
+        ["#", "a", "E", "T"]
+    );
+}
+
+#[test]
+fn continue_through_the_momentum_keeps_the_energy() {
+    // `momentum`: p_ψ itself; each orbit's p_ψ is the parameter printed, its energy the swing's.
+    let out = ok(&through(
+        "momentum=-0.2..0.2",
+        &["--json", "--max-orbits", "9"],
+    ));
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let fam = &v[0];
+    assert_eq!(fam["parameter_name"], "momentum");
+    let orbits = fam["orbits"].as_array().unwrap();
+    assert_eq!(orbits.len(), 9);
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (o, p) in orbits.iter().zip(fam["parameter"].as_array().unwrap()) {
+        let p = f(p);
+        lo = lo.min(p);
+        hi = hi.max(p);
+        assert!(
+            (f(&o["p_psi"]) - p).abs() < 1e-9,
+            "p_psi {} at {p}",
+            o["p_psi"]
+        );
+        assert!((f(&o["energy"]) + 1.0).abs() < 1e-9);
+    }
+    assert!(lo < 0.0 && hi > 0.0, "[{lo}, {hi}]");
+}
+
+#[test]
+fn continue_through_a_parameter_refuses_what_it_cannot_do() {
+    // The file's a = 1 outside the range, an unknown name, a vector parameter, the guess's
+    // p_ψ = 0 outside a momentum range: bad input, named.
+    fails(&through("a=1.1..1.5", &[]), 2, "outside the range");
+    fails(&through("b=0.8..1.5", &[]), 2, "unknown parameter `b`");
+    fails(&through("momentum=0.1..1", &[]), 2, "outside the range");
+    let mut a = through("inertia=0.8..1.5", &[]);
+    a[1] = BODY;
+    fails(&a, 2, "Vector3<f64>");
+    // Not with --energy, --doubling, --switch, --svg; not without --continue; a bad range.
+    fails(
+        &through("a=0.8..1.5", &["--energy=-1.2..-0.5"]),
+        2,
+        "cannot be used with",
+    );
+    fails(
+        &through("a=0.8..1.5", &["--switch"]),
+        2,
+        "cannot be used with",
+    );
+    fails(
+        &through("a=0.8..1.5", &["--doubling"]),
+        2,
+        "cannot be used with",
+    );
+    fails(
+        &through("a=0.8..1.5", &["--svg", "/nonexistent/f.svg"]),
+        2,
+        "cannot be used with",
+    );
+    fails(
+        &["orbits", SWING_IN_A, "-p", "0", "--parameter", "a=0.8..1.5"],
+        2,
+        "--continue",
+    );
+    fails(&through("a=1.5..0.8", &[]), 2, "inverted");
+    fails(&through("a", &[]), 2, "NAME=LO..HI");
+    // A guess that the corrector cannot close (a period far too short): a failed computation.
+    let mut a = through("a=0.8..1.5", &[]);
+    a[8] = "0.3";
+    fails(&a, 1, "no periodic orbit");
+}
+
 /// A heavy body for the Euler–Poisson equations: J = diag(`j`) about the fixed point, the
 /// centre of mass at m g c = `c`.
 struct Body {
@@ -773,7 +946,7 @@ fn switch_refuses_what_it_cannot_do() {
 
 /// The commands whose output routh-py/tests/test_cli_json.py reads from routh-py/tests/data/
 /// (the Python tests do not need a built CLI): the file and the arguments after `routh`.
-fn python_data() -> [(&'static str, Vec<&'static str>); 2] {
+fn python_data() -> [(&'static str, Vec<&'static str>); 3] {
     [
         (
             "cli_orbit.json",
@@ -797,6 +970,10 @@ fn python_data() -> [(&'static str, Vec<&'static str>); 2] {
                 "--doubling",
                 "--json",
             ],
+        ),
+        (
+            "cli_orbits_parameter.json",
+            through("a=0.8..1.5", &["--max-orbits", "8", "--json"]),
         ),
     ]
 }

@@ -106,6 +106,30 @@ def test_cli_orbits_json_reads_into_families():
         routh.PeriodicOrbit.from_json(text)
 
 
+def test_cli_orbits_through_a_parameter_read_into_a_family():
+    # `routh orbits --continue --parameter a=0.8..1.5`: an OrbitFamily document with the keys
+    # parameter_name, parameter and event_parameter besides (ignored by from_json).
+    text = load("cli_orbits_parameter.json")
+    docs = json.loads(text)
+    assert len(docs) == 1
+    d = docs[0]
+    assert d["origin"] == "continued" and d["parameter_name"] == "a"
+    assert len(d["parameter"]) == len(d["orbits"]) and len(d["event_parameter"]) == len(d["events"])
+    for fams in (routh.from_json(text), routh.OrbitFamily.from_json(text)):
+        assert len(fams) == 1
+        same_family(fams[0], d)
+    f = routh.OrbitFamily.from_json(json.dumps(d))
+    same_family(f, d)
+    # At the fixed energy E = −1 each orbit is the pendulum of amplitude arccos(2/3) at ω₀² = 1.5/a.
+    m = math.sin(math.acos(2 / 3) / 2) ** 2
+    a_, g = 1.0, math.sqrt(1.0 - m)
+    for _ in range(60):
+        a_, g = 0.5 * (a_ + g), math.sqrt(a_ * g)
+    for o, a in zip(f.orbits, d["parameter"]):
+        assert abs(o.energy + 1.0) < 1e-9
+        assert abs(o.period - 4 * (math.pi / (2 * a_)) / math.sqrt(1.5 / a)) < 1e-8
+
+
 def test_bare_rust_serde_json_reads_when_the_class_is_named():
     # The serde text of the Rust values, without the two keys of the Python document.
     doc = json.loads(load("cli_orbit.json"))
