@@ -63,6 +63,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<orbits::PeriodicOrbit>()?;
     m.add_class::<orbits::OrbitFamily>()?;
     m.add_class::<orbits::OrbitEvent>()?;
+    m.add_class::<orbits::OrbitParameterFamily>()?;
     m.add_class::<orbits::PoincareSection>()?;
     m.add_function(wrap_pyfunction!(family::bifurcation_diagram, m)?)?;
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;

@@ -1,17 +1,18 @@
 //! Periodic motions in Python: `Model.periodic_orbit`, `Model.lyapunov_family`,
-//! `Model.continue_orbit`, `Model.period_doubled_family`, `Model.switch_branch`,
-//! `Model.poincare_section`,
+//! `Model.continue_orbit`, `Model.continue_orbit_in`, `Model.period_doubled_family`,
+//! `Model.switch_branch`, `Model.poincare_section`,
 //! `Model.orbit_crossings`, `Model.orbit_path`, and their results `PeriodicOrbit`,
-//! `OrbitFamily`, `OrbitEvent`, `PoincareSection` (numpy arrays, lower-case strings).
+//! `OrbitFamily`, `OrbitEvent`, `OrbitParameterFamily`, `PoincareSection` (numpy arrays,
+//! lower-case strings).
 
-use crate::convert::{helper, routh_err, vec3, vector3};
+use crate::convert::{helper, model_err, model_err_unplaced, routh_err, vec3, vector3};
 use crate::guard::detached;
 use crate::model::Model;
 use crate::results::SteadyMotion;
 use crate::trajectory::Trajectory;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use routh::{Complex, OrbitOptions, SectionOptions};
+use routh::{Complex, OrbitOptions, Param, SectionOptions};
 
 /// A periodic orbit of the full equations (8), a relative periodic orbit of the body: a point
 /// `omega0`, `gamma0` ((3,) float64), `period`, `energy`, `p_psi`, the precession Δψ over one
@@ -237,6 +238,68 @@ impl OrbitFamily {
     }
 }
 
+/// A family of periodic orbits at one energy through a parameter of the model
+/// (`Model.continue_orbit_in`): `family` (an `OrbitFamily`: its orbits, events and `stop`),
+/// `name` (the parameter, or "p_psi"), `parameter` ((n,) float64, its value at each orbit of
+/// `family.orbits`) and `event_parameter` ((k,) float64, at each event of `family.events`).
+#[pyclass(module = "routh", frozen)]
+pub struct OrbitParameterFamily {
+    /// The parameter's name ("p_psi" for the cyclic momentum).
+    #[pyo3(get)]
+    pub name: String,
+    /// The orbits (all at one energy), their events and why the family ended.
+    #[pyo3(get)]
+    pub family: Py<OrbitFamily>,
+    /// The parameter at each orbit of `family.orbits`, (n,).
+    #[pyo3(get)]
+    pub parameter: Py<PyAny>,
+    /// The parameter at each event of `family.events`, (k,).
+    #[pyo3(get)]
+    pub event_parameter: Py<PyAny>,
+    pub(crate) inner: routh::OrbitParameterFamily,
+}
+
+impl OrbitParameterFamily {
+    pub(crate) fn new(
+        py: Python<'_>,
+        name: String,
+        f: &routh::OrbitParameterFamily,
+    ) -> PyResult<OrbitParameterFamily> {
+        Ok(OrbitParameterFamily {
+            name,
+            family: Py::new(py, OrbitFamily::new(py, &f.family)?)?,
+            parameter: PyArray1::from_slice(py, &f.parameter).into_any().unbind(),
+            event_parameter: PyArray1::from_slice(py, &f.event_parameter)
+                .into_any()
+                .unbind(),
+            inner: f.clone(),
+        })
+    }
+}
+
+#[pymethods]
+impl OrbitParameterFamily {
+    fn __len__(&self) -> usize {
+        self.inner.parameter.len()
+    }
+    fn __repr__(&self) -> String {
+        let f = &self.inner;
+        let span = match (f.parameter.first(), f.parameter.last()) {
+            (Some(a), Some(b)) => format!("{}={a}..{b}", self.name),
+            _ => self.name.clone(),
+        };
+        format!(
+            "OrbitParameterFamily({span}, {} orbits, {} events, stop={})",
+            f.family.orbits.len(),
+            f.family.events.len(),
+            f.family
+                .stop
+                .as_ref()
+                .map_or("None".to_string(), |s| format!("'{s}'"))
+        )
+    }
+}
+
 /// A Poincaré section at (p_ψ, E): the upward crossings of the plane γ·n = 0 by many orbits, in
 /// the coordinates θ (the angle of γ on the great circle n^⊥) and M_n = n·∂L/∂ω: `points`
 /// (list of (k, 2) float64, one per orbit), `starts` ((m, 6): ω₀, γ₀ of each orbit), `normal`
@@ -442,6 +505,69 @@ impl Model {
         let f = detached(py, || routh::continue_orbit(&m, &o, energy_range, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         OrbitFamily::new(py, &f)
+    }
+
+    /// Follow the family through `orbit` at its energy as the parameter `name` of the model
+    /// goes over `s_range` = (lo, hi), through folds (the Rust `continue_orbit_in`). `name` is a
+    /// scalar parameter (the orbit must be one of this model, at its value of `name`) or "p_psi"
+    /// (also "momentum": the cyclic momentum, from the orbit's p_ψ). Returns an
+    /// `OrbitParameterFamily` (`family`, `parameter`, `event_parameter`). Raises `ModelError` for
+    /// a name that is not a scalar parameter, `RouthError` (kind "InvalidOption") for a start
+    /// outside `s_range` or an orbit that is not one of this model, and the other errors of the
+    /// Rust function.
+    ///
+    /// >>> o = m.periodic_orbit([1, 0, 0], [0, 0, -1], 5.4)
+    /// >>> f = m.continue_orbit_in(o, "mgl", (1.2, 2.0))
+    /// >>> f.parameter[0], f.family.period[0]
+    #[pyo3(signature = (orbit, name, s_range, *, max_orbits=None, max_step=None, rtol=None,
+                        atol=None, newton_tol=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn continue_orbit_in(
+        &self,
+        py: Python<'_>,
+        orbit: &PeriodicOrbit,
+        name: &str,
+        s_range: (f64, f64),
+        max_orbits: Option<usize>,
+        max_step: Option<f64>,
+        rtol: Option<f64>,
+        atol: Option<f64>,
+        newton_tol: Option<f64>,
+    ) -> PyResult<OrbitParameterFamily> {
+        let opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
+        let m = self.get()?;
+        let o = orbit.inner.clone();
+        let f = if name == "p_psi" || name == "momentum" {
+            let s0 = o.p_psi;
+            detached(py, || {
+                routh::continue_orbit_in(|s| (m.clone(), s), &o, s0, s_range, &opts)
+            })?
+        } else {
+            // The name and shape checked once (a ModelError), the value the orbit's start.
+            let s0 = match (m.with(name, 0.0), m.get(name)) {
+                (Ok(_), Some(Param::Scalar(v))) => v,
+                (Err(e), _) => return Err(model_err(py, &e)),
+                _ => {
+                    return Err(model_err_unplaced(
+                        py,
+                        &format!("parameter `{name}` is not a number"),
+                    ))
+                }
+            };
+            let p = o.p_psi;
+            detached(py, || {
+                // `with` of a finite value of a scalar parameter does not fail; a NaN p_ψ would
+                // stop the family with an error naming s.
+                let family = |s: f64| match m.with(name, s) {
+                    Ok(ms) => (ms, p),
+                    Err(_) => (m.clone(), f64::NAN),
+                };
+                routh::continue_orbit_in(family, &o, s0, s_range, &opts)
+            })?
+        }
+        .map_err(|e| routh_err(py, &e))?;
+        let name = if name == "momentum" { "p_psi" } else { name };
+        OrbitParameterFamily::new(py, name.to_string(), &f)
     }
 
     /// The family of orbits of twice the period born at a "period_doubling" event.

@@ -9,7 +9,7 @@
 //!   (one copy per task) derives it once and shares its JIT-compiled tapes, and only the
 //!   parameter values are set.
 //! - The classes that wrap a Rust result (`SteadyMotion`, `PeriodicOrbit`, `OrbitFamily`,
-//!   `OrbitEvent`): the JSON of the Rust value (serde, numbers round-trip exactly), made into
+//!   `OrbitEvent`; `OrbitParameterFamily` with its parameter's name): the JSON of the Rust value (serde, numbers round-trip exactly), made into
 //!   the Python object again by the constructor the analyses use.
 //! - The classes that hold numpy arrays and strings: their fields (numpy pickles the arrays
 //!   bit for bit, NaN included; nested result objects pickle themselves).
@@ -18,7 +18,9 @@ use crate::convert::{model_err, param, RouthError};
 use crate::latex::LatexFormulas;
 use crate::model::Model;
 use crate::nonlinear::NonlinearReport;
-use crate::orbits::{OrbitEvent, OrbitFamily, PeriodicOrbit, PoincareSection};
+use crate::orbits::{
+    OrbitEvent, OrbitFamily, OrbitParameterFamily, PeriodicOrbit, PoincareSection,
+};
 use crate::results::{
     Atlas, Boundary, Branch, Certificate, CircleReport, Diagram, Event, StabilityReport,
     SteadyMotion,
@@ -187,6 +189,11 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
         "OrbitFamily" => {
             let f = from_json!(routh::OrbitFamily, state)?;
             OrbitFamily::new(py, &f)?.into_py_any(py)
+        }
+        "OrbitParameterFamily" => {
+            let (name, json): (String, Bound<'_, PyAny>) = state.extract()?;
+            let f = from_json!(routh::OrbitParameterFamily, json)?;
+            OrbitParameterFamily::new(py, name, &f)?.into_py_any(py)
         }
         "OrbitEvent" => {
             let e = from_json!(routh::OrbitEvent, state)?;
@@ -499,6 +506,7 @@ reduce_by! {
     PeriodicOrbit |o, _py| => json!(&o.inner)?;
     OrbitFamily |o, _py| => json!(&o.inner)?;
     OrbitEvent |o, _py| => json!(&o.inner)?;
+    OrbitParameterFamily |o, _py| => (o.name.clone(), json!(&o.inner)?);
     StabilityReport |o, py| => (
         o.verdict,
         o.degree_of_instability,

@@ -182,3 +182,58 @@ def test_switch_branch_refuses_other_events(branching, asymmetric):
     with pytest.raises(routh.RouthError) as e:
         branching.switch_branch(bp, max_orbits=0)
     assert e.value.kind == "InvalidOption"
+
+
+def test_continue_orbit_in_a_parameter_is_the_pendulum_at_fixed_energy():
+    # J = diag(a, 2, 3), mgl = 1.5: at E = −1.5 cos 1 the planar swings are pendulums of
+    # amplitude 1 whatever a, ω₀ = √(mgl/a): T(a) = 4K(sin²½)/√(mgl/a) (docs/method.md §11).
+    m = routh.Model("kinetic = 0.5 * (a * omega.x * omega.x + 2.0 * omega.y * omega.y"
+                    " + 3.0 * omega.z * omega.z), potential = mgl * gamma.z",
+                    {"a": 1.0, "mgl": 1.5})
+    o = m.periodic_orbit([0, 0, 0], [0, math.sin(1.0), -math.cos(1.0)], 5.6)
+    f = m.continue_orbit_in(o, "a", (0.8, 1.5))
+    assert isinstance(f, routh.OrbitParameterFamily) and isinstance(f.family, routh.OrbitFamily)
+    assert f.name == "a" and f.family.stop is None
+    assert f.parameter.dtype == np.float64 and f.parameter.shape == (len(f.family.orbits),)
+    assert f.event_parameter.shape == (len(f.family.events),)
+    assert len(f) == len(f.family) >= 5
+    assert f.parameter.min() == 0.8 and f.parameter.max() == 1.5
+    k = 4 * elliptic_k(math.sin(0.5) ** 2)
+    for orbit, a in zip(f.family.orbits, f.parameter):
+        assert abs(orbit.energy - o.energy) < 1e-9
+        assert abs(orbit.period - k / math.sqrt(1.5 / a)) < 1e-8, (a, orbit.period)
+    assert "OrbitParameterFamily(a=" in repr(f)
+    # Pickles with its name and numbers.
+    import pickle
+
+    g = pickle.loads(pickle.dumps(f))
+    assert g.name == "a" and g.family.to_json() == f.family.to_json()
+    np.testing.assert_array_equal(g.parameter, f.parameter)
+    # Through p_ψ ("momentum" is the command line's name): each orbit's p_ψ is its parameter.
+    p = m.continue_orbit_in(o, "momentum", (-0.1, 0.1), max_orbits=5)
+    assert p.name == "p_psi" and len(p) == 5
+    np.testing.assert_allclose([x.p_psi for x in p.family.orbits], p.parameter, atol=1e-9)
+    assert all(abs(x.energy - o.energy) < 1e-9 for x in p.family.orbits)
+
+
+def test_continue_orbit_in_refuses_with_the_rust_message():
+    m = routh.Model(PENDULUM, {"inertia": [1.0, 2.0, 3.0], "mgl": 1.5})
+    o = m.periodic_orbit([0, 0, 0], [0, math.sin(1.0), -math.cos(1.0)], 5.6)
+    with pytest.raises(routh.ModelError, match="unknown parameter `b`"):
+        m.continue_orbit_in(o, "b", (1.0, 2.0))
+    with pytest.raises(routh.RouthError, match="inertia"):
+        m.continue_orbit_in(o, "inertia", (1.0, 2.0))
+    # The start (mgl = 1.5, p_ψ = 0) outside the range: the Rust InvalidOption, its message.
+    with pytest.raises(routh.RouthError) as e:
+        m.continue_orbit_in(o, "mgl", (1.6, 2.0))
+    assert e.value.kind == "InvalidOption" and "outside the range" in str(e.value)
+    with pytest.raises(routh.RouthError) as e:
+        m.continue_orbit_in(o, "p_psi", (0.5, 1.0))
+    assert e.value.kind == "InvalidOption"
+    with pytest.raises(routh.RouthError) as e:
+        m.continue_orbit_in(o, "mgl", (2.0, 1.0))
+    assert e.value.kind == "InvalidOption"
+    # An orbit of another model (mgl = 2 there) is not one of this one.
+    with pytest.raises(routh.RouthError) as e:
+        m.with_params(mgl=2.0).continue_orbit_in(o, "mgl", (1.0, 3.0))
+    assert e.value.kind == "InvalidOption" and "not an orbit" in str(e.value)

@@ -561,6 +561,20 @@ class OrbitFamily:
         >>> same = OrbitFamily.from_json(r.to_json())
         """
 
+class OrbitParameterFamily:
+    """A family of periodic orbits at one energy through a parameter of the model
+    (`Model.continue_orbit_in`): the orbits and events in `family`, the parameter's value at each
+    in `parameter` and `event_parameter`.
+
+    >>> f = m.continue_orbit_in(orbit, "mgl", (1.2, 2.0))
+    >>> f.parameter, f.family.period
+    """
+    name: str
+    family: OrbitFamily
+    parameter: npt.NDArray[np.float64]
+    event_parameter: npt.NDArray[np.float64]
+    def __len__(self) -> int: ...
+
 class PoincareSection:
     """Crossings of the plane γ·n = 0 at (p_ψ, E) in the coordinates (θ, M_n).
 
@@ -668,6 +682,18 @@ class Model:
         atol: float | None = None,
         newton_tol: float | None = None,
     ) -> OrbitFamily: ...
+    def continue_orbit_in(
+        self,
+        orbit: PeriodicOrbit,
+        name: str,
+        s_range: tuple[float, float],
+        *,
+        max_orbits: int | None = None,
+        max_step: float | None = None,
+        rtol: float | None = None,
+        atol: float | None = None,
+        newton_tol: float | None = None,
+    ) -> OrbitParameterFamily: ...
     def period_doubled_family(
         self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None
     ) -> OrbitFamily: ...
