@@ -6,7 +6,7 @@
 //! integrator or corrector). The swing amplitude where `k = ±1` is found by bisection on that
 //! trace; routh's events must sit there, at any `max_step`, with their own orbit on the family.
 
-use crate::common::{closure_gap, elliptic_k, HeavyTop};
+use crate::common::{closure_gap, elliptic_k, swing_index, HeavyTop};
 use routh_core::{
     lyapunov_family, steady_motions, switch_branch, Matrix3, OrbitEvent, OrbitEventKind,
     OrbitFamily, OrbitOptions, SteadyMotion, Vector3,
@@ -31,85 +31,11 @@ fn hanging(m: &HeavyTop, p_psi: f64) -> SteadyMotion {
         .expect("the hanging steady motion")
 }
 
-/// `e_i × v` for the state layout below.
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// The Euler–Poisson equations `Jω̇ = Jω × ω − mgl e₃ × γ`, `γ̇ = γ × ω` and their variational
-/// equations for the columns of `Φ` (state: ω, γ, then 6 columns of 6).
-fn rhs(y: &[f64; 42]) -> [f64; 42] {
-    let w = [y[0], y[1], y[2]];
-    let g = [y[3], y[4], y[5]];
-    let jw = [J[0] * w[0], J[1] * w[1], J[2] * w[2]];
-    let e3 = [0.0, 0.0, MGL];
-    let mut out = [0.0; 42];
-    let t = cross(jw, w);
-    let u = cross(e3, g);
-    let gd = cross(g, w);
-    for i in 0..3 {
-        out[i] = (t[i] - u[i]) / J[i];
-        out[3 + i] = gd[i];
-    }
-    for c in 0..6 {
-        let o = 6 + 6 * c;
-        let dw = [y[o], y[o + 1], y[o + 2]];
-        let dg = [y[o + 3], y[o + 4], y[o + 5]];
-        let jdw = [J[0] * dw[0], J[1] * dw[1], J[2] * dw[2]];
-        let (a, b, u) = (cross(jdw, w), cross(jw, dw), cross(e3, dg));
-        let (p, q) = (cross(dg, w), cross(g, dw));
-        for i in 0..3 {
-            out[o + i] = (a[i] + b[i] - u[i]) / J[i];
-            out[o + 3 + i] = p[i] + q[i];
-        }
-    }
-    out
-}
-
-/// The stability index `k = (tr Φ(T) − 4)/2` of the planar swing about the principal axis
-/// `axis` (0 or 1) with amplitude `theta0`, over its closed-form period, by `n` classical RK4
-/// steps.
-fn index_of_swing(axis: usize, theta0: f64, n: usize) -> f64 {
-    let w0 = (MGL / J[axis]).sqrt();
-    let period = 4.0 * elliptic_k((0.5 * theta0).sin().powi(2)) / w0;
-    let mut y = [0.0; 42];
-    // Turning point: ω = 0, γ in the plane normal to the axis.
-    let other = 1 - axis;
-    y[3 + other] = theta0.sin();
-    y[5] = -theta0.cos();
-    for c in 0..6 {
-        y[6 + 7 * c] = 1.0;
-    }
-    let h = period / n as f64;
-    let add = |y: &[f64; 42], k: &[f64; 42], s: f64| {
-        let mut z = *y;
-        for i in 0..42 {
-            z[i] += s * k[i];
-        }
-        z
-    };
-    for _ in 0..n {
-        let k1 = rhs(&y);
-        let k2 = rhs(&add(&y, &k1, 0.5 * h));
-        let k3 = rhs(&add(&y, &k2, 0.5 * h));
-        let k4 = rhs(&add(&y, &k3, h));
-        for i in 0..42 {
-            y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-        }
-    }
-    let trace: f64 = (0..6).map(|c| y[6 + 7 * c]).sum();
-    0.5 * (trace - 4.0)
-}
-
 /// The energies `−mgl cos θ₀` of the swings about `axis` where `k = target`, for amplitudes up
 /// to `max_energy`: a scan of 80 amplitudes and bisection to `1e−13` in `θ₀`.
 fn independent_events(axis: usize, target: f64, max_energy: f64) -> Vec<f64> {
     let n = 6000;
-    let f = |th: f64| index_of_swing(axis, th, n) - target;
+    let f = |th: f64| swing_index(J, MGL, axis, th, n) - target;
     let top = (-max_energy / MGL).acos();
     let grid: Vec<f64> = (1..=80).map(|i| top * i as f64 / 80.0).collect();
     let mut out = Vec::new();
@@ -252,8 +178,8 @@ fn events_of_planar_swings_are_where_an_independent_monodromy_puts_them() {
 /// swing (so the bisection above resolves the events to far better than 1e−9).
 #[test]
 fn the_independent_index_is_converged() {
-    let a = index_of_swing(0, 2.0, 6000);
-    let b = index_of_swing(0, 2.0, 12000);
+    let a = swing_index(J, MGL, 0, 2.0, 6000);
+    let b = swing_index(J, MGL, 0, 2.0, 12000);
     assert!((a - b).abs() < 1e-11, "{a} vs {b}");
 }
 

@@ -6,7 +6,7 @@
 //! (not the crate's vector field, integrator or corrector) crosses 1; `periodic_orbit` on the
 //! member models; and the families through the energy at the other end of a family in `p_ψ`.
 
-use crate::common::{elliptic_k, heavy_body as body, HeavyTop};
+use crate::common::{elliptic_k, heavy_body as body, swing_index, HeavyTop};
 use routh_core::{
     continue_orbit_in, lyapunov_family, periodic_orbit, steady_motions, OrbitEventKind,
     OrbitOptions, OrbitStop, PeriodicOrbit, RouthError, SteadyMotion, Vector3,
@@ -98,72 +98,6 @@ fn swing_through_a_moment_is_the_pendulum_of_that_moment() {
     }
 }
 
-/// The Euler–Poisson equations `Jω̇ = Jω × ω − mgl e₃ × γ`, `γ̇ = γ × ω` of `J = diag(j)` and their
-/// variational equations for the columns of `Φ` (state: ω, γ, then 6 columns of 6).
-fn rhs(j: [f64; 3], mgl: f64, y: &[f64; 42]) -> [f64; 42] {
-    let cross = |a: [f64; 3], b: [f64; 3]| {
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    };
-    let w = [y[0], y[1], y[2]];
-    let g = [y[3], y[4], y[5]];
-    let jw = [j[0] * w[0], j[1] * w[1], j[2] * w[2]];
-    let e3 = [0.0, 0.0, mgl];
-    let mut out = [0.0; 42];
-    let (t, u, gd) = (cross(jw, w), cross(e3, g), cross(g, w));
-    for i in 0..3 {
-        out[i] = (t[i] - u[i]) / j[i];
-        out[3 + i] = gd[i];
-    }
-    for c in 0..6 {
-        let o = 6 + 6 * c;
-        let dw = [y[o], y[o + 1], y[o + 2]];
-        let dg = [y[o + 3], y[o + 4], y[o + 5]];
-        let jdw = [j[0] * dw[0], j[1] * dw[1], j[2] * dw[2]];
-        let (a, b, u) = (cross(jdw, w), cross(jw, dw), cross(e3, dg));
-        let (p, q) = (cross(dg, w), cross(g, dw));
-        for i in 0..3 {
-            out[o + i] = (a[i] + b[i] - u[i]) / j[i];
-            out[o + 3 + i] = p[i] + q[i];
-        }
-    }
-    out
-}
-
-/// The stability index `(tr Φ(T) − 4)/2` of the planar swing about `e₁` of amplitude `theta0`
-/// of `J = diag(j)`, over its closed-form period, by `n` classical RK4 steps.
-fn index_of_swing(j: [f64; 3], mgl: f64, theta0: f64, n: usize) -> f64 {
-    let period = 4.0 * elliptic_k((0.5 * theta0).sin().powi(2)) / (mgl / j[0]).sqrt();
-    let mut y = [0.0; 42];
-    y[4] = theta0.sin();
-    y[5] = -theta0.cos();
-    for c in 0..6 {
-        y[6 + 7 * c] = 1.0;
-    }
-    let h = period / n as f64;
-    let add = |y: &[f64; 42], k: &[f64; 42], s: f64| {
-        let mut z = *y;
-        for i in 0..42 {
-            z[i] += s * k[i];
-        }
-        z
-    };
-    for _ in 0..n {
-        let k1 = rhs(j, mgl, &y);
-        let k2 = rhs(j, mgl, &add(&y, &k1, 0.5 * h));
-        let k3 = rhs(j, mgl, &add(&y, &k2, 0.5 * h));
-        let k4 = rhs(j, mgl, &add(&y, &k3, h));
-        for i in 0..42 {
-            y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-        }
-    }
-    let trace: f64 = (0..6).map(|c| y[6 + 7 * c]).sum();
-    0.5 * (trace - 4.0)
-}
-
 /// (b) Events: the planar swing about `e₁` of `J = diag(1, B, 2.3)`, `mgl = 1`, at the energy
 /// `E = 0.2724760148064` where the family through the energy of `B = 1.6` has its branch point,
 /// through `B ∈ [1.4, 1.8]`. The swing itself does not depend on `B` (its period is the
@@ -177,7 +111,7 @@ fn branch_point_in_a_moment_is_where_an_independent_monodromy_puts_it() {
     let energy = 0.2724760148064f64;
     let theta0 = (-energy / mgl).acos();
     // The independent branch point: k(B) = 1, bisection to 1e−12 on [1.5, 1.7].
-    let k = |b: f64| index_of_swing([1.0, b, c], mgl, theta0, 6000) - 1.0;
+    let k = |b: f64| swing_index([1.0, b, c], mgl, 0, theta0, 6000) - 1.0;
     let (mut lo, mut hi) = (1.5, 1.7);
     let flo = k(lo);
     assert!(flo * k(hi) < 0.0, "k − 1 changes sign on [1.5, 1.7]");

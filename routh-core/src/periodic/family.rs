@@ -97,6 +97,21 @@ impl<M: Routhian> Tracer<'_, M> {
         }
     }
 
+    /// Follows the family both ways from the corrected orbit `s`, first towards larger `w₇`,
+    /// the budget of orbits shared between the directions: the orbit's node and both halves.
+    pub(super) fn both_ways(&self, s: Solved) -> Result<(Node, Half, Half), RouthError> {
+        let mut up = self.node(s, None)?;
+        if up.tangent[7] < 0.0 {
+            up.tangent = -up.tangent;
+        }
+        let mut down = up.clone();
+        down.tangent = -down.tangent;
+        let budget = self.opts.max_orbits.saturating_sub(1);
+        let traced_up = self.trace(up.clone(), budget.div_ceil(2), None)?;
+        let traced_down = self.trace(down, budget / 2, None)?;
+        Ok((up, traced_up, traced_down))
+    }
+
     /// The stop at the bound `b` of the eighth unknown.
     fn bound_stop(&self, b: f64) -> OrbitStop {
         match self.slot {
@@ -470,15 +485,7 @@ pub fn continue_orbit<M: Routhian>(
         bounds: Some((lo, hi)),
         first_period: orbit.period,
     };
-    let mut up = tracer.node(s, None)?;
-    if up.tangent[7] < 0.0 {
-        up.tangent = -up.tangent;
-    }
-    let mut down = up.clone();
-    down.tangent = -down.tangent;
-    let budget = opts.max_orbits.saturating_sub(1);
-    let traced_up = tracer.trace(up.clone(), budget.div_ceil(2), None)?;
-    let traced_down = tracer.trace(down, budget / 2, None)?;
+    let (up, traced_up, traced_down) = tracer.both_ways(s)?;
     Ok(merge_halves(up.orbit, traced_up, traced_down))
 }
 

@@ -165,15 +165,7 @@ pub fn continue_orbit_in<M: Routhian, F: Fn(f64) -> (M, f64)>(
         bounds: Some(range),
         first_period: orbit.period,
     };
-    let mut up = tracer.node(s, None)?;
-    if up.tangent[7] < 0.0 {
-        up.tangent = -up.tangent;
-    }
-    let mut down = up.clone();
-    down.tangent = -down.tangent;
-    let budget = opts.max_orbits.saturating_sub(1);
-    let traced_up = tracer.trace(up.clone(), budget.div_ceil(2), None)?;
-    let traced_down = tracer.trace(down, budget / 2, None)?;
+    let (up, traced_up, traced_down) = tracer.both_ways(s)?;
     let centre = (up.orbit.clone(), tracer.value(&up));
     let (family, parameter, event_parameter) =
         merge_along(centre, traced_up, traced_down, &|n| tracer.value(n));
