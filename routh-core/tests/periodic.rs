@@ -4,7 +4,7 @@
 //! monodromy built by finite differences of `simulate_full` and from the growth of perturbations
 //! in long simulations, time reversal, and the period-doubled orbits next to a period doubling.
 
-use crate::common::{elliptic_k, heavy_body as body, HeavyTop};
+use crate::common::{elliptic_k, fd_trace, heavy_body as body, HeavyTop};
 use routh_core::{
     continue_orbit, lyapunov_family, orbit_crossings, period_doubled_family, periodic_orbit,
     poincare_section, simulate_full, steady_motions, Lagrangian, Matrix3, OrbitEventKind,
@@ -20,44 +20,6 @@ fn hanging(m: &HeavyTop) -> SteadyMotion {
         .into_iter()
         .find(|s| s.gamma.z < -0.999)
         .expect("the hanging position is a steady motion")
-}
-
-/// The trace of a monodromy built by central differences of `simulate_full` over `t`.
-fn fd_trace<M: Lagrangian>(m: &M, w: Vector3<f64>, g: Vector3<f64>, t: f64) -> f64 {
-    let opts = SimOptions::with_tolerances(1e-12, 1e-13);
-    let end = |w: Vector3<f64>, g: Vector3<f64>| {
-        let tr = simulate_full(m, w, g, t, &opts).unwrap();
-        let n = tr.t.len() - 1;
-        [tr.omega[n], tr.gamma[n]]
-    };
-    let h = 1e-6;
-    let mut trace = 0.0;
-    for i in 0..6 {
-        let (mut wp, mut gp, mut wm, mut gm) = (w, g, w, g);
-        if i < 3 {
-            wp[i] += h;
-            wm[i] -= h;
-        } else {
-            gp[i - 3] += h;
-            gm[i - 3] -= h;
-        }
-        // simulate_full wants a unit γ: a γ column is taken along the perturbation projected
-        // on the tangent plane (normalised), which gives `e_iᵀΦ_γγ(I − γγᵀ)e_i`.
-        let (p, q) = if i < 3 {
-            (end(wp, gp), end(wm, gm))
-        } else {
-            (end(wp, gp.normalize()), end(wm, gm.normalize()))
-        };
-        let d = if i < 3 {
-            (p[0][i] - q[0][i]) / (2.0 * h)
-        } else {
-            (p[1][i - 3] - q[1][i - 3]) / (2.0 * h)
-        };
-        trace += d;
-    }
-    // The missing `γᵀΦ_γγγ` is 1: `|γ|²` is a Casimir, so `(0, γ)` is a left eigenvector of Φ
-    // with eigenvalue 1 on an orbit (`γ(T) = γ₀`).
-    trace + 1.0
 }
 
 /// (a) Planar swings of a heavy body about its first principal axis at `p_ψ = 0`: the pendulum

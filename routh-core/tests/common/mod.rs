@@ -111,3 +111,41 @@ pub fn swing_index(j: [f64; 3], mgl: f64, axis: usize, theta0: f64, n: usize) ->
     let trace: f64 = (0..6).map(|c| y[6 + 7 * c]).sum();
     0.5 * (trace - 4.0)
 }
+
+/// The trace of a monodromy built by central differences of `simulate_full` over `t`.
+pub fn fd_trace<M: routh_core::Lagrangian>(m: &M, w: Vector3<f64>, g: Vector3<f64>, t: f64) -> f64 {
+    let opts = SimOptions::with_tolerances(1e-12, 1e-13);
+    let end = |w: Vector3<f64>, g: Vector3<f64>| {
+        let tr = simulate_full(m, w, g, t, &opts).unwrap();
+        let n = tr.t.len() - 1;
+        [tr.omega[n], tr.gamma[n]]
+    };
+    let h = 1e-6;
+    let mut trace = 0.0;
+    for i in 0..6 {
+        let (mut wp, mut gp, mut wm, mut gm) = (w, g, w, g);
+        if i < 3 {
+            wp[i] += h;
+            wm[i] -= h;
+        } else {
+            gp[i - 3] += h;
+            gm[i - 3] -= h;
+        }
+        // simulate_full wants a unit γ: a γ column is taken along the perturbation projected
+        // on the tangent plane (normalised), which gives `e_iᵀΦ_γγ(I − γγᵀ)e_i`.
+        let (p, q) = if i < 3 {
+            (end(wp, gp), end(wm, gm))
+        } else {
+            (end(wp, gp.normalize()), end(wm, gm.normalize()))
+        };
+        let d = if i < 3 {
+            (p[0][i] - q[0][i]) / (2.0 * h)
+        } else {
+            (p[1][i - 3] - q[1][i - 3]) / (2.0 * h)
+        };
+        trace += d;
+    }
+    // The missing `γᵀΦ_γγγ` is 1: `|γ|²` is a Casimir, so `(0, γ)` is a left eigenvector of Φ
+    // with eigenvalue 1 on an orbit (`γ(T) = γ₀`).
+    trace + 1.0
+}
