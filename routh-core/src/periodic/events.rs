@@ -4,29 +4,13 @@
 //! event locator (`locate.rs`) on re-solves along the step and, at a branch point or a period
 //! doubling, read off a secant through re-solves either side of it.
 
-use super::family::{Node, Tracer};
-use super::shoot::{correct, W};
+use super::family::Tracer;
+use super::node::{same_family, Node};
+use super::shoot::correct;
 use super::{OrbitEvent, OrbitEventKind};
 use crate::locate::{estimated_distance, locate, End};
 use crate::path::row::LinearRow;
 use crate::{RouthError, Routhian};
-
-/// Whether `b` continues the family of `a`: the tangents at both ends make about the same angle
-/// with the chord between them, as on one smooth curve (an arc turns by as much at either end);
-/// a corrector that landed on a family crossing at a branch point has the other family's
-/// tangent there, at the crossing angle to the chord. Allowed: twice the larger of the angles at
-/// `a` plus 0.02 rad (families crossing at less than that are not told apart).
-pub(super) fn same_family(a: &Node, b: &Node) -> bool {
-    let chord = b.solved.w - a.solved.w;
-    let len = chord.norm();
-    if len.is_nan() || len <= 0.0 {
-        return true;
-    }
-    let c = chord / len;
-    let angle = |t: &W| t.dot(&c).abs().min(1.0).acos();
-    let (ta, tb) = (angle(&a.tangent), angle(&b.tangent));
-    tb <= 2.0 * ta + 0.02 && ta <= 2.0 * tb + 0.02
-}
 
 impl<M: Routhian> Tracer<'_, M> {
     /// Re-solves between two orbits `lo` (at arclength `s_lo`) and `hi` (at `s_hi`) of the family

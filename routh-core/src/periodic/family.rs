@@ -15,21 +15,13 @@
 
 use nalgebra::{Complex, Matrix6, Vector6};
 
-use super::events::same_family;
 use super::flow::{field_and_jacobian, join, onto_level, split};
+use super::node::{same_family, Node};
 use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Slot, Solved, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
 use crate::path::row::LinearRow;
 use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
 use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
-
-/// An accepted orbit of a family with its tangent.
-#[derive(Clone)]
-pub(super) struct Node {
-    pub solved: Solved,
-    pub tangent: W,
-    pub orbit: PeriodicOrbit,
-}
 
 /// The index of the smallest singular value (nalgebra does not promise an order).
 pub(super) fn smallest(values: &[f64]) -> usize {

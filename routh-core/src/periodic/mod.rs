@@ -30,6 +30,7 @@ mod doubling;
 mod events;
 mod family;
 mod flow;
+mod node;
 mod parameter;
 mod section;
 mod shoot;
