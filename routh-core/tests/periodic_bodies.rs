@@ -6,8 +6,9 @@
 
 use crate::common::{closure_gap, elliptic_k, heavy_body as body, HeavyTop};
 use routh_core::{
-    axial_symmetry, continue_orbit, lyapunov_family, periodic_orbit, steady_motions, Matrix3,
-    OrbitOptions, SteadyMotion, Vector3,
+    axial_symmetry, continue_orbit, lyapunov_family, orbit_crossings, orbit_path,
+    period_doubled_family, periodic_orbit, steady_motions, Matrix3, OrbitEvent, OrbitEventKind,
+    OrbitOptions, SectionOptions, SteadyMotion, Vector3,
 };
 use std::f64::consts::PI;
 
@@ -325,4 +326,35 @@ fn starts_outside_the_range_are_errors() {
     .unwrap();
     let err = continue_orbit(&m, &o, (5.0, 6.0), &OrbitOptions::default()).unwrap_err();
     assert!(err.to_string().contains("outside"), "{err}");
+}
+
+/// Hostile inputs of the orbit functions are errors that say so, not hangs or allocations:
+/// a path of 10¹² samples, the crossings of an "orbit" of period 1e300 (ends on the step budget),
+/// and a period doubling whose orbit is not at k = −1 (an edited event).
+#[test]
+fn hostile_orbit_inputs_are_errors() {
+    let m = body(1.0, 2.0, 3.0, 1.5);
+    let theta0 = 0.8f64;
+    let o = periodic_orbit(
+        &m,
+        Vector3::zeros(),
+        Vector3::new(0.0, theta0.sin(), -theta0.cos()),
+        5.0,
+        &OrbitOptions::default(),
+    )
+    .unwrap();
+    let err = orbit_path(&m, &o, 1_000_000_000_000).unwrap_err();
+    assert!(err.to_string().contains("samples"), "{err}");
+    let mut long = o.clone();
+    long.period = 1e300;
+    assert!(orbit_crossings(&m, &long, &SectionOptions::default().with_size(1, 5)).is_err());
+    let event = OrbitEvent {
+        kind: OrbitEventKind::PeriodDoubling,
+        energy: o.energy,
+        orbit: o.clone(),
+        before: o.stability,
+        after: o.stability,
+    };
+    let err = period_doubled_family(&m, &event, &OrbitOptions::default()).unwrap_err();
+    assert!(err.to_string().contains("not −1"), "{err}");
 }

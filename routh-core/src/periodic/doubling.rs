@@ -29,6 +29,18 @@ pub fn period_doubled_family<M: Routhian>(
         });
     }
     let (s, scales) = restart(model, &event.orbit, opts)?;
+    // The event's orbit must be at k = −1 (an event edited, or taken from another model, is
+    // not a period doubling: the null vector below would be a guess).
+    let k = 0.5 * (s.shot.trace - 4.0);
+    if (k + 1.0).abs() > 1e-6 {
+        return Err(RouthError::InvalidOption {
+            what: "event",
+            reason: format!(
+                "its orbit has the stability index k = {k:.9}, not −1: not a period doubling of \
+                 this model"
+            ),
+        });
+    }
     // The eigenvector of Φ(T) for −1: the null vector of Φ + I restricted by the constraints
     // (the rows of E, p_ψ and |γ|² keep it on the level set).
     let mut m = SMatrix::<f64, 9, 6>::zeros();

@@ -189,17 +189,22 @@ pub(crate) fn precession(turn: &UnitQuaternion<f64>, gamma0: &Vector3<f64>) -> f
     a
 }
 
-/// The orbit sampled at `n ≥ 2` equally spaced times over one period (`t = 0` and `t = T`
+/// The most samples [`orbit_path`] takes (a million: about 200 MB with the attitude).
+const MAX_PATH_SAMPLES: usize = 1_000_000;
+
+/// The orbit sampled at `2 ≤ n ≤ 10⁶` equally spaced times over one period (`t = 0` and `t = T`
 /// included), with the attitude: for figures (γ on the sphere, the apex locus) and tables.
 pub fn orbit_path<M: Lagrangian>(
     model: &M,
     orbit: &PeriodicOrbit,
     n: usize,
 ) -> Result<Trajectory, RouthError> {
-    if n < 2 {
+    if !(2..=MAX_PATH_SAMPLES).contains(&n) {
         return Err(RouthError::InvalidOption {
             what: "n",
-            reason: format!("need at least 2 samples, got {n}"),
+            reason: format!(
+                "need between 2 and {MAX_PATH_SAMPLES} samples (each ≈ 200 bytes), got {n}"
+            ),
         });
     }
     // `T·i/(n − 1)` rounds above `T` for some `T` and `n` at `i = n − 1`: the last time is `T`.

@@ -334,19 +334,22 @@ pub fn poincare_section<M: Lagrangian + Sync>(
 }
 
 /// Where a periodic orbit crosses the section over one period: the fixed points of the section's
-/// map that the orbit is (one per upward crossing).
+/// map that the orbit is (one per upward crossing; at most [`SectionOptions::crossings`], whose
+/// steps are also the budget of the period's integration).
 pub fn orbit_crossings<M: Lagrangian + Sync>(
     model: &M,
     orbit: &PeriodicOrbit,
     opts: &SectionOptions,
 ) -> Result<Vec<[f64; 2]>, RouthError> {
     let n = opts.validate()?;
+    // The steps of one period are budgeted as those of `opts.crossings` crossings (an orbit of
+    // period 1e300 ends on the budget instead of integrating for ever).
     let (points, _, stop) = crossings(
         model,
         &orbit.omega0,
         &orbit.gamma0,
         &n,
-        usize::MAX / 4,
+        opts.crossings.max(1),
         orbit.period,
         opts,
     );
