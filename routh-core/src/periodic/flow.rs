@@ -175,6 +175,37 @@ pub(crate) fn shoot<M: Lagrangian + ?Sized>(
     })
 }
 
+/// `φ_t(x₀)` alone (no variational equations, no attitude), under the same error control of
+/// the state as [`shoot`]: for residuals whose Jacobian is not needed.
+pub(crate) fn flow_end<M: Lagrangian + ?Sized>(
+    model: &M,
+    x0: &Vector6<f64>,
+    t: f64,
+    opts: &OrbitOptions,
+) -> Result<Vector6<f64>, RouthError> {
+    let weights = dop853::componentwise(opts.rtol, opts.atol);
+    let cfg = Config {
+        weights: &weights,
+        h_max: f64::INFINITY,
+        h_init: None,
+        max_steps: opts.max_steps,
+        dense: false,
+    };
+    let mut end = *x0;
+    dop853::integrate(
+        |_t: f64, x: &Vector6<f64>| field(model, x),
+        0.0,
+        *x0,
+        t,
+        &cfg,
+        |s: &Accepted<'_, 6>| {
+            end = *s.y;
+            Ok(())
+        },
+    )?;
+    Ok(end)
+}
+
 /// `Δψ ∈ (−π, π]` of a turn `R(T)` (with `R(0) = I`) about the vertical `γ₀` (body coordinates
 /// at 0, which are the space coordinates of that frame): `q = (cos Δψ/2, sin Δψ/2 γ₀)`.
 pub(crate) fn precession(turn: &UnitQuaternion<f64>, gamma0: &Vector3<f64>) -> f64 {

@@ -21,7 +21,7 @@ use std::ops::Deref;
 
 use nalgebra::{SMatrix, SVector, Vector3, Vector6};
 
-use super::flow::{field, integrals, join, onto_level, precession, shoot, split, Shot};
+use super::flow::{field, flow_end, integrals, join, onto_level, precession, shoot, split, Shot};
 use super::symmetry::{self, Turn};
 use super::{OrbitOptions, OrbitStability, PeriodicOrbit};
 use crate::locate::{estimated_distance, illinois, End};
@@ -254,9 +254,14 @@ fn linearise<'a, M: Lagrangian>(
             let s0 = prob.scales.parameter(w);
             let ds = 1e-6 * s0.abs().max(1.0);
             let (sp, sm) = (s0 + ds, s0 - ds);
+            // The sides need the residual only: a state-only integration of the flow (no
+            // variational equations, no attitude).
+            let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
+            let t = prob.scales.period(w);
             let side = |s: f64| -> Result<Residual, RouthError> {
                 let (m, p) = member_at(family, s)?;
-                Ok(system(&m, p, (energy, false), prob, row, w, opts)?.0)
+                let end = flow_end(&m, &x, t, opts)?;
+                Ok(residual(&m, p, energy, prob, row, w, &end))
             };
             let (rp, rm) = (side(sp)?, side(sm)?);
             for i in 0..TOP {
@@ -267,8 +272,48 @@ fn linearise<'a, M: Lagrangian>(
     }
 }
 
-/// The rows of [`linearise`] for one model at momentum `p_psi`, the energy row at
-/// `energy.0` (and its column that of an unknown energy `w₇·e_s` when `energy.1`; else empty).
+/// The rows of the system at `w` for one model at momentum `p_psi` with the energy row at
+/// `energy`, from `end = φ_T(x₀)` (the shot's end, or a state-only integration's).
+fn residual<M: Lagrangian + ?Sized>(
+    model: &M,
+    p_psi: f64,
+    energy: f64,
+    prob: &Problem,
+    row: &LinearRow<UNKNOWNS>,
+    w: &W,
+    end: &Vector6<f64>,
+) -> Residual {
+    let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
+    let (e, de, p, dp) = integrals(model, &x);
+    let (_, g) = split(&x);
+    let mut r = Residual::zeros();
+    // Periodicity modulo the body turn: S_β φ_T(x₀) − x₀; β = 0 without the symmetry.
+    let beta = if prob.turn.is_some() { w[TURN] } else { 0.0 };
+    let gap = symmetry::act(beta, end) - x;
+    for i in 0..6 {
+        r[i] = gap[i];
+    }
+    r[6] = prob.f_ref.dot(&(x - prob.x_ref));
+    r[7] = (e - energy) / de.norm().max(f64::MIN_POSITIVE);
+    r[8] = (p - p_psi) / dp.norm().max(f64::MIN_POSITIVE);
+    r[9] = 0.5 * (g.norm_squared() - 1.0);
+    // The gauge ξ̂_ref·(x₀ − x_ref) = 0 (the phase of the turn) and p_φ(x₀) = p_φ; without the
+    // symmetry β = 0 and an empty row.
+    match &prob.turn {
+        Some(turn) => {
+            let (pf, dpf) = symmetry::body_momentum(model, &x);
+            r[10] = turn.xi_ref.dot(&(x - prob.x_ref));
+            r[11] = (pf - turn.p_phi) / dpf.norm().max(f64::MIN_POSITIVE);
+        }
+        None => r[10] = w[TURN],
+    }
+    r[TOP] = row.residual(w);
+    r
+}
+
+/// The rows of [`linearise`] for one model at momentum `p_psi` and their Jacobian, the energy
+/// row at `energy.0` (and its column that of an unknown energy `w₇·e_s` when `energy.1`; else
+/// empty).
 fn system<M: Lagrangian + ?Sized>(
     model: &M,
     p_psi: f64,
@@ -281,17 +326,16 @@ fn system<M: Lagrangian + ?Sized>(
     let x: Vector6<f64> = w.fixed_rows::<6>(0).into();
     let t = prob.scales.period(w);
     let mut s = shoot(model, &x, t, opts)?;
+    let r = residual(model, p_psi, energy.0, prob, row, w, &s.end);
     let f_end = field(model, &s.end)?;
-    let (e, de, p, dp) = integrals(model, &x);
+    let (_, de, _, dp) = integrals(model, &x);
     let (_, g) = split(&x);
     let (ne, np) = (
         de.norm().max(f64::MIN_POSITIVE),
         dp.norm().max(f64::MIN_POSITIVE),
     );
-    let mut r = Residual::zeros();
     let mut j = Jac::zeros();
-    // Periodicity modulo the body turn: S_β φ_T(x₀) − x₀, with ∂/∂x₀ = S_βΦ − I,
-    // ∂/∂T = S_β F(φ_T(x₀)) and ∂/∂β = ξ(S_β φ_T(x₀)); β = 0 without the symmetry.
+    // ∂/∂x₀ = S_βΦ − I, ∂/∂T = S_β F(φ_T(x₀)) and ∂/∂β = ξ(S_β φ_T(x₀)).
     let beta = if prob.turn.is_some() { w[TURN] } else { 0.0 };
     let (end, f_end) = (symmetry::act(beta, &s.end), symmetry::act(beta, &f_end));
     if prob.turn.is_some() {
@@ -306,18 +350,12 @@ fn system<M: Lagrangian + ?Sized>(
             j[(i, TURN)] = xi[i];
         }
     }
-    let gap = end - x;
     for i in 0..6 {
-        r[i] = gap[i];
         for k in 0..6 {
             j[(i, k)] = s.monodromy[(i, k)] - if i == k { 1.0 } else { 0.0 };
         }
         j[(i, 6)] = f_end[i] * prob.scales.t;
     }
-    r[6] = prob.f_ref.dot(&(x - prob.x_ref));
-    r[7] = (e - energy.0) / ne;
-    r[8] = (p - p_psi) / np;
-    r[9] = 0.5 * (g.norm_squared() - 1.0);
     for k in 0..6 {
         j[(6, k)] = prob.f_ref[k];
         j[(7, k)] = de[k] / ne;
@@ -329,25 +367,17 @@ fn system<M: Lagrangian + ?Sized>(
     for k in 0..3 {
         j[(9, 3 + k)] = g[k];
     }
-    // The gauge ξ̂_ref·(x₀ − x_ref) = 0 (the phase of the turn) and p_φ(x₀) = p_φ; without the
-    // symmetry β = 0 and an empty row.
     match &prob.turn {
         Some(turn) => {
-            let (pf, dpf) = symmetry::body_momentum(model, &x);
+            let (_, dpf) = symmetry::body_momentum(model, &x);
             let npf = dpf.norm().max(f64::MIN_POSITIVE);
-            r[10] = turn.xi_ref.dot(&(x - prob.x_ref));
-            r[11] = (pf - turn.p_phi) / npf;
             for k in 0..6 {
                 j[(10, k)] = turn.xi_ref[k];
                 j[(11, k)] = dpf[k] / npf;
             }
         }
-        None => {
-            r[10] = w[TURN];
-            j[(10, TURN)] = 1.0;
-        }
+        None => j[(10, TURN)] = 1.0,
     }
-    r[TOP] = row.residual(w);
     for k in 0..UNKNOWNS {
         j[(TOP, k)] = row.normal[k];
     }
