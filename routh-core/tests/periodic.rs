@@ -4,23 +4,13 @@
 //! monodromy built by finite differences of `simulate_full` and from the growth of perturbations
 //! in long simulations, time reversal, and the period-doubled orbits next to a period doubling.
 
-use crate::common::{elliptic_k, fd_trace, heavy_body as body, HeavyTop};
+use crate::common::{elliptic_k, fd_trace, hanging, heavy_body as body, HeavyTop};
 use routh_core::{
     continue_orbit, lyapunov_family, orbit_crossings, period_doubled_family, periodic_orbit,
     poincare_section, simulate_full, steady_motions, Lagrangian, Matrix3, OrbitEventKind,
-    OrbitOptions, OrbitStability, OrbitStop, RouthError, SectionOptions, SimOptions, SteadyMotion,
-    Vector3,
+    OrbitOptions, OrbitStability, OrbitStop, RouthError, SectionOptions, SimOptions, Vector3,
 };
 use std::f64::consts::PI;
-
-/// The hanging position of `body` at `p_ψ = 0`.
-fn hanging(m: &HeavyTop) -> SteadyMotion {
-    steady_motions(m, 0.0)
-        .unwrap()
-        .into_iter()
-        .find(|s| s.gamma.z < -0.999)
-        .expect("the hanging position is a steady motion")
-}
 
 /// (a) Planar swings of a heavy body about its first principal axis at `p_ψ = 0`: the pendulum
 /// `θ̈ = −(mgl/A) sin θ`, period `4K(sin²(θ₀/2))/ω₀`, no precession.
@@ -57,7 +47,7 @@ fn pendulum_period_is_the_elliptic_integral() {
 #[test]
 fn lyapunov_families_start_on_the_linear_orbits() {
     let m = body(1.0, 2.0, 3.0, 1.5);
-    let s = hanging(&m);
+    let s = hanging(&m, 0.0);
     let freqs = [(1.5f64 / 1.0).sqrt(), (1.5f64 / 2.0).sqrt()];
     for mode in 0..2 {
         let opts = OrbitOptions::default().with_max_orbits(12);
@@ -123,7 +113,7 @@ fn reversed_orbits_are_orbits() {
 #[test]
 fn hyperbolic_multiplier_is_the_growth_of_perturbations() {
     let m = body(1.0, 2.0, 3.0, 1.5);
-    let s = hanging(&m);
+    let s = hanging(&m, 0.0);
     let fam = lyapunov_family(&m, &s, 0, &OrbitOptions::default().with_max_orbits(80)).unwrap();
     let o = fam
         .orbits
@@ -229,7 +219,7 @@ fn continue_orbit_reaches_the_range() {
 #[test]
 fn bad_guesses_are_errors() {
     let m = body(1.0, 2.0, 3.0, 1.5);
-    let s = hanging(&m);
+    let s = hanging(&m, 0.0);
     let o = OrbitOptions::default();
     let steady = periodic_orbit(&m, s.gamma * s.psi_dot, s.gamma, 3.0, &o);
     assert!(
@@ -253,7 +243,7 @@ fn bad_guesses_are_errors() {
     // A resonant start: ω₂/ω₁ = 1/2 exactly for B = 4A is not a resonance of mode 0 (ratio
     // 1/2), but mode 1 has ω₁/ω₂ = 2.
     let r = body(1.0, 4.0, 3.0, 1.0);
-    let e = lyapunov_family(&r, &hanging(&r), 1, &o).unwrap_err();
+    let e = lyapunov_family(&r, &hanging(&r, 0.0), 1, &o).unwrap_err();
     assert!(e.to_string().contains("resonant"), "{e}");
 }
 

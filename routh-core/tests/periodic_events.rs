@@ -6,10 +6,12 @@
 //! integrator or corrector). The swing amplitude where `k = ±1` is found by bisection on that
 //! trace; routh's events must sit there, at any `max_step`, with their own orbit on the family.
 
-use crate::common::{closure_gap, elliptic_k, fd_trace, heavy_body, swing_index, HeavyTop};
+use crate::common::{
+    closure_gap, elliptic_k, fd_trace, hanging, heavy_body, swing_index, HeavyTop,
+};
 use routh_core::{
     lyapunov_family, steady_motions, switch_branch, Matrix3, OrbitEvent, OrbitEventKind,
-    OrbitFamily, OrbitOptions, SteadyMotion, Vector3,
+    OrbitFamily, OrbitOptions, Vector3,
 };
 
 /// The body: `J = diag(1, 1.6, 2.3)`, centre of mass on `e₃`, `mgl = 1` (`U = mgl γ₃`).
@@ -21,14 +23,6 @@ fn body() -> HeavyTop {
         j: Matrix3::from_diagonal(&Vector3::new(J[0], J[1], J[2])),
         mgr: Vector3::new(0.0, 0.0, MGL),
     }
-}
-
-fn hanging(m: &HeavyTop, p_psi: f64) -> SteadyMotion {
-    steady_motions(m, p_psi)
-        .unwrap()
-        .into_iter()
-        .find(|s| s.gamma.z < -0.9)
-        .expect("the hanging steady motion")
 }
 
 /// The energies `−mgl cos θ₀` of the swings about `axis` where `k = target`, for amplitudes up

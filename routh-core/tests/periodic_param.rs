@@ -6,23 +6,15 @@
 //! (not the crate's vector field, integrator or corrector) crosses 1; `periodic_orbit` on the
 //! member models; and the families through the energy at the other end of a family in `p_ψ`.
 
-use crate::common::{elliptic_k, heavy_body as body, swing_index, HeavyTop};
+use crate::common::{elliptic_k, hanging, heavy_body as body, swing_index};
 use routh_core::{
-    continue_orbit_in, lyapunov_family, periodic_orbit, steady_motions, OrbitEventKind,
-    OrbitOptions, OrbitStop, PeriodicOrbit, RouthError, SteadyMotion, Vector3,
+    continue_orbit_in, lyapunov_family, periodic_orbit, OrbitEventKind, OrbitOptions, OrbitStop,
+    PeriodicOrbit, RouthError, Vector3,
 };
 
 /// The turning point `γ = (0, sin θ₀, −cos θ₀)` of the planar swing about `e₁`.
 fn turning(theta0: f64) -> Vector3<f64> {
     Vector3::new(0.0, theta0.sin(), -theta0.cos())
-}
-
-fn hanging(m: &HeavyTop, p_psi: f64) -> SteadyMotion {
-    steady_motions(m, p_psi)
-        .unwrap()
-        .into_iter()
-        .find(|s| s.gamma.z < -0.9)
-        .expect("the hanging steady motion")
 }
 
 /// Whether the orbit's point is a planar swing about `e₁` (ω ∥ e₁, γ ⊥ e₁).

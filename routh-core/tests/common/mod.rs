@@ -4,7 +4,9 @@
 
 pub use test_models::HeavyTop;
 
-use routh_core::{simulate_full, Matrix3, PeriodicOrbit, SimOptions, Vector3};
+use routh_core::{
+    simulate_full, steady_motions, Matrix3, PeriodicOrbit, SimOptions, SteadyMotion, Vector3,
+};
 
 /// A heavy body `J = diag(a, b, c)` with its centre of mass on the third axis (`U = mgl γ₃`).
 pub fn heavy_body(a: f64, b: f64, c: f64, mgl: f64) -> HeavyTop {
@@ -148,4 +150,14 @@ pub fn fd_trace<M: routh_core::Lagrangian>(m: &M, w: Vector3<f64>, g: Vector3<f6
     // The missing `γᵀΦ_γγγ` is 1: `|γ|²` is a Casimir, so `(0, γ)` is a left eigenvector of Φ
     // with eigenvalue 1 on an orbit (`γ(T) = γ₀`).
     trace + 1.0
+}
+
+/// The hanging steady motion of a heavy body with its centre of mass on `e₃` at `p_ψ`
+/// (`γ₃ < −0.9`).
+pub fn hanging(m: &HeavyTop, p_psi: f64) -> SteadyMotion {
+    steady_motions(m, p_psi)
+        .unwrap()
+        .into_iter()
+        .find(|s| s.gamma.z < -0.9)
+        .expect("the hanging steady motion")
 }
