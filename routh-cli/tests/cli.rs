@@ -1,27 +1,15 @@
 //! The `routh` binary run as a user would, its numbers checked against closed forms of the
 //! Lagrange top (A₁ = 1, C = 1.25, mgl = 1 in examples/models/heavy_top.toml).
 
-use std::process::{Command, Output};
+mod common;
+
+use common::{routh, stderr, stdout};
+use std::process::Output;
 
 const TOP: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/../examples/models/heavy_top.toml"
 );
-
-fn routh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
-        .args(args)
-        .output()
-        .expect("the routh binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 fn json(o: &Output) -> serde_json::Value {
     assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(o));

@@ -4,7 +4,9 @@
 //! m g l = 1.5, and the period-doubled and switched orbits integrated again here by a plain RK4
 //! of the Euler–Poisson equations.
 
-use std::process::{Command, Output};
+mod common;
+
+use common::{routh, stderr, stdout};
 
 const BODY: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -21,21 +23,6 @@ const ASYMMETRIC: &str = concat!(
 /// m g l and J₁ of the swinging body: ω₀² = mgl/J₁.
 const MGL: f64 = 1.5;
 const J1: f64 = 1.0;
-
-fn routh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_routh"))
-        .args(args)
-        .output()
-        .expect("the routh binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 fn ok(args: &[&str]) -> String {
     let o = routh(args);
