@@ -10,6 +10,7 @@ mod commands;
 mod diagram;
 mod error;
 mod files;
+mod interrupt;
 mod nonlinear;
 mod orbit_out;
 mod orbits;
@@ -41,7 +42,12 @@ fn run(cli: &Cli) -> Result<String, CliError> {
 fn main() {
     // Usage errors: clap prints them and exits with code 2.
     let cli = Cli::parse();
-    match run(&cli) {
+    interrupt::install();
+    let result = run(&cli);
+    if interrupt::requested() {
+        interrupt::end();
+    }
+    match result {
         Ok(text) => {
             let mut out = std::io::stdout().lock();
             // A closed pipe (`| head`) is not an error worth a message.

@@ -50,7 +50,11 @@ fn correct(
 /// Runs `routh orbit` and returns what it prints.
 pub fn orbit(a: &OrbitArgs) -> Result<String, CliError> {
     let model = load(&a.model)?;
-    let o = correct(&model, a.omega, a.gamma, a.period, &OrbitOptions::default())?;
+    let opts = OrbitOptions {
+        control: crate::interrupt::control(),
+        ..OrbitOptions::default()
+    };
+    let o = correct(&model, a.omega, a.gamma, a.period, &opts)?;
     if a.output.json {
         return Ok(orbit_out::orbit_json(&o)?);
     }
@@ -286,6 +290,7 @@ fn count(n: usize, what: &str) -> String {
 pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let model = load(&a.model)?;
     let mut opts = OrbitOptions::default().with_max_orbits(usize::from(a.max_orbits));
+    opts.control = crate::interrupt::control();
     if let Some((lo, hi)) = a.energy {
         opts = opts.with_energy_bounds(lo, hi);
     }
@@ -413,6 +418,7 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
 pub fn section(a: &Section) -> Result<String, CliError> {
     let model = load(&a.model)?;
     let mut opts = SectionOptions::default().with_size(usize::from(a.orbits), a.crossings as usize);
+    opts.control = crate::interrupt::control();
     if let Some(n) = a.normal {
         opts = opts.with_normal(Vector3::from(n));
     }

@@ -1003,3 +1003,45 @@ fn the_python_tests_data_is_what_the_cli_prints() {
         );
     }
 }
+
+/// Ctrl-C (SIGINT, sent with `kill`) during a section that runs for minutes (2000 orbits of 5000
+/// crossings): the run ends with exit code 130 and "interrupted",
+/// writes no figure and leaves no temporary file; the time bound is a loose one for a loaded
+/// machine, the analyses stop within an integration step.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_ends_a_long_run_at_once_and_writes_nothing() {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    let dir = std::env::temp_dir().join(format!("routh-cli-sigint-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("s.svg");
+    let svg_arg = svg.to_str().unwrap().to_string();
+    let runs: [Vec<&str>; 1] = [vec![
+        "section", BODY, "-p", "0", "-e", "-1", "--orbits", "2000", "--crossings", "5000",
+        "--svg", &svg_arg,
+    ]];
+    for args in runs {
+        let child = Command::new(env!("CARGO_BIN_EXE_routh"))
+            .args(&args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(Duration::from_millis(700));
+        let sent = Command::new("kill")
+            .args(["-INT", &child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(sent.success());
+        let t0 = Instant::now();
+        let out = child.wait_with_output().unwrap();
+        let waited = t0.elapsed();
+        assert_eq!(out.status.code(), Some(130), "{args:?}: {}", stderr(&out));
+        assert!(stderr(&out).contains("interrupted"), "{}", stderr(&out));
+        assert!(waited < Duration::from_secs(5), "{args:?}: {waited:?}");
+        let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+        assert!(left.is_empty(), "{args:?} left {left:?}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

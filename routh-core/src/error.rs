@@ -128,6 +128,10 @@ pub enum RouthError {
         /// The time reached.
         t: f64,
     },
+    /// The caller stopped the analysis (its [`RunControl`](crate::RunControl)'s cancel flag:
+    /// Ctrl-C) before it had a result.
+    #[error("interrupted: the analysis was cancelled by its caller")]
+    Interrupted,
     /// An iterative method did not converge.
     #[error("no convergence in {what} after {iterations} iterations (residual {residual:e})")]
     NoConvergence {

@@ -18,6 +18,7 @@ pub use nalgebra::{Complex, Matrix3, Vector3};
 pub mod certify;
 mod circle;
 mod classified;
+mod control;
 mod error;
 pub mod export;
 pub mod families;
@@ -43,6 +44,7 @@ mod zero;
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
 pub use circle::{classify_circle, classify_circle_with, CircleReport, CircleStability};
 pub use classified::{classified_steady_motions, classify_at, stability_threshold, Classified};
+pub use control::{Progress, RunControl};
 pub use error::RouthError;
 #[allow(deprecated)]
 pub use families::BranchPoint;

@@ -17,6 +17,7 @@ mod invariance;
 mod nonlinear;
 mod periodic;
 mod periodic_bodies;
+mod periodic_control;
 mod periodic_events;
 mod periodic_param;
 mod runtime_properties;

@@ -253,7 +253,7 @@ fn switch_branch_follows_the_crossing_family() {
         bp,
         &OrbitOptions {
             max_orbits: 30,
-            ..opts
+            ..opts.clone()
         },
     )
     .unwrap();

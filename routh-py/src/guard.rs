@@ -87,6 +87,19 @@ where
     }
 }
 
+/// Runs `f` with a [`routh::RunControl`] whose cancel flag a Ctrl-C sets (see [`cooperative`]):
+/// an analysis of the core that takes the control in its options stops at its next integration
+/// step and the `KeyboardInterrupt` is raised.
+pub fn cancellable<R, F>(py: Python<'_>, f: F) -> PyResult<R>
+where
+    F: FnOnce(routh::RunControl) -> R + Send,
+    R: Send,
+{
+    let cancel = std::sync::Arc::new(AtomicBool::new(false));
+    let control = routh::RunControl::default().with_cancel(cancel.clone());
+    cooperative(py, &cancel, move || f(control))
+}
+
 /// Runs `f` on a thread of its own while the calling thread, with the GIL released, looks for
 /// signals every 50 ms: on Ctrl-C the signal's exception (`KeyboardInterrupt`) is raised at
 /// once and `f` (which cannot be stopped: it owns everything it uses) finishes in the

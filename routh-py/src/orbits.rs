@@ -5,8 +5,8 @@
 //! `OrbitFamily`, `OrbitEvent`, `OrbitParameterFamily`, `PoincareSection` (numpy arrays,
 //! lower-case strings).
 
-use crate::convert::{helper, model_err, model_err_unplaced, routh_err, vec3, vector3};
-use crate::guard::detached;
+use crate::convert::{helper, model_err, model_err_unplaced, routh_err, vec3, vector3, Real};
+use crate::guard::{cancellable, interruptible};
 use crate::model::Model;
 use crate::results::SteadyMotion;
 use crate::trajectory::Trajectory;
@@ -365,13 +365,16 @@ fn rows<const N: usize>(py: Python<'_>, rows: &[[f64; N]]) -> PyResult<Py<PyAny>
 #[allow(clippy::too_many_arguments)]
 fn orbit_options(
     max_orbits: Option<usize>,
-    energy_bounds: Option<(f64, f64)>,
-    max_step: Option<f64>,
-    initial_amplitude: Option<f64>,
-    rtol: Option<f64>,
-    atol: Option<f64>,
-    newton_tol: Option<f64>,
+    energy_bounds: Option<(Real, Real)>,
+    max_step: Option<Real>,
+    initial_amplitude: Option<Real>,
+    rtol: Option<Real>,
+    atol: Option<Real>,
+    newton_tol: Option<Real>,
 ) -> OrbitOptions {
+    let energy_bounds = energy_bounds.map(|(a, b)| (a.0, b.0));
+    let [max_step, initial_amplitude, rtol, atol, newton_tol] =
+        [max_step, initial_amplitude, rtol, atol, newton_tol].map(|v| v.map(|r| r.0));
     let mut o = OrbitOptions::default();
     if let Some(n) = max_orbits {
         o.max_orbits = n;
@@ -403,17 +406,21 @@ impl Model {
         py: Python<'_>,
         event: &OrbitEvent,
         max_orbits: Option<usize>,
-        max_step: Option<f64>,
+        max_step: Option<Real>,
         start: fn(
             &routh::Model,
             &routh::OrbitEvent,
             &routh::OrbitOptions,
         ) -> Result<routh::OrbitFamily, routh::RouthError>,
     ) -> PyResult<OrbitFamily> {
-        let opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
+        let mut opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
         let m = self.get()?;
         let e = event.inner.clone();
-        let f = detached(py, || start(&m, &e, &opts))?.map_err(|e| routh_err(py, &e))?;
+        let f = cancellable(py, |c| {
+            opts.control = c;
+            start(&m, &e, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         OrbitFamily::new(py, &f)
     }
 }
@@ -432,17 +439,20 @@ impl Model {
         py: Python<'_>,
         omega: &Bound<'_, PyAny>,
         gamma: &Bound<'_, PyAny>,
-        period: f64,
-        rtol: Option<f64>,
-        atol: Option<f64>,
-        newton_tol: Option<f64>,
+        period: Real,
+        rtol: Option<Real>,
+        atol: Option<Real>,
+        newton_tol: Option<Real>,
     ) -> PyResult<PeriodicOrbit> {
         let w = vector3("omega", omega)?;
         let g = vector3("gamma", gamma)?;
-        let opts = orbit_options(None, None, None, None, rtol, atol, newton_tol);
+        let mut opts = orbit_options(None, None, None, None, rtol, atol, newton_tol);
         let m = self.get()?;
-        let o = detached(py, || routh::periodic_orbit(&m, w, g, period, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let o = cancellable(py, |c| {
+            opts.control = c;
+            routh::periodic_orbit(&m, w, g, period.0, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         Ok(PeriodicOrbit::new(py, &o))
     }
 
@@ -461,14 +471,14 @@ impl Model {
         motion: &SteadyMotion,
         mode: usize,
         max_orbits: Option<usize>,
-        energy_bounds: Option<(f64, f64)>,
-        max_step: Option<f64>,
-        initial_amplitude: Option<f64>,
-        rtol: Option<f64>,
-        atol: Option<f64>,
-        newton_tol: Option<f64>,
+        energy_bounds: Option<(Real, Real)>,
+        max_step: Option<Real>,
+        initial_amplitude: Option<Real>,
+        rtol: Option<Real>,
+        atol: Option<Real>,
+        newton_tol: Option<Real>,
     ) -> PyResult<OrbitFamily> {
-        let opts = orbit_options(
+        let mut opts = orbit_options(
             max_orbits,
             energy_bounds,
             max_step,
@@ -479,8 +489,11 @@ impl Model {
         );
         let m = self.get()?;
         let s = motion.inner.clone();
-        let f = detached(py, || routh::lyapunov_family(&m, &s, mode, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let f = cancellable(py, |c| {
+            opts.control = c;
+            routh::lyapunov_family(&m, &s, mode, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         OrbitFamily::new(py, &f)
     }
 
@@ -492,18 +505,22 @@ impl Model {
         &self,
         py: Python<'_>,
         orbit: &PeriodicOrbit,
-        energy_range: (f64, f64),
+        energy_range: (Real, Real),
         max_orbits: Option<usize>,
-        max_step: Option<f64>,
-        rtol: Option<f64>,
-        atol: Option<f64>,
-        newton_tol: Option<f64>,
+        max_step: Option<Real>,
+        rtol: Option<Real>,
+        atol: Option<Real>,
+        newton_tol: Option<Real>,
     ) -> PyResult<OrbitFamily> {
-        let opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
+        let mut opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
         let m = self.get()?;
         let o = orbit.inner.clone();
-        let f = detached(py, || routh::continue_orbit(&m, &o, energy_range, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let range = (energy_range.0 .0, energy_range.1 .0);
+        let f = cancellable(py, |c| {
+            opts.control = c;
+            routh::continue_orbit(&m, &o, range, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         OrbitFamily::new(py, &f)
     }
 
@@ -527,19 +544,21 @@ impl Model {
         py: Python<'_>,
         orbit: &PeriodicOrbit,
         name: &str,
-        s_range: (f64, f64),
+        s_range: (Real, Real),
         max_orbits: Option<usize>,
-        max_step: Option<f64>,
-        rtol: Option<f64>,
-        atol: Option<f64>,
-        newton_tol: Option<f64>,
+        max_step: Option<Real>,
+        rtol: Option<Real>,
+        atol: Option<Real>,
+        newton_tol: Option<Real>,
     ) -> PyResult<OrbitParameterFamily> {
-        let opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
+        let mut opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
         let m = self.get()?;
         let o = orbit.inner.clone();
+        let s_range = (s_range.0 .0, s_range.1 .0);
         let f = if name == "p_psi" || name == "momentum" {
             let s0 = o.p_psi;
-            detached(py, || {
+            cancellable(py, |c| {
+                opts.control = c;
                 routh::continue_orbit_in(|s| (m.clone(), s), &o, s0, s_range, &opts)
             })?
         } else {
@@ -555,7 +574,8 @@ impl Model {
                 }
             };
             let p = o.p_psi;
-            detached(py, || {
+            cancellable(py, |c| {
+                opts.control = c;
                 // `with` of a finite value of a scalar parameter does not fail; a NaN p_ψ would
                 // stop the family with an error naming s.
                 let family = |s: f64| match m.with(name, s) {
@@ -577,7 +597,7 @@ impl Model {
         py: Python<'_>,
         event: &OrbitEvent,
         max_orbits: Option<usize>,
-        max_step: Option<f64>,
+        max_step: Option<Real>,
     ) -> PyResult<OrbitFamily> {
         self.family_at_event(
             py,
@@ -604,7 +624,7 @@ impl Model {
         py: Python<'_>,
         event: &OrbitEvent,
         max_orbits: Option<usize>,
-        max_step: Option<f64>,
+        max_step: Option<Real>,
     ) -> PyResult<OrbitFamily> {
         self.family_at_event(py, event, max_orbits, max_step, routh::switch_branch)
     }
@@ -615,8 +635,8 @@ impl Model {
     fn poincare_section(
         &self,
         py: Python<'_>,
-        p_psi: f64,
-        energy: f64,
+        p_psi: Real,
+        energy: Real,
         normal: Option<&Bound<'_, PyAny>>,
         orbits: usize,
         crossings: usize,
@@ -626,8 +646,11 @@ impl Model {
             opts = opts.with_normal(vector3("normal", n)?);
         }
         let m = self.get()?;
-        let s = detached(py, || routh::poincare_section(&m, p_psi, energy, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let s = cancellable(py, |c| {
+            opts.control = c;
+            routh::poincare_section(&m, p_psi.0, energy.0, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         let points = s
             .orbits
             .iter()
@@ -666,8 +689,11 @@ impl Model {
         }
         let m = self.get()?;
         let o = orbit.inner.clone();
-        let pts = detached(py, || routh::orbit_crossings(&m, &o, &opts))?
-            .map_err(|e| routh_err(py, &e))?;
+        let pts = cancellable(py, |c| {
+            opts.control = c;
+            routh::orbit_crossings(&m, &o, &opts)
+        })?
+        .map_err(|e| routh_err(py, &e))?;
         rows(py, &pts)
     }
 
@@ -677,7 +703,8 @@ impl Model {
     fn orbit_path(&self, py: Python<'_>, orbit: &PeriodicOrbit, n: usize) -> PyResult<Trajectory> {
         let m = self.get()?;
         let o = orbit.inner.clone();
-        let t = detached(py, || routh::orbit_path(&m, &o, n))?.map_err(|e| routh_err(py, &e))?;
+        let t = interruptible(py, move || routh::orbit_path(&m, &o, n))?
+            .map_err(|e| routh_err(py, &e))?;
         Ok(Trajectory::new(py, &t))
     }
 }

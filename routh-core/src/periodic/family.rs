@@ -152,13 +152,29 @@ impl<M: Routhian> Tracer<'_, M> {
         let first_w = start.solved.w;
         let mut cur = start;
         let small = 0.5 * o.initial_amplitude;
+        // The caller's cancel flag ends the family with what it has (also when it stops an
+        // integration inside a step).
+        macro_rules! or_interrupted {
+            ($e:expr) => {
+                match $e {
+                    Err(RouthError::Interrupted) => {
+                        return Ok((nodes, events, OrbitStop::Interrupted))
+                    }
+                    r => r?,
+                }
+            };
+        }
         loop {
+            o.control.report(nodes.len(), budget);
+            if o.control.is_cancelled() {
+                return Ok((nodes, events, OrbitStop::Interrupted));
+            }
             if nodes.len() >= budget {
                 return Ok((nodes, events, OrbitStop::MaxOrbits));
             }
-            let prob = self.problem_at(&cur.solved.w)?;
+            let prob = or_interrupted!(self.problem_at(&cur.solved.w));
             let (w, t) = (cur.solved.w, cur.tangent);
-            let outcome = path.step(
+            let outcome = or_interrupted!(path.step(
                 &w,
                 &t,
                 f64::INFINITY,
@@ -193,7 +209,11 @@ impl<M: Routhian> Tracer<'_, M> {
                         Check::Shorten
                     }
                 },
-            )?;
+            ));
+            if o.control.is_cancelled() {
+                // A step cut short by the flag is no stall.
+                return Ok((nodes, events, OrbitStop::Interrupted));
+            }
             let (next, h) = match outcome {
                 Outcome::Accepted { point, h } => (point.value, h),
                 Outcome::Stopped(point) => (point.value, path.h()),
@@ -213,15 +233,17 @@ impl<M: Routhian> Tracer<'_, M> {
                 let e = self.value(&next);
                 if e < lo || e > hi {
                     let bound = if e < lo { lo } else { hi };
-                    if let Some(end) = self.at_bound(&cur, &next, bound)? {
+                    if let Some(end) = or_interrupted!(self.at_bound(&cur, &next, bound)) {
                         let sigma = (end.solved.w - cur.solved.w).norm();
-                        events.extend(self.events(&cur, &end, sigma)?);
+                        let found = or_interrupted!(self.events(&cur, &end, sigma));
+                        events.extend(found);
                         nodes.push(end);
                     }
                     return Ok((nodes, events, self.bound_stop(bound)));
                 }
             }
-            events.extend(self.events(&cur, &next, h)?);
+            let found = or_interrupted!(self.events(&cur, &next, h));
+            events.extend(found);
             nodes.push(next.clone());
             let x: Vector6<f64> = next.solved.w.fixed_rows::<6>(0).into();
             if next.orbit.period > o.max_period_ratio * self.first_period {
@@ -251,6 +273,30 @@ impl<M: Routhian> Tracer<'_, M> {
             cur = next;
         }
     }
+}
+
+/// Refuses a steady motion found on another model (another parameter value): its energy and
+/// cyclic momentum must be this model's at its state `xs = (ψ̇γ, γ)`.
+fn of_this_model<M: Routhian>(
+    model: &M,
+    steady: &SteadyMotion,
+    xs: &Vector6<f64>,
+) -> Result<(), RouthError> {
+    let (w, g) = split(xs);
+    let (e, p) = (model.energy(&w, &g), model.cyclic_momentum(&w, &g));
+    let off = |a: f64, b: f64| !((a - b).abs() <= 1e-8 * 1f64.max(a.abs()).max(b.abs()));
+    if off(e, steady.energy) || off(p, steady.p_psi) {
+        return Err(RouthError::InvalidOption {
+            what: "steady",
+            reason: format!(
+                "not a steady motion of this model: at its γ and ψ̇ this model has E = {e}, \
+                 p_ψ = {p}, the steady motion says E = {}, p_ψ = {} (found on another model or \
+                 parameter value? take it from this model's steady_motions)",
+                steady.energy, steady.p_psi
+            ),
+        });
+    }
+    Ok(())
 }
 
 /// The frequencies `ω₁ ≥ ω₂ > 0` of an elliptic steady motion (`f₂`'s roots `±iω_k`).
@@ -321,6 +367,20 @@ pub fn lyapunov_family<M: Routhian>(
             reason: format!("0 (ω₁) or 1 (ω₂), got {mode}"),
         });
     }
+    let gamma = crate::validate::unit_gamma("steady.gamma", &steady.gamma)?;
+    let xs = join(&(gamma * steady.psi_dot), &gamma);
+    of_this_model(model, steady, &xs)?;
+    let smallest = 1e-9 * 1f64.max(xs.norm());
+    if opts.initial_amplitude < smallest {
+        return Err(RouthError::InvalidOption {
+            what: "OrbitOptions::initial_amplitude",
+            reason: format!(
+                "{:e} is too small: the first orbit would not be told from the steady motion \
+                 (at least {smallest:e})",
+                opts.initial_amplitude
+            ),
+        });
+    }
     let w = frequencies(model, steady)?;
     let (wk, wj) = (w[mode], w[1 - mode]);
     let ratio = wj / wk;
@@ -337,8 +397,6 @@ pub fn lyapunov_family<M: Routhian>(
             ),
         });
     }
-    let gamma = crate::validate::unit_gamma("steady.gamma", &steady.gamma)?;
-    let xs = join(&(gamma * steady.psi_dot), &gamma);
     let (_, a) = field_and_jacobian(model, &xs)?;
     let u = swing.unwrap_or_else(|| mode_vector(&a, wk));
     let period = 2.0 * std::f64::consts::PI / wk;
@@ -422,6 +480,19 @@ pub(super) fn restart<M: Routhian>(
     let x = check_guess(model, &orbit.omega0, &orbit.gamma0, orbit.period)?;
     let e = model.energy(&orbit.omega0, &x.fixed_rows::<3>(3).into());
     let p = orbit.p_psi;
+    let not_an_orbit = |why: String| RouthError::InvalidOption {
+        what: "orbit",
+        reason: format!(
+            "not a periodic orbit of this model: {why}; correct a guess with periodic_orbit first"
+        ),
+    };
+    let de = (e - orbit.energy).abs() / 1f64.max(e.abs());
+    if !(de <= START_TOL) {
+        return Err(not_an_orbit(format!(
+            "this model gives its start the energy {e} where the orbit says {}",
+            orbit.energy
+        )));
+    }
     let scales = Scales {
         t: orbit.period,
         e: 1f64.max(e.abs()),
@@ -429,15 +500,29 @@ pub(super) fn restart<M: Routhian>(
     let prob = Problem::at(model, &x, p, scales)?;
     let row = scales.energy_row(e);
     let w = scales.pack_turned(&x, orbit.period, e, orbit.body_turn);
-    match correct(Slot::Energy(model), &prob, &row, &w, opts)? {
-        Ok(s) => Ok((s, scales)),
-        Err(best) => Err(RouthError::NoConvergence {
-            what: "the starting orbit (not a periodic orbit)",
-            iterations: opts.max_iter,
-            residual: best,
-        }),
+    let s = match correct(Slot::Energy(model), &prob, &row, &w, opts)? {
+        Ok(s) => s,
+        Err(best) => {
+            return Err(not_an_orbit(format!(
+                "its correction does not converge (residual {best:e} after {} steps)",
+                opts.max_iter
+            )))
+        }
+    };
+    // The correction of an orbit moves it by its own error (1e−9 by default); one that moves
+    // further was not an orbit of this model, and the family would be another orbit's.
+    let moved = (s.w.fixed_rows::<6>(0) - x).norm() / 1f64.max(x.norm());
+    let dt = (scales.period(&s.w) - orbit.period).abs() / orbit.period;
+    if !(moved <= START_TOL && dt <= START_TOL) {
+        return Err(not_an_orbit(format!(
+            "corrected, its start moves by {moved:.2e} and its period by {dt:.2e} (relative)"
+        )));
     }
+    Ok((s, scales))
 }
+
+/// How far (relative) the correction may move an orbit a family is continued from.
+const START_TOL: f64 = 1e-5;
 
 /// Follows the family through `orbit` at its `p_ψ` over `energy_range`, in both directions, by
 /// pseudo-arclength (through folds), locating folds, branch points and period doublings

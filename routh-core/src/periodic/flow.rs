@@ -137,6 +137,7 @@ pub(crate) fn shoot<M: Lagrangian + ?Sized>(
         h_init: None,
         max_steps: opts.max_steps,
         dense: false,
+        control: Some(&opts.control),
     };
     let rhs = |_t: f64, y: &SVector<f64, DIM>| -> Result<SVector<f64, DIM>, RouthError> {
         let x: Vector6<f64> = y.fixed_rows::<6>(0).into();
@@ -190,6 +191,7 @@ pub(crate) fn flow_end<M: Lagrangian + ?Sized>(
         h_init: None,
         max_steps: opts.max_steps,
         dense: false,
+        control: Some(&opts.control),
     };
     let mut end = *x0;
     dop853::integrate(

@@ -53,6 +53,9 @@ pub use symmetry::axial_symmetry;
 
 use crate::RouthError;
 
+/// The smallest relative tolerance of the integration and the corrector (100 roundoffs).
+const MIN_TOL: f64 = 100.0 * f64::EPSILON;
+
 /// Settings of the periodic-orbit analyses ([`periodic_orbit`], [`lyapunov_family`],
 /// [`continue_orbit`]). `Default` gives tolerances for about 9 correct digits of the period and
 /// the multipliers.
@@ -94,6 +97,9 @@ pub struct OrbitOptions {
     pub event_tol: f64,
     /// Budget of integration steps per period.
     pub max_steps: usize,
+    /// Cancellation and progress (not a setting: not serialised, not compared).
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub control: crate::RunControl,
 }
 
 impl Default for OrbitOptions {
@@ -114,6 +120,7 @@ impl Default for OrbitOptions {
             resonance_tol: 1e-3,
             event_tol: 1e-9,
             max_steps: 100_000,
+            control: crate::RunControl::default(),
         }
     }
 }
@@ -165,6 +172,21 @@ impl OrbitOptions {
                 what: "OrbitOptions::rtol",
                 reason: format!("must be below 1, got {}", self.rtol),
             });
+        }
+        // Below a hundred roundoffs no integration or correction can deliver the tolerance: the
+        // corrector would end in "no convergence" instead.
+        for (what, v) in [
+            ("OrbitOptions::rtol", self.rtol),
+            ("OrbitOptions::newton_tol", self.newton_tol),
+        ] {
+            if v < MIN_TOL {
+                return Err(RouthError::InvalidOption {
+                    what,
+                    reason: format!(
+                        "{v:e} is below what double precision delivers: at least {MIN_TOL:e}"
+                    ),
+                });
+            }
         }
         if self.min_step > self.max_step {
             return Err(RouthError::InvalidOption {
@@ -405,6 +427,9 @@ pub enum OrbitStop {
         /// The end reached.
         s: f64,
     },
+    /// The caller stopped it ([`OrbitOptions::control`]'s cancel flag: Ctrl-C); the orbits
+    /// computed before are kept.
+    Interrupted,
 }
 
 impl fmt::Display for OrbitStop {
@@ -425,6 +450,7 @@ impl fmt::Display for OrbitStop {
                 write!(f, "the continuation stalled at E = {energy}")
             }
             OrbitStop::ParameterBound { s } => write!(f, "reached the parameter bound s = {s}"),
+            OrbitStop::Interrupted => f.write_str("interrupted by the caller"),
         }
     }
 }

@@ -10,6 +10,7 @@
 
 use nalgebra::{Vector3, Vector6};
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::flow::{field, join, split};
 use super::PeriodicOrbit;
@@ -18,7 +19,15 @@ use crate::sim::dop853::{self, Accepted, Config};
 use crate::validate::check_finite;
 use crate::{Lagrangian, RouthError};
 
-/// Settings of a Poincaré section.
+/// The most orbits of one section.
+pub(crate) const MAX_ORBITS: usize = 100_000;
+/// The most crossings of one orbit of a section (at 24 bytes each).
+pub(crate) const MAX_CROSSINGS: usize = 10_000_000;
+/// The most crossings of a whole section, `orbits × crossings` (about 240 MB).
+pub(crate) const MAX_POINTS: usize = 10_000_000;
+
+/// Settings of a Poincaré section: at most 10⁵ orbits of at most 10⁷ crossings, and at most 10⁷
+/// crossings in all ([`poincare_section`]).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SectionOptions {
@@ -34,6 +43,9 @@ pub struct SectionOptions {
     pub atol: f64,
     /// Integration steps allowed per crossing (an orbit that stops crossing ends there).
     pub steps_per_crossing: usize,
+    /// Cancellation and progress (not a setting: not serialised, not compared).
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub control: crate::RunControl,
 }
 
 impl Default for SectionOptions {
@@ -45,6 +57,7 @@ impl Default for SectionOptions {
             rtol: 1e-10,
             atol: 1e-12,
             steps_per_crossing: 2000,
+            control: crate::RunControl::default(),
         }
     }
 }
@@ -64,8 +77,9 @@ impl SectionOptions {
 
     fn validate(&self) -> Result<Vector3<f64>, RouthError> {
         check_finite("SectionOptions::normal", self.normal.as_slice())?;
-        let n = self.normal.norm();
-        if n == 0.0 || !n.is_finite() {
+        // The largest component, not the length: |n|² of 1e160·e₁ overflows and of 1e−200·e₁
+        // underflows, and both are the plane of e₁.
+        if self.normal.amax() == 0.0 {
             return Err(RouthError::InvalidOption {
                 what: "SectionOptions::normal",
                 reason: "must be a non-zero vector".into(),
@@ -86,6 +100,25 @@ impl SectionOptions {
             return Err(RouthError::InvalidOption {
                 what: "SectionOptions::crossings",
                 reason: "must be at least 1".into(),
+            });
+        }
+        if self.orbits == 0 {
+            return Err(RouthError::InvalidOption {
+                what: "SectionOptions::orbits",
+                reason: "must be at least 1".into(),
+            });
+        }
+        if self.orbits > MAX_ORBITS || self.crossings > MAX_CROSSINGS {
+            return Err(RouthError::InvalidOption {
+                what: if self.orbits > MAX_ORBITS {
+                    "SectionOptions::orbits"
+                } else {
+                    "SectionOptions::crossings"
+                },
+                reason: format!(
+                    "at most {MAX_ORBITS} orbits of at most {MAX_CROSSINGS} crossings, got {} orbits of {} crossings",
+                    self.orbits, self.crossings
+                ),
             });
         }
         // Scale-free: 1e160·e₁ and 1e-200·e₁ are the same plane.
@@ -162,8 +195,38 @@ pub(crate) fn section_starts<M: Lagrangian + ?Sized>(
     normal: &Vector3<f64>,
 ) -> Vec<(Vector3<f64>, Vector3<f64>)> {
     let n = normal.normalize();
-    let (a, b) = frame(&n);
-    let grid = 48usize;
+    // A grid of 48² candidates, finer until it holds `count` starts (a level whose motions
+    // cover a small part of the plane) or has 4·count candidates or more.
+    let mut grid = 48usize;
+    loop {
+        let found = starts_on_grid(model, p_psi, energy, &n, grid);
+        if found.len() >= count || grid * grid >= 4 * count || grid >= 4096 {
+            return thinned(found, count);
+        }
+        grid *= 2;
+    }
+}
+
+/// At most `count` of `found`, spread evenly over it.
+fn thinned<T: Copy>(found: Vec<T>, count: usize) -> Vec<T> {
+    if found.len() <= count {
+        return found;
+    }
+    let step = found.len() as f64 / count as f64;
+    (0..count)
+        .map(|i| found[((i as f64 + 0.5) * step) as usize])
+        .collect()
+}
+
+/// The starts of [`section_starts`] on a `grid × grid` lattice of `(θ, α)`.
+fn starts_on_grid<M: Lagrangian + ?Sized>(
+    model: &M,
+    p_psi: f64,
+    energy: f64,
+    n: &Vector3<f64>,
+    grid: usize,
+) -> Vec<(Vector3<f64>, Vector3<f64>)> {
+    let (a, b) = frame(n);
     // α's range from the energy above the potential's least value on the circle.
     let mut umin = f64::INFINITY;
     let mut jmin = f64::INFINITY;
@@ -209,13 +272,7 @@ pub(crate) fn section_starts<M: Lagrangian + ?Sized>(
             }
         }
     }
-    if found.len() <= count {
-        return found;
-    }
-    let step = found.len() as f64 / count as f64;
-    (0..count)
-        .map(|i| found[((i as f64 + 0.5) * step) as usize])
-        .collect()
+    found
 }
 
 /// Integrates one orbit and records its upward crossings of `γ·n = 0`, until `max` crossings or
@@ -241,6 +298,7 @@ fn crossings<M: Lagrangian + Sync + ?Sized>(
             .saturating_mul(max)
             .saturating_add(1000),
         dense: true,
+        control: Some(&opts.control),
     };
     let mut points = Vec::new();
     let mut times = Vec::new();
@@ -302,6 +360,15 @@ pub fn poincare_section<M: Lagrangian + Sync>(
     check_finite("p_psi", &[p_psi])?;
     check_finite("energy", &[energy])?;
     let n = opts.validate()?;
+    if opts.orbits.saturating_mul(opts.crossings) > MAX_POINTS {
+        return Err(RouthError::InvalidOption {
+            what: "SectionOptions::crossings",
+            reason: format!(
+                "{} orbits × {} crossings is over the budget of {MAX_POINTS} crossings of one section (about 240 MB): ask for fewer",
+                opts.orbits, opts.crossings
+            ),
+        });
+    }
     let starts = section_starts(model, p_psi, energy, opts.orbits, &n);
     if starts.is_empty() {
         return Err(RouthError::InvalidOption {
@@ -312,11 +379,15 @@ pub fn poincare_section<M: Lagrangian + Sync>(
             ),
         });
     }
+    let done = AtomicUsize::new(0);
+    let total = starts.len();
     let orbits = starts
         .par_iter()
         .map(|(w, g)| {
             let (points, _, stop) =
                 crossings(model, w, g, &n, opts.crossings, f64::MAX / 4.0, opts);
+            opts.control
+                .report(done.fetch_add(1, Ordering::Relaxed) + 1, total);
             SectionOrbit {
                 omega0: *w,
                 gamma0: *g,
@@ -325,6 +396,7 @@ pub fn poincare_section<M: Lagrangian + Sync>(
             }
         })
         .collect();
+    opts.control.check()?;
     Ok(PoincareSection {
         p_psi,
         energy,

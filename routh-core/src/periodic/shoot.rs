@@ -524,6 +524,7 @@ fn plane_returns<M: Lagrangian + ?Sized>(
         h_init: None,
         max_steps: opts.max_steps,
         dense: true,
+        control: Some(&opts.control),
     };
     let turned = |x: &Vector6<f64>| -> (Vector6<f64>, f64) {
         match prob.turn {
@@ -618,12 +619,27 @@ pub(crate) fn check_guess<M: Lagrangian + ?Sized>(
     crate::validate::check_kinetic(model, &gamma)?;
     let x = join(omega, &gamma);
     let f = field(model, &x)?;
-    if f.norm() * period <= 1e-8 * 1f64.max(x.norm()) {
+    check_finite("the vector field at the guess", f.as_slice())?;
+    // Largest components, not lengths (whose squares overflow at |ω| = 1e200).
+    let scale = 1f64.max(x.amax());
+    let moved = f.amax() * period;
+    if moved <= 1e-8 * scale {
+        // A state that does not move at all is a steady motion; one that moves, but by almost
+        // nothing over the period asked, was given too short a period.
+        if f.amax() <= 1e-10 * scale {
+            return Err(RouthError::InvalidOption {
+                what: "omega_guess, gamma_guess",
+                reason: "the guess is a steady motion (the state does not move); start a family \
+                         of periodic orbits from it with lyapunov_family"
+                    .into(),
+            });
+        }
         return Err(RouthError::InvalidOption {
-            what: "omega_guess, gamma_guess",
-            reason: "the guess is a steady motion (the state does not move); start a family of \
-                     periodic orbits from it with lyapunov_family"
-                .into(),
+            what: "period_guess",
+            reason: format!(
+                "{period:e} is too short: the state moves by {moved:e} over it, nothing beside \
+                 its size {scale:e}"
+            ),
         });
     }
     Ok(x)

@@ -133,6 +133,7 @@ enum Wire {
         #[serde(with = "float")]
         residual: f64,
     },
+    Interrupted,
 }
 
 impl From<&RouthError> for Wire {
@@ -207,6 +208,7 @@ impl From<&RouthError> for Wire {
                 iterations: *iterations,
                 residual: *residual,
             },
+            E::Interrupted => Wire::Interrupted,
         }
     }
 }
@@ -275,6 +277,7 @@ impl From<Wire> for RouthError {
                 iterations,
                 residual,
             },
+            Wire::Interrupted => E::Interrupted,
         }
     }
 }

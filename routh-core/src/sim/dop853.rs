@@ -84,6 +84,8 @@ pub(crate) struct Config<'a, const N: usize> {
     pub max_steps: usize,
     /// Whether to prepare the dense output of every accepted step (3 more evaluations a step).
     pub dense: bool,
+    /// The caller's run control, looked at before every step (`None`: not cancellable).
+    pub control: Option<&'a crate::RunControl>,
 }
 
 /// Work counters of one integration.
@@ -310,6 +312,9 @@ where
         if attempts >= cfg.max_steps {
             return Err(RouthError::TooManySteps { t, steps: attempts });
         }
+        if let Some(c) = cfg.control {
+            c.check()?;
+        }
         if !(h.is_normal() && 0.1 * h > t.abs() * f64::EPSILON) {
             return Err(if nonfinite {
                 RouthError::NonFiniteState { t }
@@ -438,6 +443,7 @@ mod tests {
             h_init: None,
             max_steps: 100_000,
             dense,
+            control: None,
         }
     }
 

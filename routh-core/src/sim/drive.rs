@@ -72,6 +72,7 @@ where
                 h_init: opts.h_init,
                 max_steps: opts.max_steps,
                 dense: times.is_some(),
+                control: None,
             };
             let mut next = 0;
             match times {
