@@ -2,6 +2,7 @@
 and what it must give — an error of a kind and naming what was wrong, or a right answer checked
 against the pendulum's closed form. And Ctrl-C: a section or a family stops at once."""
 
+import json
 import math
 import os
 import signal
@@ -36,6 +37,13 @@ def hanging(m):
     return min(m.steady_motions(0.0), key=lambda s: s.energy)
 
 
+def with_field(o, **fields):
+    """The orbit `o` read back from its JSON with `fields` changed."""
+    d = json.loads(o.to_json())
+    d.update(fields)
+    return routh.PeriodicOrbit.from_json(json.dumps(d))
+
+
 @pytest.fixture(scope="module")
 def o():
     return B.periodic_orbit([0, 0, 0], G, 2 * math.pi / W0)
@@ -43,7 +51,8 @@ def o():
 
 # name → (call(o), exception, words its message must hold)
 REFUSED = {
-    "a path of 10^12 samples": (lambda o: B.orbit_path(o, 10**12), OverflowError, None),
+    "a path of 10^12 samples": (lambda o: B.orbit_path(o, 10**12), routh.RouthError, "1000000"),
+    "a path of 10^30 samples": (lambda o: B.orbit_path(o, 10**30), OverflowError, None),
     "a path of 10^8 samples": (lambda o: B.orbit_path(o, 10**8), routh.RouthError, "1000000"),
     "energy bounds that exclude the start": (
         lambda o: B.lyapunov_family(hanging(B), 0, energy_bounds=(5, 6)),
@@ -104,6 +113,16 @@ REFUSED = {
         lambda o: B.poincare_section(0.0, -1.0, orbits=10_000, crossings=10_000),
         routh.RouthError,
         "budget",
+    ),
+    "a path of an orbit with a negative period": (
+        lambda o: B.orbit_path(with_field(o, period=-1.0), 10),
+        routh.RouthError,
+        "orbit.period",
+    ),
+    "the crossings of an orbit with a period of 1e300": (
+        lambda o: B.orbit_crossings(with_field(o, period=1e300)),
+        routh.RouthError,
+        "over its period",
     ),
     "True as a period": (lambda o: B.periodic_orbit([0, 0, 0], G, True), TypeError, "bool"),
     "True as an energy": (lambda o: B.poincare_section(0.0, True), TypeError, "bool"),

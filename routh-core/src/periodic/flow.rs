@@ -240,6 +240,7 @@ pub fn orbit_path<M: Lagrangian>(
             ),
         });
     }
+    check_orbit(orbit)?;
     // `T·i/(n − 1)` rounds above `T` for some `T` and `n` at `i = n − 1`: the last time is `T`.
     let times = (0..n)
         .map(|i| (orbit.period * i as f64 / (n - 1) as f64).min(orbit.period))
@@ -248,6 +249,20 @@ pub fn orbit_path<M: Lagrangian>(
         .with_attitude()
         .at_times(times);
     simulate_full(model, orbit.omega0, orbit.gamma0, orbit.period, &opts)
+}
+
+/// Refuses an orbit whose start or period cannot be integrated (one read from a file, or built
+/// by hand), naming the orbit's field rather than the integrator's argument.
+pub(crate) fn check_orbit(orbit: &PeriodicOrbit) -> Result<(), RouthError> {
+    crate::validate::check_finite("orbit.omega0", orbit.omega0.as_slice())?;
+    crate::validate::unit_gamma("orbit.gamma0", &orbit.gamma0)?;
+    if !(orbit.period.is_finite() && orbit.period > 0.0) {
+        return Err(RouthError::InvalidOption {
+            what: "orbit.period",
+            reason: format!("must be positive and finite, got {}", orbit.period),
+        });
+    }
+    Ok(())
 }
 
 /// The point nearest `x` with `p_ψ = p` and `|γ| = 1`: minimum-norm Gauss–Newton steps on the

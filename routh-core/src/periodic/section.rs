@@ -414,6 +414,7 @@ pub fn orbit_crossings<M: Lagrangian + Sync>(
     opts: &SectionOptions,
 ) -> Result<Vec<[f64; 2]>, RouthError> {
     let n = opts.validate()?;
+    super::flow::check_orbit(orbit)?;
     // The steps of one period are budgeted as those of `opts.crossings` crossings (an orbit of
     // period 1e300 ends on the budget instead of integrating for ever).
     let (points, _, stop) = crossings(
