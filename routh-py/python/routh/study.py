@@ -380,8 +380,8 @@ def _typed(pandas, values, extra=0):
         try:
             data = np.zeros(n, dtype=np.int64)
             data[: len(values)] = [0 if v is None else v for v in values]
-        except OverflowError:
-            pass
+        except OverflowError:  # beyond int64: kept as Python ints
+            kinds = {"o"}
         else:
             if not missing:
                 return pandas.Series(data, copy=False)
@@ -718,8 +718,19 @@ def study(
                     pass  # each on its own below
             for fut, (indices, pts, attempt) in batch:
                 try:
-                    got = gathered.pop(fut) if fut in gathered else fut.result()
+                    if fut in gathered:
+                        got = gathered.pop(fut)
+                    elif deadline is None:
+                        got = fut.result()
+                    else:
+                        got = fut.result(timeout=max(deadline - time.monotonic(), 0.001))
                     results, stopped_at, worker, blobs = got
+                except TimeoutError:
+                    if deadline is not None and time.monotonic() >= deadline:
+                        inflight[fut] = (indices, pts, attempt)  # unfinished, cancelled below
+                        continue
+                    fail(indices, "TimeoutError: the chunk's results could not be fetched")
+                    continue
                 except (KilledWorker, concurrent.futures.CancelledError) as e:
                     # The worker died under the chunk (or the task was cancelled with it).
                     if attempt == 0:
