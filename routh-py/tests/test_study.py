@@ -1,8 +1,17 @@
-"""`routh.study` on a LocalCluster of 2 worker processes: the numbers of a serial loop, a failing
-point recorded in `error`, and no worker process left after a cancelled study."""
+"""`routh.study` on a LocalCluster of 2 worker processes: the numbers of a serial loop, hostile
+points (an exception, SystemExit, an unpicklable result, a killed worker, a hang) recorded in
+`error` with the rest of the study kept and typed, bad arguments named before any work, and no
+worker process left after a cancelled study."""
 
+import math
+import os
+import pathlib
+import re
+import subprocess
 import sys
+import threading
 import time
+from collections import namedtuple
 
 import numpy as np
 import pytest
@@ -124,9 +133,12 @@ def workers():
 
 
 def test_a_cancelled_study_leaves_no_worker(top):
+    """The study's own cluster takes longer than its timeout to start: every point is marked
+    unfinished (a table, no longer a TimeoutError), and the cluster is closed."""
     before = {p.pid for p in workers()}
-    with pytest.raises(TimeoutError):
-        routh.study(slow, top, {"p_psi": [1.0, 2.0, 3.0, 4.0]}, chunk=1, timeout=1.0)
+    df = routh.study(slow, top, {"p_psi": [1.0, 2.0, 3.0, 4.0]}, chunk=1, timeout=1.0)
+    assert df["p_psi"].tolist() == [1.0, 2.0, 3.0, 4.0]
+    assert (df["error"] == "TimeoutError: not finished within 1 s").all()
     deadline = time.time() + 20
     while time.time() < deadline and {p.pid for p in workers()} - before:
         time.sleep(0.2)
@@ -147,6 +159,218 @@ def test_without_dask_the_error_names_the_extra(top, monkeypatch):
     monkeypatch.setitem(sys.modules, "distributed", None)  # `import distributed` fails
     with pytest.raises(ImportError, match=r"routh\[dask\]"):
         routh.study(sleeping, top, {"p_psi": [1.0]})
+
+
+# --- hostile points: one parametrised test over a table ------------------------------------
+#
+# Each job misbehaves at one point (or hangs there until the test sets a flag file, so that a
+# hung worker thread of the shared cluster ends once the test is over). The study must keep
+# every other point's result, typed, and record the bad point in `error`.
+
+
+def exits(model, k, **_):
+    if k == 5:
+        raise SystemExit(3)
+    return k * k
+
+
+def unpicklable_field(model, k, **_):
+    return {"value": k * k, "extra": (i for i in ()) if k == 5 else k}
+
+
+def unpicklable_result(model, k, **_):
+    return threading.Lock() if k == 5 else float(k * k)
+
+
+def parity(model, k, **_):
+    if k == 5:
+        raise ValueError("no parity here")
+    return k % 2 == 0
+
+
+def killer(model, k, **_):
+    time.sleep(0.05)
+    if k == 6:
+        os._exit(1)  # as a segfault or the OOM killer would end the worker process
+    return k * k
+
+
+def hangs(model, k, flag, at, **_):
+    if k == at:
+        deadline = time.time() + 60
+        while time.time() < deadline and not os.path.exists(flag):
+            time.sleep(0.05)
+    return k * k
+
+
+def product(model, a, b):
+    return a * b
+
+
+Case = namedtuple("Case", "job grid kwargs own bad unfinished dtype seconds restarts")
+Case.__new__.__defaults__ = (False, {}, None, "Int64", 60.0, False)
+
+HOSTILE = {
+    # SystemExit at a point is that point's error (it lost its chunk).
+    "system-exit": Case(exits, {"k": range(12)}, {"chunk": 4}, bad={5: r"SystemExit: 3"}),
+    # A field that cannot be pickled (a generator) is that point's error (it lost its chunk).
+    "unpicklable-field": Case(unpicklable_field, {"k": range(12)}, {"chunk": 4}, bad={
+        5: r"TypeError: the result's field 'extra' \(generator\) cannot be sent back"}),
+    "unpicklable-result": Case(unpicklable_result, {"k": range(12)}, {"chunk": 4}, bad={
+        5: r"TypeError: the result's field 'value' \(lock\) cannot be sent back"},
+        dtype="float64"),
+    # Bools and ints stay bools and ints when a point fails (they turned float or object).
+    "bools-with-a-failure": Case(parity, {"k": range(12)}, {"chunk": 4},
+                                 bad={5: r"ValueError: no parity here"}, dtype="boolean"),
+    "streamed-points": Case(exits, lambda flag: ({"k": k} for k in range(12)), {"chunk": 5},
+                            bad={5: r"SystemExit: 3"}),
+    # A worker killed by one point (os._exit) costs that point alone: the points it held are
+    # retried once, each alone, and the one that kills again is reported (all 14 were lost).
+    # Tasks of 1 point (the default chunk here), and chunks of 5 (the chunk split for the retry).
+    "killed-worker": Case(killer, {"k": range(14)}, {}, own=True,
+                          bad={6: r"KilledWorker: the worker process running this point died"}),
+    "killed-worker-chunk-5": Case(killer, {"k": range(14)}, {"chunk": 5}, own=True,
+                                  bad={6: r"KilledWorker: the worker process running this point died"}),
+    # The study's timeout returns what finished, the hung point marked (TimeoutError, and the
+    # 40 finished points with it, before).
+    "timeout": Case(hangs, {"k": range(41), "at": [40]}, {"chunk": 1, "timeout": 4},
+                    bad={40: r"TimeoutError: not finished within 4 s$"}, seconds=4 + 8),
+    # A point over point_timeout is marked, the rest of its chunk is run again, and its worker
+    # process (whose thread still runs the job) is restarted.
+    "point-timeout": Case(hangs, {"k": range(12), "at": [5]}, {"chunk": 12, "point_timeout": 1.5},
+                          bad={5: r"TimeoutError: point not finished within 1.5 s \(point_timeout\)"},
+                          seconds=30, restarts=True),
+    # 9·10⁶ points with a timeout of 3 s: the product is streamed, work starts at once, and the
+    # table comes back with the points not reached marked (the grid's build hung the study).
+    "huge-grid-timeout": Case(product, {"a": np.arange(3000), "b": np.linspace(0.0, 1.0, 3000)},
+                              {"timeout": 3}, unfinished="TimeoutError: not finished within 3 s",
+                              dtype="float64", seconds=3 + 20),
+}
+
+
+def expected_value(df, case):
+    if case.job is product:
+        return df["a"] * df["b"]
+    if case.job is parity:
+        return df["k"] % 2 == 0
+    return df["k"] * df["k"]
+
+
+@pytest.mark.parametrize("name", list(HOSTILE))
+def test_hostile_points_cost_only_themselves(name, client, top, tmp_path):
+    case = HOSTILE[name]
+    flag = str(tmp_path / "release")
+    grid = case.grid(flag) if callable(case.grid) else dict(case.grid)
+    if case.job is hangs:
+        grid["flag"] = [flag]
+    before = {p.pid for p in workers()}
+    pids = sorted(client.run(os.getpid).values())
+    t = time.monotonic()
+    try:
+        df = routh.study(case.job, top, grid, client=None if case.own else client,
+                         progress=False, **case.kwargs)
+    finally:
+        pathlib.Path(flag).touch()
+    took = time.monotonic() - t
+    assert took < case.seconds, took
+    n = math.prod(len(v) for v in grid.values()) if isinstance(grid, dict) else 12
+    assert len(df) == n
+    bad = df["k"].isin(list(case.bad)) if case.bad else pd.Series(False, index=df.index)
+    for k, pattern in case.bad.items():
+        [error] = df.loc[df["k"] == k, "error"].tolist()
+        assert re.match(pattern, error), error
+    ok = ~bad & df["error"].isna()
+    if case.unfinished is None:
+        assert ok.sum() == n - len(case.bad), df[~ok & ~bad]
+    else:
+        late = ~bad & ~ok
+        assert (df.loc[late, "error"] == case.unfinished).all()
+        assert 0 < ok.sum() < n and late.sum() > 0
+    assert str(df["value"].dtype) == case.dtype
+    assert (df.loc[ok, "value"] == expected_value(df[ok], case)).all()
+    assert df.loc[~ok, "value"].isna().all()
+    if isinstance(grid, dict):
+        for name_, axis in grid.items():  # the coordinates, typed as the axes
+            assert df[name_].dtype == np.asarray(list(axis)).dtype or name_ == "flag"
+    if case.restarts:
+        # The worker whose thread ran the hung job was restarted (a new process).
+        assert sorted(client.run(os.getpid).values()) != pids
+    if case.own:
+        deadline = time.time() + 20
+        while time.time() < deadline and {p.pid for p in workers()} - before:
+            time.sleep(0.2)
+        assert not {p.pid for p in workers()} - before
+
+
+# --- bad arguments: named, before any work -------------------------------------------------
+
+def closed_client(client):
+    c = distributed.Client(client.scheduler.address)
+    c.close()
+    return c
+
+
+class Unpicklable:
+    def __init__(self):
+        self.lock = threading.Lock()
+
+    def __call__(self, model, **point):
+        return 1.0
+
+
+BAD = {
+    "model-None": (dict(model=None), TypeError, r"^model: expected a routh.Model, got NoneType"),
+    "model-str": (dict(model="top"), TypeError, r"^model: "),
+    "job-int": (dict(job=42), TypeError, r"^job: expected a callable"),
+    "job-unknown-method": (dict(job="no_such_method"), ValueError, r"^job: 'no_such_method' is not"),
+    "job-unpicklable": (dict(job=Unpicklable()), TypeError, r"^job: cannot be pickled"),
+    "chunk-0": (dict(chunk=0), ValueError, r"^chunk: expected a positive int"),
+    "chunk-negative": (dict(chunk=-3), ValueError, r"^chunk: "),
+    "chunk-float": (dict(chunk=2.5), ValueError, r"^chunk: "),
+    "chunk-str": (dict(chunk="4"), ValueError, r"^chunk: "),
+    "chunk-bool": (dict(chunk=True), ValueError, r"^chunk: "),
+    "client-closed": (dict(client=closed_client), ValueError, r"^client: the Client is closed"),
+    "client-int": (dict(client=8786), TypeError, r"^client: expected"),
+    "grid-int": (dict(grid=42), TypeError, r"^grid: expected"),
+    "grid-str": (dict(grid="p_psi"), TypeError, r"^grid: expected"),
+    "grid-not-dicts": (dict(grid=[{"p_psi": 1.0}, 2.0]), TypeError, r"^grid: point 1 is a float"),
+    "grid-error-axis": (dict(grid={"error": [1.0]}), ValueError, r"^grid: an axis is named 'error'"),
+    "timeout-0": (dict(timeout=0), ValueError, r"^timeout: expected a positive number"),
+    "timeout-nan": (dict(timeout=float("nan")), ValueError, r"^timeout: "),
+    "timeout-str": (dict(timeout="5"), ValueError, r"^timeout: "),
+    "point-timeout-negative": (dict(point_timeout=-1), ValueError, r"^point_timeout: "),
+    "n-workers-0": (dict(n_workers=0), ValueError, r"^n_workers: "),
+}
+
+
+@pytest.mark.parametrize("name", list(BAD))
+def test_bad_arguments_are_named_before_any_work(name, client, top, monkeypatch):
+    change, error, pattern = BAD[name]
+
+    def no_cluster(*args, **kwargs):
+        raise AssertionError("a LocalCluster was started before the arguments were checked")
+
+    monkeypatch.setattr(distributed, "LocalCluster", no_cluster)
+    args = dict(job=sleeping, model=top, grid={"mgl": [1.0], "p_psi": [3.0]}, progress=False)
+    args.update({k: v(client) if k == "client" and callable(v) else v for k, v in change.items()})
+    with pytest.raises(error, match=pattern):
+        routh.study(**args)
+
+
+def test_the_docs_study_runs_as_a_script(tmp_path):
+    """The study of docs/python.md ("Studies on a cluster"), run as a script: the LocalCluster's
+    worker processes import it, so it needs its `if __name__ == "__main__":` guard."""
+    doc = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "python.md").read_text()
+    section = doc[doc.index("## Studies on a cluster"):]
+    code = section[section.index("```py\n") + 6:]
+    code = code[: code.index("```")]
+    assert 'if __name__ == "__main__":' in code
+    script = tmp_path / "doc_study.py"
+    script.write_text(code)
+    r = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                       timeout=180, cwd=tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "unstable" in r.stdout
 
 
 INTERRUPTED = r"""
