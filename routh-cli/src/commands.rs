@@ -7,6 +7,7 @@ use routh::{
     classified_steady_motions, classify_circle, steady_motions, CircleReport, CircleStability,
     LatexFormulas, Model, ModelError, SympyFormulas, Vector3,
 };
+use std::collections::HashSet;
 use std::path::Path;
 
 /// Reads a model file; any failure (missing file, TOML or DSL error, with its position) is bad
@@ -275,17 +276,32 @@ fn latex(l: &LatexFormulas, json: bool) -> Result<String, CliError> {
         .join("\n"))
 }
 
-/// `routh formulas --sympy`: the seven formulas of [`SympyFormulas`] in SymPy's syntax, each
-/// under a Python comment with its meaning, as `name = formula` lines (after the definitions of
-/// the named subexpressions, if any), so that the text runs as Python after
-/// `from sympy import *` and `var(…)` of the symbols; with `json`, the `SympyFormulas` object.
+/// `routh formulas --sympy`: the seven formulas of [`SympyFormulas`] in SymPy's syntax, as a
+/// Python script: `from sympy import *`, each symbol defined as a real
+/// `Symbol` under its identifier ([`SympyFormulas::symbols`]: `lambda_ = Symbol("lambda",
+/// real=True)` for a parameter `lambda`), the named subexpressions, if any, and each formula
+/// under a Python comment with its meaning as `name = formula`; a formula's name that is also a
+/// symbol's identifier gets `_` appended (`g_` for G when the model has a parameter `g`), so
+/// that no line rebinds a symbol a later line uses. With `json`, the `SympyFormulas` object.
 fn sympy(f: &SympyFormulas, json: bool) -> Result<String, CliError> {
     if json {
         return Ok(serde_json::to_string_pretty(f)? + "\n");
     }
-    let mut out = String::new();
+    // Every name the text uses besides its symbols is SymPy's (`sqrt`, `Matrix`, `nan`), and
+    // no symbol's identifier is one of them.
+    let mut out = String::from("from sympy import *\n\n");
+    let mut bound: HashSet<&str> = HashSet::new();
+    for (ident, name) in &f.symbols {
+        out.push_str(&format!(
+            "{ident} = Symbol({}, real=True)\n",
+            python_str(name)
+        ));
+        bound.insert(ident);
+    }
+    out.push('\n');
     for (name, value) in &f.definitions {
         out.push_str(&format!("{name} = {value}\n"));
+        bound.insert(name);
     }
     if !f.definitions.is_empty() {
         out.push('\n');
@@ -311,12 +327,21 @@ fn sympy(f: &SympyFormulas, json: bool) -> Result<String, CliError> {
         ("g", "the gyroscopic matrix G of (64) at Omega = 0", &f.g),
         ("c", "the stiffness matrix C of (64) at Omega = 0", &f.c),
     ];
-    out.push_str(
-        &items
-            .iter()
-            .map(|(name, what, formula)| format!("# {what}\n{name} = {formula}\n"))
-            .collect::<Vec<_>>()
-            .join("\n"),
-    );
+    let lines: Vec<String> = items
+        .iter()
+        .map(|(name, what, formula)| {
+            let mut name = name.to_string();
+            while bound.contains(name.as_str()) {
+                name.push('_');
+            }
+            format!("# {what}\n{name} = {formula}\n")
+        })
+        .collect();
+    out.push_str(&lines.join("\n"));
     Ok(out)
+}
+
+/// `s` as a Python string literal.
+fn python_str(s: &str) -> String {
+    format!("\"{}\"", s.replace('\\', "\\\\").replace('"', "\\\""))
 }

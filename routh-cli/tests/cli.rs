@@ -311,8 +311,11 @@ fn formulas_latex_prints_the_seven_formulas_of_the_model() {
 }
 
 /// `formulas --sympy` prints the seven formulas of `Model::sympy` of the same file as
-/// `name = formula` lines; `--sympy --json` is the `SympyFormulas` object. (That they parse
-/// back in SymPy and agree with the model is routh-py's tests/test_formulas.py.)
+/// `name = formula` lines, after a `Symbol` line for every symbol; `--sympy --json` is the
+/// `SympyFormulas` object. The heavy top has parameters `g` and `c`: G and C are printed as `g_`
+/// and `c_`, so that no line rebinds a symbol (G's line rebound the `g` that C uses). (That the script runs and agrees with the model,
+/// also for parameters named `lambda`, `sin`, `nan`, is routh-py's tests/test_formulas.py and
+/// tests/test_hostile_formulas.py.)
 #[test]
 fn formulas_sympy_prints_the_seven_formulas_of_the_model() {
     let model = routh::Model::from_file(TOP).unwrap();
@@ -329,12 +332,19 @@ fn formulas_sympy_prints_the_seven_formulas_of_the_model() {
         ("routhian", &expected.routhian),
         ("amended_potential", &expected.amended_potential),
         ("a", &expected.a),
-        ("g", &expected.g),
-        ("c", &expected.c),
+        ("g_", &expected.g),
+        ("c_", &expected.c),
     ] {
         let line = format!("{name} = {formula}\n");
         assert!(text.contains(&line), "{line} not in\n{text}");
     }
+    assert!(text.starts_with("from sympy import *\n"));
+    for (ident, name) in &expected.symbols {
+        let line = format!("{ident} = Symbol(\"{name}\", real=True)\n");
+        assert!(text.contains(&line), "{line} not in\n{text}");
+    }
+    assert!(expected.symbols.iter().any(|(i, _)| i == "g"));
+    assert!(expected.symbols.iter().any(|(i, _)| i == "c"));
     assert!(expected.amended_potential.contains("p_psi"));
     assert!(!expected.amended_potential.contains('\\'));
     assert!(expected.c.starts_with("Matrix([["));

@@ -8,8 +8,8 @@ use std::collections::HashMap;
 
 use routh_symbolic::shape::dot3;
 use routh_symbolic::{
-    matrix_to_latex_named, on_sphere, replace_nodes, to_latex, to_sympy, Graph, Id, LatexSymbols,
-    Var, INTERMEDIATES,
+    matrix_to_latex_named, on_sphere, replace_nodes, sympy_identifiers, to_latex, to_sympy, Graph,
+    Id, LatexSymbols, Var, INTERMEDIATES, SYMPY_STATE,
 };
 
 use crate::Model;
@@ -40,6 +40,10 @@ pub struct SympyText {
     pub g: String,
     pub c: String,
     pub definitions: Vec<(String, String)>,
+    /// `(identifier, name)` of every symbol the text may use: the state's (`omega1 … omega3`,
+    /// `Omega1 …`, `gamma1 …`, `p_psi`), then the parameters' in order (identifier and name
+    /// differ for a name that is not a free Python identifier: `routh_symbolic::sympy_identifiers`).
+    pub symbols: Vec<(String, String)>,
 }
 
 /// The graph with the formulas simplified on the sphere, and their roots: L, ψ̇, R, U_r, A, G,
@@ -68,6 +72,7 @@ fn shortened(model: &Model, fields: &[(String, String)], named: bool) -> Shorten
     let plain = LatexSymbols {
         fields: fields.iter().cloned().collect(),
         big_omega: false,
+        sympy_names: HashMap::new(),
     };
     let relative = LatexSymbols {
         big_omega: true,
@@ -147,8 +152,26 @@ pub fn latex_formulas(model: &Model, fields: &[(String, String)]) -> LatexText {
 /// same way) in SymPy's syntax ([`routh_symbolic::to_sympy`]): `omega1`, `Omega1` (in ψ̇ and R),
 /// `gamma1`, `p_psi`, each parameter by its field's name (`inertia_1`, `I_12` for components,
 /// from 1), matrices as `Matrix([[…], […], […]])`.
+///
+/// A parameter whose name is not a free Python identifier (`lambda`, `sin`, `nan`, `Matrix`,
+/// `sigma1`) is written under another identifier (`lambda_`), listed in `symbols` with its name
+/// ([`sympy_identifiers`]): the text is Python with every symbol bound to its identifier.
 pub fn sympy_formulas(model: &Model) -> SympyText {
-    let s = shortened(model, &[], false);
+    let mut s = shortened(model, &[], false);
+    let sym = &model.lowered.sym;
+    let vars: Vec<&str> = sym.params.iter().map(|p| s.g.var_name(p.var)).collect();
+    let params = sympy_identifiers(&vars);
+    let renamed: HashMap<String, String> = (vars.iter().zip(&params))
+        .map(|(v, (ident, _))| (v.to_string(), ident.clone()))
+        .collect();
+    s.plain.sympy_names = renamed.clone();
+    s.relative.sympy_names = renamed;
+    let mut symbols: Vec<(String, String)> = SYMPY_STATE
+        .iter()
+        .map(|n| (n.to_string(), n.to_string()))
+        .collect();
+    symbols.extend(params);
+    let s = s;
     let g = &s.g;
     let mut definitions = Vec::new();
     let mut one = |roots: &[Id], symbols: &LatexSymbols| {
@@ -179,5 +202,6 @@ pub fn sympy_formulas(model: &Model) -> SympyText {
         g: gg,
         c,
         definitions,
+        symbols,
     }
 }

@@ -48,11 +48,13 @@ pub struct LatexFormulas {
 ///
 /// Symbols: `omega1 omega2 omega3` (`Omega1 …` in ψ̇ and R, functions of the relative angular
 /// velocity), `gamma1 gamma2 gamma3`, `p_psi`; each parameter by its field's name (`mgl`),
-/// components with indices from 1 (`inertia_1`, `I_12`), as in the LaTeX. Matrices are
+/// components with indices from 1 (`inertia_1`, `I_12`), as in the LaTeX, unless that is not a
+/// free Python identifier (`lambda`, `sin`, `nan`: see [`SympyFormulas::symbols`]). Matrices are
 /// `Matrix([[…], […], […]])`. A formula is written out in full unless its expression tree is
 /// very large (more than 20 000 nodes); then it refers to named subexpressions `sigma1`,
 /// `sigma2`, … defined in [`SympyFormulas::definitions`], in order, each using only the names
-/// before it. Python's `routh.Model.to_sympy()` substitutes them.
+/// before it. Python's `routh.Model.to_sympy()` substitutes them (and reads a sum of any
+/// length, which Python's own parser, and so `sympify`, refuses beyond about a thousand terms).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SympyFormulas {
@@ -73,4 +75,14 @@ pub struct SympyFormulas {
     /// `(name, expression)` of the named subexpressions, in order (empty when every formula is
     /// written out in full).
     pub definitions: Vec<(String, String)>,
+    /// `(identifier, name)` of every symbol the text may use, the state's first (`omega1 …
+    /// omega3`, `Omega1 …`, `gamma1 …`, `p_psi`), then the parameters' in order: the text
+    /// calls a symbol by its identifier, SymPy by its name. They are the same but for a
+    /// parameter whose name is not a free Python identifier (a keyword such as `lambda`, a name
+    /// the text uses: `sin`, `sqrt`, `Abs`, `Matrix`, `Symbol`, `nan`, `oo`, `sigma1`, a
+    /// state's; a non-ASCII one), written under its name with `_` appended (`lambda_`), and for
+    /// one whose name is another's (a parameter `omega1`, a scalar `com_1` beside a vector
+    /// `com`), whose name gets the `_` too. (Empty in a document written before it existed.)
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub symbols: Vec<(String, String)>,
 }

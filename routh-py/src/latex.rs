@@ -117,7 +117,9 @@ impl LatexFormulas {
 /// in `psi_dot` and `routhian`), `gamma1`, `p_psi`, the parameters by their names and their
 /// components from 1 (`inertia_3`, `I_12`); matrices as `Matrix([[…], …])`. `definitions` is a
 /// list of `(name, expression)` of the subexpressions `sigma1, sigma2, …` that a very large
-/// formula refers to (usually empty). `to_sympy()` parses everything (SymPy needed).
+/// formula refers to (usually empty); `symbols` the `(identifier, name)` of every symbol (a
+/// parameter named `lambda` or `sin` is `lambda_`, `sin_` in the text). `to_sympy()` parses
+/// everything (SymPy needed), whatever the length of a sum.
 ///
 /// >>> f = top.sympy()
 /// >>> f.lagrangian
@@ -140,6 +142,10 @@ pub struct SympyFormulas {
     pub c: String,
     /// `(name, expression)` of the named subexpressions, in order.
     pub definitions: Vec<(String, String)>,
+    /// `(identifier, name)` of every symbol: the text calls it by its identifier, SymPy by its
+    /// name. The same but for a parameter whose name is not a free Python identifier (`lambda`,
+    /// `sin`, `nan`, …: `lambda_`) or is another's (a parameter `omega1`: named `omega1_`).
+    pub symbols: Vec<(String, String)>,
 }
 
 impl SympyFormulas {
@@ -153,6 +159,7 @@ impl SympyFormulas {
             g: f.g,
             c: f.c,
             definitions: f.definitions,
+            symbols: f.symbols,
         }
     }
 

@@ -18,6 +18,7 @@ mod export;
 mod family;
 mod guard;
 mod latex;
+mod lenient;
 mod nonlinear;
 mod orbits;
 mod pickle;

@@ -193,25 +193,7 @@ impl Model {
     ) -> PyResult<f64> {
         let p_psi = p_psi.0;
         use routh::Routhian;
-        let g = vector3("gamma", gamma)?;
-        let non_finite =
-            |what: &'static str, value: f64| routh::RouthError::NonFinite { what, value };
-        if let Some(&x) = g.iter().find(|x| !x.is_finite()) {
-            return Err(routh_err(py, &non_finite("gamma", x)));
-        }
-        if !p_psi.is_finite() {
-            return Err(routh_err(py, &non_finite("p_psi", p_psi)));
-        }
-        let tol = routh::validate::UNIT_GAMMA_TOL;
-        let norm = g.norm();
-        if (norm - 1.0).abs() > tol {
-            let e = routh::RouthError::NonUnitGamma {
-                what: "gamma",
-                norm,
-                tol,
-            };
-            return Err(routh_err(py, &e));
-        }
+        let g = unit_gamma_and_p_psi(py, gamma, p_psi)?;
         let u = self.get()?.amended_potential(&g, p_psi);
         if !u.is_finite() {
             let e = routh::RouthError::NonFiniteModel {
@@ -521,7 +503,9 @@ impl Model {
     /// with the floats `lagrangian` L(ω, γ), `psi_dot` ψ̇(Ω, γ, p_ψ), `routhian` R(Ω, γ, p_ψ),
     /// `amended_potential` U_r(γ, p_ψ), and the (3, 3) arrays `a`, `g`, `c` of (64) at Ω = 0.
     /// What the formulas of `sympy()` and `latex()` evaluate to (at a unit `gamma`: the
-    /// formulas are simplified with |γ|² = 1).
+    /// formulas are simplified with |γ|² = 1). Raises `RouthError` for a non-finite input
+    /// (kind "NonFinite", naming it) and a γ off the unit sphere (kind "NonUnitGamma", as
+    /// `amended_potential`).
     ///
     /// >>> top.formula_values([0.1, 0.2, 0.3], [0, 0, 1], 2.0)["amended_potential"]
     /// 2.6
@@ -530,11 +514,19 @@ impl Model {
         py: Python<'py>,
         omega: &Bound<'_, PyAny>,
         gamma: &Bound<'_, PyAny>,
-        p_psi: f64,
+        p_psi: Real,
     ) -> PyResult<Bound<'py, PyDict>> {
         use routh::{Lagrangian, Routhian};
+        let p_psi = p_psi.0;
         let w = vector3("omega", omega)?;
-        let g = vector3("gamma", gamma)?;
+        if let Some(&value) = w.iter().find(|x| !x.is_finite()) {
+            let e = routh::RouthError::NonFinite {
+                what: "omega",
+                value,
+            };
+            return Err(routh_err(py, &e));
+        }
+        let g = unit_gamma_and_p_psi(py, gamma, p_psi)?;
         let m = self.get()?;
         let d = PyDict::new(py);
         d.set_item("lagrangian", m.lagrangian(&w, &g))?;
@@ -571,6 +563,34 @@ impl Model {
     fn __deepcopy__(&self, _args: &Bound<'_, PyTuple>) -> PyResult<Model> {
         Ok(Model::wrap(self.get()?))
     }
+}
+
+/// `gamma` as a 3-vector, after checking that it and `p_psi` are finite (`NonFinite` naming
+/// the input) and that `| |γ| − 1 | ≤ UNIT_GAMMA_TOL` (`NonUnitGamma`, as the analyses).
+fn unit_gamma_and_p_psi(
+    py: Python<'_>,
+    gamma: &Bound<'_, PyAny>,
+    p_psi: f64,
+) -> PyResult<routh::nalgebra::Vector3<f64>> {
+    let g = vector3("gamma", gamma)?;
+    let non_finite = |what: &'static str, value: f64| routh::RouthError::NonFinite { what, value };
+    if let Some(&x) = g.iter().find(|x| !x.is_finite()) {
+        return Err(routh_err(py, &non_finite("gamma", x)));
+    }
+    if !p_psi.is_finite() {
+        return Err(routh_err(py, &non_finite("p_psi", p_psi)));
+    }
+    let tol = routh::validate::UNIT_GAMMA_TOL;
+    let norm = g.norm();
+    if (norm - 1.0).abs() > tol {
+        let e = routh::RouthError::NonUnitGamma {
+            what: "gamma",
+            norm,
+            tol,
+        };
+        return Err(routh_err(py, &e));
+    }
+    Ok(g)
 }
 
 /// Seconds per call of `steady_motions` + `classify` of every motion, timed in Rust (for the

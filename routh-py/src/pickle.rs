@@ -85,11 +85,14 @@ macro_rules! json {
     };
 }
 
-/// The Rust result of type `$t` from the JSON string `$state`.
+/// The Rust result of type `$t` from the JSON string `$state` (its NaN and infinities as
+/// `null`, as `serde_json` writes them, or as the strings `"NaN"`, `"Infinity"`, `"-Infinity"`
+/// of `to_json`: [`crate::lenient`]).
 macro_rules! from_json {
     ($t:ty, $state:expr) => {{
         let s: String = $state.extract()?;
-        serde_json::from_str::<$t>(&s).map_err(|e| RouthError::new_err(format!("unpickling: {e}")))
+        crate::lenient::from_str::<$t>(&s)
+            .map_err(|e| RouthError::new_err(format!("unpickling: {e}")))
     }};
 }
 

@@ -101,3 +101,16 @@ def test_to_sympy_without_sympy_says_so(top, monkeypatch):
     with pytest.raises(ImportError, match="pip install sympy"):
         top.to_sympy()
     assert top.sympy().lagrangian  # the text needs no SymPy
+
+
+@pytest.mark.parametrize("name,model", models(), ids=lambda x: x if isinstance(x, str) else "")
+def test_to_sympy_reads_what_sympify_reads(name, model):
+    """`to_sympy()`'s own parser (which reads sums of any length) gives the very expressions
+    `sympy.sympify` gives for the same text, the symbols bound by `symbols`."""
+    f = model.sympy()
+    local = {ident: sympy.Symbol(n, real=True) for ident, n in f.symbols}
+    for d, text in f.definitions:
+        local[d] = sympy.sympify(text, locals=local)
+    exprs = model.to_sympy()
+    for field in exprs:
+        assert exprs[field] == sympy.sympify(f[field], locals=local), (name, field)

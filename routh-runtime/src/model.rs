@@ -350,6 +350,7 @@ impl Model {
             g: t.g.clone(),
             c: t.c.clone(),
             definitions: t.definitions.clone(),
+            symbols: t.symbols.clone(),
         }
     }
 

@@ -61,6 +61,9 @@ pub struct LatexSymbols {
     pub fields: HashMap<String, String>,
     /// Print the angular-velocity slots `ω₁ ω₂ ω₃` as `\Omega_1 …` (the Routhian's arguments).
     pub big_omega: bool,
+    /// Variable name → its SymPy identifier, in place of [`sympy_symbol`]'s own (the parameters
+    /// renamed by [`sympy_identifiers`]; empty: every name as [`sympy_symbol`] makes it).
+    pub sympy_names: HashMap<String, String>,
 }
 
 /// The syntax a [`Printer`] writes: LaTeX, or SymPy's (Python's) infix syntax.
@@ -80,6 +83,9 @@ enum Style {
 /// LaTeX: `inertia_3`, `I_12`). The field's own name is kept (not its LaTeX symbol): it is a
 /// Python identifier, and it is the name the model's parameters go by everywhere else.
 pub fn sympy_symbol(var_name: &str, symbols: &LatexSymbols) -> String {
+    if let Some(name) = symbols.sympy_names.get(var_name) {
+        return name.clone();
+    }
     if let Some(&(_, _, py)) = INTERMEDIATES.iter().find(|(n, _, _)| *n == var_name) {
         return py.to_string();
     }
@@ -91,6 +97,12 @@ pub fn sympy_symbol(var_name: &str, symbols: &LatexSymbols) -> String {
             _ => "p_psi".to_string(),
         };
     }
+    sympy_param_name(var_name)
+}
+
+/// The SymPy name of a parameter's variable: `name`, `name[i] → name_{i+1}`,
+/// `name[(i,j)] → name_{i+1}{j+1}`.
+fn sympy_param_name(var_name: &str) -> String {
     let (base, index) = match var_name.find('[') {
         Some(at) => (&var_name[..at], Some(&var_name[at..])),
         None => (var_name, None),
@@ -119,6 +131,119 @@ pub const INTERMEDIATES: [(&str, &str, &str); 3] = [
     ("ψ̇", "\\dot\\psi", "psidot"),
     ("μ", "\\mu", "mu"),
 ];
+
+/// The names the SymPy text uses besides its symbols: the functions it calls, `Matrix`, the
+/// constants `nan` (a formula too large to print) and `oo`, and `Symbol` (which
+/// `routh formulas --sympy` imports to define the symbols). No symbol is given one of them as
+/// its identifier ([`sympy_identifiers`]).
+pub const SYMPY_FUNCTIONS: [&str; 12] = [
+    "Matrix", "Symbol", "sqrt", "Abs", "sign", "sin", "cos", "tan", "exp", "log", "nan", "oo",
+];
+
+/// Python's keywords (`keyword.kwlist`): not identifiers.
+const PYTHON_KEYWORDS: [&str; 35] = [
+    "False", "None", "True", "and", "as", "assert", "async", "await", "break", "class", "continue",
+    "def", "del", "elif", "else", "except", "finally", "for", "from", "global", "if", "import",
+    "in", "is", "lambda", "nonlocal", "not", "or", "pass", "raise", "return", "try", "while",
+    "with", "yield",
+];
+
+/// The state's SymPy names, in the order of [`sympy_identifiers`]' list.
+pub const SYMPY_STATE: [&str; 10] = [
+    "omega1", "omega2", "omega3", "Omega1", "Omega2", "Omega3", "gamma1", "gamma2", "gamma3",
+    "p_psi",
+];
+
+/// Whether `s` may be a symbol's identifier in the SymPy text: an ASCII Python identifier, not
+/// a keyword, a name of [`SYMPY_FUNCTIONS`] or a state's name, not `sigmaK` (the named
+/// subexpressions).
+fn free_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    let ascii_ident = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
+    let sigma = s
+        .strip_prefix("sigma")
+        .is_some_and(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()));
+    ascii_ident
+        && !sigma
+        && !PYTHON_KEYWORDS.contains(&s)
+        && !SYMPY_FUNCTIONS.contains(&s)
+        && !SYMPY_STATE.contains(&s)
+}
+
+/// The SymPy identifiers and names of a model's parameters, given the names of their variables
+/// in order (`mgl`, `inertia[0]`, `inertia[(0,2)]`): `(identifier, name)` for each, so that any
+/// parameter name round-trips through the text. The name is the one [`sympy_symbol`] gives
+/// (`mgl`, `inertia_1`, `inertia_13`), the display name of the `sympy.Symbol`; where two would
+/// be the same (a parameter `omega1`, a scalar `com_1` beside a vector `com`), the scalar keeps
+/// it before a component and the state before both, and the other gets `_` appended until it is
+/// no one's. The identifier, the name in the text, is the name when it is a free one (an ASCII
+/// Python identifier, not a keyword, not a function or constant the text uses, not a state's
+/// name, not `sigmaK`): `lambda`, `sin`, `nan` or `α` is renamed, to the name with its other
+/// characters written `_<hex>` and `_` appended until it is free and no one else's (`lambda_`,
+/// `_3b1`). Whatever the names, the identifiers are distinct and so are the names.
+pub fn sympy_identifiers(var_names: &[&str]) -> Vec<(String, String)> {
+    let natural: Vec<String> = var_names.iter().map(|v| sympy_param_name(v)).collect();
+    // Names: the state's, then the scalars', then the components', each its own when free.
+    let mut names: Vec<Option<String>> = vec![None; natural.len()];
+    let mut taken: std::collections::HashSet<String> =
+        SYMPY_STATE.iter().map(|s| s.to_string()).collect();
+    for scalars in [true, false] {
+        for (i, v) in var_names.iter().enumerate() {
+            if v.contains('[') != scalars && taken.insert(natural[i].clone()) {
+                names[i] = Some(natural[i].clone());
+            }
+        }
+    }
+    let names: Vec<String> = names
+        .into_iter()
+        .zip(&natural)
+        .map(|(name, n)| {
+            name.unwrap_or_else(|| {
+                let mut n = format!("{n}_");
+                while !taken.insert(n.clone()) {
+                    n.push('_');
+                }
+                n
+            })
+        })
+        .collect();
+    // Identifiers: every free name is kept, then the others renamed.
+    let mut idents: Vec<Option<String>> = vec![None; names.len()];
+    let mut used = std::collections::HashSet::new();
+    for (i, n) in names.iter().enumerate() {
+        if free_identifier(n) && used.insert(n.clone()) {
+            idents[i] = Some(n.clone());
+        }
+    }
+    idents
+        .into_iter()
+        .zip(&names)
+        .map(|(ident, name)| {
+            let ident = ident.unwrap_or_else(|| {
+                let mut id: String = name
+                    .chars()
+                    .map(|c| {
+                        if c.is_ascii_alphanumeric() || c == '_' {
+                            c.to_string()
+                        } else {
+                            format!("_{:x}", u32::from(c))
+                        }
+                    })
+                    .collect();
+                if id.starts_with(|c: char| c.is_ascii_digit()) {
+                    id.insert(0, '_');
+                }
+                id.push('_');
+                while !(free_identifier(&id) && used.insert(id.clone())) {
+                    id.push('_');
+                }
+                id
+            });
+            (ident, name.clone())
+        })
+        .collect()
+}
 
 /// A state variable's place: `(0, k)` for `ω_{k+1}`, `(1, k)` for `γ_{k+1}`, `(2, 0)` for `p_ψ`;
 /// `None` for a parameter.
@@ -924,6 +1049,9 @@ impl Printer<'_> {
             return (text, quotient);
         }
         match fraction(c) {
+            // Not Python's `NaN`/`inf` (Rust's `{:?}`): SymPy's names, never a symbol's.
+            _ if c.is_nan() => ("nan".to_string(), false),
+            _ if c.is_infinite() => ("oo".to_string(), false),
             Some((p, 1)) => (format!("{p}"), false),
             Some((p, q)) => (format!("{p}/{q}"), true),
             None => (format!("{c:?}"), false),
@@ -1158,6 +1286,7 @@ mod tests {
                 .into_iter()
                 .collect(),
             big_omega: false,
+            sympy_names: HashMap::new(),
         }
     }
 
@@ -1322,5 +1451,54 @@ mod tests {
         assert_eq!(sympy_symbol("com[2]", &s), "com_3");
         assert_eq!(sympy_symbol("inertia[(0,2)]", &s), "inertia_13");
         assert_eq!(definition_name(3, Style::Sympy), "sigma3");
+    }
+
+    /// A NaN or infinite constant is SymPy's `nan` or `oo` (not Rust's `NaN`, `inf`: names
+    /// SymPy would take for symbols).
+    #[test]
+    fn non_finite_constants_in_sympy() {
+        let (mut g, ids) = top();
+        let inf = g.constant(f64::INFINITY);
+        let nan = g.constant(f64::NAN);
+        let a = g.mul(inf, ids[0]);
+        let b = g.mul(nan, ids[1]);
+        let s = LatexSymbols::default();
+        assert_eq!(to_sympy(&g, &[a], &s, 0).0.concat(), "oo*mass");
+        assert_eq!(to_sympy(&g, &[b], &s, 0).0.concat(), "nan*g");
+    }
+
+    /// Every parameter gets a free identifier and a name of its own: keywords, the text's
+    /// functions and constants, `sigmaK`, non-ASCII names are renamed (the name kept); a name
+    /// that is the state's or another's gets `_` (a scalar before a component); an identifier
+    /// taken by a parameter as it is is not given to another.
+    #[test]
+    fn sympy_identifiers_are_free_and_distinct() {
+        let vars = [
+            "lambda", "sin", "nan", "Matrix", "sigma12", "α", "mgl", "omega1", "com[0]", "com[1]",
+            "com_1", "lambda_", "I[(0,1)]", "r#type",
+        ];
+        let got = sympy_identifiers(&vars);
+        let want = [
+            ("lambda__", "lambda"),
+            ("sin_", "sin"),
+            ("nan_", "nan"),
+            ("Matrix_", "Matrix"),
+            ("sigma12_", "sigma12"),
+            ("_3b1_", "α"),
+            ("mgl", "mgl"),
+            ("omega1_", "omega1_"),
+            ("com_1_", "com_1_"),
+            ("com_2", "com_2"),
+            ("com_1", "com_1"),
+            ("lambda_", "lambda_"),
+            ("I_12", "I_12"),
+            ("r_23type_", "r#type"),
+        ];
+        let got: Vec<(&str, &str)> = got.iter().map(|(i, n)| (i.as_str(), n.as_str())).collect();
+        assert_eq!(got, want);
+        let mut with = LatexSymbols::default();
+        with.sympy_names.insert("sin".into(), "sin_".into());
+        assert_eq!(sympy_symbol("sin", &with), "sin_");
+        assert_eq!(sympy_symbol("γ₃", &with), "gamma3");
     }
 }

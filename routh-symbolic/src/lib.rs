@@ -24,7 +24,8 @@ pub mod shape;
 pub use analysis::{degree, extra_cost, op_counts, schedule, to_infix, Degree, OpCounts, Plan};
 pub use graph::{Func, Graph, Id, Node, Var};
 pub use latex::{
-    latex_symbol, matrix_to_latex, matrix_to_latex_named, on_sphere, replace_nodes, sympy_symbol,
-    to_latex, to_sympy, LatexSymbols, INTERMEDIATES,
+    latex_symbol, matrix_to_latex, matrix_to_latex_named, on_sphere, replace_nodes,
+    sympy_identifiers, sympy_symbol, to_latex, to_sympy, LatexSymbols, INTERMEDIATES,
+    SYMPY_FUNCTIONS, SYMPY_STATE,
 };
 pub use shape::{Shape, ShapeError, Value};

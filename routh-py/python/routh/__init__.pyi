@@ -466,6 +466,7 @@ class SympyFormulas:
     g: str
     c: str
     definitions: list[tuple[str, str]]
+    symbols: list[tuple[str, str]]
     def as_dict(self) -> dict[str, str]: ...
     def __getitem__(self, name: str) -> str: ...
     def to_sympy(self) -> dict[str, Any]:

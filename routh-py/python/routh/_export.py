@@ -58,8 +58,9 @@ _SERDE = ("SteadyMotion", "PeriodicOrbit", "OrbitEvent", "OrbitFamily")
 
 # The JSON fields of every other class, in the order of its pickle state, each with its kind:
 # "f" float, "i" int, "b" bool, "s" str (or None), "a<k>" float64 array of k columns ("a" for
-# (n,)), "c" complex128 (n,) array, "r:<Class>" a nested result, "l:<kind>" a list of them,
-# "o:<kind>" None or one.
+# (n,)), "v3" a float64 (3,) vector, "c" complex128 (n,) array, "r:<Class>" a nested result,
+# "l:<kind>" a list of them, "o:<kind>" None or one. What the fields' shapes must be together (a
+# row of the atlas per y, …) is checked by `_check`.
 _FIELDS = {
     "StabilityReport": [
         ("verdict", "s"),
@@ -73,7 +74,7 @@ _FIELDS = {
         ("across", "f"),
         ("momentum_term", "f"),
         ("axis_momentum", "f"),
-        ("axis", "a"),
+        ("axis", "v3"),
         ("report", "r:StabilityReport"),
     ],
     "Branch": [
@@ -87,7 +88,7 @@ _FIELDS = {
     "Event": [
         ("kind", "s"),
         ("s", "f"),
-        ("gamma", "a"),
+        ("gamma", "v3"),
         ("branch", "i"),
         ("before", "s"),
         ("after", "s"),
@@ -151,7 +152,7 @@ _FIELDS = {
     "PoincareSection": [
         ("p_psi", "f"),
         ("energy", "f"),
-        ("normal", "a"),
+        ("normal", "v3"),
         ("points", "l:a2"),
         ("starts", "a6"),
     ],
@@ -252,6 +253,10 @@ def to_json(obj):
 def _array(v, kind, where):
     if not isinstance(v, list):
         raise _routh.RouthError(f"from_json: {where}: expected an array, got {v!r}")
+    if kind == "v3":
+        if len(v) != 3:
+            raise _routh.RouthError(f"from_json: {where}: expected 3 numbers, got {len(v)}")
+        return np.array([_unfloat(x, where) for x in v], dtype=np.float64)
     if kind == "c":
         try:
             out = [complex(_unfloat(re, where), _unfloat(im, where)) for re, im in v]
@@ -291,7 +296,7 @@ def _decode(v, kind, where):
         return None if v is None else _decode(v, kind[2:], where)
     if kind == "f":
         return _unfloat(v, where)
-    if kind.startswith("a") or kind == "c":
+    if kind.startswith("a") or kind in ("c", "v3"):
         return _array(v, kind, where)
     if kind == "t":
         if not isinstance(v, list):
@@ -300,13 +305,65 @@ def _decode(v, kind, where):
     return v
 
 
-def _serde(name, body, where):
-    """The result of class `name` (one of _SERDE) from the serde form of its Rust value."""
+def _restore(name, state, where):
+    """`_routh._restore(name, state)`, its errors (worded for pickles) as from_json's."""
     try:
-        return _routh._restore(name, json.dumps(body))
-    except _routh.RouthError as e:
+        return _routh._restore(name, state)
+    except (_routh.RouthError, TypeError, ValueError) as e:
         msg = str(e).removeprefix("unpickling: ")
         raise _routh.RouthError(f"from_json: {where}: not a {name}: {msg}") from None
+
+
+def _serde(name, body, where):
+    """The result of class `name` (one of _SERDE) from the serde form of its Rust value (a
+    non-finite float as "NaN", "Infinity", "-Infinity" or null)."""
+    return _restore(name, json.dumps(body), where)
+
+
+def _length(v, n, what, where):
+    if len(v) != n:
+        raise _routh.RouthError(f"from_json: {where}: {len(v)} {what}, expected {n}")
+
+
+def _check(name, fields, where):
+    """Checks what the shapes of a result's fields must be together (that `_decode` cannot see
+    field by field): the result is refused here, not by an IndexError when it is used."""
+    if name == "Branch":
+        n = len(fields["s"])
+        for f in ("gamma", "p_psi", "energy", "verdicts"):
+            _length(fields[f], n, "points", f"{where}.{f}")
+    elif name == "Atlas":
+        nx, ny = len(fields["x"]), len(fields["y"])
+        for f, ok, what in (("verdicts", (str, type(None)), "a verdict name or null"),
+                            ("lost", (bool,), "true or false")):
+            rows = fields[f]
+            _length(rows, ny, "rows", f"{where}.{f} (one per y)")
+            for j, row in enumerate(rows):
+                if not isinstance(row, tuple):
+                    raise _routh.RouthError(f"from_json: {where}.{f}[{j}]: expected an array")
+                _length(row, nx, "entries", f"{where}.{f}[{j}] (one per x)")
+                for x in row:
+                    if not isinstance(x, ok):
+                        raise _routh.RouthError(
+                            f"from_json: {where}.{f}[{j}]: expected {what}, got {x!r}")
+    elif name in ("Trajectory", "ReducedTrajectory"):
+        n = len(fields["t"])
+        for f, v in fields.items():
+            if v is not None and f not in ("t",):
+                _length(v, n, "samples", f"{where}.{f} (one per t)")
+    elif name == "PoincareSection":
+        _length(fields["points"], len(fields["starts"]), "orbits",
+                f"{where}.points (one per row of starts)")
+    elif name == "Diagram":
+        for i, c in enumerate(fields["checks"]):
+            if not isinstance(c, tuple) or len(c) != 3:
+                raise _routh.RouthError(
+                    f"from_json: {where}.checks[{i}]: expected [s, branch, index], got {c!r}")
+    elif name == "NonlinearReport":
+        k = fields["krein_signs"]
+        if len(k) != 2 or not all(isinstance(x, int) and not isinstance(x, bool) for x in k):
+            raise _routh.RouthError(
+                f"from_json: {where}.krein_signs: expected two integers, got {list(k)!r}")
 
 
 def _object(doc, expected, where="text"):
@@ -329,16 +386,17 @@ def _object(doc, expected, where="text"):
         # "event" of a family) are ignored, as serde ignores them.
         body = {k: v for k, v in doc.items() if k not in ("routh", "format")}
         return _serde(name, body, where)
-    values = []
+    values = {}
     for field, kind in _FIELDS[name]:
         if field not in doc:
             raise _routh.RouthError(f"from_json: {where}: {name} without {field!r}")
-        values.append(_decode(doc[field], kind, f"{where}.{field}"))
-    state = _state(name, values)
+        values[field] = _decode(doc[field], kind, f"{where}.{field}")
+    _check(name, values, where)
     try:
-        return _routh._restore(name, state)
+        state = _state(name, list(values.values()))
     except (TypeError, ValueError) as e:
-        raise _routh.RouthError(f"from_json: {where}: {e}") from None
+        raise _routh.RouthError(f"from_json: {where}: not a {name}: {e}") from None
+    return _restore(name, state, where)
 
 
 def _state(name, values):
@@ -363,17 +421,26 @@ def _state(name, values):
 
 
 def from_json(text, cls=None):
-    """The result (or list of results) whose JSON text is `text`; with `cls`, it must be one."""
+    """The result (or list of results) whose JSON text is `text`; with `cls`, it must be one.
+    Every text that is not one raises RouthError, whatever its size or nesting."""
     try:
         doc = json.loads(text)
     except (TypeError, ValueError) as e:
         raise _routh.RouthError(f"from_json: not JSON: {e}") from None
+    except RecursionError:
+        # Python's parser recurses on the nesting (a 100 000-deep array); no result is deeper
+        # than a few levels.
+        raise _routh.RouthError("from_json: not a routh result: nested too deep") from None
     expected = None if cls is None else cls.__name__
-    if isinstance(doc, list):
-        # A list of results (routh.to_json of a list; `routh orbits --json`): each must be one
-        # of `cls` when it is given.
-        return [_object(d, expected, f"[{i}]") for i, d in enumerate(doc)]
-    return _object(doc, expected)
+    try:
+        if isinstance(doc, list):
+            # A list of results (routh.to_json of a list; `routh orbits --json`): each must be
+            # one of `cls` when it is given.
+            return [_object(d, expected, f"[{i}]") for i, d in enumerate(doc)]
+        return _object(doc, expected)
+    except RecursionError:
+        # A document just under the parser's limit, in a field read by recursion.
+        raise _routh.RouthError("from_json: not a routh result: nested too deep") from None
 
 
 # The DataFrames and CSV files (the methods to_pandas and to_csv call these names here).

@@ -83,7 +83,8 @@ def _smooth(x, y):
     along it (matplotlib runs a dash pattern on across the vertices of one line)."""
     x, y = np.asarray(x, float), np.asarray(y, float)
     n = len(x)
-    if n < 3 or n > 400:
+    if n < 3 or n > 400 or not (np.isfinite(x).all() and np.isfinite(y).all()):
+        # (An infinite k, say: the run is drawn as it is, its infinite points left out.)
         return x, y
     sx = max(np.ptp(x), 1e-300)
     sy = max(np.ptp(y), 1e-300)
@@ -488,15 +489,32 @@ def index_axis(k):
     return out
 
 
+#: At most this many ticks on the axis of `index_axis` (beyond, one every so many decades).
+INDEX_TICKS = 12
+
+
+def _index_label(t):
+    """The value of k at ``t`` on the axis of `index_axis` (an integer): ``0``, ``1``, ``10``,
+    ``100``, … ``1e+06``, … ``1e+300``, never through a float (10**309 overflows one)."""
+    n = abs(t) - 1
+    size = str(abs(t)) if n <= 0 else (f"{10 ** n}" if n < 6 else f"1e+{n:02d}")
+    return ("−" if t < 0 else "") + size
+
+
 def _index_ticks(ax):
+    """Ticks at the decades of `index_axis` in the axes' limits, labelled with k: every decade
+    when there are few, else one every 2, 5, 10, 20, 50, … decades (and always −1, 0, 1), so
+    that k = 1e300 gives a dozen readable labels, not 300 (nor an OverflowError)."""
     lo, hi = ax.get_ylim()
-    ticks, labels = [], []
-    for t in range(int(np.floor(lo)), int(np.ceil(hi)) + 1):
-        ticks.append(t)
-        size = str(abs(t)) if abs(t) <= 1 else f"{10 ** (abs(t) - 1):g}"
-        labels.append(("−" if t < 0 else "") + size)
+    if not (np.isfinite(lo) and np.isfinite(hi)):
+        return
+    lo, hi = int(np.floor(lo)), int(np.ceil(hi))
+    for step in (1, 2, 5, 10, 20, 50, 100, 200, 500):
+        if hi - lo <= INDEX_TICKS * step:
+            break
+    ticks = [t for t in range(lo, hi + 1) if abs(t) <= 1 or (abs(t) - 1) % step == 0]
     ax.set_yticks(ticks)
-    ax.set_yticklabels(labels)
+    ax.set_yticklabels([_index_label(t) for t in ticks])
 
 
 def plot_orbit_family(family, ax=None, quantity="stability_index", xlabel="E", values=False):
