@@ -21,6 +21,7 @@ mod classified;
 mod error;
 pub mod export;
 pub mod families;
+pub mod files;
 pub mod fluid;
 mod formulas;
 mod krein;
