@@ -149,10 +149,7 @@ fn plan(path: &Path) -> io::Result<Plan> {
                 _ => to,
             };
         } else if kind.is_dir() {
-            return Err(io::Error::new(
-                io::ErrorKind::IsADirectory,
-                "is a directory",
-            ));
+            return Err(not_a_file(&p));
         } else if kind.is_file() {
             // As the caller: opening for writing (not truncating) fails where the caller may
             // not write the file, although the rename would replace it.
@@ -165,7 +162,20 @@ fn plan(path: &Path) -> io::Result<Plan> {
             return Ok(Plan::Direct(p));
         }
     }
-    Err(io::Error::other("too many levels of symbolic links"))
+    // The system's own error (ELOOP) where it gives one.
+    Err(fs::metadata(path)
+        .err()
+        .unwrap_or_else(|| io::Error::other("too many levels of symbolic links")))
+}
+
+/// The error of writing the directory `dir`: the system's own (EISDIR, with its number) where
+/// it gives one.
+fn not_a_file(dir: &Path) -> io::Error {
+    OpenOptions::new()
+        .write(true)
+        .open(dir)
+        .err()
+        .unwrap_or_else(|| io::Error::new(io::ErrorKind::IsADirectory, "is a directory"))
 }
 
 /// Writes `bytes` into the file at `target` as it is (no temporary, no rename).
@@ -384,12 +394,7 @@ impl Staged {
 /// since it was staged is refused.
 fn replace_keeping(target: &Path, tmp: &Path) -> io::Result<Option<PathBuf>> {
     let backup = match fs::symlink_metadata(target) {
-        Ok(m) if m.is_dir() => {
-            return Err(io::Error::new(
-                io::ErrorKind::IsADirectory,
-                "is a directory",
-            ))
-        }
+        Ok(m) if m.is_dir() => return Err(not_a_file(target)),
         Ok(_) => backup_of(target),
         Err(_) => None,
     };
