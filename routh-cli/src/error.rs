@@ -24,8 +24,30 @@ impl CliError {
 }
 
 impl From<routh::RouthError> for CliError {
+    /// Bad input (exit code 2) where the library refused what it was given — a non-finite
+    /// number, a γ that is not a unit vector, an invalid model or option, a γ that is not a
+    /// steady motion — also at a parameter value of a family; a failed computation (exit code
+    /// 1) otherwise.
     fn from(e: routh::RouthError) -> Self {
-        CliError::Compute(e.to_string())
+        if is_bad_input(&e) {
+            CliError::Input(e.to_string())
+        } else {
+            CliError::Compute(e.to_string())
+        }
+    }
+}
+
+/// Whether the library refused its input (rather than failing in the computation).
+fn is_bad_input(e: &routh::RouthError) -> bool {
+    use routh::RouthError as E;
+    match e {
+        E::NonFinite { .. }
+        | E::NonUnitGamma { .. }
+        | E::InvalidModel { .. }
+        | E::InvalidOption { .. }
+        | E::NotASteadyMotion { .. } => true,
+        E::AtParameter { source, .. } => is_bad_input(source),
+        _ => false,
     }
 }
 

@@ -1,16 +1,19 @@
-//! The files a run writes, all or none: each is written to a temporary file beside it and the
-//! temporaries are renamed over their targets only once every file of the run is written. A
-//! run that fails leaves every existing file as it was (the temporaries are removed); every
-//! error names the file.
+//! The files a run writes, all or none, through the one writer of routh
+//! ([`routh::files::Staged`]): each figure is drawn in memory and staged (a temporary file
+//! beside its target, written and flushed; a pipe or device is written last, in place), and
+//! the temporaries are renamed over their targets only at [`Outputs::commit`], once every file
+//! of the run is ready. A run that fails leaves every existing file as it was (the temporaries
+//! are removed, a rename already done is undone); every error names the file.
 
 use crate::error::CliError;
-use std::path::{Path, PathBuf};
+use routh::files::Staged;
+use routh::plot::PlotError;
+use std::path::Path;
 
-/// The files of one run, written to temporaries until [`Outputs::commit`].
+/// The files of one run, staged until [`Outputs::commit`].
 #[derive(Default)]
 pub struct Outputs {
-    /// `(temporary, target)`, in the order they were written.
-    staged: Vec<(PathBuf, PathBuf)>,
+    staged: Staged,
 }
 
 impl Outputs {
@@ -18,51 +21,24 @@ impl Outputs {
         Self::default()
     }
 
-    /// Writes `target` through `write`, which is given the temporary path to write to.
-    pub fn write<E: std::fmt::Display>(
+    /// Stages the figure that `draw` makes (a figure function of `routh::plot`, given a
+    /// placeholder path) for `target`.
+    pub fn write(
         &mut self,
         target: &Path,
-        write: impl FnOnce(&Path) -> Result<(), E>,
+        draw: impl FnOnce(&Path) -> Result<(), PlotError>,
     ) -> Result<(), CliError> {
-        let tmp = temporary_beside(target);
-        // Recorded before writing, so that a temporary written in part is removed too.
-        self.staged.push((tmp.clone(), target.to_path_buf()));
-        write(&tmp)
-            .map_err(|e| CliError::Compute(format!("cannot write {}: {e}", target.display())))
+        let bytes = routh::plot::rendered(draw)?;
+        self.staged.write(target, &bytes).map_err(written)
     }
 
-    /// Renames every temporary over its target.
-    pub fn commit(mut self) -> Result<(), CliError> {
-        while !self.staged.is_empty() {
-            let (tmp, target) = &self.staged[0];
-            std::fs::rename(tmp, target).map_err(|e| {
-                CliError::Compute(format!("cannot write {}: {e}", target.display()))
-            })?;
-            self.staged.remove(0);
-        }
-        Ok(())
+    /// Puts every staged file in place (all or none).
+    pub fn commit(self) -> Result<(), CliError> {
+        self.staged.commit().map_err(written)
     }
 }
 
-impl Drop for Outputs {
-    /// Removes the temporaries not renamed (a failed run).
-    fn drop(&mut self) {
-        for (tmp, _) in &self.staged {
-            let _ = std::fs::remove_file(tmp);
-        }
-    }
-}
-
-/// `dir/.name.routh-PID.tmp` beside `target` (the same file system, so that the rename is
-/// atomic).
-fn temporary_beside(target: &Path) -> PathBuf {
-    let name = target
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "output".into());
-    let tmp = format!(".{name}.routh-{}.tmp", std::process::id());
-    match target.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir.join(tmp),
-        _ => PathBuf::from(tmp),
-    }
+/// A write error (its message names the file: `cannot write PATH: REASON`): a failed run.
+fn written(e: std::io::Error) -> CliError {
+    CliError::Compute(e.to_string())
 }

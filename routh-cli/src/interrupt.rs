@@ -45,6 +45,7 @@ pub fn control() -> RunControl {
 
 /// Ends the run: interrupted.
 pub fn end() -> ! {
-    eprintln!("error: interrupted");
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "error: interrupted");
     std::process::exit(EXIT_INTERRUPTED)
 }

@@ -50,12 +50,22 @@ fn main() {
     match result {
         Ok(text) => {
             let mut out = std::io::stdout().lock();
-            // A closed pipe (`| head`) is not an error worth a message.
-            let _ = out.write_all(text.as_bytes()).and_then(|()| out.flush());
+            if let Err(e) = out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+                // A closed pipe (`| head`): no message, but not success either — the status a
+                // shell shows for a program ended by SIGPIPE, as coreutils' (128 + 13).
+                if e.kind() == std::io::ErrorKind::BrokenPipe {
+                    std::process::exit(141);
+                }
+                fail(&format!("cannot write to standard output: {e}"), 1);
+            }
         }
-        Err(e) => {
-            eprintln!("error: {e}");
-            std::process::exit(e.exit_code());
-        }
+        Err(e) => fail(&e.to_string(), e.exit_code()),
     }
+}
+
+/// `error: MESSAGE` on stderr (a stderr that cannot be written is no reason to panic), then
+/// exits with `code`.
+fn fail(message: &str, code: i32) -> ! {
+    let _ = writeln!(std::io::stderr(), "error: {message}");
+    std::process::exit(code)
 }

@@ -2,6 +2,7 @@
 //! linearly stable steady motions at one momentum (period, precession, stability index, events),
 //! and Poincaré sections at one (p_ψ, E) (docs/method.md §11).
 
+use std::io::Write;
 use crate::cli::{OrbitArgs, Orbits, Section};
 use crate::commands::{describe, load};
 use crate::error::CliError;
@@ -392,7 +393,8 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let text = if a.output.json || a.output.csv {
         // What could not start goes to stderr: stdout is data.
         for s in &skipped {
-            eprintln!("note: skipped: {s}");
+            // A stderr that cannot be written loses the note, not the run.
+            let _ = writeln!(std::io::stderr(), "note: skipped: {s}");
         }
         if a.output.json {
             orbit_out::families_json(&families)?

@@ -953,6 +953,6 @@ fn section_prints_crossings_on_the_energy_level() {
         .all(|r| r[1].abs() <= std::f64::consts::PI && r[2].is_finite()));
     // Below the least energy of the level there is nothing to cut: bad input, named.
     let o = routh(&["section", ASYMMETRIC, "-p", "0", "-e", "-5"]);
-    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("no motion"), "{}", stderr(&o));
 }

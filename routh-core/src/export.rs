@@ -167,13 +167,14 @@ impl Trajectory {
         tb.text
     }
 
-    /// Writes [`to_csv`](Self::to_csv) to the file `path`.
+    /// Writes [`to_csv`](Self::to_csv) to the file `path`, whole or not at all
+    /// ([`write_file`](crate::files::write_file)).
     ///
     /// # Errors
     ///
-    /// The I/O error of creating or writing the file.
+    /// The I/O error of creating or writing the file, naming `path`.
     pub fn write_csv(&self, path: impl AsRef<Path>) -> std::io::Result<()> {
-        std::fs::write(path, self.to_csv())
+        crate::files::write_file(path, self.to_csv().as_bytes())
     }
 }
 
@@ -224,13 +225,14 @@ impl ReducedTrajectory {
         tb.text
     }
 
-    /// Writes [`to_csv`](Self::to_csv) to the file `path`.
+    /// Writes [`to_csv`](Self::to_csv) to the file `path`, whole or not at all
+    /// ([`write_file`](crate::files::write_file)).
     ///
     /// # Errors
     ///
-    /// The I/O error of creating or writing the file.
+    /// The I/O error of creating or writing the file, naming `path`.
     pub fn write_csv(&self, path: impl AsRef<Path>) -> std::io::Result<()> {
-        std::fs::write(path, self.to_csv())
+        crate::files::write_file(path, self.to_csv().as_bytes())
     }
 }
 
@@ -307,13 +309,14 @@ impl BifurcationDiagram {
         tb.text
     }
 
-    /// Writes [`to_csv`](Self::to_csv) to the file `path`.
+    /// Writes [`to_csv`](Self::to_csv) to the file `path`, whole or not at all
+    /// ([`write_file`](crate::files::write_file)).
     ///
     /// # Errors
     ///
-    /// The I/O error of creating or writing the file.
+    /// The I/O error of creating or writing the file, naming `path`.
     pub fn write_csv(&self, path: impl AsRef<Path>) -> std::io::Result<()> {
-        std::fs::write(path, self.to_csv())
+        crate::files::write_file(path, self.to_csv().as_bytes())
     }
 }
 
@@ -348,12 +351,13 @@ impl StabilityAtlas {
         tb.text
     }
 
-    /// Writes [`to_csv`](Self::to_csv) to the file `path`.
+    /// Writes [`to_csv`](Self::to_csv) to the file `path`, whole or not at all
+    /// ([`write_file`](crate::files::write_file)).
     ///
     /// # Errors
     ///
-    /// The I/O error of creating or writing the file.
+    /// The I/O error of creating or writing the file, naming `path`.
     pub fn write_csv(&self, path: impl AsRef<Path>) -> std::io::Result<()> {
-        std::fs::write(path, self.to_csv())
+        crate::files::write_file(path, self.to_csv().as_bytes())
     }
 }

@@ -22,6 +22,7 @@ mod control;
 mod error;
 pub mod export;
 pub mod families;
+pub mod files;
 pub mod fluid;
 mod formulas;
 mod krein;

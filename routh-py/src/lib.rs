@@ -71,6 +71,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;
     m.add_function(wrap_pyfunction!(pickle::_restore, m)?)?;
     m.add_function(wrap_pyfunction!(plot_style::plot_style, m)?)?;
+    m.add_function(wrap_pyfunction!(export::_write_file, m)?)?;
     m.add("MAX_ATLAS_NODES", family::MAX_ATLAS_NODES)?;
     Ok(())
 }

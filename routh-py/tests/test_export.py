@@ -438,6 +438,106 @@ def test_csv_errors_name_the_path_and_leave_nothing(top, tmp_path):
     assert pd.read_csv(path).verdict[0] == r.verdict and "old" not in path.read_text()
 
 
+def _umasked_mode(directory):
+    """The mode a new file gets here (0666 less the umask), read off a file open() makes."""
+    probe = directory / "probe"
+    probe.write_text("")
+    m = probe.stat().st_mode & 0o7777
+    probe.unlink()
+    return m
+
+
+@pytest.mark.skipif(os.name != "posix", reason="links, modes, pipes and devices of Unix")
+def test_csv_hostile_paths(top, tmp_path):
+    """Issue 43: to_csv goes through routh's one writer. A new file gets 0666 less the umask (not
+    mkstemp's 0600), an existing one keeps its mode, a link is written through and stays a link,
+    a pipe or device is written in place (never replaced), a file the user may not write is
+    refused (PermissionError, not replaced by a rename), every error is an OSError naming the
+    path, and nothing is left behind."""
+    r = top.classify(top.steady_motions(3.0)[0])
+    d = tmp_path / "d"
+    d.mkdir()
+    new = d / "new.csv"
+    r.to_csv(new)
+    assert new.stat().st_mode & 0o7777 == _umasked_mode(d)
+    assert pd.read_csv(new).verdict[0] == r.verdict
+
+    new.chmod(0o640)
+    r.to_csv(new)
+    assert new.stat().st_mode & 0o7777 == 0o640
+
+    other = tmp_path / "other"
+    other.mkdir()
+    target = other / "real.csv"
+    target.write_text("old\n")
+    target.chmod(0o600)
+    link = d / "link.csv"
+    link.symlink_to(target)
+    r.to_csv(link)
+    assert link.is_symlink() and pd.read_csv(target).verdict[0] == r.verdict
+    assert target.stat().st_mode & 0o7777 == 0o600
+    assert sorted(os.listdir(other)) == ["real.csv"]
+    dangling = d / "dangling.csv"
+    dangling.symlink_to(other / "made.csv")
+    r.to_csv(dangling)
+    assert dangling.is_symlink() and pd.read_csv(other / "made.csv").verdict[0] == r.verdict
+
+    # A device in place: /dev/null stays a device; /dev/full's error names it.
+    r.to_csv("/dev/null")
+    import stat
+
+    assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
+    if os.path.exists("/dev/full"):
+        with pytest.raises(OSError) as e:
+            r.to_csv("/dev/full")
+        assert e.value.errno == __import__("errno").ENOSPC and e.value.filename == "/dev/full"
+    # A named pipe: written directly, still a pipe, nothing beside it.
+    fifo = d / "fifo"
+    os.mkfifo(fifo)
+    import threading
+
+    got = {}
+    reader = threading.Thread(target=lambda: got.update(text=fifo.read_text()), daemon=True)
+    reader.start()
+    r.to_csv(fifo)
+    reader.join(10)
+    import io
+
+    assert pd.read_csv(io.StringIO(got["text"])).verdict[0] == r.verdict
+    assert stat.S_ISFIFO(os.lstat(fifo).st_mode)
+    fifo.unlink()
+
+    # A read-only file: refused for a user (root may write any file).
+    ro = d / "ro.csv"
+    ro.write_text("keep\n")
+    ro.chmod(0o444)
+    if os.geteuid() != 0:
+        with pytest.raises(PermissionError) as e:
+            r.to_csv(ro)
+        assert e.value.filename == str(ro) and ro.read_text() == "keep\n"
+    assert ro.stat().st_mode & 0o7777 == 0o444
+
+    # Errors: the OSError subclass of the system's error, with the path.
+    for path, kind in [(d / "no" / "dir" / "x.csv", FileNotFoundError), (other, IsADirectoryError),
+                       (new / "below.csv", NotADirectoryError)]:
+        with pytest.raises(kind) as e:
+            r.to_csv(path)
+        assert e.value.filename == str(path) and str(path) in str(e.value)
+    assert sorted(os.listdir(d)) == ["dangling.csv", "link.csv", "new.csv", "ro.csv"]
+    assert sorted(os.listdir(other)) == ["made.csv", "real.csv"]
+
+
+def test_csv_of_an_empty_list_is_refused(tmp_path):
+    """An empty list has no columns: a ValueError naming the path and no file (before, a file that
+    pandas.read_csv could not read)."""
+    path = tmp_path / "empty.csv"
+    with pytest.raises(ValueError, match="empty list") as e:
+        routh.to_csv([], path)
+    assert str(path) in str(e.value)
+    assert not path.exists()
+    assert routh.to_pandas([]).empty
+
+
 def test_without_pandas_a_clear_import_error(top, monkeypatch):
     m = top.steady_motions(3.0)[0]
     monkeypatch.setitem(sys.modules, "pandas", None)

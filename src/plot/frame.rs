@@ -78,32 +78,39 @@ pub(super) fn write_svg(
     write_whole(path, fractional_polylines(&svg).as_bytes())
 }
 
-/// Writes `bytes` to `path` whole or not at all: into a temporary file beside it (same
-/// directory, so the same file system), then renamed over `path`. On an error the temporary file
-/// is removed and `path` is as it was.
+thread_local! {
+    /// Set by [`rendered`]: the bytes of the figure being made go here, not to a file.
+    static CAPTURE: std::cell::RefCell<Option<Vec<u8>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Writes `bytes` to `path` whole or not at all, through the one writer of routh
+/// ([`routh_core::files::write_file`]: a temporary beside the file, renamed; links written
+/// through, pipes and devices in place; errors name the path). Within [`rendered`], keeps them
+/// instead.
 pub(super) fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), PlotError> {
-    use std::sync::atomic::{AtomicU64, Ordering};
-    static SERIAL: AtomicU64 = AtomicU64::new(0);
-    let name = path
-        .file_name()
-        .ok_or_else(|| {
-            std::io::Error::new(
-                std::io::ErrorKind::InvalidInput,
-                format!("{} does not name a file", path.display()),
-            )
-        })?
-        .to_string_lossy();
-    let tmp = path.with_file_name(format!(
-        ".{name}.{}-{}.tmp",
-        std::process::id(),
-        SERIAL.fetch_add(1, Ordering::Relaxed)
-    ));
-    let written = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
-    if let Err(e) = written {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(e.into());
+    let kept = CAPTURE.with(|c| match c.borrow_mut().as_mut() {
+        Some(buf) => {
+            buf.clear();
+            buf.extend_from_slice(bytes);
+            true
+        }
+        None => false,
+    });
+    if !kept {
+        routh_core::files::write_file(path, bytes)?;
     }
     Ok(())
+}
+
+/// The bytes of the figure that `draw` (a figure function of this module, given a placeholder
+/// path) makes, not written anywhere: for the command line, which writes the files of a run all
+/// or none through [`routh_core::files::Staged`].
+#[doc(hidden)]
+pub fn rendered(draw: impl FnOnce(&Path) -> Result<(), PlotError>) -> Result<Vec<u8>, PlotError> {
+    let outer = CAPTURE.with(|c| c.borrow_mut().replace(Vec::new()));
+    let drawn = draw(Path::new("figure"));
+    let bytes = CAPTURE.with(|c| std::mem::replace(&mut *c.borrow_mut(), outer));
+    drawn.map(|()| bytes.unwrap_or_default())
 }
 
 /// The ticks of [`Frame::y_ticks`]: a short tick, a light grid line across the axes and the

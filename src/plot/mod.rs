@@ -114,6 +114,8 @@ mod trajectory;
 
 pub use axis::DiagramAxis;
 pub use circles::with_circle_verdicts;
+#[doc(hidden)]
+pub use frame::rendered;
 pub use orbits::stability_index_axis;
 #[cfg(feature = "png")]
 pub use png::png_from_svg;

@@ -12,7 +12,6 @@ docs/python.md ("Export"); ``routh._export`` has the JSON half and the overview.
 """
 
 import os
-import tempfile
 
 import numpy as np
 
@@ -253,22 +252,21 @@ def to_pandas(obj):
 
 
 def to_csv(obj, path):
-    """Writes `to_pandas(obj)` to the CSV file `path`, whole or not at all."""
-    df = to_pandas(obj)
-    path = os.fspath(path)
-    directory = os.path.dirname(os.path.abspath(path))
-    tmp = None
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=".routh-", suffix=".csv.tmp", dir=directory)
-        with os.fdopen(fd, "w", newline="") as f:
-            df.to_csv(f, index=False)
-        os.replace(tmp, path)
-        tmp = None
-    except OSError as e:
-        raise type(e)(e.errno, f"cannot write the CSV file: {e.strerror}", path) from e
-    finally:
-        if tmp is not None:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
+    """Writes `to_pandas(obj)` to the CSV file `path`, whole or not at all.
+
+    pandas renders the text; routh's one writer (``routh::files``, as the command line's and the
+    figures') writes it: a temporary file beside `path`, flushed and renamed over it; a symbolic
+    link written through, a pipe or device written in place, an existing file's mode kept (a new
+    one gets 0666 less the umask). An error is the OSError subclass of the system's error with
+    `path` as its filename, and leaves `path` as it was. An empty list has no columns to write:
+    ValueError, nothing written.
+    """
+    if isinstance(obj, (list, tuple)) and not obj:
+        raise ValueError(
+            "to_csv: an empty list has no columns (they come from its results); nothing was "
+            f"written to {os.fspath(path)!r}"
+        )
+    text = to_pandas(obj).to_csv(index=False)
+    from ._routh import _write_file
+
+    _write_file(os.fspath(path), text)
