@@ -25,21 +25,18 @@ pub mod families;
 pub mod fluid;
 mod formulas;
 mod krein;
-mod locate;
 mod model;
 pub mod nonlinear;
-mod norm;
-mod path;
 pub mod periodic;
 #[cfg(feature = "serde")]
 mod serde_support;
 pub mod sim;
+mod solve;
 mod sphere;
 pub mod stability;
 pub mod steady;
 #[doc(hidden)]
 pub mod validate;
-mod zero;
 
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
 pub use circle::{classify_circle, classify_circle_with, CircleReport, CircleStability};

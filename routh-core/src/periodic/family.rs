@@ -19,8 +19,8 @@ use super::flow::{field_and_jacobian, join, onto_level, split};
 use super::node::{same_family, Node};
 use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Slot, Solved, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
-use crate::path::row::LinearRow;
-use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
+use crate::solve::path::row::LinearRow;
+use crate::solve::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
 use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
 
 /// The index of the smallest singular value (nalgebra does not promise an order).

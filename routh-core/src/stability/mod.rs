@@ -183,7 +183,7 @@ fn classify_parts<M: Routhian>(
         });
     }
     let eigs = tan.values;
-    // The one zero test (crate::zero) on the search's tangential scale: a zero eigenvalue here
+    // The one zero test (solve::zero) on the search's tangential scale: a zero eigenvalue here
     // is one the search calls zero too.
     let zero = tan.zero_test();
     let zero_tol = zero.tol;

@@ -15,7 +15,7 @@ use nalgebra::Vector3;
 
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::norm::stable_norm;
+use crate::solve::norm::stable_norm;
 use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
 
 /// One steady motion (31)–(34): the body at rest in the frame that turns uniformly about the

@@ -9,7 +9,7 @@ use super::builder::Builder;
 use crate::error::RouthError;
 use crate::families::continuation::{meridian_normal, Ctx, Node};
 use crate::model::Routhian;
-use crate::path::row::LinearRow;
+use crate::solve::path::row::LinearRow;
 
 /// Shortest chord that is still split, in plot-normalised coordinates (`s` over the range, `E`
 /// over its extent on the diagram): about a fifth of a pixel on a 900-pixel figure.
