@@ -1,7 +1,7 @@
 //! Smooth energy curves: after continuation, corrected points are inserted on each branch where
-//! its curve `(s, E)` turns too fast to be drawn as a polyline (issue 20 item 8, issue 23
-//! item 5). The points come from the branch's own corrector ([`Ctx::correct`]); only where they
-//! go is decided here, by the curvature of the curve, not by the continuation step.
+//! its curve `(s, E)` turns too fast to be drawn as a polyline. The points come from the
+//! branch's own corrector ([`Ctx::correct`]); only where they go is decided here, by the
+//! curvature of the curve, not by the continuation step.
 
 use nalgebra::Vector4;
 
