@@ -75,7 +75,3 @@ pub use steady::{
     steady_motion_near, steady_motion_search, steady_motions, SearchOptions, SearchResult,
     SteadyMotion,
 };
-/// Former names, kept for old code (see `docs/api.md`).
-#[allow(deprecated)]
-#[doc(hidden)]
-pub use {nonlinear::nonlinear_stability_with, steady::steady_motions_with};

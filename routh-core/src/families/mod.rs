@@ -45,10 +45,7 @@ use crate::stability::{ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{SearchOptions, SteadyMotion};
 
 pub use atlas::{stability_atlas, stability_atlas_parallel};
-#[allow(deprecated)]
-#[doc(hidden)]
-pub use diagram::bifurcation_diagram_checked;
-pub use diagram::{bifurcation_diagram, continue_branch, CheckedDiagram, CountCheck};
+pub use diagram::{bifurcation_diagram, continue_branch, CountCheck};
 pub use nonlinear::{nonlinear_events, NonlinearCurve, NonlinearEvent, NonlinearEventVerdicts};
 
 /// Options of [`bifurcation_diagram`] and [`continue_branch`].

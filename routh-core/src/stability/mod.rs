@@ -14,8 +14,7 @@ pub use options::ClassifyOptions;
 pub use quartic::f2_coefficients;
 pub(crate) use quartic::f2_coefficients_scaled;
 pub use report::{Stability, StabilityReport};
-#[allow(deprecated)]
-pub use signatures::{classify_with_krein, krein_report, KreinReport};
+pub use signatures::{krein_report, KreinReport};
 
 use quartic::{f2_parts_of, quartic_roots, F2Parts, SquareRoots};
 

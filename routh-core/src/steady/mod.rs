@@ -150,7 +150,7 @@ impl SearchOptions {
 /// **The list is the result of a search, and its completeness is self-checked, but this
 /// function does not return the check.** The search sums the indices of the critical points it
 /// found and compares the sum with the Euler characteristic χ(S²) = 2 (Poincaré–Hopf; see
-/// *Self-check* below). [`steady_motions_checked`] returns the same motions together with that
+/// *Self-check* below). [`steady_motion_search`] returns the same motions together with that
 /// sum ([`SearchResult::euler_characteristic`]) and whether it is reconciled
 /// ([`SearchResult::consistent`]). Use it whenever the number of steady motions matters: a
 /// `consistent: false` means that critical points were probably missed or mis-merged, and this
@@ -247,7 +247,7 @@ impl SearchOptions {
 /// The index of every isolated point (`±1` from the signs of the eigenvalues of `K`, or the
 /// winding number of `g` on a small circle at a degenerate point) is summed, closed curves
 /// counting 0; Poincaré–Hopf requires χ(S²) = 2. If the sum is not 2 the search is repeated on a
-/// grid four times finer. [`steady_motions_checked`] reports the sum and whether it is reconciled;
+/// grid four times finer. [`steady_motion_search`] reports the sum and whether it is reconciled;
 /// `steady_motions` returns the same motions without the flag.
 ///
 /// Errors: [`RouthError::NonFinite`] for a non-finite `p_psi`;
@@ -393,39 +393,6 @@ pub struct SearchResult {
     /// critical points were probably missed or mis-merged even after the refined second search:
     /// do not trust the list as complete.
     pub consistent: bool,
-}
-
-/// The former name of [`steady_motion_search`], renamed because a `_with` form takes options
-/// and returns what the plain function returns, and this one returns more.
-#[deprecated(note = "renamed `steady_motion_search` (same arguments, same `SearchResult`)")]
-#[doc(hidden)]
-pub fn steady_motions_with<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-    opts: &SearchOptions,
-) -> Result<SearchResult, RouthError> {
-    steady_motion_search(model, p_psi, opts)
-}
-
-/// [`steady_motion_search`] at the default options.
-#[deprecated(note = "use `steady_motion_search(model, p_psi, &SearchOptions::default())`")]
-#[doc(hidden)]
-pub fn steady_motions_checked<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-) -> Result<SearchResult, RouthError> {
-    steady_motion_search(model, p_psi, &SearchOptions::default())
-}
-
-/// The former name of [`steady_motion_search`].
-#[deprecated(note = "use `steady_motion_search`, which returns the `SearchResult`")]
-#[doc(hidden)]
-pub fn steady_motions_checked_with<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-    opts: &SearchOptions,
-) -> Result<SearchResult, RouthError> {
-    steady_motion_search(model, p_psi, opts)
 }
 
 /// The steady motion nearest (in the sense of Newton's method on the sphere) to the guess
