@@ -7,13 +7,15 @@
 # Usage: scripts/api-count.sh [git-rev]   (default: the working tree)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# 133 after hiding internals (issue 35); +13 for the figures' one style (issue 36: the module
-# `style`, its table and constants, which the Python package reads too; `plot::png_from_svg`,
-# `plot::with_circle_verdicts`); +2 for periodic families (issue 42: `switch_branch`,
-# `axial_symmetry`); +2 for families in a parameter (issue 42: `continue_orbit_in`,
-# `OrbitParameterFamily`); +2 for run control (`RunControl`, `Progress`); +4 for the one writer
-# of every file (the module `files`, `files::write_file`, `files::Staged`, `files::WriteError`).
-BUDGET=156
+# 133 after hiding internals; +13 for the figures' one style (the module `style`, its table and
+# constants, which the Python package reads too; `plot::png_from_svg`,
+# `plot::with_circle_verdicts`); +2 for periodic families (`switch_branch`, `axial_symmetry`);
+# +2 for families in a parameter (`continue_orbit_in`, `OrbitParameterFamily`); +2 for run
+# control (`RunControl`, `Progress`); +4 for the one writer of every file (the module `files`,
+# `files::write_file`, `files::Staged`, `files::WriteError`); −3 for the deprecated names
+# removed (`fluid::FluidError`, `stability::classify_with_krein`, `families::CheckedDiagram`; the
+# other removed aliases were hidden and not counted).
+BUDGET=153
 rev="${1:-}"
 show() { if [ -n "$rev" ]; then git show "$rev:$1" 2>/dev/null || true; else cat "$1" 2>/dev/null || true; fi; }
 export -f show

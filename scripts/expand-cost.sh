@@ -5,10 +5,15 @@
 # and quote run unoptimised, as they do for a user; our workspace's build-override does not apply).
 #
 # It builds two crates in a scratch workspace, identical except that one derives `Lagrangian` on
-# the ellipsoid, then rebuilds each RUNS times (touching its source) with
-# `cargo rustc -- -Z time-passes` and reports the median `macro_expand_crate` of each and the
-# difference. `-Z` needs nightly; by default the installed stable compiler is used with
-# `RUSTC_BOOTSTRAP=1` (the same compiler a user builds with).
+# the ellipsoid, then measures each RUNS times:
+# 1. the wall clock: a rebuild (touching its source) with `cargo rustc -- -Z time-passes`, the
+#    median and minimum `macro_expand_crate` of each and the difference;
+# 2. the CPU time (when `perf` is installed): `perf stat -e task-clock` on `rustc -Z no-analysis`
+#    (parse and expand, name resolution included, nothing after) of each crate, the minima and
+#    the difference — the generator, unoptimised, and what rustc does with its tokens. CPU time
+#    is far steadier than the wall clock when other work runs on the machine.
+# `-Z` needs nightly; by default the installed stable compiler is used with `RUSTC_BOOTSTRAP=1`
+# (the same compiler a user builds with).
 #
 # Usage: scripts/expand-cost.sh [RUNS]          (default 7)
 # Environment:
@@ -123,3 +128,38 @@ echo "macro_expand_crate without derive (ms): ${without[*]}  median $mo, min $lo
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores (a busy machine inflates every figure)"
 awk -v a="$mw" -v b="$mo" -v c="$lw" -v d="$lo" 'BEGIN {
     printf "derive(Lagrangian) on the ellipsoid adds %.1f ms of macro expansion (median; %.1f ms min to min)\n", a - b, c - d }'
+
+# 2. CPU time of `rustc -Z no-analysis` with and without the derive.
+if ! command -v perf >/dev/null; then
+    echo "perf not installed: no CPU-time measurement" >&2
+    exit 0
+fi
+OUT=$(mktemp -d -t routh-expand-rustc.XXXXXX)
+trap 'rm -rf "$OUT"' EXIT
+[[ -n "${EXPAND_COST_DIR:-}" ]] || trap 'rm -rf "$OUT" "$DIR"' EXIT
+
+# The rustc command cargo runs for crate $1, with `-Z no-analysis`, metadata only, no
+# incremental cache, its output in $OUT.
+command_of() {
+    touch "$1/src/lib.rs"
+    CARGO_INCREMENTAL=0 "${CARGO[@]}" rustc -v -p "$1" --lib -- -Z no-analysis 2>&1 |
+        grep -o 'Running `.*`' | tail -n 1 | sed 's/^Running `//; s/`$//' |
+        sed 's/ -C incremental=[^ ]*//; s/--emit=[^ ]*/--emit=metadata/' |
+        sed 's/--error-format=json --json=[^ ]*//' |
+        sed "s| --out-dir [^ ]*| --out-dir $OUT|"
+}
+cpu() { RUSTC_BOOTSTRAP=1 perf stat -x, -e task-clock bash -c "$1" 2>&1 >/dev/null | awk -F, '/task-clock/ { print $1 }'; }
+
+with_cmd=$(command_of with-derive)
+without_cmd=$(command_of without-derive)
+with=() without=()
+for ((i = 0; i < RUNS; i++)); do
+    with+=("$(cpu "$with_cmd")")
+    without+=("$(cpu "$without_cmd")")
+done
+lw=$(printf '%s\n' "${with[@]}" | minimum)
+lo=$(printf '%s\n' "${without[@]}" | minimum)
+echo "rustc -Z no-analysis CPU with derive (ms):    ${with[*]}  min $lw"
+echo "rustc -Z no-analysis CPU without derive (ms): ${without[*]}  min $lo"
+awk -v a="$lw" -v b="$lo" 'BEGIN {
+    printf "derive(Lagrangian) on the ellipsoid adds %.1f ms of rustc CPU to parsing and expansion (min to min)\n", a - b }'

@@ -1,7 +1,7 @@
 //! Certified completeness (`routh::certify`, docs/method.md §9): the interval enclosures contain
 //! the derivatives of the hand-written num-dual twins, and the certificate never claims a wrong
-//! count — on closed-form cases it proves the right count, and on the hard cases of the trust
-//! issue (degenerate points, circles, huge terms constant on the sphere) it leaves regions
+//! count — on closed-form cases it proves the right count, and on the hard cases of
+//! `routh-core/tests/trust.rs` (degenerate points, circles, huge terms constant on the sphere) it leaves regions
 //! undecided instead.
 
 use derived_models::{Gyrostat, LagrangeTop};
@@ -441,7 +441,7 @@ fn random_inputs_never_panic() {
     assert!(ok > 0 && err > 0, "ok {ok}, err {err}");
 }
 
-/// An off-axis heavy top (issue 20, item 5).
+/// An off-axis heavy top.
 #[derive(Lagrangian, Clone, Copy)]
 #[lagrangian(
     kinetic = 0.5 * omega.dot(diag(inertia) * omega),

@@ -8,7 +8,7 @@
 //! evaluator evaluates the definitions in order and the formula with them.
 //!
 //! Since the formulas print in a canonical order and the matrices name the paper's
-//! intermediates (issue 36): the evaluator reads `\gamma^{\mathsf{T}} J \gamma`, `\dot\psi` and
+//! intermediates: the evaluator reads `\gamma^{\mathsf{T}} J \gamma`, `\dot\psi` and
 //! `\mu` as symbols defined in the `where` clause (`intermediates`), because A, G, C are now
 //! written with them instead of only `\sigma_{k}`; the values compared are unchanged (the order
 //! of terms changes no value), and the report line counts the matrices that still need a

@@ -1,4 +1,4 @@
-//! `routh::Model` against `#[derive(Lagrangian)]` (issue 22 item 3): for every derived model of
+//! `routh::Model` against `#[derive(Lagrangian)]`: for every derived model of
 //! `test-models/derived`, a `Model` from the same text and parameter values gives the same
 //! values as the generated code — every output of every method (`full_jacobian` too), at random points with Ω ≠ 0
 //! and |γ| ≠ 1, to 1e−14 relative — the same steady motions and the same verdicts; and one

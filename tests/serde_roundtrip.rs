@@ -12,7 +12,7 @@
 //! | `Trajectory`, `SimStats` (in it), attitude and Euler angles | `simulate_full` | `trajectories_round_trip` |
 //! | `ReducedTrajectory` | `simulate_reduced` | `trajectories_round_trip` |
 //! | `ApexLocus` | `sim::attitude::classify_apex_locus` | `trajectories_round_trip` |
-//! | `SteadyMotion`, `SearchOptions`, `SearchResult` | `steady_motions`, `steady_motions_checked` | `steady_motions_reports_and_matrices_round_trip` |
+//! | `SteadyMotion`, `SearchOptions`, `SearchResult` | `steady_motions`, `steady_motion_search` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `StabilityReport`, `Stability`, `ClassifyOptions` | `classify` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `KreinReport` | `stability::krein_report` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `Classified` | `classified_steady_motions` | `classified_motions_round_trip` |
@@ -20,7 +20,7 @@
 //! | `GyroscopicSystem`, `RouthBundle`, `FullEquations`, `ReducedEquations`, `RankOneInertia` | `Routhian::gyroscopic_system`, `bundle`, `full_equations`, `reduced_equations` | `steady_motions_reports_and_matrices_round_trip` |
 //! | `ContinuationOptions`, `BifurcationDiagram`, `Branch`, `BranchPoint`, `BranchEvent`, `EventKind` | `bifurcation_diagram` | `diagrams_and_atlases_round_trip` |
 //! | `StopReason` | `BifurcationDiagram::stop` | `diagrams_and_atlases_round_trip` |
-//! | `CheckedDiagram`, `CountCheck` | `families::bifurcation_diagram_checked` | `diagrams_and_atlases_round_trip` |
+//! | `CountCheck` | `BifurcationDiagram::checks` | `diagrams_and_atlases_round_trip` |
 //! | `AtlasOptions`, `StabilityAtlas`, `BoundaryCurve` | `stability_atlas` | `diagrams_and_atlases_round_trip` |
 //! | `CertifyOptions`, `Certificate`, `CertifiedMotion`, `UndecidedRegion`, `Interval` | `steady_motions_certified` | `certificates_round_trip` |
 //! | `NonlinearOptions`, `NonlinearReport`, `NonlinearVerdict`, `Resonance` | `nonlinear_stability` | `nonlinear_reports_and_events_round_trip` |

@@ -2,7 +2,6 @@
 //! linearly stable steady motions at one momentum (period, precession, stability index, events),
 //! and Poincaré sections at one (p_ψ, E) (docs/method.md §11).
 
-use std::io::Write;
 use crate::cli::{OrbitArgs, Orbits, Section};
 use crate::commands::{describe, load};
 use crate::error::CliError;
@@ -17,6 +16,7 @@ use routh::{
     Vector3,
 };
 use std::cell::RefCell;
+use std::io::Write;
 
 /// The orbit corrected from a guess; the library's refusals of the guess (not finite, γ not a
 /// unit vector, T ≤ 0, a steady motion) are bad input, a corrector that does not converge a

@@ -128,7 +128,7 @@ fn classify_with_an_axis_decides_the_circle_of_the_lagrange_top() {
         "{}",
         stdout(&o)
     );
-    // The axis at any scale is the same axis (issue 34).
+    // The axis at any scale is the same axis.
     for axis in ["0,0,1e160", "0,0,1e-200", "0,0,1e-310"] {
         let w = json(&routh(&[
             "classify", TOP, "-p", "3", "--axis", axis, "--json",
@@ -210,7 +210,7 @@ fn diagram_over_momentum_finds_the_two_classical_bounds() {
 }
 
 /// A diagram over a range a few ulps wide has one branch per steady motion, not three (one per
-/// seed; issue 34).
+/// seed).
 #[test]
 fn a_diagram_over_a_tiny_range_has_each_branch_once() {
     let steady = json(&routh(&["steady", TOP, "-p", "1.9", "--json"]));
@@ -365,7 +365,7 @@ fn bad_input_exits_with_code_2_and_names_the_problem() {
         "not a finite number",
     );
     rejects(&["diagram", TOP, "--momentum", "3"], "not a range");
-    // Issue 34: `0...1` is not 0..0.1; negative numbers reach the value's own check (not
+    // `0...1` is not 0..0.1; negative numbers reach the value's own check (not
     // clap's tip about `--`); a relative tolerance above 1 is refused.
     rejects(&["diagram", TOP, "--momentum", "0...1"], "two dots");
     let sim = ["simulate", TOP, "--omega", "0,0,1", "--gamma", "0,0,1"];

@@ -28,11 +28,11 @@ use nalgebra::{Matrix3x2, Vector3};
 
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::solve::zero::ZeroTest;
 use crate::sphere::{restricted_hessian, ROUND};
 use crate::stability::{classify_evaluated, ClassifyOptions, Evaluated, StabilityReport};
 use crate::steady::SteadyMotion;
 use crate::validate::{check_finite, check_model_finite};
-use crate::zero::ZeroTest;
 
 /// The verdict of [`classify_circle`] on a circle of steady motions, modulo the symmetry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

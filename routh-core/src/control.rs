@@ -1,26 +1,4 @@
-//! Run control of long analyses: a cancel flag that another thread sets (a Ctrl-C handler, a
-//! GUI's button) and a progress callback, carried in an analysis' options
-//! ([`OrbitOptions::control`](crate::OrbitOptions::control),
-//! [`SectionOptions::control`](crate::SectionOptions::control)).
-//!
-//! The integrator looks at the flag before every step, so an analysis stops within one step of
-//! the flag being set (microseconds to milliseconds). A family then ends with
-//! [`OrbitStop::Interrupted`](crate::OrbitStop::Interrupted), keeping the orbits it has; an
-//! analysis with no partial result returns [`RouthError::Interrupted`].
-//!
-//! ```
-//! use std::sync::{atomic::AtomicBool, Arc};
-//! use routh::{OrbitOptions, RunControl};
-//! let cancel = Arc::new(AtomicBool::new(false));
-//! let opts = OrbitOptions {
-//!     control: RunControl::default()
-//!         .with_cancel(cancel.clone())
-//!         .with_progress(|p| eprintln!("{} of {}", p.done, p.total)),
-//!     ..OrbitOptions::default()
-//! };
-//! // Another thread (a Ctrl-C handler) may now call `cancel.store(true, Ordering::SeqCst)`.
-//! # let _ = opts;
-//! ```
+//! Run control of long analyses: cancellation from another thread and progress ([`RunControl`]).
 
 use std::fmt;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -41,9 +19,32 @@ pub struct Progress {
 /// A progress callback.
 type OnProgress = Arc<dyn Fn(Progress) + Send + Sync>;
 
-/// The run control of one analysis: an optional cancel flag and an optional progress callback
-/// (see the [module](self)). `Default` is neither: the analysis runs to its end, silently.
-/// Cloning shares the flag and the callback.
+/// Run control of long analyses: a cancel flag that another thread sets (a Ctrl-C handler, a
+/// GUI's button) and a progress callback, carried in an analysis' options
+/// ([`OrbitOptions::control`](crate::OrbitOptions::control),
+/// [`SectionOptions::control`](crate::SectionOptions::control)).
+///
+/// The integrator looks at the flag before every step, so an analysis stops within one step of
+/// the flag being set (microseconds to milliseconds). A family then ends with
+/// [`OrbitStop::Interrupted`](crate::OrbitStop::Interrupted), keeping the orbits it has; an
+/// analysis with no partial result returns [`RouthError::Interrupted`].
+///
+/// ```
+/// use std::sync::{atomic::AtomicBool, Arc};
+/// use routh_core::{OrbitOptions, RunControl};
+/// let cancel = Arc::new(AtomicBool::new(false));
+/// let opts = OrbitOptions {
+///     control: RunControl::default()
+///         .with_cancel(cancel.clone())
+///         .with_progress(|p| eprintln!("{} of {}", p.done, p.total)),
+///     ..OrbitOptions::default()
+/// };
+/// // Another thread (a Ctrl-C handler) may now call `cancel.store(true, Ordering::SeqCst)`.
+/// # let _ = opts;
+/// ```
+///
+/// `Default` has neither flag nor callback: the analysis runs to its end, silently. Cloning
+/// shares the flag and the callback.
 #[derive(Clone, Default)]
 pub struct RunControl {
     cancel: Option<Arc<AtomicBool>>,
@@ -90,7 +91,10 @@ impl RunControl {
 impl fmt::Debug for RunControl {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("RunControl")
-            .field("cancel", &self.cancel.as_ref().map(|c| c.load(Ordering::Relaxed)))
+            .field(
+                "cancel",
+                &self.cancel.as_ref().map(|c| c.load(Ordering::Relaxed)),
+            )
             .field("progress", &self.progress.is_some())
             .finish()
     }

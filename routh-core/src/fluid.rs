@@ -102,11 +102,6 @@ impl FluidParameters {
     }
 }
 
-/// The error of [`kirchhoff_lagrangian`], now [`RouthError`]: a non-finite input is
-/// [`RouthError::NonFinite`], every other rejection [`RouthError::InvalidModel`] naming the input.
-#[deprecated(note = "kirchhoff_lagrangian returns routh::RouthError")]
-pub type FluidError = RouthError;
-
 /// The rejection of the input `what` for `reason`.
 fn invalid(what: &'static str, reason: String) -> RouthError {
     RouthError::InvalidModel { what, reason }

@@ -26,21 +26,18 @@ pub mod files;
 pub mod fluid;
 mod formulas;
 mod krein;
-mod locate;
 mod model;
 pub mod nonlinear;
-mod norm;
-mod path;
 pub mod periodic;
 #[cfg(feature = "serde")]
 mod serde_support;
 pub mod sim;
+mod solve;
 mod sphere;
 pub mod stability;
 pub mod steady;
 #[doc(hidden)]
 pub mod validate;
-mod zero;
 
 pub use certify::{steady_motions_certified, Certificate, CertifyOptions};
 pub use circle::{classify_circle, classify_circle_with, CircleReport, CircleStability};
@@ -79,7 +76,3 @@ pub use steady::{
     steady_motion_near, steady_motion_search, steady_motions, SearchOptions, SearchResult,
     SteadyMotion,
 };
-/// Former names, kept for old code (see `docs/api.md`).
-#[allow(deprecated)]
-#[doc(hidden)]
-pub use {nonlinear::nonlinear_stability_with, steady::steady_motions_with};

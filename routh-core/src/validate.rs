@@ -1,7 +1,7 @@
 //! Input validation shared by every public function: finite inputs, a unit γ (one tolerance for
 //! the whole crate), a kinetic form that is positive definite.
 
-use crate::norm::stable_norm;
+use crate::solve::norm::stable_norm;
 use nalgebra::{Matrix3, Vector3};
 
 use crate::error::RouthError;

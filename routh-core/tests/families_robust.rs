@@ -1,4 +1,4 @@
-//! Families that never fail where a researcher looks (issue 20): seeds on branch points,
+//! Families that never fail where a researcher looks: seeds on branch points,
 //! pitchfork tips, near-spherical circles, budgets that end with a partial result. Checked
 //! against closed forms (the Kovalevskaya top, the asymmetric prolate top) and the global search.
 

@@ -1,4 +1,4 @@
-//! Smooth energy–momentum curves (issue 20 item 8, issue 23 item 5): after continuation the
+//! Smooth energy–momentum curves: after continuation the
 //! branches get corrected points wherever their curve `(s, E)` turns by more than
 //! [`ContinuationOptions::em_turn_degrees`] in plot-normalised coordinates. Checked on the
 //! Lagrange top against the closed forms of its energy along the sleeping, hanging and tilted

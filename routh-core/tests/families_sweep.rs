@@ -1,4 +1,4 @@
-//! A randomised sweep of bifurcation diagrams (issue 20): symmetric, asymmetric and off-axis
+//! A randomised sweep of bifurcation diagrams: symmetric, asymmetric and off-axis
 //! heavy tops over random ranges, ranges centred on their closed-form branch points and ranges
 //! whose seeds fall exactly on a branch point. Every diagram must succeed with no budget
 //! exhausted, and [`BifurcationDiagram::count_at`] must equal the number of steady motions

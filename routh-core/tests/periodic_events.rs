@@ -154,7 +154,7 @@ fn planar_events_are_where_the_monodromy_puts_them(j: [f64; 3], mgl: f64, max_en
                     o.period
                 );
             }
-            // The whole family stays planar (the issue saw drifts of 3.7e−3).
+            // The whole family stays planar (drifts of 3.7e−3 were once seen).
             for o in &f.orbits {
                 let off = if axis == 0 {
                     o.gamma0.x.abs().max(o.omega0.y.abs()).max(o.omega0.z.abs())
@@ -171,7 +171,7 @@ fn planar_events_are_where_the_monodromy_puts_them(j: [f64; 3], mgl: f64, max_en
     }
 }
 
-/// (1) The body of the issue, `J = diag(1, 1.6, 2.3)`, `mgl = 1`, up to `E = 0.9`.
+/// (1) The reference body, `J = diag(1, 1.6, 2.3)`, `mgl = 1`, up to `E = 0.9`.
 #[test]
 fn events_of_planar_swings_are_where_an_independent_monodromy_puts_them() {
     planar_events_are_where_the_monodromy_puts_them(J, MGL, 0.9);
@@ -193,7 +193,7 @@ fn the_independent_index_is_converged() {
     assert!((a - b).abs() < 1e-11, "{a} vs {b}");
 }
 
-/// (1) The issue's case: `p_ψ = 0.5`, the non-planar family of mode 1 and its branch point at
+/// (1) A case off the planes: `p_ψ = 0.5`, the non-planar family of mode 1 and its branch point at
 /// E ≈ 0.46244683 (placed there by an independent scipy computation of k along the family): the
 /// event is found at three step sizes at one energy (to 1e−9), with `k = 1` to 1e−9, and its orbit
 /// closes under `simulate_full` (a different integrator, no corrector).

@@ -1,4 +1,4 @@
-//! Issue 13, items 1–3: cases where the steady-motion search and `classify` used to give wrong
+//! Cases where the steady-motion search and `classify` used to give wrong
 //! answers. Every expected value comes from a closed form or from a computation in this file
 //! (analysis of the Lagrange conditions, one-dimensional root finding), never from routh's output.
 //!

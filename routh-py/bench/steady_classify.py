@@ -1,4 +1,4 @@
-"""Benchmark (issue 24 item 6): a Python call of steady_motions + classify on the Kelvin
+"""Benchmark: a Python call of steady_motions + classify on the Kelvin
 gyrostat (examples/models/gyrostat.toml) against the same work timed inside Rust.
 
     python routh-py/bench/steady_classify.py

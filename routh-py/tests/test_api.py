@@ -247,7 +247,7 @@ def test_certify_options(top):
 
 
 def test_nonlinear_stability_docstring_example_is_right(top):
-    """The docstring's example (issue 34): steady_motions(2.2)[0] is the hanging top (secularly
+    """The docstring's example: steady_motions(2.2)[0] is the hanging top (secularly
     stable); the sleeping top is the one with γ₃ = 1, gyroscopically stabilised."""
     hanging = top.steady_motions(2.2)[0]
     assert hanging.gamma[2] < -0.99

@@ -143,7 +143,7 @@ HOSTILE = {
     "certify zero split": lambda m: m.certify(2.2, initial_split=0),
     "certify huge split": lambda m: m.certify(2.2, initial_split=2**40),
     "certify NaN width": lambda m: m.certify(2.2, min_width=NAN),
-    # Below what the chart's floating-point resolution can split (issue 34).
+    # Below what the chart's floating-point resolution can split.
     "certify tiny width": lambda m: m.certify(2.2, min_width=1e-300),
     "empty model": lambda m: routh.Model("", {}),
     "empty toml": lambda m: routh.Model.from_toml(""),
@@ -175,7 +175,7 @@ def test_amended_potential_refuses_what_has_no_value(top):
     with pytest.raises(routh.RouthError) as info:
         top.amended_potential([0.0, 0.0, 0.0], 2.0)
     assert info.value.kind == "NonUnitGamma"
-    # As simulate: a γ off the unit sphere is refused, with the same tolerance (issue 34).
+    # As simulate: a γ off the unit sphere is refused, with the same tolerance.
     for g in ([0.0, 0.0, 2.0], [0.0, 0.6, 0.7]):
         with pytest.raises(routh.RouthError) as info:
             top.amended_potential(g, 2.0)
@@ -246,7 +246,7 @@ print(results)
 
 def test_deep_and_long_texts_never_kill_the_interpreter():
     """7000 signs are refused with a position; a flat sum of 50 000 terms builds, also from a
-    Python thread (issue 34: these killed the interpreter with SIGSEGV)."""
+    Python thread (these once killed the interpreter with SIGSEGV)."""
     r = subprocess.run([sys.executable, "-c", HUGE], capture_output=True, text=True, timeout=300)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "['err 2:77', 'ok', 'ok']", r.stdout

@@ -68,7 +68,7 @@ def test_plots_and_svg(top):
 
 
 def test_atlas_plot_places_each_cell_on_square_and_non_square_grids(top):
-    """verdicts[j][i] is at (x[i], y[j]), and the plot draws it there (issue 34)."""
+    """verdicts[j][i] is at (x[i], y[j]), and the plot draws it there."""
     pytest.importorskip("matplotlib")
     import matplotlib
 

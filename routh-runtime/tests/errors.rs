@@ -70,7 +70,7 @@ fn syntax_and_lexing_errors() {
     assert!(e.message.contains("cannot be read"), "{e}");
     assert!(!e.message.contains("Rust"), "{e}");
     assert_eq!((e.line, e.column), (2, 13));
-    // Unbalanced brackets and a misspelt item, in the language's own words (issue 34).
+    // Unbalanced brackets and a misspelt item, in the language's own words.
     let e = err("kinetic = 0.5 * omega.dot(omega,\npotential = gamma.z", &[]);
     assert_eq!(e.message, "`(` is never closed", "{e}");
     assert_eq!((e.line, e.column), (1, 26));
@@ -305,7 +305,7 @@ fn nan_and_infinite_parameters_are_refused_naming_them_huge_ones_are_values() {
     assert!(!m.energy(&Vector3::new(10.0, 0.0, 0.0), &g).is_finite());
 }
 
-/// The hostile texts of issue 34: deep, long and large. Each builds or is refused with a
+/// Hostile texts: deep, long and large. Each builds or is refused with a
 /// placed error; none may crash (a stack overflow aborts the process, so each is run in a
 /// child process of this test binary, see [`hostile_texts_build_or_are_refused_never_crash`]).
 fn hostile_case(name: &str) -> Result<Model, ModelError> {

@@ -1,4 +1,4 @@
-//! Mutated model texts (issue 22 item 5): tokens and characters deleted, inserted and replaced,
+//! Mutated model texts: tokens and characters deleted, inserted and replaced,
 //! unicode, huge numbers, NaN and infinite parameters. `Model::new` and `Model::from_toml` must
 //! never panic, and every error must point inside the text (its line exists, its column is on
 //! the line or just past its end); a model that builds must evaluate without panicking.
@@ -301,8 +301,8 @@ fn expression(rng: &mut ChaCha8Rng, budget: usize, out: &mut String) {
 }
 
 /// Model texts generated with random shapes and sizes (deep, long, bushy; up to thousands of
-/// terms): each builds or is refused with an error placed in the text, never a panic or a crash
-/// (issue 34). Bounded: a few seconds.
+/// terms): each builds or is refused with an error placed in the text, never a panic or a crash.
+/// Bounded: a few seconds.
 #[test]
 fn generated_texts_of_any_shape_build_or_are_refused() {
     let mut rng = ChaCha8Rng::seed_from_u64(0x34);

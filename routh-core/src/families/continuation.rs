@@ -3,7 +3,7 @@
 //!
 //! The unknowns are `(γ, σ)`, `σ = s/L` with `L` the length of the range, so that steps mix
 //! comparable quantities. The steps are those of the crate's one predictor–corrector
-//! ([`crate::path`], [`PathOptions::diagram`]): a step `h` along the unit tangent `τ` of the curve
+//! ([`crate::solve::path`], [`PathOptions::diagram`]): a step `h` along the unit tangent `τ` of the curve
 //! `{F = 0}` (the null vector of the 2×3 Jacobian `[∂F/∂ξ | ∂F/∂σ]`), then Newton
 //! ([`Ctx::correct`]) in the chart around the predicted point on `F = 0` and
 //! `τ·(x − x_pred) = 0`. For a branch of circles
@@ -19,16 +19,16 @@ use nalgebra::{Matrix2x3, Matrix4, Vector2, Vector3, Vector4};
 use super::equations::{chart_eval, member, relative_discriminant, restricted_eigen, ChartEval};
 use super::{BranchSample, ContinuationOptions};
 use crate::error::RouthError;
-use crate::locate::{locate, End};
 use crate::model::Routhian;
-use crate::path::row::LinearRow;
-use crate::path::{sphere_head, Corrected, Failure, Path, PathOptions, Point, Prediction};
+use crate::solve::locate::{locate, End};
+use crate::solve::newton::{Linearised, Newton};
+use crate::solve::path::row::LinearRow;
+use crate::solve::path::{sphere_head, Corrected, Failure, Path, PathOptions, Point, Prediction};
+use crate::solve::zero::{ZeroTest, DOUBLE_REL, EIGEN_REL};
 use crate::sphere::local::Local;
-use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{tangent_basis, NOISE};
 use crate::stability::{classify_with, ClassifyOptions, Stability};
 use crate::steady::record;
-use crate::zero::{ZeroTest, DOUBLE_REL, EIGEN_REL};
 
 /// Evaluations of `F` by the corrector before it gives up ([`Newton::continuation`] takes one
 /// step fewer).
@@ -403,7 +403,7 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Ctx<'a, M, F> {
     }
 
     /// Locates the zero of `phi` on the step from `a` (arclength 0) to `b` (arclength `h`) with
-    /// the crate's event locator ([`crate::locate`]), to `|Δs| ≤ event_tol·max(1, |s|)` (and the
+    /// the crate's event locator ([`crate::solve::locate`]), to `|Δs| ≤ event_tol·max(1, |s|)` (and the
     /// arclength to `1e−6·h`: at a fold `s` is stationary). Returns the node at the zero.
     ///
     /// The points re-solved on the step are corrected relative to the tangential scale at the

@@ -12,6 +12,11 @@
 //! - [`stability_atlas`]: the verdict of one steady motion over a grid of two parameters, with
 //!   the boundary curves of its stability region traced by continuation.
 //!
+//! Families of periodic orbits, through the energy or a parameter, are in [`crate::periodic`]
+//! (`continue_orbit`, `continue_orbit_in`): both kinds of family are followed by the crate's one
+//! predictor–corrector and locate their events with its one event locator (docs/architecture.md,
+//! "Engines").
+//!
 //! # Events
 //!
 //! Along a branch the restricted second variation `K` (62)–(63) and the roots of `f₂` (errata E5)
@@ -40,10 +45,7 @@ use crate::stability::{ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{SearchOptions, SteadyMotion};
 
 pub use atlas::{stability_atlas, stability_atlas_parallel};
-#[allow(deprecated)]
-#[doc(hidden)]
-pub use diagram::bifurcation_diagram_checked;
-pub use diagram::{bifurcation_diagram, continue_branch, CheckedDiagram, CountCheck};
+pub use diagram::{bifurcation_diagram, continue_branch, CountCheck};
 pub use nonlinear::{nonlinear_events, NonlinearCurve, NonlinearEvent, NonlinearEventVerdicts};
 
 /// Options of [`bifurcation_diagram`] and [`continue_branch`].

@@ -405,16 +405,3 @@ fn beyond_linear<R: RouthianJet + ?Sized>(
     report.reason = reason;
     Ok(report)
 }
-
-/// The former name of [`nonlinear_stability_from_jet`] (a `_with` form takes options, and
-/// nothing else).
-#[deprecated(note = "renamed `nonlinear_stability_from_jet` (same arguments)")]
-#[doc(hidden)]
-pub fn nonlinear_stability_with<M: Routhian, R: RouthianJet + ?Sized>(
-    model: &M,
-    steady: &SteadyMotion,
-    r: &R,
-    opts: &NonlinearOptions,
-) -> Result<NonlinearReport, RouthError> {
-    nonlinear_stability_from_jet(model, steady, r, opts)
-}

@@ -7,7 +7,7 @@ use nalgebra::SMatrix;
 use super::family::{merge_halves, restart, smallest, Tracer};
 use super::shoot::{correct, Problem, Slot, TOP, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions};
-use crate::path::row::LinearRow;
+use crate::solve::path::row::LinearRow;
 use crate::{RouthError, Routhian};
 
 /// The family of periodic orbits that crosses a family at a [`OrbitEventKind::BranchPoint`]

@@ -7,7 +7,7 @@ use nalgebra::{SMatrix, Vector6};
 use super::family::{restart, smallest, Tracer};
 use super::shoot::{correct, Problem, Scales, Slot, W};
 use super::{OrbitEvent, OrbitEventKind, OrbitFamily, OrbitOptions};
-use crate::path::row::LinearRow;
+use crate::solve::path::row::LinearRow;
 use crate::{RouthError, Routhian};
 
 /// The family of orbits of twice the period born at a [`OrbitEventKind::PeriodDoubling`] event,

@@ -8,8 +8,8 @@ use super::family::Tracer;
 use super::node::{same_family, Node};
 use super::shoot::correct;
 use super::{OrbitEvent, OrbitEventKind};
-use crate::locate::{estimated_distance, locate, End};
-use crate::path::row::LinearRow;
+use crate::solve::locate::{estimated_distance, locate, End};
+use crate::solve::path::row::LinearRow;
 use crate::{RouthError, Routhian};
 
 impl<M: Routhian> Tracer<'_, M> {
@@ -139,7 +139,7 @@ impl<M: Routhian> Tracer<'_, M> {
     /// fails or the two do not straddle the zero.
     fn polish(
         &self,
-        found: &crate::locate::Located<Node>,
+        found: &crate::solve::locate::Located<Node>,
         test: fn(&Node) -> f64,
         kind: OrbitEventKind,
         h: f64,

@@ -19,8 +19,8 @@ use super::flow::{field_and_jacobian, join, onto_level, split};
 use super::node::{same_family, Node};
 use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Slot, Solved, UNKNOWNS, W};
 use super::{OrbitEvent, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
-use crate::path::row::LinearRow;
-use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
+use crate::solve::path::row::LinearRow;
+use crate::solve::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
 use crate::{classify, RouthError, Routhian, Stability, SteadyMotion};
 
 /// The index of the smallest singular value (nalgebra does not promise an order).
@@ -284,7 +284,11 @@ fn of_this_model<M: Routhian>(
 ) -> Result<(), RouthError> {
     let (w, g) = split(xs);
     let (e, p) = (model.energy(&w, &g), model.cyclic_momentum(&w, &g));
-    let off = |a: f64, b: f64| !((a - b).abs() <= 1e-8 * 1f64.max(a.abs()).max(b.abs()));
+    // NaN is off too.
+    let off = |a: f64, b: f64| {
+        let d = (a - b).abs();
+        d.is_nan() || d > 1e-8 * 1f64.max(a.abs()).max(b.abs())
+    };
     if off(e, steady.energy) || off(p, steady.p_psi) {
         return Err(RouthError::InvalidOption {
             what: "steady",
@@ -487,7 +491,7 @@ pub(super) fn restart<M: Routhian>(
         ),
     };
     let de = (e - orbit.energy).abs() / 1f64.max(e.abs());
-    if !(de <= START_TOL) {
+    if de.is_nan() || de > START_TOL {
         return Err(not_an_orbit(format!(
             "this model gives its start the energy {e} where the orbit says {}",
             orbit.energy

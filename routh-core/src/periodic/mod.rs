@@ -24,6 +24,9 @@
 //!   corrector, predictor–corrector and locator with the parameter in place of the energy.
 //! - **Sections** ([`poincare_section`]): many orbits at one `(p_ψ, E)` crossing a plane through
 //!   the vertical's body coordinates, in parallel (rayon).
+//!
+//! Families of steady motions, through `p_ψ` or a parameter, are in [`crate::families`]; both
+//! kinds of family are followed by the same engines (docs/architecture.md, "Engines").
 
 mod branch;
 mod doubling;

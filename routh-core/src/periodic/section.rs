@@ -14,8 +14,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::flow::{field, join, split};
 use super::PeriodicOrbit;
-use crate::locate::{estimated_distance, illinois, End};
 use crate::sim::dop853::{self, Accepted, Config};
+use crate::solve::locate::{estimated_distance, illinois, End};
 use crate::validate::check_finite;
 use crate::{Lagrangian, RouthError};
 

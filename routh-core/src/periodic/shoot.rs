@@ -13,7 +13,7 @@
 //! orbit; each step is its minimum-norm least-squares solution (SVD, singular values below
 //! `1e−12` of the largest dropped), the step in `T` limited to a third of the period.
 //!
-//! This is a second Newton next to the sphere's fixed-size 4 × 4 one (`sphere::newton`), kept
+//! This is a second Newton next to the sphere's fixed-size 4 × 4 one (`solve::newton`), kept
 //! apart deliberately: its unknowns are eight, its residual is a flow, and its stop rule is on
 //! the flow's integration tolerance (docs/architecture.md).
 
@@ -24,9 +24,9 @@ use nalgebra::{SMatrix, SVector, Vector3, Vector6};
 use super::flow::{field, flow_end, integrals, join, onto_level, precession, shoot, split, Shot};
 use super::symmetry::{self, Turn};
 use super::{OrbitOptions, OrbitStability, PeriodicOrbit};
-use crate::locate::{estimated_distance, illinois, End};
-use crate::path::row::LinearRow;
 use crate::sim::dop853::{self, Accepted, Config};
+use crate::solve::locate::{estimated_distance, illinois, End};
+use crate::solve::path::row::LinearRow;
 use crate::validate::{check_finite, unit_gamma};
 use crate::{Lagrangian, RouthError};
 

@@ -2,7 +2,7 @@
 //! [`simulate_reduced`](super::simulate_reduced): the chosen [`Method`], the error weights of
 //! [`SimOptions`] and the [`Output`] points.
 
-use crate::norm::stable_norm;
+use crate::solve::norm::stable_norm;
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 use super::{attitude, dop853, lie, Method, Output, SimOptions, SimStats};

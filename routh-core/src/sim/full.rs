@@ -6,7 +6,7 @@ use super::checks::{all_finite, check_unit_gamma, non_finite_record, too_large, 
 use super::drive::{drive, split3, Field, WithAttitude};
 use super::field::{full_vector_field, FullField};
 use super::{attitude, Method, SimOptions, Trajectory};
-use crate::norm::stable_norm;
+use crate::solve::norm::stable_norm;
 use crate::validate::check_finite;
 use crate::{Lagrangian, RouthError};
 

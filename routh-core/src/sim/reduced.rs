@@ -7,7 +7,7 @@ use super::checks::{all_finite, check_unit_gamma, non_finite_record, too_large, 
 use super::drive::{drive, split3, Field, WithAttitude};
 use super::field::{reduced_vector_field, ReducedField};
 use super::{attitude, Method, ReducedTrajectory, SimOptions};
-use crate::norm::stable_norm;
+use crate::solve::norm::stable_norm;
 use crate::validate::check_finite;
 use crate::{RouthError, Routhian};
 

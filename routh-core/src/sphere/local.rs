@@ -7,8 +7,8 @@ use nalgebra::{Matrix2, Matrix3, Matrix3x2, Vector3};
 use super::{restricted_hessian, tangent_basis, Tangential};
 use crate::error::RouthError;
 use crate::model::Routhian;
+use crate::solve::zero::tangential_scale;
 use crate::validate::{check_kinetic, check_model_finite};
-use crate::zero::tangential_scale;
 
 /// The amended potential `U_r = −R(0, γ, p_ψ)` and its derivatives at one γ, from one
 /// evaluation of the model at `Ω = 0` (γ differentiated as a free vector of ℝ³, errata).

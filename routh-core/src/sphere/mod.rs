@@ -1,13 +1,12 @@
 //! Geometry of the unit sphere of verticals γ: a tangent basis of γ^⊥ (63), the restricted
 //! second variation (62)–(63), the closed-form 2×2 symmetric eigen-decomposition, the local scale
-//! of the amended potential, a Fibonacci grid of starting points, and the one Newton corrector
-//! on the sphere ([`newton`]).
+//! of the amended potential and a Fibonacci grid of starting points. The Newton corrector on the
+//! sphere is an engine of its own, [`crate::solve::newton`].
 
 pub(crate) mod local;
-pub(crate) mod newton;
 
-use crate::norm::stable_norm;
-use crate::zero::ZeroTest;
+use crate::solve::norm::stable_norm;
+use crate::solve::zero::ZeroTest;
 use std::borrow::Cow;
 use std::sync::OnceLock;
 

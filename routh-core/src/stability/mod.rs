@@ -1,7 +1,8 @@
 //! Stability of a steady motion: sufficient conditions (62)–(63), the degree of instability and
 //! gyroscopic stabilisation (64), with the corrections of errata E4, E5 and E8.
 //!
-//! The method, the verdict rules and their tolerances are documented on [`classify`].
+//! The method, the verdict rules and their tolerances are in docs/method.md §6; [`classify`] says
+//! what it returns.
 
 use nalgebra::Vector3;
 
@@ -14,8 +15,7 @@ pub use options::ClassifyOptions;
 pub use quartic::f2_coefficients;
 pub(crate) use quartic::f2_coefficients_scaled;
 pub use report::{Stability, StabilityReport};
-#[allow(deprecated)]
-pub use signatures::{classify_with_krein, krein_report, KreinReport};
+pub use signatures::{krein_report, KreinReport};
 
 use quartic::{f2_parts_of, quartic_roots, F2Parts, SquareRoots};
 
@@ -25,60 +25,19 @@ use crate::sphere::Tangential;
 use crate::steady::SteadyMotion;
 use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
 
-/// Classifies the steady motion `steady` at its cyclic momentum `steady.p_psi` (sections 4–5): the
-/// eigenvalues of the restricted second variation (62)–(63), the degree of instability, the roots
-/// of `f₂` (errata E5) and the verdict (rules and tolerances below). `steady.gamma` must be a
-/// critical point of the amended potential, as returned by
-/// [`steady_motions`](crate::steady_motions) or built by [`SteadyMotion::at`]; the other fields
-/// of `steady` are not used.
-///
-/// # Method
-///
-/// Let `P` be a 3×2 orthonormal basis of the tangent plane γ^⊥ (63).
-/// 1. The restricted second variation of the amended potential is the 2×2 form
-///    `K = Pᵀ(μE − ∂²R/∂γ²)P` with `μ = (∂R/∂γ, γ)` at `Ω = 0` (62)–(63). Its eigenvalues are
-///    [`StabilityReport::restricted_hessian_eigenvalues`]; the number of negative ones is the
-///    degree of instability (section 5).
-/// 2. The characteristic polynomial of the linearised reduced system (65) on the tangent plane is
-///    `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` with `A`, `G`, `C` of [`Routhian::gyroscopic_system`],
-///    here from the same evaluation as step 1 ([`Routhian::bundle_and_system`] at `Ω = 0`)
-///    (errata E5: the printed 3×3 `f(λ)` of (64) vanishes identically). With `a = PᵀAP`,
-///    `c = PᵀCP` symmetric and `PᵀGP = [[0, g], [−g, 0]]`, it is the even quartic
-///    `f₂(λ) = c₄λ⁴ + c₂λ² + c₀`, `c₄ = det a`, `c₂ = a₁₁c₂₂ + a₂₂c₁₁ − 2a₁₂c₁₂ + 4g²`,
-///    `c₀ = det c`, solved exactly as a quadratic in `s = λ²` and then `λ = ±√s` (complex square
-///    root). `c = PᵀCP` is `K` up to a rotation of the plane by a right angle (errata E6), so
-///    `c₀ = det K`. The coefficients are of order `p_ψ⁴` and would overflow (or underflow) in
-///    extreme units, so the quartic is solved in the scaled variable `μ = λ/ω`, `ω` a
-///    characteristic frequency of `a`, `g`, `c`, with coefficients of order 1
-///    (`f2_coefficients_scaled`); the roots and verdicts are the same in any units.
-///
-/// # Verdict
-///
-/// - `γ` must be a steady motion: the Newton step `|K⁻¹g|` to the nearest critical point (`g` the
-///   tangential gradient of `U_r`; 0 when `|g| ≤ 1024 ε |∂R/∂γ|`, round-off) must not exceed
-///   [`ClassifyOptions::steady_tol`] (radians, default `1e−5`), otherwise
-///   [`RouthError::NotASteadyMotion`].
-/// - An eigenvalue κ of `K` is zero when `|κ| ≤ max(`[`ClassifyOptions::zero_eigenvalue_tol`]` ·
-///   ‖K‖_F, 1024 ε · s_raw)`, `s_raw = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`: relative to the restricted form
-///   itself (invariant under adding `c|γ|²` to `U`, which changes `∂R/∂γ` and `∂²R/∂γ²` but not
-///   `K`), with the raw scale only as a round-off floor.
-/// - With a zero eigenvalue, `det K = c₀ ≈ 0` and `f₂ ≈ λ²(c₄λ² + c₂)`: if `c₂ < 0` beyond its
-///   perturbation by the tolerance on `K`, `f₂` has the real root `√(−c₂/c₄) > 0` whatever the
-///   sign of the zero eigenvalue, a proven instability: [`Stability::Unstable`]. Otherwise
-///   [`Stability::Degenerate`] (errata E8: the parity argument then says nothing; circles of
-///   steady motions of a symmetric body are in this case unless `f₂` proves an instability).
-/// - Otherwise, with `d` the degree of instability: `d = 0` ⇒ [`Stability::SecularlyStable`]
-///   (section 4); `d = 1` ⇒ [`Stability::Unstable`] (odd degree, section 5); `d = 2` ⇒
-///   [`Stability::GyroscopicallyStabilized`] when the quadratic `c₄s² + c₂s + c₀` has two distinct
-///   real negative roots (all four roots of `f₂` simple and on the imaginary axis: linear
-///   stability), [`Stability::Unstable`] when a root of `f₂` leaves the imaginary axis.
-/// - The boundary of gyroscopic stabilisation, where the discriminant `c₂² − 4c₄c₀` vanishes
-///   within [`ClassifyOptions::double_root_tol`] times `c₂² + 4|c₄c₀|` (e.g. the sleeping top at exactly
-///   `p_ψ² = 4A₁mgl`, Maievskii): the roots are snapped to the double pair `±i√(−s)`,
-///   `s = −c₂/(2c₄)`. Two modes of opposite Krein signature collide there and the linearisation
-///   generically has a Jordan block (secular growth `t·e^{iωt}`), so neither linear stability nor
-///   instability follows: with `d = 2` and `s < 0` the verdict is [`Stability::Degenerate`]
-///   (inconclusive), with `s > 0` it is [`Stability::Unstable`] (real roots).
+/// Classifies the steady motion `steady` at its cyclic momentum `steady.p_psi` (sections 4–5):
+/// the eigenvalues of the restricted second variation `K = Pᵀ(μE − ∂²R/∂γ²)P` (62)–(63)
+/// ([`StabilityReport::restricted_hessian_eigenvalues`]), the degree of instability, the roots
+/// of the even quartic `f₂(λ) = det(Pᵀ(Aλ² + 2Gλ + C)P)` (errata E5; `A`, `G`, `C` from the
+/// same evaluation, [`Routhian::bundle_and_system`] at `Ω = 0`, solved exactly and in scaled
+/// units) and the verdict: secularly stable, unstable, gyroscopically stabilised or degenerate
+/// (a zero eigenvalue of `K` relative to `‖K‖`, [`ClassifyOptions::zero_eigenvalue_tol`], unless
+/// `f₂` proves an instability; or the boundary of gyroscopic stabilisation, within
+/// [`ClassifyOptions::double_root_tol`]). The method, the table of verdicts and the tolerances
+/// are in docs/method.md §6, "Verdicts". `steady.gamma` must be a critical point of the amended
+/// potential, as returned by [`steady_motions`](crate::steady_motions) or built by
+/// [`SteadyMotion::at`] (within [`ClassifyOptions::steady_tol`]); the other fields of `steady`
+/// are not used.
 ///
 /// Errors: [`RouthError::NonFinite`] for non-finite `p_psi` or γ (or non-finite derivatives of the
 /// model); [`RouthError::NonUnitGamma`] when `| |γ| − 1 | >` [`UNIT_GAMMA_TOL`](crate::validate::UNIT_GAMMA_TOL);
@@ -183,7 +142,7 @@ fn classify_parts<M: Routhian>(
         });
     }
     let eigs = tan.values;
-    // The one zero test (crate::zero) on the search's tangential scale: a zero eigenvalue here
+    // The one zero test (solve::zero) on the search's tangential scale: a zero eigenvalue here
     // is one the search calls zero too.
     let zero = tan.zero_test();
     let zero_tol = zero.tol;

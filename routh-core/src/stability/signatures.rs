@@ -86,14 +86,3 @@ pub fn krein_report<M: Routhian>(
         krein_signatures,
     })
 }
-
-/// The former name of [`krein_report`] (a `_with` form takes options, and nothing else).
-#[deprecated(note = "renamed `krein_report` (same arguments)")]
-#[doc(hidden)]
-pub fn classify_with_krein<M: Routhian>(
-    model: &M,
-    steady: &SteadyMotion,
-    opts: &ClassifyOptions,
-) -> Result<KreinReport, RouthError> {
-    krein_report(model, steady, opts)
-}

@@ -15,7 +15,7 @@ use nalgebra::Vector3;
 
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::norm::stable_norm;
+use crate::solve::norm::stable_norm;
 use crate::validate::{check_finite, check_kinetic, check_model_finite, unit_gamma};
 
 /// One steady motion (31)–(34): the body at rest in the frame that turns uniformly about the
@@ -142,113 +142,21 @@ impl SearchOptions {
 }
 
 /// All steady motions (31)–(34) at the cyclic momentum `p_psi`: the critical points of the
-/// amended potential `U_r = −R(0, γ, p_ψ)` (34) on the unit sphere, found by a global search with
-/// the default [`SearchOptions`] (method and tolerances below). Sorted by increasing `U_r`.
-/// Curves of steady motions (bodies with a symmetry) are reported once, with `isolated: false`
-/// (errata E8).
+/// amended potential `U_r = −R(0, γ, p_ψ)` (34) on the unit sphere, sorted by increasing `U_r`,
+/// found by a global search at the default [`SearchOptions`] — a safeguarded Newton iteration on
+/// the sphere from every point of a Fibonacci grid, every tolerance local and tangential (so
+/// invariant under scaling the model and under adding `c|γ|²` to `U`), degenerate points placed
+/// along the kernel of `K` and curves of steady motions (bodies with a symmetry) traced and
+/// reported once, with `isolated: false` (errata E8). The method, its tolerances and its
+/// self-check are in docs/method.md §5, "The search".
 ///
 /// **The list is the result of a search, and its completeness is self-checked, but this
-/// function does not return the check.** The search sums the indices of the critical points it
-/// found and compares the sum with the Euler characteristic χ(S²) = 2 (Poincaré–Hopf; see
-/// *Self-check* below). [`steady_motions_checked`] returns the same motions together with that
-/// sum ([`SearchResult::euler_characteristic`]) and whether it is reconciled
-/// ([`SearchResult::consistent`]). Use it whenever the number of steady motions matters: a
-/// `consistent: false` means that critical points were probably missed or mis-merged, and this
-/// function returns such a list without saying so.
-///
-/// # Geometry on the sphere
-///
-/// γ is an unconstrained vector of ℝ³ when the model differentiates (docs/errata.md, convention), so the
-/// Euclidean gradient and Hessian of `U_r` are `−∂R/∂γ` and `−∂²R/∂γ²`. On the sphere, with `P` a
-/// 3×2 orthonormal basis of the tangent plane γ^⊥ and `μ = (∂R/∂γ, γ)`:
-/// - Riemannian gradient: `g = Pᵀ(−∂R/∂γ)`; it vanishes exactly when (33) holds;
-/// - Riemannian Hessian: `K = Pᵀ(μE − ∂²R/∂γ²)P`, the restricted second variation (62)–(63); it
-///   equals `PᵀCP` with `C` of section 5 up to a rotation of the plane (errata E5, E6).
-///
-/// # Search
-///
-/// A safeguarded Riemannian Newton iteration starts from every point of a Fibonacci grid on the
-/// sphere ([`SearchOptions::starts`], 400 by default: neighbouring starts are about
-/// `√(4π/400) ≈ 0.18` rad apart). Each iteration solves the 2×2 Levenberg–Marquardt system
-/// `(K² + λE) ξ = −K g`, steps along the retraction `γ ← (γ + Pξ)/|γ + Pξ|` (at most
-/// 0.5 radians), and accepts a step only when `|g|` decreases (otherwise λ grows, turning
-/// the step into steepest descent of `½|g|²`). With `λ → 0` this is Newton's method on the
-/// sphere (quadratic convergence at a non-degenerate critical point); the safeguard makes every
-/// start converge to a critical point or stall at a local minimum of `|g|` that is not one (such
-/// starts are discarded).
-///
-/// Critical points closer together than the grid spacing (next to a bifurcation, e.g. the sleeping
-/// top inside a small circle of tilted precessions) can share one basin, so the search then starts
-/// again from rings of radii `{1/2, 1/5, 1/20}` of the spacing around every point found (and around
-/// up to 16 vertices of every curve), and from the axis `±n` of every closed curve (the normal of
-/// the plane of its vertices: for a circle of latitude of a symmetric body, the pole, a critical
-/// point by symmetry). Finally the Morse relation is checked (see *Self-check* below); if it
-/// fails, the whole search is repeated on a grid four times finer. (A pair of critical points
-/// born together in a fold and both missed leaves χ unchanged: such a pair, closer than the grid
-/// spacing to each other and to any other critical point, can be missed; use
-/// [`steady_motion_search`] with more starts near bifurcations.)
-///
-/// # Tolerances (all local, invariant under scaling the model and under adding `c|γ|²` to `U`)
-///
-/// Every test compares the *tangential* quantities at γ with each other: the Riemannian gradient
-/// `g` and the restricted form `K` (both unchanged by adding `c|γ|²` to `U`, which only changes
-/// the radial parts of `∂R/∂γ` and `∂²R/∂γ²`, and both proportional to the model). The raw
-/// derivatives enter only as a round-off floor: `g` and `K` are differences of terms of size
-/// `|∂R/∂γ|` and `s_raw = max(|∂R/∂γ|, ‖∂²R/∂γ²‖_F)`, so below `1024 ε` of those they are zero.
-/// There is no scale taken over the sphere, so flat regions (e.g. `U = e^{15γ₃}` near the south
-/// pole) are treated exactly as steep ones. Norms and the Newton systems are formed in scaled
-/// arithmetic, so derivatives of any magnitude up to about `1e300` work (`p_ψ = 1e150` with
-/// `J = O(1)`, where `U_r ≈ ½p_ψ²/(γᵀJγ)`).
-/// - An eigenvalue κ of `K` is zero when `|κ| ≤ max(`[`SearchOptions::zero_eigenvalue_tol`]` ·
-///   ‖K‖_F, 1024 ε · s_raw)`: the same test as [`classify`](crate::classify).
-/// - The *Newton step* `ξ = −K⁻¹g` (radians; eigenvalues below the zero threshold replaced by it)
-///   estimates the distance to the critical point. A point is critical when `|ξ| ≤`
-///   [`SearchOptions::gradient_tol`] (`1e−10` rad), or `|g| ≤ 1024 ε |∂R/∂γ|` (round-off). Where
-///   `g ≠ 0` but `K ≈ 0` (a flat region) `|ξ|` is large, so such points never pass. The iteration
-///   goes on to round-off when it can; at a degenerate point (linear convergence) it stops at the
-///   tolerance.
-/// - Two critical points are the same when they are closer than 8 times the sum of their
-///   estimated distances to the exact point (the Newton step, or the round-off in `g` over the
-///   curvature): copies of a higher-order point, which Newton approaches only linearly, merge; two
-///   distinct points 2e−4 apart do not.
-/// - During the grid phase an iterate that heads into a known non-degenerate point (its Newton
-///   step lands within a quarter of its distance to it, within 0.5 rad) stops early: its basin is
-///   already known. Probes near known points are stopped only on much stronger evidence (1e−3).
-/// - Two values of `U_r` are equal when they differ by at most `1e−10 · max(|U_r|, s_raw)`.
-///
-/// # Degenerate and non-isolated critical points
-///
-/// A point with one zero eigenvalue is first placed where the gradient along the kernel of `K`
-/// changes sign (bisection, with Newton corrections across the kernel): Newton's method alone
-/// converges only linearly there and stops `n − 1` times its last step away from a point of order
-/// `n`. A pitchfork point (gradient cubic along the kernel) is so located to about
-/// `(ε·s_raw/|∂³g|)^{1/3}` (2e−8 rad at the Kovalevskaya top's pitchfork, `p_ψ = 2`, `γ = e₁`),
-/// so that its copies merge. It is then tested for a curve along
-/// the kernel of `K`: the search
-/// steps by `h` along the null direction, re-converges, and traces the curve by
-/// predictor–corrector continuation if it lands on a *different*, also degenerate critical point
-/// on the same level at a distance in `[h/4, 3h]`; `h` is 0.05 rad, then quarters of it down to
-/// `0.05/4⁸` for small curves (a closed curve must get at least 12 vertices; a trace that does
-/// not close must get at least 4, else the point is a degenerate isolated one: the neighbours of
-/// a pitchfork point converge onto it). One representative
-/// per curve is reported (`isolated: false`); a later degenerate point on the same level within
-/// `h/2` of the traced polyline belongs to that curve. A non-degenerate point is never absorbed by
-/// a curve (the sleeping top inside a tiny circle of tilted precessions). Two circles on the same
-/// level (e.g. `γ₃ = ±z` for a body symmetric under `γ₃ → −γ₃`) are two curves. A point with two
-/// zero eigenvalues is a two-dimensional critical set only if the gradient vanishes within
-/// round-off at four neighbours 0.01 rad away (e.g. `U_r` constant; reported once per level, with
-/// `isolated: false`; every such point is tested, lying on the level of a known set is not
-/// enough); otherwise it is a higher-order isolated point (`x⁴ + y⁴` at its minimum),
-/// reported once with `isolated: true`, and [`classify`](crate::classify) calls it
-/// [`Stability::Degenerate`](crate::Stability) unless `f₂` proves an instability.
-///
-/// # Self-check
-///
-/// The index of every isolated point (`±1` from the signs of the eigenvalues of `K`, or the
-/// winding number of `g` on a small circle at a degenerate point) is summed, closed curves
-/// counting 0; Poincaré–Hopf requires χ(S²) = 2. If the sum is not 2 the search is repeated on a
-/// grid four times finer. [`steady_motions_checked`] reports the sum and whether it is reconciled;
-/// `steady_motions` returns the same motions without the flag.
+/// function does not return the check**: [`steady_motion_search`] returns the same motions with
+/// the index sum of the Morse relation ([`SearchResult::euler_characteristic`], χ(S²) = 2) and
+/// whether it is reconciled ([`SearchResult::consistent`]); use it whenever the number of steady
+/// motions matters. A pair of critical points born together in a fold, closer than the grid
+/// spacing to each other and to any other critical point, leaves χ unchanged and can be missed:
+/// give [`steady_motion_search`] more starts near bifurcations.
 ///
 /// Errors: [`RouthError::NonFinite`] for a non-finite `p_psi`;
 /// [`RouthError::DegenerateVerticalInertia`] / [`RouthError::KineticNotPositiveDefinite`] when
@@ -393,39 +301,6 @@ pub struct SearchResult {
     /// critical points were probably missed or mis-merged even after the refined second search:
     /// do not trust the list as complete.
     pub consistent: bool,
-}
-
-/// The former name of [`steady_motion_search`], renamed because a `_with` form takes options
-/// and returns what the plain function returns, and this one returns more.
-#[deprecated(note = "renamed `steady_motion_search` (same arguments, same `SearchResult`)")]
-#[doc(hidden)]
-pub fn steady_motions_with<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-    opts: &SearchOptions,
-) -> Result<SearchResult, RouthError> {
-    steady_motion_search(model, p_psi, opts)
-}
-
-/// [`steady_motion_search`] at the default options.
-#[deprecated(note = "use `steady_motion_search(model, p_psi, &SearchOptions::default())`")]
-#[doc(hidden)]
-pub fn steady_motions_checked<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-) -> Result<SearchResult, RouthError> {
-    steady_motion_search(model, p_psi, &SearchOptions::default())
-}
-
-/// The former name of [`steady_motion_search`].
-#[deprecated(note = "use `steady_motion_search`, which returns the `SearchResult`")]
-#[doc(hidden)]
-pub fn steady_motions_checked_with<M: Routhian>(
-    model: &M,
-    p_psi: f64,
-    opts: &SearchOptions,
-) -> Result<SearchResult, RouthError> {
-    steady_motion_search(model, p_psi, opts)
 }
 
 /// The steady motion nearest (in the sense of Newton's method on the sphere) to the guess

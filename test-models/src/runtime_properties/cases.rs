@@ -200,11 +200,9 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
         11 => {
             let p = scalar(rng);
             h.check(
-                "steady::steady_motions_checked",
+                "steady::steady_motion_search (default search)",
                 || format!("{model:?}, p_psi = {p:e}"),
-                // The deprecated alias, kept working.
-                #[allow(deprecated)]
-                || steady::steady_motions_checked(model, p),
+                || steady::steady_motion_search(model, p, &steady::SearchOptions::default()),
                 |r| r.motions.iter().find_map(steady_defect),
             );
         }
@@ -292,21 +290,18 @@ pub fn run_case<M: Model>(h: &mut Harness, rng: &mut ChaCha8Rng, model: &M, pick
             let (r, o) = (range(rng), continuation_options(rng));
             let p = scalar(rng);
             h.check(
-                "families::bifurcation_diagram_checked",
+                "families::bifurcation_diagram (checks)",
                 || format!("{model:?}, p_psi = {p:e}, {r:?}, {o:?}"),
-                // The deprecated alias, kept working.
-                #[allow(deprecated)]
-                || families::bifurcation_diagram_checked(|s| (model.scaled(s), p), r, &o),
-                |c| diagram_defect(&c.diagram),
+                || families::bifurcation_diagram(|s| (model.scaled(s), p), r, &o),
+                diagram_defect,
             );
         }
         18 => {
             let (p, o) = (scalar(rng), search_options(rng));
             h.check(
-                "steady::steady_motions_checked_with",
+                "steady::steady_motion_search",
                 || format!("{model:?}, p_psi = {p:e}, {o:?}"),
-                #[allow(deprecated)]
-                || steady::steady_motions_checked_with(model, p, &o),
+                || steady::steady_motion_search(model, p, &o),
                 |r| r.motions.iter().find_map(steady_defect),
             );
         }
@@ -369,7 +364,7 @@ pub(crate) fn run_one(h: &mut Harness, part: &Part<'_>, seed: u64, case: u64) ->
         8_600..=9_399 => 8,  // classify_with
         9_400..=9_899 => 9,  // steady_motion_search (≤ 20 starts)
         9_900..=9_919 => 10, // steady_motions (default search)
-        9_920..=9_939 => 11, // steady_motions_checked (default search)
+        9_920..=9_939 => 11, // steady_motion_search (default search)
         9_940..=9_959 => 12, // bifurcation_diagram
         9_960..=9_989 => 13, // continue_branch
         _ => 14,             // stability_atlas
@@ -379,8 +374,8 @@ pub(crate) fn run_one(h: &mut Harness, part: &Part<'_>, seed: u64, case: u64) ->
         match rng.gen_range(0..100u32) {
             0..=59 => 15,  // steady_motions_certified
             60..=89 => 16, // krein_report
-            90..=93 => 17, // bifurcation_diagram_checked
-            94..=97 => 18, // steady_motions_checked_with
+            90..=93 => 17, // bifurcation_diagram, a second draw
+            94..=97 => 18, // steady_motion_search, a second draw
             _ => 19,       // stability_atlas_parallel
         }
     } else {

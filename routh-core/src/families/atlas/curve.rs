@@ -11,9 +11,9 @@ use super::super::equations::{chart, chart_eval, relative_discriminant};
 use super::Ctx;
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::path::row::LinearRow;
+use crate::solve::newton::{Linearised, Newton};
+use crate::solve::path::row::LinearRow;
 use crate::sphere::local::Local;
-use crate::sphere::newton::{Linearised, Newton};
 use crate::sphere::{sym2_eigen, tangent_basis};
 
 const XI_FD: f64 = 1e-6;

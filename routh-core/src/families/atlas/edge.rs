@@ -1,5 +1,5 @@
 //! The start of a boundary curve on an edge of the grid whose end nodes differ in verdict:
-//! the test function located along the edge by the crate's event locator ([`crate::locate`]),
+//! the test function located along the edge by the crate's event locator ([`crate::solve::locate`]),
 //! then projected onto the curve (see the module docs of [`super`], "The boundary curves").
 
 use nalgebra::{Vector3, Vector4};
@@ -8,8 +8,8 @@ use super::super::equations::restricted_eigen;
 use super::curve::{CurvePoint, Test};
 use super::grid::Node;
 use super::Ctx;
-use crate::locate::{locate, End, Stop};
 use crate::model::Routhian;
+use crate::solve::locate::{locate, End, Stop};
 use crate::sphere::local::Local;
 use crate::sphere::{sym2_eigen, tangent_basis};
 

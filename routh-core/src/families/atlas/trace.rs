@@ -12,8 +12,8 @@ use super::grid::Node;
 use super::Ctx;
 use crate::error::RouthError;
 use crate::model::Routhian;
-use crate::path::row::LinearRow;
-use crate::path::{Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
+use crate::solve::path::row::LinearRow;
+use crate::solve::path::{Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
 use crate::sphere::tangent_basis;
 
 /// A zero-eigenvalue curve is a fold where [`fold_indicator`] exceeds this.

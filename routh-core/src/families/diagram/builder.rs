@@ -11,7 +11,7 @@ use crate::families::{
     BifurcationDiagram, Branch, BranchEvent, ContinuationOptions, EventKind, StopReason,
 };
 use crate::model::Routhian;
-use crate::path::row::LinearRow;
+use crate::solve::path::row::LinearRow;
 use crate::sphere::local::Local;
 use crate::stability::Stability;
 use crate::steady::steady_motion_search;

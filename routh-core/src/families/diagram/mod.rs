@@ -41,27 +41,6 @@ pub struct CountCheck {
     pub searched: usize,
 }
 
-/// A diagram with the count checks made while building it: what the deprecated
-/// [`bifurcation_diagram_checked`] returns (the checks are now [`BifurcationDiagram::checks`]).
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct CheckedDiagram {
-    /// The diagram.
-    pub diagram: BifurcationDiagram,
-    /// One check per interval between consecutive events (empty when
-    /// [`ContinuationOptions::verify_counts`] is off).
-    pub checks: Vec<CountCheck>,
-}
-
-impl CheckedDiagram {
-    /// Whether every count check agreed.
-    ///
-    /// See the example on [`CheckedDiagram`].
-    pub fn consistent(&self) -> bool {
-        self.checks.iter().all(|c| c.on_branches == c.searched)
-    }
-}
-
 /// Every branch of steady motions of `family` over `range`, with its events (the contract of
 /// the [`families`](super) module). Branches are seeded by global searches
 /// ([`steady_motion_search`]) at [`ContinuationOptions::seeds`] values of `s`, followed by
@@ -146,25 +125,6 @@ pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
     super::nonlinear::add_to_diagram(&family, &mut diagram, opts)?;
     diagram.checks = checks;
     Ok(diagram)
-}
-
-/// The former form of [`bifurcation_diagram`] with its count checks, which are now
-/// [`BifurcationDiagram::checks`].
-///
-/// Errors: as [`bifurcation_diagram`].
-#[deprecated(
-    note = "use `bifurcation_diagram`: its result carries the checks (`checks`, `consistent()`)"
-)]
-pub fn bifurcation_diagram_checked<M: Routhian, F: Fn(f64) -> (M, f64)>(
-    family: F,
-    range: (f64, f64),
-    opts: &ContinuationOptions,
-) -> Result<CheckedDiagram, RouthError> {
-    let diagram = bifurcation_diagram(family, range, opts)?;
-    Ok(CheckedDiagram {
-        checks: diagram.checks.clone(),
-        diagram,
-    })
 }
 
 /// The branch through the steady motion nearest `gamma_guess` at `s0` (found by Newton on the

@@ -1,7 +1,7 @@
 //! Smooth energy curves: after continuation, corrected points are inserted on each branch where
-//! its curve `(s, E)` turns too fast to be drawn as a polyline (issue 20 item 8, issue 23
-//! item 5). The points come from the branch's own corrector ([`Ctx::correct`]); only where they
-//! go is decided here, by the curvature of the curve, not by the continuation step.
+//! its curve `(s, E)` turns too fast to be drawn as a polyline. The points come from the
+//! branch's own corrector ([`Ctx::correct`]); only where they go is decided here, by the
+//! curvature of the curve, not by the continuation step.
 
 use nalgebra::Vector4;
 
@@ -9,7 +9,7 @@ use super::builder::Builder;
 use crate::error::RouthError;
 use crate::families::continuation::{meridian_normal, Ctx, Node};
 use crate::model::Routhian;
-use crate::path::row::LinearRow;
+use crate::solve::path::row::LinearRow;
 
 /// Shortest chord that is still split, in plot-normalised coordinates (`s` over the range, `E`
 /// over its extent on the diagram): about a fifth of a pixel on a 900-pixel figure.

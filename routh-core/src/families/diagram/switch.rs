@@ -10,7 +10,7 @@ use crate::error::RouthError;
 use crate::families::continuation::Node;
 use crate::families::StopReason;
 use crate::model::Routhian;
-use crate::path::row::LinearRow;
+use crate::solve::path::row::LinearRow;
 use crate::sphere::tangent_basis;
 
 impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {

@@ -7,8 +7,8 @@ use crate::error::RouthError;
 use crate::families::continuation::{changes, lands_on_a_zero, test_value, Change, Ctx, Node};
 use crate::families::{EventKind, StopReason};
 use crate::model::Routhian;
-use crate::path::{Check, Outcome, Point};
-use crate::zero::{ZeroTest, AXIS_REL, EIGEN_REL};
+use crate::solve::path::{Check, Outcome, Point};
+use crate::solve::zero::{ZeroTest, AXIS_REL, EIGEN_REL};
 
 /// Whether a point of a branch of circles is next to the axis of its circles, where they shrink
 /// to a pole: both eigenvalues of `K` below `1e−5` and the whole Jacobian `[K | F_s]` below

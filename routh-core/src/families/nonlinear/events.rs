@@ -5,7 +5,7 @@
 //! One engine for the post-pass [`nonlinear_events`] and for
 //! [`ContinuationOptions::nonlinear`](crate::ContinuationOptions::nonlinear): sign changes of
 //! `D/scale`, `ω₁/ω₂ − 2` and `ω₁/ω₂ − 3` between consecutive points of a branch are bracketed and
-//! located by the crate's event locator ([`crate::locate`], regula falsi with the Illinois
+//! located by the crate's event locator ([`crate::solve::locate`], regula falsi with the Illinois
 //! modification) to `|Δs| ≤ s_tol·max(1, |s|)`, re-solving the steady motion (and its nonlinear
 //! analysis) at each intermediate `s` by Newton from the interpolated γ. A sign change of D
 //! through a pole (D has small divisors at a 1:2 resonance) is not a zero and is dropped: the
@@ -16,7 +16,6 @@ use nalgebra::Vector3;
 
 use crate::error::RouthError;
 use crate::families::{BifurcationDiagram, BranchEvent, ContinuationOptions, EventKind};
-use crate::locate::{locate, within, End, Stop};
 use crate::model::Routhian;
 use crate::nonlinear::Jet;
 use crate::nonlinear::{
@@ -24,6 +23,7 @@ use crate::nonlinear::{
     NonlinearReport,
 };
 use crate::nonlinear::{NonlinearVerdict, Resonance, RouthianJet};
+use crate::solve::locate::{locate, within, End, Stop};
 use crate::stability::{classify_with, ClassifyOptions, Stability, StabilityReport};
 use crate::steady::{steady_motion_near, SteadyMotion};
 
@@ -184,7 +184,7 @@ pub(crate) type Bracketed = (f64, Vector3<f64>, f64);
 const LOCATE_BUDGET: usize = 100;
 
 /// Locates the zero of indicator `k` between `a` and `b` (values of opposite signs) with the
-/// crate's event locator ([`crate::locate`]). `solve(t, guess, full)` re-solves the steady motion
+/// crate's event locator ([`crate::solve::locate`]). `solve(t, guess, full)` re-solves the steady motion
 /// at `t` from `guess` (γ interpolated between the bracket's ends), for a resonance (`k ≥ 1`)
 /// only as far as the frequencies and fully once, at the located point if `report` asks for the
 /// nonlinear report there (else the returned report is the frequencies'); the search stops once the

@@ -1,4 +1,4 @@
-//! The nonlinear events of a family (issue 25, docs/method.md §10.7): where, on linearly stable
+//! The nonlinear events of a family (docs/method.md §10.7): where, on linearly stable
 //! stretches of a branch or over an atlas, Arnold's determinant vanishes or the frequencies are in
 //! 1:2 or 1:3 resonance. Per point the verdict is [`crate::nonlinear`]'s; this module locates
 //! where it changes.

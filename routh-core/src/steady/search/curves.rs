@@ -10,7 +10,9 @@ use std::convert::Infallible;
 
 use super::*;
 use crate::model::Routhian;
-use crate::path::{sphere_head, Check, Corrected, Outcome, Path, PathOptions, Point, Prediction};
+use crate::solve::path::{
+    sphere_head, Check, Corrected, Outcome, Path, PathOptions, Point, Prediction,
+};
 
 /// The unit normal of the least-squares plane through `vertices` (the axis of a circle on the
 /// sphere), if there are at least three.

@@ -12,10 +12,10 @@ use nalgebra::{Vector2, Vector3, Vector4};
 
 use super::SearchOptions;
 use crate::error::RouthError;
-use crate::locate::{locate, End};
 use crate::model::Routhian;
+use crate::solve::locate::{locate, End};
+use crate::solve::newton::{Jacobian, Linearised, Newton, Why};
 use crate::sphere::local::Local;
-use crate::sphere::newton::{Jacobian, Linearised, Newton, Why};
 use crate::sphere::{fibonacci_grid, tangent_basis, Tangential, NOISE, ROUND};
 use crate::validate::check_kinetic;
 
@@ -559,7 +559,7 @@ impl<M: Routhian> Search<'_, M> {
     /// (6e−5 rad at the Kovalevskaya top's pitchfork). Here: the sign change of `φ(t) = g·v` along
     /// the kernel direction `v` is bracketed within `±r` (`r` from `1e−8` doubling to `1e−2`),
     /// each trial point corrected across the kernel by Newton steps along the other eigenvector,
-    /// and located by the crate's event locator ([`crate::locate`]) to round-off in `t`, which
+    /// and located by the crate's event locator ([`crate::solve::locate`]) to round-off in `t`, which
     /// leaves it at round-off in `φ`: to about `(ε·s_raw/|φ⁽ⁿ⁾|)^{1/n}` (`~1e−5` rad for a
     /// cubic gradient). Unchanged when no sign change is bracketed (a curve of critical points,
     /// where `φ ≡ 0`, or an even order).

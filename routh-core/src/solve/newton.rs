@@ -1,5 +1,5 @@
-//! The one Newton corrector of routh-core (docs/method.md §5, docs/architecture.md "One engine
-//! per job"): the search's damped Newton on the sphere, the continuation's pseudo-arclength
+//! The one Newton corrector of routh-core (docs/method.md §5, docs/architecture.md "Engines"):
+//! the search's damped Newton on the sphere, the continuation's pseudo-arclength
 //! corrector, the atlas grid's Newton at a fixed member and the atlas curves' Gauss–Newton are all
 //! [`Newton::solve`] with different [`Newton`] settings.
 //!
@@ -20,9 +20,9 @@
 
 use nalgebra::{Matrix4, Vector2, Vector4};
 
-use crate::norm::stable_norm;
-use crate::path::row::LinearRow;
-use crate::zero::ZeroTest;
+use crate::solve::norm::stable_norm;
+use crate::solve::path::row::LinearRow;
+use crate::solve::zero::ZeroTest;
 
 /// A linear row `n·w = c` is satisfied when `|n·w − c|` is at most this.
 pub(crate) const ROW_TOL: f64 = 1e-13;

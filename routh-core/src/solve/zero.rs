@@ -23,7 +23,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::norm::stable_norm;
+use crate::solve::norm::stable_norm;
 
 /// A threshold: a quantity is zero when its modulus is at most [`ZeroTest::tol`].
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -9,7 +9,7 @@
 //!   in `w_k`), or no row ([`Stepping::Free`]: the curve is a set of solutions of a square system
 //!   and the corrector slides to the nearest one).
 //! - **Corrector**: a closure of the caller (each analysis's own equations, solved by the one
-//!   Newton corrector, `sphere::newton`), then a second closure that completes an accepted point
+//!   Newton corrector, `solve::newton`), then a second closure that completes an accepted point
 //!   (its tangent, its test functions).
 //! - **Acceptance**: the distance from the prediction at most `max_move·h + move_floor` (a larger
 //!   move is a jump to another curve), the cosine between consecutive tangents at least
