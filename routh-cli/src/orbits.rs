@@ -291,7 +291,10 @@ fn count(n: usize, what: &str) -> String {
 pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let model = load(&a.model)?;
     let mut opts = OrbitOptions::default().with_max_orbits(usize::from(a.max_orbits));
-    opts.control = crate::interrupt::control();
+    // One bar for the families one after another (each half of a family counts its orbits up
+    // to the budget).
+    let bar = crate::progress::Bar::start("orbits of the family");
+    opts.control = bar.control();
     if let Some((lo, hi)) = a.energy {
         opts = opts.with_energy_bounds(lo, hi);
     }
@@ -420,11 +423,13 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
 pub fn section(a: &Section) -> Result<String, CliError> {
     let model = load(&a.model)?;
     let mut opts = SectionOptions::default().with_size(usize::from(a.orbits), a.crossings as usize);
-    opts.control = crate::interrupt::control();
+    let bar = crate::progress::Bar::start("orbits of the section");
+    opts.control = bar.control();
     if let Some(n) = a.normal {
         opts = opts.with_normal(Vector3::from(n));
     }
     let sec = poincare_section(&model, a.momentum, a.energy, &opts)?;
+    drop(bar);
     if let Some(path) = &a.svg {
         let stem = crate::args::model_name(&a.model);
         let opts = PlotOptions {
