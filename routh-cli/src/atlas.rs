@@ -61,12 +61,13 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
             "--gamma must not be the zero vector".into(),
         ));
     }
+    let bar = crate::progress::Bar::start("rows of the grid");
     let opts = AtlasOptions {
         nx: a.nx.into(),
         ny: a.ny.into(),
+        control: bar.control(),
         ..AtlasOptions::default()
     };
-    let _spinner = crate::progress::Spinner::start("classifying the grid");
     let failure: RefCell<Option<ModelError>> = RefCell::new(None);
     let family = |x: f64, y: f64| match point(&model, names, [x, y], momentum) {
         Ok(mp) => mp,

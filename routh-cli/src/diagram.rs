@@ -14,11 +14,12 @@ use std::cell::RefCell;
 /// Runs `routh diagram` and returns what it prints.
 pub fn diagram(d: &Diagram) -> Result<String, CliError> {
     let model = load(&d.model)?;
+    let bar = crate::progress::Bar::start("seeds of the diagram");
     let opts = ContinuationOptions {
         nonlinear: d.nonlinear.then(NonlinearOptions::default),
+        control: bar.control(),
         ..Default::default()
     };
-    let _spinner = crate::progress::Spinner::start("following the branches");
     let bad = |e: String| CliError::Input(format!("--momentum: {e}"));
     let (result, x_label) = match &d.parameter {
         None => {

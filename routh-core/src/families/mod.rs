@@ -131,6 +131,11 @@ pub struct ContinuationOptions {
     /// ```
     #[cfg_attr(feature = "serde", serde(default))]
     pub nonlinear: Option<NonlinearOptions>,
+    /// Cancellation and progress (seeds done of [`ContinuationOptions::seeds`]): a cancelled
+    /// diagram ends with [`StopReason::Interrupted`] and the branches it has. Not a setting: not
+    /// serialised, not compared.
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub control: crate::RunControl,
 }
 
 /// The default of [`ContinuationOptions::em_turn_degrees`] (also for options serialised before
@@ -156,6 +161,7 @@ impl Default for ContinuationOptions {
             search: SearchOptions::default(),
             classify: ClassifyOptions::default(),
             nonlinear: None,
+            control: crate::RunControl::default(),
         }
     }
 }
@@ -283,6 +289,9 @@ pub enum StopReason {
         /// The steady motion there.
         gamma: Vector3<f64>,
     },
+    /// The caller stopped the diagram ([`ContinuationOptions::control`]'s cancel flag: Ctrl-C);
+    /// the branches traced before are kept, the branch being traced ends where it was.
+    Interrupted,
 }
 
 impl fmt::Display for StopReason {
@@ -305,6 +314,7 @@ impl fmt::Display for StopReason {
                  γ = ({:+.9}, {:+.9}, {:+.9})",
                 gamma.x, gamma.y, gamma.z
             ),
+            StopReason::Interrupted => f.write_str("interrupted by the caller"),
         }
     }
 }
@@ -509,6 +519,11 @@ pub struct AtlasOptions {
     /// with a Routh-function tape (derived or run-time). Default `None`.
     #[cfg_attr(feature = "serde", serde(default))]
     pub nonlinear: Option<NonlinearOptions>,
+    /// Cancellation and progress (rows of the grid done of `ny`): a cancelled atlas returns
+    /// [`RouthError::Interrupted`](crate::RouthError::Interrupted). Not a setting: not
+    /// serialised, not compared.
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub control: crate::RunControl,
 }
 
 impl Default for AtlasOptions {
@@ -524,6 +539,7 @@ impl Default for AtlasOptions {
             threads: 0,
             classify: ClassifyOptions::default(),
             nonlinear: None,
+            control: crate::RunControl::default(),
         }
     }
 }

@@ -207,6 +207,12 @@ impl<M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'_, M, F> {
         first: Option<Vector3<f64>>,
         lost0: bool,
     ) -> Result<Line, RouthError> {
+        // A cancelled atlas skips its remaining rows (and returns Interrupted).
+        self.opts.control.check()?;
+        let done = self
+            .rows_done
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        self.opts.control.report(done, self.opts.ny);
         let mut out: Vec<Option<Node>> = vec![None; xs.len()];
         let mut lost = vec![false; xs.len()];
         let Some(g0) = first else {

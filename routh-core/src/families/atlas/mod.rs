@@ -327,6 +327,7 @@ fn atlas_with<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)>(
 
     // The rows, each from its node in the start column in a fixed order.
     let lines = rows(&ctx, &xs, &ys, i0, &column)?;
+    opts.control.check()?;
     let (rows, lost): (Vec<Vec<Option<Node>>>, Vec<Vec<bool>>) = lines.into_iter().unzip();
 
     let boundaries = ctx.boundaries(&xs, &ys, &rows)?;
@@ -478,6 +479,8 @@ struct Ctx<'a, M, F> {
     opts: &'a AtlasOptions,
     /// The first budget that ran out, if any (shared by the rows' threads).
     stop: std::sync::Mutex<Option<StopReason>>,
+    /// Rows of the grid done (for [`AtlasOptions::control`]'s progress).
+    rows_done: std::sync::atomic::AtomicUsize,
     _model: PhantomData<fn() -> M>,
 }
 
@@ -492,6 +495,7 @@ impl<'a, M: Routhian, F: Fn(f64, f64) -> (M, f64)> Ctx<'a, M, F> {
             hy: step(y),
             opts,
             stop: std::sync::Mutex::new(None),
+            rows_done: std::sync::atomic::AtomicUsize::new(0),
             _model: PhantomData,
         }
     }

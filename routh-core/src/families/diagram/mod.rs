@@ -9,7 +9,7 @@ mod trace;
 
 use nalgebra::Vector3;
 
-use super::{BifurcationDiagram, ContinuationOptions};
+use super::{BifurcationDiagram, ContinuationOptions, StopReason};
 use crate::error::RouthError;
 use crate::families::continuation::CORRECTOR_MAX_ITER;
 use crate::families::equations::{at, member};
@@ -97,12 +97,18 @@ pub fn bifurcation_diagram<M: Routhian, F: Fn(f64) -> (M, f64)>(
     let mut b = Builder::new(&family, range, opts);
     let n = opts.seeds.max(2);
     for k in 0..n {
+        opts.control.report(k, n);
+        if opts.control.is_cancelled() {
+            b.stopped(StopReason::Interrupted);
+            break;
+        }
         let s = range.0 + (range.1 - range.0) * k as f64 / (n - 1) as f64;
         b.seed_all(s)?;
     }
     b.switch_all()?;
+    opts.control.report(n, n);
     let mut checks = Vec::new();
-    if opts.verify_counts {
+    if opts.verify_counts && !opts.control.is_cancelled() {
         for round in 0..3 {
             checks = b.count_checks()?;
             let missing: Vec<f64> = checks

@@ -23,6 +23,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
     pub(super) fn switch_all(&mut self) -> Result<(), RouthError> {
         let mut rounds = 0;
         while let Some(sw) = self.pending.pop() {
+            if self.opts.control.is_cancelled() {
+                self.stopped(StopReason::Interrupted);
+                return Ok(());
+            }
             rounds += 1;
             let n = &sw.node;
             if rounds > 4 * self.opts.max_branches {

@@ -66,6 +66,10 @@ impl<'a, M: Routhian, F: Fn(f64) -> (M, f64)> Builder<'a, M, F> {
         // shorten it (nor a tangent turning fast: `PathOptions::diagram`).
         let short = 4.0 * opts.min_step;
         loop {
+            if opts.control.is_cancelled() {
+                out.stop = Some(StopReason::Interrupted);
+                break;
+            }
             let a = out.nodes.last().unwrap().clone();
             // A branch of circles has a zero eigenvalue of K all along it (the circle
             // direction). Where its circles shrink to their axis it crosses the branch of the

@@ -1,16 +1,20 @@
-//! Run control of the periodic analyses (`OrbitOptions::control`, `SectionOptions::control`):
-//! a cancel flag set from the progress callback at a known point (no timing) ends a family with
-//! `OrbitStop::Interrupted` and the orbits it had, keeps them right (the pendulum's period in
-//! closed form), and ends a section or a single correction with `RouthError::Interrupted`.
+//! Run control (`OrbitOptions::control`, `SectionOptions::control`,
+//! `ContinuationOptions::control`, `AtlasOptions::control`): a cancel flag set from the progress
+//! callback at a known point (no timing) ends a family of orbits with `OrbitStop::Interrupted`
+//! and the orbits it had, keeps them right (the pendulum's period in closed form), ends a
+//! section, an atlas or a single correction with `RouthError::Interrupted`, and a bifurcation
+//! diagram with `StopReason::Interrupted` and branches that are those of the whole diagram.
 //! Ctrl-C in the CLI and in Python are checked in their own tests.
 
 use crate::common::{elliptic_k, hanging, heavy_body as body};
 use routh_core::{
-    continue_orbit, lyapunov_family, periodic_orbit, poincare_section, OrbitOptions, OrbitStop,
-    RouthError, RunControl, SectionOptions, Vector3,
+    bifurcation_diagram, continue_orbit, lyapunov_family, periodic_orbit, poincare_section,
+    stability_atlas, AtlasOptions, ContinuationOptions, OrbitOptions, OrbitStop, RouthError,
+    RunControl, SectionOptions, StopReason, Vector3,
 };
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Arc;
+use test_models::HeavyTop;
 
 /// A run control whose flag the progress callback sets once `done` reaches `at`; the progress
 /// reports seen are counted.
@@ -101,4 +105,65 @@ fn a_section_stopped_by_its_caller_is_interrupted() {
     let e = poincare_section(&m, 0.0, -1.0, &s).unwrap_err();
     assert!(matches!(e, RouthError::Interrupted), "{e:?}");
     assert!(seen.load(Ordering::SeqCst) >= 3);
+}
+
+/// The Lagrange top's diagram over p_ψ ∈ [0, 5] from 5 seeds, stopped after its second seed:
+/// `Interrupted`, with fewer branches, each point of which lies on the whole diagram's branch
+/// through it (the same steady motion: γ and the energy agree to 1e−9).
+#[test]
+fn a_diagram_stopped_by_its_caller_keeps_branches_of_the_whole() {
+    let top = HeavyTop::lagrange(1.0, 1.25, 1.0);
+    let whole = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &Default::default()).unwrap();
+    assert_eq!(whole.stop, None);
+    let (control, seen) = stop_at(2);
+    let opts = ContinuationOptions {
+        control,
+        ..ContinuationOptions::default()
+    };
+    let part = bifurcation_diagram(|p| (top.clone(), p), (0.0, 5.0), &opts).unwrap();
+    assert_eq!(part.stop, Some(StopReason::Interrupted));
+    assert!(seen.load(Ordering::SeqCst) >= 3);
+    assert!(!part.branches.is_empty());
+    let on_whole = |s: f64, g: &Vector3<f64>, e: f64| {
+        whole.branches.iter().any(|b| {
+            b.points.windows(2).any(|w| {
+                let (a, c) = (&w[0], &w[1]);
+                let t = if c.s != a.s {
+                    (s - a.s) / (c.s - a.s)
+                } else {
+                    0.0
+                };
+                (0.0..=1.0).contains(&t)
+                    && (a.steady.gamma.lerp(&c.steady.gamma, t) - g).norm() < 1e-2
+                    && (a.steady.energy + t * (c.steady.energy - a.steady.energy) - e).abs() < 1e-2
+            })
+        })
+    };
+    for b in &part.branches {
+        for p in &b.points {
+            assert!(
+                on_whole(p.s, &p.steady.gamma, p.steady.energy),
+                "s = {}, γ = {:?} is on no branch of the whole diagram",
+                p.s,
+                p.steady.gamma
+            );
+        }
+    }
+}
+
+/// An atlas over (mgl, p_ψ) of the Lagrange top stopped after 3 of its 21 rows: `Interrupted`.
+#[test]
+fn an_atlas_stopped_by_its_caller_is_interrupted() {
+    let (control, seen) = stop_at(3);
+    let opts = AtlasOptions {
+        nx: 21,
+        ny: 21,
+        control,
+        ..AtlasOptions::default()
+    };
+    let family = |mgl: f64, p: f64| (HeavyTop::lagrange(1.0, 1.25, mgl), p);
+    let e = stability_atlas(family, Vector3::z(), (0.5, 1.5), (1.0, 4.0), &opts).unwrap_err();
+    assert!(matches!(e, RouthError::Interrupted), "{e:?}");
+    let rows = seen.load(Ordering::SeqCst);
+    assert!((3..21).contains(&rows), "{rows} rows reported");
 }
