@@ -2,7 +2,7 @@
 
 use crate::continuation::{continuation_options, ContinuationKw};
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3, Real};
-use crate::guard::{cooperative, detached, interruptible};
+use crate::guard::{cancellable, detached, interruptible};
 use crate::latex::{aligned, LatexFormulas, SympyFormulas};
 use crate::nonlinear::NonlinearReport;
 use crate::progress::Progress;
@@ -327,16 +327,14 @@ impl Model {
         });
         let m = self.get()?;
         let bar = Progress::new(py, progress, "steady-motion evaluations")?;
-        // Ctrl-C: every later evaluation gets a NaN momentum, which stops the diagram.
-        let cancel = std::sync::atomic::AtomicBool::new(false);
-        let d = cooperative(py, &cancel, || {
+        // Ctrl-C sets the diagram's cancel flag: it stops at its next continuation step.
+        let mut opts = opts;
+        let d = cancellable(py, |c| {
+            opts.control = c;
             routh::bifurcation_diagram(
                 |p| {
                     if let Some(b) = &bar {
                         b.tick();
-                    }
-                    if cancel.load(std::sync::atomic::Ordering::Relaxed) {
-                        return (m.clone(), f64::NAN);
                     }
                     (m.clone(), p)
                 },
