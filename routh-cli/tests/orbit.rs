@@ -1018,8 +1018,18 @@ fn ctrl_c_ends_a_long_run_at_once_and_writes_nothing() {
     let svg = dir.join("s.svg");
     let svg_arg = svg.to_str().unwrap().to_string();
     let runs: [Vec<&str>; 1] = [vec![
-        "section", BODY, "-p", "0", "-e", "-1", "--orbits", "2000", "--crossings", "5000",
-        "--svg", &svg_arg,
+        "section",
+        BODY,
+        "-p",
+        "0",
+        "-e",
+        "-1",
+        "--orbits",
+        "2000",
+        "--crossings",
+        "5000",
+        "--svg",
+        &svg_arg,
     ]];
     for args in runs {
         let child = Command::new(env!("CARGO_BIN_EXE_routh"))

@@ -90,7 +90,10 @@ impl RunControl {
 impl fmt::Debug for RunControl {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("RunControl")
-            .field("cancel", &self.cancel.as_ref().map(|c| c.load(Ordering::Relaxed)))
+            .field(
+                "cancel",
+                &self.cancel.as_ref().map(|c| c.load(Ordering::Relaxed)),
+            )
             .field("progress", &self.progress.is_some())
             .finish()
     }

@@ -48,7 +48,11 @@ fn a_family_stopped_by_its_caller_keeps_its_orbits() {
     for o in &f.orbits {
         let theta0 = (-o.energy / 1.5).acos();
         let exact = 4.0 * elliptic_k((0.5 * theta0).sin().powi(2)) / w0;
-        assert!((o.period - exact).abs() < 1e-8 * exact, "{} vs {exact}", o.period);
+        assert!(
+            (o.period - exact).abs() < 1e-8 * exact,
+            "{} vs {exact}",
+            o.period
+        );
     }
     // Continued from its last orbit without the flag, the family goes on past it.
     let last = f.orbits.last().unwrap();
