@@ -1488,23 +1488,30 @@ mod tests {
         let [_, _, _, i1, _, _, _, _, _, g1, _, g3, p] = v[..] else {
             unreachable!()
         };
+        // (a + γ₁) + (a − 2aγ₁²) − γ₁, the like terms in different sums (as in G's
+        // `A_1 \dot\psi - … + A_1 \dot\psi`): the constructors keep them apart.
         let a = g.mul(i1, p);
         let two = g.constant(2.0);
         let s1 = g.powi(g1, 2);
         let b = g.mul(a, s1);
         let b = g.mul(two, b);
-        // Built as a + (−b + a): the constructors alone keep the two a's apart.
-        let nb = g.neg(b);
-        let inner = g.add(nb, a);
-        let f = g.add(a, inner);
+        // The same product associated the other way: another node.
+        let a2 = g.mul(p, i1);
+        let u = g.add(a, g1);
+        let v = g.sub(a2, b);
+        let f = g.add(u, v);
+        let f = g.sub(f, g1);
         let (tex, py) = both(&g, f);
         assert_eq!(tex, "2 I_{1} p_\\psi - 2 I_{1} \\gamma_1^{2} p_\\psi");
         assert_eq!(py, "2*inertia_1*p_psi - 2*inertia_1*gamma1**2*p_psi");
+        // (1 − γ₃²) + (γ₁ − 1) + (1 − γ₁): constants from different sums.
         let one = g.one();
         let s3 = g.powi(g3, 2);
-        let d = g.sub(one, s3);
-        let d = g.sub(d, one);
-        let d = g.add(d, one);
+        let c1 = g.sub(one, s3);
+        let c2 = g.sub(g1, one);
+        let c3 = g.sub(one, g1);
+        let d = g.add(c1, c2);
+        let d = g.add(d, c3);
         assert_eq!(both(&g, d).1, "1 - gamma3**2");
     }
 
