@@ -341,10 +341,7 @@ impl Layout {
     fn extract(&mut self, name: &str, value: String, out: &mut Vec<(String, String)>) {
         let budget = LINE_BUDGET - 120.0;
         let mut value = value;
-        loop {
-            let Some((start, end)) = wide_argument(&value, budget) else {
-                break;
-            };
+        while let Some((start, end)) = wide_argument(&value, budget) {
             let arg = value[start..end].to_string();
             let sigma = match out
                 .iter()
