@@ -217,6 +217,26 @@ impl Parser<'_> {
                     .unwrap_or_else(|| panic!("unknown symbol {key} in {}", self.src))
             }
             Tok::Ch('{') => {
+                // `{r_c}_{1}`: a symbol with a subscript of its own, wrapped, then indexed
+                // (issue 47); the key is `r_c_1`, as `Env::vector` names it.
+                let start = self.at;
+                let close = (start..self.t.len()).find(|&k| self.t[k] == Tok::Ch('}'));
+                if let Some(close) = close.filter(|&k| self.t.get(k + 1) == Some(&Tok::Ch('_'))) {
+                    let base: String = (self.t[start..close].iter())
+                        .map(|t| match t {
+                            Tok::Sym(x) => x.clone(),
+                            Tok::Ch('_') => "_".to_string(),
+                            Tok::Num(n) => format!("{n}"),
+                            t => panic!("wrapped symbol {t:?} in {}", self.src),
+                        })
+                        .collect();
+                    self.at = close + 2;
+                    let key = format!("{base}_{}", self.subscript());
+                    return *self
+                        .env
+                        .get(&key)
+                        .unwrap_or_else(|| panic!("unknown symbol {key} in {}", self.src));
+                }
                 let v = self.expr();
                 self.expect(Tok::Ch('}'));
                 v
@@ -321,6 +341,64 @@ fn eval(src: &str, env: &HashMap<String, f64>) -> f64 {
     v
 }
 
+/// The values of the seven formulas of `LatexFormulas::display` (one for a scalar, nine for a
+/// matrix, row by row), read back from its `align*` blocks: the continuation of a line
+/// (`\\ &\quad {}`) and the `\right.`/`\left.` closing and reopening a bracket across it
+/// removed, each line `name &= value` evaluated in order (the definitions first: σ, the paper's
+/// intermediates, a matrix's entries `A_{11}`), the last line of a block being the formula.
+/// A name used before its definition is an "unknown symbol" panic.
+fn eval_display(text: &str, env: &HashMap<String, f64>) -> Vec<Vec<f64>> {
+    let mut env = env.clone();
+    let mut out = Vec::new();
+    for block in text.split("\\begin{align*}\n").skip(1) {
+        let body = block
+            .split_once("\n\\end{align*}")
+            .unwrap_or_else(|| panic!("unclosed block {block}"))
+            .0
+            .replace(" \\\\\n  &\\quad {}", " ")
+            .replace("\\right.", "")
+            .replace("\\left.", "");
+        let rows: Vec<&str> = body.split(" \\\\\n").collect();
+        let (last, defs) = rows.split_last().unwrap();
+        for row in defs {
+            let (name, value) = row
+                .split_once(" &= ")
+                .unwrap_or_else(|| panic!("row {row}"));
+            let name = intermediates(name);
+            let key = match name.strip_prefix("\\mathit{") {
+                Some(rest) => rest.trim_end_matches('}').to_string(),
+                None => name.replace(['{', '}'], ""),
+            };
+            let v = eval(value, &env);
+            // Each block defines the paper's intermediates it uses (a block pasted alone is
+            // whole): the same definition again, never another value; a σ once.
+            if let Some(old) = env.insert(key.clone(), v) {
+                assert!(
+                    !key.starts_with("\\sigma") && old.to_bits() == v.to_bits(),
+                    "{key}"
+                );
+            }
+        }
+        let value = last
+            .split_once(" &= ")
+            .unwrap_or_else(|| panic!("row {last}"))
+            .1;
+        out.push(if value.contains("not printed") {
+            vec![f64::NAN; 9]
+        } else if value.starts_with("\\begin{pmatrix}") {
+            eval_matrix(value, &env)
+                .transpose()
+                .iter()
+                .copied()
+                .collect()
+        } else {
+            vec![eval(value, &env)]
+        });
+    }
+    assert_eq!(out.len(), 7, "{text}");
+    out
+}
+
 /// The value of a `\begin{pmatrix} … \end{pmatrix}`.
 fn eval_matrix(src: &str, env: &HashMap<String, f64>) -> Matrix3<f64> {
     let (src, env) = definitions(src, env);
@@ -409,6 +487,8 @@ fn agrees(a: f64, b: f64, scale: f64, what: &str) {
 /// returns how many formulas were printed (a formula too large to read is a `\text`).
 fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usize {
     let f = model.latex();
+    let display = f.display();
+    crate::latex_document::compiles(name, &f.document(name));
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     // A formula too large even with named subexpressions would be `\text{(… not printed)}`.
     let printed = |s: &str| !s.contains("not printed");
@@ -467,7 +547,32 @@ fn check<M: Routhian + DerivedFormulas>(name: &str, model: &M, env: &Env) -> usi
                 &format!("{name} U_r"),
             );
         }
+        // The display blocks (issue 47), read back, equal the formulas: the layout keeps
+        // every value.
+        let shown = eval_display(&display, &e);
+        for (k, s) in [&f.lagrangian, &f.psi_dot, &f.routhian, &f.amended_potential]
+            .into_iter()
+            .enumerate()
+        {
+            if printed(s) {
+                let want = eval(s, &e);
+                agrees(
+                    shown[k][0],
+                    want,
+                    want.abs(),
+                    &format!("{name} display {k}"),
+                );
+            }
+        }
         let sys = model.gyroscopic_system(&gamma, p);
+        for (k, m) in [sys.a, sys.g, sys.c].iter().enumerate() {
+            if printed([&f.a, &f.g, &f.c][k]) {
+                for (i, v) in shown[4 + k].iter().enumerate() {
+                    let want = m[(i / 3, i % 3)];
+                    agrees(*v, want, m.amax(), &format!("{name} display matrix {k}"));
+                }
+            }
+        }
         for (tex, m, what) in [(&f.a, sys.a, "A"), (&f.g, sys.g, "G"), (&f.c, sys.c, "C")] {
             if printed(tex) {
                 let got = eval_matrix(tex, &e);

@@ -17,6 +17,7 @@ mod generated_stability;
 mod generated_vs_numdual;
 mod kirchhoff;
 mod latex;
+mod latex_document;
 mod nonlinear;
 mod plot;
 mod plot_trajectory;

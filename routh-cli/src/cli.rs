@@ -139,10 +139,14 @@ pub struct Formulas {
     #[arg(long)]
     pub json: bool,
     /// Print the seven derived formulas in LaTeX (`Model::latex`): L, ψ̇, the Routh function R,
-    /// the amended potential U_r and the matrices A, G, C of (64); with `--json`, the
-    /// `LatexFormulas` object.
+    /// the amended potential U_r and the matrices A, G, C of (64), as `align*` display blocks
+    /// (amsmath) whose lines fit a page; with `--json`, the `LatexFormulas` object.
     #[arg(long, conflicts_with = "sympy")]
     pub latex: bool,
+    /// With `--latex`: print a complete LaTeX document (article, amsmath) that pdflatex
+    /// compiles, instead of the display blocks alone.
+    #[arg(long, requires = "latex", conflicts_with = "json")]
+    pub document: bool,
     /// Print the same seven formulas in SymPy's syntax (`Model::sympy`), as lines
     /// `name = formula` (Python after `from sympy import *`); with `--json`, the
     /// `SympyFormulas` object.

@@ -214,7 +214,13 @@ fn circle_name(v: CircleStability) -> &'static str {
 pub fn formulas(f: &Formulas) -> Result<String, CliError> {
     let model = load(&f.model)?;
     if f.latex {
-        return latex(&model.latex(), f.json);
+        let title = f.model.file_stem().map(|s| s.to_string_lossy());
+        let title = format!(
+            "Derived formulas of {}",
+            title.as_deref().unwrap_or("the model")
+        );
+        let document = f.document.then_some(title.as_str());
+        return latex(&model.latex(), f.json, document);
     }
     if f.sympy {
         return sympy(&model.sympy(), f.json);
@@ -233,47 +239,19 @@ pub fn formulas(f: &Formulas) -> Result<String, CliError> {
     ))
 }
 
-/// `routh formulas --latex`: the seven formulas of [`LatexFormulas`], each under a LaTeX comment
-/// with its field name and its meaning, as `name = formula` (math mode, no delimiters); with
-/// `json`, the `LatexFormulas` object itself.
-fn latex(l: &LatexFormulas, json: bool) -> Result<String, CliError> {
+/// `routh formulas --latex`: the seven formulas of [`LatexFormulas`] as display blocks to
+/// paste into a document with amsmath ([`LatexFormulas::display`]: an `align*` each, under a
+/// LaTeX comment with its field name and meaning, lines broken to fit a page); with `document`,
+/// a complete LaTeX document ([`LatexFormulas::document`], titled by the model file's name);
+/// with `json`, the `LatexFormulas` object itself.
+fn latex(l: &LatexFormulas, json: bool, document: Option<&str>) -> Result<String, CliError> {
     if json {
         return Ok(serde_json::to_string_pretty(l)? + "\n");
     }
-    let items = [
-        (
-            "lagrangian",
-            "the Lagrangian",
-            "L(\\omega, \\gamma)",
-            &l.lagrangian,
-        ),
-        (
-            "psi_dot",
-            "ψ̇ of (12)/(38)",
-            "\\dot\\psi(\\Omega, \\gamma, p_\\psi)",
-            &l.psi_dot,
-        ),
-        (
-            "routhian",
-            "the Routh function (14)",
-            "R(\\Omega, \\gamma, p_\\psi)",
-            &l.routhian,
-        ),
-        (
-            "amended_potential",
-            "the amended potential (34), −R(0, γ, p_ψ)",
-            "U_r(\\gamma, p_\\psi)",
-            &l.amended_potential,
-        ),
-        ("a", "∂²R/∂Ω² at Ω = 0 (64)", "A", &l.a),
-        ("g", "the gyroscopic matrix of (64) at Ω = 0", "G", &l.g),
-        ("c", "the stiffness matrix of (64) at Ω = 0", "C", &l.c),
-    ];
-    Ok(items
-        .iter()
-        .map(|(name, what, lhs, formula)| format!("% {name}: {what}\n{lhs} = {formula}\n"))
-        .collect::<Vec<_>>()
-        .join("\n"))
+    Ok(match document {
+        Some(title) => l.document(title),
+        None => l.display(),
+    })
 }
 
 /// `routh formulas --sympy`: the seven formulas of [`SympyFormulas`] in SymPy's syntax, as a

@@ -299,15 +299,31 @@ fn formulas_latex_prints_the_seven_formulas_of_the_model() {
             !formula.is_empty() && !formula.contains("not printed"),
             "{name}: {formula}"
         );
-        let line = format!("{lhs}{formula}\n");
+        // A display block (`align*`) each, the formula on the line `lhs &= …`.
+        let line = format!("\n{} &= ", lhs.trim_end_matches(" = "));
         assert!(
             text.contains(&format!("% {name}: ")),
             "{name} not named in\n{text}"
         );
         assert!(text.contains(&line), "{line} not in\n{text}");
     }
+    assert_eq!(text, expected.display());
+    assert_eq!(text.matches("\\begin{align*}").count(), 7);
     assert!(expected.amended_potential.contains("p_\\psi"));
     assert!(expected.a.contains("pmatrix") && expected.c.contains("pmatrix"));
+    // `--document`: the whole document, titled by the file's name.
+    let o = routh(&["formulas", TOP, "--latex", "--document"]);
+    assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(&o));
+    let stem = std::path::Path::new(TOP)
+        .file_stem()
+        .unwrap()
+        .to_string_lossy();
+    let doc = stdout(&o);
+    assert_eq!(
+        doc,
+        expected.document(&format!("Derived formulas of {stem}"))
+    );
+    assert!(doc.starts_with("\\documentclass{article}") && doc.ends_with("\\end{document}\n"));
 }
 
 /// `formulas --sympy` prints the seven formulas of `Model::sympy` of the same file as

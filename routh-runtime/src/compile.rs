@@ -245,11 +245,27 @@ pub(crate) fn latex(
     params: &[(String, Param)],
     symmetric: &[String],
 ) -> routh_codegen::latex::LatexText {
+    // The parameters in the order the Lagrangian first names them (the `[parameters]` table
+    // comes sorted by name): the LaTeX's products list them in that order, `m g l` as the
+    // text writes `mass * g * l`, not `g l m`.
+    let mut params = params.to_vec();
+    params.sort_by_key(|(name, _)| first_offset(text, name));
     on_large_stack(|| {
-        analyse(text, params, symmetric)
+        analyse(text, &params, symmetric)
             .map(|m| routh_codegen::latex::latex_formulas(&m, &[]))
             .unwrap_or_default()
     })
+}
+
+/// The byte offset of the first use of the identifier `name` in `text` (`usize::MAX` if none).
+fn first_offset(text: &str, name: &str) -> usize {
+    let ident = |c: char| c.is_alphanumeric() || c == '_';
+    text.match_indices(name)
+        .find(|&(at, _)| {
+            !text[..at].chars().next_back().is_some_and(ident)
+                && !text[at + name.len()..].chars().next().is_some_and(ident)
+        })
+        .map_or(usize::MAX, |(at, _)| at)
 }
 
 /// The formulas of the model of `text` in SymPy's syntax, analysed again as for [`latex`].

@@ -291,7 +291,13 @@ impl Model {
             .map(|(name, symbol)| {
                 (
                     format!("\\mathit{{{}}}", name.replace('_', "\\_")),
-                    symbol.clone(),
+                    // A symbol with a sub- or superscript of its own in braces: `{r_c}_{1}`,
+                    // not the double subscript `r_c_{1}` (as `routh_symbolic::latex_symbol`).
+                    if symbol.contains(['_', '^']) {
+                        format!("{{{symbol}}}")
+                    } else {
+                        symbol.clone()
+                    },
                 )
             })
             .collect();

@@ -315,7 +315,13 @@ pub fn latex_symbol(var_name: &str, symbols: &LatexSymbols) -> String {
         base_tex
     } else {
         let idx: String = digits.iter().map(|d| d.to_string()).collect();
-        format!("{base_tex}_{{{idx}}}")
+        // A symbol with its own sub- or superscript (`r_c`) in braces: `{r_c}_{1}`, not the
+        // double subscript `r_c_{1}` LaTeX refuses.
+        if base_tex.contains(['_', '^']) {
+            format!("{{{base_tex}}}_{{{idx}}}")
+        } else {
+            format!("{base_tex}_{{{idx}}}")
+        }
     }
 }
 
@@ -979,6 +985,9 @@ impl Printer<'_> {
                 if parent >= 4 && sym.contains(' ') {
                     let sym = self.bracket(sym);
                     out.push_str(&sym);
+                } else if parent >= 4 && latex && sym.contains('^') {
+                    // `{x^*}^{2}`, not the double superscript `x^*^{2}`.
+                    out.push_str(&format!("{{{sym}}}"));
                 } else {
                     out.push_str(sym);
                 }
@@ -1098,43 +1107,44 @@ impl Printer<'_> {
                 _ => acc.push((id, flip)),
             }
         }
-        let g = self.g;
         let mut ts = Vec::new();
         terms(self, id, negate, &mut ts);
-        let sorted = self.style != Style::LatexUnsorted && ts.len() > 1;
-        let mut printed: Vec<(TermKey, bool, String)> = ts
+        // Like terms collected: each term as its coefficient times its other factors, the
+        // coefficients of equal factors (hash-consing makes equal subexpressions one node)
+        // added, and a term whose coefficient adds up to 0 dropped (`1 - γ₃² - 1 + 1` is
+        // `1 - γ₃²`, `A₁ψ̇ + A₁ψ̇` is `2 A₁ψ̇`). Groups in the order of their first term.
+        type Group = (f64, Vec<Id>, Vec<Id>, Id);
+        let mut groups: Vec<Group> = Vec::new();
+        let mut index: HashMap<(Vec<Id>, Vec<Id>), usize> = HashMap::new();
+        for (t, flip) in ts {
+            let (mut coef, mut num, mut den) = (if flip { -1.0 } else { 1.0 }, vec![], vec![]);
+            self.factors(t, &mut coef, &mut num, &mut den);
+            let (mut kn, mut kd) = (num.clone(), den.clone());
+            kn.sort_unstable();
+            kd.sort_unstable();
+            match index.entry((kn, kd)) {
+                std::collections::hash_map::Entry::Occupied(e) => groups[*e.get()].0 += coef,
+                std::collections::hash_map::Entry::Vacant(e) => {
+                    e.insert(groups.len());
+                    groups.push((coef, num, den, t));
+                }
+            }
+        }
+        groups.retain(|g| g.0 != 0.0);
+        if groups.is_empty() {
+            return "0".to_string();
+        }
+        let sorted = self.style != Style::LatexUnsorted && groups.len() > 1;
+        let mut printed: Vec<(TermKey, bool, String)> = groups
             .into_iter()
-            .map(|(t, negate)| {
-                let mut body = String::new();
-                let negative = match g.node(t) {
-                    _ if self.is_named(t) => {
-                        self.expr(t, &mut body, 2);
-                        false
-                    }
-                    Node::Neg(x) => {
-                        self.expr(x, &mut body, 2);
-                        true
-                    }
-                    Node::Const(b) if f64::from_bits(b) < 0.0 => {
-                        body = self.number(-f64::from_bits(b)).0;
-                        true
-                    }
-                    Node::Mul(..) | Node::Recip(_) => {
-                        let (negative, text, _) = self.product(t);
-                        body = text;
-                        negative
-                    }
-                    _ => {
-                        self.expr(t, &mut body, 2);
-                        false
-                    }
-                };
+            .map(|(coef, num, den, t)| {
+                let (negative, body, _) = self.product_of(coef, &num, &den);
                 let key = if sorted {
                     self.term_key(t)
                 } else {
                     Default::default()
                 };
-                (key, negative != negate, body)
+                (key, negative, body)
             })
             .collect();
         // Stable: terms of equal keys keep the order of the graph.
@@ -1164,33 +1174,41 @@ impl Printer<'_> {
     /// A product as `(negative, text, quotient)`: the coefficient first, factors side by side
     /// (joined by `*` in SymPy's syntax), a denominator as `\frac` (`(…)/(…)`).
     fn product(&self, id: Id) -> (bool, String, bool) {
-        fn factors(p: &Printer, id: Id, coef: &mut f64, num: &mut Vec<Id>, den: &mut Vec<Id>) {
-            if p.is_named(id) {
-                num.push(id);
-                return;
-            }
-            match p.g.node(id) {
-                Node::Mul(a, b) => {
-                    factors(p, a, coef, num, den);
-                    factors(p, b, coef, num, den);
-                }
-                Node::Neg(x) => {
-                    *coef = -*coef;
-                    factors(p, x, coef, num, den);
-                }
-                Node::Const(b) => *coef *= f64::from_bits(b),
-                Node::Recip(x) => den.push(x),
-                // A negative integer power goes to the denominator as itself (printed
-                // `x^{|n|}` by `join`).
-                Node::Powi(_, n) if n < 0 => den.push(id),
-                _ => num.push(id),
-            }
+        let (mut coef, mut num, mut den) = (1.0, Vec::new(), Vec::new());
+        self.factors(id, &mut coef, &mut num, &mut den);
+        self.product_of(coef, &num, &den)
+    }
+
+    /// The factors of `id` (a product, or any term): the numeric coefficient multiplied into
+    /// `coef`, the other factors of the numerator and of the denominator pushed.
+    fn factors(&self, id: Id, coef: &mut f64, num: &mut Vec<Id>, den: &mut Vec<Id>) {
+        if self.is_named(id) {
+            num.push(id);
+            return;
         }
+        match self.g.node(id) {
+            Node::Mul(a, b) => {
+                self.factors(a, coef, num, den);
+                self.factors(b, coef, num, den);
+            }
+            Node::Neg(x) => {
+                *coef = -*coef;
+                self.factors(x, coef, num, den);
+            }
+            Node::Const(b) => *coef *= f64::from_bits(b),
+            Node::Recip(x) => den.push(x),
+            // A negative integer power goes to the denominator as itself (printed
+            // `x^{|n|}` by `join`).
+            Node::Powi(_, n) if n < 0 => den.push(id),
+            _ => num.push(id),
+        }
+    }
+
+    /// The product `coef · num / den` as [`Printer::product`] prints it.
+    fn product_of(&self, coef: f64, num: &[Id], den: &[Id]) -> (bool, String, bool) {
         let g = self.g;
         let latex = self.latex();
         let sep = if latex { " " } else { "*" };
-        let (mut coef, mut num, mut den) = (1.0, Vec::new(), Vec::new());
-        factors(self, id, &mut coef, &mut num, &mut den);
         // Normal form: the parameters, then the angular velocity, γ, p_ψ, then the rest; a
         // lone factor (a whole numerator or denominator) without brackets. Returns the text
         // and whether it is one factor.
@@ -1225,8 +1243,8 @@ impl Printer<'_> {
         if den.is_empty() {
             let text = match (a == 1.0, num.is_empty()) {
                 (_, true) => return (negative, self.number(a).0, false),
-                (true, false) => join(&num, false).0,
-                (false, false) => format!("{}{sep}{}", self.number(a).0, join(&num, false).0),
+                (true, false) => join(num, false).0,
+                (false, false) => format!("{}{sep}{}", self.number(a).0, join(num, false).0),
             };
             return (negative, text, false);
         }
@@ -1237,12 +1255,12 @@ impl Printer<'_> {
         };
         let (top, top_one) = match (p.as_str(), num.is_empty()) {
             (_, true) => (p.clone(), true),
-            ("1", false) => join(&num, true),
-            (_, false) => (format!("{p}{sep}{}", join(&num, false).0), false),
+            ("1", false) => join(num, true),
+            (_, false) => (format!("{p}{sep}{}", join(num, false).0), false),
         };
         let (bottom, bottom_one) = match q {
-            Some(q) => (format!("{q}{sep}{}", join(&den, false).0), false),
-            None => join(&den, true),
+            Some(q) => (format!("{q}{sep}{}", join(den, false).0), false),
+            None => join(den, true),
         };
         if latex {
             return (negative, format!("\\frac{{{top}}}{{{bottom}}}"), true);
@@ -1433,6 +1451,68 @@ mod tests {
             "\\begin{pmatrix} \\mu \\gamma_3 & 0 & 0 \\\\ 0 & \\mu^{2} & 0 \\\\ 0 & 0 & 0 \\end{pmatrix} \
              \\quad \\text{where} \\quad \\mu = \\mathit{mass} \\left(\\gamma_1^{2} + \\gamma_2^{2}\\right)"
         );
+    }
+
+    /// A field's symbol with a subscript of its own is wrapped before its index (issue 47: the
+    /// gyrostat's `r_c_{1}` was a "Double subscript" error), a superscript before a power.
+    #[test]
+    fn symbols_with_subscripts_are_wrapped() {
+        let s = LatexSymbols {
+            fields: [
+                ("com", "r_c"),
+                ("c0", "c_0"),
+                ("x", "x^*"),
+                ("inertia", "I"),
+            ]
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .into_iter()
+            .collect(),
+            ..LatexSymbols::default()
+        };
+        assert_eq!(latex_symbol("com[0]", &s), "{r_c}_{1}");
+        assert_eq!(latex_symbol("c0[2]", &s), "{c_0}_{3}");
+        assert_eq!(latex_symbol("inertia[(0,1)]", &s), "I_{12}");
+        assert_eq!(latex_symbol("com", &s), "r_c");
+        let mut g = Graph::new();
+        let x = g.var("x");
+        let x2 = g.powi(x, 2);
+        assert_eq!(to_latex(&g, x2, &s), "{x^*}^{2}");
+    }
+
+    /// Like terms are collected and constants added up: `A₁ψ̇ − 2A₁ψ̇γ₁² + A₁ψ̇` prints as
+    /// `2 A₁ ψ̇ − 2 A₁ ψ̇ γ₁²`, `1 − γ₃² − 1 + 1` as `1 − γ₃²` (issue 47: G of the heavy top had
+    /// `A_1 \dot\psi … + A_1 \dot\psi`, the SymPy text `1 - gamma3**2 - 1 + 1`).
+    #[test]
+    fn like_terms_are_collected() {
+        let (mut g, v) = top();
+        let [_, _, _, i1, _, _, _, _, _, g1, _, g3, p] = v[..] else {
+            unreachable!()
+        };
+        // (a + γ₁) + (a − 2aγ₁²) − γ₁, the like terms in different sums (as in G's
+        // `A_1 \dot\psi - … + A_1 \dot\psi`): the constructors keep them apart.
+        let a = g.mul(i1, p);
+        let two = g.constant(2.0);
+        let s1 = g.powi(g1, 2);
+        let b = g.mul(a, s1);
+        let b = g.mul(two, b);
+        // The same product associated the other way: another node.
+        let a2 = g.mul(p, i1);
+        let u = g.add(a, g1);
+        let v = g.sub(a2, b);
+        let f = g.add(u, v);
+        let f = g.sub(f, g1);
+        let (tex, py) = both(&g, f);
+        assert_eq!(tex, "2 I_{1} p_\\psi - 2 I_{1} \\gamma_1^{2} p_\\psi");
+        assert_eq!(py, "2*inertia_1*p_psi - 2*inertia_1*gamma1**2*p_psi");
+        // (1 − γ₃²) + (γ₁ − 1) + (1 − γ₁): constants from different sums.
+        let one = g.one();
+        let s3 = g.powi(g3, 2);
+        let c1 = g.sub(one, s3);
+        let c2 = g.sub(g1, one);
+        let c3 = g.sub(one, g1);
+        let d = g.add(c1, c2);
+        let d = g.add(d, c3);
+        assert_eq!(both(&g, d).1, "1 - gamma3**2");
     }
 
     /// Named subexpressions in SymPy's syntax: numbered from `first + 1`, defined in order.
