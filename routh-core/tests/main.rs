@@ -24,6 +24,7 @@ mod runtime_properties;
 mod simulation;
 mod stability;
 mod steady_motions;
+mod tolerance;
 mod trust;
 mod units;
 mod zero_invariance;

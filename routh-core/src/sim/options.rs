@@ -58,6 +58,10 @@ pub enum Output {
 pub struct SimOptions {
     /// Relative tolerance of [`Method::Dop853`]. Must be finite and at least
     /// `10·ε ≈ 2.2e-15`. Default `1e-10`.
+    ///
+    /// It bounds the error of each step, not of the run: the error at time t is proportional to
+    /// `rtol` but grows with t, to ~1e2 – 1e3 × `rtol` at t = 1000 on a regular orbit and more
+    /// near a separatrix (measured in docs/method.md §2b, "What a tolerance delivers").
     pub rtol: f64,
     /// Absolute tolerance of [`Method::Dop853`] for γ and ψ (dimensionless), and for the angular
     /// velocity unless [`rate_atol`](Self::rate_atol) is given. Finite and positive. Default
