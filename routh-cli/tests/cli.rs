@@ -3,13 +3,8 @@
 
 mod common;
 
-use common::{routh, stderr, stdout};
+use common::{routh, stderr, stdout, ASYMMETRIC, TOP};
 use std::process::Output;
-
-const TOP: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../examples/models/heavy_top.toml"
-);
 
 fn json(o: &Output) -> serde_json::Value {
     assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(o));
@@ -794,10 +789,6 @@ fn diagram_nonlinear_locates_arnolds_degenerate_point() {
 const RESONANT: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/models/resonant_body.toml"
-);
-const ASYMMETRIC: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../examples/models/asymmetric_top.toml"
 );
 
 #[test]

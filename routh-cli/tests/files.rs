@@ -5,23 +5,10 @@
 
 mod common;
 
-use common::{routh, stderr, stdout};
+use common::{routh, stderr, stdout, ASYMMETRIC, SWINGING, TOP};
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-
-const TOP: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../examples/models/heavy_top.toml"
-);
-const ASYMMETRIC: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../examples/models/asymmetric_top.toml"
-);
-const SWINGING: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/models/swinging_body.toml"
-);
 
 /// A fresh scratch directory.
 fn scratch(case: &str) -> PathBuf {

@@ -6,19 +6,11 @@
 
 mod common;
 
-use common::{routh, stderr, stdout};
+use common::{routh, stderr, stdout, ASYMMETRIC, SWINGING as BODY};
 
-const BODY: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/models/swinging_body.toml"
-);
 const BRANCHING: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/models/branching_body.toml"
-);
-const ASYMMETRIC: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../examples/models/asymmetric_top.toml"
 );
 /// m g l and J₁ of the swinging body: ω₀² = mgl/J₁.
 const MGL: f64 = 1.5;

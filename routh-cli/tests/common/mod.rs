@@ -3,6 +3,22 @@
 
 use std::process::{Command, Output};
 
+/// The Lagrange top of the examples (A₁ = 1, C = 1.25, mgl = 1).
+pub const TOP: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../examples/models/heavy_top.toml"
+);
+/// The asymmetric top of the examples.
+pub const ASYMMETRIC: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../examples/models/asymmetric_top.toml"
+);
+/// A heavy body J = diag(1, 2, 3), m g l = 1.5, whose swings about e₁ are a pendulum.
+pub const SWINGING: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/models/swinging_body.toml"
+);
+
 /// `routh ARGS…`, its exit code and both streams.
 pub fn routh(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_routh"))
