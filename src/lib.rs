@@ -89,7 +89,7 @@ pub mod __private {
         DerivedFormulas, FullEquations, FullJacobian, GyroscopicSystem, Lagrangian, RankOneInertia,
         ReducedEquations, RouthBundle, Routhian,
     };
-    pub use routh_tape::{CertificationTape, Func, Op, Output, RouthianTape, Tape};
+    pub use routh_tape::{CertificationTape, FlowTape, Func, Op, Output, RouthianTape, Tape};
 
     /// What `Lagrangian::constant_inertia` returns.
     pub type MaybeMatrix3 = core::option::Option<Matrix3<f64>>;
@@ -100,6 +100,8 @@ pub mod __private {
     pub type MaybeTape = core::option::Option<CertificationTape>;
     /// What `Routhian::routh_tape` returns.
     pub type MaybeRouthianTape = core::option::Option<RouthianTape>;
+    /// What `Routhian::flow_tape` returns.
+    pub type MaybeFlowTape = core::option::Option<FlowTape>;
 
     /// `sign(x)` with `sign(0) = 0`: the derivative of `abs` (the one definition, in
     /// `routh-tape`).

@@ -19,6 +19,7 @@ mod kirchhoff;
 mod latex;
 mod latex_document;
 mod nonlinear;
+mod orbit_nonlinear;
 mod plot;
 mod plot_trajectory;
 mod routh_identities;

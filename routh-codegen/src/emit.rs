@@ -22,7 +22,7 @@ use std::fmt::Write;
 
 /// The names the text uses for the types of `<crate>::__private`, declared as type aliases in
 /// the `const _` block around the impls: `(alias, item of __private)`.
-pub const ALIASES: [(&str, &str); 19] = [
+pub const ALIASES: [(&str, &str); 21] = [
     ("__F64", "f64"),
     ("__Vector3", "Vector3"),
     ("__Matrix3", "Matrix3"),
@@ -39,6 +39,8 @@ pub const ALIASES: [(&str, &str); 19] = [
     ("__RouthianTape", "RouthianTape"),
     ("__MaybeTape", "MaybeTape"),
     ("__MaybeRouthianTape", "MaybeRouthianTape"),
+    ("__FlowTape", "FlowTape"),
+    ("__MaybeFlowTape", "MaybeFlowTape"),
     ("__MaybeMatrix3", "MaybeMatrix3"),
     ("__RankOneInertia", "RankOneInertia"),
     ("__MaybeRankOne", "MaybeRankOne"),

@@ -274,7 +274,8 @@ const TAPE_PATHS: routh_tape::RustPaths<'static> = routh_tape::RustPaths {
 };
 
 /// Writes `fn certification_tape` (the interval tape of `∂R/∂γ`, `∂²R/∂γ²` at `Ω = 0`) and
-/// `fn routh_tape` (the tape of `R(Ω, γ, p_ψ)`), each as `static` typed ops
+/// `fn routh_tape` (the tape of `R(Ω, γ, p_ψ)`) and `fn flow_tape` (`L` and the derivatives of
+/// (8), [`crate::tape::flow`]), each as `static` typed ops
 /// ([`crate::tape`]) bound to the parameter values read from `self`.
 pub fn tapes(out: &mut String, sym: &Symbols, o: &Outputs) -> Result<(), routh_tape::TapeError> {
     let params = crate::tape::param_reads(sym).join(", ");
@@ -291,6 +292,13 @@ pub fn tapes(out: &mut String, sym: &Symbols, o: &Outputs) -> Result<(), routh_t
     let _ = writeln!(
         out,
         "__RouthianTape::new(__Tape::clone(&__ROUTHIAN), <[__F64]>::to_vec(&[{params}])).ok()\n}}"
+    );
+    let f = crate::tape::flow(sym, o)?;
+    out.push_str("#[inline]\nfn flow_tape(&self) -> __MaybeFlowTape {\n");
+    f.write_rust(out, "__FLOW", &TAPE_PATHS);
+    let _ = writeln!(
+        out,
+        "__FlowTape::new(__Tape::clone(&__FLOW), <[__F64]>::to_vec(&[{params}])).ok()\n}}"
     );
     Ok(())
 }

@@ -11,7 +11,7 @@
 use crate::lower::{Access, Symbols};
 use crate::reduce::Outputs;
 use routh_symbolic::{Id, Var};
-use routh_tape::{Op, Tape, TapeError, CERTIFICATION_OUTPUTS, ROUTHIAN_OUTPUT};
+use routh_tape::{Op, Tape, TapeError, CERTIFICATION_OUTPUTS, FLOW_OUTPUTS, ROUTHIAN_OUTPUT};
 
 /// The tape computing `outputs` (name, node) of the model's graph.
 pub fn tape(sym: &Symbols, outputs: &[(&'static str, Id)]) -> Result<Tape, TapeError> {
@@ -49,6 +49,39 @@ pub fn certification(sym: &Symbols, o: &Outputs) -> Result<Tape, TapeError> {
 /// named [`ROUTHIAN_OUTPUT`].
 pub fn routhian(sym: &Symbols, o: &Outputs) -> Result<Tape, TapeError> {
     tape(sym, &[(ROUTHIAN_OUTPUT, o.routhian)])
+}
+
+/// The tape of `L(ω, γ)` and the derivatives the full equations (8) are made of, named as
+/// [`FLOW_OUTPUTS`]: what jets of the flow of (8) evaluate.
+pub fn flow(sym: &Symbols, o: &Outputs) -> Result<Tape, TapeError> {
+    let j = &o.d2l_domega2;
+    let n = &o.d2l_domega_dgamma;
+    let ids = [
+        o.lagrangian,
+        o.dl_domega[0],
+        o.dl_domega[1],
+        o.dl_domega[2],
+        o.dl_dgamma[0],
+        o.dl_dgamma[1],
+        o.dl_dgamma[2],
+        j[0][0],
+        j[0][1],
+        j[0][2],
+        j[1][1],
+        j[1][2],
+        j[2][2],
+        n[0][0],
+        n[0][1],
+        n[0][2],
+        n[1][0],
+        n[1][1],
+        n[1][2],
+        n[2][0],
+        n[2][1],
+        n[2][2],
+    ];
+    let outs: Vec<_> = FLOW_OUTPUTS.into_iter().zip(ids).collect();
+    tape(sym, &outs)
 }
 
 /// How the derive reads the parameters from `self`, in the order of `Op::Param(k)`.

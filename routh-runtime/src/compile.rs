@@ -170,6 +170,8 @@ pub(crate) struct Compiled {
     pub rank_one: bool,
     pub certification: Tape,
     pub routh: Tape,
+    /// `L` and the derivatives of (8) ([`routh_tape::FLOW_OUTPUTS`]).
+    pub flow: Tape,
     /// Each tape of [`Compiled::tapes`] (in the order of [`Tapes::fields`]) cut into its
     /// parameter-only part and the rest ([`crate::hoist`]): what the kernels evaluate.
     pub split: Vec<crate::hoist::Split>,
@@ -644,6 +646,7 @@ fn build(m: &routh_codegen::Model) -> Result<Compiled, routh_tape::TapeError> {
         rank_one: rank_one.is_some(),
         certification: routh_codegen::tape::certification(sym, o)?,
         routh: routh_codegen::tape::routhian(sym, o)?,
+        flow: routh_codegen::tape::flow(sym, o)?,
         formulas,
         latex: std::sync::OnceLock::new(),
         sympy: std::sync::OnceLock::new(),

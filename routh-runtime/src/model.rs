@@ -13,7 +13,7 @@ use routh_core::{
     FullEquations, FullJacobian, GyroscopicSystem, Lagrangian, RankOneInertia, ReducedEquations,
     RouthBundle, Routhian,
 };
-use routh_tape::{CertificationTape, RouthianTape, Tape};
+use routh_tape::{CertificationTape, FlowTape, RouthianTape, Tape};
 use std::collections::BTreeMap;
 use std::fmt;
 use std::sync::Arc;
@@ -712,6 +712,9 @@ impl Routhian for Model {
     }
     fn routh_tape(&self) -> Option<RouthianTape> {
         RouthianTape::new(self.compiled.routh.clone(), self.values.to_vec()).ok()
+    }
+    fn flow_tape(&self) -> Option<FlowTape> {
+        FlowTape::new(self.compiled.flow.clone(), self.values.to_vec()).ok()
     }
 }
 

@@ -19,6 +19,33 @@ pub const CERTIFICATION_OUTPUTS: [&str; 9] = [
 /// The output name of a [`RouthianTape`].
 pub const ROUTHIAN_OUTPUT: &str = "routhian";
 
+/// The output names of a [`FlowTape`], in order: `L`, `∂L/∂ω`, `∂L/∂γ`, the upper triangle
+/// of `J = ∂²L/∂ω²` row by row, then `N = ∂²L/∂ω∂γ` row by row (`N[i][j] = ∂²L/∂ω_i∂γ_j`).
+pub const FLOW_OUTPUTS: [&str; 22] = [
+    "lagrangian",
+    "dl_domega[0]",
+    "dl_domega[1]",
+    "dl_domega[2]",
+    "dl_dgamma[0]",
+    "dl_dgamma[1]",
+    "dl_dgamma[2]",
+    "d2l_domega2[0][0]",
+    "d2l_domega2[0][1]",
+    "d2l_domega2[0][2]",
+    "d2l_domega2[1][1]",
+    "d2l_domega2[1][2]",
+    "d2l_domega2[2][2]",
+    "d2l_domega_dgamma[0][0]",
+    "d2l_domega_dgamma[0][1]",
+    "d2l_domega_dgamma[0][2]",
+    "d2l_domega_dgamma[1][0]",
+    "d2l_domega_dgamma[1][1]",
+    "d2l_domega_dgamma[1][2]",
+    "d2l_domega_dgamma[2][0]",
+    "d2l_domega_dgamma[2][1]",
+    "d2l_domega_dgamma[2][2]",
+];
+
 /// The gradient and the (symmetric) Hessian of `R(0, ·, p_ψ)` in γ.
 pub type GradHess<T> = ([T; 3], [[T; 3]; 3]);
 
@@ -162,5 +189,79 @@ impl RouthianTape {
         let mut out = [p_psi];
         self.tape.eval(&inputs, &self.params, slots, &mut out);
         out[0]
+    }
+}
+
+/// `L(ω, γ)` and the derivatives the equations (8) are made of, at one state: what a
+/// [`FlowTape`] evaluates.
+#[derive(Clone, Copy, PartialEq, Debug)]
+pub struct FlowTerms<S> {
+    /// `L`.
+    pub lagrangian: S,
+    /// `∂L/∂ω`.
+    pub dl_domega: [S; 3],
+    /// `∂L/∂γ`.
+    pub dl_dgamma: [S; 3],
+    /// `J = ∂²L/∂ω²` (symmetric).
+    pub d2l_domega2: [[S; 3]; 3],
+    /// `N[i][j] = ∂²L/∂ω_i∂γ_j`.
+    pub d2l_domega_dgamma: [[S; 3]; 3],
+}
+
+/// The Lagrangian `L(ω, γ)` of a model and the derivatives its full equations (8) are made of,
+/// as one tape with the parameter values bound: what `Routhian::flow_tape` returns, for
+/// analyses that evaluate the flow of (8) at Taylor jets (jets of the flow in its initial
+/// conditions; Taylor coefficients in time). Its outputs are [`FLOW_OUTPUTS`]; `ω` is
+/// [`crate::Op::Omega`], `γ` [`crate::Op::Gamma`] (an unconstrained vector of ℝ³).
+#[derive(Clone, PartialEq, Debug)]
+pub struct FlowTape {
+    tape: Tape,
+    params: Vec<f64>,
+}
+
+impl FlowTape {
+    /// Binds `params` to a tape whose outputs are [`FLOW_OUTPUTS`].
+    pub fn new(tape: Tape, params: Vec<f64>) -> Result<Self, TapeError> {
+        check_shape(&tape, &FLOW_OUTPUTS, &params)?;
+        Ok(FlowTape { tape, params })
+    }
+
+    /// The tape (its parameters are [`FlowTape::params`]).
+    pub fn tape(&self) -> &Tape {
+        &self.tape
+    }
+
+    /// The bound parameter values, in the order of the tape's [`crate::Op::Param`]s.
+    pub fn params(&self) -> &[f64] {
+        &self.params
+    }
+
+    /// The terms at `(ω, γ)` evaluated with `S`, working storage `slots` reused between calls.
+    pub fn eval<S: TapeScalar>(
+        &self,
+        omega: &[S; 3],
+        gamma: &[S; 3],
+        slots: &mut Vec<S>,
+    ) -> FlowTerms<S> {
+        let zero = S::from_f64(0.0);
+        let inputs = Inputs {
+            omega: *omega,
+            gamma: *gamma,
+            p_psi: zero,
+        };
+        let mut out = [zero; 22];
+        self.tape.eval(&inputs, &self.params, slots, &mut out);
+        let j = |i: usize| out[7 + i];
+        FlowTerms {
+            lagrangian: out[0],
+            dl_domega: [out[1], out[2], out[3]],
+            dl_dgamma: [out[4], out[5], out[6]],
+            d2l_domega2: [[j(0), j(1), j(2)], [j(1), j(3), j(4)], [j(2), j(4), j(5)]],
+            d2l_domega_dgamma: [
+                [out[13], out[14], out[15]],
+                [out[16], out[17], out[18]],
+                [out[19], out[20], out[21]],
+            ],
+        }
     }
 }

@@ -30,7 +30,8 @@ mod scalar;
 mod tape;
 
 pub use bound::{
-    CertificationTape, GradHess, RouthianTape, CERTIFICATION_OUTPUTS, ROUTHIAN_OUTPUT,
+    CertificationTape, FlowTape, FlowTerms, GradHess, RouthianTape, CERTIFICATION_OUTPUTS,
+    FLOW_OUTPUTS, ROUTHIAN_OUTPUT,
 };
 pub use func::{sign, Func};
 pub use rust::RustPaths;

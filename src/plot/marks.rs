@@ -141,6 +141,30 @@ pub(super) fn draw_orbit_event_marker(
                 .and_then(|_| root.draw(&Polygon::new(diamond(7), BLACK.filled())))
                 .map_err(drawing_error)
         }
+        // ■ a vanishing twist; ○ a resonance of order three, ◎ of order four.
+        OrbitEventKind::TwistDegenerate => {
+            let square =
+                |r: i32| Rectangle::new([(c.0 - r, c.1 - r), (c.0 + r, c.1 + r)], WHITE.filled());
+            root.draw(&square(9))
+                .and_then(|_| {
+                    root.draw(&Rectangle::new(
+                        [(c.0 - 6, c.1 - 6), (c.0 + 6, c.1 + 6)],
+                        BLACK.filled(),
+                    ))
+                })
+                .map_err(drawing_error)
+        }
+        OrbitEventKind::ThirdOrderResonance | OrbitEventKind::FourthOrderResonance => {
+            let r = root
+                .draw(&Circle::new(c, 9, WHITE.filled()))
+                .and_then(|_| root.draw(&Circle::new(c, 6, BLACK.stroke_width(2))));
+            let r = if kind == OrbitEventKind::FourthOrderResonance {
+                r.and_then(|_| root.draw(&Circle::new(c, 2, BLACK.filled())))
+            } else {
+                r
+            };
+            r.map_err(drawing_error)
+        }
     }
 }
 

@@ -248,6 +248,9 @@ pub(super) fn orbit_event_name(k: OrbitEventKind) -> &'static str {
         OrbitEventKind::Fold => "fold",
         OrbitEventKind::BranchPoint => "branch point",
         OrbitEventKind::PeriodDoubling => "period doubling",
+        OrbitEventKind::TwistDegenerate => "twist zero",
+        OrbitEventKind::ThirdOrderResonance => "resonance 1/3",
+        OrbitEventKind::FourthOrderResonance => "resonance 1/4",
     }
 }
 

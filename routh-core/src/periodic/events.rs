@@ -1,6 +1,8 @@
 //! The events of a family of periodic orbits (docs/method.md §11, "The event correction"):
 //! between two accepted orbits a sign change of the tangent's eighth component is a `Fold`, of
-//! `k − 1` a `BranchPoint`, of `k + 1` a `PeriodDoubling`, each bracketed by the crate's one
+//! `k − 1` a `BranchPoint`, of `k + 1` a `PeriodDoubling` (and, with `OrbitOptions::nonlinear`,
+//! of `k + 1/2`, `k` and the twist the resonances of order three and four and a
+//! `TwistDegenerate`), each bracketed by the crate's one
 //! event locator (`locate.rs`) on re-solves along the step and, at a branch point or a period
 //! doubling, read off a secant through re-solves either side of it.
 
@@ -89,6 +91,24 @@ impl<M: Routhian> Tracer<'_, M> {
                 n.orbit.stability_index + 1.0
             }));
         }
+        if self.opts.nonlinear {
+            let third = (ka + 0.5) * (kb + 0.5) < 0.0;
+            if third {
+                tests.push((OrbitEventKind::ThirdOrderResonance, |n: &Node| {
+                    n.orbit.stability_index + 0.5
+                }));
+            }
+            if ka * kb < 0.0 {
+                tests.push((OrbitEventKind::FourthOrderResonance, |n: &Node| {
+                    n.orbit.stability_index
+                }));
+            }
+            // τ has a pole at k = −1/2 (the homological denominator of the term z̄²): a change
+            // of sign across a resonance of order three is not a zero.
+            if !third && a.twist * b.twist < 0.0 {
+                tests.push((OrbitEventKind::TwistDegenerate, |n: &Node| n.twist));
+            }
+        }
         let near = 1e-4 * h;
         let cut = 1e-12;
         let solve = |sigma: f64, cut: f64| self.resolve_between((a, 0.0), (b, h), sigma, cut);
@@ -105,17 +125,25 @@ impl<M: Routhian> Tracer<'_, M> {
                             .map(|n| (test(&n), n)),
                     )
                 },
-                |lo, hi| {
-                    if kind == OrbitEventKind::Fold {
-                        return estimated_distance(lo, hi) <= 1e-7 * h;
+                |lo, hi| match kind {
+                    OrbitEventKind::Fold => estimated_distance(lo, hi) <= 1e-7 * h,
+                    OrbitEventKind::BranchPoint | OrbitEventKind::PeriodDoubling => {
+                        estimated_distance(lo, hi) <= near
                     }
-                    estimated_distance(lo, hi) <= near
+                    // Regular zeros of a smooth function along the family: bracketed to the
+                    // event tolerance in the family's own variable.
+                    _ => {
+                        let (u, v) = (self.value(&lo.point), self.value(&hi.point));
+                        (u - v).abs() <= self.opts.event_tol * u.abs().max(1.0)
+                            || estimated_distance(lo, hi) <= 1e-12 * h
+                    }
                 },
             )?;
-            let node = if kind == OrbitEventKind::Fold {
-                found.best.point.clone()
-            } else {
-                self.polish(&found, test, kind, h, &solve)?
+            let node = match kind {
+                OrbitEventKind::BranchPoint | OrbitEventKind::PeriodDoubling => {
+                    self.polish(&found, test, kind, h, &solve)?
+                }
+                _ => found.best.point.clone(),
             };
             let at = self.value(&node);
             let orbit = node.orbit;

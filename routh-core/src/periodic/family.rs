@@ -73,11 +73,28 @@ impl<M: Routhian> Tracer<'_, M> {
         let tangent = tangent_of(&s, along);
         let (model, _) = self.slot.member(&s.w, &self.scales, self.p_psi)?;
         let orbit = orbit_of(&*model, &s, &self.scales, self.opts);
+        let twist = if self.opts.nonlinear {
+            super::nonlinear::twist_of(&*model, &orbit, &self.nonlinear_options())?
+        } else {
+            f64::NAN
+        };
         Ok(Node {
             solved: s,
             tangent,
             orbit,
+            twist,
         })
+    }
+
+    /// The settings of the twist of the family's orbits: the family's integration tolerances.
+    pub(super) fn nonlinear_options(&self) -> super::OrbitNonlinearOptions {
+        super::OrbitNonlinearOptions {
+            rtol: self.opts.rtol,
+            atol: self.opts.atol,
+            max_steps: self.opts.max_steps,
+            control: self.opts.control.clone(),
+            ..Default::default()
+        }
     }
 
     /// Where a node is along the family: its energy (the orbit's, for a family through the

@@ -34,6 +34,7 @@ mod events;
 mod family;
 mod flow;
 mod node;
+mod nonlinear;
 mod parameter;
 mod section;
 mod shoot;
@@ -47,6 +48,11 @@ pub use branch::switch_branch;
 pub use doubling::period_doubled_family;
 pub use family::{continue_orbit, lyapunov_family};
 pub use flow::orbit_path;
+pub use nonlinear::{
+    orbit_nonlinear_stability, orbit_nonlinear_stability_in, orbit_symplectic_form,
+    OrbitNonlinearOptions, OrbitNonlinearReport, OrbitNonlinearVerdict, OrbitResonance,
+    SectionChart,
+};
 pub use parameter::{continue_orbit_in, OrbitParameterFamily};
 pub use section::{
     orbit_crossings, poincare_section, PoincareSection, SectionOptions, SectionOrbit,
@@ -100,6 +106,11 @@ pub struct OrbitOptions {
     pub event_tol: f64,
     /// Budget of integration steps per period.
     pub max_steps: usize,
+    /// Along families, also locate where the twist of the Poincaré map vanishes and where it
+    /// meets the resonances of order three (`k = −1/2`) and four (`k = 0`)
+    /// ([`OrbitEventKind::TwistDegenerate`] …; [`orbit_nonlinear_stability`]). Default `false`.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub nonlinear: bool,
     /// Cancellation and progress (not a setting: not serialised, not compared).
     #[cfg_attr(feature = "serde", serde(skip))]
     pub control: crate::RunControl,
@@ -123,6 +134,7 @@ impl Default for OrbitOptions {
             resonance_tol: 1e-3,
             event_tol: 1e-9,
             max_steps: 100_000,
+            nonlinear: false,
             control: crate::RunControl::default(),
         }
     }
@@ -349,6 +361,13 @@ pub enum OrbitEventKind {
     BranchPoint,
     /// `k = −1`: a family of orbits of twice the period is born.
     PeriodDoubling,
+    /// The twist of the Poincaré map vanishes (`τ = 0`, a true zero of `τ` along the family;
+    /// located with [`OrbitOptions::nonlinear`]): Moser's theorem does not apply there.
+    TwistDegenerate,
+    /// `k = −1/2`: the resonance of order three (with [`OrbitOptions::nonlinear`]).
+    ThirdOrderResonance,
+    /// `k = 0`: the resonance of order four (with [`OrbitOptions::nonlinear`]).
+    FourthOrderResonance,
 }
 
 impl OrbitEventKind {
@@ -358,6 +377,9 @@ impl OrbitEventKind {
             OrbitEventKind::Fold => "fold",
             OrbitEventKind::BranchPoint => "branch_point",
             OrbitEventKind::PeriodDoubling => "period_doubling",
+            OrbitEventKind::TwistDegenerate => "twist_degenerate",
+            OrbitEventKind::ThirdOrderResonance => "third_order_resonance",
+            OrbitEventKind::FourthOrderResonance => "fourth_order_resonance",
         }
     }
 }

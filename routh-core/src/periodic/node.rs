@@ -10,6 +10,9 @@ pub(super) struct Node {
     pub solved: Solved,
     pub tangent: W,
     pub orbit: PeriodicOrbit,
+    /// The twist of the Poincaré map when the family looks for nonlinear events
+    /// ([`super::OrbitOptions::nonlinear`]) and the orbit is elliptic; NaN otherwise.
+    pub twist: f64,
 }
 
 /// Whether `b` continues the family of `a`: the tangents at both ends make about the same angle

@@ -1,0 +1,282 @@
+//! `orbit_nonlinear_stability` (ARCHITECTURE §5h, docs/method.md §12) against what it does not
+//! compute: the symplectic form against finite differences of the energy (`ι_F Ω = dE`); the
+//! twist at small amplitude against the steady motion's Birkhoff normal form (a different
+//! algorithm, in a canonical chart of `T*S²`: `τ → D/(π ω_k³)`); the twist's independence of the
+//! section and of the chart; the run-time model against the derive.
+
+use routh::periodic::{orbit_nonlinear_stability_in, orbit_symplectic_form, SectionChart};
+use routh::{
+    lyapunov_family, nonlinear_stability, orbit_nonlinear_stability, Lagrangian, Matrix3, Model,
+    NonlinearOptions, OrbitEventKind, OrbitNonlinearOptions, OrbitNonlinearVerdict, OrbitOptions,
+    OrbitStability, PeriodicOrbit, SteadyMotion, Vector3,
+};
+use std::f64::consts::PI;
+
+/// A heavy body with principal moments `inertia`, centre of mass on e₃ at `l` (m g = 1).
+#[derive(Lagrangian, Debug, Clone)]
+#[lagrangian(
+    kinetic = 0.5 * omega.dot(diag(inertia) * omega),
+    potential = l * gamma.z,
+)]
+struct Body {
+    inertia: Vector3<f64>,
+    l: f64,
+}
+
+const TEXT: &str = "kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = l * gamma.z";
+
+fn body() -> Body {
+    Body {
+        inertia: Vector3::new(1.0, 2.0, 3.0),
+        l: 1.5,
+    }
+}
+
+fn hanging<M: routh::Routhian>(m: &M) -> SteadyMotion {
+    SteadyMotion::at(m, -Vector3::z(), 0.0, true).unwrap()
+}
+
+fn vector_field(m: &Body, x: &[f64; 6]) -> [f64; 6] {
+    let w = Vector3::new(x[0], x[1], x[2]);
+    let g = Vector3::new(x[3], x[4], x[5]);
+    let eq = m.full_equations(&w, &g);
+    let wd = eq.inertia.try_inverse().unwrap() * eq.right_side;
+    let gd = g.cross(&w);
+    [wd.x, wd.y, wd.z, gd.x, gd.y, gd.z]
+}
+
+/// `Ω(F, w) = dE(w)` for every `w` tangent to the leaf: the form is the one the flow is
+/// Hamiltonian for, with the sign of a canonical chart (`ι_{X_H}Ω = dH`). `dE` by central
+/// differences of the energy.
+#[test]
+fn the_symplectic_form_makes_the_flow_hamiltonian_for_the_energy() {
+    let m = Body {
+        inertia: Vector3::new(1.3, 2.1, 2.9),
+        l: 0.7,
+    };
+    let g = Vector3::new(0.3, -0.5, 0.7).normalize();
+    let w = Vector3::new(0.4, -1.1, 0.6);
+    let x = [w.x, w.y, w.z, g.x, g.y, g.z];
+    let f = routh::nalgebra::Vector6::from_row_slice(&vector_field(&m, &x));
+    let x6 = routh::nalgebra::Vector6::from_row_slice(&x);
+    let energy = |y: &routh::nalgebra::Vector6<f64>| {
+        m.energy(
+            &Vector3::new(y[0], y[1], y[2]),
+            &Vector3::new(y[3], y[4], y[5]),
+        )
+    };
+    // Directions tangent to the leaf (p_ψ and |γ|² fixed to first order): random directions
+    // with the two gradients projected out.
+    let jm = m.d2l_domega2(&g);
+    let lw = m.dl_domega(&w, &g);
+    let n: Matrix3<f64> = m.d2l_domega_dgamma(&w, &g);
+    let dp = routh::nalgebra::Vector6::from_iterator(
+        (jm * g)
+            .iter()
+            .chain((n.transpose() * g + lw).iter())
+            .copied(),
+    );
+    let dg = routh::nalgebra::Vector6::new(0.0, 0.0, 0.0, g.x, g.y, g.z);
+    let q = routh::nalgebra::Matrix6x2::from_columns(&[dp, dg]).qr().q();
+    for seed in 0..4 {
+        let r = routh::nalgebra::Vector6::from_fn(|i, _| ((i * 7 + seed * 13) as f64 * 0.731).sin());
+        let t = r - q * (q.transpose() * r);
+        let h = 1e-5;
+        let de = (energy(&(x6 + t * h)) - energy(&(x6 - t * h))) / (2.0 * h);
+        let om = orbit_symplectic_form(&m, &x6, &f, &t);
+        assert!(
+            (om - de).abs() < 1e-8 * de.abs().max(1.0),
+            "Ω(F, w) = {om}, dE(w) = {de}"
+        );
+    }
+}
+
+/// The Lyapunov family's first orbits at two small amplitudes, their twist extrapolated to zero
+/// amplitude (linear in the energy above the steady motion).
+fn small_orbits<M: routh::Routhian>(m: &M, mode: usize) -> (PeriodicOrbit, PeriodicOrbit, f64) {
+    let s = hanging(m);
+    let opts = OrbitOptions {
+        initial_amplitude: 2e-3,
+        initial_step: 0.004,
+        max_step: 0.004,
+        ..OrbitOptions::default().with_max_orbits(3)
+    };
+    let fam = lyapunov_family(m, &s, mode, &opts).unwrap();
+    (fam.orbits[0].clone(), fam.orbits[2].clone(), s.energy)
+}
+
+/// `τ → D/(π ω_k³)` at zero amplitude on the family of mode k (D the Arnold determinant of the
+/// hanging body's normal form `H = ω₁I₁ + ω₂I₂ + c₂₀I₁² + c₁₁I₁I₂ + c₀₂I₂²`): on the torus
+/// `(I₁, I₂)` of the energy level the section map turns by `ν_j/ν_k` with `ν = ∂H/∂I`, and the
+/// curve `I_j` encloses `A = 2πI_j`. A factor 2π or a sign wrong in the twist fails here.
+#[test]
+fn twist_at_small_amplitude_is_the_steady_motions_normal_form() {
+    let m = body();
+    let nf = nonlinear_stability(&m, &hanging(&m), &NonlinearOptions::default()).unwrap();
+    assert_eq!(nf.krein_signs, [1, 1], "{nf}");
+    let [w1, w2] = nf.frequencies;
+    let d = nf.arnold_determinant;
+    let opts = OrbitNonlinearOptions::default();
+    for mode in 0..2 {
+        let (wk, wj) = if mode == 0 { (w1, w2) } else { (w2, w1) };
+        let (a, b, es) = small_orbits(&m, mode);
+        let ra = orbit_nonlinear_stability(&m, &a, &opts).unwrap();
+        let rb = orbit_nonlinear_stability(&m, &b, &opts).unwrap();
+        assert_eq!(ra.verdict, OrbitNonlinearVerdict::OrbitallyStable, "{ra}");
+        assert!(ra.area_defect < 1e-6, "{ra}");
+        // ρ → ω_j/ω_k mod 1 (within the amplitude's shift of the frequencies).
+        let rho0 = (wj / wk).rem_euclid(1.0);
+        assert!(
+            (ra.rotation_number - rho0).abs() < 1e-3,
+            "{} vs {rho0}",
+            ra.rotation_number
+        );
+        assert!(
+            ((2.0 * PI * ra.rotation_number).cos() - a.stability_index).abs() < 1e-7,
+            "cos 2πρ = k"
+        );
+        let (ea, eb) = (a.energy - es, b.energy - es);
+        let tau0 = ra.twist - (rb.twist - ra.twist) / (eb - ea) * ea;
+        let expected = d / (PI * wk.powi(3));
+        eprintln!(
+            "mode {mode}: ρ = {}, τ(0) = {tau0:e}, D/(πω³) = {expected:e}, area defect {:e}",
+            ra.rotation_number, ra.area_defect
+        );
+        assert!(
+            (tau0 - expected).abs() < 1e-6 * expected.abs(),
+            "mode {mode}: τ(0) = {tau0:e} (τ = {:e}, {:e} at h = {ea:e}, {eb:e}) vs D/(πω³) = {expected:e}",
+            ra.twist,
+            rb.twist
+        );
+    }
+}
+
+/// The twist and the rotation number depend on neither the section (its normal tilted) nor the
+/// chart (sheared linear coordinates, another complement for the level's correction); and a
+/// run-time model from the same text gives the derive's.
+#[test]
+fn twist_is_an_invariant_and_the_same_on_a_run_time_model() {
+    let m = body();
+    let s = hanging(&m);
+    let fam = lyapunov_family(&m, &s, 0, &OrbitOptions::default().with_max_orbits(8)).unwrap();
+    let o = fam.orbits.last().unwrap();
+    assert_eq!(o.stability, OrbitStability::Elliptic);
+    let opts = OrbitNonlinearOptions::default();
+    let base = orbit_nonlinear_stability(&m, o, &opts).unwrap();
+    let charts = [
+        SectionChart {
+            tilt: routh::nalgebra::Vector6::new(0.3, -0.2, 0.1, 0.4, 0.0, -0.3),
+            ..Default::default()
+        },
+        SectionChart {
+            shear: 0.7,
+            complement: Some([
+                routh::nalgebra::Vector6::new(1.0, 0.2, 0.0, 0.1, 0.0, 0.3),
+                routh::nalgebra::Vector6::new(0.0, 1.0, 0.5, 0.0, 0.2, 0.0),
+                routh::nalgebra::Vector6::new(0.1, 0.0, 0.0, 0.3, 0.4, 1.0),
+            ]),
+            ..Default::default()
+        },
+    ];
+    for c in &charts {
+        let r = orbit_nonlinear_stability_in(&m, o, c, &opts).unwrap();
+        eprintln!("{r} vs {base}");
+        assert!((r.rotation_number - base.rotation_number).abs() < 1e-8);
+        assert!(
+            (r.twist - base.twist).abs() < 1e-6 * base.twist.abs(),
+            "{} vs {}",
+            r.twist,
+            base.twist
+        );
+    }
+    let rt = Model::new(TEXT, &[("inertia", m.inertia.into()), ("l", m.l.into())]).unwrap();
+    let r = orbit_nonlinear_stability(&rt, o, &opts).unwrap();
+    assert!((r.twist - base.twist).abs() < 1e-8 * base.twist.abs());
+    assert_eq!(r.verdict, base.verdict);
+}
+
+/// Hyperbolic orbits are unstable, a hand-written model is refused by name.
+#[test]
+fn linear_verdicts_and_refusals() {
+    let m = body();
+    let s = hanging(&m);
+    let fam = lyapunov_family(&m, &s, 0, &OrbitOptions::default().with_max_orbits(3)).unwrap();
+    let mut o = fam.orbits[0].clone();
+    o.stability = OrbitStability::Hyperbolic;
+    let r = orbit_nonlinear_stability(&m, &o, &OrbitNonlinearOptions::default()).unwrap();
+    assert_eq!(r.verdict, OrbitNonlinearVerdict::Unstable);
+    assert!(r.twist.is_nan() && r.rotation_number.is_nan());
+    let bad = OrbitNonlinearOptions {
+        twist_tol: 0.0,
+        ..Default::default()
+    };
+    let e = orbit_nonlinear_stability(&m, &fam.orbits[0], &bad).unwrap_err();
+    assert!(e.to_string().contains("twist_tol"), "{e}");
+}
+
+/// Along the swing family of mode 0 with `nonlinear`, the resonance events sit where `k` is
+/// −1/2 or 0 and the twist events where `τ` changes sign (recomputed on another section).
+#[test]
+fn nonlinear_events_along_a_family() {
+    let m = body();
+    let s = hanging(&m);
+    let opts = OrbitOptions {
+        nonlinear: true,
+        ..OrbitOptions::default().with_max_orbits(40)
+    };
+    let fam = lyapunov_family(&m, &s, 0, &opts).unwrap();
+    let plain = lyapunov_family(&m, &s, 0, &OrbitOptions::default().with_max_orbits(40)).unwrap();
+    // The linear events are the same with and without.
+    let linear = |f: &routh::OrbitFamily| {
+        f.events
+            .iter()
+            .filter(|e| {
+                matches!(
+                    e.kind,
+                    OrbitEventKind::Fold
+                        | OrbitEventKind::BranchPoint
+                        | OrbitEventKind::PeriodDoubling
+                )
+            })
+            .map(|e| (e.kind, e.energy))
+            .collect::<Vec<_>>()
+    };
+    let (a, b) = (linear(&fam), linear(&plain));
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!(x.0, y.0);
+        assert!((x.1 - y.1).abs() < 1e-8);
+    }
+    let ks: Vec<f64> = fam.orbits.iter().map(|o| o.stability_index).collect();
+    eprintln!("k along the family: {ks:?}");
+    for e in &fam.events {
+        eprintln!("{} at E = {}", e.kind, e.energy);
+        match e.kind {
+            OrbitEventKind::ThirdOrderResonance => {
+                assert!((e.orbit.stability_index + 0.5).abs() < 1e-6)
+            }
+            OrbitEventKind::FourthOrderResonance => assert!(e.orbit.stability_index.abs() < 1e-6),
+            OrbitEventKind::TwistDegenerate => {
+                let near = orbit_nonlinear_stability_in(
+                    &m,
+                    &e.orbit,
+                    &SectionChart {
+                        shear: 0.5,
+                        ..Default::default()
+                    },
+                    &OrbitNonlinearOptions::default(),
+                )
+                .unwrap();
+                assert!(near.twist.abs() < 1e-5, "τ = {}", near.twist);
+            }
+            _ => {}
+        }
+    }
+    assert!(
+        fam.events.iter().any(|e| e.kind != OrbitEventKind::Fold
+            && e.kind != OrbitEventKind::BranchPoint
+            && e.kind != OrbitEventKind::PeriodDoubling),
+        "no nonlinear event along {:?}",
+        ks
+    );
+}
