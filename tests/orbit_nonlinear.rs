@@ -79,7 +79,8 @@ fn the_symplectic_form_makes_the_flow_hamiltonian_for_the_energy() {
     let dg = routh::nalgebra::Vector6::new(0.0, 0.0, 0.0, g.x, g.y, g.z);
     let q = routh::nalgebra::Matrix6x2::from_columns(&[dp, dg]).qr().q();
     for seed in 0..4 {
-        let r = routh::nalgebra::Vector6::from_fn(|i, _| ((i * 7 + seed * 13) as f64 * 0.731).sin());
+        let r =
+            routh::nalgebra::Vector6::from_fn(|i, _| ((i * 7 + seed * 13) as f64 * 0.731).sin());
         let t = r - q * (q.transpose() * r);
         let h = 1e-5;
         let de = (energy(&(x6 + t * h)) - energy(&(x6 - t * h))) / (2.0 * h);
@@ -279,4 +280,116 @@ fn nonlinear_events_along_a_family() {
         "no nonlinear event along {:?}",
         ks
     );
+}
+
+/// `tr Φ(T)` by central differences of `simulate_full` (an integration routh's variational
+/// equations play no part in).
+fn fd_index(m: &Body, o: &PeriodicOrbit) -> f64 {
+    let opts = routh::SimOptions::with_tolerances(1e-12, 1e-13);
+    let end = |w: Vector3<f64>, g: Vector3<f64>| {
+        let t = routh::simulate_full(m, w, g, o.period, &opts).unwrap();
+        let (w1, g1) = (*t.omega.last().unwrap(), *t.gamma.last().unwrap());
+        [w1.x, w1.y, w1.z, g1.x, g1.y, g1.z]
+    };
+    // An orthonormal basis: the three ω axes, two tangents of the sphere at γ₀, and γ₀ itself,
+    // whose diagonal entry is 1 (|γ| is conserved, so the radial part of δγ(T) is δ|γ|).
+    let g0 = o.gamma0;
+    let u = g0.cross(&Vector3::new(0.3, 0.5, 0.7)).normalize();
+    let v = g0.cross(&u);
+    let h = 1e-6;
+    let mut trace = 1.0;
+    for i in 0..5 {
+        let (mut wp, mut wm) = (o.omega0, o.omega0);
+        let (mut gp, mut gm) = (g0, g0);
+        let dir = [u, v];
+        if i < 3 {
+            wp[i] += h;
+            wm[i] -= h;
+        } else {
+            gp = (g0 + dir[i - 3] * h).normalize();
+            gm = (g0 - dir[i - 3] * h).normalize();
+        }
+        let (ep, em) = (end(wp, gp), end(wm, gm));
+        let d: Vec<f64> = (0..6).map(|k| (ep[k] - em[k]) / (2.0 * h)).collect();
+        trace += if i < 3 {
+            d[i]
+        } else {
+            let b = dir[i - 3];
+            d[3] * b.x + d[4] * b.y + d[5] * b.z
+        };
+    }
+    (trace - 4.0) / 2.0
+}
+
+/// The chart over the middle moment: its curves' points are where an independent monodromy
+/// (finite differences of `simulate_full`) has `k = 1`, `0` or `−1/2`, and where the twist,
+/// recomputed on another chart of the section, vanishes.
+#[test]
+fn orbit_chart_curves_are_where_the_conditions_hold() {
+    let make = |b: f64| {
+        (
+            Body {
+                inertia: Vector3::new(1.0, b, 3.0),
+                l: 1.5,
+            },
+            0.0,
+        )
+    };
+    let opts = routh::OrbitChartOptions {
+        nx: 4,
+        ..Default::default()
+    };
+    let chart = routh::orbit_chart(make, -Vector3::z(), 0, (1.9, 2.1), (0.0, 2.8), &opts).unwrap();
+    assert_eq!(chart.x.len(), 4);
+    assert!(chart.stop.is_none() && chart.failures.iter().all(|f| f.is_none()));
+    let kinds: Vec<_> = chart
+        .curves
+        .iter()
+        .map(|c| (c.kind, c.points.len()))
+        .collect();
+    eprintln!("{kinds:?}");
+    for kind in [
+        OrbitEventKind::BranchPoint,
+        OrbitEventKind::FourthOrderResonance,
+        OrbitEventKind::TwistDegenerate,
+    ] {
+        assert!(
+            chart
+                .curves
+                .iter()
+                .any(|c| c.kind == kind && c.points.len() == 4),
+            "no curve of {kind} across the chart: {kinds:?}"
+        );
+    }
+    // Every event at the chart's first and last x, checked independently.
+    for (i, fam) in chart.families.iter().enumerate() {
+        if i != 0 && i != 3 {
+            continue;
+        }
+        let (m, _) = make(chart.x[i]);
+        for e in &fam.as_ref().unwrap().events {
+            let k_fd = fd_index(&m, &e.orbit);
+            match e.kind {
+                OrbitEventKind::BranchPoint => assert!((k_fd - 1.0).abs() < 1e-5, "k = {k_fd}"),
+                OrbitEventKind::FourthOrderResonance => assert!(k_fd.abs() < 1e-5, "k = {k_fd}"),
+                OrbitEventKind::ThirdOrderResonance => {
+                    assert!((k_fd + 0.5).abs() < 1e-5, "k = {k_fd}")
+                }
+                OrbitEventKind::TwistDegenerate => {
+                    let r = orbit_nonlinear_stability_in(
+                        &m,
+                        &e.orbit,
+                        &SectionChart {
+                            shear: -0.4,
+                            ..Default::default()
+                        },
+                        &OrbitNonlinearOptions::default(),
+                    )
+                    .unwrap();
+                    assert!(r.twist.abs() < 1e-6, "τ = {}", r.twist);
+                }
+                _ => {}
+            }
+        }
+    }
 }

@@ -65,11 +65,12 @@ pub use nonlinear::{
     nonlinear_stability, NonlinearOptions, NonlinearReport, NonlinearVerdict, Resonance,
 };
 pub use periodic::{
-    axial_symmetry, continue_orbit, continue_orbit_in, lyapunov_family, orbit_crossings,
-    orbit_nonlinear_stability, orbit_path, period_doubled_family, periodic_orbit, poincare_section,
-    switch_branch, OrbitEvent, OrbitEventKind, OrbitFamily, OrbitNonlinearOptions,
-    OrbitNonlinearReport, OrbitNonlinearVerdict, OrbitOptions, OrbitParameterFamily,
-    OrbitResonance, OrbitStability, OrbitStop, PeriodicOrbit, PoincareSection, SectionOptions,
+    axial_symmetry, continue_orbit, continue_orbit_in, lyapunov_family, orbit_chart,
+    orbit_crossings, orbit_nonlinear_stability, orbit_path, period_doubled_family, periodic_orbit,
+    poincare_section, switch_branch, OrbitChart, OrbitChartCurve, OrbitChartOptions, OrbitEvent,
+    OrbitEventKind, OrbitFamily, OrbitNonlinearOptions, OrbitNonlinearReport,
+    OrbitNonlinearVerdict, OrbitOptions, OrbitParameterFamily, OrbitResonance, OrbitStability,
+    OrbitStop, PeriodicOrbit, PoincareSection, SectionOptions,
 };
 pub use sim::{simulate_full, simulate_reduced, Method, ReducedTrajectory, SimOptions, Trajectory};
 pub use stability::{classify, classify_with, ClassifyOptions, Stability, StabilityReport};

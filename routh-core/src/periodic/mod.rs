@@ -29,6 +29,7 @@
 //! kinds of family are followed by the same engines (docs/architecture.md, "Engines").
 
 mod branch;
+mod chart;
 mod doubling;
 mod events;
 mod family;
@@ -45,14 +46,17 @@ use std::fmt;
 use nalgebra::{Complex, Vector3};
 
 pub use branch::switch_branch;
+pub use chart::{orbit_chart, OrbitChart, OrbitChartCurve, OrbitChartOptions};
 pub use doubling::period_doubled_family;
 pub use family::{continue_orbit, lyapunov_family};
 pub use flow::orbit_path;
 pub use nonlinear::{
-    orbit_nonlinear_stability, orbit_nonlinear_stability_in, orbit_symplectic_form,
-    OrbitNonlinearOptions, OrbitNonlinearReport, OrbitNonlinearVerdict, OrbitResonance,
-    SectionChart,
+    orbit_nonlinear_stability, OrbitNonlinearOptions, OrbitNonlinearReport, OrbitNonlinearVerdict,
+    OrbitResonance,
 };
+/// The section and chart of the nonlinear test, chosen (for the tests of its invariance).
+#[doc(hidden)]
+pub use nonlinear::{orbit_nonlinear_stability_in, orbit_symplectic_form, SectionChart};
 pub use parameter::{continue_orbit_in, OrbitParameterFamily};
 pub use section::{
     orbit_crossings, poincare_section, PoincareSection, SectionOptions, SectionOrbit,

@@ -1,0 +1,249 @@
+//! The chart of a mode's Lyapunov family over a body parameter `x` and the energy `h` above the
+//! steady motion (ARCHITECTURE §5h, docs/method.md §12.4): for each `x` of a grid the family is
+//! followed with its linear and nonlinear events located to `event_tol` in the energy; the
+//! events of one kind at neighbouring `x` are joined into the chart's curves.
+
+use nalgebra::Vector3;
+
+use super::{lyapunov_family, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop};
+use crate::{steady_motion_near, RouthError, Routhian};
+
+/// Settings of [`orbit_chart`].
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct OrbitChartOptions {
+    /// The options of each family (its `nonlinear` is set by the chart; its energy bounds are
+    /// the chart's energies above each steady motion; its `control` cancels the chart).
+    pub orbit: OrbitOptions,
+    /// The number of values of `x`, both ends included (at least 2).
+    pub nx: usize,
+    /// Two events of one kind at neighbouring `x` are joined when their energies differ by at
+    /// most this fraction of the chart's energy range.
+    pub join_tol: f64,
+}
+
+impl Default for OrbitChartOptions {
+    fn default() -> Self {
+        OrbitChartOptions {
+            orbit: OrbitOptions {
+                max_orbits: 200,
+                ..OrbitOptions::default()
+            },
+            nx: 41,
+            join_tol: 0.2,
+        }
+    }
+}
+
+/// A curve of the chart: where the family's orbits meet one kind of event, as `(x, h)` points
+/// in the order of `x`.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct OrbitChartCurve {
+    /// The event: `Fold`, `BranchPoint` (`k = 1`), `PeriodDoubling` (`k = −1`),
+    /// `ThirdOrderResonance` (`k = −1/2`), `FourthOrderResonance` (`k = 0`), `TwistDegenerate`.
+    pub kind: OrbitEventKind,
+    /// `(x, h)`, `h = E − E_s(x)`.
+    pub points: Vec<[f64; 2]>,
+}
+
+/// The chart of [`orbit_chart`].
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct OrbitChart {
+    /// The values of the parameter.
+    pub x: Vec<f64>,
+    /// The energy `E_s(x)` of the steady motion (NaN where none was found).
+    pub steady_energy: Vec<f64>,
+    /// The family at each `x` (`None` where the steady motion or the family failed; the reason
+    /// in [`OrbitChart::failures`]).
+    pub families: Vec<Option<OrbitFamily>>,
+    /// Why the steady motion or the family at each `x` failed (`None` where it did not).
+    pub failures: Vec<Option<String>>,
+    /// The curves where the orbits change linear stability (`k = ±1`, folds), meet the
+    /// resonances of order three and four, and lose their twist.
+    pub curves: Vec<OrbitChartCurve>,
+    /// Why the chart ended early (`Interrupted`), `None` when every `x` was done.
+    pub stop: Option<OrbitStop>,
+}
+
+impl OrbitChart {
+    /// The families' orbits as `(x, h, k)` rows, for figures of the regions by stability.
+    pub fn samples(&self) -> Vec<[f64; 3]> {
+        let mut out = Vec::new();
+        for ((x, es), fam) in self.x.iter().zip(&self.steady_energy).zip(&self.families) {
+            for o in fam.iter().flat_map(|f| &f.orbits) {
+                out.push([*x, o.energy - es, o.stability_index]);
+            }
+        }
+        out
+    }
+}
+
+/// The chart of the Lyapunov family of `mode` over the parameter `x ∈ x_range` and the energy
+/// `h = E − E_s(x) ∈ excess_energy` above the steady motion (ARCHITECTURE §5h): `family(x)`
+/// gives the model at `x` and its `p_ψ`; the steady motion is found near `gamma_guess` at the
+/// first `x` and followed from one `x` to the next. Each family is traced with
+/// [`OrbitOptions::nonlinear`] set, its events located in the energy to `event_tol`; events of
+/// one kind at neighbouring `x` are joined into [`OrbitChartCurve`]s (the curves are exact in
+/// `h` at every `x` of the grid, and joined by straight segments between them).
+///
+/// A failure at one `x` (no steady motion, an unstable one, a family that does not start) is
+/// recorded in [`OrbitChart::failures`], not an error. Errors: invalid options or ranges; the
+/// model's own errors are per `x`.
+pub fn orbit_chart<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    family: F,
+    gamma_guess: Vector3<f64>,
+    mode: usize,
+    x_range: (f64, f64),
+    excess_energy: (f64, f64),
+    opts: &OrbitChartOptions,
+) -> Result<OrbitChart, RouthError> {
+    check(x_range, excess_energy, mode, opts)?;
+    let nx = opts.nx;
+    let xs: Vec<f64> = (0..nx)
+        .map(|i| x_range.0 + (x_range.1 - x_range.0) * i as f64 / (nx - 1) as f64)
+        .collect();
+    let mut chart = OrbitChart {
+        x: Vec::with_capacity(nx),
+        steady_energy: Vec::with_capacity(nx),
+        families: Vec::with_capacity(nx),
+        failures: Vec::with_capacity(nx),
+        curves: Vec::new(),
+        stop: None,
+    };
+    let mut guess = gamma_guess;
+    let control = &opts.orbit.control;
+    for (i, &x) in xs.iter().enumerate() {
+        if control.is_cancelled() {
+            chart.stop = Some(OrbitStop::Interrupted);
+            break;
+        }
+        control.report(i, nx);
+        let (model, p_psi) = family(x);
+        let one = steady_motion_near(&model, guess, p_psi).and_then(|s| {
+            let o = OrbitOptions {
+                nonlinear: true,
+                energy_bounds: Some((s.energy + excess_energy.0, s.energy + excess_energy.1)),
+                ..opts.orbit.clone()
+            };
+            let fam = lyapunov_family(&model, &s, mode, &o)?;
+            Ok((s, fam))
+        });
+        chart.x.push(x);
+        match one {
+            Ok((s, fam)) => {
+                guess = s.gamma;
+                let interrupted = fam.stop == Some(OrbitStop::Interrupted);
+                chart.steady_energy.push(s.energy);
+                chart.families.push(Some(fam));
+                chart.failures.push(None);
+                if interrupted {
+                    chart.stop = Some(OrbitStop::Interrupted);
+                    break;
+                }
+            }
+            Err(RouthError::Interrupted) => {
+                chart.steady_energy.push(f64::NAN);
+                chart.families.push(None);
+                chart
+                    .failures
+                    .push(Some(RouthError::Interrupted.to_string()));
+                chart.stop = Some(OrbitStop::Interrupted);
+                break;
+            }
+            Err(e) => {
+                chart.steady_energy.push(f64::NAN);
+                chart.families.push(None);
+                chart.failures.push(Some(e.to_string()));
+            }
+        }
+    }
+    chart.curves = join_curves(&chart, opts.join_tol * (excess_energy.1 - excess_energy.0));
+    Ok(chart)
+}
+
+fn check(
+    x_range: (f64, f64),
+    h: (f64, f64),
+    mode: usize,
+    opts: &OrbitChartOptions,
+) -> Result<(), RouthError> {
+    let bad = |what: &'static str, reason: String| Err(RouthError::InvalidOption { what, reason });
+    if !(x_range.0.is_finite() && x_range.1.is_finite() && x_range.0 < x_range.1) {
+        return bad("x_range", format!("need finite lo < hi, got {x_range:?}"));
+    }
+    if !(h.0.is_finite() && h.1.is_finite() && 0.0 <= h.0 && h.0 < h.1) {
+        return bad(
+            "excess_energy",
+            format!("need finite 0 ≤ lo < hi (energies above the steady motion), got {h:?}"),
+        );
+    }
+    if mode > 1 {
+        return bad("mode", format!("0 (ω₁) or 1 (ω₂), got {mode}"));
+    }
+    if !(2..=10_000).contains(&opts.nx) {
+        return bad("nx", format!("need 2 ≤ nx ≤ 10000, got {}", opts.nx));
+    }
+    if !(opts.join_tol > 0.0 && opts.join_tol.is_finite()) {
+        return bad(
+            "join_tol",
+            format!("must be positive, got {}", opts.join_tol),
+        );
+    }
+    Ok(())
+}
+
+/// Joins the events of each kind at neighbouring `x` (nearest energy within `tol`).
+fn join_curves(chart: &OrbitChart, tol: f64) -> Vec<OrbitChartCurve> {
+    let kinds = [
+        OrbitEventKind::Fold,
+        OrbitEventKind::BranchPoint,
+        OrbitEventKind::PeriodDoubling,
+        OrbitEventKind::ThirdOrderResonance,
+        OrbitEventKind::FourthOrderResonance,
+        OrbitEventKind::TwistDegenerate,
+    ];
+    let mut out = Vec::new();
+    for kind in kinds {
+        // Open curves: (index into out, last h).
+        let mut open: Vec<(usize, f64)> = Vec::new();
+        for ((x, es), fam) in chart
+            .x
+            .iter()
+            .zip(&chart.steady_energy)
+            .zip(&chart.families)
+        {
+            let mut hs: Vec<f64> = fam
+                .iter()
+                .flat_map(|f| &f.events)
+                .filter(|e| e.kind == kind)
+                .map(|e| e.energy - es)
+                .collect();
+            hs.sort_by(f64::total_cmp);
+            let mut next = Vec::new();
+            for h in hs {
+                let best = open
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, (_, last))| (last - h).abs() <= tol)
+                    .min_by(|a, b| (a.1 .1 - h).abs().total_cmp(&(b.1 .1 - h).abs()))
+                    .map(|(j, _)| j);
+                let idx = match best {
+                    Some(j) => open.swap_remove(j).0,
+                    None => {
+                        out.push(OrbitChartCurve {
+                            kind,
+                            points: Vec::new(),
+                        });
+                        out.len() - 1
+                    }
+                };
+                out[idx].points.push([*x, h]);
+                next.push((idx, h));
+            }
+            open = next;
+        }
+    }
+    out
+}
