@@ -75,7 +75,9 @@ fn kind_target(kind: OrbitEventKind) -> f64 {
     match kind {
         OrbitEventKind::BranchPoint => 1.0,
         OrbitEventKind::PeriodDoubling => -1.0,
-        OrbitEventKind::Fold => f64::NAN,
+        OrbitEventKind::ThirdOrderResonance => -0.5,
+        OrbitEventKind::FourthOrderResonance => 0.0,
+        OrbitEventKind::Fold | OrbitEventKind::TwistDegenerate => f64::NAN,
     }
 }
 

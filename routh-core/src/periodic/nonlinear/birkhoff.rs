@@ -49,7 +49,7 @@ pub(crate) fn birkhoff(p: &[MapJet; 2], skip_third: bool) -> Option<Birkhoff> {
     let det = l.determinant();
     // Normalised to det 1 (the jets' round-off), as the map is symplectic.
     let cosphi = 0.5 * l.trace() / det.abs().sqrt();
-    if !(cosphi.abs() < 1.0) {
+    if cosphi.is_nan() || cosphi.abs() >= 1.0 {
         return None;
     }
     let mut sinphi = (1.0 - cosphi * cosphi).sqrt();
@@ -60,7 +60,7 @@ pub(crate) fn birkhoff(p: &[MapJet; 2], skip_third: bool) -> Option<Birkhoff> {
         kmat = -kmat;
     }
     let sdet = kmat[(1, 0)];
-    if !(sdet > 0.0) {
+    if sdet.is_nan() || sdet <= 0.0 {
         return None;
     }
     let s = Matrix2::new(1.0, kmat[(0, 0)], 0.0, kmat[(1, 0)]) / sdet.sqrt();

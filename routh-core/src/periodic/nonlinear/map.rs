@@ -101,7 +101,7 @@ pub(crate) fn field_jet(
         [cof(1, 2, 0, 1), -cof(0, 2, 0, 1), cof(0, 1, 0, 1)],
     ];
     let det = j[0][0] * adj[0][0] + j[0][1] * adj[1][0] + j[0][2] * adj[2][0];
-    if !(det.value() > 0.0) {
+    if det.value().is_nan() || det.value() <= 0.0 {
         return Err(RouthError::KineticNotPositiveDefinite {
             gamma: [g[0].value(), g[1].value(), g[2].value()],
             min_eigenvalue: f64::NAN,
@@ -210,7 +210,7 @@ pub(crate) fn section_map<M: crate::Routhian + ?Sized>(
     let mut v2: Vector6<f64> = vt.row(order[1]).transpose();
     v1 += v2 * chart.shear;
     let omega12 = symplectic_form(model, &x0, &v1, &v2);
-    if !(omega12.abs() > 1e-12 * v1.norm() * v2.norm()) || !omega12.is_finite() {
+    if !omega12.is_finite() || omega12.abs() <= 1e-12 * v1.norm() * v2.norm() {
         return Err(numerical(
             "a symplectic basis of the section (Ω(v₁, v₂) = 0)",
         ));
@@ -231,7 +231,7 @@ pub(crate) fn section_map<M: crate::Routhian + ?Sized>(
     let r2: Vector6<f64> = binv.row(2).transpose();
     // With a tilt, the section's tangent plane is V projected along f₀ onto ker ℓ.
     let denom = ell.dot(&f0);
-    if !(denom.abs() > 1e-12 * ell.norm() * f0.norm()) {
+    if !denom.is_finite() || denom.abs() <= 1e-12 * ell.norm() * f0.norm() {
         return Err(numerical("a section transverse to the flow"));
     }
     let (p1, p2) = (

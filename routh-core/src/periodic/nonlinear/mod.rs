@@ -55,7 +55,7 @@ impl Default for OrbitNonlinearOptions {
 impl OrbitNonlinearOptions {
     pub(crate) fn validate(&self) -> Result<(), RouthError> {
         for (what, v) in [("rtol", self.rtol), ("atol", self.atol)] {
-            if !(v >= super::MIN_TOL && v < 1.0) {
+            if !(super::MIN_TOL..1.0).contains(&v) {
                 return Err(RouthError::InvalidOption {
                     what,
                     reason: format!("must be in [{:e}, 1) (got {v:e})", super::MIN_TOL),
