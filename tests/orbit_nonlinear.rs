@@ -393,3 +393,134 @@ fn orbit_chart_curves_are_where_the_conditions_hold() {
         }
     }
 }
+
+/// The largest distance in `(ω, γ)` from the orbit's path of a motion started at `γ₀` turned by
+/// `delta` about an axis across it, over `periods` periods (an integration of its own).
+fn escape(m: &derived_models::AsymmetricTop, o: &PeriodicOrbit, delta: f64, periods: usize) -> f64 {
+    let path = routh::orbit_path(m, o, 4001).unwrap();
+    let pts: Vec<[f64; 6]> = (0..path.t.len())
+        .map(|i| {
+            let (w, g) = (path.omega[i], path.gamma[i]);
+            [w.x, w.y, w.z, g.x, g.y, g.z]
+        })
+        .collect();
+    let axis = o.gamma0.cross(&Vector3::new(0.3, -0.7, 0.2)).normalize();
+    let g = routh::nalgebra::Rotation3::new(axis * delta) * o.gamma0;
+    let t_end = o.period * periods as f64;
+    let times: Vec<f64> = (0..=periods * 40)
+        .map(|i| t_end * i as f64 / (periods * 40) as f64)
+        .collect();
+    let opts = routh::SimOptions::with_tolerances(1e-11, 1e-12).at_times(times);
+    let tr = routh::simulate_full(m, o.omega0, g, t_end, &opts).unwrap();
+    (0..tr.t.len())
+        .map(|i| {
+            let (w, g) = (tr.omega[i], tr.gamma[i]);
+            let x = [w.x, w.y, w.z, g.x, g.y, g.z];
+            pts.iter()
+                .map(|p| (0..6).map(|k| (p[k] - x[k]).powi(2)).sum::<f64>())
+                .fold(f64::INFINITY, f64::min)
+                .sqrt()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// At a resonance of order three of the asymmetric top's swings (no reflection symmetry: the
+/// resonant term is not zero) the verdict is unstable, and a motion started 1e−2 from the orbit
+/// leaves its neighbourhood, while from an orbitally stable orbit of the same family it stays.
+#[test]
+fn a_third_order_resonance_is_unstable_and_the_motion_leaves() {
+    let m = derived_models::AsymmetricTop {
+        inertia: Vector3::new(1.0, 3.0, 6.0),
+        com: Vector3::new(0.4, 0.3, 1.5),
+        mass: 1.0,
+        g: 1.0,
+    };
+    let s = routh::steady_motions(&m, 0.0)
+        .unwrap()
+        .into_iter()
+        .min_by(|a, b| a.energy.total_cmp(&b.energy))
+        .unwrap();
+    let opts = OrbitOptions {
+        nonlinear: true,
+        ..OrbitOptions::default().with_max_orbits(60)
+    };
+    let fam = lyapunov_family(&m, &s, 0, &opts).unwrap();
+    let e = fam
+        .events
+        .iter()
+        .find(|e| e.kind == OrbitEventKind::ThirdOrderResonance)
+        .expect("a resonance of order three");
+    let r = orbit_nonlinear_stability(&m, &e.orbit, &OrbitNonlinearOptions::default()).unwrap();
+    assert_eq!(r.resonance, Some(routh::OrbitResonance::Third), "{r}");
+    assert_eq!(r.verdict, OrbitNonlinearVerdict::Unstable, "{r}");
+    // An orbitally stable orbit of the family before the resonance, away from it.
+    let stable = fam
+        .orbits
+        .iter()
+        .filter(|o| o.energy < e.energy && (o.stability_index + 0.5).abs() > 0.2)
+        .filter(|o| o.stability == OrbitStability::Elliptic)
+        .last()
+        .expect("an elliptic orbit");
+    let rs = orbit_nonlinear_stability(&m, stable, &OrbitNonlinearOptions::default()).unwrap();
+    assert_eq!(rs.verdict, OrbitNonlinearVerdict::OrbitallyStable, "{rs}");
+    let (d_res, d_stable) = (
+        escape(&m, &e.orbit, 1e-2, 150),
+        escape(&m, stable, 1e-2, 150),
+    );
+    eprintln!("resonant: {d_res}, stable: {d_stable}");
+    assert!(
+        d_stable < 0.05,
+        "the stable orbit's neighbour went {d_stable} away"
+    );
+    assert!(
+        d_res > 0.15,
+        "the resonant orbit's neighbour stayed within {d_res}"
+    );
+}
+
+/// The Kovalevskaya top (moments 2 : 2 : 1, centre of mass on e₁), integrable: invariant curves
+/// (its tori) surround every elliptic orbit, so at each resonance of order three of its family
+/// the resonant term vanishes (the map has an integral) and the verdict is never `Unstable`.
+#[test]
+fn kovalevskaya_resonances_of_order_three_are_not_unstable() {
+    let m = Body3 {
+        inertia: Vector3::new(2.0, 2.0, 1.0),
+        com: Vector3::new(1.0, 0.0, 0.0),
+    };
+    let s = routh::steady_motions(&m, 0.5)
+        .unwrap()
+        .into_iter()
+        .min_by(|a, b| a.energy.total_cmp(&b.energy))
+        .unwrap();
+    let opts = OrbitOptions {
+        nonlinear: true,
+        ..OrbitOptions::default().with_max_orbits(60)
+    };
+    let fam = lyapunov_family(&m, &s, 0, &opts).unwrap();
+    let third: Vec<_> = fam
+        .events
+        .iter()
+        .filter(|e| e.kind == OrbitEventKind::ThirdOrderResonance)
+        .collect();
+    assert!(
+        third.len() >= 2,
+        "{:?}",
+        fam.events.iter().map(|e| e.kind).collect::<Vec<_>>()
+    );
+    for e in third {
+        let r = orbit_nonlinear_stability(&m, &e.orbit, &OrbitNonlinearOptions::default()).unwrap();
+        assert_eq!(r.resonance, Some(routh::OrbitResonance::Third), "{r}");
+        assert_ne!(r.verdict, OrbitNonlinearVerdict::Unstable, "{r}");
+    }
+}
+
+/// A heavy body with principal moments `inertia` and centre of mass `com` (m g = 1).
+#[derive(Lagrangian, Debug, Clone)]
+#[lagrangian(
+    kinetic = 0.5 * omega.dot(diag(inertia) * omega),
+    potential = com.dot(gamma),
+)]
+struct Body3 {
+    inertia: Vector3<f64>,
+    com: Vector3<f64>,
+}

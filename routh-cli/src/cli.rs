@@ -57,6 +57,11 @@ pub enum Command {
     /// A Poincaré section at p_ψ = P and energy E: many orbits crossing the plane γ·n = 0 (the
     /// points as CSV or JSON; regular motion shows as curves, chaos as scattered dots).
     Section(Section),
+    /// The chart of a mode's Lyapunov family over a scalar parameter (`--parameter
+    /// NAME=LO..HI`) and the energy above the steady motion (`--excess-energy LO..HI`): the
+    /// curves where the orbits change linear stability (k = ±1, folds), meet the resonances of
+    /// order three and four, and lose their twist (docs/method.md §12).
+    OrbitChart(OrbitChartArgs),
     /// The derived formulas: the Lagrangian, the amended potential U_r(γ, p_ψ) and ψ̇(0, γ, p_ψ);
     /// with `--latex`, all seven derived formulas (L, ψ̇, R, U_r, A, G, C) in LaTeX.
     Formulas(Formulas),
@@ -244,6 +249,11 @@ pub struct OrbitArgs {
     /// The guess of the period T (above 0).
     #[arg(long, value_parser = args::positive, allow_hyphen_values = true)]
     pub period: f64,
+    /// Also decide the orbit's stability beyond the linear test: the rotation number ρ and the
+    /// twist τ of its Poincaré map, resonances of order three and four, and the verdict
+    /// (orbitally stable by Moser's twist theorem, unstable, undecided).
+    #[arg(long)]
+    pub nonlinear: bool,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -310,6 +320,10 @@ pub struct Orbits {
     /// generation, as `--doubling`; both may be given).
     #[arg(long)]
     pub switch: bool,
+    /// Also locate, along each family, where the twist of the Poincaré map vanishes and where
+    /// the orbits meet the resonances of order three (k = −1/2) and four (k = 0).
+    #[arg(long)]
+    pub nonlinear: bool,
     /// The most orbits per family.
     #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u16).range(1..=10000))]
     pub max_orbits: u16,
@@ -353,6 +367,38 @@ pub struct Section {
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
     /// Output format.
+    #[command(flatten)]
+    pub output: Output,
+}
+
+/// `orbit-chart`.
+#[derive(Debug, Args)]
+pub struct OrbitChartArgs {
+    /// The model file (TOML, see docs/models.md).
+    pub model: PathBuf,
+    /// `NAME=LO..HI`: the scalar parameter of the model the chart runs over.
+    #[arg(long, value_name = "NAME=LO..HI", value_parser = args::named_range, allow_hyphen_values = true)]
+    pub parameter: NamedRange,
+    /// `LO..HI`: the energies above the steady motion, `h = E − E_s` (0 ≤ LO < HI).
+    #[arg(long, value_parser = args::range, allow_hyphen_values = true)]
+    pub excess_energy: (f64, f64),
+    /// `X,Y,Z`: the steady motion nearest this γ at the first value of the parameter (then
+    /// followed).
+    #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
+    pub gamma: [f64; 3],
+    /// 0 (the faster frequency ω₁) or 1 (the slower ω₂).
+    #[arg(long, default_value_t = 0, value_parser = clap::value_parser!(u8).range(0..=1))]
+    pub mode: u8,
+    /// The cyclic momentum p_ψ.
+    #[arg(long, short = 'p', default_value_t = 0.0, value_parser = args::finite, allow_hyphen_values = true)]
+    pub momentum: f64,
+    /// The number of parameter values, both ends included.
+    #[arg(long, default_value_t = 41, value_parser = clap::value_parser!(u16).range(2..=10000))]
+    pub nx: u16,
+    /// The most orbits per family.
+    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u16).range(1..=10000))]
+    pub max_orbits: u16,
+    /// Output format (`--csv`: the curves' points; `--json`: the whole chart).
     #[command(flatten)]
     pub output: Output,
 }

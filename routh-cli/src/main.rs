@@ -12,6 +12,7 @@ mod error;
 mod files;
 mod interrupt;
 mod nonlinear;
+mod orbit_chart;
 mod orbit_out;
 mod orbits;
 mod progress;
@@ -35,6 +36,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Orbit(o) => orbits::orbit(o),
         Command::Orbits(o) => orbits::orbits(o),
         Command::Section(s) => orbits::section(s),
+        Command::OrbitChart(c) => orbit_chart::orbit_chart(c),
         Command::Formulas(f) => commands::formulas(f),
     }
 }

@@ -27,7 +27,7 @@
 //! Numbers in Rust's shortest round-trip form; an empty field where a column does not apply.
 
 use crate::table::{num, vec3, Table};
-use routh::{OrbitEvent, OrbitFamily, PeriodicOrbit, SteadyMotion};
+use routh::{OrbitEvent, OrbitFamily, OrbitNonlinearReport, PeriodicOrbit, SteadyMotion};
 use serde::Serialize;
 
 /// The `"format"` of Python's JSON documents (`routh._export.FORMAT`).
@@ -127,6 +127,49 @@ struct FamilyDocument<'a> {
 /// `routh orbit --json`.
 pub fn orbit_json(o: &PeriodicOrbit) -> Result<String, serde_json::Error> {
     Ok(serde_json::to_string_pretty(&Document::new("PeriodicOrbit", o))? + "\n")
+}
+
+/// `routh orbit --nonlinear --json`: the report's serde form as a Python document.
+pub fn nonlinear_json(r: &OrbitNonlinearReport) -> Result<String, serde_json::Error> {
+    Ok(serde_json::to_string_pretty(&Document::new("OrbitNonlinearReport", r))? + "\n")
+}
+
+/// The columns `routh orbit --nonlinear --csv` adds to the orbit's.
+const NONLINEAR_COLUMNS: &str = "rotation_number,twist,resonance,nonlinear,area_defect";
+
+/// `routh orbit --nonlinear --csv`: the orbit's columns and the report's.
+pub fn nonlinear_csv(r: &OrbitNonlinearReport) -> String {
+    format!(
+        "{ORBIT_COLUMNS},{NONLINEAR_COLUMNS}\n{},{},{},{},{},{}\n",
+        orbit_fields(&r.orbit),
+        r.rotation_number,
+        r.twist,
+        r.resonance.map_or("", |x| x.as_str()),
+        r.verdict.as_str(),
+        r.area_defect
+    )
+}
+
+/// `routh orbit --nonlinear`: the orbit's table, then the verdict beyond the linear test.
+pub fn nonlinear_table(r: &OrbitNonlinearReport) -> String {
+    let mut t = Table::new(&["quantity", "value"]);
+    for (name, value) in [
+        ("rotation_number", format!("{:.12}", r.rotation_number)),
+        ("twist", format!("{:+.9e}", r.twist)),
+        (
+            "resonance",
+            r.resonance.map_or("none".to_string(), |x| x.to_string()),
+        ),
+        ("verdict", r.verdict.to_string()),
+        ("why", r.reason.clone()),
+    ] {
+        t.row(vec![name.to_string(), value]);
+    }
+    format!(
+        "{}\nbeyond linear (the Poincaré map's Birkhoff normal form to order three)\n{}",
+        orbit_table(&r.orbit),
+        t.render()
+    )
 }
 
 /// `routh orbits --json`: an array of family documents.

@@ -10,10 +10,10 @@ use crate::orbit_out::{self, Along, Family, Origin};
 use crate::table::{num, vec3, Table};
 use routh::plot::{orbit_family_svg, orbit_periods_svg, poincare_section_svg, PlotOptions};
 use routh::{
-    classify, continue_orbit, continue_orbit_in, lyapunov_family, period_doubled_family,
-    periodic_orbit, poincare_section, steady_motions, switch_branch, Model, ModelError,
-    OrbitEventKind, OrbitOptions, Param, PeriodicOrbit, RouthError, SectionOptions, Stability,
-    Vector3,
+    classify, continue_orbit, continue_orbit_in, lyapunov_family, orbit_nonlinear_stability,
+    period_doubled_family, periodic_orbit, poincare_section, steady_motions, switch_branch, Model,
+    ModelError, OrbitEventKind, OrbitNonlinearOptions, OrbitOptions, Param, PeriodicOrbit,
+    RouthError, SectionOptions, Stability, Vector3,
 };
 use std::cell::RefCell;
 use std::io::Write;
@@ -56,6 +56,20 @@ pub fn orbit(a: &OrbitArgs) -> Result<String, CliError> {
         ..OrbitOptions::default()
     };
     let o = correct(&model, a.omega, a.gamma, a.period, &opts)?;
+    if a.nonlinear {
+        let nl = OrbitNonlinearOptions {
+            control: opts.control.clone(),
+            ..OrbitNonlinearOptions::default()
+        };
+        let r = orbit_nonlinear_stability(&model, &o, &nl)?;
+        return Ok(if a.output.json {
+            orbit_out::nonlinear_json(&r)?
+        } else if a.output.csv {
+            orbit_out::nonlinear_csv(&r)
+        } else {
+            orbit_out::nonlinear_table(&r)
+        });
+    }
     if a.output.json {
         return Ok(orbit_out::orbit_json(&o)?);
     }
@@ -291,6 +305,7 @@ fn count(n: usize, what: &str) -> String {
 pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let model = load(&a.model)?;
     let mut opts = OrbitOptions::default().with_max_orbits(usize::from(a.max_orbits));
+    opts.nonlinear = a.nonlinear;
     // One bar for the families one after another (each half of a family counts its orbits up
     // to the budget).
     let bar = crate::progress::Bar::start("orbits of the family");

@@ -80,6 +80,15 @@ impl RunControl {
         }
     }
 
+    /// The same cancel flag without the progress callback: for the parts of an analysis that
+    /// report their progress as a whole (the families of an orbit chart).
+    pub(crate) fn cancel_only(&self) -> RunControl {
+        RunControl {
+            cancel: self.cancel.clone(),
+            progress: None,
+        }
+    }
+
     /// Reports `done` of `total`.
     pub(crate) fn report(&self, done: usize, total: usize) {
         if let Some(f) = &self.progress {

@@ -125,6 +125,7 @@ pub fn orbit_chart<M: Routhian, F: Fn(f64) -> (M, f64)>(
             let o = OrbitOptions {
                 nonlinear: true,
                 energy_bounds: Some((s.energy + excess_energy.0, s.energy + excess_energy.1)),
+                control: control.cancel_only(),
                 ..opts.orbit.clone()
             };
             let fam = lyapunov_family(&model, &s, mode, &o)?;
@@ -158,6 +159,9 @@ pub fn orbit_chart<M: Routhian, F: Fn(f64) -> (M, f64)>(
                 chart.failures.push(Some(e.to_string()));
             }
         }
+    }
+    if chart.stop.is_none() {
+        control.report(nx, nx);
     }
     chart.curves = join_curves(&chart, opts.join_tol * (excess_energy.1 - excess_energy.0));
     Ok(chart)

@@ -28,6 +28,7 @@ impl<M: Routhian> Tracer<'_, M> {
         hi: (&Node, f64),
         sigma: f64,
         cut: f64,
+        twist: bool,
     ) -> Result<Option<Node>, RouthError> {
         let ((a, sa), (b, sb)) = (lo, hi);
         let span = sb - sa;
@@ -51,7 +52,7 @@ impl<M: Routhian> Tracer<'_, M> {
             return Ok(None);
         };
         let near = (s.w - pred).norm() <= 1e-2 * chord;
-        let n = self.node(s, Some(&slope))?;
+        let n = self.node_with(s, Some(&slope), twist)?;
         Ok((near || (same_family(a, &n) && same_family(&n, b))).then_some(n))
     }
 
@@ -111,7 +112,8 @@ impl<M: Routhian> Tracer<'_, M> {
         }
         let near = 1e-4 * h;
         let cut = 1e-12;
-        let solve = |sigma: f64, cut: f64| self.resolve_between((a, 0.0), (b, h), sigma, cut);
+        let solve =
+            |sigma: f64, cut: f64| self.resolve_between((a, 0.0), (b, h), sigma, cut, false);
         for (kind, test) in tests {
             let lo = End::new(0.0, test(a), a.clone());
             let hi = End::new(h, test(b), b.clone());
@@ -121,8 +123,14 @@ impl<M: Routhian> Tracer<'_, M> {
                 80,
                 |sigma, lo, hi| {
                     Ok::<_, RouthError>(
-                        self.resolve_between((&lo.point, lo.at), (&hi.point, hi.at), sigma, cut)?
-                            .map(|n| (test(&n), n)),
+                        self.resolve_between(
+                            (&lo.point, lo.at),
+                            (&hi.point, hi.at),
+                            sigma,
+                            cut,
+                            kind == OrbitEventKind::TwistDegenerate,
+                        )?
+                        .map(|n| (test(&n), n)),
                     )
                 },
                 |lo, hi| match kind {
@@ -202,7 +210,7 @@ impl<M: Routhian> Tracer<'_, M> {
         let mut best: Option<Node> = None;
         let mut sigma = sigma;
         for _ in 0..2 {
-            let Some(n) = self.resolve_between((&n1, s1), (&n2, s2), sigma, cut)? else {
+            let Some(n) = self.resolve_between((&n1, s1), (&n2, s2), sigma, cut, false)? else {
                 break;
             };
             let v = test(&n);

@@ -70,11 +70,27 @@ impl<M: Routhian> Tracer<'_, M> {
     /// whose member at the orbit's parameter is invalid (there was none at the same parameter
     /// in the corrector).
     pub(super) fn node(&self, s: Solved, along: Option<&W>) -> Result<Node, RouthError> {
+        self.node_with(s, along, self.opts.nonlinear)
+    }
+
+    /// [`Tracer::node`], its twist computed when `twist` is set (NaN otherwise): a re-solve that
+    /// locates an event other than a twist zero does not need it.
+    pub(super) fn node_with(
+        &self,
+        s: Solved,
+        along: Option<&W>,
+        twist: bool,
+    ) -> Result<Node, RouthError> {
         let tangent = tangent_of(&s, along);
         let (model, _) = self.slot.member(&s.w, &self.scales, self.p_psi)?;
         let orbit = orbit_of(&*model, &s, &self.scales, self.opts);
-        let twist = if self.opts.nonlinear {
-            super::nonlinear::twist_of(&*model, &orbit, &self.nonlinear_options())?
+        let twist = if twist {
+            super::nonlinear::twist_of(
+                &*model,
+                &orbit,
+                &s.shot.monodromy,
+                &self.nonlinear_options(),
+            )?
         } else {
             f64::NAN
         };

@@ -186,18 +186,25 @@ pub(crate) fn section_map<M: crate::Routhian + ?Sized>(
     orbit: &PeriodicOrbit,
     chart: &SectionChart,
     integ: &JetIntegration<'_>,
+    monodromy: Option<&Matrix6<f64>>,
 ) -> Result<SectionMap, RouthError> {
     let x0 = join(&orbit.omega0, &orbit.gamma0);
     let t_end = orbit.period;
-    let shot_opts = OrbitOptions {
-        rtol: integ.rtol,
-        atol: integ.atol,
-        max_steps: integ.max_steps,
-        control: integ.control.clone(),
-        ..OrbitOptions::default()
+    // The monodromy's invariant plane fixes the section: the corrector's own when given (a
+    // family's orbit), else one more integration of the variational equations.
+    let phi: Matrix6<f64> = match monodromy {
+        Some(m) => *m,
+        None => {
+            let shot_opts = OrbitOptions {
+                rtol: integ.rtol,
+                atol: integ.atol,
+                max_steps: integ.max_steps,
+                control: integ.control.clone(),
+                ..OrbitOptions::default()
+            };
+            shoot(model, &x0, t_end, &shot_opts)?.monodromy
+        }
     };
-    let shot = shoot(model, &x0, t_end, &shot_opts)?;
-    let phi: Matrix6<f64> = shot.monodromy;
     let k = (phi.trace() - 4.0) / 2.0;
     let q = phi * phi - phi * (2.0 * k) + Matrix6::identity();
     let svd = q.svd(false, true);

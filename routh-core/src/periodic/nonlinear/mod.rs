@@ -266,7 +266,7 @@ pub fn orbit_nonlinear_stability_in<M: Routhian>(
         max_steps: opts.max_steps,
         control: &opts.control,
     };
-    let sm = map::section_map(model, &tape, orbit, chart, &integ)?;
+    let sm = map::section_map(model, &tape, orbit, chart, &integ, None)?;
     let Some(b) = birkhoff::birkhoff(&sm.map, third) else {
         return Ok(report(
             nan,
@@ -342,6 +342,7 @@ pub fn orbit_nonlinear_stability_in<M: Routhian>(
 pub(crate) fn twist_of<M: Routhian + ?Sized>(
     model: &M,
     orbit: &PeriodicOrbit,
+    monodromy: &nalgebra::Matrix6<f64>,
     opts: &OrbitNonlinearOptions,
 ) -> Result<f64, RouthError> {
     if orbit.degenerate || orbit.stability != OrbitStability::Elliptic {
@@ -355,7 +356,14 @@ pub(crate) fn twist_of<M: Routhian + ?Sized>(
         max_steps: opts.max_steps,
         control: &opts.control,
     };
-    let sm = map::section_map(model, tape, orbit, &SectionChart::default(), &integ)?;
+    let sm = map::section_map(
+        model,
+        tape,
+        orbit,
+        &SectionChart::default(),
+        &integ,
+        Some(monodromy),
+    )?;
     Ok(birkhoff::birkhoff(&sm.map, false).map_or(f64::NAN, |b| b.twist))
 }
 
