@@ -91,7 +91,7 @@ fn orbit_nonlinear_twist_is_the_normal_forms_at_small_amplitude() {
         "--nonlinear",
     ]);
     assert!(
-        t.contains("orbitally stable") && t.contains("rotation_number"),
+        t.contains("orbitally_stable") && t.contains("rotation_number"),
         "{t}"
     );
 }
