@@ -249,6 +249,9 @@ fn invalid(py: Python<'_>, what: &str, reason: &str) -> PyErr {
     err
 }
 
+/// A family `x -> (Model, p_psi)` of the chart.
+type ChartFamily = Box<dyn Fn(f64) -> (routh::Model, f64) + Send + Sync>;
+
 /// The family `x -> (model with name = x, p_psi)` of a run-time model (or `x -> (model, x)` for
 /// "p_psi"/"momentum"), the name checked once (a `ModelError`).
 fn parameter_family(
@@ -256,7 +259,7 @@ fn parameter_family(
     m: &routh::Model,
     name: &str,
     momentum: Option<f64>,
-) -> PyResult<Box<dyn Fn(f64) -> (routh::Model, f64) + Send + Sync>> {
+) -> PyResult<ChartFamily> {
     if name == "p_psi" || name == "momentum" {
         if momentum.is_some() {
             return Err(invalid(
@@ -334,14 +337,7 @@ fn chart_of_model(
     let family = parameter_family(py, m, name, momentum)?;
     let c = cancellable(py, |c| {
         opts.orbit.control = c;
-        routh::orbit_chart(
-            |x| family(x),
-            gamma_guess,
-            mode,
-            x_range,
-            excess_energy,
-            &opts,
-        )
+        routh::orbit_chart(&family, gamma_guess, mode, x_range, excess_energy, &opts)
     })?
     .map_err(|e| routh_err(py, &e))?;
     let name = if name == "momentum" { "p_psi" } else { name };
