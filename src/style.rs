@@ -24,7 +24,8 @@
 /// How one thing is drawn: a verdict's line, an event's marker, a boundary curve, an atlas cell.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Look {
-    /// `"verdict"`, `"event"`, `"boundary"`, `"orbit_verdict"`, `"orbit_event"` or `"reference"`.
+    /// `"verdict"`, `"event"`, `"boundary"`, `"orbit_verdict"`, `"orbit_event"`, `"orbit_curve"`
+    /// (the curves of an orbit chart) or `"reference"`.
     pub group: &'static str,
     /// The key within the group: the names of the Python package (`"secularly_stable"`,
     /// `"branch_point"`, …).
@@ -38,7 +39,7 @@ pub struct Look {
     /// Dash and gap in points; `None`: solid.
     pub dash_pt: Option<(f64, f64)>,
     /// The marker, in matplotlib's letters: `"^"` ▲, `"o"` ●, `"s"` ■, `"O"` ○ (open circle),
-    /// `"x"` ✕, `"D"` ◆; `None` for a line.
+    /// `"x"` ✕, `"D"` ◆, `"@"` ◎ (an open circle with a dot); `None` for a line.
     pub marker: Option<&'static str>,
     /// The light tint of an atlas region of this verdict, `#RRGGBB`.
     pub fill: Option<&'static str>,
@@ -227,6 +228,55 @@ pub const STYLE: &[Look] = &[
     marker("orbit_event", "fold", "fold", "^"),
     marker("orbit_event", "branch_point", "branch point", "o"),
     marker("orbit_event", "period_doubling", "period doubling", "D"),
+    marker("orbit_event", "twist_degenerate", "twist zero", "s"),
+    marker("orbit_event", "third_order_resonance", "resonance 1/3", "O"),
+    marker(
+        "orbit_event",
+        "fourth_order_resonance",
+        "resonance 1/4",
+        "@",
+    ),
+    line("orbit_curve", "fold", "fold", "#000000", 1.5, None),
+    line(
+        "orbit_curve",
+        "branch_point",
+        "k = 1 (branch point)",
+        "#000000",
+        1.5,
+        Some((6.0, 2.5)),
+    ),
+    line(
+        "orbit_curve",
+        "period_doubling",
+        "k = −1 (period doubling)",
+        "#000000",
+        1.5,
+        Some((1.5, 2.0)),
+    ),
+    line(
+        "orbit_curve",
+        "third_order_resonance",
+        "resonance 1/3 (k = −1/2)",
+        "#0072B2",
+        1.0,
+        Some((3.5, 2.0)),
+    ),
+    line(
+        "orbit_curve",
+        "fourth_order_resonance",
+        "resonance 1/4 (k = 0)",
+        "#0072B2",
+        1.0,
+        Some((7.0, 2.0)),
+    ),
+    line(
+        "orbit_curve",
+        "twist_degenerate",
+        "twist zero (τ = 0)",
+        "#CC79A7",
+        1.5,
+        Some((1.0, 1.5)),
+    ),
     line(
         "reference",
         "overlay",

@@ -4,6 +4,7 @@
 
 use crate::convert::helper;
 use crate::nonlinear::NonlinearReport;
+use crate::orbit_nonlinear::{OrbitChart, OrbitChartCurve, OrbitNonlinearReport};
 use crate::orbits::{OrbitEvent, OrbitFamily, PeriodicOrbit, PoincareSection};
 use crate::results::{
     Atlas, Boundary, Branch, Certificate, CircleReport, Diagram, Event, StabilityReport,
@@ -72,6 +73,9 @@ export_methods!(
     OrbitEvent,
     OrbitFamily,
     PoincareSection,
+    OrbitNonlinearReport,
+    OrbitChart,
+    OrbitChartCurve,
 );
 
 /// `routh._routh._write_file(path, text)`: writes `text` (UTF-8) to `path` through routh's one

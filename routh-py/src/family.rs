@@ -15,18 +15,18 @@ use routh::AtlasOptions;
 use std::sync::Mutex;
 
 /// A Python family `f(*args) -> (Model, p_psi)` made callable from Rust threads.
-struct PyFamily {
+pub(crate) struct PyFamily {
     f: Py<PyAny>,
     fallback: routh::Model,
     error: Mutex<Option<PyErr>>,
     progress: Option<Progress>,
     /// Set on Ctrl-C: every later evaluation returns a NaN momentum, which stops the work.
-    cancel: std::sync::atomic::AtomicBool,
+    pub(crate) cancel: std::sync::atomic::AtomicBool,
 }
 
 impl PyFamily {
     /// Call once with the GIL held (errors surface at once, and give the fallback model).
-    fn new(
+    pub(crate) fn new(
         py: Python<'_>,
         f: Py<PyAny>,
         first: (f64, f64),
@@ -58,7 +58,7 @@ impl PyFamily {
 
     /// Evaluates the family at `args` from a Rust thread without the GIL: takes the GIL for
     /// the Python call only.
-    fn call(&self, args: (f64, f64), two: bool) -> (routh::Model, f64) {
+    pub(crate) fn call(&self, args: (f64, f64), two: bool) -> (routh::Model, f64) {
         if self.failed() || self.cancel.load(std::sync::atomic::Ordering::Relaxed) {
             return (self.fallback.clone(), f64::NAN);
         }
@@ -84,7 +84,7 @@ impl PyFamily {
     }
 
     /// The family's exception if it raised one, else `other`.
-    fn finish(self, py: Python<'_>, other: PyErr) -> PyErr {
+    pub(crate) fn finish(self, py: Python<'_>, other: PyErr) -> PyErr {
         self.close(py);
         match self.error.into_inner() {
             Ok(Some(e)) => e,
@@ -92,13 +92,13 @@ impl PyFamily {
         }
     }
 
-    fn close(&self, py: Python<'_>) {
+    pub(crate) fn close(&self, py: Python<'_>) {
         if let Some(p) = &self.progress {
             p.close(py);
         }
     }
 
-    fn take_error(&self) -> Option<PyErr> {
+    pub(crate) fn take_error(&self) -> Option<PyErr> {
         self.error.lock().ok().and_then(|mut e| e.take())
     }
 }

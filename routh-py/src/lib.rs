@@ -4,7 +4,8 @@
 //! (33)), their classification (section 4–5, errata E5/E8), bifurcation diagrams and
 //! stability atlases of families, simulation of the full (8) and reduced (13) equations, and
 //! certified enumeration, and periodic orbits (relative periodic orbits, their Lyapunov families,
-//! Floquet stability and Poincaré sections). Vectors go in and out as numpy arrays; errors become the Python
+//! Floquet stability and Poincaré sections; their orbital stability beyond linear and orbit
+//! charts). Vectors go in and out as numpy arrays; errors become the Python
 //! exceptions `routh.RouthError` and `routh.ModelError`; long work releases the GIL.
 //!
 //! The pure-Python layer (`python/routh/__init__.py`) adds plots and reprs.
@@ -20,6 +21,7 @@ mod guard;
 mod latex;
 mod lenient;
 mod nonlinear;
+mod orbit_nonlinear;
 mod orbits;
 mod pickle;
 mod plot_style;
@@ -66,8 +68,12 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<orbits::OrbitEvent>()?;
     m.add_class::<orbits::OrbitParameterFamily>()?;
     m.add_class::<orbits::PoincareSection>()?;
+    m.add_class::<orbit_nonlinear::OrbitNonlinearReport>()?;
+    m.add_class::<orbit_nonlinear::OrbitChart>()?;
+    m.add_class::<orbit_nonlinear::OrbitChartCurve>()?;
     m.add_function(wrap_pyfunction!(family::bifurcation_diagram, m)?)?;
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
+    m.add_function(wrap_pyfunction!(orbit_nonlinear::orbit_chart, m)?)?;
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;
     m.add_function(wrap_pyfunction!(pickle::_restore, m)?)?;
     m.add_function(wrap_pyfunction!(plot_style::plot_style, m)?)?;

@@ -104,10 +104,12 @@ impl PeriodicOrbit {
 }
 
 /// A fold, branch point or period doubling of a family: `kind` ("fold", "branch_point",
-/// "period_doubling"), `energy`, the `orbit` there, the stabilities `before` and `after`.
+/// "period_doubling"; with `nonlinear=True` also "twist_degenerate", "third_order_resonance",
+/// "fourth_order_resonance"), `energy`, the `orbit` there, the stabilities `before` and `after`.
 #[pyclass(module = "routh", frozen)]
 pub struct OrbitEvent {
-    /// "fold", "branch_point" or "period_doubling".
+    /// "fold", "branch_point", "period_doubling" (with `nonlinear=True` also
+    /// "twist_degenerate", "third_order_resonance", "fourth_order_resonance").
     #[pyo3(get)]
     pub kind: &'static str,
     /// The energy where it happens.
@@ -352,7 +354,7 @@ impl PoincareSection {
 }
 
 /// Rows of `N` numbers as an (n, N) float64 array (also when n = 0).
-fn rows<const N: usize>(py: Python<'_>, rows: &[[f64; N]]) -> PyResult<Py<PyAny>> {
+pub(crate) fn rows<const N: usize>(py: Python<'_>, rows: &[[f64; N]]) -> PyResult<Py<PyAny>> {
     let flat: Vec<f64> = rows.iter().flatten().copied().collect();
     Ok(PyArray1::from_vec(py, flat)
         .reshape([rows.len(), N])
@@ -371,17 +373,42 @@ fn orbit_options(
     rtol: Option<Real>,
     atol: Option<Real>,
     newton_tol: Option<Real>,
+    nonlinear: bool,
 ) -> OrbitOptions {
-    let energy_bounds = energy_bounds.map(|(a, b)| (a.0, b.0));
+    let mut o = OrbitOptions {
+        energy_bounds: energy_bounds.map(|(a, b)| (a.0, b.0)),
+        ..OrbitOptions::default()
+    };
+    apply_orbit_keywords(
+        &mut o,
+        max_orbits,
+        max_step,
+        initial_amplitude,
+        rtol,
+        atol,
+        newton_tol,
+    );
+    o.nonlinear = nonlinear;
+    o
+}
+
+/// The keywords of a family (None: left as they are in `o`).
+pub(crate) fn apply_orbit_keywords(
+    o: &mut OrbitOptions,
+    max_orbits: Option<usize>,
+    max_step: Option<Real>,
+    initial_amplitude: Option<Real>,
+    rtol: Option<Real>,
+    atol: Option<Real>,
+    newton_tol: Option<Real>,
+) {
     let [max_step, initial_amplitude, rtol, atol, newton_tol] =
         [max_step, initial_amplitude, rtol, atol, newton_tol].map(|v| v.map(|r| r.0));
-    let mut o = OrbitOptions::default();
     if let Some(n) = max_orbits {
         o.max_orbits = n;
     }
-    o.energy_bounds = energy_bounds;
     if let Some(h) = max_step {
-        o = o.with_max_step(h);
+        *o = o.clone().with_max_step(h);
     }
     if let Some(a) = initial_amplitude {
         o.initial_amplitude = a;
@@ -395,7 +422,6 @@ fn orbit_options(
     if let Some(v) = newton_tol {
         o.newton_tol = v;
     }
-    o
 }
 
 impl Model {
@@ -407,13 +433,16 @@ impl Model {
         event: &OrbitEvent,
         max_orbits: Option<usize>,
         max_step: Option<Real>,
+        nonlinear: bool,
         start: fn(
             &routh::Model,
             &routh::OrbitEvent,
             &routh::OrbitOptions,
         ) -> Result<routh::OrbitFamily, routh::RouthError>,
     ) -> PyResult<OrbitFamily> {
-        let mut opts = orbit_options(max_orbits, None, max_step, None, None, None, None);
+        let mut opts = orbit_options(
+            max_orbits, None, max_step, None, None, None, None, nonlinear,
+        );
         let m = self.get()?;
         let e = event.inner.clone();
         let f = cancellable(py, |c| {
@@ -446,7 +475,7 @@ impl Model {
     ) -> PyResult<PeriodicOrbit> {
         let w = vector3("omega", omega)?;
         let g = vector3("gamma", gamma)?;
-        let mut opts = orbit_options(None, None, None, None, rtol, atol, newton_tol);
+        let mut opts = orbit_options(None, None, None, None, rtol, atol, newton_tol, false);
         let m = self.get()?;
         let o = cancellable(py, |c| {
             opts.control = c;
@@ -458,12 +487,16 @@ impl Model {
 
     /// The Lyapunov family of mode `mode` (0: the faster frequency, 1: the slower) born at a
     /// linearly stable steady motion, followed through the energy at its p_ψ, with folds,
-    /// branch points and period doublings located.
+    /// branch points and period doublings located (and with `nonlinear=True` where the twist
+    /// of the Poincaré map vanishes and where k = −1/2, 0: the resonances of order three and
+    /// four, as the events "twist_degenerate", "third_order_resonance",
+    /// "fourth_order_resonance"; `Model.orbit_nonlinear_stability`).
     ///
     /// >>> f = m.lyapunov_family(hanging, 0, max_orbits=40)
     /// >>> [(e.kind, round(e.energy, 6)) for e in f.events]
     #[pyo3(signature = (motion, mode=0, *, max_orbits=None, energy_bounds=None, max_step=None,
-                        initial_amplitude=None, rtol=None, atol=None, newton_tol=None))]
+                        initial_amplitude=None, rtol=None, atol=None, newton_tol=None,
+                        nonlinear=false))]
     #[allow(clippy::too_many_arguments)]
     fn lyapunov_family(
         &self,
@@ -477,6 +510,7 @@ impl Model {
         rtol: Option<Real>,
         atol: Option<Real>,
         newton_tol: Option<Real>,
+        nonlinear: bool,
     ) -> PyResult<OrbitFamily> {
         let mut opts = orbit_options(
             max_orbits,
@@ -486,6 +520,7 @@ impl Model {
             rtol,
             atol,
             newton_tol,
+            nonlinear,
         );
         let m = self.get()?;
         let s = motion.inner.clone();
@@ -499,7 +534,7 @@ impl Model {
 
     /// Follow the family through `orbit` over `energy_range` = (lo, hi), through folds.
     #[pyo3(signature = (orbit, energy_range, *, max_orbits=None, max_step=None, rtol=None,
-                        atol=None, newton_tol=None))]
+                        atol=None, newton_tol=None, nonlinear=false))]
     #[allow(clippy::too_many_arguments)]
     fn continue_orbit(
         &self,
@@ -511,8 +546,11 @@ impl Model {
         rtol: Option<Real>,
         atol: Option<Real>,
         newton_tol: Option<Real>,
+        nonlinear: bool,
     ) -> PyResult<OrbitFamily> {
-        let mut opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
+        let mut opts = orbit_options(
+            max_orbits, None, max_step, None, rtol, atol, newton_tol, nonlinear,
+        );
         let m = self.get()?;
         let o = orbit.inner.clone();
         let range = (energy_range.0 .0, energy_range.1 .0);
@@ -537,7 +575,7 @@ impl Model {
     /// >>> f = m.continue_orbit_in(o, "mgl", (1.2, 2.0))
     /// >>> f.parameter[0], f.family.period[0]
     #[pyo3(signature = (orbit, name, s_range, *, max_orbits=None, max_step=None, rtol=None,
-                        atol=None, newton_tol=None))]
+                        atol=None, newton_tol=None, nonlinear=false))]
     #[allow(clippy::too_many_arguments)]
     fn continue_orbit_in(
         &self,
@@ -550,8 +588,11 @@ impl Model {
         rtol: Option<Real>,
         atol: Option<Real>,
         newton_tol: Option<Real>,
+        nonlinear: bool,
     ) -> PyResult<OrbitParameterFamily> {
-        let mut opts = orbit_options(max_orbits, None, max_step, None, rtol, atol, newton_tol);
+        let mut opts = orbit_options(
+            max_orbits, None, max_step, None, rtol, atol, newton_tol, nonlinear,
+        );
         let m = self.get()?;
         let o = orbit.inner.clone();
         let s_range = (s_range.0 .0, s_range.1 .0);
@@ -591,19 +632,21 @@ impl Model {
     }
 
     /// The family of orbits of twice the period born at a "period_doubling" event.
-    #[pyo3(signature = (event, *, max_orbits=None, max_step=None))]
+    #[pyo3(signature = (event, *, max_orbits=None, max_step=None, nonlinear=false))]
     fn period_doubled_family(
         &self,
         py: Python<'_>,
         event: &OrbitEvent,
         max_orbits: Option<usize>,
         max_step: Option<Real>,
+        nonlinear: bool,
     ) -> PyResult<OrbitFamily> {
         self.family_at_event(
             py,
             event,
             max_orbits,
             max_step,
+            nonlinear,
             routh::period_doubled_family,
         )
     }
@@ -618,15 +661,23 @@ impl Model {
     /// >>> f = m.lyapunov_family(hanging, 0, max_orbits=30)
     /// >>> bp = next(e for e in f.events if e.kind == "branch_point")
     /// >>> g = m.switch_branch(bp, max_orbits=20)
-    #[pyo3(signature = (event, *, max_orbits=None, max_step=None))]
+    #[pyo3(signature = (event, *, max_orbits=None, max_step=None, nonlinear=false))]
     fn switch_branch(
         &self,
         py: Python<'_>,
         event: &OrbitEvent,
         max_orbits: Option<usize>,
         max_step: Option<Real>,
+        nonlinear: bool,
     ) -> PyResult<OrbitFamily> {
-        self.family_at_event(py, event, max_orbits, max_step, routh::switch_branch)
+        self.family_at_event(
+            py,
+            event,
+            max_orbits,
+            max_step,
+            nonlinear,
+            routh::switch_branch,
+        )
     }
 
     /// The Poincaré section at (p_psi, energy): `orbits` orbits started on the plane γ·n = 0,

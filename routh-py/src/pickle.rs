@@ -9,7 +9,8 @@
 //!   (one copy per task) derives it once and shares its JIT-compiled tapes, and only the
 //!   parameter values are set.
 //! - The classes that wrap a Rust result (`SteadyMotion`, `PeriodicOrbit`, `OrbitFamily`,
-//!   `OrbitEvent`; `OrbitParameterFamily` with its parameter's name): the JSON of the Rust value (serde, numbers round-trip exactly), made into
+//!   `OrbitEvent`, `OrbitNonlinearReport`, `OrbitChartCurve`; `OrbitParameterFamily` and
+//!   `OrbitChart` with their parameter's name): the JSON of the Rust value (serde, numbers round-trip exactly), made into
 //!   the Python object again by the constructor the analyses use.
 //! - The classes that hold numpy arrays and strings: their fields (numpy pickles the arrays
 //!   bit for bit, NaN included; nested result objects pickle themselves).
@@ -18,6 +19,7 @@ use crate::convert::{model_err, param, RouthError};
 use crate::latex::LatexFormulas;
 use crate::model::Model;
 use crate::nonlinear::NonlinearReport;
+use crate::orbit_nonlinear::{OrbitChart, OrbitChartCurve, OrbitNonlinearReport};
 use crate::orbits::{
     OrbitEvent, OrbitFamily, OrbitParameterFamily, PeriodicOrbit, PoincareSection,
 };
@@ -197,6 +199,19 @@ pub fn _restore(py: Python<'_>, kind: &str, state: &Bound<'_, PyAny>) -> PyResul
             let (name, json): (String, Bound<'_, PyAny>) = state.extract()?;
             let f = from_json!(routh::OrbitParameterFamily, json)?;
             OrbitParameterFamily::new(py, name, &f)?.into_py_any(py)
+        }
+        "OrbitNonlinearReport" => {
+            let r = from_json!(routh::OrbitNonlinearReport, state)?;
+            OrbitNonlinearReport::new(py, &r)?.into_py_any(py)
+        }
+        "OrbitChartCurve" => {
+            let c = from_json!(routh::OrbitChartCurve, state)?;
+            OrbitChartCurve::new(py, &c)?.into_py_any(py)
+        }
+        "OrbitChart" => {
+            let (name, json): (String, Bound<'_, PyAny>) = state.extract()?;
+            let c = from_json!(routh::OrbitChart, json)?;
+            OrbitChart::new(py, name, &c)?.into_py_any(py)
         }
         "OrbitEvent" => {
             let e = from_json!(routh::OrbitEvent, state)?;
@@ -510,6 +525,9 @@ reduce_by! {
     OrbitFamily |o, _py| => json!(&o.inner)?;
     OrbitEvent |o, _py| => json!(&o.inner)?;
     OrbitParameterFamily |o, _py| => (o.name.clone(), json!(&o.inner)?);
+    OrbitNonlinearReport |o, _py| => json!(&o.inner)?;
+    OrbitChartCurve |o, _py| => json!(&o.inner)?;
+    OrbitChart |o, _py| => (o.parameter.clone(), json!(&o.inner)?);
     StabilityReport |o, py| => (
         o.verdict,
         o.degree_of_instability,

@@ -25,8 +25,11 @@ from ._routh import (
     Model,
     ModelError,
     NonlinearReport,
+    OrbitChart,
+    OrbitChartCurve,
     OrbitEvent,
     OrbitFamily,
+    OrbitNonlinearReport,
     OrbitParameterFamily,
     PeriodicOrbit,
     PoincareSection,
@@ -37,6 +40,7 @@ from ._routh import (
     SympyFormulas,
     Trajectory,
     bifurcation_diagram,
+    orbit_chart,
     plot_style,
     stability_atlas,
 )
@@ -59,7 +63,9 @@ VERDICTS = ("secularly_stable", "gyroscopically_stabilized", "unstable", "degene
 EVENT_KINDS = ("fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate", "resonance")
 NONLINEAR_VERDICTS = ("secularly_stable", "lyapunov_stable", "unstable", "undecided")
 ORBIT_STABILITIES = ("elliptic", "parabolic", "hyperbolic", "inverse_hyperbolic")
-ORBIT_EVENT_KINDS = ("fold", "branch_point", "period_doubling")
+ORBIT_EVENT_KINDS = ("fold", "branch_point", "period_doubling", "twist_degenerate",
+                     "third_order_resonance", "fourth_order_resonance")
+ORBIT_NONLINEAR_VERDICTS = ("orbitally_stable", "unstable", "undecided")
 
 __all__ = [
     "plot_style",
@@ -78,9 +84,13 @@ __all__ = [
     "NONLINEAR_VERDICTS",
     "NonlinearReport",
     "ORBIT_EVENT_KINDS",
+    "ORBIT_NONLINEAR_VERDICTS",
     "ORBIT_STABILITIES",
+    "OrbitChart",
+    "OrbitChartCurve",
     "OrbitEvent",
     "OrbitFamily",
+    "OrbitNonlinearReport",
     "OrbitParameterFamily",
     "PeriodicOrbit",
     "PoincareSection",
@@ -93,6 +103,7 @@ __all__ = [
     "Trajectory",
     "bifurcation_diagram",
     "from_json",
+    "orbit_chart",
     "stability_atlas",
     "study",
     "to_csv",

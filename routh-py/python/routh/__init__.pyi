@@ -10,7 +10,12 @@ Verdict = Literal["secularly_stable", "gyroscopically_stabilized", "unstable", "
 EventKind = Literal["fold", "branch_point", "hamiltonian_hopf", "arnold_degenerate", "resonance"]
 NonlinearVerdict = Literal["secularly_stable", "lyapunov_stable", "unstable", "undecided"]
 OrbitStability = Literal["elliptic", "parabolic", "hyperbolic", "inverse_hyperbolic"]
-OrbitEventKind = Literal["fold", "branch_point", "period_doubling"]
+OrbitEventKind = Literal[
+    "fold", "branch_point", "period_doubling", "twist_degenerate", "third_order_resonance",
+    "fourth_order_resonance",
+]
+OrbitNonlinearVerdict = Literal["orbitally_stable", "unstable", "undecided"]
+OrbitResonance = Literal["third", "fourth"]
 ParamValue = Union[float, Sequence[float], Sequence[Sequence[float]], npt.ArrayLike]
 Vec3 = Union[Sequence[float], npt.NDArray[np.float64]]
 
@@ -19,6 +24,7 @@ EVENT_KINDS: tuple[str, ...]
 NONLINEAR_VERDICTS: tuple[str, ...]
 ORBIT_STABILITIES: tuple[str, ...]
 ORBIT_EVENT_KINDS: tuple[str, ...]
+ORBIT_NONLINEAR_VERDICTS: tuple[str, ...]
 MAX_ATLAS_NODES: int
 """The largest atlas grid nx·ny accepted (larger ones raise RouthError before allocating)."""
 __version__: str
@@ -576,6 +582,95 @@ class OrbitParameterFamily:
     event_parameter: npt.NDArray[np.float64]
     def __len__(self) -> int: ...
 
+class OrbitNonlinearReport:
+    """The orbital stability of a periodic orbit beyond the linear test
+    (`Model.orbit_nonlinear_stability`): rotation number ρ, twist τ = dρ/dA (A the enclosed
+    symplectic area), resonance and verdict.
+
+    >>> r = m.orbit_nonlinear_stability(f.orbits[-1])
+    >>> r.verdict, r.rotation_number, r.twist
+    """
+    orbit: PeriodicOrbit
+    rotation_number: float
+    twist: float
+    resonance: OrbitResonance | None
+    verdict: OrbitNonlinearVerdict
+    reason: str
+    area_defect: float
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> OrbitNonlinearReport:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = OrbitNonlinearReport.from_json(r.to_json())
+        """
+
+class OrbitChartCurve:
+    """A curve of an orbit chart: `kind` (an orbit event kind) and `points` (n, 2): (x, h)."""
+    kind: OrbitEventKind
+    points: npt.NDArray[np.float64]
+    def __len__(self) -> int: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> OrbitChartCurve:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = OrbitChartCurve.from_json(r.to_json())
+        """
+
+class OrbitChart:
+    """The chart of a mode's Lyapunov family over a parameter x and the energy h = E − E_s(x)
+    above the steady motion (`routh.orbit_chart`, `Model.orbit_chart`).
+
+    >>> c = m.orbit_chart("b", [0, 0, -1], (1.9, 2.1), (0.0, 2.8), nx=5)
+    >>> ax = c.plot()
+    >>> df, curves = c.to_pandas(), c.curves_frame()
+    """
+    parameter: str
+    x: npt.NDArray[np.float64]
+    steady_energy: npt.NDArray[np.float64]
+    families: list[OrbitFamily | None]
+    failures: list[str | None]
+    curves: list[OrbitChartCurve]
+    stop: str | None
+    samples: npt.NDArray[np.float64]
+    def __len__(self) -> int: ...
+    def plot(self, ax: Any = None, xlabel: str | None = None) -> Any:
+        """The orbits coloured by linear stability, the curves one dash per kind, a legend."""
+    def curves_frame(self) -> Any:
+        """The curves' points as a DataFrame: `kind`, `curve`, `x`, `h`."""
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, columns as in docs/python.md ("Export"); ImportError without pandas.
+
+        >>> df = r.to_pandas()
+        """
+    def to_csv(self, path: str | PathLike[str]) -> None:
+        """Writes `to_pandas()` (no index) to the CSV file `path`, whole or not at all."""
+    def to_json(self) -> str:
+        """Strict JSON text; NaN and ±∞ as "NaN", "Infinity", "-Infinity"."""
+    @classmethod
+    def from_json(cls, text: str) -> OrbitChart:
+        """The object of `to_json()` again, numbers bit for bit.
+
+        >>> same = OrbitChart.from_json(r.to_json())
+        """
+
 class PoincareSection:
     """Crossings of the plane γ·n = 0 at (p_ψ, E) in the coordinates (θ, M_n).
 
@@ -671,6 +766,7 @@ class Model:
         rtol: float | None = None,
         atol: float | None = None,
         newton_tol: float | None = None,
+        nonlinear: bool = False,
     ) -> OrbitFamily: ...
     def continue_orbit(
         self,
@@ -682,6 +778,7 @@ class Model:
         rtol: float | None = None,
         atol: float | None = None,
         newton_tol: float | None = None,
+        nonlinear: bool = False,
     ) -> OrbitFamily: ...
     def continue_orbit_in(
         self,
@@ -694,12 +791,15 @@ class Model:
         rtol: float | None = None,
         atol: float | None = None,
         newton_tol: float | None = None,
+        nonlinear: bool = False,
     ) -> OrbitParameterFamily: ...
     def period_doubled_family(
-        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None
+        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None,
+        nonlinear: bool = False,
     ) -> OrbitFamily: ...
     def switch_branch(
-        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None
+        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None,
+        nonlinear: bool = False,
     ) -> OrbitFamily:
         """The family crossing `event`'s family at that "branch_point", followed both ways from it.
 
@@ -719,6 +819,37 @@ class Model:
     ) -> PoincareSection: ...
     def orbit_crossings(self, orbit: PeriodicOrbit, *, normal: Vec3 | None = None) -> npt.NDArray[np.float64]: ...
     def orbit_path(self, orbit: PeriodicOrbit, n: int = 200) -> Trajectory: ...
+    def orbit_nonlinear_stability(
+        self,
+        orbit: PeriodicOrbit,
+        *,
+        rtol: float | None = None,
+        atol: float | None = None,
+        resonance_tol: float | None = None,
+        twist_tol: float | None = None,
+        criterion_tol: float | None = None,
+        max_steps: int | None = None,
+    ) -> OrbitNonlinearReport:
+        """The rotation number, twist and verdict of an orbit beyond the linear test (§5h)."""
+    def orbit_chart(
+        self,
+        parameter: str,
+        gamma_guess: Vec3,
+        x_range: tuple[float, float],
+        excess_energy: tuple[float, float],
+        *,
+        mode: int = 0,
+        momentum: float | None = None,
+        nx: int | None = None,
+        join_tol: float | None = None,
+        max_orbits: int | None = None,
+        max_step: float | None = None,
+        initial_amplitude: float | None = None,
+        rtol: float | None = None,
+        atol: float | None = None,
+        newton_tol: float | None = None,
+    ) -> OrbitChart:
+        """`routh.orbit_chart(self, gamma_guess, x_range, excess_energy, parameter=parameter, ...)`."""
     def nonlinear_stability(
         self,
         motion: SteadyMotion,
@@ -788,6 +919,30 @@ def bifurcation_diagram(
     nonlinear: bool = False,
     progress: bool = False,
 ) -> Diagram: ...
+def orbit_chart(
+    family: Model | Callable[[float], tuple[Model, float]],
+    gamma_guess: Vec3,
+    x_range: tuple[float, float],
+    excess_energy: tuple[float, float],
+    *,
+    mode: int = 0,
+    parameter: str | None = None,
+    momentum: float | None = None,
+    nx: int | None = None,
+    join_tol: float | None = None,
+    max_orbits: int | None = None,
+    max_step: float | None = None,
+    initial_amplitude: float | None = None,
+    rtol: float | None = None,
+    atol: float | None = None,
+    newton_tol: float | None = None,
+) -> OrbitChart:
+    """The chart of the Lyapunov family of `mode` over a parameter x and h = E − E_s(x): a
+    `Model` through its scalar parameter `parameter` (or "p_psi") at p_ψ = `momentum`, or a
+    callable `x -> (Model, p_psi)`.
+
+    >>> c = routh.orbit_chart(m, [0, 0, -1], (1.9, 2.1), (0.0, 2.8), parameter="b", nx=5)
+    """
 def plot_style() -> dict[str, Any]:
     """The one style of routh's figures (colours, widths, dashes, markers, fonts) as a dict,
     shared with the Rust SVGs (`routh::style`)."""

@@ -7,9 +7,11 @@ what ``Model.steady_motions`` returns).
 
 JSON. ``to_json()`` is a JSON object ``{"routh": "<class>", "format": 1, <fields>}``:
 
-- ``SteadyMotion``, ``PeriodicOrbit``, ``OrbitEvent``, ``OrbitFamily`` hold a Rust value; their
-  fields are its serde form (what ``serde_json`` writes for ``routh::SteadyMotion`` etc., so
-  Rust reads the text back with ``serde_json::from_str``: the two extra keys are ignored). The
+- ``SteadyMotion``, ``PeriodicOrbit``, ``OrbitEvent``, ``OrbitFamily``, ``OrbitNonlinearReport``,
+  ``OrbitChartCurve`` and ``OrbitChart`` hold a Rust value; their fields are its serde form
+  (what ``serde_json`` writes for ``routh::SteadyMotion`` etc., so Rust reads the text back with
+  ``serde_json::from_str``: the two extra keys are ignored; ``OrbitChart`` has a third,
+  ``parameter``, the name of its parameter, also ignored by Rust). The
   same schema is what ``routh orbit --json`` prints (one ``PeriodicOrbit`` document) and
   ``routh orbits --json`` (an array of ``OrbitFamily`` documents with the keys ``origin``,
   ``motion``, ``mode``, ``parent``, ``event`` besides, ignored here); and with the class named
@@ -54,7 +56,12 @@ __all__ = ["from_json", "to_csv", "to_json", "to_pandas"]
 FORMAT = 1
 
 # The classes whose JSON is the serde form of the Rust value they wrap (their pickle state).
-_SERDE = ("SteadyMotion", "PeriodicOrbit", "OrbitEvent", "OrbitFamily")
+_SERDE = ("SteadyMotion", "PeriodicOrbit", "OrbitEvent", "OrbitFamily", "OrbitNonlinearReport",
+          "OrbitChartCurve", "OrbitChart")
+
+# The classes of _SERDE whose pickle state is (name, serde JSON): the name is the JSON key given
+# here, beside the Rust value's own keys (which do not include it).
+_NAMED = {"OrbitChart": "parameter"}
 
 # The JSON fields of every other class, in the order of its pickle state, each with its kind:
 # "f" float, "i" int, "b" bool, "s" str (or None), "a<k>" float64 array of k columns ("a" for
@@ -218,8 +225,12 @@ def _document(obj):
     name = _class_name(obj)
     doc = {"routh": name, "format": FORMAT}
     if name in _SERDE:
-        # The pickle state of these classes is the serde JSON of the Rust value.
+        # The pickle state of these classes is the serde JSON of the Rust value (with a name
+        # before it for those of _NAMED).
         _, (_, state) = obj.__reduce__()
+        if name in _NAMED:
+            label, state = state
+            doc[_NAMED[name]] = label
         doc.update(json.loads(state))
         return doc
     for field, kind in _FIELDS[name]:
@@ -316,7 +327,15 @@ def _restore(name, state, where):
 
 def _serde(name, body, where):
     """The result of class `name` (one of _SERDE) from the serde form of its Rust value (a
-    non-finite float as "NaN", "Infinity", "-Infinity" or null)."""
+    non-finite float as "NaN", "Infinity", "-Infinity" or null); for a class of _NAMED, its
+    name taken from the body's key (default "x": the bare serde form has none)."""
+    if name in _NAMED:
+        body = dict(body)
+        label = body.pop(_NAMED[name], "x")
+        if not isinstance(label, str):
+            raise _routh.RouthError(
+                f"from_json: {where}: {_NAMED[name]!r} must be a string, got {label!r}")
+        return _restore(name, (label, json.dumps(body)), where)
     return _restore(name, json.dumps(body), where)
 
 

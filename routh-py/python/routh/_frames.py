@@ -227,6 +227,32 @@ def _frame(obj):
         if name == "OrbitFamily":
             df.attrs.update(stop=obj.stop)
         return df
+    if name == "OrbitNonlinearReport":
+        row = {
+            "verdict": obj.verdict,
+            "reason": obj.reason,
+            "rotation_number": obj.rotation_number,
+            "twist": obj.twist,
+            "resonance": obj.resonance,
+            "area_defect": obj.area_defect,
+        }
+        row.update(_orbit_row(obj.orbit))
+        return pd.DataFrame([row])
+    if name == "OrbitChart":
+        rows = []
+        for i, (x, es, fam) in enumerate(zip(obj.x, obj.steady_energy, obj.families)):
+            for o in (fam.orbits if fam is not None else []):
+                row = {"i": i, "x": float(x), "h": o.energy - float(es)}
+                row.update(_orbit_row(o))
+                rows.append(row)
+        df = pd.DataFrame(rows, columns=_CHART_COLUMNS)
+        df["i"] = df["i"].astype("int64")
+        df.attrs.update(parameter=obj.parameter, stop=obj.stop, failures=list(obj.failures),
+                        x=np.asarray(obj.x).tolist(),
+                        steady_energy=np.asarray(obj.steady_energy).tolist())
+        return df
+    if name == "OrbitChartCurve":
+        return _curve_frame(pd, [obj])
     if name == "PoincareSection":
         rows = []
         for k, pts in enumerate(obj.points):
@@ -238,6 +264,30 @@ def _frame(obj):
         df.attrs.update(p_psi=obj.p_psi, energy=obj.energy, normal=np.asarray(obj.normal).tolist())
         return df
     raise TypeError(f"to_pandas: not a routh result: {name}")  # pragma: no cover
+
+
+_CHART_COLUMNS = ["i", "x", "h", "period", "energy", "p_psi", "precession", "body_turn",
+                  "degenerate", "stability_index", "stability", "amplitude", "omega1", "omega2",
+                  "omega3", "gamma1", "gamma2", "gamma3", "multiplier1_re", "multiplier1_im",
+                  "multiplier2_re", "multiplier2_im"]
+
+
+def _curve_frame(pd, curves):
+    rows = []
+    for k, c in enumerate(curves):
+        for x, h in np.asarray(c.points):
+            rows.append({"kind": c.kind, "curve": k, "x": float(x), "h": float(h)})
+    df = pd.DataFrame(rows, columns=["kind", "curve", "x", "h"])
+    df["curve"] = df["curve"].astype("int64")
+    return df
+
+
+def curves_frame(chart):
+    """The points of an orbit chart's curves, one row each: ``kind``, ``curve`` (the index in
+    ``chart.curves``), ``x``, ``h`` (``OrbitChart.curves_frame()``)."""
+    df = _curve_frame(_pandas(), chart.curves)
+    df.attrs.update(parameter=chart.parameter)
+    return df
 
 
 def to_pandas(obj):

@@ -74,6 +74,8 @@ def _marker(kind_mark):
         return dict(marker="o", markerfacecolor="white", markeredgecolor="k", markeredgewidth=1.2)
     if kind_mark == "x":
         return dict(marker="x", color="k", markeredgewidth=1.5)
+    if kind_mark == "@":  # ◎: an open circle with a dot
+        return dict(marker=r"$\odot$", color="k", markeredgewidth=0.4)
     return dict(marker=kind_mark, color="k", markeredgecolor="white", markeredgewidth=0.6)
 
 
@@ -471,8 +473,10 @@ ORBIT_STABILITIES = ("elliptic", "parabolic", "hyperbolic", "inverse_hyperbolic"
 #: Colour and line style of each orbit stability (the table's "orbit_verdict" group).
 ORBIT_STYLE = _looks("orbit_verdict", ORBIT_STABILITIES)
 ORBIT_WIDTH = {n: THE_STYLE["orbit_verdict"][n]["width"] for n in ORBIT_STABILITIES}
-ORBIT_EVENT_KINDS = ("fold", "branch_point", "period_doubling")
-#: Event marks as the SVG: folds ▲, branch points ●, period doublings ◆.
+ORBIT_EVENT_KINDS = ("fold", "branch_point", "period_doubling", "twist_degenerate",
+                     "third_order_resonance", "fourth_order_resonance")
+#: Event marks as the SVG: folds ▲, branch points ●, period doublings ◆, a vanishing twist ■,
+#: resonances of order three ○ and four ◎.
 ORBIT_EVENT_MARK = {k: THE_STYLE["orbit_event"][k]["marker"] for k in ORBIT_EVENT_KINDS}
 ORBIT_EVENT_NAME = {k: THE_STYLE["orbit_event"][k]["label"] for k in ORBIT_EVENT_KINDS}
 
@@ -577,4 +581,59 @@ def plot_section(section, ax=None, fixed_points=None):
     ax.set_title(f"p_ψ = {_value(section.p_psi)}, E = {_value(section.energy)}",
                  fontsize=FONT["title"])
     _fonts(ax)
+    return ax
+
+
+#: The curves of an orbit chart, in the order of the legend: their looks (the table's
+#: "orbit_curve" group: black lines for the changes of linear stability, blue for the
+#: resonances, purple for the twist, each kind its own dash).
+ORBIT_CURVE_KINDS = ("fold", "branch_point", "period_doubling", "third_order_resonance",
+                     "fourth_order_resonance", "twist_degenerate")
+
+
+def plot_orbit_chart(chart, ax=None, xlabel=None):
+    """Draw an orbit chart (``OrbitChart.plot``): every orbit of the families as a small mark at
+    (x, h) in the colour of its linear stability (the regions: elliptic green, hyperbolic
+    vermillion, …), the curves on top as lines in the look of their kind (a white halo under
+    each), and a legend of what is drawn. x is labelled with the parameter's name (or
+    `xlabel`), y with h = E − E_s. Returns the axes."""
+    ax = _axes(ax)
+    handles = []
+    samples = np.asarray(chart.samples, dtype=float).reshape(-1, 3)
+    stabilities = [o.stability for f in chart.families if f is not None for o in f.orbits]
+    size = 9.0 if len(samples) < 400 else 4.0
+    for name in ORBIT_STABILITIES:
+        sel = np.array([s == name for s in stabilities], dtype=bool)
+        if not sel.any():
+            continue
+        look = THE_STYLE["orbit_verdict"][name]
+        h = ax.scatter(samples[sel, 0], samples[sel, 1], s=size, marker="s", color=look["color"],
+                       alpha=0.35, linewidths=0, zorder=1, label=look["label"])
+        handles.append(h)
+    for kind in ORBIT_CURVE_KINDS:
+        curves = [c for c in chart.curves if c.kind == kind and len(c)]
+        if not curves:
+            continue
+        look = THE_STYLE["orbit_curve"][kind]
+        for k, c in enumerate(curves):
+            pts = np.asarray(c.points, dtype=float)
+            ax.plot(pts[:, 0], pts[:, 1], color="white", lw=3.5 * look["width"], zorder=3,
+                    solid_capstyle="butt")
+            kw = {}
+            if len(pts) == 1:  # a curve met at one x only: its point marked
+                kw = _marker(THE_STYLE["orbit_event"][kind]["marker"])
+                kw.pop("color", None)
+                kw.update(markersize=5)
+            line, = ax.plot(pts[:, 0], pts[:, 1], color=look["color"], lw=look["width"],
+                            linestyle=_linestyle(look), zorder=4, **kw)
+            if k == 0:
+                line.set_label(look["label"])
+                handles.append(line)
+    x = np.asarray(chart.x, dtype=float)
+    if len(x):
+        ax.set_xlim(x.min(), x.max())
+    ax.set_xlabel(xlabel or chart.parameter)
+    ax.set_ylabel("h = E − E_s")
+    _fonts(ax)
+    _put_legend(ax, handles)
     return ax
