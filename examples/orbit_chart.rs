@@ -48,7 +48,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ..OrbitChartOptions::default()
     };
     let chart = orbit_chart(body, -Vector3::z(), 0, (0.2, 1.4), (0.0, 1.9), &opts)?;
-    println!("{} curves over α ∈ [0.2, 1.4], h ∈ [0, 1.9]:", chart.curves.len());
+    println!(
+        "{} curves over α ∈ [0.2, 1.4], h ∈ [0, 1.9]:",
+        chart.curves.len()
+    );
     let mut csv = String::from("curve,kind,alpha,h\n");
     for (i, c) in chart.curves.iter().enumerate() {
         let (first, last) = (c.points[0], c.points[c.points.len() - 1]);
@@ -65,7 +68,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             csv.push_str(&format!("{i},{},{x},{h}\n", c.kind.as_str()));
         }
     }
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/orbit_chart_body141.csv");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/orbit_chart_body141.csv");
     routh::files::write_file(&path, csv.as_bytes())?;
     println!("wrote {}", path.display());
     Ok(())

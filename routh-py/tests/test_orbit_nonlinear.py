@@ -357,7 +357,7 @@ def test_chart_plot_draws_the_curves_and_the_regions(chart):
     # The regions: every orbit drawn, in its stability's colour.
     pts = np.vstack([col.get_offsets() for col in ax.collections])
     assert len(pts) == len(chart.samples)
-    assert ax.get_xlabel() == "b" and ax.get_ylabel() == "h = E − E_s"
+    assert ax.get_xlabel() == "b" and ax.get_ylabel() == r"$h = E - E_\mathrm{s}$"
     # The dash patterns differ between the kinds drawn.
     looks = {k: _linestyle(THE_STYLE["orbit_curve"][k]) for k in THE_STYLE["orbit_curve"]}
     assert len({str(v) for v in looks.values()}) == len(looks)

@@ -633,7 +633,7 @@ def plot_orbit_chart(chart, ax=None, xlabel=None):
     if len(x):
         ax.set_xlim(x.min(), x.max())
     ax.set_xlabel(xlabel or chart.parameter)
-    ax.set_ylabel("h = E − E_s")
+    ax.set_ylabel(r"$h = E - E_\mathrm{s}$")
     _fonts(ax)
     _put_legend(ax, handles)
     return ax

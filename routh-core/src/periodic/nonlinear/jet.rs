@@ -58,7 +58,7 @@ const fn products() -> [(u8, u8, u8); 35] {
 
 /// What a coefficient needs: a commutative ring with the reals in it.
 pub(crate) trait Coef:
-    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
+    Copy + PartialEq + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
 {
     fn real(x: f64) -> Self;
 }
@@ -200,6 +200,15 @@ impl<T: Coef> Neg for Series<T> {
 impl<T: Coef> Mul for Series<T> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
+        // A constant factor (a parameter, a number of the tape, a constant inertia) is a
+        // scaling: 10 products instead of 35.
+        let zero = T::real(0.0);
+        if o.c[1..].iter().all(|&x| x == zero) {
+            return self.scale(o.c[0]);
+        }
+        if self.c[1..].iter().all(|&x| x == zero) {
+            return o.scale(self.c[0]);
+        }
         let mut c = [T::real(0.0); N];
         for &(p, q, r) in PRODUCTS.iter() {
             c[r as usize] = c[r as usize] + self.c[p as usize] * o.c[q as usize];
@@ -219,14 +228,16 @@ impl TapeScalar for MapJet {
         if n < 0 {
             return TapeScalar::powi(self, -n).recip();
         }
-        // Repeated products keep xⁿ exact where the value is 0.
-        let mut out = Series::constant(1.0);
-        for _ in 0..n.min(64) {
-            out = out * self;
+        if n == 0 {
+            return Series::constant(1.0);
         }
         if n > 64 {
-            // Beyond that the value is not 0 (or the series is 0 past its constant).
             return self.powf_const(f64::from(n));
+        }
+        // Repeated products keep xⁿ exact where the value is 0.
+        let mut out = self;
+        for _ in 1..n {
+            out = out * self;
         }
         out
     }
