@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 
 use super::{lyapunov_family, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop};
-use crate::{steady_motion_near, RouthError, Routhian};
+use crate::{steady_motion_near, RouthError, Routhian, SteadyMotion};
 
 /// Settings of [`orbit_chart`].
 #[derive(Debug, Clone, PartialEq)]
@@ -88,10 +88,12 @@ impl OrbitChart {
 /// one kind at neighbouring `x` are joined into [`OrbitChartCurve`]s (the curves are exact in
 /// `h` at every `x` of the grid, and joined by straight segments between them).
 ///
-/// A failure at one `x` (no steady motion, an unstable one, a family that does not start) is
-/// recorded in [`OrbitChart::failures`], not an error. Errors: invalid options or ranges; the
+/// The steady motions are found one `x` after the other, the families traced in parallel
+/// (rayon; the models must be `Send`). A failure at one `x` (no steady motion, an unstable one,
+/// a family that does not start) is recorded in [`OrbitChart::failures`], not an error. Cancelled
+/// through `opts.orbit.control`, the chart keeps the families it has, `stop` `Interrupted`. Errors: invalid options or ranges; the
 /// model's own errors are per `x`.
-pub fn orbit_chart<M: Routhian, F: Fn(f64) -> (M, f64)>(
+pub fn orbit_chart<M: Routhian + Send, F: Fn(f64) -> (M, f64)>(
     family: F,
     gamma_guess: Vector3<f64>,
     mode: usize,
@@ -99,10 +101,44 @@ pub fn orbit_chart<M: Routhian, F: Fn(f64) -> (M, f64)>(
     excess_energy: (f64, f64),
     opts: &OrbitChartOptions,
 ) -> Result<OrbitChart, RouthError> {
+    use rayon::prelude::*;
     check(x_range, excess_energy, mode, opts)?;
     let nx = opts.nx;
     let xs: Vec<f64> = (0..nx)
         .map(|i| x_range.0 + (x_range.1 - x_range.0) * i as f64 / (nx - 1) as f64)
+        .collect();
+    let control = &opts.orbit.control;
+    // The steady motions, one x after the other (each from the last one's γ): cheap.
+    let mut guess = gamma_guess;
+    let mut starts: Vec<Result<(M, SteadyMotion), RouthError>> = Vec::with_capacity(nx);
+    for &x in &xs {
+        if control.is_cancelled() {
+            break;
+        }
+        let (model, p_psi) = family(x);
+        let s = steady_motion_near(&model, guess, p_psi);
+        if let Ok(s) = &s {
+            guess = s.gamma;
+        }
+        starts.push(s.map(|s| (model, s)));
+    }
+    // The families, in parallel (rayon): the bulk of the work.
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let traced: Vec<Result<(f64, OrbitFamily), RouthError>> = starts
+        .into_par_iter()
+        .map(|start| {
+            let (model, s) = start?;
+            let o = OrbitOptions {
+                nonlinear: true,
+                energy_bounds: Some((s.energy + excess_energy.0, s.energy + excess_energy.1)),
+                control: control.cancel_only(),
+                ..opts.orbit.clone()
+            };
+            let fam = lyapunov_family(&model, &s, mode, &o);
+            let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            control.report(n, nx);
+            Ok((s.energy, fam?))
+        })
         .collect();
     let mut chart = OrbitChart {
         x: Vec::with_capacity(nx),
@@ -112,56 +148,29 @@ pub fn orbit_chart<M: Routhian, F: Fn(f64) -> (M, f64)>(
         curves: Vec::new(),
         stop: None,
     };
-    let mut guess = gamma_guess;
-    let control = &opts.orbit.control;
-    for (i, &x) in xs.iter().enumerate() {
-        if control.is_cancelled() {
-            chart.stop = Some(OrbitStop::Interrupted);
-            break;
-        }
-        control.report(i, nx);
-        let (model, p_psi) = family(x);
-        let one = steady_motion_near(&model, guess, p_psi).and_then(|s| {
-            let o = OrbitOptions {
-                nonlinear: true,
-                energy_bounds: Some((s.energy + excess_energy.0, s.energy + excess_energy.1)),
-                control: control.cancel_only(),
-                ..opts.orbit.clone()
-            };
-            let fam = lyapunov_family(&model, &s, mode, &o)?;
-            Ok((s, fam))
-        });
-        chart.x.push(x);
-        match one {
-            Ok((s, fam)) => {
-                guess = s.gamma;
-                let interrupted = fam.stop == Some(OrbitStop::Interrupted);
-                chart.steady_energy.push(s.energy);
+    for (x, t) in xs.iter().zip(traced) {
+        chart.x.push(*x);
+        match t {
+            Ok((es, fam)) => {
+                if fam.stop == Some(OrbitStop::Interrupted) {
+                    chart.stop = Some(OrbitStop::Interrupted);
+                }
+                chart.steady_energy.push(es);
                 chart.families.push(Some(fam));
                 chart.failures.push(None);
-                if interrupted {
-                    chart.stop = Some(OrbitStop::Interrupted);
-                    break;
-                }
-            }
-            Err(RouthError::Interrupted) => {
-                chart.steady_energy.push(f64::NAN);
-                chart.families.push(None);
-                chart
-                    .failures
-                    .push(Some(RouthError::Interrupted.to_string()));
-                chart.stop = Some(OrbitStop::Interrupted);
-                break;
             }
             Err(e) => {
+                if matches!(e, RouthError::Interrupted) {
+                    chart.stop = Some(OrbitStop::Interrupted);
+                }
                 chart.steady_energy.push(f64::NAN);
                 chart.families.push(None);
                 chart.failures.push(Some(e.to_string()));
             }
         }
     }
-    if chart.stop.is_none() {
-        control.report(nx, nx);
+    if control.is_cancelled() {
+        chart.stop = Some(OrbitStop::Interrupted);
     }
     chart.curves = join_curves(&chart, opts.join_tol * (excess_energy.1 - excess_energy.0));
     Ok(chart)
