@@ -524,3 +524,20 @@ struct Body3 {
     inertia: Vector3<f64>,
     com: Vector3<f64>,
 }
+
+/// An axially symmetric body (A₁ = A₂, centre of mass on e₃): its swings are degenerate (the
+/// reduced system is integrable, every multiplier 1), and the verdict says so instead of a twist.
+#[test]
+fn symmetric_bodies_swings_are_undecided_as_degenerate() {
+    let m = Body {
+        inertia: Vector3::new(1.0, 1.0, 1.6),
+        l: 1.0,
+    };
+    let fam = lyapunov_family(&m, &hanging(&m), 0, &OrbitOptions::default().with_max_orbits(4))
+        .unwrap();
+    let o = fam.orbits.last().unwrap();
+    assert!(o.degenerate, "{o}");
+    let r = orbit_nonlinear_stability(&m, o, &OrbitNonlinearOptions::default()).unwrap();
+    assert_eq!(r.verdict, OrbitNonlinearVerdict::Undecided);
+    assert!(r.reason.contains("degenerate") && r.twist.is_nan(), "{r}");
+}
