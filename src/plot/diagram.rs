@@ -248,31 +248,32 @@ pub(super) fn branch_figure(
         let mut curves = Vec::new();
         // Stable runs last, so that they stay on top where branches cross.
         for &v in VERDICTS.iter().rev() {
-            // The pixels covered by the runs of this verdict drawn so far: a run lying on one of
-            // them (the mirror image of a branch, which the map sends onto the same curve) is
-            // drawn once, so that two dash patterns do not fill each other's gaps into a line.
+            // The pixels covered by the runs of this verdict drawn so far: where a run lies on
+            // one of them (the mirror image of a branch, which the map sends onto the same
+            // curve) it is drawn once, so that two dash patterns do not fill each other's gaps
+            // into a solid line.
             let mut covered: HashSet<Px> = HashSet::new();
             for run in runs.iter().filter(|r| r.verdict == v) {
                 let pts: Vec<PxF> = run.points.iter().map(&fpx).collect();
-                let trace = pixels_along(&pts);
-                let near = |p: &Px| {
-                    (-1..=1).any(|dx| (-1..=1).any(|dy| covered.contains(&(p.0 + dx, p.1 + dy))))
-                };
-                if trace.len() > 1 && trace.iter().all(near) {
-                    continue;
-                }
-                covered.extend(trace);
                 let color = verdict_color(v, mono);
                 if px(&run.points).len() == 1 {
                     root.draw(&Circle::new(px(&run.points)[0], 3, color.filled()))
                         .map_err(drawing_error)?;
                     continue;
                 }
-                stroke_curve(root, &pts, color, verdict_stroke(v))?;
-                curves.extend(along(&pts));
-                if !run.isolated {
-                    draw_rings(root, &px(&run.points), color)?;
+                let parts = uncovered_parts(&pts, &covered);
+                covered.extend(pixels_along(&pts));
+                for part in &parts {
+                    stroke_curve(root, part, color, verdict_stroke(v))?;
+                    if !run.isolated {
+                        let whole: Vec<Px> = part
+                            .iter()
+                            .map(|p| (p.0.round() as i32, p.1.round() as i32))
+                            .collect();
+                        draw_rings(root, &whole, color)?;
+                    }
                 }
+                curves.extend(along(&pts));
             }
         }
         overlays.draw(root, px)?;
@@ -346,4 +347,31 @@ fn pixels_along(pts: &[PxF]) -> Vec<Px> {
         push(q);
     }
     out
+}
+
+/// The parts of the polyline `pts` not lying on the pixels `covered` (within a pixel): its
+/// segments that leave them, joined where they follow one another.
+fn uncovered_parts(pts: &[PxF], covered: &HashSet<Px>) -> Vec<Vec<PxF>> {
+    let near =
+        |p: &Px| (-1..=1).any(|dx| (-1..=1).any(|dy| covered.contains(&(p.0 + dx, p.1 + dy))));
+    let mut parts: Vec<Vec<PxF>> = Vec::new();
+    let mut cur: Vec<PxF> = Vec::new();
+    for w in pts.windows(2) {
+        let on = !covered.is_empty() && pixels_along(w).iter().all(near);
+        if on {
+            if cur.len() >= 2 {
+                parts.push(std::mem::take(&mut cur));
+            }
+            cur.clear();
+        } else {
+            if cur.is_empty() {
+                cur.push(w[0]);
+            }
+            cur.push(w[1]);
+        }
+    }
+    if cur.len() >= 2 {
+        parts.push(cur);
+    }
+    parts
 }

@@ -12,7 +12,7 @@ use super::curve::PxF;
 use super::labels::Rect;
 use super::legend::{draw_legend, Entry, Layout, Swatch};
 use super::marks::{fractional_polylines, reset_fine, stroke_path, Px, Root};
-use super::style::{asked_size, overlay_stroke, Sizes, Stroke, PX_PER_PT};
+use super::style::{asked_size, overlay_stroke, Sizes, Stroke};
 use super::{drawing_error, PlotError, PlotOptions};
 
 /// The axes, in data coordinates.
@@ -102,8 +102,9 @@ pub(super) fn write_svg(
         root.present().map_err(drawing_error)?;
     }
     let mut svg = fractional_polylines(&svg);
-    if opts.width_in.is_some() {
-        let per_in = 72.0 * PX_PER_PT;
+    if let Some(width_in) = opts.width_in {
+        // The width as asked, the height in the proportion of the pixels (about 144 an inch).
+        let per_in = f64::from(size.0) / width_in;
         let inches = |px: u32| {
             let s = format!("{:.3}", f64::from(px) / per_in);
             s.trim_end_matches('0').trim_end_matches('.').to_string()

@@ -11,7 +11,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::curve::PxF;
 use super::frame::{draw_figure, extent, float_px, padded, plot_rect, write_svg, Frame, Overlays};
 use super::labels::{value, Rect};
-use super::legend::{draw_legend, legend_width, Entry, Swatch};
+use super::legend::{draw_legend, Entry, Layout, Swatch};
 use super::marks::{
     along, draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_curve, stroke_path, Px,
 };
@@ -522,8 +522,19 @@ pub(super) fn sphere_figure(
         ),
     ));
     let sizes = Sizes::of(opts);
-    let (width, height) = opts.pixels();
-    let legend_w = legend_width(&legend, &sizes).min(width / 2);
+    let (width, base) = opts.pixels();
+    // The legend to the right of the sphere, or below it when the figure is narrow (a figure
+    // of `width_in` then grows by the legend's height).
+    let layout = Layout::of(&legend, &sizes, width);
+    let (legend_w, below) = match layout {
+        Layout::Right(w) => (w, 0),
+        Layout::Below { height, .. } => (0, height),
+    };
+    let height = if opts.width_in.is_some() {
+        base + below
+    } else {
+        base
+    };
     write_svg(path, opts, (width, height), |root| {
         let left_w = (width - legend_w) as i32;
         let mut top = 15;
@@ -538,7 +549,7 @@ pub(super) fn sphere_figure(
                 .map_err(drawing_error)?;
             top += size as i32 + 10;
         }
-        let h = height as i32;
+        let h = (height - below) as i32;
         let radius = ((left_w - 60).min(h - top - 30) / 2).max(20);
         let centre = (left_w / 2, top + (h - top) / 2);
         // In fractional pixels: the curves are smoothed before they are rounded.
@@ -594,7 +605,12 @@ pub(super) fn sphere_figure(
             let pts: Vec<Vector3<f64>> = t.gamma.iter().map(|g| g.normalize()).collect();
             draw_on_sphere(root, &pts, &w, &to_fpx, ramp(k, n, mono), 2)?;
         }
-        draw_legend(root, (left_w + 10, top), &legend, mono, &sizes, 1)
+        match layout {
+            Layout::Right(_) => draw_legend(root, (left_w + 10, top), &legend, mono, &sizes, 1),
+            Layout::Below { columns, .. } => {
+                draw_legend(root, (15, h + 2), &legend, mono, &sizes, columns)
+            }
+        }
     })
 }
 
