@@ -84,7 +84,7 @@ pub struct Figure {
     pub width: Option<f64>,
     /// The size of the tick labels in points (5 to 24; default 8); the axis names, legend and
     /// event names keep their proportions to it.
-    #[arg(long, value_name = "PT", value_parser = args::font_size)]
+    #[arg(long, value_name = "PT", value_parser = args::font_size, allow_hyphen_values = true)]
     pub font_size: Option<f64>,
     /// A title above the axes (default: none; a journal's caption goes below the figure).
     #[arg(long, value_name = "TEXT")]

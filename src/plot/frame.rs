@@ -69,16 +69,16 @@ pub(super) fn draw_figure(
                     legend,
                     opts.monochrome,
                     &sizes,
-                    1,
+                    None,
                 )
             }
-            Layout::Below { columns, height: h } => draw_legend(
+            Layout::Below { wrap, height: h } => draw_legend(
                 root,
                 (15, (height - h) as i32 + 2),
                 legend,
                 opts.monochrome,
                 &sizes,
-                columns,
+                Some(wrap),
             ),
         }
     })

@@ -60,13 +60,14 @@ pub(super) fn legend_width(entries: &[Entry], sizes: &Sizes) -> u32 {
 }
 
 /// Where the legend goes: in a panel to the right of the axes when it takes at most 40 % of
-/// the figure's width, else in rows below the axes, in as many columns as fit across.
+/// the figure's width, else below the axes, its entries side by side in rows as wide as the
+/// figure (as words in lines of text).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Layout {
     /// A panel this many pixels wide to the right.
     Right(u32),
-    /// Below the axes: this many columns, this many pixels high.
-    Below { columns: usize, height: u32 },
+    /// Below the axes: rows at most `wrap` pixels wide, `height` pixels in all.
+    Below { wrap: u32, height: u32 },
 }
 
 impl Layout {
@@ -75,25 +76,40 @@ impl Layout {
         if entries.is_empty() || f64::from(right) <= 0.4 * f64::from(width) {
             return Layout::Right(right.min(width / 2));
         }
-        let columns = (1..=entries.len())
-            .rev()
-            .find(|&n| column_widths(entries, sizes, n).iter().sum::<u32>() + 20 <= width)
-            .unwrap_or(1);
-        let rows = entries.len().div_ceil(columns) as i32;
+        let wrap = width.saturating_sub(30);
+        let rows = positions(entries, sizes, Some(wrap))
+            .last()
+            .map_or(0, |p| p.1 + 1) as i32;
         Layout::Below {
-            columns,
+            wrap,
             height: (rows * row_height(sizes) + 12) as u32,
         }
     }
 }
 
-/// The widths of the columns of a legend of `n` columns (entries row by row).
-fn column_widths(entries: &[Entry], sizes: &Sizes, n: usize) -> Vec<u32> {
-    let mut w = vec![0; n];
-    for (k, e) in entries.iter().enumerate() {
-        w[k % n] = w[k % n].max(entry_width(e, sizes));
+/// Where each entry goes: its offset across and its row. Without `wrap`, one entry a row;
+/// with it, entries side by side, a new row where the next would pass `wrap` pixels.
+fn positions(entries: &[Entry], sizes: &Sizes, wrap: Option<u32>) -> Vec<(i32, usize)> {
+    let mut out = Vec::with_capacity(entries.len());
+    let (mut x, mut row) = (0u32, 0usize);
+    for e in entries {
+        let w = entry_width(e, sizes);
+        match wrap {
+            None => {
+                out.push((0, row));
+                row += 1;
+            }
+            Some(max) => {
+                if x > 0 && x + w > max {
+                    x = 0;
+                    row += 1;
+                }
+                out.push((x as i32, row));
+                x += w;
+            }
+        }
     }
-    w
+    out
 }
 
 /// The width of `text` in ems, by the glyph widths of DejaVu Sans (a wide sans-serif: a viewer's
@@ -115,26 +131,26 @@ fn text_ems(text: &str) -> f64 {
         .sum()
 }
 
-/// Draws the legend entries in `columns` columns (row by row; one column: top-down) from the
-/// top-left corner `(x, y)` (backend pixels), at the legend's size of `sizes`.
+/// Draws the legend entries from the top-left corner `(x, y)` (backend pixels), at the
+/// legend's size of `sizes`: one a row, or with `wrap` side by side in rows of at most `wrap`
+/// pixels.
 pub(super) fn draw_legend(
     root: &Root,
     (x, y): Px,
     entries: &[Entry],
     mono: bool,
     sizes: &Sizes,
-    columns: usize,
+    wrap: Option<u32>,
 ) -> Result<(), PlotError> {
     let row = row_height(sizes);
-    let columns = columns.max(1);
-    let widths = column_widths(entries, sizes, columns);
+    let at = positions(entries, sizes, wrap);
     let font = ("sans-serif", asked_size(sizes.legend))
         .into_font()
         .color(&BLACK)
         .pos(Pos::new(HPos::Left, VPos::Center));
-    for (k, (swatch, text)) in entries.iter().enumerate() {
-        let cy = y + row * (k / columns) as i32 + row / 2;
-        let x = x + widths[..k % columns].iter().sum::<u32>() as i32;
+    for ((swatch, text), &(dx, r)) in entries.iter().zip(&at) {
+        let cy = y + row * r as i32 + row / 2;
+        let x = x + dx;
         let (sx0, sx1) = (x, x + 44);
         let line = [(sx0, cy), (sx1, cy)];
         match swatch {
@@ -237,12 +253,17 @@ mod tests {
             64.0 + text + 10.0 <= panel,
             "{text} pixels of text in a panel of {panel}"
         );
-        // At a column's width it goes below the axes, in columns that fit across.
+        // At a column's width it goes below the axes, in rows that fit across.
         let column = super::super::PlotOptions::column();
         match Layout::of(&entries, &sizes, column.pixels().0) {
-            Layout::Below { columns, .. } => {
-                let w: u32 = column_widths(&entries, &sizes, columns).iter().sum();
-                assert!(w + 20 <= column.pixels().0, "{columns} columns, {w} px");
+            Layout::Below { wrap, height } => {
+                let at = positions(&entries, &sizes, Some(wrap));
+                for (e, p) in entries.iter().zip(&at) {
+                    let end = p.0 as u32 + entry_width(e, &sizes);
+                    assert!(end <= wrap, "{:?} ends at {end} of {wrap}", e.1);
+                }
+                let rows = at.last().unwrap().1 as i32 + 1;
+                assert_eq!(height as i32, rows * row_height(&sizes) + 12);
             }
             other => panic!("{other:?}"),
         }

@@ -606,9 +606,9 @@ pub(super) fn sphere_figure(
             draw_on_sphere(root, &pts, &w, &to_fpx, ramp(k, n, mono), 2)?;
         }
         match layout {
-            Layout::Right(_) => draw_legend(root, (left_w + 10, top), &legend, mono, &sizes, 1),
-            Layout::Below { columns, .. } => {
-                draw_legend(root, (15, h + 2), &legend, mono, &sizes, columns)
+            Layout::Right(_) => draw_legend(root, (left_w + 10, top), &legend, mono, &sizes, None),
+            Layout::Below { wrap, .. } => {
+                draw_legend(root, (15, h + 2), &legend, mono, &sizes, Some(wrap))
             }
         }
     })

@@ -143,7 +143,9 @@ pub(super) enum Stroke {
 }
 
 /// The white band under a boundary curve of an atlas, so that it stands out of the shading.
-pub(super) const BOUNDARY_UNDERLAY: Stroke = Stroke::Solid(7);
+/// A pixel either side of the boundary's 3 pixels: wider bands read as white gaps between the
+/// regions.
+pub(super) const BOUNDARY_UNDERLAY: Stroke = Stroke::Solid(5);
 
 /// The strokes of [`Overlay`](super::Overlay) curves, in turn: long dashes, short dashes, a thin
 /// line.
