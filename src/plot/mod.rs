@@ -676,9 +676,9 @@ pub fn orbit_periods_svg<P: AsRef<Path>>(
 /// viewer on the ray through `view`; up on the page is `e₃`, or `e₂` when `view` is within about
 /// 25° of `±e₃`). Each trajectory's `γ` is a curve, solid on the near side (`γ·view ≥ 0`) and thin
 /// dotted on the far side; the trajectories are coloured in their order from blue to orange
-/// (from black to grey with [`PlotOptions::monochrome`]). The limb, the principal planes `γᵢ = 0` (grey) and
-/// the body axes `±eᵢ` on the near side (dots, named) give the orientation; the legend names the
-/// first and last trajectory and the view. Sample periodic orbits with
+/// (from black to grey with [`PlotOptions::monochrome`]). The limb, the principal planes
+/// `γᵢ = 0` (grey) and the body axes `±eᵢ` on the near side (dots, named) give the orientation;
+/// the legend names the first and last trajectory and the view. Sample periodic orbits with
 /// [`orbit_path`](crate::orbit_path).
 ///
 /// # Errors

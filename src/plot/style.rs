@@ -256,8 +256,9 @@ pub(super) const ORBIT_KINDS: [OrbitEventKind; 3] = [
 ];
 
 /// The stroke of a run of a family of periodic orbits, as the verdicts of steady motions: thick
-/// solid where elliptic (stable), dashed where hyperbolic, dotted where inverse hyperbolic, and a
-/// medium solid line where parabolic (along a whole run only in degenerate families).
+/// solid where elliptic (stable), dashed where hyperbolic, long dashes (wider) where inverse
+/// hyperbolic, and a medium solid line where parabolic (along a whole run only in degenerate
+/// families).
 pub(super) fn orbit_stroke(v: OrbitStability) -> Stroke {
     stroke_of(the("orbit_verdict", orbit_key(v)))
 }

@@ -4,9 +4,10 @@
 agree and there is no second copy. Imported lazily (matplotlib is optional).
 
 Every figure reads in monochrome: each verdict has its own stroke (thick solid, thin solid,
-dashed, dotted) and each event its own marker; the legend lists only what is drawn; event labels
-are placed clear of one another (and of the markers and, where they can be, of the curves), on a
-leader line when they stand away from their marker.
+dashed, dotted; inverse hyperbolic orbits long-dashed) and each event its own marker; the
+legend lists only what is drawn; event labels are placed clear of one another (and of the
+markers and, where they can be, of the curves), on a leader line when they stand away from
+their marker.
 """
 
 import io
