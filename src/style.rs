@@ -222,8 +222,8 @@ pub const STYLE: &[Look] = &[
         "inverse_hyperbolic",
         "inverse hyperbolic, k < −1",
         "#E69F00",
-        1.0,
-        Some((1.0, 2.0)),
+        1.5,
+        Some((7.0, 2.0)),
     ),
     marker("orbit_event", "fold", "fold", "^"),
     marker("orbit_event", "branch_point", "branch point", "o"),
@@ -329,5 +329,110 @@ pub const FONT: Fonts = Fonts {
     title_pt: 10.0,
 };
 
-/// The default width of a figure in inches: a journal's single column (89 mm).
-pub const COLUMN_WIDTH_IN: f64 = 3.5;
+/// The default width of a figure in inches: a journal's single column (3.4 in, 86 mm).
+pub const COLUMN_WIDTH_IN: f64 = 3.4;
+
+/// The width of a figure across a journal's page, in inches.
+pub const PAGE_WIDTH_IN: f64 = 7.0;
+
+/// `n` in superscript digits (and a superscript minus): `⁻¹²`.
+fn superscript(n: i64) -> String {
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let digits: String = n
+        .unsigned_abs()
+        .to_string()
+        .chars()
+        .map(|c| SUP[c.to_digit(10).unwrap_or(0) as usize])
+        .collect();
+    if n < 0 {
+        format!("⁻{digits}")
+    } else {
+        digits
+    }
+}
+
+/// The label of the power of ten `10ⁿ`, as every tick of both renderers writes it: `1`, `10`,
+/// `100`, then `10³`, `10⁴`, … (and `10⁻¹`, `10⁻²`, … below 1), with a true minus sign (U+2212)
+/// when `negative`.
+///
+/// ```
+/// use routh::style::decade_label;
+///
+/// assert_eq!(decade_label(2, false), "100");
+/// assert_eq!(decade_label(7, true), "−10⁷");
+/// assert_eq!(decade_label(-3, false), "10⁻³");
+/// ```
+pub fn decade_label(n: i64, negative: bool) -> String {
+    let body = match n {
+        0 => "1".to_string(),
+        1 => "10".to_string(),
+        2 => "100".to_string(),
+        _ => format!("10{}", superscript(n)),
+    };
+    if negative {
+        format!("−{body}")
+    } else {
+        body
+    }
+}
+
+/// The label of the tick at `v` on an axis whose ticks are about `step` apart and whose values
+/// reach `scale` in magnitude, as both renderers write it: a decimal with as many digits as the
+/// step needs (`0.25`, `−1.5`, `1200`) while `scale` is between 10⁻³ and 10⁵, else the mantissa
+/// times a power of ten (`2.5×10⁷`, `10⁻⁴`); a true minus sign (U+2212), never a hyphen; `0`
+/// for zero.
+///
+/// ```
+/// use routh::style::tick_label;
+///
+/// assert_eq!(tick_label(-0.5, 0.1, 2.0), "−0.5");
+/// assert_eq!(tick_label(1200.0, 100.0, 5000.0), "1200");
+/// assert_eq!(tick_label(2.5e7, 1e6, 3e7), "2.5×10⁷");
+/// assert_eq!(tick_label(1e7, 1e6, 3e7), "10⁷");
+/// assert_eq!(tick_label(-2e-4, 1e-5, 5e-4), "−2×10⁻⁴");
+/// assert_eq!(tick_label(1e-9, 0.1, 1.0), "0");
+/// ```
+pub fn tick_label(v: f64, step: f64, scale: f64) -> String {
+    let step = step.abs().max(f64::MIN_POSITIVE);
+    if !v.is_finite() {
+        return v.to_string();
+    }
+    if v.abs() < step * 1e-6 {
+        return "0".into();
+    }
+    let trim = |s: String| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    };
+    let scale = scale.abs();
+    let s = if scale.is_finite() && (1e-3..1e5).contains(&scale) {
+        let digits = ((-step.log10()).ceil().max(0.0) as usize + 1).min(12);
+        trim(format!("{:.*}", digits, v))
+    } else {
+        let n = v.abs().log10().floor() as i64;
+        let mantissa = v.abs() / 10f64.powi(n as i32);
+        let digits = ((n as f64 - step.log10()).ceil().max(0.0) as usize + 1).min(12);
+        let m = trim(format!("{:.*}", digits, mantissa));
+        // A mantissa rounded up to 10 is the next power.
+        let (m, n) = if m == "10" {
+            ("1".to_string(), n + 1)
+        } else {
+            (m, n)
+        };
+        let power = format!("10{}", superscript(n));
+        let body = if m == "1" {
+            power
+        } else {
+            format!("{m}×{power}")
+        };
+        if v < 0.0 {
+            format!("-{body}")
+        } else {
+            body
+        }
+    };
+    s.replacen('-', "−", 1)
+}

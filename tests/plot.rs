@@ -941,11 +941,11 @@ fn orbit_family_diagram_marks_the_lines_runs_and_events() {
     let (y_plus, y_minus) = (lines[0], lines[1]);
     assert!(y_plus < y_minus);
     // Two elliptic runs (thick green) and the legend's swatch; hyperbolic dashes (red) and
-    // inverse-hyperbolic dots (orange).
+    // inverse-hyperbolic long dashes (orange).
     let elliptic = polylines(&svg, c("orbit_verdict", "elliptic"), 4);
     assert_eq!(elliptic.len(), 3, "{elliptic:?}");
     assert!(strokes(&svg, c("orbit_verdict", "hyperbolic"), 2) > 5);
-    assert!(strokes(&svg, c("orbit_verdict", "inverse_hyperbolic"), 2) > 5);
+    assert!(strokes(&svg, c("orbit_verdict", "inverse_hyperbolic"), 3) > 5);
     // The first elliptic run ends on k = −1 where the period doubling is marked (◆, 4 vertices,
     // black on a white halo); the second ends on k = 1 at the branch point (●).
     let mut runs = elliptic;
@@ -1117,7 +1117,7 @@ fn poincare_section_draws_every_crossing_and_the_fixed_points() {
         "M_n",
         "150 crossings of 3 orbits",
         "periodic orbits (fixed points)",
-        "p_ψ = 0.25, E = -1.5",
+        "p_ψ = 0.25, E = −1.5",
         "plane γ·n = 0, n = (1, 0, 0)",
     ] {
         assert!(has_text(&svg, label), "{label:?}: {:?}", texts(&svg));
@@ -1502,7 +1502,9 @@ fn figures_of_a_computed_family() {
 /// 2 px a point, which plotters writes 1.24 times smaller as all its fonts): top-left corner at
 /// (x, y), width 0.58 em a character (DejaVu Sans averages less), one em high.
 fn label_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
-    let size = 2.0 * look_font_annotation() / 1.24;
+    // Written at its size in points at 2 px a point, or at most a pixel more (plotters takes
+    // whole pixels of 1.24 times the size written).
+    let pt = look_font_annotation();
     svg.split("<text")
         .skip(1)
         .filter(|t| t.contains("font-family=\"DejaVu Sans\""))
@@ -1513,8 +1515,8 @@ fn label_boxes(svg: &str) -> Vec<(String, [f64; 4])> {
             };
             let (x, y, fs) = (attr("x")?, attr("y")?, attr("font-size")?);
             assert!(
-                (fs - size).abs() < 1e-6,
-                "annotation at {fs} px, not {size}"
+                fs >= 2.0 * pt && fs < 2.0 * pt + 1.0,
+                "annotation at {fs} px, not {pt} pt"
             );
             let body = &t[t.find('>')? + 1..];
             let text = body[..body.find("</text>")?].trim().to_string();
@@ -1621,4 +1623,331 @@ fn figures_as_png_at_column_width() {
         png_from_svg(&not_svg, out("not.png"), 100),
         Err(PlotError::InvalidData(_))
     ));
+}
+
+// The figures as printed: measured in the SVG written, at a journal's column and page width.
+
+/// A `<text>` element as drawn: its text, its box `[x0, y0, x1, y1]` in the SVG's pixels and its
+/// `font-size`; rotated texts (the vertical axis's name) have no box.
+struct Drawn {
+    text: String,
+    size: f64,
+    rect: Option<[f64; 4]>,
+}
+
+/// Every `<text>` of the SVG with its box: advance 0.55 em a character (DejaVu Sans's average
+/// is more, so that a box found overlapping overlaps in fact), from 0.73 em above the baseline
+/// (capitals) to 0.2 em below it (descenders); the baseline from `y` and `dy` as plotters
+/// writes them (`0.76em` top, `0.5ex` centre, `-0.5ex` bottom; ex = 0.55 em).
+fn drawn_texts(svg: &str) -> Vec<Drawn> {
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|t| {
+            let head = &t[..t.find('>')?];
+            let get = |name: &str| attr(&format!(" {head}"), name);
+            let size: f64 = get("font-size")?.parse().ok()?;
+            let x: f64 = get("x")?.parse().ok()?;
+            let y: f64 = get("y")?.parse().ok()?;
+            let body = &t[t.find('>')? + 1..];
+            let text = body[..body.find("</text>")?]
+                .trim()
+                .replace("&lt;", "<")
+                .replace("&gt;", ">")
+                .replace("&amp;", "&");
+            let baseline = match get("dy").as_deref() {
+                Some("0.76em") => y + 0.76 * size,
+                Some("0.5ex") => y + 0.275 * size,
+                Some("-0.5ex") => y - 0.275 * size,
+                _ => y,
+            };
+            let w = 0.55 * size * text.chars().count() as f64;
+            let x0 = match get("text-anchor").as_deref() {
+                Some("end") => x - w,
+                Some("middle") => x - 0.5 * w,
+                _ => x,
+            };
+            let rect = (get("transform").is_none()).then_some([
+                x0,
+                baseline - 0.73 * size,
+                x0 + w,
+                baseline + 0.2 * size,
+            ]);
+            Some(Drawn { text, size, rect })
+        })
+        .collect()
+}
+
+/// The `(width, height)` attributes of the `<svg>` element and its view box's size.
+fn svg_size(svg: &str) -> (String, String, (f64, f64)) {
+    let head = &svg[..svg.find('>').unwrap()];
+    let vb: Vec<f64> = attr(head, "viewBox")
+        .unwrap()
+        .split_whitespace()
+        .map(|v| v.parse().unwrap())
+        .collect();
+    (
+        attr(head, "width").unwrap(),
+        attr(head, "height").unwrap(),
+        (vb[2], vb[3]),
+    )
+}
+
+/// Every kind of figure of `routh::plot` drawn with `opts` into files named after `stem`: their
+/// names and contents.
+fn every_figure(stem: &str, opts: &PlotOptions) -> Vec<(String, String)> {
+    let mut figures = Vec::new();
+    let mut keep = |name: &str, draw: &dyn Fn(&PathBuf) -> Result<(), PlotError>| {
+        let path = out(&format!("{stem}-{name}.svg"));
+        draw(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        figures.push((name.to_string(), read_svg(&path)));
+    };
+    let diagram = full_diagram();
+    keep("bifurcation", &|p| {
+        bifurcation_diagram_svg(&diagram, p, opts)
+    });
+    keep("energy_momentum", &|p| {
+        energy_momentum_svg(&diagram, p, opts)
+    });
+    keep("atlas", &|p| {
+        stability_atlas_svg(&all_verdicts_atlas(), p, opts)
+    });
+    keep("orbit_family", &|p| {
+        orbit_family_svg(&swing_family(), p, opts)
+    });
+    keep("orbit_periods", &|p| {
+        orbit_periods_svg(&swing_family(), p, opts)
+    });
+    keep("section", &|p| {
+        poincare_section_svg(&ring_section(), &[[0.0, 0.0]], p, opts)
+    });
+    keep("sphere", &|p| {
+        orbits_on_sphere_svg(
+            &[swing_path(0.3), swing_path(0.9)],
+            Vector3::new(1.0, 0.3, -1.0),
+            p,
+            opts,
+        )
+    });
+    figures
+}
+
+#[test]
+fn figures_at_column_and_page_width_print_their_texts_at_size_and_apart() {
+    for (opts, inches) in [
+        (PlotOptions::column(), "3.4in"),
+        (PlotOptions::page(), "7in"),
+    ] {
+        let w_in = opts.width_in.unwrap();
+        for (name, svg) in every_figure(inches, &opts) {
+            // The size in inches, the view box at 144 pixels an inch.
+            let (w, h, (vw, vh)) = svg_size(&svg);
+            assert_eq!(w, inches, "{name}");
+            assert_eq!(vw, (w_in * 144.0).round(), "{name}");
+            let h_in: f64 = h.trim_end_matches("in").parse().unwrap();
+            assert!(
+                (h_in / w_in - vh / vw).abs() < 2e-3,
+                "{name}: {h} for {vh} of {vw}"
+            );
+            // Every text at 7 pt or more when printed at the width.
+            let pt_per_px = 72.0 * w_in / vw;
+            let texts = drawn_texts(&svg);
+            assert!(texts.len() > 5, "{name}");
+            for t in &texts {
+                let pt = t.size * pt_per_px;
+                assert!(pt >= 7.0 - 1e-9, "{name}: {:?} at {pt:.2} pt", t.text);
+            }
+            // No title unless asked.
+            assert!(
+                !texts.iter().any(|t| t.size * pt_per_px > 9.9),
+                "{name}: a title"
+            );
+            // The texts do not overlap one another, and stay inside the figure.
+            let boxes: Vec<(&str, [f64; 4])> = texts
+                .iter()
+                .filter_map(|t| Some((t.text.as_str(), t.rect?)))
+                .collect();
+            for (i, (ta, a)) in boxes.iter().enumerate() {
+                assert!(
+                    a[0] >= -0.5 && a[2] <= vw + 0.5 && a[1] >= -0.5 && a[3] <= vh + 0.5,
+                    "{name}: {ta:?} at {a:?} leaves the {vw} × {vh} figure"
+                );
+                for (tb, b) in &boxes[i + 1..] {
+                    let apart = a[2] <= b[0] + 0.5
+                        || b[2] <= a[0] + 0.5
+                        || a[3] <= b[1] + 0.5
+                        || b[3] <= a[1] + 0.5;
+                    assert!(apart, "{name}: {ta:?} {a:?} overlaps {tb:?} {b:?}");
+                }
+            }
+            // Minus signs are true minus signs.
+            assert!(
+                !texts.iter().any(|t| t.text.starts_with('-')),
+                "{name}: a hyphen for a minus"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_title_only_when_asked() {
+    let titled = PlotOptions {
+        title: "Lagrange top".into(),
+        ..PlotOptions::column()
+    };
+    for (name, svg) in every_figure("titled", &titled) {
+        let n = texts(&svg).iter().filter(|t| *t == "Lagrange top").count();
+        assert_eq!(n, 1, "{name}");
+    }
+    for (name, svg) in every_figure("untitled", &PlotOptions::default()) {
+        assert!(!has_text(&svg, "Lagrange top"), "{name}");
+        // Without units, in pixels as before.
+        let (w, h, _) = svg_size(&svg);
+        assert!(!w.ends_with("in") && !h.ends_with("in"), "{name}: {w} {h}");
+    }
+    // A larger font: every text grows with it.
+    let big = PlotOptions {
+        font_pt: 10.0,
+        ..PlotOptions::column()
+    };
+    for (name, svg) in every_figure("big", &big) {
+        let (_, _, (vw, _)) = svg_size(&svg);
+        let smallest = drawn_texts(&svg)
+            .iter()
+            .map(|t| t.size * 72.0 * 3.4 / vw)
+            .fold(f64::MAX, f64::min);
+        assert!(smallest >= 7.0 * 10.0 / 8.0 - 1e-9, "{name}: {smallest} pt");
+    }
+    // Bad sizes are errors, not panics.
+    let path = out("bad-size.svg");
+    for bad in [
+        PlotOptions {
+            width_in: Some(1.0),
+            ..PlotOptions::default()
+        },
+        PlotOptions {
+            width_in: Some(f64::NAN),
+            ..PlotOptions::default()
+        },
+        PlotOptions {
+            font_pt: 0.0,
+            ..PlotOptions::default()
+        },
+        PlotOptions {
+            font_pt: f64::INFINITY,
+            ..PlotOptions::column()
+        },
+    ] {
+        let err = bifurcation_diagram_svg(&full_diagram(), &path, &bad).unwrap_err();
+        assert!(matches!(err, PlotError::InvalidOptions(_)), "{err}");
+    }
+}
+
+/// The colours `#RRGGBB` of the SVG's strokes and fills.
+fn colours(svg: &str) -> HashSet<String> {
+    let mut out = HashSet::new();
+    for key in ["stroke=\"#", "fill=\"#"] {
+        for part in svg.split(key).skip(1) {
+            out.insert(part[..6].to_uppercase());
+        }
+    }
+    out
+}
+
+#[test]
+fn monochrome_figures_are_grey_and_keep_every_style_apart() {
+    let grey = PlotOptions {
+        monochrome: true,
+        ..PlotOptions::column()
+    };
+    for (name, svg) in every_figure("grey", &grey) {
+        for c in colours(&svg) {
+            let (r, g, b) = (&c[0..2], &c[2..4], &c[4..6]);
+            assert!(r == g && g == b, "{name}: colour #{c}");
+        }
+    }
+    // Each verdict listed in the legend is drawn in its stroke along a curve (a smoothed
+    // polyline in fractional pixels, round joins), not only in its swatch: the strokes differ
+    // in width or dash, so in black they still tell the verdicts apart.
+    let svg = every_figure("grey-legend", &grey)
+        .into_iter()
+        .find(|f| f.0 == "orbit_family")
+        .unwrap()
+        .1;
+    let curve_widths: HashSet<String> = svg
+        .lines()
+        .filter(|l| l.starts_with("<polyline") && l.contains("stroke-linejoin=\"round\""))
+        .filter_map(|l| attr(l, "stroke-width"))
+        .collect();
+    for (key, label) in [
+        ("elliptic", "elliptic, |k| < 1"),
+        ("hyperbolic", "hyperbolic, k > 1"),
+        ("inverse_hyperbolic", "inverse hyperbolic, k < −1"),
+    ] {
+        assert!(has_text(&svg, label), "{label}");
+        let w = (look("orbit_verdict", key).unwrap().width_pt * 2.0).round();
+        assert!(
+            curve_widths.contains(&format!("{w}")),
+            "{key}: {curve_widths:?}"
+        );
+    }
+    let stroke = |key: &str| {
+        let l = look("orbit_verdict", key).unwrap();
+        (
+            l.width_pt.to_bits(),
+            l.dash_pt.map(|d| (d.0.to_bits(), d.1.to_bits())),
+        )
+    };
+    let keys = ["elliptic", "parabolic", "hyperbolic", "inverse_hyperbolic"];
+    for (i, a) in keys.iter().enumerate() {
+        for b in &keys[i + 1..] {
+            assert_ne!(stroke(a), stroke(b), "{a} and {b} differ in colour only");
+        }
+    }
+    // Inverse hyperbolic runs end on k = −1: their dashes are not the reference line's.
+    let line = look("reference", "parabolic_line").unwrap();
+    let inverse = look("orbit_verdict", "inverse_hyperbolic").unwrap();
+    assert!(inverse.dash_pt.is_some() && inverse.width_pt > line.width_pt);
+    assert_ne!(
+        inverse.dash_pt,
+        Some((1.0, 2.0)),
+        "dotted like the k = −1 line"
+    );
+}
+
+#[test]
+fn mirror_branches_are_drawn_once_so_that_dashes_stay_dashes() {
+    // Two mirror images of an unstable branch (γ₁ ↦ −γ₁), the same curve in (s, γ₃), sampled
+    // at different points: each drawn, their dashes would fill each other's gaps.
+    let branch = |offset: f64, sign: f64| Branch {
+        points: (0..=40)
+            .map(|i| {
+                let s = offset + 0.1 * i as f64;
+                let mut p = point(s, s, 0.3 + 0.1 * s, Stability::Unstable, true);
+                p.steady.gamma.x *= sign;
+                p
+            })
+            .collect(),
+        isolated: true,
+    };
+    let one = BifurcationDiagram {
+        branches: vec![branch(0.0, 1.0)],
+        ..Default::default()
+    };
+    let two = BifurcationDiagram {
+        branches: vec![branch(0.0, 1.0), branch(0.05, -1.0)],
+        ..Default::default()
+    };
+    let red = c("verdict", "unstable");
+    let dashes = |d: &BifurcationDiagram, name: &str| {
+        let path = out(name);
+        bifurcation_diagram_svg(d, &path, &PlotOptions::column()).unwrap();
+        polylines(&read_svg(&path), red, 2).len()
+    };
+    let (n1, n2) = (
+        dashes(&one, "mirror-one.svg"),
+        dashes(&two, "mirror-two.svg"),
+    );
+    assert!(n1 > 10, "{n1}");
+    // The second branch adds at most the dash or two where it runs beyond the first.
+    assert!(n2 <= n1 + 2, "{n1} dashes for one branch, {n2} for the two");
 }

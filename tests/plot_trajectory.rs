@@ -41,8 +41,14 @@ fn time_histories_name_every_curve_beside_the_axes() {
     let svg = std::fs::read_to_string(&path).unwrap();
     let _ = std::fs::remove_file(&path);
     let t = texts(&svg);
-    // The legend column is the right-most 130 pixels; every tick label is left of it.
-    let column = f64::from(opts.width) - 130.0;
+    // The legend column is right of every tick label: its names start right of the right-most
+    // tick label's anchor.
+    let column = t
+        .iter()
+        .filter(|(_, s)| s.replace('−', "-").parse::<f64>().is_ok())
+        .map(|(x, _)| *x)
+        .fold(f64::MIN, f64::max)
+        + 1.0;
     for name in [
         "γ₁",
         "γ₂",
@@ -60,7 +66,9 @@ fn time_histories_name_every_curve_beside_the_axes() {
         assert!(*x >= column, "{name} at x = {x}, inside the axes");
     }
     for (x, s) in &t {
-        if let Ok(v) = s.parse::<f64>() {
+        // Tick labels with a true minus sign (U+2212), never a hyphen.
+        assert!(!s.starts_with('-'), "tick label {s} with a hyphen");
+        if let Ok(v) = s.replace('−', "-").parse::<f64>() {
             assert!(*x < column, "tick {s} at x = {x}");
             assert!(v != 0.0 || s == "0", "tick label {s}");
         }
@@ -78,7 +86,8 @@ fn apex_locus_explains_its_markers_and_has_no_negative_zero() {
     let t = texts(&svg);
     assert!(t.iter().any(|(_, s)| s.contains("○ start, ● end")), "{t:?}");
     for (_, s) in &t {
-        if let Ok(v) = s.parse::<f64>() {
+        assert!(!s.starts_with('-'), "tick label {s} with a hyphen");
+        if let Ok(v) = s.replace('−', "-").parse::<f64>() {
             assert!(v != 0.0 || s == "0", "tick label {s}");
         }
     }

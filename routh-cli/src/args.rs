@@ -92,24 +92,149 @@ pub fn vec3(s: &str) -> Result<[f64; 3], String> {
 }
 
 /// The name of a figure's axis for a quantity of the command line: `momentum` is the cyclic
-/// momentum p_ψ, anything else a parameter of the model.
-pub fn axis_name(quantity: &str) -> String {
+/// momentum p_ψ; a parameter of the model is named by its symbol in the model's `[latex]` table
+/// where it has one (`mass = "m"` gives `m`, `a1 = "A_1"` gives `A₁`), else by its name.
+pub fn axis_name(quantity: &str, symbols: &std::collections::BTreeMap<String, String>) -> String {
     if quantity == "momentum" {
         "cyclic momentum p_ψ".to_string()
     } else {
-        format!("parameter {quantity}")
+        symbols
+            .get(quantity)
+            .and_then(|s| plain_symbol(s))
+            .unwrap_or_else(|| quantity.to_string())
     }
 }
 
-/// The model's name in a figure's title: the file name without its extension.
-pub fn model_name(path: &std::path::Path) -> String {
-    path.file_stem()
-        .map_or_else(|| "model".to_string(), |s| s.to_string_lossy().into_owned())
+/// A LaTeX symbol as plain text with Unicode letters (`\omega_0` → `ω₀`, `A_1` → `A₁`,
+/// `m_{2}` → `m₂`), or `None` when it holds what plain text cannot show (other commands,
+/// subscripts other than digits, superscripts).
+pub fn plain_symbol(latex: &str) -> Option<String> {
+    const GREEK: [(&str, char); 34] = [
+        ("alpha", 'α'),
+        ("beta", 'β'),
+        ("gamma", 'γ'),
+        ("delta", 'δ'),
+        ("epsilon", 'ε'),
+        ("varepsilon", 'ε'),
+        ("zeta", 'ζ'),
+        ("eta", 'η'),
+        ("theta", 'θ'),
+        ("iota", 'ι'),
+        ("kappa", 'κ'),
+        ("lambda", 'λ'),
+        ("mu", 'μ'),
+        ("nu", 'ν'),
+        ("xi", 'ξ'),
+        ("pi", 'π'),
+        ("rho", 'ρ'),
+        ("sigma", 'σ'),
+        ("tau", 'τ'),
+        ("phi", 'φ'),
+        ("varphi", 'φ'),
+        ("chi", 'χ'),
+        ("psi", 'ψ'),
+        ("omega", 'ω'),
+        ("Gamma", 'Γ'),
+        ("Delta", 'Δ'),
+        ("Theta", 'Θ'),
+        ("Lambda", 'Λ'),
+        ("Xi", 'Ξ'),
+        ("Pi", 'Π'),
+        ("Sigma", 'Σ'),
+        ("Phi", 'Φ'),
+        ("Psi", 'Ψ'),
+        ("Omega", 'Ω'),
+    ];
+    const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
+    let mut out = String::new();
+    let mut chars = latex.trim().chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '\\' => {
+                let mut name = String::new();
+                while let Some(&l) = chars.peek().filter(|l| l.is_ascii_alphabetic()) {
+                    name.push(l);
+                    chars.next();
+                }
+                out.push(GREEK.iter().find(|g| g.0 == name)?.1);
+            }
+            '_' => {
+                let mut sub = String::new();
+                if chars.peek() == Some(&'{') {
+                    chars.next();
+                    for l in chars.by_ref() {
+                        if l == '}' {
+                            break;
+                        }
+                        sub.push(l);
+                    }
+                } else {
+                    sub.push(chars.next()?);
+                }
+                if sub.is_empty() || !sub.chars().all(|d| d.is_ascii_digit()) {
+                    return None;
+                }
+                out.extend(
+                    sub.chars()
+                        .map(|d| SUB[d.to_digit(10).unwrap_or(0) as usize]),
+                );
+            }
+            '{' | '}' => {}
+            '^' | '$' => return None,
+            c => out.push(c),
+        }
+    }
+    (!out.is_empty()).then_some(out)
+}
+
+/// A figure's printed width: `column` (3.4 in), `page` (7 in) or a number of inches.
+pub fn figure_width(s: &str) -> Result<f64, String> {
+    let w = match s.trim() {
+        "column" => routh::style::COLUMN_WIDTH_IN,
+        "page" => routh::style::PAGE_WIDTH_IN,
+        other => finite(other.trim_end_matches("in")).map_err(|_| {
+            format!("`{s}` is not a width: `column` (3.4 in), `page` (7 in) or inches, e.g. 5.5")
+        })?,
+    };
+    if (2.8..=40.0).contains(&w) {
+        Ok(w)
+    } else {
+        Err(format!("a figure {w} in wide: from 2.8 to 40 in"))
+    }
+}
+
+/// A font size in points, 5 to 24.
+pub fn font_size(s: &str) -> Result<f64, String> {
+    let pt = finite(s.trim().trim_end_matches("pt"))?;
+    if (5.0..=24.0).contains(&pt) {
+        Ok(pt)
+    } else {
+        Err(format!("a font of {pt} pt: from 5 to 24"))
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn symbols_and_figure_values() {
+        assert_eq!(plain_symbol("A_1").as_deref(), Some("A₁"));
+        assert_eq!(plain_symbol("\\omega_{0}").as_deref(), Some("ω₀"));
+        assert_eq!(plain_symbol("m").as_deref(), Some("m"));
+        assert_eq!(plain_symbol("x^2"), None);
+        assert_eq!(plain_symbol("\\mathrm{m}"), None);
+        assert_eq!(plain_symbol("r_c"), None);
+        let symbols = [("mass".to_string(), "m".to_string())].into();
+        assert_eq!(axis_name("mass", &symbols), "m");
+        assert_eq!(axis_name("length", &symbols), "length");
+        assert_eq!(figure_width("column"), Ok(3.4));
+        assert_eq!(figure_width("page"), Ok(7.0));
+        assert_eq!(figure_width("5.5in"), Ok(5.5));
+        assert!(figure_width("1").is_err() && figure_width("wide").is_err());
+        assert_eq!(font_size("9"), Ok(9.0));
+        assert!(font_size("2").is_err() && font_size("NaN").is_err());
+    }
 
     #[test]
     fn ranges() {

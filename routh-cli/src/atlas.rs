@@ -82,16 +82,11 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
     }
     let mut files = crate::files::Outputs::new();
     if let Some(path) = &a.svg {
-        let [gx, gy, gz] = a.gamma;
-        let opts = PlotOptions {
-            x_label: crate::args::axis_name(names[0]),
-            y_label: crate::args::axis_name(names[1]),
-            title: format!(
-                "{}: stability of the steady motion from γ = ({gx}, {gy}, {gz})",
-                crate::args::model_name(&a.model)
-            ),
+        let opts = a.figure.apply(PlotOptions {
+            x_label: crate::args::axis_name(names[0], model.latex_symbols()),
+            y_label: crate::args::axis_name(names[1], model.latex_symbols()),
             ..PlotOptions::default()
-        };
+        });
         files.write(path, |tmp| stability_atlas_svg(&result, tmp, &opts))?;
     }
     let text = render(a, &result, &names)?;

@@ -78,6 +78,40 @@ pub struct Output {
     pub csv: bool,
 }
 
+/// The options of every figure a command writes (`--svg` and the like); without a figure, they
+/// do nothing.
+#[derive(Debug, Clone, Args)]
+pub struct Figure {
+    /// The figure's printed width: `column` (3.4 in), `page` (7 in) or inches (e.g. `5.5`); the
+    /// SVG then says its size in inches and its texts are printed at their sizes in points.
+    /// Default: 900 × 600 pixels, no unit.
+    #[arg(long, value_name = "IN|column|page", value_parser = args::figure_width)]
+    pub width: Option<f64>,
+    /// The size of the tick labels in points (5 to 24; default 8); the axis names, legend and
+    /// event names keep their proportions to it.
+    #[arg(long, value_name = "PT", value_parser = args::font_size, allow_hyphen_values = true)]
+    pub font_size: Option<f64>,
+    /// A title above the axes (default: none; a journal's caption goes below the figure).
+    #[arg(long, value_name = "TEXT")]
+    pub title: Option<String>,
+    /// Black, white and greys only: every verdict told apart by its stroke, marker or pattern.
+    #[arg(long, visible_alias = "gray")]
+    pub grey: bool,
+}
+
+impl Figure {
+    /// `opts` with these options.
+    pub fn apply(&self, opts: routh::plot::PlotOptions) -> routh::plot::PlotOptions {
+        routh::plot::PlotOptions {
+            width_in: self.width.or(opts.width_in),
+            font_pt: self.font_size.unwrap_or(opts.font_pt),
+            title: self.title.clone().unwrap_or(opts.title),
+            monochrome: self.grey || opts.monochrome,
+            ..opts
+        }
+    }
+}
+
 /// `steady` and `classify`.
 #[derive(Debug, Args)]
 pub struct AtMomentum {
@@ -130,6 +164,9 @@ pub struct Diagram {
     /// D = 0 and the 1:2, 1:3 resonances (slower: a normal form at every step there).
     #[arg(long)]
     pub nonlinear: bool,
+    /// Figure options.
+    #[command(flatten)]
+    pub figure: Figure,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -185,6 +222,9 @@ pub struct Atlas {
     /// Draw the atlas into this SVG file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
+    /// Figure options.
+    #[command(flatten)]
+    pub figure: Figure,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -338,6 +378,9 @@ pub struct Orbits {
     /// Draw the family's periods against E into this SVG file (one family, as `--svg`).
     #[arg(long, value_name = "FILE", conflicts_with_all = ["doubling", "switch"])]
     pub periods_svg: Option<PathBuf>,
+    /// Figure options.
+    #[command(flatten)]
+    pub figure: Figure,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -366,6 +409,9 @@ pub struct Section {
     /// Draw the section (θ against M_n, one colour per orbit) into this SVG file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
+    /// Figure options.
+    #[command(flatten)]
+    pub figure: Figure,
     /// Output format.
     #[command(flatten)]
     pub output: Output,

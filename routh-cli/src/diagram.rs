@@ -53,35 +53,23 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             (diagram, par.name.clone())
         }
     };
-    let stem = crate::args::model_name(&d.model);
     let mut files = crate::files::Outputs::new();
     if let Some(path) = &d.svg {
-        let (axis, title) = match &d.parameter {
-            None => (
-                crate::args::axis_name("momentum"),
-                format!("{stem}: steady motions over the momentum"),
-            ),
-            Some(par) => (
-                crate::args::axis_name(&par.name),
-                format!(
-                    "{stem}: steady motions over {} at p_ψ = {}",
-                    par.name, d.momentum
-                ),
-            ),
+        let axis = match &d.parameter {
+            None => args::axis_name("momentum", model.latex_symbols()),
+            Some(par) => args::axis_name(&par.name, model.latex_symbols()),
         };
-        let opts = PlotOptions {
+        let opts = d.figure.apply(PlotOptions {
             x_label: axis,
-            title,
             ..PlotOptions::default()
-        };
+        });
         files.write(path, |tmp| bifurcation_diagram_svg(&result, tmp, &opts))?;
     }
     if let Some(path) = &d.energy_momentum_svg {
-        let opts = PlotOptions {
-            x_label: crate::args::axis_name("momentum"),
-            title: format!("{stem}: energy–momentum diagram"),
+        let opts = d.figure.apply(PlotOptions {
+            x_label: args::axis_name("momentum", model.latex_symbols()),
             ..PlotOptions::default()
-        };
+        });
         files.write(path, |tmp| energy_momentum_svg(&result, tmp, &opts))?;
     }
     let text = if d.output.json {

@@ -385,22 +385,10 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
                 families.len()
             )));
         };
-        let stem = crate::args::model_name(&a.model);
-        let title = match &one.origin {
-            Origin::Lyapunov { mode, .. } => format!(
-                "{stem}: periodic orbits of mode {mode} at p_ψ = {}",
-                one.family.orbits.first().map_or(f64::NAN, |o| o.p_psi)
-            ),
-            _ => format!(
-                "{stem}: periodic orbits at p_ψ = {}",
-                one.family.orbits.first().map_or(f64::NAN, |o| o.p_psi)
-            ),
-        };
-        let opts = PlotOptions {
+        let opts = a.figure.apply(PlotOptions {
             x_label: "E".into(),
-            title,
             ..PlotOptions::default()
-        };
+        });
         if let Some(path) = &a.svg {
             files.write(path, |tmp| orbit_family_svg(&one.family, tmp, &opts))?;
         }
@@ -446,14 +434,7 @@ pub fn section(a: &Section) -> Result<String, CliError> {
     let sec = poincare_section(&model, a.momentum, a.energy, &opts)?;
     drop(bar);
     if let Some(path) = &a.svg {
-        let stem = crate::args::model_name(&a.model);
-        let opts = PlotOptions {
-            title: format!(
-                "{stem}: Poincaré section at p_ψ = {}, E = {}",
-                a.momentum, a.energy
-            ),
-            ..PlotOptions::default()
-        };
+        let opts = a.figure.apply(PlotOptions::default());
         let mut files = Outputs::new();
         files.write(path, |tmp| poincare_section_svg(&sec, &[], tmp, &opts))?;
         files.commit()?;

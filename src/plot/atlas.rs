@@ -8,11 +8,11 @@ use super::curve::PxF;
 use super::frame::{
     clip_polyline, draw_figure, float_px, plot_rect, Chart, Frame, Overlays, Polyline,
 };
-use super::labels::Rect;
+use super::labels::{text_width, Rect};
 use super::legend::{Entry, Swatch};
 use super::marks::{draw_cross, stroke_boundary, stroke_path, Px, Root};
 use super::regions::Regions;
-use super::style::{boundary_color, nonlinear_stroke, KINDS, VERDICTS};
+use super::style::{asked_size, boundary_color, nonlinear_stroke, Sizes, FONT, KINDS, VERDICTS};
 use super::{drawing_error, label_or, x_label_or, PlotError, PlotOptions};
 use crate::{BoundaryCurve, NonlinearCurve, StabilityAtlas};
 
@@ -167,7 +167,7 @@ pub(super) fn atlas_figure(
             let parts: Vec<Vec<PxF>> = parts.iter().map(|p| p.iter().map(&fpx).collect()).collect();
             stroke_boundary(root, &parts, curve.kind, mono)?;
         }
-        draw_nonlinear(root, chart, &nonlinear, mono)?;
+        draw_nonlinear(root, chart, &nonlinear, mono, &Sizes::of(opts))?;
         overlays.draw(root, px)?;
         let (a, b) = (
             chart.backend_coord(&(frame.x.0, frame.y.1)),
@@ -185,8 +185,10 @@ fn draw_nonlinear(
     chart: &Chart,
     curves: &[&NonlinearCurve],
     mono: bool,
+    sizes: &Sizes,
 ) -> Result<(), PlotError> {
-    let font = ("sans-serif", 14).into_font().color(&BLACK);
+    let size = sizes.annotation;
+    let font = (FONT.family, asked_size(size)).into_font().color(&BLACK);
     for c in curves {
         let color = boundary_color(c.kind, mono);
         let stroke = nonlinear_stroke(c.resonance);
@@ -196,11 +198,14 @@ fn draw_nonlinear(
         }
         let mid = &c.segments[c.segments.len() / 2];
         let (a, b) = (chart.backend_coord(&mid[0]), chart.backend_coord(&mid[1]));
-        let at = ((a.0 + b.0) / 2 + 6, (a.1 + b.1) / 2 - 8);
+        let at = ((a.0 + b.0) / 2 + 6, (a.1 + b.1) / 2 - (0.6 * size) as i32);
         let label = c.label();
-        let w = 8 * label.chars().count() as i32;
+        let w = text_width(&label, size);
         root.draw(&Rectangle::new(
-            [(at.0 - 2, at.1 - 1), (at.0 + w, at.1 + 16)],
+            [
+                (at.0 - 2, at.1 - 1),
+                (at.0 + w, at.1 + size.ceil() as i32 + 2),
+            ],
             WHITE.mix(0.85).filled(),
         ))
         .map_err(drawing_error)?;

@@ -1,6 +1,7 @@
 //! The figures of branches: the bifurcation diagram and the energy–momentum diagram, each a map
 //! of the points of a [`BifurcationDiagram`] into the plane.
 
+use std::collections::HashSet;
 use std::path::Path;
 
 use plotters::prelude::*;
@@ -10,7 +11,7 @@ use super::frame::{draw_figure, extent, float_px, padded, plot_rect, Frame, Over
 use super::labels::{value, Rect};
 use super::legend::{Entry, Swatch};
 use super::marks::{along, draw_event_marker, draw_names, draw_rings, stroke_curve, Px};
-use super::style::{verdict_color, verdict_stroke, KINDS, VERDICTS};
+use super::style::{verdict_color, verdict_stroke, Sizes, KINDS, VERDICTS};
 use super::{drawing_error, PlotError, PlotOptions};
 use crate::{BifurcationDiagram, BranchEvent, BranchSample, EventKind, Stability};
 
@@ -247,6 +248,11 @@ pub(super) fn branch_figure(
         let mut curves = Vec::new();
         // Stable runs last, so that they stay on top where branches cross.
         for &v in VERDICTS.iter().rev() {
+            // The pixels covered by the runs of this verdict drawn so far: where a run lies on
+            // one of them (the mirror image of a branch, which the map sends onto the same
+            // curve) it is drawn once, so that two dash patterns do not fill each other's gaps
+            // into a solid line.
+            let mut covered: HashSet<Px> = HashSet::new();
             for run in runs.iter().filter(|r| r.verdict == v) {
                 let pts: Vec<PxF> = run.points.iter().map(&fpx).collect();
                 let color = verdict_color(v, mono);
@@ -255,11 +261,19 @@ pub(super) fn branch_figure(
                         .map_err(drawing_error)?;
                     continue;
                 }
-                stroke_curve(root, &pts, color, verdict_stroke(v))?;
-                curves.extend(along(&pts));
-                if !run.isolated {
-                    draw_rings(root, &px(&run.points), color)?;
+                let parts = uncovered_parts(&pts, &covered);
+                covered.extend(pixels_along(&pts));
+                for part in &parts {
+                    stroke_curve(root, part, color, verdict_stroke(v))?;
+                    if !run.isolated {
+                        let whole: Vec<Px> = part
+                            .iter()
+                            .map(|p| (p.0.round() as i32, p.1.round() as i32))
+                            .collect();
+                        draw_rings(root, &whole, color)?;
+                    }
                 }
+                curves.extend(along(&pts));
             }
         }
         overlays.draw(root, px)?;
@@ -274,7 +288,14 @@ pub(super) fn branch_figure(
                 labels.push((c, name.clone()));
             }
         }
-        draw_names(root, &labels, &markers, &curves, plot_rect(chart, &frame))?;
+        draw_names(
+            root,
+            &labels,
+            &markers,
+            &curves,
+            plot_rect(chart, &frame),
+            &Sizes::of(opts),
+        )?;
         Ok(())
     })
 }
@@ -303,4 +324,54 @@ fn drawn_runs(
     runs.into_iter()
         .filter(|r| r.whole || (length(&r.points) >= 4.0 && !under_marker(&r.points)))
         .collect()
+}
+
+/// The whole pixels a polyline in fractional pixels passes through, a pixel apart.
+fn pixels_along(pts: &[PxF]) -> Vec<Px> {
+    let mut out: Vec<Px> = Vec::new();
+    let mut push = |q: PxF| {
+        let p = (q.0.round() as i32, q.1.round() as i32);
+        if out.last() != Some(&p) {
+            out.push(p);
+        }
+    };
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let n = (b.0 - a.0).hypot(b.1 - a.1).ceil().max(1.0) as usize;
+        for k in 0..n {
+            let t = k as f64 / n as f64;
+            push((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)));
+        }
+    }
+    if let Some(&q) = pts.last() {
+        push(q);
+    }
+    out
+}
+
+/// The parts of the polyline `pts` not lying on the pixels `covered` (within a pixel): its
+/// segments that leave them, joined where they follow one another.
+fn uncovered_parts(pts: &[PxF], covered: &HashSet<Px>) -> Vec<Vec<PxF>> {
+    let near =
+        |p: &Px| (-1..=1).any(|dx| (-1..=1).any(|dy| covered.contains(&(p.0 + dx, p.1 + dy))));
+    let mut parts: Vec<Vec<PxF>> = Vec::new();
+    let mut cur: Vec<PxF> = Vec::new();
+    for w in pts.windows(2) {
+        let on = !covered.is_empty() && pixels_along(w).iter().all(near);
+        if on {
+            if cur.len() >= 2 {
+                parts.push(std::mem::take(&mut cur));
+            }
+            cur.clear();
+        } else {
+            if cur.is_empty() {
+                cur.push(w[0]);
+            }
+            cur.push(w[1]);
+        }
+    }
+    if cur.len() >= 2 {
+        parts.push(cur);
+    }
+    parts
 }

@@ -10,9 +10,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::curve::PxF;
 use super::labels::Rect;
-use super::legend::{draw_legend, legend_width, Entry, Swatch};
+use super::legend::{draw_legend, Entry, Layout, Swatch};
 use super::marks::{fractional_polylines, reset_fine, stroke_path, Px, Root};
-use super::style::{overlay_stroke, Stroke};
+use super::style::{asked_size, overlay_stroke, Sizes, Stroke};
 use super::{drawing_error, PlotError, PlotOptions};
 
 /// The axes, in data coordinates.
@@ -33,8 +33,9 @@ pub(super) struct Frame<'l> {
     pub(super) y_ticks: Option<Vec<(f64, String)>>,
 }
 
-/// Writes the figure to `path`: the axes of `frame` to the left, `draw` in them, then the legend
-/// to their right, level with their top.
+/// Writes the figure to `path`: the axes of `frame`, `draw` in them, and the legend to their
+/// right, level with their top, or below them when it would take too much of the width
+/// ([`Layout`]; a figure of [`PlotOptions::width_in`] grows by the legend's height).
 pub(super) fn draw_figure(
     path: &Path,
     opts: &PlotOptions,
@@ -42,40 +43,81 @@ pub(super) fn draw_figure(
     legend: &[Entry],
     draw: impl FnOnce(&Root, &Chart) -> Result<(), PlotError>,
 ) -> Result<(), PlotError> {
-    let legend_w = legend_width(legend, opts.width);
-    write_svg(path, opts, |root| {
-        let (left, _) = root.split_horizontally(opts.width - legend_w);
-        let chart = axes(&left, opts, frame)?;
+    let sizes = Sizes::of(opts);
+    let (width, base) = opts.pixels();
+    let layout = Layout::of(legend, &sizes, width);
+    let height = match layout {
+        Layout::Below { height, .. } if opts.width_in.is_some() => base + height,
+        _ => base,
+    };
+    write_svg(path, opts, (width, height), |root| {
+        let (area, _) = match layout {
+            Layout::Right(w) => root.split_horizontally(width - w),
+            Layout::Below { height: h, .. } => root.split_vertically(height - h),
+        };
+        let chart = axes(&area, opts, frame, &sizes)?;
         if let Some(ticks) = &frame.y_ticks {
-            draw_y_ticks(root, &chart, frame, ticks)?;
+            draw_y_ticks(root, &chart, frame, ticks, &sizes)?;
         }
         draw(root, &chart)?;
-        let top = chart.backend_coord(&(frame.x.0, frame.y.1)).1;
-        draw_legend(
-            root,
-            ((opts.width - legend_w) as i32 + 10, top),
-            legend,
-            opts.monochrome,
-        )
+        match layout {
+            Layout::Right(w) => {
+                let top = chart.backend_coord(&(frame.x.0, frame.y.1)).1;
+                draw_legend(
+                    root,
+                    ((width - w) as i32 + 10, top),
+                    legend,
+                    opts.monochrome,
+                    &sizes,
+                    None,
+                )
+            }
+            Layout::Below { wrap, height: h } => draw_legend(
+                root,
+                (15, (height - h) as i32 + 2),
+                legend,
+                opts.monochrome,
+                &sizes,
+                Some(wrap),
+            ),
+        }
     })
 }
 
-/// Renders `draw` into an SVG string of `opts.width × opts.height` and writes it to `path`
-/// ([`write_whole`]).
+/// Renders `draw` into an SVG string of `size` pixels and writes it to `path` ([`write_whole`]),
+/// its curves in fractional pixels ([`fractional_polylines`]); with [`PlotOptions::width_in`]
+/// the SVG's width and height are in inches (its view box in pixels, 144 an inch).
 pub(super) fn write_svg(
     path: &Path,
     opts: &PlotOptions,
+    size: (u32, u32),
     draw: impl FnOnce(&Root) -> Result<(), PlotError>,
 ) -> Result<(), PlotError> {
     let mut svg = String::new();
     reset_fine();
     {
-        let root = SVGBackend::with_string(&mut svg, (opts.width, opts.height)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
         root.fill(&WHITE).map_err(drawing_error)?;
         draw(&root)?;
         root.present().map_err(drawing_error)?;
     }
-    write_whole(path, fractional_polylines(&svg).as_bytes())
+    let mut svg = fractional_polylines(&svg);
+    if let Some(width_in) = opts.width_in {
+        // The width as asked, the height in the proportion of the pixels (about 144 an inch).
+        let per_in = f64::from(size.0) / width_in;
+        let inches = |px: u32| {
+            let s = format!("{:.3}", f64::from(px) / per_in);
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        };
+        let old = format!("width=\"{}\" height=\"{}\"", size.0, size.1);
+        let new = format!(
+            "width=\"{}in\" height=\"{}in\"",
+            inches(size.0),
+            inches(size.1)
+        );
+        svg = svg.replacen(&old, &new, 1);
+    }
+    write_whole(path, svg.as_bytes())
 }
 
 thread_local! {
@@ -120,8 +162,9 @@ fn draw_y_ticks(
     chart: &Chart,
     frame: &Frame,
     ticks: &[(f64, String)],
+    sizes: &Sizes,
 ) -> Result<(), PlotError> {
-    let font = ("sans-serif", 16)
+    let font = ("sans-serif", asked_size(sizes.tick))
         .into_font()
         .color(&BLACK)
         .pos(Pos::new(HPos::Right, VPos::Center));
@@ -144,31 +187,69 @@ fn draw_y_ticks(
     Ok(())
 }
 
-/// The axes, on the left part of the figure (the legend panel is to their right).
+/// The width in pixels of the widest of the tick labels at a font of `size` pixels (0.62 em a
+/// character, DejaVu Sans's digits are 0.64 em and the minus 0.84 em).
+fn ticks_width<'a>(labels: impl Iterator<Item = &'a str>, size: f64) -> f64 {
+    labels
+        .map(|l| {
+            l.chars()
+                .map(|c| if c == '−' { 0.84 } else { 0.64 })
+                .sum::<f64>()
+        })
+        .fold(0.0, f64::max)
+        * size
+}
+
+/// The axes, on the given part of the figure, their texts at `sizes`: the areas for the tick
+/// labels and axis names made to fit them, and no more ticks than fit side by side.
 fn axes<'a, 'b>(
     area: &'a Root<'b>,
     opts: &PlotOptions,
     frame: &Frame,
+    sizes: &Sizes,
 ) -> Result<Chart<'a, 'b>, PlotError> {
     let ((x0, x1), (y0, y1)) = (frame.x, frame.y);
+    let (area_w, area_h) = area.dim_in_pixel();
     let mut builder = ChartBuilder::on(area);
     if !opts.title.is_empty() {
         // Centred over the axes: shrink a long title so that it fits their width (about 0.55 em
-        // a character).
-        let width = area.dim_in_pixel().0 as f64;
+        // a character), down to the size of the tick labels.
         let chars = opts.title.chars().count().max(1) as f64;
-        let size = (width / (0.55 * chars)).clamp(10.0, 24.0);
-        builder.caption(&opts.title, ("sans-serif", size));
+        let size = (f64::from(area_w) / (0.55 * chars)).clamp(sizes.tick, sizes.title);
+        builder.caption(&opts.title, ("sans-serif", asked_size(size)));
     }
-    let mut chart = builder
-        .margin(15)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(drawing_error)?;
     let fx = tick_format(x0, x1);
     let fy = tick_format(y0, y1);
+    // Candidate labels: the ends and the middle of each range, with the digits of its ticks.
+    let samples = |f: &dyn Fn(&f64) -> String, a: f64, b: f64| {
+        [a, b, 0.5 * (a + b), a + 0.1 * (b - a), b - 0.1 * (b - a)].map(|v| f(&v))
+    };
+    let y_labels: Vec<String> = match &frame.y_ticks {
+        Some(t) => t.iter().map(|(_, l)| l.clone()).collect(),
+        None => samples(&fy, y0, y1).to_vec(),
+    };
+    let x_labels = samples(&fx, x0, x1);
+    let y_tick_w = ticks_width(y_labels.iter().map(String::as_str), sizes.tick);
+    let x_tick_w = ticks_width(x_labels.iter().map(String::as_str), sizes.tick);
+    let y_area = (y_tick_w + 12.0 + 1.5 * sizes.label + 6.0).ceil() as u32;
+    let x_area = (8.0 + 1.3 * sizes.tick + 1.5 * sizes.label).ceil() as u32;
+    let margin = 15;
+    let mut chart = builder
+        .margin(margin)
+        .margin_right(margin + (0.5 * x_tick_w).ceil() as u32)
+        .x_label_area_size(x_area)
+        .y_label_area_size(y_area)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(drawing_error)?;
+    // As many ticks as fit: labels at least 1.5 em apart across, 1.8 lines apart up.
+    let axis_w = f64::from(area_w.saturating_sub(y_area + 2 * margin));
+    let axis_h = f64::from(area_h.saturating_sub(x_area + 2 * margin));
+    let nx = (axis_w / (x_tick_w + 1.5 * sizes.tick))
+        .floor()
+        .clamp(2.0, 10.0) as usize;
+    let ny = (axis_h / (1.8 * sizes.tick)).floor().clamp(2.0, 10.0) as usize;
     let mut mesh_style = chart.configure_mesh();
+    mesh_style.x_labels(nx).y_labels(ny);
     if frame.y_ticks.is_some() {
         // Drawn by `draw_y_ticks`; plotters' own y grid lines and labels left out.
         mesh_style.y_labels(0);
@@ -178,8 +259,8 @@ fn axes<'a, 'b>(
         .y_desc(frame.y_label)
         .x_label_formatter(&fx)
         .y_label_formatter(&fy)
-        .label_style(("sans-serif", 16))
-        .axis_desc_style(("sans-serif", 19))
+        .label_style(("sans-serif", asked_size(sizes.tick)))
+        .axis_desc_style(("sans-serif", asked_size(sizes.label)))
         .light_line_style(RGBColor(238, 238, 238))
         .bold_line_style(RGBColor(215, 215, 215));
     if !frame.mesh {
@@ -189,21 +270,12 @@ fn axes<'a, 'b>(
     Ok(chart)
 }
 
-/// Tick labels as plain decimals, with as many digits as the tick spacing needs.
+/// Tick labels: decimals with as many digits as the tick spacing needs and a true minus sign
+/// (U+2212); [`crate::style::tick_label`] (the one format of both renderers).
 pub(super) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let step = ((hi - lo) / 10.0).abs().max(f64::MIN_POSITIVE);
-    let digits = ((-step.log10()).ceil().max(0.0) as usize + 1).min(12);
-    move |v: &f64| {
-        if v.abs() < step * 1e-6 {
-            return "0".into();
-        }
-        let s = format!("{:.*}", digits, v);
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    }
+    let scale = lo.abs().max(hi.abs());
+    move |v: &f64| crate::style::tick_label(*v, step, scale)
 }
 
 /// The range `[lo, hi]` widened by 5 % on each side (a point: by half its size, at least 1e−3).

@@ -6,9 +6,10 @@ use plotters::prelude::*;
 use super::marks::{draw_cross, draw_event_marker, draw_rings, shade_cell, stroke_boundary};
 use super::marks::{draw_fixed_point, draw_orbit_event_marker};
 use super::marks::{stroke_path, Px, Root};
-use super::style::Stroke;
+use super::style::{asked_size, Sizes, Stroke};
 use super::{drawing_error, PlotError};
 use crate::{EventKind, OrbitEventKind, Stability};
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// What a legend row shows left of its text.
 pub(super) enum Swatch {
@@ -35,15 +36,80 @@ pub(super) enum Swatch {
 /// A legend row.
 pub(super) type Entry = (Swatch, String);
 
-/// The legend's font size (plotters' units: the SVG says `font-size` 17/1.24 ≈ 13.7 px).
-const FONT: f64 = 17.0;
+/// The width of one legend entry in pixels: the swatch (44), a gap, its text ([`text_ems`] at
+/// the legend's size) and a margin.
+fn entry_width(entry: &Entry, sizes: &Sizes) -> u32 {
+    44 + 10 + (text_ems(&entry.1) * sizes.legend).ceil() as u32 + 16
+}
 
-/// Width of the legend panel: the gap, the swatch, its longest text ([`text_ems`] at the SVG's
-/// font size) and a margin, at most half the figure.
-pub(super) fn legend_width(entries: &[Entry], width: u32) -> u32 {
-    let ems = entries.iter().map(|e| text_ems(&e.1)).fold(0.0, f64::max);
-    let text = (ems * FONT / 1.24).ceil() as u32;
-    (10 + 44 + 10 + text + 16).clamp(120, width / 2)
+/// The height of a legend row in pixels.
+pub(super) fn row_height(sizes: &Sizes) -> i32 {
+    (1.6 * sizes.legend).ceil().max(18.0) as i32
+}
+
+/// Width of the legend panel to the right of the axes: a gap and the widest entry, at least 120
+/// pixels (not clamped: a panel wider than the figure allows goes below the axes instead, see
+/// [`Layout`]).
+pub(super) fn legend_width(entries: &[Entry], sizes: &Sizes) -> u32 {
+    (10 + entries
+        .iter()
+        .map(|e| entry_width(e, sizes))
+        .max()
+        .unwrap_or(0))
+    .max(120)
+}
+
+/// Where the legend goes: in a panel to the right of the axes when it takes at most 40 % of
+/// the figure's width, else below the axes, its entries side by side in rows as wide as the
+/// figure (as words in lines of text).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Layout {
+    /// A panel this many pixels wide to the right.
+    Right(u32),
+    /// Below the axes: rows at most `wrap` pixels wide, `height` pixels in all.
+    Below { wrap: u32, height: u32 },
+}
+
+impl Layout {
+    pub(super) fn of(entries: &[Entry], sizes: &Sizes, width: u32) -> Layout {
+        let right = legend_width(entries, sizes);
+        if entries.is_empty() || f64::from(right) <= 0.4 * f64::from(width) {
+            return Layout::Right(right.min(width / 2));
+        }
+        let wrap = width.saturating_sub(30);
+        let rows = positions(entries, sizes, Some(wrap))
+            .last()
+            .map_or(0, |p| p.1 + 1) as i32;
+        Layout::Below {
+            wrap,
+            height: (rows * row_height(sizes) + 12) as u32,
+        }
+    }
+}
+
+/// Where each entry goes: its offset across and its row. Without `wrap`, one entry a row;
+/// with it, entries side by side, a new row where the next would pass `wrap` pixels.
+fn positions(entries: &[Entry], sizes: &Sizes, wrap: Option<u32>) -> Vec<(i32, usize)> {
+    let mut out = Vec::with_capacity(entries.len());
+    let (mut x, mut row) = (0u32, 0usize);
+    for e in entries {
+        let w = entry_width(e, sizes);
+        match wrap {
+            None => {
+                out.push((0, row));
+                row += 1;
+            }
+            Some(max) => {
+                if x > 0 && x + w > max {
+                    x = 0;
+                    row += 1;
+                }
+                out.push((x as i32, row));
+                x += w;
+            }
+        }
+    }
+    out
 }
 
 /// The width of `text` in ems, by the glyph widths of DejaVu Sans (a wide sans-serif: a viewer's
@@ -65,18 +131,26 @@ fn text_ems(text: &str) -> f64 {
         .sum()
 }
 
-/// Draws the legend entries top-down in the panel whose top-left corner is `(x, y)` (backend
-/// pixels).
+/// Draws the legend entries from the top-left corner `(x, y)` (backend pixels), at the
+/// legend's size of `sizes`: one a row, or with `wrap` side by side in rows of at most `wrap`
+/// pixels.
 pub(super) fn draw_legend(
     root: &Root,
     (x, y): Px,
     entries: &[Entry],
     mono: bool,
+    sizes: &Sizes,
+    wrap: Option<u32>,
 ) -> Result<(), PlotError> {
-    const ROW: i32 = 26;
-    let font = ("sans-serif", FONT).into_font().color(&BLACK);
-    for (k, (swatch, text)) in entries.iter().enumerate() {
-        let cy = y + ROW * k as i32 + ROW / 2;
+    let row = row_height(sizes);
+    let at = positions(entries, sizes, wrap);
+    let font = ("sans-serif", asked_size(sizes.legend))
+        .into_font()
+        .color(&BLACK)
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    for ((swatch, text), &(dx, r)) in entries.iter().zip(&at) {
+        let cy = y + row * r as i32 + row / 2;
+        let x = x + dx;
         let (sx0, sx1) = (x, x + 44);
         let line = [(sx0, cy), (sx1, cy)];
         match swatch {
@@ -121,7 +195,7 @@ pub(super) fn draw_legend(
             Swatch::FixedPoint => draw_fixed_point(root, ((sx0 + sx1) / 2, cy))?,
             Swatch::Text => {}
         }
-        root.draw(&Text::new(text.clone(), (sx1 + 10, cy - 8), font.clone()))
+        root.draw(&Text::new(text.clone(), (sx1 + 10, cy), font.clone()))
             .map_err(drawing_error)?;
     }
     Ok(())
@@ -171,12 +245,27 @@ mod tests {
             .iter()
             .map(|&(text, _)| (Swatch::Text, text.to_string()))
             .collect();
-        let panel = f64::from(legend_width(&entries, 900));
-        let text = 9.9775 * FONT / 1.24;
+        let sizes = Sizes::of(&super::super::PlotOptions::default());
+        let panel = f64::from(legend_width(&entries, &sizes));
+        let text = 9.9775 * sizes.legend;
         // The text starts 10 + 44 + 10 pixels into the panel; at least 10 pixels are left over.
         assert!(
             64.0 + text + 10.0 <= panel,
             "{text} pixels of text in a panel of {panel}"
         );
+        // At a column's width it goes below the axes, in rows that fit across.
+        let column = super::super::PlotOptions::column();
+        match Layout::of(&entries, &sizes, column.pixels().0) {
+            Layout::Below { wrap, height } => {
+                let at = positions(&entries, &sizes, Some(wrap));
+                for (e, p) in entries.iter().zip(&at) {
+                    let end = p.0 as u32 + entry_width(e, &sizes);
+                    assert!(end <= wrap, "{:?} ends at {end} of {wrap}", e.1);
+                }
+                let rows = at.last().unwrap().1 as i32 + 1;
+                assert_eq!(height as i32, rows * row_height(&sizes) + 12);
+            }
+            other => panic!("{other:?}"),
+        }
     }
 }

@@ -10,8 +10,8 @@ use plotters::prelude::*;
 use super::curve::{dashes, smooth, PxF};
 use super::labels::{place, Placed, Rect};
 use super::style::BOUNDARY_UNDERLAY;
+use super::style::{asked_size, Sizes, FONT, HATCH_INK, HATCH_SPACING};
 use super::style::{boundary_color, boundary_stroke, cell_fill, Pattern, Stroke};
-use super::style::{font_px, written_size, FONT, HATCH_INK, HATCH_SPACING};
 use super::{drawing_error, PlotError};
 use crate::{EventKind, OrbitEventKind, Stability};
 
@@ -186,11 +186,12 @@ pub(super) fn draw_names(
     markers: &[Rect],
     curves: &[Px],
     area: Rect,
+    sizes: &Sizes,
 ) -> Result<Vec<Placed>, PlotError> {
-    // Asked for at the style's size in pixels, as every font of the SVGs: plotters writes it
-    // 1.24 times smaller, and the labels are placed at the size written.
-    let asked = font_px(FONT.annotation_pt);
-    let size = written_size(asked);
+    // Written at the annotation size (plotters is asked for 1.24 times more), and placed at the
+    // size written.
+    let size = sizes.annotation;
+    let asked = asked_size(size);
     let placed = place(names, markers, curves, area, size);
     let font = (FONT.family, asked).into_font().color(&BLACK);
     for p in &placed {
@@ -262,9 +263,22 @@ fn stroke_fine(root: &Root, pts: &[PxF], color: RGBColor, width: u32) -> Result<
     if pts.len() < 2 {
         return Ok(());
     }
+    // To 1/100 pixel, each point once: a point that rounds to the one before it is left out
+    // (a dense run repeats points many times over).
     let mut points = String::new();
+    let mut last = String::new();
+    let mut n = 0;
     for p in pts {
-        points.push_str(&format!("{:.2},{:.2} ", p.0, p.1));
+        let q = format!("{:.2},{:.2}", p.0, p.1);
+        if q != last {
+            points.push_str(&q);
+            points.push(' ');
+            n += 1;
+            last = q;
+        }
+    }
+    if n < 2 {
+        return Ok(());
     }
     let RGBColor(r, g, b) = color;
     let line = format!(

@@ -23,8 +23,9 @@
 //!   dotted (D = 0), medium-dashed (1:2) or long-dashed (1:3), each labelled with its name.
 //!
 //! - along a family of periodic orbits, the same strokes by stability: **thick solid** where
-//!   [`OrbitStability::Elliptic`], **dashed** where [`OrbitStability::Hyperbolic`], **dotted**
-//!   where [`OrbitStability::InverseHyperbolic`], medium solid where
+//!   [`OrbitStability::Elliptic`], **dashed** where [`OrbitStability::Hyperbolic`], **long
+//!   dashes, wider** where [`OrbitStability::InverseHyperbolic`] (so that a run near k = −1
+//!   does not merge with the dotted line k = −1 of the Python figures), medium solid where
 //!   [`OrbitStability::Parabolic`]; its events are marked ▲ [`OrbitEventKind::Fold`],
 //!   ● [`OrbitEventKind::BranchPoint`] and ◆ [`OrbitEventKind::PeriodDoubling`], each named
 //!   beside its marker.
@@ -208,7 +209,8 @@ fn drawing_error<E: fmt::Display>(e: E) -> PlotError {
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlotOptions {
-    /// Caption above the axes (empty: none; default empty).
+    /// Caption above the axes (default empty: none; a figure for a journal has its caption
+    /// below it, in the text).
     pub title: String,
     /// Label of the horizontal axis: the parameter's name (default `"s"`, the parameter of a
     /// bifurcation diagram). The figures whose horizontal axis is something else say what it is
@@ -235,6 +237,59 @@ pub struct PlotOptions {
     /// diagrams of branches and of families of periodic orbits (default `false`: names only
     /// where the figure writes them, the legend tells the markers apart).
     pub event_values: bool,
+    /// The printed width in inches (default `None`: [`Self::width`] × [`Self::height`] pixels, as
+    /// an SVG without units). With `Some(w)` the SVG says its size in inches (`width="3.4in"`),
+    /// is laid out at [`PX_PER_PT`](crate::style::PX_PER_PT) pixels a point (`w × 144` pixels
+    /// wide, the height in the proportion of [`Self::height`] to [`Self::width`]), and its texts
+    /// are printed at their sizes in points: [`COLUMN_WIDTH_IN`](crate::style::COLUMN_WIDTH_IN)
+    /// (3.4 in) and [`PAGE_WIDTH_IN`](crate::style::PAGE_WIDTH_IN) (7 in) are a journal's
+    /// column and page ([`Self::column`], [`Self::page`]). At least 2.8 in, at most 40 in.
+    pub width_in: Option<f64>,
+    /// The size of the tick labels in points (default [`FONT`](crate::style::FONT)`.tick_pt`,
+    /// 8 pt; 5 to 24); the axis labels, legend and event names keep their proportions to it.
+    /// Every text is written at its size: at 2 pixels a point, 8 pt is `font-size="16"`.
+    pub font_pt: f64,
+}
+
+impl PlotOptions {
+    /// The options of a figure one journal column wide (3.4 in), texts at their sizes in points
+    /// (ticks 8 pt, nothing under 7 pt).
+    ///
+    /// ```
+    /// use routh::plot::PlotOptions;
+    ///
+    /// let opts = PlotOptions::column();
+    /// assert_eq!(opts.width_in, Some(3.4));
+    /// assert_eq!(opts.pixels(), (490, 327));
+    /// ```
+    pub fn column() -> Self {
+        PlotOptions {
+            width_in: Some(crate::style::COLUMN_WIDTH_IN),
+            ..PlotOptions::default()
+        }
+    }
+
+    /// The options of a figure a journal page wide (7 in).
+    pub fn page() -> Self {
+        PlotOptions {
+            width_in: Some(crate::style::PAGE_WIDTH_IN),
+            ..PlotOptions::default()
+        }
+    }
+
+    /// The size of the figure in the SVG's pixels before any legend is put below its axes:
+    /// [`Self::width`] × [`Self::height`], or, with [`Self::width_in`], 144 pixels an inch and
+    /// the height in proportion.
+    pub fn pixels(&self) -> (u32, u32) {
+        match self.width_in {
+            Some(w) if w.is_finite() && w > 0.0 && self.width > 0 => {
+                let px = (w * 72.0 * crate::style::PX_PER_PT).round();
+                let h = (px * f64::from(self.height) / f64::from(self.width)).round();
+                (px as u32, h as u32)
+            }
+            _ => (self.width, self.height),
+        }
+    }
 }
 
 /// A named reference curve of [`PlotOptions::overlays`], drawn in black over the data (long
@@ -291,16 +346,32 @@ impl Default for PlotOptions {
             monochrome: false,
             overlays: Vec::new(),
             event_values: false,
+            width_in: None,
+            font_pt: crate::style::FONT.tick_pt,
         }
     }
 }
 
 impl PlotOptions {
     fn check(&self) -> Result<(), PlotError> {
-        if self.width < 400 || self.height < 250 {
+        if !(self.font_pt.is_finite() && (5.0..=24.0).contains(&self.font_pt)) {
             return Err(PlotError::InvalidOptions(format!(
-                "a figure of {} × {} pixels is too small (at least 400 × 250)",
-                self.width, self.height
+                "a font of {} pt (5 to 24)",
+                self.font_pt
+            )));
+        }
+        if let Some(w) = self.width_in {
+            let min = 400.0 / (72.0 * crate::style::PX_PER_PT);
+            if !(w.is_finite() && (min..=40.0).contains(&w)) {
+                return Err(PlotError::InvalidOptions(format!(
+                    "a figure {w} in wide (at least {min:.1} in, at most 40 in)"
+                )));
+            }
+        }
+        let (w, h) = self.pixels();
+        if w < 400 || h < 250 {
+            return Err(PlotError::InvalidOptions(format!(
+                "a figure of {w} × {h} pixels is too small (at least 400 × 250)"
             )));
         }
         Ok(())
@@ -511,7 +582,7 @@ pub fn stability_atlas_svg<P: AsRef<Path>>(
 /// `k = (μ + 1/μ)/2` up against the energy `E` across, the lines `k = ±1` between which the
 /// orbits are elliptic (linearly stable), the runs of the family styled by
 /// [`PeriodicOrbit::stability`](crate::PeriodicOrbit::stability) (thick solid elliptic, dashed
-/// hyperbolic, dotted inverse hyperbolic; the style changes where `k` crosses ±1, interpolated
+/// hyperbolic, long-dashed inverse hyperbolic; the style changes where `k` crosses ±1, interpolated
 /// between orbits), and its events ([`OrbitFamily::events`]) marked ▲ fold, ● branch point,
 /// ◆ period doubling, each named beside its marker.
 ///
@@ -604,10 +675,10 @@ pub fn orbit_periods_svg<P: AsRef<Path>>(
 /// SVG: an orthographic projection of the unit sphere seen from the body direction `view` (the
 /// viewer on the ray through `view`; up on the page is `e₃`, or `e₂` when `view` is within about
 /// 25° of `±e₃`). Each trajectory's `γ` is a curve, solid on the near side (`γ·view ≥ 0`) and thin
-/// dotted on the far side; the trajectories are coloured in their order from blue to orange (all
-/// black with [`PlotOptions::monochrome`]). The limb, the principal planes `γᵢ = 0` (grey) and
-/// the body axes `±eᵢ` on the near side (dots, named) give the orientation; the legend names the
-/// first and last trajectory and the view. Sample periodic orbits with
+/// dotted on the far side; the trajectories are coloured in their order from blue to orange
+/// (from black to grey with [`PlotOptions::monochrome`]). The limb, the principal planes
+/// `γᵢ = 0` (grey) and the body axes `±eᵢ` on the near side (dots, named) give the orientation;
+/// the legend names the first and last trajectory and the view. Sample periodic orbits with
 /// [`orbit_path`](crate::orbit_path).
 ///
 /// # Errors

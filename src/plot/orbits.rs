@@ -11,13 +11,13 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::curve::PxF;
 use super::frame::{draw_figure, extent, float_px, padded, plot_rect, write_svg, Frame, Overlays};
 use super::labels::{value, Rect};
-use super::legend::{draw_legend, legend_width, Entry, Swatch};
+use super::legend::{draw_legend, Entry, Layout, Swatch};
 use super::marks::{
     along, draw_fixed_point, draw_names, draw_orbit_event_marker, stroke_curve, stroke_path, Px,
 };
 use super::style::{
-    orbit_color, orbit_event_name, orbit_stroke, orbit_verdict_name, palette, ramp, Stroke,
-    ORBIT_KINDS, ORBIT_VERDICTS, PARABOLIC_LINE,
+    asked_size, orbit_color, orbit_event_name, orbit_stroke, orbit_verdict_name, palette, ramp,
+    Sizes, Stroke, FONT, ORBIT_KINDS, ORBIT_VERDICTS, PARABOLIC_LINE,
 };
 use super::{drawing_error, x_label_or, PlotError, PlotOptions};
 use crate::{OrbitFamily, OrbitStability, PeriodicOrbit, PoincareSection, Trajectory, Vector3};
@@ -33,26 +33,9 @@ pub fn stability_index_axis(k: f64) -> f64 {
     }
 }
 
-/// The label of `±10ⁿ`.
+/// The label of `±10ⁿ` ([`crate::style::decade_label`]).
 fn decade_label(n: i32, negative: bool) -> String {
-    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-    let body = match n {
-        1 => "10".to_string(),
-        2 => "100".to_string(),
-        _ => {
-            let digits: String = n
-                .to_string()
-                .chars()
-                .map(|c| SUP[c.to_digit(10).unwrap_or(0) as usize])
-                .collect();
-            format!("10{digits}")
-        }
-    };
-    if negative {
-        format!("−{body}")
-    } else {
-        body
-    }
+    crate::style::decade_label(i64::from(n), negative)
 }
 
 /// The ticks of the index axis over `[lo, hi]` (axis coordinates): `0`, `±1` (and `±0.5` on a
@@ -276,7 +259,7 @@ pub(super) fn family_figure(
             v
         };
         if axis == FamilyAxis::Index {
-            let font = ("sans-serif", 14)
+            let font = (FONT.family, asked_size(Sizes::of(opts).annotation))
                 .into_font()
                 .color(&PARABOLIC_LINE)
                 .pos(Pos::new(HPos::Right, VPos::Bottom));
@@ -321,7 +304,15 @@ pub(super) fn family_figure(
                 },
             ));
         }
-        draw_names(root, &names, &markers, &curves, plot_rect(chart, &frame)).map(|_| ())
+        draw_names(
+            root,
+            &names,
+            &markers,
+            &curves,
+            plot_rect(chart, &frame),
+            &Sizes::of(opts),
+        )
+        .map(|_| ())
     })
 }
 
@@ -456,7 +447,7 @@ fn short(x: f64) -> String {
     if s == "-0" {
         "0".into()
     } else {
-        s
+        s.replacen('-', "−", 1)
     }
 }
 
@@ -530,14 +521,27 @@ pub(super) fn sphere_figure(
             short(w.z)
         ),
     ));
-    let legend_w = legend_width(&legend, opts.width);
-    write_svg(path, opts, |root| {
-        let left_w = (opts.width - legend_w) as i32;
+    let sizes = Sizes::of(opts);
+    let (width, base) = opts.pixels();
+    // The legend to the right of the sphere, or below it when the figure is narrow (a figure
+    // of `width_in` then grows by the legend's height).
+    let layout = Layout::of(&legend, &sizes, width);
+    let (legend_w, below) = match layout {
+        Layout::Right(w) => (w, 0),
+        Layout::Below { height, .. } => (0, height),
+    };
+    let height = if opts.width_in.is_some() {
+        base + below
+    } else {
+        base
+    };
+    write_svg(path, opts, (width, height), |root| {
+        let left_w = (width - legend_w) as i32;
         let mut top = 15;
         if !opts.title.is_empty() {
             let chars = opts.title.chars().count().max(1) as f64;
-            let size = (left_w as f64 / (0.55 * chars)).clamp(10.0, 24.0);
-            let font = ("sans-serif", size)
+            let size = (left_w as f64 / (0.55 * chars)).clamp(sizes.tick, sizes.title);
+            let font = ("sans-serif", asked_size(size))
                 .into_font()
                 .color(&BLACK)
                 .pos(Pos::new(HPos::Center, VPos::Top));
@@ -545,7 +549,7 @@ pub(super) fn sphere_figure(
                 .map_err(drawing_error)?;
             top += size as i32 + 10;
         }
-        let h = opts.height as i32;
+        let h = (height - below) as i32;
         let radius = ((left_w - 60).min(h - top - 30) / 2).max(20);
         let centre = (left_w / 2, top + (h - top) / 2);
         // In fractional pixels: the curves are smoothed before they are rounded.
@@ -575,7 +579,9 @@ pub(super) fn sphere_figure(
         root.draw(&Circle::new(centre, radius as u32, BLACK.stroke_width(1)))
             .map_err(drawing_error)?;
         // The body axes on the near side.
-        let font = ("sans-serif", 15).into_font().color(&BLACK);
+        let font = (FONT.family, asked_size(sizes.annotation))
+            .into_font()
+            .color(&BLACK);
         for (i, name) in ["e₁", "e₂", "e₃"].iter().enumerate() {
             for sign in [1.0, -1.0] {
                 let e = Vector3::ith(i, sign);
@@ -590,7 +596,8 @@ pub(super) fn sphere_figure(
                 } else {
                     format!("−{name}")
                 };
-                root.draw(&Text::new(label, (c.0 + 6, c.1 - 18), font.clone()))
+                let lift = sizes.annotation.ceil() as i32 + 3;
+                root.draw(&Text::new(label, (c.0 + 6, c.1 - lift), font.clone()))
                     .map_err(drawing_error)?;
             }
         }
@@ -598,7 +605,12 @@ pub(super) fn sphere_figure(
             let pts: Vec<Vector3<f64>> = t.gamma.iter().map(|g| g.normalize()).collect();
             draw_on_sphere(root, &pts, &w, &to_fpx, ramp(k, n, mono), 2)?;
         }
-        draw_legend(root, (left_w + 10, top), &legend, mono)
+        match layout {
+            Layout::Right(_) => draw_legend(root, (left_w + 10, top), &legend, mono, &sizes, None),
+            Layout::Below { wrap, .. } => {
+                draw_legend(root, (15, h + 2), &legend, mono, &sizes, Some(wrap))
+            }
+        }
     })
 }
 

@@ -41,14 +41,41 @@ fn px(pt: f64) -> u32 {
     (pt * PX_PER_PT).round().max(1.0) as u32
 }
 
-/// A font size in pixels.
-pub(super) fn font_px(pt: f64) -> f64 {
-    pt * PX_PER_PT
+/// The size to ask plotters for so that it writes `font-size` `px` or a little more (it
+/// divides by 1.24, and its axes take whole pixels): `⌈1.24 px⌉`.
+pub(super) fn asked_size(px: f64) -> f64 {
+    (px * 1.24 - 1e-9).ceil()
 }
 
-/// The `font-size` plotters writes in the SVG for a font asked for at `px` (over 1.24).
-pub(super) fn written_size(px: f64) -> f64 {
-    px / 1.24
+/// The sizes of a figure's texts in the SVG's pixels, as written (`font-size`): each text at
+/// its size in points of [`FONT`] times [`PX_PER_PT`], all scaled so that the tick labels are
+/// [`PlotOptions::font_pt`](super::PlotOptions::font_pt). Ask plotters for
+/// [`asked_size`] of these.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Sizes {
+    pub(super) tick: f64,
+    pub(super) label: f64,
+    pub(super) legend: f64,
+    pub(super) annotation: f64,
+    pub(super) title: f64,
+}
+
+impl Sizes {
+    pub(super) fn of(opts: &super::PlotOptions) -> Sizes {
+        let k = if opts.font_pt.is_finite() && opts.font_pt > 0.0 {
+            opts.font_pt / FONT.tick_pt
+        } else {
+            1.0
+        };
+        let px = |pt: f64| pt * k * PX_PER_PT;
+        Sizes {
+            tick: px(FONT.tick_pt),
+            label: px(FONT.label_pt),
+            legend: px(FONT.legend_pt),
+            annotation: px(FONT.annotation_pt),
+            title: px(FONT.title_pt),
+        }
+    }
 }
 
 /// The stroke of a look, in pixels.
@@ -116,7 +143,9 @@ pub(super) enum Stroke {
 }
 
 /// The white band under a boundary curve of an atlas, so that it stands out of the shading.
-pub(super) const BOUNDARY_UNDERLAY: Stroke = Stroke::Solid(7);
+/// A pixel either side of the boundary's 3 pixels: wider bands read as white gaps between the
+/// regions.
+pub(super) const BOUNDARY_UNDERLAY: Stroke = Stroke::Solid(5);
 
 /// The strokes of [`Overlay`](super::Overlay) curves, in turn: long dashes, short dashes, a thin
 /// line.
@@ -227,8 +256,9 @@ pub(super) const ORBIT_KINDS: [OrbitEventKind; 3] = [
 ];
 
 /// The stroke of a run of a family of periodic orbits, as the verdicts of steady motions: thick
-/// solid where elliptic (stable), dashed where hyperbolic, dotted where inverse hyperbolic, and a
-/// medium solid line where parabolic (along a whole run only in degenerate families).
+/// solid where elliptic (stable), dashed where hyperbolic, long dashes (wider) where inverse
+/// hyperbolic, and a medium solid line where parabolic (along a whole run only in degenerate
+/// families).
 pub(super) fn orbit_stroke(v: OrbitStability) -> Stroke {
     stroke_of(the("orbit_verdict", orbit_key(v)))
 }
@@ -277,7 +307,8 @@ pub(super) fn palette(k: usize, mono: bool) -> RGBColor {
 }
 
 /// The colour of the `k`-th of `n` orbits in order (a family by energy): from dark blue through
-/// purple to dark orange; black in a monochrome figure.
+/// purple to dark orange; in a monochrome figure from black to a mid grey, so that the first
+/// and the last orbit differ without colour too.
 pub(super) fn ramp(k: usize, n: usize, mono: bool) -> RGBColor {
     let t = if n > 1 {
         k as f64 / (n - 1) as f64
@@ -285,10 +316,12 @@ pub(super) fn ramp(k: usize, n: usize, mono: bool) -> RGBColor {
         0.0
     };
     let mix = |a: f64, b: f64| (a + (b - a) * t).round().clamp(0.0, 255.0) as u8;
-    ink(
-        RGBColor(mix(20.0, 215.0), mix(60.0, 95.0), mix(190.0, 0.0)),
-        mono,
-    )
+    if mono {
+        let g = mix(0.0, 150.0);
+        RGBColor(g, g, g)
+    } else {
+        RGBColor(mix(20.0, 215.0), mix(60.0, 95.0), mix(190.0, 0.0))
+    }
 }
 
 #[cfg(test)]

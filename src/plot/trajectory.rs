@@ -4,10 +4,13 @@
 
 use std::path::Path;
 
-use plotters::element::{DashedPathElement, DottedPathElement};
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::frame::{tick_format, write_whole};
+use super::curve::PxF;
+use super::frame::{clip_polyline, float_px, tick_format, write_svg, Frame};
+use super::marks::{stroke_curve, stroke_path};
+use super::style::{asked_size, Sizes, Stroke};
 use super::{drawing_error, PlotError, PlotOptions};
 use crate::nalgebra::UnitQuaternion;
 use crate::{Trajectory, Vector3};
@@ -67,38 +70,62 @@ pub fn apex_locus_svg<P: AsRef<Path>>(
     let half = (0.5 * (x1 - x0).max(y1 - y0)).max(1e-3) * 1.1;
     let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
     let (xr, yr) = ((cx - half)..(cx + half), (cy - half)..(cy + half));
-    let side = opts.width.min(opts.height);
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (side, side)).into_drawing_area();
-        root.fill(&WHITE).map_err(drawing_error)?;
-        let mut b = ChartBuilder::on(&root);
+    let (w, h) = opts.pixels();
+    let side = w.min(h);
+    let sizes = Sizes::of(opts);
+    write_svg(path.as_ref(), opts, (side, side), |root| {
+        let mut b = ChartBuilder::on(root);
         if !opts.title.is_empty() {
-            b.caption(&opts.title, ("sans-serif", 18));
+            b.caption(&opts.title, ("sans-serif", asked_size(sizes.title)));
         }
+        let (fx, fy) = (tick_format(xr.start, xr.end), tick_format(yr.start, yr.end));
+        let y_tick_w = [yr.start, yr.end, cy]
+            .iter()
+            .map(|v| fy(v).chars().count())
+            .max()
+            .unwrap_or(4) as f64
+            * 0.66
+            * sizes.tick;
         let mut chart = b
             .margin(15)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
+            .x_label_area_size((8.0 + 1.3 * sizes.tick + 1.5 * sizes.label).ceil() as u32)
+            .y_label_area_size((y_tick_w + 12.0 + 1.5 * sizes.label + 6.0).ceil() as u32)
             .build_cartesian_2d(xr.clone(), yr.clone())
             .map_err(drawing_error)?;
         let below = pts.iter().any(|p| p.z < 0.0);
-        let key = if below {
-            "x (space, horizontal);  ○ start, ● end, dotted: below the horizon"
-        } else {
-            "x (space, horizontal);  ○ start, ● end"
+        // The key in the axis name where it fits; at a narrow width, the start and end only.
+        let wide = f64::from(side) > 60.0 * sizes.label;
+        let key = match (below, wide) {
+            (true, true) => "x (space, horizontal);  ○ start, ● end, dotted: below the horizon",
+            (false, true) => "x (space, horizontal);  ○ start, ● end",
+            (true, false) => "x;  ○ start, ● end, dotted: below",
+            (false, false) => "x;  ○ start, ● end",
         };
-        let (fx, fy) = (tick_format(xr.start, xr.end), tick_format(yr.start, yr.end));
+        let n = ((f64::from(side) - 150.0) / (6.0 * sizes.tick)).clamp(2.0, 10.0) as usize;
         chart
             .configure_mesh()
             .x_desc(key)
-            .y_desc("y (space, horizontal)")
+            .y_desc(if wide { "y (space, horizontal)" } else { "y" })
+            .x_labels(n)
+            .y_labels(n)
             .x_label_formatter(&fx)
             .y_label_formatter(&fy)
+            .label_style(("sans-serif", asked_size(sizes.tick)))
+            .axis_desc_style(("sans-serif", asked_size(sizes.label)))
             .light_line_style(RGBColor(238, 238, 238))
             .bold_line_style(RGBColor(215, 215, 215))
             .draw()
             .map_err(drawing_error)?;
+        let frame = Frame {
+            x: (xr.start, xr.end),
+            y: (yr.start, yr.end),
+            x_label: "",
+            y_label: "",
+            mesh: true,
+            y_ticks: None,
+        };
+        let fpx = float_px(&chart, &frame);
+        let clip = |part: &[(f64, f64)]| clip_polyline(part, frame.x, frame.y);
         // The horizon |(x, y)| = 1, where it falls in the frame.
         let horizon: Vec<(f64, f64)> = (0..=720)
             .map(|k| {
@@ -106,20 +133,16 @@ pub fn apex_locus_svg<P: AsRef<Path>>(
                 (a.cos(), a.sin())
             })
             .collect();
-        if horizon
-            .iter()
-            .any(|&(x, y)| xr.contains(&x) && yr.contains(&y))
-        {
-            chart
-                .draw_series(std::iter::once(DashedPathElement::new(
-                    horizon,
-                    6,
-                    6,
-                    ShapeStyle::from(&RGBColor(120, 120, 120)).stroke_width(1),
-                )))
-                .map_err(drawing_error)?;
+        for part in clip(&horizon) {
+            let fine: Vec<PxF> = part.iter().map(&fpx).collect();
+            stroke_curve(
+                root,
+                &fine,
+                RGBColor(120, 120, 120),
+                Stroke::Dashed(1, 6, 6),
+            )?;
         }
-        // The locus, split where it crosses the horizon.
+        // The locus, split where it crosses the horizon: solid above, dotted below.
         let mut runs: Vec<(bool, Vec<(f64, f64)>)> = Vec::new();
         for p in &pts {
             let upper = p.z >= 0.0;
@@ -128,19 +151,14 @@ pub fn apex_locus_svg<P: AsRef<Path>>(
                 _ => runs.push((upper, vec![(p.x, p.y)])),
             }
         }
-        let ink = ShapeStyle::from(&BLACK).stroke_width(2);
         for (upper, run) in runs {
-            if upper {
-                chart
-                    .draw_series(std::iter::once(PathElement::new(run, ink)))
-                    .map_err(drawing_error)?;
+            let fine: Vec<PxF> = run.iter().map(&fpx).collect();
+            let stroke = if upper {
+                Stroke::Solid(2)
             } else {
-                chart
-                    .draw_series(std::iter::once(DottedPathElement::new(run, 0, 6, |c| {
-                        Circle::new(c, 1, BLACK.filled())
-                    })))
-                    .map_err(drawing_error)?;
-            }
+                Stroke::Dashed(2, 1, 5)
+            };
+            stroke_curve(root, &fine, BLACK, stroke)?;
         }
         let (s, e) = (pts[0], pts[pts.len() - 1]);
         chart
@@ -149,19 +167,30 @@ pub fn apex_locus_svg<P: AsRef<Path>>(
                 Circle::new((e.x, e.y), 4, BLACK.filled()),
             ])
             .map_err(drawing_error)?;
-        root.present().map_err(drawing_error)?;
-    }
-    write_whole(path.as_ref(), svg.as_bytes())
+        Ok(())
+    })
 }
 
-/// One panel of [`time_histories_svg`]: its axis label and its named curves.
 type Panel<'a> = (&'a str, Vec<(&'a str, Vec<f64>)>);
 
 fn check_size(opts: &PlotOptions) -> Result<(), PlotError> {
-    if opts.width < 250 || opts.height < 250 {
+    if !(opts.font_pt.is_finite() && (5.0..=24.0).contains(&opts.font_pt)) {
         return Err(PlotError::InvalidOptions(format!(
-            "a figure of {}×{} pixels is too small (at least 250×250)",
-            opts.width, opts.height
+            "a font of {} pt (5 to 24)",
+            opts.font_pt
+        )));
+    }
+    if let Some(w) = opts.width_in {
+        if !(w.is_finite() && (2.0..=40.0).contains(&w)) {
+            return Err(PlotError::InvalidOptions(format!(
+                "a figure {w} in wide (2 to 40 in)"
+            )));
+        }
+    }
+    let (w, h) = opts.pixels();
+    if w < 250 || h < 250 {
+        return Err(PlotError::InvalidOptions(format!(
+            "a figure of {w}×{h} pixels is too small (at least 250×250)"
         )));
     }
     Ok(())
@@ -223,21 +252,20 @@ pub fn time_histories_svg<P: AsRef<Path>>(
             ],
         ),
     ];
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (opts.width, opts.height)).into_drawing_area();
-        root.fill(&WHITE).map_err(drawing_error)?;
+    let sizes = Sizes::of(opts);
+    write_svg(path.as_ref(), opts, opts.pixels(), |root| {
         let root = if opts.title.is_empty() {
-            root
+            root.clone()
         } else {
-            root.titled(&opts.title, ("sans-serif", 18))
+            root.titled(&opts.title, ("sans-serif", asked_size(sizes.title)))
                 .map_err(drawing_error)?
         };
         let areas = root.split_evenly((3, 1));
         let (t0, t1) = (t[0], t[t.len() - 1].max(t[0] + 1e-12));
         for (panel, (label, curves)) in areas.iter().zip(panels) {
             // The legend's column, to the right of the axes.
-            let legend_width = 130.min(panel.dim_in_pixel().0 / 3);
+            // The widest name, |p_ψ − p_ψ₀|, is under 7 em.
+            let legend_width = ((7.0 * sizes.legend) as u32 + 52).min(panel.dim_in_pixel().0 / 3);
             let (area, key) =
                 panel.split_horizontally(panel.dim_in_pixel().0.saturating_sub(legend_width));
             let finite = curves
@@ -247,50 +275,68 @@ pub fn time_histories_svg<P: AsRef<Path>>(
             let (lo, hi) = finite.fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
             let (lo, hi) = if lo <= hi { (lo, hi) } else { (-1.0, 1.0) };
             let pad = ((hi - lo) * 0.05).max(1e-9);
+            let (ft, fy) = (tick_format(t0, t1), tick_format(lo - pad, hi + pad));
+            let y_tick_w = [lo, hi, 0.5 * (lo + hi)]
+                .iter()
+                .map(|v| fy(v).chars().count())
+                .max()
+                .unwrap_or(4) as f64
+                * 0.66
+                * sizes.tick;
+            let panel_h = f64::from(area.dim_in_pixel().1);
             let mut chart = ChartBuilder::on(&area)
                 .margin(8)
-                .x_label_area_size(30)
-                .y_label_area_size(60)
+                .x_label_area_size((6.0 + 1.3 * sizes.tick + 1.4 * sizes.label).ceil() as u32)
+                .y_label_area_size((y_tick_w + 12.0 + 1.5 * sizes.label + 4.0).ceil() as u32)
                 .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
                 .map_err(drawing_error)?;
-            let (ft, fy) = (tick_format(t0, t1), tick_format(lo - pad, hi + pad));
+            let ny = ((panel_h - 60.0) / (1.8 * sizes.tick)).clamp(2.0, 6.0) as usize;
             chart
                 .configure_mesh()
                 .x_desc("t")
                 .y_desc(label)
+                .y_labels(ny)
+                .label_style(("sans-serif", asked_size(sizes.tick)))
+                .axis_desc_style(("sans-serif", asked_size(sizes.label)))
                 .x_label_formatter(&ft)
                 .y_label_formatter(&fy)
                 .light_line_style(RGBColor(238, 238, 238))
                 .bold_line_style(RGBColor(215, 215, 215))
                 .draw()
                 .map_err(drawing_error)?;
+            let frame = Frame {
+                x: (t0, t1),
+                y: (lo - pad, hi + pad),
+                x_label: "",
+                y_label: "",
+                mesh: true,
+                y_ticks: None,
+            };
+            let fpx = float_px(&chart, &frame);
+            let row = (1.6 * sizes.legend).ceil() as i32;
+            let font = ("sans-serif", asked_size(sizes.legend))
+                .into_font()
+                .color(&BLACK)
+                .pos(Pos::new(HPos::Left, VPos::Center));
             for (k, (name, ys)) in curves.into_iter().enumerate() {
                 let pts: Vec<(f64, f64)> = t.iter().copied().zip(ys).collect();
-                let style = ShapeStyle::from(&BLACK).stroke_width(if k == 0 { 2 } else { 1 });
-                match k {
-                    0 => chart.draw_series(std::iter::once(PathElement::new(pts, style))),
-                    1 => {
-                        chart.draw_series(std::iter::once(DashedPathElement::new(pts, 8, 5, style)))
-                    }
-                    _ => {
-                        chart.draw_series(std::iter::once(DashedPathElement::new(pts, 2, 4, style)))
-                    }
+                let stroke = match k {
+                    0 => Stroke::Solid(2),
+                    1 => Stroke::Dashed(1, 8, 5),
+                    _ => Stroke::Dashed(1, 2, 4),
+                };
+                for part in clip_polyline(&pts, frame.x, frame.y) {
+                    let fine: Vec<PxF> = part.iter().map(&fpx).collect();
+                    stroke_curve(&root, &fine, BLACK, stroke)?;
                 }
-                .map_err(drawing_error)?;
                 // The legend entry: the line's sample and the name, one row per curve.
-                let y = 20 + 22 * k as i32;
-                let sample = vec![(6, y), (36, y)];
-                match k {
-                    0 => key.draw(&PathElement::new(sample, style)),
-                    1 => key.draw(&DashedPathElement::new(sample, 8, 5, style)),
-                    _ => key.draw(&DashedPathElement::new(sample, 2, 4, style)),
-                }
-                .map_err(drawing_error)?;
-                key.draw(&Text::new(name, (42, y - 7), ("sans-serif", 14)))
+                let (kx, ky) = key.get_base_pixel();
+                let y = ky + 12 + row * k as i32 + row / 2;
+                stroke_path(&root, &[(kx + 6, y), (kx + 36, y)], BLACK, stroke)?;
+                root.draw(&Text::new(name, (kx + 42, y), font.clone()))
                     .map_err(drawing_error)?;
             }
         }
-        root.present().map_err(drawing_error)?;
-    }
-    write_whole(path.as_ref(), svg.as_bytes())
+        Ok(())
+    })
 }

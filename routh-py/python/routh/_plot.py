@@ -4,9 +4,10 @@
 agree and there is no second copy. Imported lazily (matplotlib is optional).
 
 Every figure reads in monochrome: each verdict has its own stroke (thick solid, thin solid,
-dashed, dotted) and each event its own marker; the legend lists only what is drawn; event labels
-are placed clear of one another (and of the markers and, where they can be, of the curves), on a
-leader line when they stand away from their marker.
+dashed, dotted; inverse hyperbolic orbits long-dashed) and each event its own marker; the
+legend lists only what is drawn; event labels are placed clear of one another (and of the
+markers and, where they can be, of the curves), on a leader line when they stand away from
+their marker.
 """
 
 import io
@@ -497,11 +498,20 @@ def index_axis(k):
 INDEX_TICKS = 12
 
 
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
 def _index_label(t):
-    """The value of k at ``t`` on the axis of `index_axis` (an integer): ``0``, ``1``, ``10``,
-    ``100``, … ``1e+06``, … ``1e+300``, never through a float (10**309 overflows one)."""
+    """The value of k at ``t`` on the axis of `index_axis` (an integer), as the Rust SVGs write
+    it (``routh::style::decade_label``): ``0``, ``1``, ``10``, ``100``, then ``10³``, ``10⁴``,
+    … ``10³⁰⁰``, a true minus sign, never through a float (10**309 overflows one)."""
     n = abs(t) - 1
-    size = str(abs(t)) if n <= 0 else (f"{10 ** n}" if n < 6 else f"1e+{n:02d}")
+    if n <= 0:
+        size = str(abs(t))
+    elif n <= 2:
+        size = str(10 ** n)
+    else:
+        size = "10" + str(n).translate(_SUPERSCRIPT)
     return ("−" if t < 0 else "") + size
 
 
@@ -560,10 +570,11 @@ def plot_orbit_family(family, ax=None, quantity="stability_index", xlabel="E", v
     return ax
 
 
-def plot_section(section, ax=None, fixed_points=None):
+def plot_section(section, ax=None, fixed_points=None, title=None):
     """Draw a Poincaré section: each orbit's crossings as small dots of its own colour (θ against
-    M_n), and `fixed_points` ((k, 2): a periodic orbit's crossings) as larger black marks.
-    Returns the axes."""
+    M_n), and `fixed_points` ((k, 2): a periodic orbit's crossings) as larger black marks; the
+    legend says (p_ψ, E). No title unless `title` is given (as the Rust SVG). Returns the
+    axes."""
     ax = _axes(ax)
     palette = THE_STYLE["palette"]
     for k, pts in enumerate(section.points):
@@ -575,11 +586,13 @@ def plot_section(section, ax=None, fixed_points=None):
     if fp is not None and len(fp):
         ax.plot(fp[:, 0], fp[:, 1], linestyle="none", marker="x", markersize=8, color="k",
                 label="periodic orbit")
-        ax.legend(fontsize=FONT["legend"])
+    ax.plot([], [], linestyle="none",
+            label=f"p_ψ = {_value(section.p_psi)}, E = {_value(section.energy)}")
+    ax.legend(fontsize=FONT["legend"])
     ax.set_xlabel("θ")
     ax.set_ylabel("M_n")
-    ax.set_title(f"p_ψ = {_value(section.p_psi)}, E = {_value(section.energy)}",
-                 fontsize=FONT["title"])
+    if title:
+        ax.set_title(title, fontsize=FONT["title"])
     _fonts(ax)
     return ax
 
