@@ -182,7 +182,8 @@ def test_plot_style_is_one_table_with_told_apart_verdicts():
             assert (a["width"], a["dash"]) != (b["width"], b["dash"])
             assert a["hatch"] != b["hatch"]
     assert 7 <= style["font"]["annotation"] <= style["font"]["label"]
-    assert abs(style["column_width"] - 89 / 25.4) < 0.01
+    # A journal's column, 3.4 in (the Rust figures' PlotOptions::column()).
+    assert style["column_width"] == 3.4
 
 
 def test_diagram_colours_legend_and_axes_follow_the_style(top):
@@ -311,3 +312,23 @@ def test_mirror_image_events_are_named_once_and_crowded_labels_kept_apart():
         for b in boxes[i + 1:]:
             assert not a.overlaps(b), (a, b)
     plt.close("all")
+
+
+def test_section_plot_has_no_title_unless_asked_and_names_its_level():
+    """The Poincaré section as the Rust SVG: no title by default (a journal's caption goes below
+    the figure), (p_ψ, E) in the legend with a true minus sign; a title when given (to
+    ``routh._plot.plot_section``)."""
+    plt, _ = _mpl()
+    body = routh.Model("kinetic = 0.5 * omega.dot(diag(inertia) * omega), potential = mgl * gamma.z",
+                       {"inertia": [1.0, 2.0, 3.0], "mgl": 1.5})
+    s = body.poincare_section(0.0, -1.0, orbits=2, crossings=5)
+    ax = s.plot()
+    assert ax.get_title() == ""
+    texts = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any(t.startswith("p_ψ = 0, E = −1") for t in texts), texts
+    plt.close(ax.figure)
+    from routh._plot import plot_section
+
+    ax = plot_section(s, title="A section")
+    assert ax.get_title() == "A section"
+    plt.close(ax.figure)
