@@ -457,9 +457,9 @@ fn a_third_order_resonance_is_unstable_and_the_motion_leaves() {
     let stable = fam
         .orbits
         .iter()
+        .rev()
         .filter(|o| o.energy < e.energy && (o.stability_index + 0.5).abs() > 0.2)
-        .filter(|o| o.stability == OrbitStability::Elliptic)
-        .last()
+        .find(|o| o.stability == OrbitStability::Elliptic)
         .expect("an elliptic orbit");
     let rs = orbit_nonlinear_stability(&m, stable, &OrbitNonlinearOptions::default()).unwrap();
     assert_eq!(rs.verdict, OrbitNonlinearVerdict::OrbitallyStable, "{rs}");
@@ -533,8 +533,13 @@ fn symmetric_bodies_swings_are_undecided_as_degenerate() {
         inertia: Vector3::new(1.0, 1.0, 1.6),
         l: 1.0,
     };
-    let fam = lyapunov_family(&m, &hanging(&m), 0, &OrbitOptions::default().with_max_orbits(4))
-        .unwrap();
+    let fam = lyapunov_family(
+        &m,
+        &hanging(&m),
+        0,
+        &OrbitOptions::default().with_max_orbits(4),
+    )
+    .unwrap();
     let o = fam.orbits.last().unwrap();
     assert!(o.degenerate, "{o}");
     let r = orbit_nonlinear_stability(&m, o, &OrbitNonlinearOptions::default()).unwrap();
