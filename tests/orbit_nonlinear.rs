@@ -546,3 +546,183 @@ fn symmetric_bodies_swings_are_undecided_as_degenerate() {
     assert_eq!(r.verdict, OrbitNonlinearVerdict::Undecided);
     assert!(r.reason.contains("degenerate") && r.twist.is_nan(), "{r}");
 }
+
+type V6 = routh::nalgebra::Vector6<f64>;
+
+fn state(w: Vector3<f64>, g: Vector3<f64>) -> V6 {
+    V6::new(w.x, w.y, w.z, g.x, g.y, g.z)
+}
+
+/// `(E, p_ψ, |γ|²)` at `x` and their gradients by central differences.
+fn levels_fd(m: &Body, x: &V6) -> ([f64; 3], [V6; 3]) {
+    let f = |y: &V6| {
+        let (w, g) = (
+            Vector3::new(y[0], y[1], y[2]),
+            Vector3::new(y[3], y[4], y[5]),
+        );
+        [
+            m.energy(&w, &g),
+            m.cyclic_momentum(&w, &g),
+            g.norm_squared(),
+        ]
+    };
+    let h = 1e-6;
+    let mut grads = [V6::zeros(); 3];
+    for i in 0..6 {
+        let (mut p, mut q) = (*x, *x);
+        p[i] += h;
+        q[i] -= h;
+        let (fp, fq) = (f(&p), f(&q));
+        for k in 0..3 {
+            grads[k][i] = (fp[k] - fq[k]) / (2.0 * h);
+        }
+    }
+    (f(x), grads)
+}
+
+/// The rotation number of the section map's orbit through `y`, by a weighted Birkhoff average
+/// of the angle steps about the fixed point in the chart `(u₁, u₂)` (Das, Sander & Yorke: the
+/// error falls faster than any power of the number of iterates on an invariant curve), and the
+/// Euclidean area the iterates enclose in that chart.
+fn rotation_and_area(
+    m: &Body,
+    o: &PeriodicOrbit,
+    ell: &V6,
+    u: [V6; 2],
+    y0: V6,
+    n: usize,
+) -> (f64, f64) {
+    let x0 = state(o.omega0, o.gamma0);
+    let opts = routh::SimOptions::with_tolerances(1e-12, 1e-13);
+    let flow = |y: &V6, t: f64| {
+        let tr = routh::simulate_full(
+            m,
+            Vector3::new(y[0], y[1], y[2]),
+            Vector3::new(y[3], y[4], y[5]).normalize(),
+            t,
+            &opts,
+        )
+        .unwrap();
+        state(*tr.omega.last().unwrap(), *tr.gamma.last().unwrap())
+    };
+    let mut y = y0;
+    let mut pts = Vec::with_capacity(n + 1);
+    pts.push([u[0].dot(&(y - x0)), u[1].dot(&(y - x0))]);
+    for _ in 0..n {
+        // The return near T: a secant on ℓ·(φ_t(y) − x₀) = 0 in t.
+        let s = |t: f64| ell.dot(&(flow(&y, t) - x0));
+        let (mut t0, mut t1) = (0.95 * o.period, 1.05 * o.period);
+        let (mut s0, mut s1) = (s(t0), s(t1));
+        for _ in 0..30 {
+            let t2 = t1 - s1 * (t1 - t0) / (s1 - s0);
+            let s2 = s(t2);
+            (t0, s0, t1, s1) = (t1, s1, t2, s2);
+            if s2.abs() < 1e-14 {
+                break;
+            }
+        }
+        y = flow(&y, t1);
+        pts.push([u[0].dot(&(y - x0)), u[1].dot(&(y - x0))]);
+    }
+    // Angle steps, clockwise positive in a positively oriented chart.
+    let ang: Vec<f64> = pts.iter().map(|p| p[1].atan2(p[0])).collect();
+    let w = |t: f64| {
+        if t <= 0.0 || t >= 1.0 {
+            0.0
+        } else {
+            (-1.0 / (t * (1.0 - t))).exp()
+        }
+    };
+    let (mut num, mut den) = (0.0, 0.0);
+    for k in 0..n {
+        let mut d = ang[k] - ang[k + 1];
+        d = d.rem_euclid(2.0 * PI);
+        let wk = w((k as f64 + 0.5) / n as f64);
+        num += wk * d;
+        den += wk;
+    }
+    // The area: the iterates sorted by angle, the shoelace formula.
+    let mut sorted = pts.clone();
+    sorted.sort_by(|a, b| a[1].atan2(a[0]).total_cmp(&b[1].atan2(b[0])));
+    let mut area = 0.0;
+    for k in 0..sorted.len() {
+        let (a, b) = (sorted[k], sorted[(k + 1) % sorted.len()]);
+        area += 0.5 * (a[0] * b[1] - b[0] * a[1]);
+    }
+    (num / den / (2.0 * PI), area.abs())
+}
+
+/// τ against the rotation numbers of invariant curves around the orbit, measured by iterating
+/// the Poincaré map of `simulate_full` on another section (the hyperplane normal to the flow at
+/// the orbit's start): `ρ(A) = ρ + τA`, `A = |Ω(u₁, u₂)| × the curve's area in the chart`.
+#[test]
+fn twist_is_the_slope_of_rotation_numbers_of_invariant_curves() {
+    let m = body();
+    let s = hanging(&m);
+    let fam = lyapunov_family(&m, &s, 0, &OrbitOptions::default().with_max_orbits(8)).unwrap();
+    let o = fam.orbits.last().unwrap();
+    let rep = orbit_nonlinear_stability(&m, o, &OrbitNonlinearOptions::default()).unwrap();
+    let x0 = state(o.omega0, o.gamma0);
+    let f0 = routh::nalgebra::Vector6::from_row_slice(&vector_field(
+        &m,
+        &[x0[0], x0[1], x0[2], x0[3], x0[4], x0[5]],
+    ));
+    let ell = f0 / f0.norm_squared();
+    let (c0, grads) = levels_fd(&m, &x0);
+    // The section's tangent plane: orthonormal (u₁, u₂) ⊥ ℓ, ∇E, ∇p_ψ, ∇|γ|².
+    let rows = routh::nalgebra::Matrix4x6::from_rows(&[
+        ell.transpose(),
+        grads[0].transpose(),
+        grads[1].transpose(),
+        grads[2].transpose(),
+    ]);
+    let svd = rows.transpose().svd(true, false);
+    let q = svd.u.unwrap();
+    let basis: Vec<V6> = (0..4).map(|i| q.column(i).into()).collect();
+    let project = |v: V6| basis.iter().fold(v, |acc, b| acc - b * b.dot(&v));
+    let u1 = project(V6::new(0.3, 0.8, -0.2, 0.5, 0.1, 0.4)).normalize();
+    let mut u2 = project(V6::new(-0.6, 0.2, 0.9, -0.1, 0.7, 0.3));
+    u2 = (u2 - u1 * u1.dot(&u2)).normalize();
+    let mut om = orbit_symplectic_form(&m, &x0, &u1, &u2);
+    if om < 0.0 {
+        u2 = -u2;
+        om = -om;
+    }
+    // Starts at distance r along u₁, put onto the section and the levels by Gauss–Newton.
+    let start = |r: f64| {
+        let mut y = x0 + u1 * r;
+        for _ in 0..6 {
+            let (c, g) = levels_fd(&m, &y);
+            let res = routh::nalgebra::Vector4::new(
+                ell.dot(&(y - x0)),
+                c[0] - c0[0],
+                c[1] - c0[1],
+                c[2] - c0[2],
+            );
+            let j = routh::nalgebra::Matrix4x6::from_rows(&[
+                ell.transpose(),
+                g[0].transpose(),
+                g[1].transpose(),
+                g[2].transpose(),
+            ]);
+            y -= j.transpose() * (j * j.transpose()).try_inverse().unwrap() * res;
+        }
+        y
+    };
+    let mut samples = Vec::new();
+    for r in [0.01, 0.02] {
+        let (rho, area) = rotation_and_area(&m, o, &ell, [u1, u2], start(r), 400);
+        samples.push((rho, om * area));
+    }
+    let slope = (samples[1].0 - samples[0].0) / (samples[1].1 - samples[0].1);
+    eprintln!(
+        "ρ(A): {samples:?}; slope {slope:e} vs τ = {:e}, ρ₀ = {}",
+        rep.twist, rep.rotation_number
+    );
+    assert!((samples[0].0 - rep.rotation_number).abs() < 1e-3);
+    assert!(
+        (slope - rep.twist).abs() < 0.01 * rep.twist.abs(),
+        "slope of ρ(A) {slope:e} vs τ {:e}",
+        rep.twist
+    );
+}
