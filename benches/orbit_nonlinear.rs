@@ -1,4 +1,4 @@
-//! Orbital stability beyond linear (docs/method.md §12, ARCHITECTURE §5h), same-run ratios:
+//! Orbital stability beyond linear (docs/method.md §12), same-run ratios:
 //! `orbit_nonlinear_stability` against one `periodic_orbit` correction of the same orbit; a
 //! Lyapunov family of 40 orbits with and without `OrbitOptions::nonlinear` (the twist of every
 //! orbit and the nonlinear events); an `orbit_chart` of 40 parameter values of the 1 : 4 : 1

@@ -1,4 +1,4 @@
-//! `orbit_nonlinear_stability` (ARCHITECTURE §5h, docs/method.md §12) against what it does not
+//! `orbit_nonlinear_stability` (docs/method.md §12) against what it does not
 //! compute: the symplectic form against finite differences of the energy (`ι_F Ω = dE`); the
 //! twist at small amplitude against the steady motion's Birkhoff normal form (a different
 //! algorithm, in a canonical chart of `T*S²`: `τ → D/(π ω_k³)`); the twist's independence of the

@@ -1,4 +1,4 @@
-//! Orbital stability beyond linear and orbit charts in Python (ARCHITECTURE §5h):
+//! Orbital stability beyond linear and orbit charts in Python (docs/method.md §12):
 //! `Model.orbit_nonlinear_stability` and its `OrbitNonlinearReport`; `routh.orbit_chart` and
 //! `Model.orbit_chart` and their `OrbitChart` (with its `OrbitChartCurve`s). Kinds and verdicts
 //! are lower-case strings, arrays numpy, as in the rest of the package.
@@ -346,7 +346,7 @@ fn chart_of_model(
 
 /// The chart of the Lyapunov family of `mode` (0: the faster frequency ω₁, 1: the slower) over
 /// a parameter x ∈ `x_range` and the energy h = E − E_s(x) ∈ `excess_energy` above the steady
-/// motion (ARCHITECTURE §5h; the Rust `orbit_chart`): at each of `nx` values of x the steady
+/// motion (docs/method.md §12; the Rust `orbit_chart`): at each of `nx` values of x the steady
 /// motion near `gamma_guess` (followed from one x to the next), its family with the linear and
 /// nonlinear events located, the events of one kind at neighbouring x joined into curves.
 ///
@@ -460,7 +460,7 @@ pub fn orbit_chart(
 #[pymethods]
 impl Model {
     /// The orbital stability of a periodic orbit of this model beyond the linear test
-    /// (ARCHITECTURE §5h; the Rust `orbit_nonlinear_stability`): the rotation number and the
+    /// (docs/method.md §12; the Rust `orbit_nonlinear_stability`): the rotation number and the
     /// twist of the isoenergetic Poincaré map from its Taylor expansion to order three (exact
     /// jets of the flow), and the verdict of Moser's twist theorem or of the resonances of
     /// order three and four. Keywords default to the Rust `OrbitNonlinearOptions::default()`:

@@ -1,4 +1,4 @@
-"""Orbital stability beyond linear and orbit charts from Python (ARCHITECTURE §5h), checked
+"""Orbital stability beyond linear and orbit charts from Python (docs/method.md §12), checked
 against what the code under test does not compute: the twist at small amplitude against the
 steady motion's Birkhoff normal form (`Model.nonlinear_stability`, a different algorithm in
 another chart: τ → D/(π ω_k³)), cos 2πρ against k, the chart's curve points against

@@ -1,5 +1,5 @@
 //! The chart of a mode's Lyapunov family over a body parameter `x` and the energy `h` above the
-//! steady motion (ARCHITECTURE §5h, docs/method.md §12.4): for each `x` of a grid the family is
+//! steady motion (docs/method.md §12.4): for each `x` of a grid the family is
 //! followed with its linear and nonlinear events located to `event_tol` in the energy; the
 //! events of one kind at neighbouring `x` are joined into the chart's curves.
 
@@ -81,7 +81,7 @@ impl OrbitChart {
 }
 
 /// The chart of the Lyapunov family of `mode` over the parameter `x ∈ x_range` and the energy
-/// `h = E − E_s(x) ∈ excess_energy` above the steady motion (ARCHITECTURE §5h): `family(x)`
+/// `h = E − E_s(x) ∈ excess_energy` above the steady motion (docs/method.md §12): `family(x)`
 /// gives the model at `x` and its `p_ψ`; the steady motion is found near `gamma_guess` at the
 /// first `x` and followed from one `x` to the next. Each family is traced with
 /// [`OrbitOptions::nonlinear`] set, its events located in the energy to `event_tol`; events of

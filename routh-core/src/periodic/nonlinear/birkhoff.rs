@@ -4,7 +4,7 @@
 //! In canonical coordinates `ξ` (`Ω = dξ₁∧dξ₂`) the linear part `L` (`det L = 1`,
 //! `|tr L| < 2`) is conjugated by a symplectic `S` to the rotation by `φ` counter-clockwise;
 //! with `z = w₁ − i w₂` (`w = S⁻¹ξ`) the map reads `z ↦ λz + Σ a_{jk} zʲz̄ᵏ + Σ b_{jk} zʲz̄ᵏ`,
-//! `λ = e^{2πiρ}`: `arg z` grows in the clockwise sense of §5h, and `ρ = −φ/2π mod 1`. The
+//! `λ = e^{2πiρ}`: `arg z` grows clockwise (the fixed sense), and `ρ = −φ/2π mod 1`. The
 //! quadratic terms are removed by `z = w + h(w, w̄)`, `h_{jk} = a_{jk}/(λʲλ̄ᵏ − λ)` (the term
 //! `z̄²` is resonant at `λ³ = 1`); the coefficient `c` of `w²w̄` of the conjugated map then
 //! gives `w ↦ λw(1 + (c/λ)|w|²) + …`: invariant circles of area `A = π|w|²` turn by

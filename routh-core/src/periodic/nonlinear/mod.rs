@@ -1,5 +1,5 @@
-//! Orbital stability of a periodic orbit beyond the linear test (ARCHITECTURE §5h,
-//! docs/method.md §12): the rotation number and the twist of the isoenergetic Poincaré map from
+//! Orbital stability of a periodic orbit beyond the linear test (docs/method.md
+//! §12): the rotation number and the twist of the isoenergetic Poincaré map from
 //! its Taylor expansion to order three ([`map`]), its Birkhoff normal form ([`birkhoff`]), and
 //! the verdicts of Moser's twist theorem and of the resonances of order three and four.
 
@@ -148,7 +148,7 @@ impl fmt::Display for OrbitNonlinearVerdict {
 pub struct OrbitNonlinearReport {
     /// The orbit analysed.
     pub orbit: PeriodicOrbit,
-    /// `ρ ∈ (0, 1)`, the turn of the Poincaré map's linear part in the fixed sense of §5h
+    /// `ρ ∈ (0, 1)`, the turn of the Poincaré map's linear part in the fixed sense of docs/method.md §12.2
     /// (clockwise in a canonical chart), `cos 2πρ = k`; NaN unless elliptic.
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_support::float"))]
     pub rotation_number: f64,
@@ -182,7 +182,7 @@ impl fmt::Display for OrbitNonlinearReport {
     }
 }
 
-/// The orbital stability of a periodic orbit beyond the linear test (ARCHITECTURE §5h): the
+/// The orbital stability of a periodic orbit beyond the linear test (docs/method.md §12): the
 /// rotation number `ρ` and the twist `τ = dρ/dA` of the isoenergetic Poincaré map from its
 /// Taylor expansion to order three, computed from jets of the flow on the model's own expression
 /// tape (docs/method.md §12).
