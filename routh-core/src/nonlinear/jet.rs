@@ -288,18 +288,7 @@ impl Jet {
     }
     /// `x^r` for a real exponent (derivatives `r(r−1)…(r−k+1) a^{r−k}`).
     pub fn powf_const(&self, r: f64) -> Jet {
-        let a = self.value();
-        let mut d = [0.0; ORDER + 1];
-        let mut fall = 1.0;
-        for (k, dk) in d.iter_mut().enumerate() {
-            *dk = if fall == 0.0 {
-                0.0
-            } else {
-                fall * a.powf(r - k as f64)
-            };
-            fall *= r - k as f64;
-        }
-        self.compose(d)
+        self.compose(power_derivatives(self.value(), r))
     }
     /// `x^n` for an integer exponent.
     pub fn powi(&self, n: i32) -> Jet {
@@ -387,6 +376,22 @@ impl Jet {
             .filter(|(e, _)| degree(e) == d)
             .fold(0.0, |m, (_, c)| m.max(c.abs()))
     }
+}
+
+/// The derivatives `r(r−1)…(r−k+1) a^{r−k}`, `k < K`, of `x^r` at `a` (exact zeros once the
+/// falling factorial vanishes, so that `x²` stays a polynomial at `a = 0`).
+pub(crate) fn power_derivatives<const K: usize>(a: f64, r: f64) -> [f64; K] {
+    let mut d = [0.0; K];
+    let mut fall = 1.0;
+    for (k, dk) in d.iter_mut().enumerate() {
+        *dk = if fall == 0.0 {
+            0.0
+        } else {
+            fall * a.powf(r - k as f64)
+        };
+        fall *= r - k as f64;
+    }
+    d
 }
 
 fn sign(a: f64) -> f64 {

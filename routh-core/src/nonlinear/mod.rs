@@ -14,7 +14,7 @@
 //! Taylor jets ([`Jet`], [`RouthianJet`]): no finite differences.
 
 mod chart;
-mod jet;
+pub(crate) mod jet;
 mod normal_form;
 mod verdict;
 

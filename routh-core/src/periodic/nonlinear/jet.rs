@@ -152,18 +152,7 @@ impl MapJet {
         self.compose([r, -r * r, 2.0 * r * r * r, -6.0 * r.powi(4)])
     }
     fn powf_const(&self, r: f64) -> Self {
-        let a = self.value();
-        let mut d = [0.0; 4];
-        let mut fall = 1.0;
-        for (k, dk) in d.iter_mut().enumerate() {
-            *dk = if fall == 0.0 {
-                0.0
-            } else {
-                fall * a.powf(r - k as f64)
-            };
-            fall *= r - k as f64;
-        }
-        self.compose(d)
+        self.compose(crate::nonlinear::jet::power_derivatives(self.value(), r))
     }
 }
 

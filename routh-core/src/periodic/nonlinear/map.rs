@@ -24,10 +24,11 @@ use nalgebra::{Matrix3, Matrix6, SVector, Vector3, Vector6};
 use routh_tape::FlowTape;
 
 use super::jet::{MapJet, Series, N};
+use super::OrbitNonlinearOptions;
 use crate::periodic::flow::{field, integrals, join, shoot, split};
 use crate::periodic::{OrbitOptions, PeriodicOrbit};
 use crate::sim::dop853::{self, Accepted, Config};
-use crate::{Lagrangian, RouthError, RunControl};
+use crate::{Lagrangian, RouthError};
 
 /// A state `(ω, γ)` of jets.
 pub(crate) type JetState = [MapJet; 6];
@@ -49,14 +50,6 @@ pub struct SectionChart {
 pub(crate) struct SectionMap {
     /// `P(ξ) = (P₁, P₂)` in coordinates with `Ω = dξ₁∧dξ₂` at the fixed point.
     pub map: [MapJet; 2],
-}
-
-/// Integration settings of the jets.
-pub(crate) struct JetIntegration<'a> {
-    pub rtol: f64,
-    pub atol: f64,
-    pub max_steps: usize,
-    pub control: &'a RunControl,
 }
 
 fn cross(a: &[MapJet; 3], b: &[MapJet; 3]) -> [MapJet; 3] {
@@ -185,7 +178,7 @@ pub(crate) fn section_map<M: crate::Routhian + ?Sized>(
     tape: &FlowTape,
     orbit: &PeriodicOrbit,
     chart: &SectionChart,
-    integ: &JetIntegration<'_>,
+    integ: &OrbitNonlinearOptions,
     monodromy: Option<&Matrix6<f64>>,
 ) -> Result<SectionMap, RouthError> {
     let x0 = join(&orbit.omega0, &orbit.gamma0);
@@ -300,7 +293,7 @@ pub(crate) fn section_map<M: crate::Routhian + ?Sized>(
         h_init: None,
         max_steps: integ.max_steps,
         dense: false,
-        control: Some(integ.control),
+        control: Some(&integ.control),
     };
     let mut slots_rhs = Vec::new();
     let rhs = |_t: f64, y: &SVector<f64, 60>| -> Result<SVector<f64, 60>, RouthError> {

@@ -260,14 +260,7 @@ pub fn orbit_nonlinear_stability_in<M: Routhian>(
     let k = orbit.stability_index;
     let third = (k + 0.5).abs() <= opts.resonance_tol;
     let fourth = k.abs() <= opts.resonance_tol;
-    let integ = map::JetIntegration {
-        rtol: opts.rtol,
-        atol: opts.atol,
-        max_steps: opts.max_steps,
-        control: &opts.control,
-    };
-    let sm = map::section_map(model, &tape, orbit, chart, &integ, None)?;
-    let Some(b) = birkhoff::birkhoff(&sm.map, third) else {
+    let Some(b) = normal_form(model, &tape, orbit, chart, opts, None, third)? else {
         return Ok(report(
             nan,
             nan,
@@ -349,22 +342,24 @@ pub(crate) fn twist_of<M: Routhian + ?Sized>(
         return Ok(f64::NAN);
     }
     let tape = model.flow_tape().ok_or_else(no_tape)?;
-    let tape = &tape;
-    let integ = map::JetIntegration {
-        rtol: opts.rtol,
-        atol: opts.atol,
-        max_steps: opts.max_steps,
-        control: &opts.control,
-    };
-    let sm = map::section_map(
-        model,
-        tape,
-        orbit,
-        &SectionChart::default(),
-        &integ,
-        Some(monodromy),
-    )?;
-    Ok(birkhoff::birkhoff(&sm.map, false).map_or(f64::NAN, |b| b.twist))
+    let chart = SectionChart::default();
+    let b = normal_form(model, &tape, orbit, &chart, opts, Some(monodromy), false)?;
+    Ok(b.map_or(f64::NAN, |b| b.twist))
+}
+
+/// The Birkhoff normal form of the orbit's Poincaré map on `chart` (`None` when its linear part
+/// is not elliptic at the accuracy of the jets); `monodromy` the corrector's when known.
+fn normal_form<M: Routhian + ?Sized>(
+    model: &M,
+    tape: &routh_tape::FlowTape,
+    orbit: &PeriodicOrbit,
+    chart: &SectionChart,
+    opts: &OrbitNonlinearOptions,
+    monodromy: Option<&nalgebra::Matrix6<f64>>,
+    skip_third: bool,
+) -> Result<Option<birkhoff::Birkhoff>, RouthError> {
+    let sm = map::section_map(model, tape, orbit, chart, opts, monodromy)?;
+    Ok(birkhoff::birkhoff(&sm.map, skip_third))
 }
 
 fn no_tape() -> RouthError {
