@@ -438,12 +438,13 @@ pub struct OrbitChartArgs {
     /// The cyclic momentum p_ψ.
     #[arg(long, short = 'p', default_value_t = 0.0, value_parser = args::finite, allow_hyphen_values = true)]
     pub momentum: f64,
-    /// The number of parameter values, both ends included.
-    #[arg(long, default_value_t = 41, value_parser = clap::value_parser!(u16).range(2..=10000))]
-    pub nx: u16,
-    /// The most orbits per family.
-    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u16).range(1..=10000))]
-    pub max_orbits: u16,
+    /// The number of parameter values, both ends included (default: the library's,
+    /// `OrbitChartOptions::default().nx`).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(2..=10000))]
+    pub nx: Option<u16>,
+    /// The most orbits per family (default: the library's, `OrbitChartOptions::default()`).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=10000))]
+    pub max_orbits: Option<u16>,
     /// Output format (`--csv`: the curves' points; `--json`: the whole chart).
     #[command(flatten)]
     pub output: Output,

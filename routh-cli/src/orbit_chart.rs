@@ -10,7 +10,7 @@ use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::orbit_out::Document;
 use crate::table::{num, Table};
-use routh::{orbit_chart as chart_of, OrbitChartOptions, OrbitOptions, Param, Vector3};
+use routh::{orbit_chart as chart_of, OrbitChartOptions, Param, Vector3};
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -40,15 +40,15 @@ pub fn orbit_chart(a: &OrbitChartArgs) -> Result<String, CliError> {
         )));
     }
     let bar = crate::progress::Bar::start("parameter values of the chart");
-    let opts = OrbitChartOptions {
-        orbit: OrbitOptions {
-            max_orbits: usize::from(a.max_orbits),
-            control: bar.control(),
-            ..OrbitOptions::default()
-        },
-        nx: usize::from(a.nx),
-        ..OrbitChartOptions::default()
-    };
+    // The defaults are the library's, written once there.
+    let mut opts = OrbitChartOptions::default();
+    opts.orbit.control = bar.control();
+    if let Some(n) = a.max_orbits {
+        opts.orbit.max_orbits = usize::from(n);
+    }
+    if let Some(n) = a.nx {
+        opts.nx = usize::from(n);
+    }
     let p = a.momentum;
     // A parameter value the model refuses gives a model that cannot be evaluated: its steady
     // motion fails, recorded in the chart's failures.
