@@ -5,13 +5,8 @@
 
 mod common;
 
-use common::{routh, stderr, stdout, SWINGING as BODY};
+use common::{routh, stderr, stdout, BODY_141, SWINGING as BODY};
 use std::f64::consts::PI;
-
-const BODY_141: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../examples/models/body_141.toml"
-);
 
 fn ok(args: &[&str]) -> String {
     let o = routh(args);

@@ -154,7 +154,11 @@ pub(super) fn chart_figure(
         for c in &cells {
             let a = plot.backend_coord(&(c.x.0, c.h.0.max(c.h.1)));
             let b = plot.backend_coord(&(c.x.1, c.h.0.min(c.h.1)));
-            let b = (b.0.max(a.0 + 1), b.1.max(a.1 + 1));
+            // One pixel over the neighbours (no seam of the background between cells), but
+            // not over the axes' lines.
+            let bottom_left = plot.backend_coord(&(frame.x.0, frame.y.0));
+            let a = (a.0.max(bottom_left.0 + 1), a.1);
+            let b = (b.0.max(a.0) + 1, (b.1.max(a.1) + 1).min(bottom_left.1 - 1));
             root.draw(&Rectangle::new(
                 [a, b],
                 orbit_region_fill(c.verdict, mono).filled(),
