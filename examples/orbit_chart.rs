@@ -6,7 +6,7 @@
 //! of their Poincaré map vanishes. Everywhere else inside the elliptic region the swings are
 //! orbitally stable (Moser's twist theorem).
 //!
-//! `cargo run --release --example orbit_chart` (about 10 s) prints the curves and writes
+//! `cargo run --release --example orbit_chart` (about 5 s) prints the curves and writes
 //! `target/orbit_chart_body141.csv` and the figure `target/orbit_chart_body141.svg`.
 
 use routh::{

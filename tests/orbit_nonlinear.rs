@@ -282,6 +282,62 @@ fn nonlinear_events_along_a_family() {
     );
 }
 
+/// The nonlinear events do not depend on where the continuation's steps fall: the same family
+/// traced with its largest step 0.1 (the default), 0.04 and 0.017 locates the same resonances
+/// and twist zeros, to the event tolerance.
+#[test]
+fn nonlinear_events_do_not_depend_on_the_step() {
+    let m = body();
+    let s = hanging(&m);
+    let events = |max_step: f64| {
+        let opts = OrbitOptions {
+            nonlinear: true,
+            initial_step: 0.2 * max_step,
+            max_step,
+            energy_bounds: Some((s.energy, s.energy + 2.6)),
+            ..OrbitOptions::default().with_max_orbits(2000)
+        };
+        let fam = lyapunov_family(&m, &s, 0, &opts).unwrap();
+        // The family runs to the upper bound of the energy.
+        assert!(
+            matches!(fam.stop, Some(routh::OrbitStop::EnergyBound { .. })),
+            "max_step {max_step}: {:?}",
+            fam.stop
+        );
+        fam.events
+            .iter()
+            .filter(|e| {
+                matches!(
+                    e.kind,
+                    OrbitEventKind::ThirdOrderResonance
+                        | OrbitEventKind::FourthOrderResonance
+                        | OrbitEventKind::TwistDegenerate
+                )
+            })
+            .map(|e| (e.kind, e.energy))
+            .collect::<Vec<_>>()
+    };
+    let reference = events(0.1);
+    assert!(reference.len() >= 2, "{reference:?}");
+    for max_step in [0.04, 0.017] {
+        let other = events(max_step);
+        assert_eq!(
+            other.iter().map(|e| e.0).collect::<Vec<_>>(),
+            reference.iter().map(|e| e.0).collect::<Vec<_>>(),
+            "max_step {max_step}"
+        );
+        for (a, b) in reference.iter().zip(&other) {
+            assert!(
+                (a.1 - b.1).abs() <= 3e-9 * a.1.abs().max(1.0),
+                "{} at E = {} (max_step 0.1) and {} (max_step {max_step})",
+                a.0,
+                a.1,
+                b.1
+            );
+        }
+    }
+}
+
 /// `tr Φ(T)` by central differences of `simulate_full` (an integration routh's variational
 /// equations play no part in).
 fn fd_index(m: &Body, o: &PeriodicOrbit) -> f64 {
