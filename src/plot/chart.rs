@@ -14,16 +14,6 @@ use super::{drawing_error, PlotError, PlotOptions};
 use crate::{OrbitChart, OrbitEventKind, OrbitStability, PeriodicOrbit};
 use plotters::prelude::*;
 
-/// The curves' kinds in the order of the legend.
-const CURVE_KINDS: [OrbitEventKind; 6] = [
-    OrbitEventKind::Fold,
-    OrbitEventKind::BranchPoint,
-    OrbitEventKind::PeriodDoubling,
-    OrbitEventKind::ThirdOrderResonance,
-    OrbitEventKind::FourthOrderResonance,
-    OrbitEventKind::TwistDegenerate,
-];
-
 /// A filled rectangle of the regions: `x` from `x0` to `x1`, `h` from `h0` to `h1`.
 struct Cell {
     x: (f64, f64),
@@ -136,7 +126,14 @@ pub(super) fn chart_figure(
             )
         })
         .collect();
-    for kind in CURVE_KINDS {
+    // The kinds in the order of the chart's curves.
+    let mut kinds: Vec<OrbitEventKind> = Vec::new();
+    for c in &chart.curves {
+        if !kinds.contains(&c.kind) {
+            kinds.push(c.kind);
+        }
+    }
+    for kind in kinds {
         let drawn: Vec<_> = chart.curves.iter().filter(|c| c.kind == kind).collect();
         if drawn.is_empty() {
             continue;

@@ -284,22 +284,10 @@ pub(super) fn orbit_event_name(k: OrbitEventKind) -> &'static str {
     }
 }
 
-/// The key of an event kind of periodic orbits in [`STYLE`] (`orbit_event`, `orbit_curve`).
-fn orbit_event_key(k: OrbitEventKind) -> &'static str {
-    match k {
-        OrbitEventKind::Fold => "fold",
-        OrbitEventKind::BranchPoint => "branch_point",
-        OrbitEventKind::PeriodDoubling => "period_doubling",
-        OrbitEventKind::TwistDegenerate => "twist_degenerate",
-        OrbitEventKind::ThirdOrderResonance => "third_order_resonance",
-        OrbitEventKind::FourthOrderResonance => "fourth_order_resonance",
-    }
-}
-
 /// The stroke, colour and legend text of a curve of an orbit chart (the table's
 /// `orbit_curve`, which the Python figure reads too).
 pub(super) fn orbit_curve_look(k: OrbitEventKind, mono: bool) -> (Stroke, RGBColor, &'static str) {
-    let l = the("orbit_curve", orbit_event_key(k));
+    let l = the("orbit_curve", k.as_str());
     (stroke_of(l), ink(rgb(l.color), mono), l.label)
 }
 

@@ -17,7 +17,9 @@ use nalgebra::{Complex, Matrix6, Vector6};
 
 use super::flow::{field_and_jacobian, join, onto_level, split};
 use super::node::{same_family, Node};
-use super::shoot::{check_guess, correct, orbit_of, Problem, Scales, Slot, Solved, UNKNOWNS, W};
+use super::shoot::{
+    check_guess, correct, correct_at, orbit_of, Problem, Scales, Slot, Solved, UNKNOWNS, W,
+};
 use super::{OrbitEvent, OrbitFamily, OrbitOptions, OrbitStop, PeriodicOrbit};
 use crate::solve::path::row::LinearRow;
 use crate::solve::path::{Check, Corrected, Outcome, Path, PathOptions, Point};
@@ -516,7 +518,6 @@ pub(super) fn restart<M: Routhian>(
 ) -> Result<(Solved, Scales), RouthError> {
     let x = check_guess(model, &orbit.omega0, &orbit.gamma0, orbit.period)?;
     let e = model.energy(&orbit.omega0, &x.fixed_rows::<3>(3).into());
-    let p = orbit.p_psi;
     let not_an_orbit = |why: String| RouthError::InvalidOption {
         what: "orbit",
         reason: format!(
@@ -530,14 +531,8 @@ pub(super) fn restart<M: Routhian>(
             orbit.energy
         )));
     }
-    let scales = Scales {
-        t: orbit.period,
-        e: 1f64.max(e.abs()),
-    };
-    let prob = Problem::at(model, &x, p, scales)?;
-    let row = scales.energy_row(e);
-    let w = scales.pack_turned(&x, orbit.period, e, orbit.body_turn);
-    let s = match correct(Slot::Energy(model), &prob, &row, &w, opts)? {
+    let (s, scales, _) = correct_at(model, orbit, e, orbit.p_psi, opts)?;
+    let s = match s {
         Ok(s) => s,
         Err(best) => {
             return Err(not_an_orbit(format!(

@@ -462,17 +462,16 @@ pub(crate) fn correct<M: Lagrangian>(
     Ok(Err(best))
 }
 
-/// The orbit of `model` at the energy `energy` and the momentum `p_psi` corrected from `guess`,
-/// an orbit of a neighbouring model or energy (the chart's curves, `chart/curves.rs`): one
-/// correction with the energy fixed. `None` when it does not converge or lands on a steady
-/// motion; the model's own errors are errors.
-pub(crate) fn orbit_near<M: Lagrangian>(
+/// One correction of `guess` (an orbit of this model, or of a neighbouring model or energy) in
+/// the family's unknowns with the energy fixed at `energy` and the momentum at `p_psi`: the
+/// result (`Err(best residual)` when it does not converge), the scales and the guess's state.
+pub(crate) fn correct_at<M: Lagrangian>(
     model: &M,
     guess: &PeriodicOrbit,
     energy: f64,
     p_psi: f64,
     opts: &OrbitOptions,
-) -> Result<Option<PeriodicOrbit>, RouthError> {
+) -> Result<(Result<Solved, f64>, Scales, Vector6<f64>), RouthError> {
     let x = check_guess(model, &guess.omega0, &guess.gamma0, guess.period)?;
     let scales = Scales {
         t: guess.period,
@@ -481,7 +480,25 @@ pub(crate) fn orbit_near<M: Lagrangian>(
     let prob = Problem::at(model, &x, p_psi, scales)?;
     let row = scales.energy_row(energy);
     let w = scales.pack_turned(&x, guess.period, energy, guess.body_turn);
-    Ok(match correct(Slot::Energy(model), &prob, &row, &w, opts)? {
+    Ok((
+        correct(Slot::Energy(model), &prob, &row, &w, opts)?,
+        scales,
+        x,
+    ))
+}
+
+/// The orbit of `model` at the energy `energy` and the momentum `p_psi` corrected from `guess`
+/// ([`correct_at`]; the chart's curves, `chart/curves.rs`). `None` when it does not converge or
+/// lands on a steady motion; the model's own errors are errors.
+pub(crate) fn orbit_near<M: Lagrangian>(
+    model: &M,
+    guess: &PeriodicOrbit,
+    energy: f64,
+    p_psi: f64,
+    opts: &OrbitOptions,
+) -> Result<Option<PeriodicOrbit>, RouthError> {
+    let (s, scales, x) = correct_at(model, guess, energy, p_psi, opts)?;
+    Ok(match s {
         Ok(s) if s.shot.reach > 1e-8 * 1f64.max(x.norm()) => {
             Some(orbit_of(model, &s, &scales, opts))
         }
