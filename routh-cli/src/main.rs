@@ -14,6 +14,7 @@ mod interrupt;
 mod nonlinear;
 mod orbit_chart;
 mod orbit_out;
+mod options;
 mod orbits;
 mod progress;
 mod simulate;

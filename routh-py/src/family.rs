@@ -4,14 +4,15 @@
 //! it to call Python. A Python exception raised by the family stops the work (every later
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
-use crate::continuation::{continuation_options, ContinuationKw};
+use crate::options::from_keywords;
 use crate::convert::{routh_err, vector3, Real, RouthError};
 use crate::guard::cooperative;
 use crate::model::Model;
 use crate::progress::Progress;
 use crate::results::{Atlas, Diagram};
 use pyo3::prelude::*;
-use routh::AtlasOptions;
+use pyo3::types::PyDict;
+use routh::{AtlasOptions, ContinuationOptions};
 use std::sync::Mutex;
 
 /// A Python family `f(*args) -> (Model, p_psi)` made callable from Rust threads.
@@ -121,39 +122,16 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
 /// >>> sorted((e.kind, round(e.s, 6)) for e in d.events)
 /// [('branch_point', 1.44), ('hamiltonian_hopf', 2.25)]
 #[pyfunction]
-#[pyo3(signature = (family, range, *, initial_step=None, max_step=None, min_step=None,
-                    max_steps=None, max_branches=None, newton_tol=None, event_tol=None,
-                    seeds=None, verify_counts=None, nonlinear=false, progress=false))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (family, range, *, progress=false, **options))]
 pub fn bifurcation_diagram(
     py: Python<'_>,
     family: Py<PyAny>,
     range: (Real, Real),
-    initial_step: Option<f64>,
-    max_step: Option<f64>,
-    min_step: Option<f64>,
-    max_steps: Option<usize>,
-    max_branches: Option<usize>,
-    newton_tol: Option<f64>,
-    event_tol: Option<f64>,
-    seeds: Option<usize>,
-    verify_counts: Option<bool>,
-    nonlinear: bool,
     progress: bool,
+    options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Diagram> {
     let range = (range.0 .0, range.1 .0);
-    let opts = continuation_options(ContinuationKw {
-        initial_step,
-        max_step,
-        min_step,
-        max_steps,
-        max_branches,
-        newton_tol,
-        event_tol,
-        seeds,
-        verify_counts,
-        nonlinear,
-    });
+    let opts: ContinuationOptions = from_keywords("bifurcation_diagram", options)?;
     let fam = PyFamily::new(py, family, (range.0, 0.0), false, progress)?;
     let r = cooperative(py, &fam.cancel, || {
         routh::bifurcation_diagram(|s| fam.call((s, 0.0), false), range, &opts)
@@ -185,40 +163,19 @@ pub fn bifurcation_diagram(
 /// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
 /// >>> a.verdicts[0][0], [b.kind for b in a.boundaries]
 #[pyfunction]
-#[pyo3(signature = (family, gamma_guess, x, y, *, nx=None, ny=None, curve_tol=None,
-                    curve_step=None, max_curve_points=None, progress=false))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (family, gamma_guess, x, y, *, progress=false, **options))]
 pub fn stability_atlas(
     py: Python<'_>,
     family: Py<PyAny>,
     gamma_guess: &Bound<'_, PyAny>,
     x: (Real, Real),
     y: (Real, Real),
-    nx: Option<usize>,
-    ny: Option<usize>,
-    curve_tol: Option<f64>,
-    curve_step: Option<f64>,
-    max_curve_points: Option<usize>,
     progress: bool,
+    options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Atlas> {
     let (x, y) = ((x.0 .0, x.1 .0), (y.0 .0, y.1 .0));
     let g = vector3("gamma_guess", gamma_guess)?;
-    let mut opts = AtlasOptions::default();
-    if let Some(v) = nx {
-        opts.nx = v;
-    }
-    if let Some(v) = ny {
-        opts.ny = v;
-    }
-    if let Some(v) = curve_tol {
-        opts.curve_tol = v;
-    }
-    if let Some(v) = curve_step {
-        opts.curve_step = v;
-    }
-    if let Some(v) = max_curve_points {
-        opts.max_curve_points = v;
-    }
+    let opts: AtlasOptions = from_keywords("stability_atlas", options)?;
     check_grid(py, opts.nx, opts.ny)?;
     let fam = PyFamily::new(py, family, (x.0, y.0), true, progress)?;
     let r = cooperative(py, &fam.cancel, || {
