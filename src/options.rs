@@ -13,9 +13,10 @@
 //! use routh::OrbitOptions;
 //! use serde_json::json;
 //!
-//! let o: OrbitOptions = overlay(OrbitOptions::default(), [("max_orbits", json!(3))]).unwrap();
+//! let read = serde_json::from_value;
+//! let o: OrbitOptions = overlay(OrbitOptions::default(), [("max_orbits", json!(3))], read).unwrap();
 //! assert_eq!(o.max_orbits, 3);
-//! let e = overlay(OrbitOptions::default(), [("max_orbit", json!(3))]).unwrap_err();
+//! let e = overlay(OrbitOptions::default(), [("max_orbit", json!(3))], read).unwrap_err();
 //! assert!(e.to_string().contains("did you mean `max_orbits`"));
 //! ```
 
@@ -200,7 +201,9 @@ fn edits(a: &str, b: &str) -> usize {
         row[0] = i + 1;
         for (j, cb) in b.iter().enumerate() {
             let here = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(here + 1);
+            row[j + 1] = (prev + usize::from(ca != *cb))
+                .min(row[j] + 1)
+                .min(here + 1);
             prev = here;
         }
     }
@@ -222,21 +225,10 @@ fn unknown<T: Options>(key: &str) -> OptionError {
     }
 }
 
-/// `base` with the `pairs` laid over it, read by serde_json (see the module).
+/// `base` with the `pairs` laid over it (see the module), the result read by `read`:
+/// `serde_json::from_value`, or a deserializer that also takes, say, `"NaN"` for a number. With
+/// pairs, the fields serde skips (`control`) are their defaults: set them after.
 pub fn overlay<T, K>(
-    base: T,
-    pairs: impl IntoIterator<Item = (K, Value)>,
-) -> Result<T, OptionError>
-where
-    T: Options,
-    K: AsRef<str>,
-{
-    overlay_with(base, pairs, serde_json::from_value)
-}
-
-/// As [`overlay`], the result read by `read` (a deserializer that also takes, say, `"NaN"` for
-/// a number). With pairs, the fields serde skips (`control`) are their defaults: set them after.
-pub fn overlay_with<T, K>(
     base: T,
     pairs: impl IntoIterator<Item = (K, Value)>,
     read: impl Fn(Value) -> Result<T, serde_json::Error>,
@@ -298,7 +290,12 @@ mod tests {
     fn a_nested_field_is_a_key_by_its_own_name_and_by_its_path() {
         let c: OrbitChartOptions = overlay(
             OrbitChartOptions::default(),
-            [("max_orbits", json!(7)), ("orbit.rtol", json!(1e-9)), ("nx", json!(5))],
+            [
+                ("max_orbits", json!(7)),
+                ("orbit.rtol", json!(1e-9)),
+                ("nx", json!(5)),
+            ],
+            serde_json::from_value,
         )
         .unwrap();
         assert_eq!((c.orbit.max_orbits, c.orbit.rtol, c.nx), (7, 1e-9, 5));
@@ -316,7 +313,12 @@ mod tests {
         assert!(keys.contains(&"nx".to_string()) && keys.contains(&"max_orbits".to_string()));
         assert!(!keys.contains(&"orbit".to_string()));
         assert!(!keys.contains(&"energy_bounds".to_string()));
-        let e = overlay(OrbitChartOptions::default(), [("nonlinear", json!(true))]).unwrap_err();
+        let e = overlay(
+            OrbitChartOptions::default(),
+            [("nonlinear", json!(true))],
+            serde_json::from_value,
+        )
+        .unwrap_err();
         assert!(matches!(e, OptionError::Unknown { .. }), "{e}");
         // The chart's own default of a nested field, not the nested struct's.
         let d: Vec<(String, Value)> = keywords::<OrbitChartOptions>();
@@ -325,13 +327,34 @@ mod tests {
 
     #[test]
     fn an_unknown_key_names_itself_a_near_one_and_the_valid_ones() {
-        let e = overlay(OrbitNonlinearOptions::default(), [("twist_toll", json!(1e-3))])
-            .unwrap_err()
-            .to_string();
+        let e = overlay(
+            OrbitNonlinearOptions::default(),
+            [("twist_toll", json!(1e-3))],
+            serde_json::from_value,
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.starts_with("unknown option `twist_toll` (did you mean `twist_tol`?)"));
-        assert!(e.contains("resonance_tol") && e.contains("max_steps"), "{e}");
-        let e = overlay(OrbitOptions::default(), [("zzz", json!(1))]).unwrap_err();
-        assert!(matches!(e, OptionError::Unknown { suggestion: None, .. }), "{e}");
+        assert!(
+            e.contains("resonance_tol") && e.contains("max_steps"),
+            "{e}"
+        );
+        let e = overlay(
+            OrbitOptions::default(),
+            [("zzz", json!(1))],
+            serde_json::from_value,
+        )
+        .unwrap_err();
+        assert!(
+            matches!(
+                e,
+                OptionError::Unknown {
+                    suggestion: None,
+                    ..
+                }
+            ),
+            "{e}"
+        );
     }
 
     #[test]
@@ -339,32 +362,50 @@ mod tests {
         let e = overlay(
             OrbitOptions::default(),
             [("rtol", json!(1e-9)), ("max_orbits", json!("many"))],
+            serde_json::from_value,
         )
         .unwrap_err();
         let OptionError::Invalid { key, message } = &e else {
             panic!("{e}")
         };
         assert_eq!(key, "max_orbits");
-        assert!(message.contains("invalid type: string \"many\""), "{message}");
-        let e = overlay(OrbitOptions::default(), [("energy_bounds", json!([1.0, true]))]);
+        assert!(
+            message.contains("invalid type: string \"many\""),
+            "{message}"
+        );
+        let e = overlay(
+            OrbitOptions::default(),
+            [("energy_bounds", json!([1.0, true]))],
+            serde_json::from_value,
+        );
         assert!(e.unwrap_err().to_string().contains("energy_bounds"));
     }
 
     #[test]
     fn no_pairs_give_the_base_itself() {
         let base = OrbitOptions::default().with_max_orbits(9);
-        let o = overlay(base.clone(), Vec::<(String, Value)>::new()).unwrap();
+        let o = overlay(
+            base.clone(),
+            Vec::<(String, Value)>::new(),
+            serde_json::from_value,
+        )
+        .unwrap();
         assert_eq!(o, base);
-        let o = overlay(base, [("nonlinear", json!(true))]).unwrap();
+        let o = overlay(base, [("nonlinear", json!(true))], serde_json::from_value).unwrap();
         assert_eq!((o.max_orbits, o.nonlinear), (9, true));
     }
 
     #[test]
     fn nonlinear_true_is_the_default_nonlinear_options_of_a_diagram() {
-        let c: ContinuationOptions =
-            overlay(ContinuationOptions::default(), [("nonlinear", json!(true))]).unwrap();
+        let c: ContinuationOptions = overlay(
+            ContinuationOptions::default(),
+            [("nonlinear", json!(true))],
+            serde_json::from_value,
+        )
+        .unwrap();
         assert_eq!(c.nonlinear, Some(NonlinearOptions::default()));
-        let c: ContinuationOptions = overlay(c, [("nonlinear", json!(false))]).unwrap();
+        let c: ContinuationOptions =
+            overlay(c, [("nonlinear", json!(false))], serde_json::from_value).unwrap();
         assert_eq!(c.nonlinear, None);
         // A nested struct's fields are keys: the classification's and the search's.
         let keys: Vec<String> = keywords::<ContinuationOptions>()
@@ -373,11 +414,18 @@ mod tests {
             .collect();
         assert!(keys.contains(&"starts".to_string()), "{keys:?}");
         // One name in two nested structs: a key by its path only.
-        assert!(keys.contains(&"classify.zero_eigenvalue_tol".to_string()), "{keys:?}");
-        assert!(!keys.contains(&"zero_eigenvalue_tol".to_string()), "{keys:?}");
+        assert!(
+            keys.contains(&"classify.zero_eigenvalue_tol".to_string()),
+            "{keys:?}"
+        );
+        assert!(
+            !keys.contains(&"zero_eigenvalue_tol".to_string()),
+            "{keys:?}"
+        );
         let c: ContinuationOptions = overlay(
             ContinuationOptions::default(),
             [("classify.zero_eigenvalue_tol", json!(1e-6))],
+            serde_json::from_value,
         )
         .unwrap();
         assert_eq!(c.classify.zero_eigenvalue_tol, 1e-6);

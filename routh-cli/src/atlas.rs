@@ -3,12 +3,12 @@
 use crate::cli::Atlas;
 use crate::commands::{describe, load};
 use crate::error::CliError;
+use crate::options::options;
 use crate::table::Table;
 use routh::export::verdict_name;
 use routh::plot::{stability_atlas_svg, PlotOptions};
-use crate::options::options;
-use serde_json::Value;
 use routh::{stability_atlas, AtlasOptions, Model, ModelError, StabilityAtlas, Vector3};
+use serde_json::Value;
 use std::cell::RefCell;
 
 /// The model and momentum at `(x, y)`: each axis is `momentum` or a scalar parameter.

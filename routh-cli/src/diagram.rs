@@ -4,13 +4,11 @@ use crate::args;
 use crate::cli::Diagram;
 use crate::commands::{describe, load};
 use crate::error::CliError;
+use crate::options::options;
 use crate::table::{num, vec3, Table};
 use routh::plot::{bifurcation_diagram_svg, energy_momentum_svg, PlotOptions};
-use routh::{
-    bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError,
-};
+use routh::{bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError};
 use serde_json::json;
-use crate::options::options;
 use std::cell::RefCell;
 
 /// Runs `routh diagram` and returns what it prints.

@@ -16,6 +16,10 @@ pub fn options<T: Options>(
     let flags = flags
         .into_iter()
         .filter_map(|(k, v)| v.map(|v| (k.to_string(), v)));
-    overlay(T::default(), flags.chain(opts.opt.iter().cloned()))
-        .map_err(|e| CliError::Input(format!("--opt: {e}")))
+    overlay(
+        T::default(),
+        flags.chain(opts.opt.iter().cloned()),
+        serde_json::from_value,
+    )
+    .map_err(|e| CliError::Input(format!("--opt: {e}")))
 }

@@ -8,12 +8,12 @@
 use crate::cli::OrbitChartArgs;
 use crate::commands::{describe, load};
 use crate::error::CliError;
+use crate::options::options;
 use crate::orbit_out::Document;
 use crate::table::{num, Table};
-use crate::options::options;
-use serde_json::Value;
 use routh::{orbit_chart as chart_of, OrbitChartOptions, Param, Vector3};
 use serde::Serialize;
+use serde_json::Value;
 
 #[derive(Serialize)]
 struct ChartDocument<'a> {

@@ -6,6 +6,7 @@ use crate::cli::{OrbitArgs, Orbits, Section};
 use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::files::Outputs;
+use crate::options::options;
 use crate::orbit_out::{self, Along, Family, Origin};
 use crate::table::{num, vec3, Table};
 use routh::plot::{orbit_family_svg, orbit_periods_svg, poincare_section_svg, PlotOptions};
@@ -15,7 +16,6 @@ use routh::{
     ModelError, OrbitEventKind, OrbitNonlinearOptions, OrbitOptions, Param, PeriodicOrbit,
     RouthError, SectionOptions, Stability, Vector3,
 };
-use crate::options::options;
 use serde_json::{json, Value};
 use std::cell::RefCell;
 use std::io::Write;

@@ -3,10 +3,10 @@
 use crate::cli::Simulate;
 use crate::commands::load;
 use crate::error::CliError;
-use crate::table::{num, vec3, Table};
 use crate::options::options;
-use serde_json::Value;
+use crate::table::{num, vec3, Table};
 use routh::{simulate_full, simulate_reduced, SimOptions, Vector3};
+use serde_json::Value;
 
 /// At most this many samples in the table (every recorded step goes to `--csv`/`--json`).
 const SAMPLES: usize = 11;
@@ -23,7 +23,10 @@ fn samples(n: usize) -> Vec<usize> {
 pub fn simulate(s: &Simulate) -> Result<String, CliError> {
     let model = load(&s.model)?;
     let opts: SimOptions = options(
-        [("rtol", s.rtol.map(Value::from)), ("atol", s.atol.map(Value::from))],
+        [
+            ("rtol", s.rtol.map(Value::from)),
+            ("atol", s.atol.map(Value::from)),
+        ],
         &s.opts,
     )?;
     let omega = Vector3::from(s.omega);

@@ -23,7 +23,11 @@ fn bad_input(args: &[&str], needles: &[&str]) {
     let o = routh(args);
     assert_eq!(o.status.code(), Some(2), "{args:?}: stderr {}", stderr(&o));
     for n in needles {
-        assert!(stderr(&o).contains(n), "{args:?}: {:?} lacks {n:?}", stderr(&o));
+        assert!(
+            stderr(&o).contains(n),
+            "{args:?}: {:?} lacks {n:?}",
+            stderr(&o)
+        );
     }
     assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
     assert!(stdout(&o).is_empty(), "{}", stdout(&o));
@@ -63,7 +67,13 @@ fn opt_reaches_fields_no_flag_does() {
     // energy_bounds: the family stays within them (a JSON pair, as --energy LO..HI).
     let v = json(&with(
         &FAMILY,
-        &["--opt", "energy_bounds=[-1.6, -1.55]", "--opt", "max_orbits=50", "--json"],
+        &[
+            "--opt",
+            "energy_bounds=[-1.6, -1.55]",
+            "--opt",
+            "max_orbits=50",
+            "--json",
+        ],
     ));
     let energies: Vec<f64> = v[0]["orbits"]
         .as_array()
@@ -109,12 +119,26 @@ fn opt_of_the_section_and_the_simulation() {
     let v = json(&with(&args, &["--opt", "crossings=3"]));
     let orbits = v["orbits"].as_array().unwrap();
     assert_eq!(orbits.len(), 2);
-    assert!(orbits.iter().all(|o| o["points"].as_array().unwrap().len() <= 3));
-    assert_eq!(v, json(&with(&args[..7], &["--orbits", "2", "--crossings", "3"])));
+    assert!(orbits
+        .iter()
+        .all(|o| o["points"].as_array().unwrap().len() <= 3));
+    assert_eq!(
+        v,
+        json(&with(&args[..7], &["--orbits", "2", "--crossings", "3"]))
+    );
     // h_max: no recorded step longer.
     let v = json(&[
-        "simulate", TOP, "--omega", "0,0.3,5", "--gamma", "0.6,0,0.8", "--t-end", "1",
-        "--opt", "h_max=0.05", "--json",
+        "simulate",
+        TOP,
+        "--omega",
+        "0,0.3,5",
+        "--gamma",
+        "0.6,0,0.8",
+        "--t-end",
+        "1",
+        "--opt",
+        "h_max=0.05",
+        "--json",
     ]);
     let t: Vec<f64> = v["t"]
         .as_array()
@@ -165,7 +189,15 @@ fn an_unknown_key_is_bad_input_naming_the_valid_ones() {
 
 #[test]
 fn opt_nonlinear_of_a_diagram_is_the_flag() {
-    let by_opt = ok(&["diagram", TOP, "-p", "1..3", "--opt", "nonlinear=true", "--json"]);
+    let by_opt = ok(&[
+        "diagram",
+        TOP,
+        "-p",
+        "1..3",
+        "--opt",
+        "nonlinear=true",
+        "--json",
+    ]);
     let by_flag = ok(&["diagram", TOP, "-p", "1..3", "--nonlinear", "--json"]);
     assert_eq!(by_opt, by_flag);
 }

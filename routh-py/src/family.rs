@@ -4,10 +4,10 @@
 //! it to call Python. A Python exception raised by the family stops the work (every later
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
-use crate::options::from_keywords;
 use crate::convert::{routh_err, vector3, Real, RouthError};
 use crate::guard::cooperative;
 use crate::model::Model;
+use crate::options::from_keywords;
 use crate::progress::Progress;
 use crate::results::{Atlas, Diagram};
 use pyo3::prelude::*;

@@ -1,10 +1,10 @@
 //! `routh.Model`: the run-time model and the analyses on it.
 
-use crate::options::from_keywords;
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3, Real};
 use crate::guard::{cancellable, detached, interruptible};
 use crate::latex::{aligned, LatexFormulas, SympyFormulas};
 use crate::nonlinear::NonlinearReport;
+use crate::options::from_keywords;
 use crate::progress::Progress;
 use crate::results::{Certificate, CircleReport, Diagram, StabilityReport, SteadyMotion};
 use crate::trajectory::{ReducedTrajectory, Trajectory};

@@ -7,7 +7,7 @@ use crate::lenient::Lenient;
 use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyComplex, PyDict, PyFloat, PyInt, PyString};
-use routh::options::{keywords, overlay_with, OptionError, Options};
+use routh::options::{keywords, overlay, OptionError, Options};
 use routh::{
     AtlasOptions, ContinuationOptions, NonlinearOptions, OrbitChartOptions, OrbitNonlinearOptions,
     OrbitOptions, SectionOptions, SimOptions,
@@ -31,8 +31,7 @@ fn value(key: &str, v: &Bound<'_, PyAny>) -> PyResult<Value> {
             "option `{key}`: expected a real number, not complex"
         )));
     }
-    if v.is_instance_of::<PyInt>() || (!v.is_instance_of::<PyFloat>() && v.hasattr("__index__")?)
-    {
+    if v.is_instance_of::<PyInt>() || (!v.is_instance_of::<PyFloat>() && v.hasattr("__index__")?) {
         if let Ok(i) = v.extract::<i64>() {
             return Ok(Value::from(i));
         }
@@ -50,7 +49,18 @@ fn value(key: &str, v: &Bound<'_, PyAny>) -> PyResult<Value> {
     if v.is_instance_of::<PyFloat>() || v.hasattr("__float__")? {
         let x: f64 = v.extract()?;
         return Ok(Number::from_f64(x).map_or_else(
-            || Value::String(if x.is_nan() { "NaN" } else if x > 0.0 { "Infinity" } else { "-Infinity" }.into()),
+            || {
+                Value::String(
+                    if x.is_nan() {
+                        "NaN"
+                    } else if x > 0.0 {
+                        "Infinity"
+                    } else {
+                        "-Infinity"
+                    }
+                    .into(),
+                )
+            },
             Value::Number,
         ));
     }
@@ -69,17 +79,20 @@ fn value(key: &str, v: &Bound<'_, PyAny>) -> PyResult<Value> {
 /// `T::default()` with the keywords `kwargs` of `function` laid over it: an unknown keyword is a
 /// `TypeError` naming it and the valid ones; a value of the wrong type a `TypeError` (a negative
 /// count an `OverflowError`, another bad value a `ValueError`) naming the keyword.
-pub(crate) fn from_keywords<T: Options>(function: &str, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<T> {
+pub(crate) fn from_keywords<T: Options>(
+    function: &str,
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<T> {
     let mut pairs = Vec::new();
     for (k, v) in kwargs.into_iter().flat_map(|d| d.iter()) {
         let k: String = k.extract()?;
         let v = value(&k, &v)?;
         pairs.push((k, v));
     }
-    overlay_with(T::default(), pairs, |v| T::deserialize(Lenient(v))).map_err(|e| match &e {
-        OptionError::Unknown { .. } => {
-            PyTypeError::new_err(format!("{function}() got an unexpected keyword argument: {e}"))
-        }
+    overlay(T::default(), pairs, |v| T::deserialize(Lenient(v))).map_err(|e| match &e {
+        OptionError::Unknown { .. } => PyTypeError::new_err(format!(
+            "{function}() got an unexpected keyword argument: {e}"
+        )),
         OptionError::Invalid { message, .. } => {
             let msg = format!("{function}(): {e}");
             if message.starts_with("invalid type") {
@@ -108,7 +121,10 @@ fn schema<'py, T: Options>(py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
 pub fn _options_schema(py: Python<'_>) -> PyResult<Py<PyDict>> {
     let d = PyDict::new(py);
     d.set_item("OrbitOptions", schema::<OrbitOptions>(py)?)?;
-    d.set_item("OrbitNonlinearOptions", schema::<OrbitNonlinearOptions>(py)?)?;
+    d.set_item(
+        "OrbitNonlinearOptions",
+        schema::<OrbitNonlinearOptions>(py)?,
+    )?;
     d.set_item("OrbitChartOptions", schema::<OrbitChartOptions>(py)?)?;
     d.set_item("ContinuationOptions", schema::<ContinuationOptions>(py)?)?;
     d.set_item("AtlasOptions", schema::<AtlasOptions>(py)?)?;

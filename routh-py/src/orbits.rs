@@ -11,10 +11,10 @@
 use crate::convert::{helper, model_err, model_err_unplaced, routh_err, vec3, vector3, Real};
 use crate::guard::{cancellable, interruptible};
 use crate::model::Model;
+use crate::options::from_keywords;
 use crate::results::SteadyMotion;
 use crate::trajectory::Trajectory;
 use numpy::{PyArray1, PyArrayMethods};
-use crate::options::from_keywords;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use routh::{Complex, OrbitOptions, Param, SectionOptions};
