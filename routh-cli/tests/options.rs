@@ -5,76 +5,57 @@
 
 mod common;
 
-use common::{routh, stderr, stdout, ASYMMETRIC, SWINGING, TOP};
+use common::{fails_with, ok, ASYMMETRIC, SWINGING, TOP};
 use serde_json::Value;
-
-fn ok(args: &[&str]) -> String {
-    let o = routh(args);
-    assert_eq!(o.status.code(), Some(0), "{args:?}: stderr {}", stderr(&o));
-    stdout(&o)
-}
 
 fn json(args: &[&str]) -> Value {
     serde_json::from_str(&ok(args)).expect("JSON")
 }
 
-/// Exit code 2, a message containing each of `needles`, no panic, nothing on stdout.
+/// Bad input: exit code 2, a message containing each of `needles`.
 fn bad_input(args: &[&str], needles: &[&str]) {
-    let o = routh(args);
-    assert_eq!(o.status.code(), Some(2), "{args:?}: stderr {}", stderr(&o));
-    for n in needles {
-        assert!(
-            stderr(&o).contains(n),
-            "{args:?}: {:?} lacks {n:?}",
-            stderr(&o)
-        );
-    }
-    assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
-    assert!(stdout(&o).is_empty(), "{}", stdout(&o));
+    fails_with(args, 2, needles);
 }
-
-const FAMILY: [&str; 8] = [
-    "orbits",
-    ASYMMETRIC,
-    "-p",
-    "0",
-    "--mode",
-    "0",
-    "--gamma",
-    "-0.25,-0.19,-0.95",
-];
 
 fn with<'a>(head: &[&'a str], tail: &[&'a str]) -> Vec<&'a str> {
     head.iter().chain(tail).copied().collect()
 }
 
+/// `routh orbits` of the asymmetric top's hanging position, mode 0, then `tail`.
+fn family<'a>(tail: &[&'a str]) -> Vec<&'a str> {
+    let mut v = vec!["orbits", ASYMMETRIC];
+    v.extend("-p 0 --mode 0 --gamma -0.25,-0.19,-0.95".split_whitespace());
+    v.extend(tail);
+    v
+}
+
 #[test]
 fn opt_max_orbits_is_the_flag() {
-    let by_opt = json(&with(&FAMILY, &["--opt", "max_orbits=3", "--json"]));
-    let by_flag = json(&with(&FAMILY, &["--max-orbits", "3", "--json"]));
+    let by_opt = json(&family(&["--opt", "max_orbits=3", "--json"]));
+    let by_flag = json(&family(&["--max-orbits", "3", "--json"]));
     assert_eq!(by_opt[0]["orbits"].as_array().map(Vec::len), Some(3));
     assert_eq!(by_opt, by_flag);
     // Given after the flags, --opt overrides them.
-    let both = json(&with(
-        &FAMILY,
-        &["--max-orbits", "5", "--opt", "max_orbits=2", "--json"],
-    ));
+    let both = json(&family(&[
+        "--max-orbits",
+        "5",
+        "--opt",
+        "max_orbits=2",
+        "--json",
+    ]));
     assert_eq!(both[0]["orbits"].as_array().map(Vec::len), Some(2));
 }
 
 #[test]
 fn opt_reaches_fields_no_flag_does() {
     // energy_bounds: the family stays within them (a JSON pair, as --energy LO..HI).
-    let v = json(&with(
-        &FAMILY,
-        &[
-            "--opt",
-            "energy_bounds=[-1.6, -1.55]",
-            "--opt",
-            "max_orbits=50",
-            "--json",
-        ],
-    ));
+    let v = json(&family(&[
+        "--opt",
+        "energy_bounds=[-1.6, -1.55]",
+        "--opt",
+        "max_orbits=50",
+        "--json",
+    ]));
     let energies: Vec<f64> = v[0]["orbits"]
         .as_array()
         .unwrap()
@@ -89,7 +70,7 @@ fn opt_reaches_fields_no_flag_does() {
     );
     // The library's own check of a field reaches the user in its words: the family it refuses
     // is listed as skipped (as a resonant start is), a single orbit is bad input.
-    let out = ok(&with(&FAMILY, &["--opt", "min_step=1"]));
+    let out = ok(&family(&["--opt", "min_step=1"]));
     assert!(
         out.contains("invalid option OrbitOptions::min_step: 1 exceeds max_step = 0.1"),
         "{out}"
@@ -152,7 +133,7 @@ fn opt_of_the_section_and_the_simulation() {
 #[test]
 fn an_unknown_key_is_bad_input_naming_the_valid_ones() {
     bad_input(
-        &with(&FAMILY, &["--opt", "max_orbit=3"]),
+        &family(&["--opt", "max_orbit=3"]),
         &[
             "unknown option `max_orbit`",
             "did you mean `max_orbits`",
@@ -177,10 +158,10 @@ fn an_unknown_key_is_bad_input_naming_the_valid_ones() {
         &["unknown option `energy_bounds`", "join_tol", "max_orbits"],
     );
     bad_input(
-        &with(&FAMILY, &["--opt", "max_orbits=many"]),
+        &family(&["--opt", "max_orbits=many"]),
         &["option `max_orbits`", "invalid type: string \"many\""],
     );
-    bad_input(&with(&FAMILY, &["--opt", "max_orbits"]), &["KEY=VALUE"]);
+    bad_input(&family(&["--opt", "max_orbits"]), &["KEY=VALUE"]);
     bad_input(
         &["diagram", TOP, "-p", "0..5", "--opt", "nonlinear=maybe"],
         &["option `nonlinear`"],

@@ -25,25 +25,29 @@ Vec3 = Union[Sequence[float], npt.NDArray[np.float64]]
 # (`routh._options_schema()`; routh-py/tests/test_options.py checks these against it). None
 # for a keyword is its default.
 
-class _OrbitOptions(TypedDict, total=False):
-    """`OrbitOptions`: the periodic orbits and their families."""
+class _OrbitFamilyOptions(TypedDict, total=False):
+    """The fields of `OrbitOptions` an orbit chart's families share with any family."""
 
     atol: float  # default 1e-12
-    energy_bounds: tuple[float, float] | None  # default None
     event_tol: float  # default 1e-9
     initial_amplitude: float  # default 0.001
     initial_step: float  # default 0.02
     max_iter: int  # default 12
-    max_orbits: int  # default 100
     max_period_ratio: float  # default 20.0
     max_step: float  # default 0.1
     max_steps: int  # default 100000
     min_step: float  # default 1e-7
     newton_tol: float  # default 1e-9
-    nonlinear: bool  # default False
     parabolic_tol: float  # default 1e-6
     resonance_tol: float  # default 0.001
     rtol: float  # default 1e-11
+
+class _OrbitOptions(_OrbitFamilyOptions, total=False):
+    """`OrbitOptions`: the periodic orbits and their families."""
+
+    energy_bounds: tuple[float, float] | None  # default None
+    max_orbits: int  # default 100
+    nonlinear: bool  # default False
 
 class _OrbitNonlinearOptions(TypedDict, total=False):
     """`OrbitNonlinearOptions`: an orbit's stability beyond linear."""
@@ -55,26 +59,13 @@ class _OrbitNonlinearOptions(TypedDict, total=False):
     rtol: float  # default 1e-11
     twist_tol: float  # default 1e-6
 
-class _OrbitChartOptions(TypedDict, total=False):
+class _OrbitChartOptions(_OrbitFamilyOptions, total=False):
     """`OrbitChartOptions`: an orbit chart, its families' fields by their own names (not
     `energy_bounds` and `nonlinear`, which the chart sets)."""
 
-    atol: float  # default 1e-12
-    event_tol: float  # default 1e-9
-    initial_amplitude: float  # default 0.001
-    initial_step: float  # default 0.02
     join_tol: float  # default 0.2
-    max_iter: int  # default 12
     max_orbits: int  # default 200
-    max_period_ratio: float  # default 20.0
-    max_step: float  # default 0.1
-    max_steps: int  # default 100000
-    min_step: float  # default 1e-7
-    newton_tol: float  # default 1e-9
     nx: int  # default 41
-    parabolic_tol: float  # default 1e-6
-    resonance_tol: float  # default 0.001
-    rtol: float  # default 1e-11
 
 class _ContinuationOptions(TypedDict, total=False):
     """`ContinuationOptions`: a bifurcation diagram, the fields of its `search` and
