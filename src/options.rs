@@ -5,8 +5,8 @@
 //! The keys are the struct's fields; the fields of a nested options struct (`orbit` in
 //! [`OrbitChartOptions`]) are keys too, by their own names (or `orbit.max_orbits`). A key the
 //! struct does not have is an [`OptionError::Unknown`] naming the valid ones; a value of the
-//! wrong type an [`OptionError::Invalid`] naming the key. The values themselves are checked by
-//! the analysis, as for any options struct.
+//! wrong type an [`OptionError::Invalid`] naming the key; `null` is the default. The values
+//! themselves are checked by the analysis, as for any options struct.
 //!
 //! ```
 //! use routh::options::overlay;
@@ -178,6 +178,15 @@ fn path(top: &Map<String, Value>, key: &str) -> Option<Vec<String>> {
     }
 }
 
+fn get(top: &Map<String, Value>, at: &[String]) -> Value {
+    let v = match at {
+        [k] => top.get(k),
+        [outer, inner] => top.get(outer).and_then(|m| m.get(inner)),
+        _ => None,
+    };
+    v.cloned().unwrap_or(Value::Null)
+}
+
 fn set(top: &mut Map<String, Value>, at: &[String], value: Value) {
     match at {
         [k] => {
@@ -258,7 +267,11 @@ where
             .filter(|at| !T::FIXED.contains(&at[at.len() - 1].as_str()))
             .filter(|at| at.len() == 1 || !shape.contains_key(&at[1]))
             .ok_or_else(|| unknown::<T>(key))?;
-        let value = T::value(key, value);
+        // `null` is the default (`None` in Python: a keyword not given).
+        let value = match value {
+            Value::Null => get(&shape, &at),
+            v => T::value(key, v),
+        };
         set(&mut all, &at, value.clone());
         given.push((key.to_string(), at, value));
     }
@@ -393,6 +406,9 @@ mod tests {
         assert_eq!(o, base);
         let o = overlay(base, [("nonlinear", json!(true))], serde_json::from_value).unwrap();
         assert_eq!((o.max_orbits, o.nonlinear), (9, true));
+        // null is the default, not the base's value.
+        let o = overlay(o, [("max_orbits", Value::Null)], serde_json::from_value).unwrap();
+        assert_eq!(o.max_orbits, OrbitOptions::default().max_orbits);
     }
 
     #[test]

@@ -113,8 +113,9 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
     Ok((m.get().get()?, p))
 }
 
-/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`. Keywords
-/// default to the Rust `ContinuationOptions::default()`; `progress=True` shows the count of
+/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`. Keywords: the
+/// fields of the Rust `ContinuationOptions`, defaults its `Default` (`nonlinear=True`: the
+/// nonlinear events too); `progress=True` shows the count of
 /// family evaluations. The family is called with the GIL held; the continuation between calls
 /// runs without it. An exception raised by the family stops the work and is re-raised.
 ///
@@ -156,8 +157,8 @@ pub fn bifurcation_diagram(
 }
 
 /// The stability atlas of a family `(x, y) -> (Model, p_psi)` over `[x0, x1] × [y0, y1]`,
-/// following the steady motion near `gamma_guess`. Keywords default to the Rust
-/// `AtlasOptions::default()`; a grid of more than `MAX_ATLAS_NODES` nodes is refused.
+/// following the steady motion near `gamma_guess`. Keywords: the fields of the Rust
+/// `AtlasOptions`, defaults its `Default`; a grid of more than `MAX_ATLAS_NODES` nodes is refused.
 ///
 /// >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
 /// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)

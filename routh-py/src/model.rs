@@ -241,8 +241,8 @@ impl Model {
 
     /// The nonlinear (Lyapunov) stability of a steady motion from the Birkhoff normal form of
     /// the reduced Hamiltonian to order four: Arnold–Moser away from resonances, Markeev's
-    /// criteria at 1:2 and 1:3, as a `NonlinearReport`. Tolerances default to the Rust
-    /// `NonlinearOptions::default()`.
+    /// criteria at 1:2 and 1:3, as a `NonlinearReport`. Keywords: the fields of the Rust
+    /// `NonlinearOptions` (those of its `classify` by their own names), defaults its `Default`.
     ///
     /// >>> m = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])  # sleeping (γ₃ = 1)
     /// >>> top.nonlinear_stability(m).verdict   # gyroscopically stabilised: Arnold–Moser
@@ -264,8 +264,8 @@ impl Model {
         NonlinearReport::new(py, &r)
     }
 
-    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi). Keywords default to the Rust
-    /// `ContinuationOptions::default()`; `progress=True` shows the count of evaluations (tqdm
+    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi). Keywords: the fields of the
+    /// Rust `ContinuationOptions`, defaults its `Default`; `progress=True` shows the count of evaluations (tqdm
     /// if installed, else a line on stderr). The GIL is released during the work.
     ///
     /// >>> d = top.bifurcation_diagram((0.0, 5.0))
@@ -304,9 +304,10 @@ impl Model {
         Diagram::new(py, &d?.map_err(|e| routh_err(py, &e))?)
     }
 
-    /// Integrate the full equations (8) from (ω₀, γ₀) to `t_end` (DOP853, the Rust
-    /// `SimOptions` defaults); the Rust `simulate_full`. `simulate` is an alias. `times`: record exactly at these times (dense output) instead of
-    /// at every step; `attitude=True`: also integrate the attitude (`tr.attitude`, quaternions
+    /// Integrate the full equations (8) from (ω₀, γ₀) to `t_end`; the Rust `simulate_full`.
+    /// `simulate` is an alias. Keywords: the fields of the Rust `SimOptions` (`rtol`, `atol`,
+    /// `max_steps`, `h_max`, `method`, `attitude`, …), defaults its `Default` (DOP853). `times`:
+    /// record exactly at these times (dense output) instead of at every step; `attitude=True`: also integrate the attitude (`tr.attitude`, quaternions
     /// (x, y, z, w), `tr.euler_angles()`, `tr.plot_apex()`).
     ///
     /// >>> tr = top.simulate_full([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0, attitude=True,

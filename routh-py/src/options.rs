@@ -38,6 +38,10 @@ fn value(key: &str, v: &Bound<'_, PyAny>) -> PyResult<Value> {
         if let Ok(u) = v.extract::<u64>() {
             return Ok(Value::from(u));
         }
+        return Err(PyOverflowError::new_err(format!(
+            "option `{key}`: {} is out of range",
+            v.str()?
+        )));
     }
     if let Ok(d) = v.cast::<PyDict>() {
         let mut m = serde_json::Map::new();

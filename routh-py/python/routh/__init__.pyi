@@ -1036,3 +1036,5 @@ def from_json(text: str) -> Any:
     >>> d2 = routh.from_json(d.to_json())
     """
 def _restore(kind: str, state: Any) -> Any: ...
+def _options_schema() -> dict[str, dict[str, Any]]:
+    """{options struct: {keyword: default}}: the keywords of the analyses and their defaults."""
