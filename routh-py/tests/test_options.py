@@ -89,7 +89,7 @@ def test_a_wrong_value_names_its_keyword(body):
         body.lyapunov_family(s, 0, max_orbits=2.5)
     with pytest.raises(OverflowError, match="`max_orbits`"):
         body.lyapunov_family(s, 0, max_orbits=-1)
-    with pytest.raises(TypeError, match="`energy_bounds`"):
+    with pytest.raises(ValueError, match="`energy_bounds`: invalid length 3"):
         body.lyapunov_family(s, 0, energy_bounds=(0, 1, 2))
     with pytest.raises(TypeError, match="complex"):
         body.lyapunov_family(s, 0, rtol=1j)
