@@ -7,7 +7,7 @@
 //! orbitally stable (Moser's twist theorem).
 //!
 //! `cargo run --release --example orbit_chart` (about 10 s) prints the curves and writes
-//! `target/orbit_chart_body141.csv`.
+//! `target/orbit_chart_body141.csv` and the figure `target/orbit_chart_body141.svg`.
 
 use routh::{
     lyapunov_family, orbit_chart, orbit_nonlinear_stability, steady_motion_near, Lagrangian,
@@ -72,5 +72,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/orbit_chart_body141.csv");
     routh::files::write_file(&path, csv.as_bytes())?;
     println!("wrote {}", path.display());
+    let svg = path.with_extension("svg");
+    let look = routh::plot::PlotOptions {
+        x_label: "α".into(),
+        ..routh::plot::PlotOptions::column()
+    };
+    routh::plot::orbit_chart_svg(&chart, &svg, &look)?;
+    println!("wrote {}", svg.display());
     Ok(())
 }

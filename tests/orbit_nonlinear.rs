@@ -323,7 +323,9 @@ fn fd_index(m: &Body, o: &PeriodicOrbit) -> f64 {
 
 /// The chart over the middle moment: its curves' points are where an independent monodromy
 /// (finite differences of `simulate_full`) has `k = 1`, `0` or `−1/2`, and where the twist,
-/// recomputed on another chart of the section, vanishes.
+/// recomputed on another chart of the section, vanishes; the curves are continued in `(x, h)`:
+/// the resonance 1/3 is a tongue that turns back in `x`, one curve through its tip, and a point
+/// of it between the grid's `x` is an event of the family traced there from its steady motion.
 #[test]
 fn orbit_chart_curves_are_where_the_conditions_hold() {
     let make = |b: f64| {
@@ -347,20 +349,81 @@ fn orbit_chart_curves_are_where_the_conditions_hold() {
         .iter()
         .map(|c| (c.kind, c.points.len()))
         .collect();
-    eprintln!("{kinds:?}");
+    // k = 1, k = 0 and τ = 0 cross the chart: one curve each, from x = 1.9 to 2.1.
     for kind in [
         OrbitEventKind::BranchPoint,
         OrbitEventKind::FourthOrderResonance,
         OrbitEventKind::TwistDegenerate,
     ] {
-        assert!(
-            chart
-                .curves
-                .iter()
-                .any(|c| c.kind == kind && c.points.len() == 4),
-            "no curve of {kind} across the chart: {kinds:?}"
-        );
+        let c: Vec<_> = chart.curves.iter().filter(|c| c.kind == kind).collect();
+        assert_eq!(c.len(), 1, "{kind}: {kinds:?}");
+        let (a, b) = (c[0].points[0], c[0].points[c[0].points.len() - 1]);
+        assert!(a[0] == 1.9 && b[0] == 2.1, "{kind}: {:?}", c[0].points);
     }
+    // k = −1/2: met twice at x = 2.0333 and 2.1 by the families, once by none at 1.9667: one
+    // curve, both ends at x = 2.1, its tip between 1.9667 and 2.0333.
+    let third: Vec<_> = chart
+        .curves
+        .iter()
+        .filter(|c| c.kind == OrbitEventKind::ThirdOrderResonance)
+        .collect();
+    assert_eq!(third.len(), 1, "{kinds:?}");
+    let pts = &third[0].points;
+    assert!(pts[0][0] == 2.1 && pts[pts.len() - 1][0] == 2.1, "{pts:?}");
+    let tip = pts.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+    assert!(1.9667 < tip && tip < 2.0333, "tip at x = {tip}");
+    // Every curve point at an x of the grid is the family's own event there (traced from
+    // another seed, or from another x).
+    for c in &chart.curves {
+        for p in &c.points {
+            let Some(i) = chart.x.iter().position(|&x| x == p[0]) else {
+                continue;
+            };
+            let es = chart.steady_energy[i];
+            let fam = chart.families[i].as_ref().unwrap();
+            let near = fam
+                .events
+                .iter()
+                .filter(|e| e.kind == c.kind)
+                .map(|e| (e.energy - es - p[1]).abs())
+                .fold(f64::INFINITY, f64::min);
+            assert!(near < 1e-6, "{} at {p:?}: {near:e}", c.kind);
+        }
+    }
+    // A point of the tongue between the grid's x: the family at that x, traced from its steady
+    // motion, meets k = −1/2 there, and finite differences say k = −1/2.
+    let p = pts
+        .iter()
+        .filter(|p| p[1] > 1.3 && !chart.x.contains(&p[0]))
+        .min_by(|a, b| (a[0] - 2.05).abs().total_cmp(&(b[0] - 2.05).abs()))
+        .copied()
+        .expect("a point between the grid's x");
+    let (m, _) = make(p[0]);
+    let s = hanging(&m);
+    let o = OrbitOptions {
+        nonlinear: true,
+        energy_bounds: Some((s.energy, s.energy + p[1] + 0.05)),
+        max_orbits: 400,
+        ..Default::default()
+    };
+    let fam = lyapunov_family(&m, &s, 0, &o).unwrap();
+    let ev = fam
+        .events
+        .iter()
+        .filter(|e| e.kind == OrbitEventKind::ThirdOrderResonance)
+        .min_by(|a, b| {
+            (a.energy - s.energy - p[1])
+                .abs()
+                .total_cmp(&(b.energy - s.energy - p[1]).abs())
+        })
+        .expect("the resonance on the family");
+    assert!(
+        (ev.energy - s.energy - p[1]).abs() < 1e-6,
+        "{p:?} vs {}",
+        ev.energy - s.energy
+    );
+    let k_fd = fd_index(&m, &ev.orbit);
+    assert!((k_fd + 0.5).abs() < 1e-5, "k = {k_fd}");
     // Every event at the chart's first and last x, checked independently.
     for (i, fam) in chart.families.iter().enumerate() {
         if i != 0 && i != 3 {

@@ -463,6 +463,13 @@ pub struct OrbitChartArgs {
     /// The most orbits per family (default: the library's, `OrbitChartOptions::default()`).
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=10000))]
     pub max_orbits: Option<u16>,
+    /// Draw the chart into this SVG file: the regions of the orbits by linear stability, the
+    /// curves on top, the parameter across and h up.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+    /// Figure options.
+    #[command(flatten)]
+    pub figure: Figure,
     /// Options.
     #[command(flatten)]
     pub opts: Opts,

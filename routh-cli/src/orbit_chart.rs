@@ -3,7 +3,8 @@
 //!
 //! Table: one row per curve (its kind, number of points, the range of x and h). CSV: the curves'
 //! points, `curve,kind,parameter_name,x,h`. JSON: the serde form of `routh::OrbitChart` as a
-//! Python document (`"routh": "OrbitChart"`) with `parameter_name`.
+//! Python document (`"routh": "OrbitChart"`) with `parameter_name`. `--svg FILE`: the figure
+//! of `routh::plot::orbit_chart_svg`, with the figure options of every command.
 
 use crate::cli::OrbitChartArgs;
 use crate::commands::{describe, load};
@@ -11,6 +12,7 @@ use crate::error::CliError;
 use crate::options::options;
 use crate::orbit_out::Document;
 use crate::table::{num, Table};
+use routh::plot::{orbit_chart_svg, PlotOptions};
 use routh::{orbit_chart as chart_of, OrbitChartOptions, Param, Vector3};
 use serde::Serialize;
 use serde_json::Value;
@@ -64,9 +66,27 @@ pub fn orbit_chart(a: &OrbitChartArgs) -> Result<String, CliError> {
         &opts,
     )?;
     drop(bar);
+    let mut files = crate::files::Outputs::new();
+    if let Some(path) = &a.svg {
+        let opts = a.figure.apply(PlotOptions {
+            x_label: crate::args::axis_name(name, model.latex_symbols()),
+            ..PlotOptions::default()
+        });
+        files.write(path, |tmp| orbit_chart_svg(&chart, tmp, &opts))?;
+    }
+    let text = render(a, &chart, name)?;
+    files.commit()?;
+    Ok(text)
+}
+
+/// What `routh orbit-chart` prints: the table, the CSV of the curves' points or the JSON.
+fn render(a: &OrbitChartArgs, chart: &routh::OrbitChart, name: &str) -> Result<String, CliError> {
+    let (lo, hi) = a.parameter.range;
+    let (h_lo, h_hi) = a.excess_energy;
+    let p = a.momentum;
     if a.output.json {
         let doc = ChartDocument {
-            chart: Document::new("OrbitChart", &chart),
+            chart: Document::new("OrbitChart", chart),
             parameter_name: name,
         };
         return Ok(serde_json::to_string_pretty(&doc)? + "\n");

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{routh, stderr, ASYMMETRIC, TOP};
+use common::{routh, stderr, stdout, ASYMMETRIC, BODY_141, TOP};
 use std::collections::HashSet;
 use std::path::PathBuf;
 
@@ -250,6 +250,61 @@ fn orbit_and_section_figures_take_the_options() {
     assert_eq!(f.width, "3.4in");
     assert!(f.has("A section"));
     assert!(f.smallest_pt() >= 7.0);
+}
+
+/// The orbit chart's figure draws what the chart has: a legend row for each kind of curve the
+/// chart's JSON holds and for none other, the elliptic and hyperbolic regions, at column width
+/// in greys with texts of at least 7 pt, the parameter named by the model's symbol.
+#[test]
+fn orbit_chart_figure_draws_its_curves_and_regions() {
+    let path = scratch("chart.svg");
+    let o = routh(&[
+        "orbit-chart",
+        BODY_141,
+        "--parameter",
+        "alpha=0.5..1.0",
+        "--excess-energy",
+        "0..1.9",
+        "--gamma",
+        "0,0,-1",
+        "--nx",
+        "3",
+        "--json",
+        "--width",
+        "column",
+        "--grey",
+        "--svg",
+        path.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let chart: routh::OrbitChart = serde_json::from_str(&stdout(&o)).unwrap();
+    let f = Figure::read(&path);
+    assert_eq!(f.width, "3.4in");
+    assert!(f.smallest_pt() >= 7.0);
+    assert!(f.grey(), "{:?}", f.colours);
+    assert!(f.has("α"), "{:?}", f.texts);
+    for kind in [
+        routh::OrbitEventKind::Fold,
+        routh::OrbitEventKind::BranchPoint,
+        routh::OrbitEventKind::PeriodDoubling,
+        routh::OrbitEventKind::ThirdOrderResonance,
+        routh::OrbitEventKind::FourthOrderResonance,
+        routh::OrbitEventKind::TwistDegenerate,
+    ] {
+        let label = routh::style::look("orbit_curve", kind.as_str())
+            .unwrap()
+            .label;
+        let drawn = chart
+            .curves
+            .iter()
+            .any(|c| c.kind == kind && c.points.len() > 1);
+        assert_eq!(f.has(label), drawn, "{label}: {:?}", f.texts);
+    }
+    assert!(chart
+        .curves
+        .iter()
+        .any(|c| c.kind == routh::OrbitEventKind::BranchPoint));
+    assert!(f.has("elliptic, |k| &lt; 1") && f.has("hyperbolic, k &gt; 1"));
 }
 
 #[test]

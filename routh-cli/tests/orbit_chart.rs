@@ -5,13 +5,8 @@
 
 mod common;
 
-use common::{fails, ok, SWINGING as BODY};
+use common::{fails, ok, BODY_141, SWINGING as BODY};
 use std::f64::consts::PI;
-
-const BODY_141: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../examples/models/body_141.toml"
-);
 
 /// The CSV's row as `column → value`.
 fn row(csv: &str) -> std::collections::HashMap<String, String> {

@@ -29,6 +29,8 @@ pub(super) enum Swatch {
     Dots(RGBColor),
     /// The mark of a fixed point of a Poincaré section.
     FixedPoint,
+    /// A rectangle filled with this colour: a region of an orbit chart.
+    Fill(RGBColor),
     /// Nothing: a row of text only.
     Text,
 }
@@ -193,6 +195,17 @@ pub(super) fn draw_legend(
                 }
             }
             Swatch::FixedPoint => draw_fixed_point(root, ((sx0 + sx1) / 2, cy))?,
+            Swatch::Fill(color) => {
+                let (a, b) = ((sx0, cy - 9), (sx1, cy + 9));
+                root.draw(&Rectangle::new([a, b], color.filled()))
+                    .and_then(|_| {
+                        root.draw(&Rectangle::new(
+                            [a, b],
+                            RGBColor(90, 90, 90).stroke_width(1),
+                        ))
+                    })
+                    .map_err(drawing_error)?;
+            }
             Swatch::Text => {}
         }
         root.draw(&Text::new(text.clone(), (sx1 + 10, cy), font.clone()))

@@ -1,8 +1,9 @@
 //! SVG figures of families of steady motions (feature `plot`, on by default): bifurcation
 //! diagrams, Smale's energy–momentum diagram and stability atlases, drawn with `plotters`; of
 //! periodic orbits: the stability diagram and the periods of a family ([`orbit_family_svg`],
-//! [`orbit_periods_svg`]), orbits on the sphere of γ ([`orbits_on_sphere_svg`]) and Poincaré
-//! sections ([`poincare_section_svg`]); and of single motions ([`apex_locus_svg`],
+//! [`orbit_periods_svg`]), orbits on the sphere of γ ([`orbits_on_sphere_svg`]), Poincaré
+//! sections ([`poincare_section_svg`]) and orbit charts over a parameter and the energy
+//! ([`orbit_chart_svg`]); and of single motions ([`apex_locus_svg`],
 //! [`time_histories_svg`]).
 //!
 //! Every figure reads without colour:
@@ -85,7 +86,8 @@ use std::fmt;
 use std::path::Path;
 
 use crate::{
-    BifurcationDiagram, OrbitFamily, PoincareSection, StabilityAtlas, Trajectory, Vector3,
+    BifurcationDiagram, OrbitChart, OrbitFamily, PoincareSection, StabilityAtlas, Trajectory,
+    Vector3,
 };
 #[cfg(doc)]
 use crate::{EventKind, OrbitEventKind, OrbitStability, Stability};
@@ -99,6 +101,7 @@ use crate::{EventKind, OrbitEventKind, OrbitStability, Stability};
 // sections) and `axis` (`DiagramAxis`).
 mod atlas;
 mod axis;
+mod chart;
 mod circles;
 mod curve;
 mod diagram;
@@ -767,4 +770,72 @@ pub fn poincare_section_svg<P: AsRef<Path>>(
     opts: &PlotOptions,
 ) -> Result<(), PlotError> {
     orbits::section_figure(section, fixed_points, path.as_ref(), opts)
+}
+
+/// Writes an orbit chart ([`orbit_chart`](crate::orbit_chart)) as an SVG: the parameter `x`
+/// across, the energy `h = E − Eₛ` above the steady motion up; the regions of the families'
+/// orbits filled by linear stability (a light tint of the verdict's colour, or a grey level with
+/// [`PlotOptions::monochrome`], lighter the more stable: elliptic, parabolic, hyperbolic, inverse
+/// hyperbolic), each family a strip half-way to its neighbours, cut where `k` crosses `±1`; on
+/// top, on a white halo, the chart's curves in the look of their kind (the table
+/// [`crate::style::STYLE`]'s `orbit_curve`, as the Python figure): solid folds, dashed
+/// `k = 1`, dotted `k = −1`, blue dashes for the resonances of order three and four, the twist's
+/// zero; a curve met at one `x` only is its event's marker. The legend names what is drawn.
+///
+/// The axes are labelled [`PlotOptions::x_label`] (`"x"` when it is the default `"s"` or empty)
+/// and [`PlotOptions::y_label`] (`"h = E − Eₛ"` when empty).
+///
+/// # Errors
+///
+/// [`PlotError::EmptyData`] for a chart with neither a family nor a curve,
+/// [`PlotError::InvalidOptions`] for a figure smaller than 400 × 250 pixels, [`PlotError::Io`]
+/// if the file cannot be written.
+///
+/// ```
+/// use routh::plot::{orbit_chart_svg, PlotOptions};
+/// use routh::{OrbitChart, OrbitChartCurve, OrbitEventKind, OrbitFamily, OrbitStability};
+/// use routh::{PeriodicOrbit, Vector3};
+///
+/// // Families at x = 0, 0.5, 1 whose orbits turn hyperbolic (k = 1) at h = 1 + x.
+/// let orbit = |x: f64, h: f64| {
+///     let k = 0.5 + 0.5 * h / (1.0 + x);
+///     PeriodicOrbit {
+///         omega0: Vector3::zeros(), gamma0: -Vector3::z(), period: 6.0, energy: h - 1.0,
+///         p_psi: 0.0, precession: 0.0, body_turn: 0.0,
+///         multipliers: PeriodicOrbit::multipliers_from_index(k), stability_index: k,
+///         stability: OrbitStability::from_index(k, 1e-9), degenerate: false, amplitude: h,
+///     }
+/// };
+/// let x = vec![0.0, 0.5, 1.0];
+/// let families = x
+///     .iter()
+///     .map(|&x| Some(OrbitFamily {
+///         orbits: (0..=30).map(|i| orbit(x, 0.1 * i as f64)).collect(),
+///         events: vec![],
+///         stop: None,
+///     }))
+///     .collect();
+/// let chart = OrbitChart {
+///     steady_energy: vec![-1.0; 3],
+///     failures: vec![None; 3],
+///     curves: vec![OrbitChartCurve {
+///         kind: OrbitEventKind::BranchPoint,
+///         points: x.iter().map(|&x| [x, 1.0 + x]).collect(),
+///     }],
+///     families,
+///     x,
+///     stop: None,
+/// };
+/// let path = std::env::temp_dir().join("routh-doc-orbit-chart.svg");
+/// orbit_chart_svg(&chart, &path, &PlotOptions::column())?;
+/// let svg = std::fs::read_to_string(&path)?;
+/// assert!(svg.contains("k = 1 (branch point)") && svg.contains("hyperbolic"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn orbit_chart_svg<P: AsRef<Path>>(
+    chart: &OrbitChart,
+    path: P,
+    opts: &PlotOptions,
+) -> Result<(), PlotError> {
+    chart::chart_figure(chart, path.as_ref(), opts)
 }

@@ -284,6 +284,42 @@ pub(super) fn orbit_event_name(k: OrbitEventKind) -> &'static str {
     }
 }
 
+/// The key of an event kind of periodic orbits in [`STYLE`] (`orbit_event`, `orbit_curve`).
+fn orbit_event_key(k: OrbitEventKind) -> &'static str {
+    match k {
+        OrbitEventKind::Fold => "fold",
+        OrbitEventKind::BranchPoint => "branch_point",
+        OrbitEventKind::PeriodDoubling => "period_doubling",
+        OrbitEventKind::TwistDegenerate => "twist_degenerate",
+        OrbitEventKind::ThirdOrderResonance => "third_order_resonance",
+        OrbitEventKind::FourthOrderResonance => "fourth_order_resonance",
+    }
+}
+
+/// The stroke, colour and legend text of a curve of an orbit chart (the table's
+/// `orbit_curve`, which the Python figure reads too).
+pub(super) fn orbit_curve_look(k: OrbitEventKind, mono: bool) -> (Stroke, RGBColor, &'static str) {
+    let l = the("orbit_curve", orbit_event_key(k));
+    (stroke_of(l), ink(rgb(l.color), mono), l.label)
+}
+
+/// The light fill of the region of a verdict in an orbit chart: the verdict's colour at a
+/// fifth of its strength on white (in greys, a lighter grey the more stable).
+pub(super) fn orbit_region_fill(v: OrbitStability, mono: bool) -> RGBColor {
+    if mono {
+        let g = match v {
+            OrbitStability::Elliptic => 235,
+            OrbitStability::Parabolic => 215,
+            OrbitStability::Hyperbolic => 190,
+            OrbitStability::InverseHyperbolic => 165,
+        };
+        return RGBColor(g, g, g);
+    }
+    let c = rgb(the("orbit_verdict", orbit_key(v)).color);
+    let tint = |x: u8| (255.0 - 0.3 * (255.0 - f64::from(x))).round() as u8;
+    RGBColor(tint(c.0), tint(c.1), tint(c.2))
+}
+
 /// The grey of the reference lines `k = ±1` of a stability diagram of periodic orbits.
 pub(super) const PARABOLIC_LINE: RGBColor = rgb("#646464");
 

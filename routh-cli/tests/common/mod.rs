@@ -18,6 +18,11 @@ pub const SWINGING: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/models/swinging_body.toml"
 );
+/// The heavy body with moments 1 : 4 : 1 of the orbit-chart example.
+pub const BODY_141: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../examples/models/body_141.toml"
+);
 
 /// `routh ARGS…`, its exit code and both streams.
 pub fn routh(args: &[&str]) -> Output {

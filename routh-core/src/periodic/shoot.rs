@@ -462,6 +462,33 @@ pub(crate) fn correct<M: Lagrangian>(
     Ok(Err(best))
 }
 
+/// The orbit of `model` at the energy `energy` and the momentum `p_psi` corrected from `guess`,
+/// an orbit of a neighbouring model or energy (the chart's curves, `chart/curves.rs`): one
+/// correction with the energy fixed. `None` when it does not converge or lands on a steady
+/// motion; the model's own errors are errors.
+pub(crate) fn orbit_near<M: Lagrangian>(
+    model: &M,
+    guess: &PeriodicOrbit,
+    energy: f64,
+    p_psi: f64,
+    opts: &OrbitOptions,
+) -> Result<Option<PeriodicOrbit>, RouthError> {
+    let x = check_guess(model, &guess.omega0, &guess.gamma0, guess.period)?;
+    let scales = Scales {
+        t: guess.period,
+        e: 1f64.max(energy.abs()),
+    };
+    let prob = Problem::at(model, &x, p_psi, scales)?;
+    let row = scales.energy_row(energy);
+    let w = scales.pack_turned(&x, guess.period, energy, guess.body_turn);
+    Ok(match correct(Slot::Energy(model), &prob, &row, &w, opts)? {
+        Ok(s) if s.shot.reach > 1e-8 * 1f64.max(x.norm()) => {
+            Some(orbit_of(model, &s, &scales, opts))
+        }
+        _ => None,
+    })
+}
+
 /// The orbit of a solved system. On an axially symmetric body the body turn is `w₈` (else 0),
 /// and an orbit that is not a relative equilibrium of the two turns is degenerate: `k = 1`,
 /// `μ = 1/μ = 1`, `Parabolic` (docs/method.md §11a; the monodromy modulo the turn has every

@@ -63,7 +63,7 @@ class _OrbitChartOptions(_OrbitFamilyOptions, total=False):
     """`OrbitChartOptions`: an orbit chart, its families' fields by their own names (not
     `energy_bounds` and `nonlinear`, which the chart sets)."""
 
-    join_tol: float  # default 0.2
+    join_tol: float  # default 0.05
     max_orbits: int  # default 200
     nx: int  # default 41
 

@@ -1,12 +1,14 @@
 //! The chart of a mode's Lyapunov family over a body parameter `x` and the energy `h` above the
-//! steady motion (docs/method.md §12.4): for each `x` of a grid the family is
-//! followed with its linear and nonlinear events located to `event_tol` in the energy; the
-//! events of one kind at neighbouring `x` are joined into the chart's curves.
+//! steady motion (docs/method.md §12.4): for each `x` of a grid the family is followed with its
+//! linear and nonlinear events located to `event_tol` in the energy; from those events the
+//! chart's curves are continued in `(x, h)` (`curves.rs`).
 
 use nalgebra::Vector3;
 
 use super::{lyapunov_family, OrbitEventKind, OrbitFamily, OrbitOptions, OrbitStop};
 use crate::{steady_motion_near, RouthError, Routhian, SteadyMotion};
+
+mod curves;
 
 /// Settings of [`orbit_chart`].
 #[derive(Debug, Clone, PartialEq)]
@@ -17,8 +19,8 @@ pub struct OrbitChartOptions {
     pub orbit: OrbitOptions,
     /// The number of values of `x`, both ends included (at least 2).
     pub nx: usize,
-    /// Two events of one kind at neighbouring `x` are joined when their energies differ by at
-    /// most this fraction of the chart's energy range.
+    /// The widest window, as a fraction of the chart's range of `h`, about the predicted `h` in
+    /// which a curve's next point is searched (docs/method.md §12.4). Default `0.05`.
     pub join_tol: f64,
 }
 
@@ -30,13 +32,14 @@ impl Default for OrbitChartOptions {
                 ..OrbitOptions::default()
             },
             nx: 41,
-            join_tol: 0.2,
+            join_tol: 0.05,
         }
     }
 }
 
 /// A curve of the chart: where the family's orbits meet one kind of event, as `(x, h)` points
-/// in the order of `x`.
+/// in the order of `x`, each an event located on the family at that `x` (continued in `(x, h)`
+/// from the events of the grid's families, docs/method.md §12.4).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OrbitChartCurve {
@@ -84,12 +87,15 @@ impl OrbitChart {
 /// `h = E − E_s(x) ∈ excess_energy` above the steady motion (docs/method.md §12): `family(x)`
 /// gives the model at `x` and its `p_ψ`; the steady motion is found near `gamma_guess` at the
 /// first `x` and followed from one `x` to the next. Each family is traced with
-/// [`OrbitOptions::nonlinear`] set, its events located in the energy to `event_tol`; events of
-/// one kind at neighbouring `x` are joined into [`OrbitChartCurve`]s (the curves are exact in
-/// `h` at every `x` of the grid, and joined by straight segments between them).
+/// [`OrbitOptions::nonlinear`] set, its events located in the energy to `event_tol`; from each
+/// event not yet on a curve, the curve of its kind is continued in `(x, h)` both ways (a secant
+/// predictor in `h`, the step in `x` adapted to the prediction's error and landing on every `x`
+/// of the grid, each point an event located on the family at its `x`): [`OrbitChartCurve`]s
+/// exact at every point, with points between the grid's where they bend. A curve ends where it
+/// leaves the chart or turns back in `x`.
 ///
 /// The steady motions are found one `x` after the other, the families traced in parallel
-/// (rayon; the models must be `Send`). A failure at one `x` (no steady motion, an unstable one,
+/// (rayon; the models must be `Send`), then the curves. A failure at one `x` (no steady motion, an unstable one,
 /// a family that does not start) is recorded in [`OrbitChart::failures`], not an error. Cancelled
 /// through `opts.orbit.control`, the chart keeps the families it has, `stop` `Interrupted`. Errors: invalid options or ranges; the
 /// model's own errors are per `x`.
@@ -124,10 +130,11 @@ pub fn orbit_chart<M: Routhian + Send, F: Fn(f64) -> (M, f64)>(
     }
     // The families, in parallel (rayon): the bulk of the work.
     let done = std::sync::atomic::AtomicUsize::new(0);
-    let traced: Vec<Result<(f64, OrbitFamily), RouthError>> = starts
+    let traced: Vec<Result<Traced, RouthError>> = starts
         .into_par_iter()
         .map(|start| {
             let (model, s) = start?;
+            let gamma = s.gamma;
             let o = OrbitOptions {
                 nonlinear: true,
                 energy_bounds: Some((s.energy + excess_energy.0, s.energy + excess_energy.1)),
@@ -137,7 +144,7 @@ pub fn orbit_chart<M: Routhian + Send, F: Fn(f64) -> (M, f64)>(
             let fam = lyapunov_family(&model, &s, mode, &o);
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             control.report(n, nx);
-            Ok((s.energy, fam?))
+            Ok((s.energy, gamma, fam?))
         })
         .collect();
     let mut chart = OrbitChart {
@@ -148,10 +155,12 @@ pub fn orbit_chart<M: Routhian + Send, F: Fn(f64) -> (M, f64)>(
         curves: Vec::new(),
         stop: None,
     };
+    let mut gammas = Vec::with_capacity(nx);
     for (x, t) in xs.iter().zip(traced) {
         chart.x.push(*x);
+        gammas.push(t.as_ref().map_or(Vector3::zeros(), |t| t.1));
         match t {
-            Ok((es, fam)) => {
+            Ok((es, _, fam)) => {
                 if fam.stop == Some(OrbitStop::Interrupted) {
                     chart.stop = Some(OrbitStop::Interrupted);
                 }
@@ -172,7 +181,20 @@ pub fn orbit_chart<M: Routhian + Send, F: Fn(f64) -> (M, f64)>(
     if control.is_cancelled() {
         chart.stop = Some(OrbitStop::Interrupted);
     }
-    chart.curves = join_curves(&chart, opts.join_tol * (excess_energy.1 - excess_energy.0));
+    if chart.stop.is_none() {
+        let tracing = curves::Tracing {
+            family: &family,
+            xs: &xs,
+            h_range: excess_energy,
+            join_tol: opts.join_tol,
+            opts: &opts.orbit,
+        };
+        match trace_curves(&chart, &gammas, &tracing) {
+            Ok(c) => chart.curves = c,
+            Err(RouthError::Interrupted) => chart.stop = Some(OrbitStop::Interrupted),
+            Err(e) => return Err(e),
+        }
+    }
     Ok(chart)
 }
 
@@ -207,56 +229,49 @@ fn check(
     Ok(())
 }
 
-/// Joins the events of each kind at neighbouring `x` (nearest energy within `tol`).
-fn join_curves(chart: &OrbitChart, tol: f64) -> Vec<OrbitChartCurve> {
-    let kinds = [
-        OrbitEventKind::Fold,
-        OrbitEventKind::BranchPoint,
-        OrbitEventKind::PeriodDoubling,
-        OrbitEventKind::ThirdOrderResonance,
-        OrbitEventKind::FourthOrderResonance,
-        OrbitEventKind::TwistDegenerate,
-    ];
-    let mut out = Vec::new();
-    for kind in kinds {
-        // Open curves: (index into out, last h).
-        let mut open: Vec<(usize, f64)> = Vec::new();
-        for ((x, es), fam) in chart
-            .x
-            .iter()
-            .zip(&chart.steady_energy)
-            .zip(&chart.families)
-        {
-            let mut hs: Vec<f64> = fam
-                .iter()
-                .flat_map(|f| &f.events)
-                .filter(|e| e.kind == kind)
-                .map(|e| e.energy - es)
-                .collect();
-            hs.sort_by(f64::total_cmp);
-            let mut next = Vec::new();
-            for h in hs {
-                let best = open
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, (_, last))| (last - h).abs() <= tol)
-                    .min_by(|a, b| (a.1 .1 - h).abs().total_cmp(&(b.1 .1 - h).abs()))
-                    .map(|(j, _)| j);
-                let idx = match best {
-                    Some(j) => open.swap_remove(j).0,
-                    None => {
-                        out.push(OrbitChartCurve {
-                            kind,
-                            points: Vec::new(),
-                        });
-                        out.len() - 1
-                    }
+/// A family of the chart with its steady motion's energy and `γ`.
+type Traced = (f64, Vector3<f64>, OrbitFamily);
+
+/// The kinds of the chart's curves, in the order they are listed.
+const KINDS: [OrbitEventKind; 6] = [
+    OrbitEventKind::Fold,
+    OrbitEventKind::BranchPoint,
+    OrbitEventKind::PeriodDoubling,
+    OrbitEventKind::ThirdOrderResonance,
+    OrbitEventKind::FourthOrderResonance,
+    OrbitEventKind::TwistDegenerate,
+];
+
+/// The curves through the events of the grid's families: for each kind, every event not on a
+/// curve already traced starts one.
+fn trace_curves<M: Routhian, F: Fn(f64) -> (M, f64)>(
+    chart: &OrbitChart,
+    gammas: &[Vector3<f64>],
+    tracing: &curves::Tracing<'_, F>,
+) -> Result<Vec<OrbitChartCurve>, RouthError> {
+    let mut out: Vec<OrbitChartCurve> = Vec::new();
+    for kind in KINDS {
+        for (i, fam) in chart.families.iter().enumerate() {
+            let Some(fam) = fam else { continue };
+            let (x, es) = (chart.x[i], chart.steady_energy[i]);
+            for ev in fam.events.iter().filter(|e| e.kind == kind) {
+                let h = ev.energy - es;
+                if tracing.covered(&out, kind, x, h) {
+                    continue;
+                }
+                let Some((_, anchor)) = curves::anchor_of(fam, ev) else {
+                    continue;
                 };
-                out[idx].points.push([*x, h]);
-                next.push((idx, h));
+                let seed = curves::Point {
+                    x,
+                    h,
+                    steady_gamma: gammas[i],
+                    anchor_h: anchor.energy - es,
+                    anchor,
+                };
+                out.push(tracing.curve(kind, seed)?);
             }
-            open = next;
         }
     }
-    out
+    Ok(out)
 }
