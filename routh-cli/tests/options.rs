@@ -75,19 +75,12 @@ fn opt_reaches_fields_no_flag_does() {
         out.contains("invalid option OrbitOptions::min_step: 1 exceeds max_step = 0.1"),
         "{out}"
     );
+    let guess = "--omega 1,0,0 --gamma 0,0,-1 --period 5.4 --opt newton_tol=1e-300";
     bad_input(
-        &[
-            "orbit",
-            SWINGING,
-            "--omega",
-            "1,0,0",
-            "--gamma",
-            "0,0,-1",
-            "--period",
-            "5.4",
-            "--opt",
-            "newton_tol=1e-300",
-        ],
+        &with(
+            &["orbit", SWINGING],
+            &guess.split_whitespace().collect::<Vec<_>>(),
+        ),
         &["newton_tol", "below what double precision delivers"],
     );
 }
