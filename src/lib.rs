@@ -55,6 +55,9 @@ pub use routh_macros::Lagrangian;
 /// docs/models.md).
 pub use routh_runtime::{Evaluation, Model, ModelError, Param};
 
+#[cfg(feature = "serde")]
+pub mod options;
+
 /// What most programs use, in one import: `use routh::prelude::*;`.
 ///
 /// The derive and the model traits, the vector types, the analyses of a single model

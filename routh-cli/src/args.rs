@@ -213,6 +213,22 @@ pub fn font_size(s: &str) -> Result<f64, String> {
     }
 }
 
+/// `KEY=VALUE` of `--opt`: the value read as JSON (`1e-9`, `true`, `[0, 2]`, `null`), or as a
+/// string when it is not JSON (`--opt method=LieRk4`).
+pub fn opt(s: &str) -> Result<(String, serde_json::Value), String> {
+    let (key, value) = s
+        .split_once('=')
+        .ok_or_else(|| format!("`{s}` is not KEY=VALUE"))?;
+    let key = key.trim();
+    if key.is_empty() {
+        return Err(format!("`{s}`: the key is empty"));
+    }
+    let value = value.trim();
+    let value = serde_json::from_str(value)
+        .unwrap_or_else(|_| serde_json::Value::String(value.to_string()));
+    Ok((key.to_string(), value))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,10 +3,12 @@
 use crate::cli::Atlas;
 use crate::commands::{describe, load};
 use crate::error::CliError;
+use crate::options::options;
 use crate::table::Table;
 use routh::export::verdict_name;
 use routh::plot::{stability_atlas_svg, PlotOptions};
 use routh::{stability_atlas, AtlasOptions, Model, ModelError, StabilityAtlas, Vector3};
+use serde_json::Value;
 use std::cell::RefCell;
 
 /// The model and momentum at `(x, y)`: each axis is `momentum` or a scalar parameter.
@@ -62,12 +64,11 @@ pub fn atlas(a: &Atlas) -> Result<String, CliError> {
         ));
     }
     let bar = crate::progress::Bar::start("rows of the grid");
-    let opts = AtlasOptions {
-        nx: a.nx.into(),
-        ny: a.ny.into(),
-        control: bar.control(),
-        ..AtlasOptions::default()
-    };
+    let mut opts: AtlasOptions = options(
+        [("nx", a.nx.map(Value::from)), ("ny", a.ny.map(Value::from))],
+        &a.opts,
+    )?;
+    opts.control = bar.control();
     let failure: RefCell<Option<ModelError>> = RefCell::new(None);
     let family = |x: f64, y: f64| match point(&model, names, [x, y], momentum) {
         Ok(mp) => mp,

@@ -167,6 +167,9 @@ pub struct Diagram {
     /// Figure options.
     #[command(flatten)]
     pub figure: Figure,
+    /// Options.
+    #[command(flatten)]
+    pub opts: Opts,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -213,18 +216,21 @@ pub struct Atlas {
     /// `X,Y,Z`: γ of the steady motion to follow (a first guess at the grid's corner).
     #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
     pub gamma: [f64; 3],
-    /// Grid columns.
-    #[arg(long, default_value_t = 41, value_parser = clap::value_parser!(u16).range(2..=2000))]
-    pub nx: u16,
-    /// Grid rows.
-    #[arg(long, default_value_t = 41, value_parser = clap::value_parser!(u16).range(2..=2000))]
-    pub ny: u16,
+    /// Grid columns (default: the library's, `AtlasOptions::default().nx`).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(2..=2000))]
+    pub nx: Option<u16>,
+    /// Grid rows (default: the library's).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(2..=2000))]
+    pub ny: Option<u16>,
     /// Draw the atlas into this SVG file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
     /// Figure options.
     #[command(flatten)]
     pub figure: Figure,
+    /// Options.
+    #[command(flatten)]
+    pub opts: Opts,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -256,6 +262,9 @@ pub struct Simulate {
     /// Absolute tolerance of the integrator.
     #[arg(long, value_parser = args::positive, allow_hyphen_values = true)]
     pub atol: Option<f64>,
+    /// Options.
+    #[command(flatten)]
+    pub opts: Opts,
     /// Output format (`--csv` and `--json`: every recorded step).
     #[command(flatten)]
     pub output: Output,
@@ -294,6 +303,9 @@ pub struct OrbitArgs {
     /// (orbitally stable by Moser's twist theorem, unstable, undecided).
     #[arg(long)]
     pub nonlinear: bool,
+    /// Options.
+    #[command(flatten)]
+    pub opts: Opts,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -364,9 +376,9 @@ pub struct Orbits {
     /// the orbits meet the resonances of order three (k = −1/2) and four (k = 0).
     #[arg(long)]
     pub nonlinear: bool,
-    /// The most orbits per family.
-    #[arg(long, default_value_t = 100, value_parser = clap::value_parser!(u16).range(1..=10000))]
-    pub max_orbits: u16,
+    /// The most orbits per family (default: the library's, `OrbitOptions::default()`).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=10000))]
+    pub max_orbits: Option<u16>,
     /// The most rows printed per family in the table (every orbit with `--csv`/`--json`).
     #[arg(long, default_value_t = 12)]
     pub rows: usize,
@@ -381,6 +393,9 @@ pub struct Orbits {
     /// Figure options.
     #[command(flatten)]
     pub figure: Figure,
+    /// Options.
+    #[command(flatten)]
+    pub opts: Opts,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -400,18 +415,21 @@ pub struct Section {
     /// `X,Y,Z`: the plane is γ·n = 0 (body frame); default 1,0,0.
     #[arg(long, value_parser = args::vec3, allow_hyphen_values = true)]
     pub normal: Option<[f64; 3]>,
-    /// How many orbits.
-    #[arg(long, default_value_t = 50, value_parser = clap::value_parser!(u16).range(1..=5000))]
-    pub orbits: u16,
-    /// Crossings per orbit.
-    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100000))]
-    pub crossings: u32,
+    /// How many orbits (default: the library's, `SectionOptions::default()`).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=5000))]
+    pub orbits: Option<u16>,
+    /// Crossings per orbit (default: the library's).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100000))]
+    pub crossings: Option<u32>,
     /// Draw the section (θ against M_n, one colour per orbit) into this SVG file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
     /// Figure options.
     #[command(flatten)]
     pub figure: Figure,
+    /// Options.
+    #[command(flatten)]
+    pub opts: Opts,
     /// Output format.
     #[command(flatten)]
     pub output: Output,
@@ -452,7 +470,26 @@ pub struct OrbitChartArgs {
     /// Figure options.
     #[command(flatten)]
     pub figure: Figure,
+    /// Options.
+    #[command(flatten)]
+    pub opts: Opts,
     /// Output format (`--csv`: the curves' points; `--json`: the whole chart).
     #[command(flatten)]
     pub output: Output,
+}
+
+/// `--opt KEY=VALUE` of an analysis.
+#[derive(Debug, Args)]
+pub struct Opts {
+    /// `KEY=VALUE`: set a field of the analysis's options struct (repeatable; every field is a
+    /// key, a nested struct's fields by their own names; VALUE in JSON, e.g. `1e-9`, `true`,
+    /// `[-2, 1]`, else a string). Given after the flags, it overrides them; an unknown KEY
+    /// lists the valid ones.
+    #[arg(
+        long = "opt",
+        value_name = "KEY=VALUE",
+        value_parser = args::opt,
+        allow_hyphen_values = true
+    )]
+    pub opt: Vec<(String, serde_json::Value)>,
 }

@@ -4,22 +4,20 @@ use crate::args;
 use crate::cli::Diagram;
 use crate::commands::{describe, load};
 use crate::error::CliError;
+use crate::options::options;
 use crate::table::{num, vec3, Table};
 use routh::plot::{bifurcation_diagram_svg, energy_momentum_svg, PlotOptions};
-use routh::{
-    bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError, NonlinearOptions,
-};
+use routh::{bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError};
+use serde_json::json;
 use std::cell::RefCell;
 
 /// Runs `routh diagram` and returns what it prints.
 pub fn diagram(d: &Diagram) -> Result<String, CliError> {
     let model = load(&d.model)?;
     let bar = crate::progress::Bar::start("seeds of the diagram");
-    let opts = ContinuationOptions {
-        nonlinear: d.nonlinear.then(NonlinearOptions::default),
-        control: bar.control(),
-        ..Default::default()
-    };
+    let mut opts: ContinuationOptions =
+        options([("nonlinear", d.nonlinear.then_some(json!(true)))], &d.opts)?;
+    opts.control = bar.control();
     let bad = |e: String| CliError::Input(format!("--momentum: {e}"));
     let (result, x_label) = match &d.parameter {
         None => {

@@ -12,6 +12,7 @@ mod error;
 mod files;
 mod interrupt;
 mod nonlinear;
+mod options;
 mod orbit_chart;
 mod orbit_out;
 mod orbits;

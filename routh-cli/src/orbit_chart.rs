@@ -9,11 +9,13 @@
 use crate::cli::OrbitChartArgs;
 use crate::commands::{describe, load};
 use crate::error::CliError;
+use crate::options::options;
 use crate::orbit_out::Document;
 use crate::table::{num, Table};
 use routh::plot::{orbit_chart_svg, PlotOptions};
 use routh::{orbit_chart as chart_of, OrbitChartOptions, Param, Vector3};
 use serde::Serialize;
+use serde_json::Value;
 
 #[derive(Serialize)]
 struct ChartDocument<'a> {
@@ -43,14 +45,14 @@ pub fn orbit_chart(a: &OrbitChartArgs) -> Result<String, CliError> {
     }
     let bar = crate::progress::Bar::start("parameter values of the chart");
     // The defaults are the library's, written once there.
-    let mut opts = OrbitChartOptions::default();
+    let mut opts: OrbitChartOptions = options(
+        [
+            ("max_orbits", a.max_orbits.map(Value::from)),
+            ("nx", a.nx.map(Value::from)),
+        ],
+        &a.opts,
+    )?;
     opts.orbit.control = bar.control();
-    if let Some(n) = a.max_orbits {
-        opts.orbit.max_orbits = usize::from(n);
-    }
-    if let Some(n) = a.nx {
-        opts.nx = usize::from(n);
-    }
     let p = a.momentum;
     // A parameter value the model refuses gives a model that cannot be evaluated: its steady
     // motion fails, recorded in the chart's failures.

@@ -6,6 +6,7 @@ use crate::cli::{OrbitArgs, Orbits, Section};
 use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::files::Outputs;
+use crate::options::options;
 use crate::orbit_out::{self, Along, Family, Origin};
 use crate::table::{num, vec3, Table};
 use routh::plot::{orbit_family_svg, orbit_periods_svg, poincare_section_svg, PlotOptions};
@@ -15,6 +16,7 @@ use routh::{
     ModelError, OrbitEventKind, OrbitNonlinearOptions, OrbitOptions, Param, PeriodicOrbit,
     RouthError, SectionOptions, Stability, Vector3,
 };
+use serde_json::{json, Value};
 use std::cell::RefCell;
 use std::io::Write;
 
@@ -51,10 +53,8 @@ fn correct(
 /// Runs `routh orbit` and returns what it prints.
 pub fn orbit(a: &OrbitArgs) -> Result<String, CliError> {
     let model = load(&a.model)?;
-    let opts = OrbitOptions {
-        control: crate::interrupt::control(),
-        ..OrbitOptions::default()
-    };
+    let mut opts: OrbitOptions = options([], &a.opts)?;
+    opts.control = crate::interrupt::control();
     let o = correct(&model, a.omega, a.gamma, a.period, &opts)?;
     if a.nonlinear {
         let nl = OrbitNonlinearOptions {
@@ -304,15 +304,18 @@ fn count(n: usize, what: &str) -> String {
 /// Runs `routh orbits` and returns what it prints.
 pub fn orbits(a: &Orbits) -> Result<String, CliError> {
     let model = load(&a.model)?;
-    let mut opts = OrbitOptions::default().with_max_orbits(usize::from(a.max_orbits));
-    opts.nonlinear = a.nonlinear;
+    let mut opts: OrbitOptions = options(
+        [
+            ("max_orbits", a.max_orbits.map(Value::from)),
+            ("nonlinear", a.nonlinear.then_some(Value::Bool(true))),
+            ("energy_bounds", a.energy.map(|(lo, hi)| json!([lo, hi]))),
+        ],
+        &a.opts,
+    )?;
     // One bar for the families one after another (each half of a family counts its orbits up
     // to the budget).
     let bar = crate::progress::Bar::start("orbits of the family");
     opts.control = bar.control();
-    if let Some((lo, hi)) = a.energy {
-        opts = opts.with_energy_bounds(lo, hi);
-    }
     let mut skipped = Vec::new();
     // The families asked for, and the title of the table.
     let (mut families, mut title) = match (a.continue_orbit, a.momentum) {
@@ -425,12 +428,16 @@ pub fn orbits(a: &Orbits) -> Result<String, CliError> {
 /// Runs `routh section` and returns what it prints.
 pub fn section(a: &Section) -> Result<String, CliError> {
     let model = load(&a.model)?;
-    let mut opts = SectionOptions::default().with_size(usize::from(a.orbits), a.crossings as usize);
+    let mut opts: SectionOptions = options(
+        [
+            ("orbits", a.orbits.map(Value::from)),
+            ("crossings", a.crossings.map(Value::from)),
+            ("normal", a.normal.map(|n| json!(n))),
+        ],
+        &a.opts,
+    )?;
     let bar = crate::progress::Bar::start("orbits of the section");
     opts.control = bar.control();
-    if let Some(n) = a.normal {
-        opts = opts.with_normal(Vector3::from(n));
-    }
     let sec = poincare_section(&model, a.momentum, a.energy, &opts)?;
     drop(bar);
     if let Some(path) = &a.svg {

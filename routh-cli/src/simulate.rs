@@ -3,8 +3,10 @@
 use crate::cli::Simulate;
 use crate::commands::load;
 use crate::error::CliError;
+use crate::options::options;
 use crate::table::{num, vec3, Table};
 use routh::{simulate_full, simulate_reduced, SimOptions, Vector3};
+use serde_json::Value;
 
 /// At most this many samples in the table (every recorded step goes to `--csv`/`--json`).
 const SAMPLES: usize = 11;
@@ -20,13 +22,13 @@ fn samples(n: usize) -> Vec<usize> {
 /// Runs `routh simulate` and returns what it prints.
 pub fn simulate(s: &Simulate) -> Result<String, CliError> {
     let model = load(&s.model)?;
-    let mut opts = SimOptions::default();
-    if let Some(r) = s.rtol {
-        opts.rtol = r;
-    }
-    if let Some(a) = s.atol {
-        opts.atol = a;
-    }
+    let opts: SimOptions = options(
+        [
+            ("rtol", s.rtol.map(Value::from)),
+            ("atol", s.atol.map(Value::from)),
+        ],
+        &s.opts,
+    )?;
     let omega = Vector3::from(s.omega);
     let gamma = Vector3::from(s.gamma);
     // The library checks the tolerances, t_end and |γ| = 1: its refusals are bad input.

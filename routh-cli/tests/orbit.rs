@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{routh, stderr, stdout, ASYMMETRIC, SWINGING as BODY};
+use common::{fails, ok, routh, stderr, stdout, ASYMMETRIC, SWINGING as BODY};
 
 const BRANCHING: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -15,30 +15,6 @@ const BRANCHING: &str = concat!(
 /// m g l and J₁ of the swinging body: ω₀² = mgl/J₁.
 const MGL: f64 = 1.5;
 const J1: f64 = 1.0;
-
-fn ok(args: &[&str]) -> String {
-    let o = routh(args);
-    assert_eq!(o.status.code(), Some(0), "{args:?}: stderr {}", stderr(&o));
-    stdout(&o)
-}
-
-/// Exit code `code` and a message on stderr containing `needle`, no panic, nothing on stdout.
-fn fails(args: &[&str], code: i32, needle: &str) {
-    let o = routh(args);
-    assert_eq!(
-        o.status.code(),
-        Some(code),
-        "{args:?}: stderr {}",
-        stderr(&o)
-    );
-    assert!(
-        stderr(&o).contains(needle),
-        "{args:?}: stderr {:?} lacks {needle:?}",
-        stderr(&o)
-    );
-    assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
-    assert!(stdout(&o).is_empty(), "{}", stdout(&o));
-}
 
 /// K(m) = π / (2 AGM(1, √(1 − m))), the complete elliptic integral of the first kind.
 fn ellip_k(m: f64) -> f64 {

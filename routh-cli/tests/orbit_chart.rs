@@ -5,22 +5,8 @@
 
 mod common;
 
-use common::{routh, stderr, stdout, BODY_141, SWINGING as BODY};
+use common::{fails, ok, BODY_141, SWINGING as BODY};
 use std::f64::consts::PI;
-
-fn ok(args: &[&str]) -> String {
-    let o = routh(args);
-    assert_eq!(o.status.code(), Some(0), "{args:?}: stderr {}", stderr(&o));
-    stdout(&o)
-}
-
-fn fails(args: &[&str], code: i32, needle: &str) {
-    let o = routh(args);
-    assert_eq!(o.status.code(), Some(code), "{args:?}: {}", stderr(&o));
-    assert!(stderr(&o).contains(needle), "{args:?}: {}", stderr(&o));
-    assert!(!stderr(&o).contains("panicked"));
-    assert!(stdout(&o).is_empty());
-}
 
 /// The CSV's row as `column → value`.
 fn row(csv: &str) -> std::collections::HashMap<String, String> {

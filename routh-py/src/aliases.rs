@@ -6,6 +6,7 @@ use crate::model::Model;
 use crate::results::Certificate;
 use crate::trajectory::Trajectory;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 #[pymethods]
 impl Model {
@@ -20,24 +21,17 @@ impl Model {
     /// Alias of `Model.simulate_full` (the Rust name), kept for existing code.
     ///
     /// >>> tr = top.simulate([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0)
-    #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None,
-                        attitude=false, times=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (omega0, gamma0, t_end, *, times=None, **options))]
     fn simulate(
         &self,
         py: Python<'_>,
         omega0: &Bound<'_, PyAny>,
         gamma0: &Bound<'_, PyAny>,
         t_end: Real,
-        rtol: f64,
-        atol: f64,
-        max_steps: Option<usize>,
-        attitude: bool,
         times: Option<Vec<f64>>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Trajectory> {
-        self.simulate_full(
-            py, omega0, gamma0, t_end, rtol, atol, max_steps, attitude, times,
-        )
+        self.simulate_full(py, omega0, gamma0, t_end, times, options)
     }
 
     /// Alias of `Model.steady_motions_certified` (the Rust name), kept for existing code.

@@ -4,14 +4,15 @@
 //! it to call Python. A Python exception raised by the family stops the work (every later
 //! evaluation returns a NaN momentum at once, which the Rust side rejects) and is re-raised.
 
-use crate::continuation::{continuation_options, ContinuationKw};
 use crate::convert::{routh_err, vector3, Real, RouthError};
 use crate::guard::cooperative;
 use crate::model::Model;
+use crate::options::from_keywords;
 use crate::progress::Progress;
 use crate::results::{Atlas, Diagram};
 use pyo3::prelude::*;
-use routh::AtlasOptions;
+use pyo3::types::PyDict;
+use routh::{AtlasOptions, ContinuationOptions};
 use std::sync::Mutex;
 
 /// A Python family `f(*args) -> (Model, p_psi)` made callable from Rust threads.
@@ -112,8 +113,9 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
     Ok((m.get().get()?, p))
 }
 
-/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`. Keywords
-/// default to the Rust `ContinuationOptions::default()`; `progress=True` shows the count of
+/// The bifurcation diagram of a family `s -> (Model, p_psi)` over `s ∈ (lo, hi)`. Keywords: the
+/// fields of the Rust `ContinuationOptions`, defaults its `Default` (`nonlinear=True`: the
+/// nonlinear events too); `progress=True` shows the count of
 /// family evaluations. The family is called with the GIL held; the continuation between calls
 /// runs without it. An exception raised by the family stops the work and is re-raised.
 ///
@@ -121,39 +123,16 @@ fn extract(o: &Bound<'_, PyAny>) -> PyResult<(routh::Model, f64)> {
 /// >>> sorted((e.kind, round(e.s, 6)) for e in d.events)
 /// [('branch_point', 1.44), ('hamiltonian_hopf', 2.25)]
 #[pyfunction]
-#[pyo3(signature = (family, range, *, initial_step=None, max_step=None, min_step=None,
-                    max_steps=None, max_branches=None, newton_tol=None, event_tol=None,
-                    seeds=None, verify_counts=None, nonlinear=false, progress=false))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (family, range, *, progress=false, **options))]
 pub fn bifurcation_diagram(
     py: Python<'_>,
     family: Py<PyAny>,
     range: (Real, Real),
-    initial_step: Option<f64>,
-    max_step: Option<f64>,
-    min_step: Option<f64>,
-    max_steps: Option<usize>,
-    max_branches: Option<usize>,
-    newton_tol: Option<f64>,
-    event_tol: Option<f64>,
-    seeds: Option<usize>,
-    verify_counts: Option<bool>,
-    nonlinear: bool,
     progress: bool,
+    options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Diagram> {
     let range = (range.0 .0, range.1 .0);
-    let opts = continuation_options(ContinuationKw {
-        initial_step,
-        max_step,
-        min_step,
-        max_steps,
-        max_branches,
-        newton_tol,
-        event_tol,
-        seeds,
-        verify_counts,
-        nonlinear,
-    });
+    let opts: ContinuationOptions = from_keywords("bifurcation_diagram", options)?;
     let fam = PyFamily::new(py, family, (range.0, 0.0), false, progress)?;
     let r = cooperative(py, &fam.cancel, || {
         routh::bifurcation_diagram(|s| fam.call((s, 0.0), false), range, &opts)
@@ -178,47 +157,26 @@ pub fn bifurcation_diagram(
 }
 
 /// The stability atlas of a family `(x, y) -> (Model, p_psi)` over `[x0, x1] × [y0, y1]`,
-/// following the steady motion near `gamma_guess`. Keywords default to the Rust
-/// `AtlasOptions::default()`; a grid of more than `MAX_ATLAS_NODES` nodes is refused.
+/// following the steady motion near `gamma_guess`. Keywords: the fields of the Rust
+/// `AtlasOptions`, defaults its `Default`; a grid of more than `MAX_ATLAS_NODES` nodes is refused.
 ///
 /// >>> a = routh.stability_atlas(lambda mgl, p: (top.with_params(mgl=mgl), p), [0, 0, 1],
 /// ...                           (0.5, 2.0), (0.5, 5.0), nx=21, ny=21)
 /// >>> a.verdicts[0][0], [b.kind for b in a.boundaries]
 #[pyfunction]
-#[pyo3(signature = (family, gamma_guess, x, y, *, nx=None, ny=None, curve_tol=None,
-                    curve_step=None, max_curve_points=None, progress=false))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (family, gamma_guess, x, y, *, progress=false, **options))]
 pub fn stability_atlas(
     py: Python<'_>,
     family: Py<PyAny>,
     gamma_guess: &Bound<'_, PyAny>,
     x: (Real, Real),
     y: (Real, Real),
-    nx: Option<usize>,
-    ny: Option<usize>,
-    curve_tol: Option<f64>,
-    curve_step: Option<f64>,
-    max_curve_points: Option<usize>,
     progress: bool,
+    options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Atlas> {
     let (x, y) = ((x.0 .0, x.1 .0), (y.0 .0, y.1 .0));
     let g = vector3("gamma_guess", gamma_guess)?;
-    let mut opts = AtlasOptions::default();
-    if let Some(v) = nx {
-        opts.nx = v;
-    }
-    if let Some(v) = ny {
-        opts.ny = v;
-    }
-    if let Some(v) = curve_tol {
-        opts.curve_tol = v;
-    }
-    if let Some(v) = curve_step {
-        opts.curve_step = v;
-    }
-    if let Some(v) = max_curve_points {
-        opts.max_curve_points = v;
-    }
+    let opts: AtlasOptions = from_keywords("stability_atlas", options)?;
     check_grid(py, opts.nx, opts.ny)?;
     let fam = PyFamily::new(py, family, (x.0, y.0), true, progress)?;
     let r = cooperative(py, &fam.cancel, || {

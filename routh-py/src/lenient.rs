@@ -54,7 +54,16 @@ impl<'de> Deserializer<'de> for Lenient {
 
     fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
         match self.0 {
-            Value::Array(a) => visitor.visit_seq(Seq(a.into_iter())),
+            Value::Array(a) => {
+                let n = a.len();
+                let mut seq = Seq(a.into_iter());
+                let v = visitor.visit_seq(&mut seq)?;
+                // As serde_json: an array longer than what was read (a pair of three) is an error.
+                match seq.0.len() {
+                    0 => Ok(v),
+                    _ => Err(de::Error::invalid_length(n, &"fewer elements in the array")),
+                }
+            }
             Value::Object(m) => visitor.visit_map(Obj {
                 iter: m.into_iter(),
                 value: None,

@@ -13,7 +13,6 @@
 #![forbid(unsafe_code)]
 
 mod aliases;
-mod continuation;
 mod convert;
 mod export;
 mod family;
@@ -21,6 +20,7 @@ mod guard;
 mod latex;
 mod lenient;
 mod nonlinear;
+mod options;
 mod orbit_nonlinear;
 mod orbits;
 mod pickle;
@@ -75,6 +75,7 @@ fn _routh(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(family::stability_atlas, m)?)?;
     m.add_function(wrap_pyfunction!(orbit_nonlinear::orbit_chart, m)?)?;
     m.add_function(wrap_pyfunction!(model::_bench_rust, m)?)?;
+    m.add_function(wrap_pyfunction!(options::_options_schema, m)?)?;
     m.add_function(wrap_pyfunction!(pickle::_restore, m)?)?;
     m.add_function(wrap_pyfunction!(plot_style::plot_style, m)?)?;
     m.add_function(wrap_pyfunction!(export::_write_file, m)?)?;

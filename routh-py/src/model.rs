@@ -1,17 +1,17 @@
 //! `routh.Model`: the run-time model and the analyses on it.
 
-use crate::continuation::{continuation_options, ContinuationKw};
 use crate::convert::{model_err, param, param_to_py, routh_err, vector3, Real};
 use crate::guard::{cancellable, detached, interruptible};
 use crate::latex::{aligned, LatexFormulas, SympyFormulas};
 use crate::nonlinear::NonlinearReport;
+use crate::options::from_keywords;
 use crate::progress::Progress;
 use crate::results::{Certificate, CircleReport, Diagram, StabilityReport, SteadyMotion};
 use crate::trajectory::{ReducedTrajectory, Trajectory};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use routh::sim::Output;
-use routh::{CertifyOptions, Param, SimOptions};
+use routh::{CertifyOptions, ContinuationOptions, Param, SimOptions};
 
 /// A rigid-body model: a Lagrangian in the language of `#[derive(Lagrangian)]` and the values
 /// of its parameters (float, 3-sequence or 3x3 nested sequence / numpy array).
@@ -38,27 +38,17 @@ impl Model {
     }
 }
 
-/// The Rust `SimOptions` with the keywords of `simulate` applied (None: the Rust default).
-fn sim_options(
-    rtol: f64,
-    atol: f64,
-    max_steps: Option<usize>,
-    attitude: bool,
+/// The options of a simulation from its keywords, `times` the recorded output.
+pub(crate) fn sim_options(
+    function: &str,
     times: Option<Vec<f64>>,
-) -> SimOptions {
-    let mut o = SimOptions {
-        rtol,
-        atol,
-        attitude,
-        ..SimOptions::default()
-    };
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<SimOptions> {
+    let mut o: SimOptions = from_keywords(function, options)?;
     if let Some(t) = times {
         o.output = Output::Times(t);
     }
-    if let Some(n) = max_steps {
-        o.max_steps = n;
-    }
-    o
+    Ok(o)
 }
 
 #[pymethods]
@@ -251,33 +241,22 @@ impl Model {
 
     /// The nonlinear (Lyapunov) stability of a steady motion from the Birkhoff normal form of
     /// the reduced Hamiltonian to order four: Arnold–Moser away from resonances, Markeev's
-    /// criteria at 1:2 and 1:3, as a `NonlinearReport`. Tolerances default to the Rust
-    /// `NonlinearOptions::default()`.
+    /// criteria at 1:2 and 1:3, as a `NonlinearReport`. Keywords: the fields of the Rust
+    /// `NonlinearOptions` (those of its `classify` by their own names), defaults its `Default`.
     ///
     /// >>> m = max(top.steady_motions(2.2), key=lambda s: s.gamma[2])  # sleeping (γ₃ = 1)
     /// >>> top.nonlinear_stability(m).verdict   # gyroscopically stabilised: Arnold–Moser
     /// 'lyapunov_stable'
     /// >>> top.nonlinear_stability(top.steady_motions(2.2)[0]).verdict   # the hanging top
     /// 'secularly_stable'
-    #[pyo3(signature = (motion, *, resonance_tol=None, arnold_tol=None, criterion_tol=None))]
+    #[pyo3(signature = (motion, **options))]
     fn nonlinear_stability(
         &self,
         py: Python<'_>,
         motion: &SteadyMotion,
-        resonance_tol: Option<f64>,
-        arnold_tol: Option<f64>,
-        criterion_tol: Option<f64>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<NonlinearReport> {
-        let mut opts = routh::NonlinearOptions::default();
-        if let Some(v) = resonance_tol {
-            opts.resonance_tol = v;
-        }
-        if let Some(v) = arnold_tol {
-            opts.arnold_tol = v;
-        }
-        if let Some(v) = criterion_tol {
-            opts.criterion_tol = v;
-        }
+        let opts: routh::NonlinearOptions = from_keywords("nonlinear_stability", options)?;
         let m = self.get()?;
         let s = motion.inner.clone();
         let r = detached(py, || routh::nonlinear_stability(&m, &s, &opts))?
@@ -285,46 +264,23 @@ impl Model {
         NonlinearReport::new(py, &r)
     }
 
-    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi). Keywords default to the Rust
-    /// `ContinuationOptions::default()`; `progress=True` shows the count of evaluations (tqdm
+    /// The bifurcation diagram over the momentum p_ψ ∈ (lo, hi). Keywords: the fields of the
+    /// Rust `ContinuationOptions`, defaults its `Default`; `progress=True` shows the count of evaluations (tqdm
     /// if installed, else a line on stderr). The GIL is released during the work.
     ///
     /// >>> d = top.bifurcation_diagram((0.0, 5.0))
     /// >>> [(e.kind, round(e.s, 6)) for e in d.events]
     /// [('hamiltonian_hopf', 2.0), ('branch_point', 2.5)]
-    #[pyo3(signature = (range, *, initial_step=None, max_step=None, min_step=None, max_steps=None,
-                        max_branches=None, newton_tol=None, event_tol=None, seeds=None,
-                        verify_counts=None, nonlinear=false, progress=false))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (range, *, progress=false, **options))]
     fn bifurcation_diagram(
         &self,
         py: Python<'_>,
         range: (Real, Real),
-        initial_step: Option<f64>,
-        max_step: Option<f64>,
-        min_step: Option<f64>,
-        max_steps: Option<usize>,
-        max_branches: Option<usize>,
-        newton_tol: Option<f64>,
-        event_tol: Option<f64>,
-        seeds: Option<usize>,
-        verify_counts: Option<bool>,
-        nonlinear: bool,
         progress: bool,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Diagram> {
         let range = (range.0 .0, range.1 .0);
-        let opts = continuation_options(ContinuationKw {
-            initial_step,
-            max_step,
-            min_step,
-            max_steps,
-            max_branches,
-            newton_tol,
-            event_tol,
-            seeds,
-            verify_counts,
-            nonlinear,
-        });
+        let opts: ContinuationOptions = from_keywords("bifurcation_diagram", options)?;
         let m = self.get()?;
         let bar = Progress::new(py, progress, "steady-motion evaluations")?;
         // Ctrl-C sets the diagram's cancel flag: it stops at its next continuation step.
@@ -348,35 +304,31 @@ impl Model {
         Diagram::new(py, &d?.map_err(|e| routh_err(py, &e))?)
     }
 
-    /// Integrate the full equations (8) from (ω₀, γ₀) to `t_end` (DOP853, the Rust
-    /// `SimOptions` defaults); the Rust `simulate_full`. `simulate` is an alias. `times`: record exactly at these times (dense output) instead of
-    /// at every step; `attitude=True`: also integrate the attitude (`tr.attitude`, quaternions
+    /// Integrate the full equations (8) from (ω₀, γ₀) to `t_end`; the Rust `simulate_full`.
+    /// `simulate` is an alias. Keywords: the fields of the Rust `SimOptions` (`rtol`, `atol`,
+    /// `max_steps`, `h_max`, `method`, `attitude`, …), defaults its `Default` (DOP853). `times`:
+    /// record exactly at these times (dense output) instead of at every step; `attitude=True`: also integrate the attitude (`tr.attitude`, quaternions
     /// (x, y, z, w), `tr.euler_angles()`, `tr.plot_apex()`).
     ///
     /// >>> tr = top.simulate_full([0, 0.3, 5.0], [0.6, 0, 0.8], 10.0, attitude=True,
     /// ...                        times=np.linspace(0, 10, 2001))
     /// >>> tr.omega.shape
     /// (2001, 3)
-    #[pyo3(signature = (omega0, gamma0, t_end, *, rtol=1e-10, atol=1e-12, max_steps=None,
-                        attitude=false, times=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (omega0, gamma0, t_end, *, times=None, **options))]
     pub(crate) fn simulate_full(
         &self,
         py: Python<'_>,
         omega0: &Bound<'_, PyAny>,
         gamma0: &Bound<'_, PyAny>,
         t_end: Real,
-        rtol: f64,
-        atol: f64,
-        max_steps: Option<usize>,
-        attitude: bool,
         times: Option<Vec<f64>>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Trajectory> {
+        let opts = sim_options("simulate_full", times, options)?;
         let t_end = t_end.0;
         let w = vector3("omega0", omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps, attitude, times);
         let t = interruptible(py, move || routh::simulate_full(&m, w, g, t_end, &opts))?
             .map_err(|e| routh_err(py, &e))?;
         Ok(Trajectory::new(py, &t))
@@ -389,8 +341,7 @@ impl Model {
     /// >>> red = top.simulate_reduced([0, 0.3, 0], [0.6, 0, 0.8], 3.0, 10.0)
     /// >>> red.big_omega.shape == (len(red.t), 3)
     /// True
-    #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, rtol=1e-10, atol=1e-12,
-                        max_steps=None, attitude=false, times=None))]
+    #[pyo3(signature = (big_omega0, gamma0, p_psi, t_end, *, times=None, **options))]
     #[allow(clippy::too_many_arguments)]
     fn simulate_reduced(
         &self,
@@ -399,17 +350,14 @@ impl Model {
         gamma0: &Bound<'_, PyAny>,
         p_psi: Real,
         t_end: Real,
-        rtol: f64,
-        atol: f64,
-        max_steps: Option<usize>,
-        attitude: bool,
         times: Option<Vec<f64>>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<ReducedTrajectory> {
+        let opts = sim_options("simulate_reduced", times, options)?;
         let (p_psi, t_end) = (p_psi.0, t_end.0);
         let w = vector3("big_omega0", big_omega0)?;
         let g = vector3("gamma0", gamma0)?;
         let m = self.get()?;
-        let opts = sim_options(rtol, atol, max_steps, attitude, times);
         let t = interruptible(py, move || {
             routh::simulate_reduced(&m, w, g, p_psi, t_end, &opts)
         })?

@@ -7,9 +7,11 @@ use crate::convert::{helper, model_err, model_err_unplaced, routh_err, vector3, 
 use crate::family::PyFamily;
 use crate::guard::{cancellable, cooperative};
 use crate::model::Model;
-use crate::orbits::{apply_orbit_keywords, rows, OrbitFamily, PeriodicOrbit};
+use crate::options::from_keywords;
+use crate::orbits::{rows, OrbitFamily, PeriodicOrbit};
 use numpy::PyArray1;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 use routh::{OrbitChartOptions, OrbitNonlinearOptions, Param};
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
@@ -290,37 +292,6 @@ fn parameter_family(
     }))
 }
 
-/// The chart's options from the keywords (None: the Rust `OrbitChartOptions::default()`).
-#[allow(clippy::too_many_arguments)]
-fn chart_options(
-    nx: Option<usize>,
-    join_tol: Option<Real>,
-    max_orbits: Option<usize>,
-    max_step: Option<Real>,
-    initial_amplitude: Option<Real>,
-    rtol: Option<Real>,
-    atol: Option<Real>,
-    newton_tol: Option<Real>,
-) -> OrbitChartOptions {
-    let mut o = OrbitChartOptions::default();
-    if let Some(n) = nx {
-        o.nx = n;
-    }
-    if let Some(t) = join_tol {
-        o.join_tol = t.0;
-    }
-    apply_orbit_keywords(
-        &mut o.orbit,
-        max_orbits,
-        max_step,
-        initial_amplitude,
-        rtol,
-        atol,
-        newton_tol,
-    );
-    o
-}
-
 /// The work of `orbit_chart` on a run-time model swept through its parameter `name`.
 #[allow(clippy::too_many_arguments)]
 fn chart_of_model(
@@ -352,10 +323,12 @@ fn chart_of_model(
 ///
 /// `family` is a `Model` — x is then its scalar parameter named `parameter` (or "p_psi": the
 /// momentum), the momentum `momentum` (default 0) — or a callable `x -> (Model, p_psi)`
-/// (`parameter` then only names the axis, default "x"; `momentum` must not be given). The orbit
-/// keywords (`max_orbits` (default 200), `max_step`, `initial_amplitude`, `rtol`, `atol`,
-/// `newton_tol`) are those of each family; `join_tol` joins events at neighbouring x whose h
-/// differ by at most that fraction of the energy range. A failure at one x is recorded in
+/// (`parameter` then only names the axis, default "x"; `momentum` must not be given). The other
+/// keywords are the fields of the Rust `OrbitChartOptions`, defaults its `Default`: `nx`,
+/// `join_tol` (events at neighbouring x whose h differ by at most that fraction of the energy
+/// range are joined) and those of each family, the fields of its `orbit` (`max_orbits`
+/// (default 200), `max_step`, `rtol`, …; not `energy_bounds` and `nonlinear`, which the chart
+/// sets). A failure at one x is recorded in
 /// `failures`, not raised; invalid ranges or options raise `RouthError` (kind "InvalidOption"),
 /// an unknown parameter `ModelError`; an exception raised by a callable family is re-raised.
 ///
@@ -363,8 +336,7 @@ fn chart_of_model(
 /// >>> [(k.kind, len(k)) for k in c.curves]
 #[pyfunction]
 #[pyo3(signature = (family, gamma_guess, x_range, excess_energy, *, mode=0, parameter=None,
-                    momentum=None, nx=None, join_tol=None, max_orbits=None, max_step=None,
-                    initial_amplitude=None, rtol=None, atol=None, newton_tol=None))]
+                    momentum=None, **options))]
 #[allow(clippy::too_many_arguments)]
 pub fn orbit_chart(
     py: Python<'_>,
@@ -375,28 +347,12 @@ pub fn orbit_chart(
     mode: usize,
     parameter: Option<String>,
     momentum: Option<Real>,
-    nx: Option<usize>,
-    join_tol: Option<Real>,
-    max_orbits: Option<usize>,
-    max_step: Option<Real>,
-    initial_amplitude: Option<Real>,
-    rtol: Option<Real>,
-    atol: Option<Real>,
-    newton_tol: Option<Real>,
+    options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<OrbitChart> {
     let g = vector3("gamma_guess", gamma_guess)?;
     let x_range = (x_range.0 .0, x_range.1 .0);
     let excess = (excess_energy.0 .0, excess_energy.1 .0);
-    let opts = chart_options(
-        nx,
-        join_tol,
-        max_orbits,
-        max_step,
-        initial_amplitude,
-        rtol,
-        atol,
-        newton_tol,
-    );
+    let opts: OrbitChartOptions = from_keywords("orbit_chart", options)?;
     if let Ok(model) = family.cast::<Model>() {
         let Some(name) = parameter else {
             return Err(invalid(
@@ -463,45 +419,24 @@ impl Model {
     /// (docs/method.md §12; the Rust `orbit_nonlinear_stability`): the rotation number and the
     /// twist of the isoenergetic Poincaré map from its Taylor expansion to order three (exact
     /// jets of the flow), and the verdict of Moser's twist theorem or of the resonances of
-    /// order three and four. Keywords default to the Rust `OrbitNonlinearOptions::default()`:
-    /// `rtol`, `atol` (the jets' integration), `resonance_tol` (|k + 1/2| or |k| at most this is
-    /// a resonance), `twist_tol` (a twist this small relative to its terms counts as zero),
-    /// `criterion_tol`, `max_steps` (per period). Raises `RouthError` (kind "InvalidOption")
+    /// order three and four. Keywords: the fields of the Rust `OrbitNonlinearOptions`, defaults
+    /// its `Default`: `rtol`, `atol` (the jets' integration), `resonance_tol` (|k + 1/2| or |k|
+    /// at most this is a resonance), `twist_tol` (a twist this small relative to its terms counts
+    /// as zero), `criterion_tol`, `max_steps` (per period). Raises `RouthError` (kind "InvalidOption")
     /// for a bad value, and the orbit's own checks (an orbit that is not one: a non-finite or
     /// non-positive period, γ₀ not unit, …).
     ///
     /// >>> f = m.lyapunov_family(hanging, 0, max_orbits=8)
     /// >>> r = m.orbit_nonlinear_stability(f.orbits[-1])
     /// >>> r.verdict, r.rotation_number, r.twist
-    #[pyo3(signature = (orbit, *, rtol=None, atol=None, resonance_tol=None, twist_tol=None,
-                        criterion_tol=None, max_steps=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (orbit, **options))]
     fn orbit_nonlinear_stability(
         &self,
         py: Python<'_>,
         orbit: &PeriodicOrbit,
-        rtol: Option<Real>,
-        atol: Option<Real>,
-        resonance_tol: Option<Real>,
-        twist_tol: Option<Real>,
-        criterion_tol: Option<Real>,
-        max_steps: Option<usize>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<OrbitNonlinearReport> {
-        let mut opts = OrbitNonlinearOptions::default();
-        for (slot, v) in [
-            (&mut opts.rtol, rtol),
-            (&mut opts.atol, atol),
-            (&mut opts.resonance_tol, resonance_tol),
-            (&mut opts.twist_tol, twist_tol),
-            (&mut opts.criterion_tol, criterion_tol),
-        ] {
-            if let Some(v) = v {
-                *slot = v.0;
-            }
-        }
-        if let Some(n) = max_steps {
-            opts.max_steps = n;
-        }
+        let mut opts: OrbitNonlinearOptions = from_keywords("orbit_nonlinear_stability", options)?;
         let m = self.get()?;
         let o = orbit.inner.clone();
         let r = cancellable(py, |c| {
@@ -519,8 +454,7 @@ impl Model {
     /// >>> c = m.orbit_chart("b", [0, 0, -1], (1.9, 2.1), (0.0, 2.8), nx=5)
     /// >>> c.plot()
     #[pyo3(signature = (parameter, gamma_guess, x_range, excess_energy, *, mode=0, momentum=None,
-                        nx=None, join_tol=None, max_orbits=None, max_step=None,
-                        initial_amplitude=None, rtol=None, atol=None, newton_tol=None))]
+                        **options))]
     #[allow(clippy::too_many_arguments)]
     fn orbit_chart(
         &self,
@@ -531,26 +465,10 @@ impl Model {
         excess_energy: (Real, Real),
         mode: usize,
         momentum: Option<Real>,
-        nx: Option<usize>,
-        join_tol: Option<Real>,
-        max_orbits: Option<usize>,
-        max_step: Option<Real>,
-        initial_amplitude: Option<Real>,
-        rtol: Option<Real>,
-        atol: Option<Real>,
-        newton_tol: Option<Real>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<OrbitChart> {
         let g = vector3("gamma_guess", gamma_guess)?;
-        let opts = chart_options(
-            nx,
-            join_tol,
-            max_orbits,
-            max_step,
-            initial_amplitude,
-            rtol,
-            atol,
-            newton_tol,
-        );
+        let opts: OrbitChartOptions = from_keywords("orbit_chart", options)?;
         let m = self.get()?;
         chart_of_model(
             py,

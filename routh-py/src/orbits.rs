@@ -4,14 +4,19 @@
 //! `Model.orbit_crossings`, `Model.orbit_path`, and their results `PeriodicOrbit`,
 //! `OrbitFamily`, `OrbitEvent`, `OrbitParameterFamily`, `PoincareSection` (numpy arrays,
 //! lower-case strings).
+//!
+//! The keywords of the orbit analyses are the fields of the Rust `OrbitOptions`, defaults its
+//! `Default` (crate::options).
 
 use crate::convert::{helper, model_err, model_err_unplaced, routh_err, vec3, vector3, Real};
 use crate::guard::{cancellable, interruptible};
 use crate::model::Model;
+use crate::options::from_keywords;
 use crate::results::SteadyMotion;
 use crate::trajectory::Trajectory;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 use routh::{Complex, OrbitOptions, Param, SectionOptions};
 
 /// A periodic orbit of the full equations (8), a relative periodic orbit of the body: a point
@@ -363,67 +368,6 @@ pub(crate) fn rows<const N: usize>(py: Python<'_>, rows: &[[f64; N]]) -> PyResul
         .unbind())
 }
 
-/// The Rust `OrbitOptions` with the keywords applied (None: the Rust default).
-#[allow(clippy::too_many_arguments)]
-fn orbit_options(
-    max_orbits: Option<usize>,
-    energy_bounds: Option<(Real, Real)>,
-    max_step: Option<Real>,
-    initial_amplitude: Option<Real>,
-    rtol: Option<Real>,
-    atol: Option<Real>,
-    newton_tol: Option<Real>,
-    nonlinear: bool,
-) -> OrbitOptions {
-    let mut o = OrbitOptions {
-        energy_bounds: energy_bounds.map(|(a, b)| (a.0, b.0)),
-        ..OrbitOptions::default()
-    };
-    apply_orbit_keywords(
-        &mut o,
-        max_orbits,
-        max_step,
-        initial_amplitude,
-        rtol,
-        atol,
-        newton_tol,
-    );
-    o.nonlinear = nonlinear;
-    o
-}
-
-/// The keywords of a family (None: left as they are in `o`).
-pub(crate) fn apply_orbit_keywords(
-    o: &mut OrbitOptions,
-    max_orbits: Option<usize>,
-    max_step: Option<Real>,
-    initial_amplitude: Option<Real>,
-    rtol: Option<Real>,
-    atol: Option<Real>,
-    newton_tol: Option<Real>,
-) {
-    let [max_step, initial_amplitude, rtol, atol, newton_tol] =
-        [max_step, initial_amplitude, rtol, atol, newton_tol].map(|v| v.map(|r| r.0));
-    if let Some(n) = max_orbits {
-        o.max_orbits = n;
-    }
-    if let Some(h) = max_step {
-        *o = o.clone().with_max_step(h);
-    }
-    if let Some(a) = initial_amplitude {
-        o.initial_amplitude = a;
-    }
-    if let Some(v) = rtol {
-        o.rtol = v;
-    }
-    if let Some(v) = atol {
-        o.atol = v;
-    }
-    if let Some(v) = newton_tol {
-        o.newton_tol = v;
-    }
-}
-
 impl Model {
     /// A family started at an event of another (`period_doubled_family`, `switch_branch`), the
     /// GIL released while it runs.
@@ -431,18 +375,13 @@ impl Model {
         &self,
         py: Python<'_>,
         event: &OrbitEvent,
-        max_orbits: Option<usize>,
-        max_step: Option<Real>,
-        nonlinear: bool,
+        mut opts: OrbitOptions,
         start: fn(
             &routh::Model,
             &routh::OrbitEvent,
             &routh::OrbitOptions,
         ) -> Result<routh::OrbitFamily, routh::RouthError>,
     ) -> PyResult<OrbitFamily> {
-        let mut opts = orbit_options(
-            max_orbits, None, max_step, None, None, None, None, nonlinear,
-        );
         let m = self.get()?;
         let e = event.inner.clone();
         let f = cancellable(py, |c| {
@@ -457,25 +396,23 @@ impl Model {
 #[pymethods]
 impl Model {
     /// Correct a guess (ω, γ, T) to a periodic orbit of the full equations at the guess's
-    /// energy and p_ψ: period, precession, Floquet multipliers and stability.
+    /// energy and p_ψ: period, precession, Floquet multipliers and stability. Keywords: the
+    /// fields of the Rust `OrbitOptions` (`rtol`, `atol`, `newton_tol`, `max_iter`, …).
     ///
     /// >>> o = m.periodic_orbit([0, 0, 0], [0, np.sin(0.5), -np.cos(0.5)], 6.0)
     /// >>> o.stability
-    #[pyo3(signature = (omega, gamma, period, *, rtol=None, atol=None, newton_tol=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (omega, gamma, period, **options))]
     fn periodic_orbit(
         &self,
         py: Python<'_>,
         omega: &Bound<'_, PyAny>,
         gamma: &Bound<'_, PyAny>,
         period: Real,
-        rtol: Option<Real>,
-        atol: Option<Real>,
-        newton_tol: Option<Real>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PeriodicOrbit> {
         let w = vector3("omega", omega)?;
         let g = vector3("gamma", gamma)?;
-        let mut opts = orbit_options(None, None, None, None, rtol, atol, newton_tol, false);
+        let mut opts: OrbitOptions = from_keywords("periodic_orbit", options)?;
         let m = self.get()?;
         let o = cancellable(py, |c| {
             opts.control = c;
@@ -490,38 +427,21 @@ impl Model {
     /// branch points and period doublings located (and with `nonlinear=True` where the twist
     /// of the Poincaré map vanishes and where k = −1/2, 0: the resonances of order three and
     /// four, as the events "twist_degenerate", "third_order_resonance",
-    /// "fourth_order_resonance"; `Model.orbit_nonlinear_stability`).
+    /// "fourth_order_resonance"; `Model.orbit_nonlinear_stability`). Keywords: every field of
+    /// the Rust `OrbitOptions` (`max_orbits`, `energy_bounds`, `max_step`, `rtol`, `nonlinear`,
+    /// …), defaults its `Default`; an unknown keyword is a `TypeError` listing them.
     ///
     /// >>> f = m.lyapunov_family(hanging, 0, max_orbits=40)
     /// >>> [(e.kind, round(e.energy, 6)) for e in f.events]
-    #[pyo3(signature = (motion, mode=0, *, max_orbits=None, energy_bounds=None, max_step=None,
-                        initial_amplitude=None, rtol=None, atol=None, newton_tol=None,
-                        nonlinear=false))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (motion, mode=0, **options))]
     fn lyapunov_family(
         &self,
         py: Python<'_>,
         motion: &SteadyMotion,
         mode: usize,
-        max_orbits: Option<usize>,
-        energy_bounds: Option<(Real, Real)>,
-        max_step: Option<Real>,
-        initial_amplitude: Option<Real>,
-        rtol: Option<Real>,
-        atol: Option<Real>,
-        newton_tol: Option<Real>,
-        nonlinear: bool,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<OrbitFamily> {
-        let mut opts = orbit_options(
-            max_orbits,
-            energy_bounds,
-            max_step,
-            initial_amplitude,
-            rtol,
-            atol,
-            newton_tol,
-            nonlinear,
-        );
+        let mut opts: OrbitOptions = from_keywords("lyapunov_family", options)?;
         let m = self.get()?;
         let s = motion.inner.clone();
         let f = cancellable(py, |c| {
@@ -533,24 +453,16 @@ impl Model {
     }
 
     /// Follow the family through `orbit` over `energy_range` = (lo, hi), through folds.
-    #[pyo3(signature = (orbit, energy_range, *, max_orbits=None, max_step=None, rtol=None,
-                        atol=None, newton_tol=None, nonlinear=false))]
-    #[allow(clippy::too_many_arguments)]
+    /// Keywords: the fields of the Rust `OrbitOptions`.
+    #[pyo3(signature = (orbit, energy_range, **options))]
     fn continue_orbit(
         &self,
         py: Python<'_>,
         orbit: &PeriodicOrbit,
         energy_range: (Real, Real),
-        max_orbits: Option<usize>,
-        max_step: Option<Real>,
-        rtol: Option<Real>,
-        atol: Option<Real>,
-        newton_tol: Option<Real>,
-        nonlinear: bool,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<OrbitFamily> {
-        let mut opts = orbit_options(
-            max_orbits, None, max_step, None, rtol, atol, newton_tol, nonlinear,
-        );
+        let mut opts: OrbitOptions = from_keywords("continue_orbit", options)?;
         let m = self.get()?;
         let o = orbit.inner.clone();
         let range = (energy_range.0 .0, energy_range.1 .0);
@@ -574,25 +486,16 @@ impl Model {
     /// >>> o = m.periodic_orbit([1, 0, 0], [0, 0, -1], 5.4)
     /// >>> f = m.continue_orbit_in(o, "mgl", (1.2, 2.0))
     /// >>> f.parameter[0], f.family.period[0]
-    #[pyo3(signature = (orbit, name, s_range, *, max_orbits=None, max_step=None, rtol=None,
-                        atol=None, newton_tol=None, nonlinear=false))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (orbit, name, s_range, **options))]
     fn continue_orbit_in(
         &self,
         py: Python<'_>,
         orbit: &PeriodicOrbit,
         name: &str,
         s_range: (Real, Real),
-        max_orbits: Option<usize>,
-        max_step: Option<Real>,
-        rtol: Option<Real>,
-        atol: Option<Real>,
-        newton_tol: Option<Real>,
-        nonlinear: bool,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<OrbitParameterFamily> {
-        let mut opts = orbit_options(
-            max_orbits, None, max_step, None, rtol, atol, newton_tol, nonlinear,
-        );
+        let mut opts: OrbitOptions = from_keywords("continue_orbit_in", options)?;
         let m = self.get()?;
         let o = orbit.inner.clone();
         let s_range = (s_range.0 .0, s_range.1 .0);
@@ -631,24 +534,17 @@ impl Model {
         OrbitParameterFamily::new(py, name.to_string(), &f)
     }
 
-    /// The family of orbits of twice the period born at a "period_doubling" event.
-    #[pyo3(signature = (event, *, max_orbits=None, max_step=None, nonlinear=false))]
+    /// The family of orbits of twice the period born at a "period_doubling" event. Keywords:
+    /// the fields of the Rust `OrbitOptions`.
+    #[pyo3(signature = (event, **options))]
     fn period_doubled_family(
         &self,
         py: Python<'_>,
         event: &OrbitEvent,
-        max_orbits: Option<usize>,
-        max_step: Option<Real>,
-        nonlinear: bool,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<OrbitFamily> {
-        self.family_at_event(
-            py,
-            event,
-            max_orbits,
-            max_step,
-            nonlinear,
-            routh::period_doubled_family,
-        )
+        let opts = from_keywords("period_doubled_family", options)?;
+        self.family_at_event(py, event, opts, routh::period_doubled_family)
     }
 
     /// The family of orbits crossing this one's family at a "branch_point" event, followed both
@@ -661,41 +557,30 @@ impl Model {
     /// >>> f = m.lyapunov_family(hanging, 0, max_orbits=30)
     /// >>> bp = next(e for e in f.events if e.kind == "branch_point")
     /// >>> g = m.switch_branch(bp, max_orbits=20)
-    #[pyo3(signature = (event, *, max_orbits=None, max_step=None, nonlinear=false))]
+    #[pyo3(signature = (event, **options))]
     fn switch_branch(
         &self,
         py: Python<'_>,
         event: &OrbitEvent,
-        max_orbits: Option<usize>,
-        max_step: Option<Real>,
-        nonlinear: bool,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<OrbitFamily> {
-        self.family_at_event(
-            py,
-            event,
-            max_orbits,
-            max_step,
-            nonlinear,
-            routh::switch_branch,
-        )
+        let opts = from_keywords("switch_branch", options)?;
+        self.family_at_event(py, event, opts, routh::switch_branch)
     }
 
     /// The Poincaré section at (p_psi, energy): `orbits` orbits started on the plane γ·n = 0,
     /// each followed for `crossings` upward crossings (in parallel, the GIL released).
-    #[pyo3(signature = (p_psi, energy, *, normal=None, orbits=50, crossings=200))]
+    /// Keywords: the fields of the Rust `SectionOptions` (`normal`, `orbits`, `crossings`,
+    /// `rtol`, `atol`, `steps_per_crossing`), defaults its `Default`.
+    #[pyo3(signature = (p_psi, energy, **options))]
     fn poincare_section(
         &self,
         py: Python<'_>,
         p_psi: Real,
         energy: Real,
-        normal: Option<&Bound<'_, PyAny>>,
-        orbits: usize,
-        crossings: usize,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PoincareSection> {
-        let mut opts = SectionOptions::default().with_size(orbits, crossings);
-        if let Some(n) = normal {
-            opts = opts.with_normal(vector3("normal", n)?);
-        }
+        let mut opts: SectionOptions = from_keywords("poincare_section", options)?;
         let m = self.get()?;
         let s = cancellable(py, |c| {
             opts.control = c;
@@ -726,18 +611,15 @@ impl Model {
     }
 
     /// Where a periodic orbit crosses the section γ·n = 0 upwards over one period: its fixed
-    /// points in the section's coordinates, (k, 2).
-    #[pyo3(signature = (orbit, *, normal=None))]
+    /// points in the section's coordinates, (k, 2). Keywords: those of `poincare_section`.
+    #[pyo3(signature = (orbit, **options))]
     fn orbit_crossings(
         &self,
         py: Python<'_>,
         orbit: &PeriodicOrbit,
-        normal: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Py<PyAny>> {
-        let mut opts = SectionOptions::default();
-        if let Some(n) = normal {
-            opts = opts.with_normal(vector3("normal", n)?);
-        }
+        let mut opts: SectionOptions = from_keywords("orbit_crossings", options)?;
         let m = self.get()?;
         let o = orbit.inner.clone();
         let pts = cancellable(py, |c| {

@@ -39,3 +39,28 @@ pub fn stdout(o: &Output) -> String {
 pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
+
+/// `routh ARGS…` with exit code 0: its stdout.
+pub fn ok(args: &[&str]) -> String {
+    let o = routh(args);
+    assert_eq!(o.status.code(), Some(0), "{args:?}: stderr {}", stderr(&o));
+    stdout(&o)
+}
+
+/// Exit code `code` and a message on stderr containing each of `needles`, no panic, nothing on
+/// stdout.
+pub fn fails_with(args: &[&str], code: i32, needles: &[&str]) {
+    let o = routh(args);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(code), "{args:?}: stderr {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: stderr {err:?} lacks {n:?}");
+    }
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(stdout(&o).is_empty(), "{}", stdout(&o));
+}
+
+/// [`fails_with`] one needle.
+pub fn fails(args: &[&str], code: i32, needle: &str) {
+    fails_with(args, code, &[needle]);
+}

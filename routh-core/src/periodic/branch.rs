@@ -87,7 +87,7 @@ pub fn switch_branch<M: Routhian>(
     };
     let prob = Problem::at(model, &x, event.orbit.p_psi, scales)?;
     let first = |dir: W| -> Result<Option<super::shoot::Solved>, RouthError> {
-        let mut h = opts.initial_step.max(10.0 * opts.initial_amplitude);
+        let mut h = opts.first_step().max(10.0 * opts.initial_amplitude);
         while h >= opts.min_step {
             let pred = s.w + dir * h;
             let row = LinearRow::through(dir, &pred);

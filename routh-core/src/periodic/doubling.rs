@@ -77,7 +77,7 @@ pub fn period_doubled_family<M: Routhian>(
         first_period: doubled.t,
     };
     let prob = Problem::at(model, &x, event.orbit.p_psi, doubled)?;
-    let mut h = opts.initial_step.max(10.0 * opts.initial_amplitude);
+    let mut h = opts.first_step().max(10.0 * opts.initial_amplitude);
     let mut first = None;
     while h >= opts.min_step {
         let pred = w_pd + n * h;

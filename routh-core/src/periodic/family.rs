@@ -179,7 +179,7 @@ impl<M: Routhian> Tracer<'_, M> {
         let o = self.opts;
         let mut path: Path<UNKNOWNS> = Path::new(
             PathOptions::orbit_family(o.min_step, o.max_step),
-            o.initial_step,
+            o.first_step(),
         )
         .with_budget(budget.saturating_mul(8).max(16));
         let mut nodes: Vec<Node> = Vec::new();

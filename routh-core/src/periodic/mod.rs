@@ -95,7 +95,8 @@ pub struct OrbitOptions {
     /// period of its first orbit (a family approaching a homoclinic orbit has periods growing
     /// without bound).
     pub max_period_ratio: f64,
-    /// First and largest step of the continuation (pseudo-arclength in `(x₀, T/T₀, E)`).
+    /// First step of the continuation (pseudo-arclength in `(x₀, T/T₀, E)`; at most
+    /// `max_step`, whichever is set).
     pub initial_step: f64,
     /// Largest step.
     pub max_step: f64,
@@ -162,6 +163,11 @@ impl OrbitOptions {
         self.max_step = h;
         self.initial_step = self.initial_step.min(h);
         self
+    }
+
+    /// The first step: `initial_step`, at most `max_step`.
+    pub(crate) fn first_step(&self) -> f64 {
+        self.initial_step.min(self.max_step)
     }
 
     pub(crate) fn validate(&self) -> Result<(), RouthError> {

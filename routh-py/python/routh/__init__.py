@@ -41,6 +41,7 @@ from ._routh import (
     Trajectory,
     bifurcation_diagram,
     orbit_chart,
+    _options_schema,
     plot_style,
     stability_atlas,
 )

@@ -1,7 +1,9 @@
 """Type stubs of the Python package `routh` (docs/python.md)."""
 
 from os import PathLike
-from typing import Any, Callable, Literal, Mapping, Sequence, Union
+from typing import Any, Callable, Literal, Mapping, Sequence, TypedDict, Union
+
+from typing_extensions import Unpack
 
 import numpy as np
 import numpy.typing as npt
@@ -18,6 +20,125 @@ OrbitNonlinearVerdict = Literal["orbitally_stable", "unstable", "undecided"]
 OrbitResonance = Literal["third", "fourth"]
 ParamValue = Union[float, Sequence[float], Sequence[Sequence[float]], npt.ArrayLike]
 Vec3 = Union[Sequence[float], npt.NDArray[np.float64]]
+
+# The keywords of the analyses: every field of the Rust options struct, defaults its `Default`
+# (`routh._options_schema()`; routh-py/tests/test_options.py checks these against it). None
+# for a keyword is its default.
+
+class _OrbitFamilyOptions(TypedDict, total=False):
+    """The fields of `OrbitOptions` an orbit chart's families share with any family."""
+
+    atol: float  # default 1e-12
+    event_tol: float  # default 1e-9
+    initial_amplitude: float  # default 0.001
+    initial_step: float  # default 0.02
+    max_iter: int  # default 12
+    max_period_ratio: float  # default 20.0
+    max_step: float  # default 0.1
+    max_steps: int  # default 100000
+    min_step: float  # default 1e-7
+    newton_tol: float  # default 1e-9
+    parabolic_tol: float  # default 1e-6
+    resonance_tol: float  # default 0.001
+    rtol: float  # default 1e-11
+
+class _OrbitOptions(_OrbitFamilyOptions, total=False):
+    """`OrbitOptions`: the periodic orbits and their families."""
+
+    energy_bounds: tuple[float, float] | None  # default None
+    max_orbits: int  # default 100
+    nonlinear: bool  # default False
+
+class _OrbitNonlinearOptions(TypedDict, total=False):
+    """`OrbitNonlinearOptions`: an orbit's stability beyond linear."""
+
+    atol: float  # default 1e-13
+    criterion_tol: float  # default 1e-6
+    max_steps: int  # default 100000
+    resonance_tol: float  # default 1e-6
+    rtol: float  # default 1e-11
+    twist_tol: float  # default 1e-6
+
+class _OrbitChartOptions(_OrbitFamilyOptions, total=False):
+    """`OrbitChartOptions`: an orbit chart, its families' fields by their own names (not
+    `energy_bounds` and `nonlinear`, which the chart sets)."""
+
+    join_tol: float  # default 0.05
+    max_orbits: int  # default 200
+    nx: int  # default 41
+
+class _ContinuationOptions(TypedDict, total=False):
+    """`ContinuationOptions`: a bifurcation diagram, the fields of its `search` and
+    `classify` by their own names (`zero_eigenvalue_tol`, in both, only as
+    `**{"classify.zero_eigenvalue_tol": ...}`); `nonlinear=True` locates the nonlinear events."""
+
+    double_root_tol: float  # default 1e-10
+    em_turn_degrees: float  # default 3.0
+    event_tol: float  # default 1e-10
+    gradient_tol: float  # default 1e-10
+    initial_step: float  # default 0.01
+    max_branches: int  # default 64
+    max_iterations: int  # default 100
+    max_step: float  # default 0.05
+    max_steps: int  # default 20000
+    min_step: float  # default 1e-7
+    newton_tol: float  # default 1e-12
+    nonlinear: bool | None  # default None
+    seeds: int  # default 5
+    starts: int  # default 400
+    steady_tol: float  # default 1e-5
+    verify_counts: bool  # default True
+
+class _AtlasOptions(TypedDict, total=False):
+    """`AtlasOptions`: a stability atlas, the fields of its `classify` by their own names;
+    `nonlinear=True` as for a diagram."""
+
+    curve_step: float  # default 0.005
+    curve_tol: float  # default 1e-10
+    double_root_tol: float  # default 1e-10
+    max_curve_points: int  # default 20000
+    max_guess_angle: float  # default 0.35
+    nonlinear: bool | None  # default None
+    nx: int  # default 41
+    ny: int  # default 41
+    start: tuple[float, float] | None  # default None
+    steady_tol: float  # default 1e-5
+    threads: int  # default 0
+    zero_eigenvalue_tol: float  # default 1e-8
+
+class _SimOptions(TypedDict, total=False):
+    """`SimOptions`: a simulation (its `output` is the keyword `times`; `method` as serde
+    writes it, `"Dop853"` or `{"LieRk4": {"step": h}}`)."""
+
+    atol: float  # default 1e-12
+    attitude: bool  # default False
+    h_init: float | None  # default None
+    h_max: float | None  # default None
+    max_steps: int  # default 100000
+    method: str | dict[str, Any]  # default "Dop853"
+    rate_atol: float | None  # default None
+    rtol: float  # default 1e-10
+
+class _SectionOptions(TypedDict, total=False):
+    """`SectionOptions`: a Poincaré section and an orbit's crossings."""
+
+    atol: float  # default 1e-12
+    crossings: int  # default 200
+    normal: Vec3  # default (1.0, 0.0, 0.0)
+    orbits: int  # default 50
+    rtol: float  # default 1e-10
+    steps_per_crossing: int  # default 2000
+
+class _NonlinearOptions(TypedDict, total=False):
+    """`NonlinearOptions`: a steady motion's nonlinear stability, the fields of its
+    `classify` by their own names."""
+
+    arnold_tol: float  # default 1e-8
+    criterion_tol: float  # default 1e-6
+    double_root_tol: float  # default 1e-10
+    resonance_tol: float  # default 1e-6
+    steady_tol: float  # default 1e-5
+    zero_eigenvalue_tol: float  # default 1e-8
 
 VERDICTS: tuple[str, ...]
 EVENT_KINDS: tuple[str, ...]
@@ -749,58 +870,31 @@ class Model:
         omega: Vec3,
         gamma: Vec3,
         period: float,
-        *,
-        rtol: float | None = None,
-        atol: float | None = None,
-        newton_tol: float | None = None,
+        **options: Unpack[_OrbitOptions],
     ) -> PeriodicOrbit: ...
     def lyapunov_family(
         self,
         motion: SteadyMotion,
         mode: int = 0,
-        *,
-        max_orbits: int | None = None,
-        energy_bounds: tuple[float, float] | None = None,
-        max_step: float | None = None,
-        initial_amplitude: float | None = None,
-        rtol: float | None = None,
-        atol: float | None = None,
-        newton_tol: float | None = None,
-        nonlinear: bool = False,
+        **options: Unpack[_OrbitOptions],
     ) -> OrbitFamily: ...
     def continue_orbit(
         self,
         orbit: PeriodicOrbit,
         energy_range: tuple[float, float],
-        *,
-        max_orbits: int | None = None,
-        max_step: float | None = None,
-        rtol: float | None = None,
-        atol: float | None = None,
-        newton_tol: float | None = None,
-        nonlinear: bool = False,
+        **options: Unpack[_OrbitOptions],
     ) -> OrbitFamily: ...
     def continue_orbit_in(
         self,
         orbit: PeriodicOrbit,
         name: str,
         s_range: tuple[float, float],
-        *,
-        max_orbits: int | None = None,
-        max_step: float | None = None,
-        rtol: float | None = None,
-        atol: float | None = None,
-        newton_tol: float | None = None,
-        nonlinear: bool = False,
+        **options: Unpack[_OrbitOptions],
     ) -> OrbitParameterFamily: ...
     def period_doubled_family(
-        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None,
-        nonlinear: bool = False,
+        self, event: OrbitEvent, **options: Unpack[_OrbitOptions]
     ) -> OrbitFamily: ...
-    def switch_branch(
-        self, event: OrbitEvent, *, max_orbits: int | None = None, max_step: float | None = None,
-        nonlinear: bool = False,
-    ) -> OrbitFamily:
+    def switch_branch(self, event: OrbitEvent, **options: Unpack[_OrbitOptions]) -> OrbitFamily:
         """The family crossing `event`'s family at that "branch_point", followed both ways from it.
 
         RouthError (kind "InvalidOption") for an event that is not a branch point.
@@ -812,23 +906,16 @@ class Model:
         self,
         p_psi: float,
         energy: float,
-        *,
-        normal: Vec3 | None = None,
-        orbits: int = 50,
-        crossings: int = 200,
+        **options: Unpack[_SectionOptions],
     ) -> PoincareSection: ...
-    def orbit_crossings(self, orbit: PeriodicOrbit, *, normal: Vec3 | None = None) -> npt.NDArray[np.float64]: ...
+    def orbit_crossings(
+        self, orbit: PeriodicOrbit, **options: Unpack[_SectionOptions]
+    ) -> npt.NDArray[np.float64]: ...
     def orbit_path(self, orbit: PeriodicOrbit, n: int = 200) -> Trajectory: ...
     def orbit_nonlinear_stability(
         self,
         orbit: PeriodicOrbit,
-        *,
-        rtol: float | None = None,
-        atol: float | None = None,
-        resonance_tol: float | None = None,
-        twist_tol: float | None = None,
-        criterion_tol: float | None = None,
-        max_steps: int | None = None,
+        **options: Unpack[_OrbitNonlinearOptions],
     ) -> OrbitNonlinearReport:
         """The rotation number, twist and verdict of an orbit beyond the linear test (§5h)."""
     def orbit_chart(
@@ -840,56 +927,37 @@ class Model:
         *,
         mode: int = 0,
         momentum: float | None = None,
-        nx: int | None = None,
-        join_tol: float | None = None,
-        max_orbits: int | None = None,
-        max_step: float | None = None,
-        initial_amplitude: float | None = None,
-        rtol: float | None = None,
-        atol: float | None = None,
-        newton_tol: float | None = None,
+        **options: Unpack[_OrbitChartOptions],
     ) -> OrbitChart:
         """`routh.orbit_chart(self, gamma_guess, x_range, excess_energy, parameter=parameter, ...)`."""
     def nonlinear_stability(
         self,
         motion: SteadyMotion,
-        *,
-        resonance_tol: float | None = None,
-        arnold_tol: float | None = None,
-        criterion_tol: float | None = None,
+        **options: Unpack[_NonlinearOptions],
     ) -> NonlinearReport: ...
     def bifurcation_diagram(
         self,
         range: tuple[float, float],
         *,
-        initial_step: float | None = None,
-        max_step: float | None = None,
-        min_step: float | None = None,
-        max_steps: int | None = None,
-        max_branches: int | None = None,
-        newton_tol: float | None = None,
-        event_tol: float | None = None,
-        seeds: int | None = None,
-        verify_counts: bool | None = None,
-        nonlinear: bool = False,
         progress: bool = False,
+        **options: Unpack[_ContinuationOptions],
     ) -> Diagram: ...
     def simulate_full(
-        self, omega0: Vec3, gamma0: Vec3, t_end: float, *, rtol: float = 1e-10, atol: float = 1e-12,
-        max_steps: int | None = None, attitude: bool = False,
+        self, omega0: Vec3, gamma0: Vec3, t_end: float, *,
         times: Sequence[float] | npt.NDArray[np.float64] | None = None,
+        **options: Unpack[_SimOptions],
     ) -> Trajectory:
         """Integrate the full equations (8) (the Rust `simulate_full`); `simulate` is an alias."""
     def simulate(
-        self, omega0: Vec3, gamma0: Vec3, t_end: float, *, rtol: float = 1e-10, atol: float = 1e-12,
-        max_steps: int | None = None, attitude: bool = False,
+        self, omega0: Vec3, gamma0: Vec3, t_end: float, *,
         times: Sequence[float] | npt.NDArray[np.float64] | None = None,
+        **options: Unpack[_SimOptions],
     ) -> Trajectory:
         """Alias of `Model.simulate_full`, kept for existing code."""
     def simulate_reduced(
-        self, big_omega0: Vec3, gamma0: Vec3, p_psi: float, t_end: float, *, rtol: float = 1e-10,
-        atol: float = 1e-12, max_steps: int | None = None, attitude: bool = False,
+        self, big_omega0: Vec3, gamma0: Vec3, p_psi: float, t_end: float, *,
         times: Sequence[float] | npt.NDArray[np.float64] | None = None,
+        **options: Unpack[_SimOptions],
     ) -> ReducedTrajectory: ...
     def steady_motions_certified(
         self, p_psi: float, *, initial_split: int | None = None, min_width: float | None = None,
@@ -907,17 +975,8 @@ def bifurcation_diagram(
     family: Callable[[float], tuple[Model, float]],
     range: tuple[float, float],
     *,
-    initial_step: float | None = None,
-    max_step: float | None = None,
-    min_step: float | None = None,
-    max_steps: int | None = None,
-    max_branches: int | None = None,
-    newton_tol: float | None = None,
-    event_tol: float | None = None,
-    seeds: int | None = None,
-    verify_counts: bool | None = None,
-    nonlinear: bool = False,
     progress: bool = False,
+    **options: Unpack[_ContinuationOptions],
 ) -> Diagram: ...
 def orbit_chart(
     family: Model | Callable[[float], tuple[Model, float]],
@@ -928,14 +987,7 @@ def orbit_chart(
     mode: int = 0,
     parameter: str | None = None,
     momentum: float | None = None,
-    nx: int | None = None,
-    join_tol: float | None = None,
-    max_orbits: int | None = None,
-    max_step: float | None = None,
-    initial_amplitude: float | None = None,
-    rtol: float | None = None,
-    atol: float | None = None,
-    newton_tol: float | None = None,
+    **options: Unpack[_OrbitChartOptions],
 ) -> OrbitChart:
     """The chart of the Lyapunov family of `mode` over a parameter x and h = E − E_s(x): a
     `Model` through its scalar parameter `parameter` (or "p_psi") at p_ψ = `momentum`, or a
@@ -952,12 +1004,8 @@ def stability_atlas(
     x: tuple[float, float],
     y: tuple[float, float],
     *,
-    nx: int | None = None,
-    ny: int | None = None,
-    curve_tol: float | None = None,
-    curve_step: float | None = None,
-    max_curve_points: int | None = None,
     progress: bool = False,
+    **options: Unpack[_AtlasOptions],
 ) -> Atlas: ...
 def study(
     job: Union[str, Callable[..., Any]],
@@ -988,3 +1036,5 @@ def from_json(text: str) -> Any:
     >>> d2 = routh.from_json(d.to_json())
     """
 def _restore(kind: str, state: Any) -> Any: ...
+def _options_schema() -> dict[str, dict[str, Any]]:
+    """{options struct: {keyword: default}}: the keywords of the analyses and their defaults."""
