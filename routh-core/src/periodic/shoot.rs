@@ -462,6 +462,10 @@ pub(crate) fn correct<M: Lagrangian>(
     Ok(Err(best))
 }
 
+/// What [`correct_at`] gives: the correction (`Err(best residual)` when it does not converge),
+/// the scales and the guess's state.
+pub(crate) type Corrected = (Result<Solved, f64>, Scales, Vector6<f64>);
+
 /// One correction of `guess` (an orbit of this model, or of a neighbouring model or energy) in
 /// the family's unknowns with the energy fixed at `energy` and the momentum at `p_psi`: the
 /// result (`Err(best residual)` when it does not converge), the scales and the guess's state.
@@ -471,7 +475,7 @@ pub(crate) fn correct_at<M: Lagrangian>(
     energy: f64,
     p_psi: f64,
     opts: &OrbitOptions,
-) -> Result<(Result<Solved, f64>, Scales, Vector6<f64>), RouthError> {
+) -> Result<Corrected, RouthError> {
     let x = check_guess(model, &guess.omega0, &guess.gamma0, guess.period)?;
     let scales = Scales {
         t: guess.period,
