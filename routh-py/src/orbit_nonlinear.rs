@@ -319,14 +319,15 @@ fn chart_of_model(
 /// a parameter x ∈ `x_range` and the energy h = E − E_s(x) ∈ `excess_energy` above the steady
 /// motion (docs/method.md §12; the Rust `orbit_chart`): at each of `nx` values of x the steady
 /// motion near `gamma_guess` (followed from one x to the next), its family with the linear and
-/// nonlinear events located, the events of one kind at neighbouring x joined into curves.
+/// nonlinear events located, then each curve continued in (x, h) from those events
+/// (docs/method.md §12.4).
 ///
 /// `family` is a `Model` — x is then its scalar parameter named `parameter` (or "p_psi": the
 /// momentum), the momentum `momentum` (default 0) — or a callable `x -> (Model, p_psi)`
 /// (`parameter` then only names the axis, default "x"; `momentum` must not be given). The other
 /// keywords are the fields of the Rust `OrbitChartOptions`, defaults its `Default`: `nx`,
-/// `join_tol` (events at neighbouring x whose h differ by at most that fraction of the energy
-/// range are joined) and those of each family, the fields of its `orbit` (`max_orbits`
+/// `join_tol` (the widest window, a fraction of the chart's ranges, in which a curve's next
+/// point is searched about its prediction) and those of each family, the fields of its `orbit` (`max_orbits`
 /// (default 200), `max_step`, `rtol`, …; not `energy_bounds` and `nonlinear`, which the chart
 /// sets). A failure at one x is recorded in
 /// `failures`, not raised; invalid ranges or options raise `RouthError` (kind "InvalidOption"),
