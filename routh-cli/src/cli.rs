@@ -160,6 +160,12 @@ pub struct Diagram {
     /// momentum only).
     #[arg(long, value_name = "FILE", conflicts_with = "parameter")]
     pub energy_momentum_svg: Option<PathBuf>,
+    /// `X,Y,Z`: draw the circles of steady motions of a body symmetric about this body axis with
+    /// their verdict modulo the symmetry (`classify_circle`: stable or unstable as circles,
+    /// where the classification of a single point is degenerate). The figures only: the tables
+    /// keep each point's own verdict.
+    #[arg(long, value_name = "X,Y,Z", value_parser = args::vec3, allow_hyphen_values = true)]
+    pub circles: Option<[f64; 3]>,
     /// Also locate the nonlinear events on gyroscopically stabilised stretches: Arnold's
     /// D = 0 and the 1:2, 1:3 resonances (slower: a normal form at every step there).
     #[arg(long)]

@@ -6,7 +6,9 @@ use crate::commands::{describe, load};
 use crate::error::CliError;
 use crate::options::options;
 use crate::table::{num, vec3, Table};
-use routh::plot::{bifurcation_diagram_svg, energy_momentum_svg, PlotOptions};
+use routh::plot::{
+    bifurcation_diagram_svg, energy_momentum_svg, with_circle_verdicts, PlotOptions,
+};
 use routh::{bifurcation_diagram, BifurcationDiagram, ContinuationOptions, ModelError};
 use serde_json::json;
 use std::cell::RefCell;
@@ -51,6 +53,38 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             (diagram, par.name.clone())
         }
     };
+    // The figures' diagram: the circles with their verdict modulo the symmetry when asked.
+    let drawn = match d.circles {
+        None => result.clone(),
+        Some(_) if d.svg.is_none() && d.energy_momentum_svg.is_none() => {
+            return Err(CliError::Input(
+                "--circles draws the circles' verdicts in a figure: give --svg or \
+                 --energy-momentum-svg"
+                    .into(),
+            ))
+        }
+        Some(axis) => {
+            let axis = routh::Vector3::from(axis);
+            if !(axis.norm() > 0.0 && axis.norm().is_finite()) {
+                return Err(CliError::Input(format!(
+                    "--circles {axis:?}: the symmetry axis must be a non-zero vector"
+                )));
+            }
+            match &d.parameter {
+                None => with_circle_verdicts(&result, |p| (model.clone(), p), axis.normalize()),
+                Some(par) => {
+                    let p = args::finite(&d.momentum).map_err(bad)?;
+                    let member = |s: f64| {
+                        (
+                            model.with(&par.name, s).unwrap_or_else(|_| model.clone()),
+                            p,
+                        )
+                    };
+                    with_circle_verdicts(&result, member, axis.normalize())
+                }
+            }
+        }
+    };
     let mut files = crate::files::Outputs::new();
     if let Some(path) = &d.svg {
         let axis = match &d.parameter {
@@ -61,14 +95,14 @@ pub fn diagram(d: &Diagram) -> Result<String, CliError> {
             x_label: axis,
             ..PlotOptions::default()
         });
-        files.write(path, |tmp| bifurcation_diagram_svg(&result, tmp, &opts))?;
+        files.write(path, |tmp| bifurcation_diagram_svg(&drawn, tmp, &opts))?;
     }
     if let Some(path) = &d.energy_momentum_svg {
         let opts = d.figure.apply(PlotOptions {
             x_label: args::axis_name("momentum", model.latex_symbols()),
             ..PlotOptions::default()
         });
-        files.write(path, |tmp| energy_momentum_svg(&result, tmp, &opts))?;
+        files.write(path, |tmp| energy_momentum_svg(&drawn, tmp, &opts))?;
     }
     let text = if d.output.json {
         serde_json::to_string_pretty(&result)? + "\n"

@@ -307,6 +307,44 @@ fn orbit_chart_figure_draws_its_curves_and_regions() {
     assert!(f.has("elliptic, |k| &lt; 1") && f.has("hyperbolic, k &gt; 1"));
 }
 
+/// `--circles`: the Lagrange top's circles of steady motions (its tilted precessions), whose
+/// points the classification of single steady motions leaves degenerate, are drawn with their
+/// verdict as circles; without it the legend lists the degenerate runs. No figure: exit code 2.
+#[test]
+fn diagram_draws_circle_verdicts_when_asked() {
+    let legend = |circles: bool| {
+        let path = scratch(if circles { "circles.svg" } else { "points.svg" });
+        let mut args = vec![
+            "diagram",
+            TOP,
+            "--momentum",
+            "0..5",
+            "--svg",
+            path.to_str().unwrap(),
+        ];
+        if circles {
+            args.extend(["--circles", "0,0,1"]);
+        }
+        ok(&args);
+        Figure::read(&path)
+    };
+    let (points, circles) = (legend(false), legend(true));
+    assert!(
+        points.has("degenerate (test inconclusive)"),
+        "{:?}",
+        points.texts
+    );
+    assert!(
+        !circles.has("degenerate (test inconclusive)"),
+        "{:?}",
+        circles.texts
+    );
+    assert!(circles.has("secularly stable") && circles.has("circle of steady motions"));
+    let o = routh(&["diagram", TOP, "--momentum", "0..5", "--circles", "0,0,1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--circles"));
+}
+
 #[test]
 fn bad_figure_options_are_usage_errors() {
     let svg = scratch("bad.svg");
