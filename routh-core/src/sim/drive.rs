@@ -107,6 +107,11 @@ where
                 rhs_evaluations: counters.evaluations,
             })
         }
+        // Taylor's method has its own loop (module `taylor`), for (8) only.
+        Method::Taylor => Err(super::checks::invalid(
+            "method",
+            "Method::Taylor integrates the full equations (8) only",
+        )),
         Method::LieRk4 { step } => {
             // Segments [start, end] of equal sub-steps, recording at the end of each sub-step
             // (Steps) or only at the end of the segment (Times).

@@ -17,6 +17,20 @@ pub enum Method {
         /// The (largest) step size, finite and positive.
         step: f64,
     },
+    /// Taylor's method of adaptive order (docs/method.md §2c; Jorba & Zou 2005, as in heyoka):
+    /// the Taylor coefficients in time of the solution of (8) are computed from the model's
+    /// flow tape ([`Lagrangian::flow_tape`](crate::Lagrangian::flow_tape)) by the recurrences
+    /// of automatic differentiation, the order is `⌈−ln(ε)/2 + 1⌉` for the tolerance `ε`
+    /// (13 at the default `rtol = 1e-10`) and the step comes from the last two coefficients.
+    /// Uses [`SimOptions::rtol`], [`SimOptions::atol`], [`SimOptions::rate_atol`],
+    /// [`SimOptions::h_max`] and [`SimOptions::max_steps`] (a budget of steps: none is ever
+    /// rejected); not [`SimOptions::h_init`]. Output times are evaluated on the step's Taylor
+    /// polynomial.
+    ///
+    /// For [`simulate_full`](super::simulate_full) of a model with a flow tape
+    /// (`#[derive(Lagrangian)]`, `routh::Model`); a hand-written model, and
+    /// [`simulate_reduced`](super::simulate_reduced), give [`RouthError::InvalidOption`](crate::RouthError::InvalidOption).
+    Taylor,
 }
 
 /// Which points the trajectory records.

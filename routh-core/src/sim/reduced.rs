@@ -65,7 +65,9 @@ impl<M: Routhian + ?Sized> Field<7> for ReducedRhs<'_, M> {
 /// As [`simulate_full`](super::simulate_full) (an overflowing input is named `"p_psi"` or
 /// `"big_omega0"`), plus [`RouthError::DegenerateVerticalInertia`] when
 /// `γ₀ᵀJ(γ₀)γ₀ ≤ 0` (ψ̇ of (38) undefined), and
-/// [`RouthError::SingularReducedKinetic`] when `∂²R/∂Ω² + cγγᵀ` has no Cholesky factor.
+/// [`RouthError::SingularReducedKinetic`] when `∂²R/∂Ω² + cγγᵀ` has no Cholesky factor;
+/// [`RouthError::InvalidOption`] for [`Method::Taylor`], which is for
+/// [`simulate_full`](super::simulate_full) only.
 pub fn simulate_reduced<M: Routhian>(
     model: &M,
     big_omega0: Vector3<f64>,
@@ -78,6 +80,13 @@ pub fn simulate_reduced<M: Routhian>(
     check_finite("gamma0", gamma0.as_slice())?;
     check_finite("p_psi", &[p_psi])?;
     validate(opts, t_end)?;
+    if opts.method == Method::Taylor {
+        return Err(super::checks::invalid(
+            "method",
+            "Method::Taylor integrates the full equations (8) (simulate_full) only: the \
+             reduced equations (13) have no tape; use Method::Dop853 or Method::LieRk4",
+        ));
+    }
     check_unit_gamma(&gamma0)?;
     let vertical_inertia = gamma0.dot(&(model.d2l_domega2(&gamma0) * gamma0));
     // Also rejects NaN.
