@@ -552,16 +552,28 @@ fn taylor_delivers_an_error_proportional_to_its_tolerance() {
                 "{start}, T = {horizon}: err/tol up to {hi:.3e} > {ceiling:e}"
             ));
         }
+        // Proportionality at T = 10: the fitted exponent of err ∝ tolᵖ (measured 0.87 … 0.94;
+        // the error of the tightest tolerances nears the round-off of the reference).
+        if horizon == 10.0 && (p - 1.0).abs() > 0.2 {
+            failures.push(format!("{start}, T = {horizon}: exponent {p}"));
+        }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// `(start, T, ceiling of err/tol)` for Taylor's method (measured below).
+/// `(start, T, ceiling of err/tol)` for Taylor's method. Measured (x86-64, rtol = atol = tol,
+/// 1e-6 … 1e-14, ~1200–1900 steps to t = 1000 at every tolerance: the order grows instead of the
+/// step count), the largest err/tol is 0.050 and 59 (largest axis, T = 10 and 1000), 0.057 and
+/// 55 (smallest axis), 0.18 and 4.7e3 (near separatrix). At T = 10 the error is below the
+/// tolerance asked (the ceiling is 1: the promise "within 10×" with room to spare); at T = 1000
+/// it is not within 10× — the error of the period (phase) accumulates linearly in t, scattered
+/// by a factor ~20 between neighbouring tolerances — and the ceilings are 3× the measured
+/// values (DOP853's, above, are 840, 3000 and 1.2e5 at T = 1000).
 const TAYLOR_CEILINGS: [(&str, f64, f64); 6] = [
-    ("largest axis", 10.0, 1e9),
-    ("largest axis", 1000.0, 1e9),
-    ("smallest axis", 10.0, 1e9),
-    ("smallest axis", 1000.0, 1e9),
-    ("near separatrix", 10.0, 1e9),
-    ("near separatrix", 1000.0, 1e9),
+    ("largest axis", 10.0, 1.0),
+    ("largest axis", 1000.0, 180.0),
+    ("smallest axis", 10.0, 1.0),
+    ("smallest axis", 1000.0, 170.0),
+    ("near separatrix", 10.0, 1.0),
+    ("near separatrix", 1000.0, 1.4e4),
 ];
