@@ -70,24 +70,24 @@ pub enum Output {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SimOptions {
-    /// Relative tolerance of [`Method::Dop853`]. Must be finite and at least
+    /// Relative tolerance of [`Method::Dop853`] and [`Method::Taylor`]. Must be finite and at least
     /// `10·ε ≈ 2.2e-15`. Default `1e-10`.
     ///
     /// It bounds the error of each step, not of the run: the error at time t is proportional to
     /// `rtol` but grows with t, to ~1e2 – 1e3 × `rtol` at t = 1000 on a regular orbit and more
     /// near a separatrix (measured in docs/method.md §2b, "What a tolerance delivers").
     pub rtol: f64,
-    /// Absolute tolerance of [`Method::Dop853`] for γ and ψ (dimensionless), and for the angular
+    /// Absolute tolerance of [`Method::Dop853`] and [`Method::Taylor`] for γ and ψ (dimensionless), and for the angular
     /// velocity unless [`rate_atol`](Self::rate_atol) is given. Finite and positive. Default
     /// `1e-12`.
     pub atol: f64,
-    /// Absolute tolerance of [`Method::Dop853`] for the angular velocity (ω or Ω), in the units
+    /// Absolute tolerance of [`Method::Dop853`] and [`Method::Taylor`] for the angular velocity (ω or Ω), in the units
     /// of the angular velocity (1/time). `None`: [`atol`](Self::atol). Finite and positive if
     /// given. Default `None`.
     pub rate_atol: Option<f64>,
     /// The integrator. Default [`Method::Dop853`].
     pub method: Method,
-    /// Largest step of [`Method::Dop853`] (`None`: unbounded). Must be positive if given.
+    /// Largest step of [`Method::Dop853`] and [`Method::Taylor`] (`None`: unbounded). Must be positive if given.
     pub h_max: Option<f64>,
     /// Initial step of [`Method::Dop853`] (`None`: Hairer's heuristic). Positive if given.
     pub h_init: Option<f64>,
