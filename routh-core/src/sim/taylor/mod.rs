@@ -135,13 +135,19 @@ impl Expansion {
             let (mut gd, mut md) = ([0.0; 3], [0.0; 3]);
             for i in 0..=k {
                 let w = self.vec3(OMEGA, k - i);
-                let g = self.vec3(GAMMA, i);
-                let a = cross(g, w);
+                let a = cross(self.vec3(GAMMA, i), w);
                 let b = cross(self.vec3(m, i), w);
-                let c = cross(self.vec3(lg, i), self.vec3(GAMMA, k - i));
                 for r in 0..3 {
                     gd[r] += a[r];
-                    md[r] += b[r] + c[r];
+                    md[r] += b[r];
+                }
+            }
+            // (∂L/∂γ) × γ: a constant ∂L/∂γ (a potential linear in γ) has one term.
+            let last = if self.prog.lg_varies { k } else { 0 };
+            for i in 0..=last {
+                let c = cross(self.vec3(lg, i), self.vec3(GAMMA, k - i));
+                for r in 0..3 {
+                    md[r] += c[r];
                 }
             }
             if q.is_some() {

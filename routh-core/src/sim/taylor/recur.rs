@@ -77,6 +77,8 @@ pub(crate) struct Program {
     /// `∂L/∂ω`, `∂L/∂γ`.
     pub(crate) m: [u32; 3],
     pub(crate) lg: [u32; 3],
+    /// Whether `∂L/∂γ` reads an input (else its coefficients beyond order 0 are 0).
+    pub(crate) lg_varies: bool,
     /// Coefficients, slot-major: `c[slot · stride + k]`.
     c: Vec<f64>,
     stride: usize,
@@ -278,12 +280,15 @@ impl Program {
             .filter(|&i| b.varies[i as usize] && !matches!(b.instrs[i as usize], Instr::Input))
             .collect();
         let omega_dep = (0..n as u32).filter(|&i| b.omega[i as usize]).collect();
+        let lg = [out(4), out(5), out(6)];
+        let lg_varies = lg.iter().any(|&s| b.varies[s as usize]);
         Program {
             instrs: b.instrs,
             omega_dep,
             active,
             m: [out(1), out(2), out(3)],
-            lg: [out(4), out(5), out(6)],
+            lg,
+            lg_varies,
             c: vec![0.0; n * stride],
             stride,
             tangent: vec![[0.0; 3]; n],

@@ -202,3 +202,124 @@ fn correction_by_the_tangent_is_the_true_coefficient() {
     }
     assert!(a[4].abs() > 1e-3, "the test reads a non-trivial coefficient: {a:?}");
 }
+
+/// A small tape builder: pushes an op, returns its slot.
+struct Ops(Vec<Op>);
+
+impl Ops {
+    fn op(&mut self, op: Op) -> u32 {
+        self.0.push(op);
+        (self.0.len() - 1) as u32
+    }
+    fn c(&mut self, x: f64) -> u32 {
+        self.op(Op::constant(x))
+    }
+}
+
+/// A flow tape with `∂L/∂ω = m` and `∂L/∂γ = l` (slots of `ops`), the rest 0.
+fn flow_tape(mut ops: Ops, m: [u32; 3], l: [u32; 3]) -> FlowTape {
+    let zero = ops.c(0.0);
+    let slot = |name: &str| match name {
+        "dl_domega[0]" => m[0],
+        "dl_domega[1]" => m[1],
+        "dl_domega[2]" => m[2],
+        "dl_dgamma[0]" => l[0],
+        "dl_dgamma[1]" => l[1],
+        "dl_dgamma[2]" => l[2],
+        _ => zero,
+    };
+    let outputs = FLOW_OUTPUTS
+        .iter()
+        .map(|&name| Output {
+            name,
+            slot: slot(name),
+        })
+        .collect();
+    FlowTape::new(Tape::new(ops.0, outputs, 0).unwrap(), vec![]).unwrap()
+}
+
+/// The expansion of the whole flow against the flow itself computed without recurrences: the
+/// tape evaluated in `f64` by its interpreter, `J = ∂m/∂ω` and `N = ∂m/∂γ` by central
+/// differences, `ω̇ = J⁻¹(m × ω + l × γ − N(γ × ω))`, `γ̇ = γ × ω`; the second coefficient
+/// against the central difference of that field along itself. `J` depends on γ and ω (a term
+/// `ω₀³`), and the tape has products, `sin`, `cos`, `tan`, `exp`, `√`, `1/x` and a power.
+#[test]
+fn expansion_of_the_flow_matches_its_field() {
+    use super::Expansion;
+    use nalgebra::{Matrix3, Vector3};
+    let mut o = Ops(Vec::new());
+    let w: Vec<u32> = (0..3).map(|i| o.op(Op::Omega(i))).collect();
+    let g: Vec<u32> = (0..3).map(|i| o.op(Op::Gamma(i))).collect();
+    // m₀ = (1 + γ₀²) ω₀ + 0.1 ω₀³ + 0.2 γ₂ ω₁, m₁ = (2 + sin γ₁) ω₁ + 0.2 γ₂ ω₀,
+    // m₂ = √(4 + γ₂) ω₂.
+    let one = o.c(1.0);
+    let g00 = o.op(Op::Mul(g[0], g[0]));
+    let a0 = o.op(Op::Add(one, g00));
+    let t0 = o.op(Op::Mul(a0, w[0]));
+    let w03 = o.op(Op::Powi(w[0], 3));
+    let k01 = o.c(0.1);
+    let t1 = o.op(Op::Mul(k01, w03));
+    let k02 = o.c(0.2);
+    let c2 = o.op(Op::Mul(k02, g[2]));
+    let t2 = o.op(Op::Mul(c2, w[1]));
+    let s0 = o.op(Op::Add(t0, t1));
+    let m0 = o.op(Op::Add(s0, t2));
+    let two = o.c(2.0);
+    let sg1 = o.op(Op::Func(Func::Sin, g[1]));
+    let a1 = o.op(Op::Add(two, sg1));
+    let u1 = o.op(Op::Mul(a1, w[1]));
+    let u2 = o.op(Op::Mul(c2, w[0]));
+    let m1 = o.op(Op::Add(u1, u2));
+    let four = o.c(4.0);
+    let q = o.op(Op::Add(four, g[2]));
+    let a2 = o.op(Op::Func(Func::Sqrt, q));
+    let m2 = o.op(Op::Mul(a2, w[2]));
+    // l₀ = γ₀ ω₀², l₁ = tan(0.3 γ₁) cos(γ₁) ω₁, l₂ = −exp(γ₂) / (1 + γ₀²).
+    let w00 = o.op(Op::Mul(w[0], w[0]));
+    let l0 = o.op(Op::Mul(g[0], w00));
+    let k3 = o.c(0.3);
+    let x = o.op(Op::Mul(k3, g[1]));
+    let tn = o.op(Op::Func(Func::Tan, x));
+    let cg1 = o.op(Op::Func(Func::Cos, g[1]));
+    let tc = o.op(Op::Mul(tn, cg1));
+    let l1 = o.op(Op::Mul(tc, w[1]));
+    let e = o.op(Op::Func(Func::Exp, g[2]));
+    let r = o.op(Op::Recip(a0));
+    let er = o.op(Op::Mul(e, r));
+    let l2 = o.op(Op::Neg(er));
+    let tape = flow_tape(o, [m0, m1, m2], [l0, l1, l2]);
+
+    let terms = |w: &Vector3<f64>, g: &Vector3<f64>| {
+        let t = tape.eval(&[w.x, w.y, w.z], &[g.x, g.y, g.z], &mut Vec::new());
+        (Vector3::from(t.dl_domega), Vector3::from(t.dl_dgamma))
+    };
+    let field = |w: &Vector3<f64>, g: &Vector3<f64>| {
+        let h = 1e-6;
+        let (mut j, mut n) = (Matrix3::zeros(), Matrix3::zeros());
+        for k in 0..3 {
+            let mut e = Vector3::zeros();
+            e[k] = h;
+            j.set_column(k, &((terms(&(w + e), g).0 - terms(&(w - e), g).0) / (2.0 * h)));
+            n.set_column(k, &((terms(w, &(g + e)).0 - terms(w, &(g - e)).0) / (2.0 * h)));
+        }
+        let (m, l) = terms(w, g);
+        let gd = g.cross(w);
+        let wd = j.try_inverse().unwrap() * (m.cross(w) + l.cross(g) - n * gd);
+        (wd, gd)
+    };
+    let (w0, g0) = (Vector3::new(0.7, -0.4, 1.1), Vector3::new(0.3, 0.5, 0.81));
+    let mut ex = Expansion::new(&tape, 4);
+    ex.expand(w0.into(), g0.into(), None, 4).unwrap();
+    let (wd, gd) = field(&w0, &g0);
+    let (w1, g1) = (Vector3::from(ex.omega(1)), Vector3::from(ex.gamma(1)));
+    assert!((w1 - wd).amax() < 1e-8, "ω₁ {w1} against {wd}");
+    assert!((g1 - gd).amax() < 1e-15, "γ₁ {g1} against {gd}");
+    // ω₂ = ½ d/dt ω̇ along the flow.
+    let h = 1e-4;
+    let (wp, _) = field(&(w0 + wd * h), &(g0 + gd * h));
+    let (wm, _) = field(&(w0 - wd * h), &(g0 - gd * h));
+    let w2 = (wp - wm) / (4.0 * h);
+    let w2_ex = Vector3::from(ex.omega(2));
+    assert!((w2_ex - w2).amax() < 1e-6, "ω₂ {w2_ex} against {w2}");
+    assert!(w2.amax() > 0.1, "a non-trivial second coefficient: {w2}");
+}
