@@ -78,7 +78,9 @@ fn table() {
         reference.stats.accepted_steps,
         error(&check, &w_ref, &g_ref)
     );
-    let tols: Vec<f64> = (0..=12).map(|j| 10f64.powf(-8.0 - 0.5 * j as f64)).collect();
+    let tols: Vec<f64> = (0..=12)
+        .map(|j| 10f64.powf(-8.0 - 0.5 * j as f64))
+        .collect();
     let methods = [("Taylor", Method::Taylor), ("DOP853", Method::Dop853)];
     // Fastest of interleaved rounds.
     let rounds = 5;

@@ -150,9 +150,22 @@ fn runtime_model_integrates_as_the_derive() {
     // The same steps (the step size is read from the coefficients, which agree to rounding)
     // and the same states to rounding.
     assert_eq!(a.t.len(), b.t.len());
-    let dt = a.t.iter().zip(&b.t).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
-    let dx = distance(&a, &Trajectory { t: a.t.clone(), ..b.clone() });
-    eprintln!("Model vs derive: {} steps, |Δt| ≤ {dt:.1e}, |Δx| ≤ {dx:.1e}", a.t.len());
+    let dt =
+        a.t.iter()
+            .zip(&b.t)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max);
+    let dx = distance(
+        &a,
+        &Trajectory {
+            t: a.t.clone(),
+            ..b.clone()
+        },
+    );
+    eprintln!(
+        "Model vs derive: {} steps, |Δt| ≤ {dt:.1e}, |Δx| ≤ {dx:.1e}",
+        a.t.len()
+    );
     assert!(dt < 1e-12 && dx < 1e-11, "Δt {dt:e}, Δx {dx:e}");
 }
 
@@ -162,9 +175,15 @@ fn taylor_needs_a_flow_tape_and_the_full_equations() {
     // A hand-written model has no flow tape.
     let hand = test_models::HeavyTop::lagrange(2.0, 1.0, 1.0);
     let e = simulate_full(&hand, w0, g0, 1.0, &taylor(1e-10)).unwrap_err();
-    assert!(matches!(e, RouthError::InvalidOption { what: "method", .. }), "{e}");
+    assert!(
+        matches!(e, RouthError::InvalidOption { what: "method", .. }),
+        "{e}"
+    );
     let e = simulate_reduced(&top(), w0, g0, 0.5, 1.0, &taylor(1e-10)).unwrap_err();
-    assert!(matches!(e, RouthError::InvalidOption { what: "method", .. }), "{e}");
+    assert!(
+        matches!(e, RouthError::InvalidOption { what: "method", .. }),
+        "{e}"
+    );
 }
 
 #[test]

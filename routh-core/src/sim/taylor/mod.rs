@@ -255,11 +255,7 @@ where
             });
         }
         // The tolerance of each block at the step's start, and the order.
-        let norms0 = [
-            w.amax(),
-            g.amax(),
-            q.map_or(0.0, |q| q.coords.amax()),
-        ];
+        let norms0 = [w.amax(), g.amax(), q.map_or(0.0, |q| q.coords.amax())];
         let tols: Vec<(f64, f64)> = (0..blocks)
             .map(|b| block_tolerance(norms0[b], rtol, atols[b]))
             .collect();
@@ -294,12 +290,7 @@ where
         if let Some(ts) = times {
             while next < ts.len() && ts[next] <= t1 {
                 let (wn, gn, qn) = ex.eval(ts[next] - t);
-                record(
-                    ts[next],
-                    wn.into(),
-                    gn.into(),
-                    q.map(|_| qn),
-                );
+                record(ts[next], wn.into(), gn.into(), q.map(|_| qn));
                 next += 1;
             }
         }

@@ -120,7 +120,10 @@ impl Builder {
         let w = ops.iter().any(|&a| self.omega[a as usize]);
         if !v {
             // Constant operands: fold to a number at build time (the f64 meaning of the op).
-            let x = ops.iter().map(|&a| self.value(a)).collect::<Option<Vec<f64>>>();
+            let x = ops
+                .iter()
+                .map(|&a| self.value(a))
+                .collect::<Option<Vec<f64>>>();
             if let Some(x) = x {
                 let y = match i {
                     Instr::Add(..) => x[0] + x[1],

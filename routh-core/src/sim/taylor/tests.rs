@@ -72,9 +72,14 @@ fn exp_sin_cos_of_a_line() {
     // γ₀ = 0.3 + 2t.
     let x = [0.3, 2.0];
     let e = series(vec![Op::Gamma(0), Op::Func(Func::Exp, 0)], 1, &x, &[]);
-    assert_series(&e, |k| 0.3f64.exp() * 2f64.powi(k as i32) / factorial(k), "exp");
+    assert_series(
+        &e,
+        |k| 0.3f64.exp() * 2f64.powi(k as i32) / factorial(k),
+        "exp",
+    );
     let d = |k: usize, phase: f64| {
-        2f64.powi(k as i32) / factorial(k) * (0.3 + phase + k as f64 * std::f64::consts::FRAC_PI_2).sin()
+        2f64.powi(k as i32) / factorial(k)
+            * (0.3 + phase + k as f64 * std::f64::consts::FRAC_PI_2).sin()
     };
     let s = series(vec![Op::Gamma(0), Op::Func(Func::Sin, 0)], 1, &x, &[]);
     assert_series(&s, |k| d(k, 0.0), "sin");
@@ -109,12 +114,28 @@ fn binomial_series_of_powers_roots_and_reciprocals() {
     let pow = series(vec![g, Op::constant(2.5), Op::Powf(0, 1)], 2, &x, &[]);
     assert_series(&pow, |k| binomial(2.5, k), "x^2.5");
     let ln = series(vec![g, Op::Func(Func::Ln, 0)], 1, &x, &[]);
-    let want_ln = |k: usize| if k == 0 { 0.0 } else { -(-1f64).powi(k as i32) / k as f64 };
+    let want_ln = |k: usize| {
+        if k == 0 {
+            0.0
+        } else {
+            -(-1f64).powi(k as i32) / k as f64
+        }
+    };
     assert_series(&ln, want_ln, "ln");
     // (1 + t)(1 − t) = 1 − t².
-    let ops = vec![g, Op::constant(2.0), Op::Neg(0), Op::Add(1, 2), Op::Mul(0, 3)];
+    let ops = vec![
+        g,
+        Op::constant(2.0),
+        Op::Neg(0),
+        Op::Add(1, 2),
+        Op::Mul(0, 3),
+    ];
     let prod = series(ops, 4, &x, &[]);
-    assert_series(&prod, |k| [1.0, 0.0, -1.0].get(k).copied().unwrap_or(0.0), "(1+t)(1−t)");
+    assert_series(
+        &prod,
+        |k| [1.0, 0.0, -1.0].get(k).copied().unwrap_or(0.0),
+        "(1+t)(1−t)",
+    );
     // |−1 − t| = 1 + t, sign(−1 − t) = −1.
     let abs = series(vec![g, Op::Neg(0), Op::Func(Func::Abs, 1)], 2, &x, &[]);
     assert_series(&abs, |k| if k < 2 { 1.0 } else { 0.0 }, "abs");
@@ -128,14 +149,34 @@ fn powers_at_zero_tangent_and_variable_exponents() {
     let t3 = series(vec![Op::Gamma(0), Op::Powi(0, 3)], 1, &[0.0, 1.0], &[]);
     assert_series(&t3, |k| if k == 3 { 1.0 } else { 0.0 }, "t³");
     // tan t = t + t³/3 + 2t⁵/15 + 17t⁷/315 + 62t⁹/2835 + 1382t¹¹/155925.
-    let tan = series(vec![Op::Gamma(0), Op::Func(Func::Tan, 0)], 1, &[0.0, 1.0], &[]);
-    let want = [0.0, 1.0, 0.0, 1.0 / 3.0, 0.0, 2.0 / 15.0, 0.0, 17.0 / 315.0, 0.0]
-        .into_iter()
-        .chain([62.0 / 2835.0, 0.0, 1382.0 / 155925.0, 0.0]);
+    let tan = series(
+        vec![Op::Gamma(0), Op::Func(Func::Tan, 0)],
+        1,
+        &[0.0, 1.0],
+        &[],
+    );
+    let want = [
+        0.0,
+        1.0,
+        0.0,
+        1.0 / 3.0,
+        0.0,
+        2.0 / 15.0,
+        0.0,
+        17.0 / 315.0,
+        0.0,
+    ]
+    .into_iter()
+    .chain([62.0 / 2835.0, 0.0, 1382.0 / 155925.0, 0.0]);
     let want: Vec<f64> = want.collect();
     assert_series(&tan, |k| want[k], "tan");
     // (eᵗ)^y with y = γ₁ = 2 (an input, so exp(y ln x)): e^{2t}.
-    let ops = vec![Op::Gamma(0), Op::Func(Func::Exp, 0), Op::Gamma(1), Op::Powf(1, 2)];
+    let ops = vec![
+        Op::Gamma(0),
+        Op::Func(Func::Exp, 0),
+        Op::Gamma(1),
+        Op::Powf(1, 2),
+    ];
     let e2 = series(ops, 3, &[0.0, 1.0], &[2.0]);
     assert_series(&e2, |k| 2f64.powi(k as i32) / factorial(k), "(eᵗ)^y");
 }
@@ -198,9 +239,15 @@ fn correction_by_the_tangent_is_the_true_coefficient() {
     };
     let (a, b) = (run(false), run(true));
     for k in 0..=4 {
-        assert!((a[k] - b[k]).abs() <= 1e-14 * (1.0 + a[k].abs()), "{k}: {a:?} {b:?}");
+        assert!(
+            (a[k] - b[k]).abs() <= 1e-14 * (1.0 + a[k].abs()),
+            "{k}: {a:?} {b:?}"
+        );
     }
-    assert!(a[4].abs() > 1e-3, "the test reads a non-trivial coefficient: {a:?}");
+    assert!(
+        a[4].abs() > 1e-3,
+        "the test reads a non-trivial coefficient: {a:?}"
+    );
 }
 
 /// A small tape builder: pushes an op, returns its slot.
@@ -299,8 +346,14 @@ fn expansion_of_the_flow_matches_its_field() {
         for k in 0..3 {
             let mut e = Vector3::zeros();
             e[k] = h;
-            j.set_column(k, &((terms(&(w + e), g).0 - terms(&(w - e), g).0) / (2.0 * h)));
-            n.set_column(k, &((terms(w, &(g + e)).0 - terms(w, &(g - e)).0) / (2.0 * h)));
+            j.set_column(
+                k,
+                &((terms(&(w + e), g).0 - terms(&(w - e), g).0) / (2.0 * h)),
+            );
+            n.set_column(
+                k,
+                &((terms(w, &(g + e)).0 - terms(w, &(g - e)).0) / (2.0 * h)),
+            );
         }
         let (m, l) = terms(w, g);
         let gd = g.cross(w);
