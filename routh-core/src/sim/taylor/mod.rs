@@ -76,6 +76,32 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
+/// `Σ_{i=0}^{k} a_i b_{k−i}`.
+#[inline(always)]
+fn dot_rev(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b.iter().rev()).map(|(x, y)| x * y).sum()
+}
+
+/// The coefficient `k` of `a × b`, `a` and `b` series of 3-vectors (slots).
+#[inline(always)]
+fn cross_k(prog: &Program, a: [u32; 3], b: [u32; 3], k: usize) -> [f64; 3] {
+    let a = [
+        prog.series(a[0], k),
+        prog.series(a[1], k),
+        prog.series(a[2], k),
+    ];
+    let b = [
+        prog.series(b[0], k),
+        prog.series(b[1], k),
+        prog.series(b[2], k),
+    ];
+    [
+        dot_rev(a[1], b[2]) - dot_rev(a[2], b[1]),
+        dot_rev(a[2], b[0]) - dot_rev(a[0], b[2]),
+        dot_rev(a[0], b[1]) - dot_rev(a[1], b[0]),
+    ]
+}
+
 impl Expansion {
     pub(crate) fn new(tape: &FlowTape, max_order: usize) -> Self {
         Expansion {
@@ -132,23 +158,16 @@ impl Expansion {
             self.q[0] = q;
         }
         for k in 0..p {
-            let (mut gd, mut md) = ([0.0; 3], [0.0; 3]);
-            for i in 0..=k {
-                let w = self.vec3(OMEGA, k - i);
-                let a = cross(self.vec3(GAMMA, i), w);
-                let b = cross(self.vec3(m, i), w);
-                for r in 0..3 {
-                    gd[r] += a[r];
-                    md[r] += b[r];
-                }
-            }
-            // (∂L/∂γ) × γ: a constant ∂L/∂γ (a potential linear in γ) has one term.
-            let last = if self.prog.lg_varies { k } else { 0 };
-            for i in 0..=last {
-                let c = cross(self.vec3(lg, i), self.vec3(GAMMA, k - i));
-                for r in 0..3 {
-                    md[r] += c[r];
-                }
+            // The order-k coefficients of γ × ω, m × ω and (∂L/∂γ) × γ (Cauchy products).
+            let prog = &self.prog;
+            let (gd, mut md) = (cross_k(prog, GAMMA, OMEGA, k), cross_k(prog, m, OMEGA, k));
+            if prog.lg_varies {
+                let c = cross_k(prog, lg, GAMMA, k);
+                md = [md[0] + c[0], md[1] + c[1], md[2] + c[2]];
+            } else {
+                // A constant ∂L/∂γ (a potential linear in γ): one term.
+                let c = cross(self.vec3(lg, 0), self.vec3(GAMMA, k));
+                md = [md[0] + c[0], md[1] + c[1], md[2] + c[2]];
             }
             if q.is_some() {
                 let mut s = Quaternion::new(0.0, 0.0, 0.0, 0.0);

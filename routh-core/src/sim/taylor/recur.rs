@@ -310,7 +310,6 @@ impl Program {
     }
 
     /// The coefficients `0..=p` of slot `s`.
-    #[cfg(test)]
     pub(crate) fn series(&self, s: u32, p: usize) -> &[f64] {
         let at = s as usize * self.stride;
         &self.c[at..=at + p]
