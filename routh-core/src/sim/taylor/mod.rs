@@ -102,6 +102,27 @@ fn cross_k(prog: &Program, a: [u32; 3], b: [u32; 3], k: usize) -> [f64; 3] {
     ]
 }
 
+/// The coefficients `k` of `γ × ω` and `m × ω` in one pass over the coefficients of ω.
+#[inline(always)]
+fn crosses_with_omega(prog: &Program, m: [u32; 3], k: usize) -> ([f64; 3], [f64; 3]) {
+    let s = |slot: u32| prog.series(slot, k);
+    let (w0, w1, w2) = (s(OMEGA[0]), s(OMEGA[1]), s(OMEGA[2]));
+    let (g0, g1, g2) = (s(GAMMA[0]), s(GAMMA[1]), s(GAMMA[2]));
+    let (m0, m1, m2) = (s(m[0]), s(m[1]), s(m[2]));
+    let (mut a, mut b) = ([0.0; 3], [0.0; 3]);
+    for i in 0..=k {
+        let j = k - i;
+        let (x0, x1, x2) = (w0[j], w1[j], w2[j]);
+        a[0] += g1[i] * x2 - g2[i] * x1;
+        a[1] += g2[i] * x0 - g0[i] * x2;
+        a[2] += g0[i] * x1 - g1[i] * x0;
+        b[0] += m1[i] * x2 - m2[i] * x1;
+        b[1] += m2[i] * x0 - m0[i] * x2;
+        b[2] += m0[i] * x1 - m1[i] * x0;
+    }
+    (a, b)
+}
+
 impl Expansion {
     pub(crate) fn new(tape: &FlowTape, max_order: usize) -> Self {
         Expansion {
@@ -147,20 +168,25 @@ impl Expansion {
         let m = prog.m;
         let lg = prog.lg;
         let j = Matrix3::from_fn(|r, c| prog.tangent(m[r])[c]);
-        let chol = j.cholesky().ok_or_else(|| {
-            let g = Vector3::from(gamma);
-            RouthError::KineticNotPositiveDefinite {
-                gamma: gamma_array(&g),
-                min_eigenvalue: min_eigenvalue(&j),
-            }
-        })?;
+        // J⁻¹ once a step (by its Cholesky factor): each order then solves by a product, with
+        // no division on the chain of dependent orders.
+        let j_inv = j
+            .cholesky()
+            .ok_or_else(|| {
+                let g = Vector3::from(gamma);
+                RouthError::KineticNotPositiveDefinite {
+                    gamma: gamma_array(&g),
+                    min_eigenvalue: min_eigenvalue(&j),
+                }
+            })?
+            .inverse();
         if let Some(q) = q {
             self.q[0] = q;
         }
         for k in 0..p {
             // The order-k coefficients of γ × ω, m × ω and (∂L/∂γ) × γ (Cauchy products).
             let prog = &self.prog;
-            let (gd, mut md) = (cross_k(prog, GAMMA, OMEGA, k), cross_k(prog, m, OMEGA, k));
+            let (gd, mut md) = crosses_with_omega(prog, m, k);
             if prog.lg_varies {
                 let c = cross_k(prog, lg, GAMMA, k);
                 md = [md[0] + c[0], md[1] + c[1], md[2] + c[2]];
@@ -184,7 +210,7 @@ impl Expansion {
             }
             prog.order(k + 1);
             let rhs = Vector3::from_fn(|r, _| md[r] * inv - prog.coef(m[r], k + 1));
-            let w = chol.solve(&rhs);
+            let w = j_inv * rhs;
             prog.correct(k + 1, [w.x, w.y, w.z]);
         }
         Ok(())
@@ -275,9 +301,9 @@ where
         }
         // The tolerance of each block at the step's start, and the order.
         let norms0 = [w.amax(), g.amax(), q.map_or(0.0, |q| q.coords.amax())];
-        let tols: Vec<(f64, f64)> = (0..blocks)
-            .map(|b| block_tolerance(norms0[b], rtol, atols[b]))
-            .collect();
+        let tols: [(f64, f64); 3] =
+            std::array::from_fn(|b| block_tolerance(norms0[b], rtol, atols[b]));
+        let tols = &tols[..blocks];
         let eps = tols.iter().map(|t| t.0).fold(f64::INFINITY, f64::min);
         let p = order_for(eps).min(max_order);
         ex.expand(w.into(), g.into(), q, p)?;
