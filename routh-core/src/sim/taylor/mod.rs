@@ -66,6 +66,8 @@ pub(crate) struct Expansion {
     q: Vec<Quaternion<f64>>,
     /// The order of the last expansion.
     order: usize,
+    /// The last `J` and its inverse.
+    j_inv: Option<(Matrix3<f64>, Matrix3<f64>)>,
 }
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
@@ -129,6 +131,7 @@ impl Expansion {
             prog: Program::new(tape, max_order),
             q: vec![Quaternion::identity(); max_order + 1],
             order: 0,
+            j_inv: None,
         }
     }
 
@@ -168,18 +171,26 @@ impl Expansion {
         let m = prog.m;
         let lg = prog.lg;
         let j = Matrix3::from_fn(|r, c| prog.tangent(m[r])[c]);
-        // J⁻¹ once a step (by its Cholesky factor): each order then solves by a product, with
-        // no division on the chain of dependent orders.
-        let j_inv = j
-            .cholesky()
-            .ok_or_else(|| {
-                let g = Vector3::from(gamma);
-                RouthError::KineticNotPositiveDefinite {
-                    gamma: gamma_array(&g),
-                    min_eigenvalue: min_eigenvalue(&j),
-                }
-            })?
-            .inverse();
+        // J⁻¹ once a step (by its Cholesky factor; kept while J is bitwise the same, as for a
+        // body whose J does not depend on γ): each order then solves by a product, with no
+        // division on the chain of dependent orders.
+        let j_inv = match self.j_inv {
+            Some((key, inv)) if key == j => inv,
+            _ => {
+                let inv = j
+                    .cholesky()
+                    .ok_or_else(|| {
+                        let g = Vector3::from(gamma);
+                        RouthError::KineticNotPositiveDefinite {
+                            gamma: gamma_array(&g),
+                            min_eigenvalue: min_eigenvalue(&j),
+                        }
+                    })?
+                    .inverse();
+                self.j_inv = Some((j, inv));
+                inv
+            }
+        };
         if let Some(q) = q {
             self.q[0] = q;
         }
@@ -308,13 +319,15 @@ where
         let p = order_for(eps).min(max_order);
         ex.expand(w.into(), g.into(), q, p)?;
         stats.rhs_evaluations += 1;
+        // ρ = min over the blocks and k ∈ {p − 1, p} of (scale/‖x_k‖)^{1/k}: the largest
+        // ‖x_k‖/scale over the blocks for each k, then one root each.
         let mut rho = f64::INFINITY;
-        for (b, &(_, scale)) in tols.iter().enumerate() {
-            for k in [p - 1, p] {
-                let n = ex.block_norm(b, k);
-                if n > 0.0 {
-                    rho = rho.min((scale / n).powf(1.0 / k as f64));
-                }
+        for k in [p - 1, p] {
+            let r = (tols.iter().enumerate())
+                .map(|(b, &(_, scale))| ex.block_norm(b, k) / scale)
+                .fold(0.0, f64::max);
+            if r > 0.0 {
+                rho = rho.min(r.powf(-1.0 / k as f64));
             }
         }
         let safety = (-2.0 - 0.7 / (p - 1) as f64).exp();
