@@ -354,7 +354,7 @@ where
         }
         let (w1, g1, q1) = ex.eval(h);
         let finite = w1.iter().chain(&g1).all(|x| x.is_finite())
-            && q.map_or(true, |_| q1.coords.iter().all(|x| x.is_finite()));
+            && q.is_none_or(|_| q1.coords.iter().all(|x| x.is_finite()));
         if !finite {
             return Err(RouthError::NonFiniteState { t });
         }

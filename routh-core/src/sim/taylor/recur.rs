@@ -252,7 +252,7 @@ impl Program {
                     Some(r) if r == r.trunc() && r.abs() <= f64::from(MAX_CHAIN) => {
                         b.powi(s(x), r as i32)
                     }
-                    Some(r) if r == 0.5 => b.op(Instr::Sqrt(s(x)), &[s(x)]),
+                    Some(0.5) => b.op(Instr::Sqrt(s(x)), &[s(x)]),
                     Some(r) => b.op(Instr::Pow(s(x), r), &[s(x)]),
                     None => {
                         // xʸ = exp(y ln x).
