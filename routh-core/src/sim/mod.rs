@@ -10,7 +10,7 @@
 //! with error control and a dense output of order 7 (the default), and RKMK4, a fixed-step
 //! Lie-group Runge–Kutta method of order 4 that moves γ by exact rotations and so keeps
 //! `|γ| = 1` to round-off over arbitrarily long runs. A third, Taylor's method of adaptive order
-//! (module `taylor`), integrates (8) for models with a flow tape. (The crate `ode_solvers` was considered:
+//! (module `taylor`), integrates (8) for models with a flow tape (and (13) through (8)). (The crate `ode_solvers` was considered:
 //! it depends on another major version of nalgebra and has no fallible right-hand side, so a
 //! compact DOP853 is implemented here instead, following Hairer's `dop853.f`.)
 //!

@@ -29,9 +29,10 @@ pub enum Method {
     /// expansion (the recurrences to order p) a step. Faster than DOP853 for errors below about
     /// 2e-10 at t = 1000 on a heavy top, slower above (docs/performance.md).
     ///
-    /// For [`simulate_full`](super::simulate_full) of a model with a flow tape
-    /// (`#[derive(Lagrangian)]`, `routh::Model`); a hand-written model, and
-    /// [`simulate_reduced`](super::simulate_reduced), give [`RouthError::InvalidOption`](crate::RouthError::InvalidOption).
+    /// For models with a flow tape (`#[derive(Lagrangian)]`, `routh::Model`); a hand-written
+    /// model gives [`RouthError::InvalidOption`](crate::RouthError::InvalidOption).
+    /// [`simulate_reduced`](super::simulate_reduced) integrates the body's motion (8) this way
+    /// and reads Ω and ψ from it in the gauge of (13).
     Taylor,
 }
 

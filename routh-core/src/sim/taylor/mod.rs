@@ -64,6 +64,9 @@ pub(crate) struct Expansion {
     prog: Program,
     /// Coefficients of the attitude quaternion (when integrated).
     q: Vec<Quaternion<f64>>,
+    /// Coefficients of ψ (for the reduced equations) and of ψ̇ = (ω·γ − s)/|γ|².
+    psi: Vec<f64>,
+    psi_dot: Vec<f64>,
     /// The order of the last expansion.
     order: usize,
     /// The last `J` and its inverse.
@@ -130,6 +133,8 @@ impl Expansion {
         Expansion {
             prog: Program::new(tape, max_order),
             q: vec![Quaternion::identity(); max_order + 1],
+            psi: vec![0.0; max_order + 1],
+            psi_dot: vec![0.0; max_order + 1],
             order: 0,
             j_inv: None,
         }
@@ -227,6 +232,36 @@ impl Expansion {
         Ok(())
     }
 
+    /// The series of the rotation angle ψ of the frame rotating about the vertical, after
+    /// [`Expansion::expand`]: in the gauge `Ω·γ = s` of the reduced equations (13) (errata E4),
+    /// `ω = Ω + ψ̇γ` (7) gives `ψ̇ = (ω·γ − s)/|γ|²`, a quotient of series; `ψ_{k+1} = ψ̇_k/(k + 1)`.
+    pub(crate) fn expand_psi(&mut self, psi0: f64, s: f64) {
+        let p = self.order;
+        let prog = &self.prog;
+        let dot = |a: [u32; 3], b: [u32; 3], k: usize| {
+            (0..3)
+                .map(|r| dot_rev(prog.series(a[r], k), prog.series(b[r], k)))
+                .sum::<f64>()
+        };
+        let n0 = dot(GAMMA, GAMMA, 0);
+        self.psi[0] = psi0;
+        for k in 0..p {
+            let mut x = dot(OMEGA, GAMMA, k) - if k == 0 { s } else { 0.0 };
+            for j in 0..k {
+                x -= self.psi_dot[j] * dot(GAMMA, GAMMA, k - j);
+            }
+            self.psi_dot[k] = x / n0;
+            self.psi[k + 1] = self.psi_dot[k] / (k + 1) as f64;
+        }
+    }
+
+    /// ψ at `τ` from the expansion's point.
+    pub(crate) fn eval_psi(&self, tau: f64) -> f64 {
+        (0..=self.order)
+            .rev()
+            .fold(0.0, |acc, k| acc * tau + self.psi[k])
+    }
+
     /// The largest absolute value of the block's coefficient `k`.
     fn block_norm(&self, block: usize, k: usize) -> f64 {
         let v = match block {
@@ -266,19 +301,23 @@ fn block_tolerance(norm0: f64, rtol: f64, atol: f64) -> (f64, f64) {
 }
 
 /// Integrates (8) from `(ω₀, γ₀)` (and the attitude `q₀`) at `t = 0` to `t_end` by Taylor's
-/// method, calling `record(t, ω, γ, q)` at `t = 0` and the end of every step
-/// ([`Output::Steps`]) or at the output times. `q` is `None` unless `q0` is given.
+/// method, calling `record(t, ω, γ, q, ψ)` at `t = 0` and the end of every step
+/// ([`Output::Steps`]) or at the output times. `q` is `None` unless `q0` is given; `ψ` is `None`
+/// unless `gauge` is: then it is the angle of the frame rotating about the vertical, from
+/// `ψ(0) = 0`, in the gauge `Ω·γ = gauge` ([`Expansion::expand_psi`]; it is a quadrature along
+/// the solution and takes no part in the choice of the step).
 pub(crate) fn integrate<R>(
     tape: &FlowTape,
     omega0: Vector3<f64>,
     gamma0: Vector3<f64>,
     q0: Option<Quaternion<f64>>,
+    gauge: Option<f64>,
     t_end: f64,
     opts: &SimOptions,
     mut record: R,
 ) -> Result<SimStats, RouthError>
 where
-    R: FnMut(f64, Vector3<f64>, Vector3<f64>, Option<Quaternion<f64>>),
+    R: FnMut(f64, Vector3<f64>, Vector3<f64>, Option<Quaternion<f64>>, Option<f64>),
 {
     let rtol = opts.rtol;
     let atols = [opts.rate_atol.unwrap_or(opts.atol), opts.atol, opts.atol];
@@ -291,12 +330,12 @@ where
         Output::Times(ts) => Some(ts),
     };
     let mut next = 0;
-    let (mut w, mut g, mut q) = (omega0, gamma0, q0);
+    let (mut w, mut g, mut q, mut psi) = (omega0, gamma0, q0, gauge.map(|_| 0.0));
     match times {
-        None => record(0.0, w, g, q),
+        None => record(0.0, w, g, q, psi),
         Some(ts) => {
             while next < ts.len() && ts[next] <= 0.0 {
-                record(ts[next], w, g, q);
+                record(ts[next], w, g, q, psi);
                 next += 1;
             }
         }
@@ -318,6 +357,9 @@ where
         let eps = tols.iter().map(|t| t.0).fold(f64::INFINITY, f64::min);
         let p = order_for(eps).min(max_order);
         ex.expand(w.into(), g.into(), q, p)?;
+        if let (Some(s), Some(psi0)) = (gauge, psi) {
+            ex.expand_psi(psi0, s);
+        }
         stats.rhs_evaluations += 1;
         // ρ = min over the blocks and k ∈ {p − 1, p} of (scale/‖x_k‖)^{1/k}: the largest
         // ‖x_k‖/scale over the blocks for each k, then one root each.
@@ -348,7 +390,9 @@ where
         if let Some(ts) = times {
             while next < ts.len() && ts[next] <= t1 {
                 let (wn, gn, qn) = ex.eval(ts[next] - t);
-                record(ts[next], wn.into(), gn.into(), q.map(|_| qn));
+                let tau = ts[next] - t;
+                let psi_n = psi.map(|_| ex.eval_psi(tau));
+                record(ts[next], wn.into(), gn.into(), q.map(|_| qn), psi_n);
                 next += 1;
             }
         }
@@ -363,10 +407,17 @@ where
         if q.is_some() {
             q = Some(q1);
         }
+        if psi.is_some() {
+            let psi1 = ex.eval_psi(h);
+            if !psi1.is_finite() {
+                return Err(RouthError::NonFiniteState { t });
+            }
+            psi = Some(psi1);
+        }
         t = t1;
         stats.accepted_steps += 1;
         if times.is_none() {
-            record(t, w, g, q);
+            record(t, w, g, q, psi);
         }
     }
     Ok(stats)
