@@ -120,19 +120,16 @@ pub fn simulate_full<M: Lagrangian>(
                 )
             })?;
             let q0 = q0.map(|q| q.into_inner());
-            taylor::integrate(
-                &tape,
+            let start = taylor::Start {
                 omega0,
                 gamma0,
                 q0,
-                None,
-                t_end,
-                opts,
-                |t, w, g, q, _| {
-                    let q = q.map(|q| attitude::aligned(&q, &g));
-                    push(t, w, g, q)
-                },
-            )?
+                gauge: None,
+            };
+            taylor::integrate(&tape, start, t_end, opts, |t, w, g, q, _| {
+                let q = q.map(|q| attitude::aligned(&q, &g));
+                push(t, w, g, q)
+            })?
         }
         (Some(q0), Method::Dop853) => {
             let mut y0q = SVector::<f64, 10>::zeros();

@@ -159,27 +159,23 @@ pub fn simulate_reduced<M: Routhian>(
             let s = big_omega0.dot(&gamma0);
             let omega0 = big_omega0 + gamma0 * model.psi_dot(&big_omega0, &gamma0, p_psi);
             let q0 = q0.map(|q| q.into_inner());
-            let gauge = Some(s);
-            taylor::integrate(
-                &tape,
+            let start = taylor::Start {
                 omega0,
                 gamma0,
                 q0,
-                gauge,
-                t_end,
-                opts,
-                |t, w, g, q, psi| {
-                    let psi = psi.unwrap_or(0.0);
-                    let mut y = SVector::<f64, 7>::zeros();
-                    let big = w - g * ((w.dot(&g) - s) / g.norm_squared());
-                    y.fixed_rows_mut::<3>(0).copy_from(&big);
-                    y.fixed_rows_mut::<3>(3).copy_from(&g);
-                    y[6] = psi;
-                    // The body's attitude R = R_z(ψ) R_Ω (15): `record` takes R_Ω.
-                    let q = q.map(|q| attitude::about_vertical(-psi) * attitude::aligned(&q, &g));
-                    record(t, &y, q)
-                },
-            )?
+                gauge: Some(s),
+            };
+            taylor::integrate(&tape, start, t_end, opts, |t, w, g, q, psi| {
+                let psi = psi.unwrap_or(0.0);
+                let mut y = SVector::<f64, 7>::zeros();
+                let big = w - g * ((w.dot(&g) - s) / g.norm_squared());
+                y.fixed_rows_mut::<3>(0).copy_from(&big);
+                y.fixed_rows_mut::<3>(3).copy_from(&g);
+                y[6] = psi;
+                // The body's attitude R = R_z(ψ) R_Ω (15): `record` takes R_Ω.
+                let q = q.map(|q| attitude::about_vertical(-psi) * attitude::aligned(&q, &g));
+                record(t, &y, q)
+            })?
         }
         (Some(q0), Method::Dop853) => {
             let mut y0q = SVector::<f64, 11>::zeros();

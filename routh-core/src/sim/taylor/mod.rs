@@ -300,6 +300,15 @@ fn block_tolerance(norm0: f64, rtol: f64, atol: f64) -> (f64, f64) {
     }
 }
 
+/// The start of [`integrate`]: `ω₀`, `γ₀`, the attitude `q₀` (when integrated) and the gauge
+/// `s = Ω₀·γ₀` of the reduced equations (when ψ is wanted).
+pub(crate) struct Start {
+    pub(crate) omega0: Vector3<f64>,
+    pub(crate) gamma0: Vector3<f64>,
+    pub(crate) q0: Option<Quaternion<f64>>,
+    pub(crate) gauge: Option<f64>,
+}
+
 /// Integrates (8) from `(ω₀, γ₀)` (and the attitude `q₀`) at `t = 0` to `t_end` by Taylor's
 /// method, calling `record(t, ω, γ, q, ψ)` at `t = 0` and the end of every step
 /// ([`Output::Steps`]) or at the output times. `q` is `None` unless `q0` is given; `ψ` is `None`
@@ -308,10 +317,7 @@ fn block_tolerance(norm0: f64, rtol: f64, atol: f64) -> (f64, f64) {
 /// the solution and takes no part in the choice of the step).
 pub(crate) fn integrate<R>(
     tape: &FlowTape,
-    omega0: Vector3<f64>,
-    gamma0: Vector3<f64>,
-    q0: Option<Quaternion<f64>>,
-    gauge: Option<f64>,
+    start: Start,
     t_end: f64,
     opts: &SimOptions,
     mut record: R,
@@ -323,13 +329,19 @@ where
     let atols = [opts.rate_atol.unwrap_or(opts.atol), opts.atol, opts.atol];
     let max_order = order_for(rtol.min(opts.atol).min(atols[0]));
     let mut ex = Expansion::new(tape, max_order);
-    let blocks = if q0.is_some() { 3 } else { 2 };
+    let blocks = if start.q0.is_some() { 3 } else { 2 };
     let h_max = opts.h_max.unwrap_or(f64::INFINITY);
     let times: Option<&[f64]> = match &opts.output {
         Output::Steps => None,
         Output::Times(ts) => Some(ts),
     };
     let mut next = 0;
+    let Start {
+        omega0,
+        gamma0,
+        q0,
+        gauge,
+    } = start;
     let (mut w, mut g, mut q, mut psi) = (omega0, gamma0, q0, gauge.map(|_| 0.0));
     match times {
         None => record(0.0, w, g, q, psi),
