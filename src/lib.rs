@@ -103,7 +103,7 @@ pub mod __private {
     pub type MaybeTape = core::option::Option<CertificationTape>;
     /// What `Routhian::routh_tape` returns.
     pub type MaybeRouthianTape = core::option::Option<RouthianTape>;
-    /// What `Routhian::flow_tape` returns.
+    /// What `Lagrangian::flow_tape` returns.
     pub type MaybeFlowTape = core::option::Option<FlowTape>;
 
     /// `sign(x)` with `sign(0) = 0`: the derivative of `abs` (the one definition, in

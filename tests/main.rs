@@ -27,6 +27,7 @@ mod routh_tape;
 mod runtime_model;
 mod runtime_properties;
 mod serde_roundtrip;
+mod taylor;
 mod ui;
 
 /// Every `tests/*.rs` file of every crate whose integration tests are one binary (a

@@ -268,6 +268,130 @@ const _: () = {
                 ],
             }
         }
+        #[inline]
+        fn flow_tape(&self) -> __MaybeFlowTape {
+            static __FLOW_OPS: [__Op; 23] = [
+                __Op::Omega(0),
+                __Op::Omega(1),
+                __Op::Omega(2),
+                __Op::Gamma(2),
+                __Op::Param(0),
+                __Op::Param(1),
+                __Op::Param(2),
+                __Op::Const(0x3fe0000000000000),
+                __Op::Powi(0, 2),
+                __Op::Powi(1, 2),
+                __Op::Add(8, 9),
+                __Op::Mul(4, 10),
+                __Op::Mul(2, 5),
+                __Op::Mul(2, 12),
+                __Op::Add(11, 13),
+                __Op::Mul(7, 14),
+                __Op::Mul(3, 6),
+                __Op::Const(0x0),
+                __Op::Neg(16),
+                __Op::Add(15, 18),
+                __Op::Mul(0, 4),
+                __Op::Mul(1, 4),
+                __Op::Neg(6),
+            ];
+            static __FLOW_OUT: [__Output; 22] = [
+                __Output {
+                    name: "lagrangian",
+                    slot: 19,
+                },
+                __Output {
+                    name: "dl_domega[0]",
+                    slot: 20,
+                },
+                __Output {
+                    name: "dl_domega[1]",
+                    slot: 21,
+                },
+                __Output {
+                    name: "dl_domega[2]",
+                    slot: 12,
+                },
+                __Output {
+                    name: "dl_dgamma[0]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "dl_dgamma[1]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "dl_dgamma[2]",
+                    slot: 22,
+                },
+                __Output {
+                    name: "d2l_domega2[0][0]",
+                    slot: 4,
+                },
+                __Output {
+                    name: "d2l_domega2[0][1]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega2[0][2]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega2[1][1]",
+                    slot: 4,
+                },
+                __Output {
+                    name: "d2l_domega2[1][2]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega2[2][2]",
+                    slot: 5,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[0][0]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[0][1]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[0][2]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[1][0]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[1][1]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[1][2]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[2][0]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[2][1]",
+                    slot: 17,
+                },
+                __Output {
+                    name: "d2l_domega_dgamma[2][2]",
+                    slot: 17,
+                },
+            ];
+            static __FLOW: __Tape = __Tape::from_static(&__FLOW_OPS, &__FLOW_OUT, 3);
+            __FlowTape::new(
+                    __Tape::clone(&__FLOW),
+                    <[__F64]>::to_vec(&[self.a1, self.c, self.mgl]),
+                )
+                .ok()
+        }
     }
     #[automatically_derived]
     impl ::routh::__private::Routhian for LagrangeTop {
@@ -1604,130 +1728,6 @@ const _: () = {
             );
             __RouthianTape::new(
                     __Tape::clone(&__ROUTHIAN),
-                    <[__F64]>::to_vec(&[self.a1, self.c, self.mgl]),
-                )
-                .ok()
-        }
-        #[inline]
-        fn flow_tape(&self) -> __MaybeFlowTape {
-            static __FLOW_OPS: [__Op; 23] = [
-                __Op::Omega(0),
-                __Op::Omega(1),
-                __Op::Omega(2),
-                __Op::Gamma(2),
-                __Op::Param(0),
-                __Op::Param(1),
-                __Op::Param(2),
-                __Op::Const(0x3fe0000000000000),
-                __Op::Powi(0, 2),
-                __Op::Powi(1, 2),
-                __Op::Add(8, 9),
-                __Op::Mul(4, 10),
-                __Op::Mul(2, 5),
-                __Op::Mul(2, 12),
-                __Op::Add(11, 13),
-                __Op::Mul(7, 14),
-                __Op::Mul(3, 6),
-                __Op::Const(0x0),
-                __Op::Neg(16),
-                __Op::Add(15, 18),
-                __Op::Mul(0, 4),
-                __Op::Mul(1, 4),
-                __Op::Neg(6),
-            ];
-            static __FLOW_OUT: [__Output; 22] = [
-                __Output {
-                    name: "lagrangian",
-                    slot: 19,
-                },
-                __Output {
-                    name: "dl_domega[0]",
-                    slot: 20,
-                },
-                __Output {
-                    name: "dl_domega[1]",
-                    slot: 21,
-                },
-                __Output {
-                    name: "dl_domega[2]",
-                    slot: 12,
-                },
-                __Output {
-                    name: "dl_dgamma[0]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "dl_dgamma[1]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "dl_dgamma[2]",
-                    slot: 22,
-                },
-                __Output {
-                    name: "d2l_domega2[0][0]",
-                    slot: 4,
-                },
-                __Output {
-                    name: "d2l_domega2[0][1]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega2[0][2]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega2[1][1]",
-                    slot: 4,
-                },
-                __Output {
-                    name: "d2l_domega2[1][2]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega2[2][2]",
-                    slot: 5,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[0][0]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[0][1]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[0][2]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[1][0]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[1][1]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[1][2]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[2][0]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[2][1]",
-                    slot: 17,
-                },
-                __Output {
-                    name: "d2l_domega_dgamma[2][2]",
-                    slot: 17,
-                },
-            ];
-            static __FLOW: __Tape = __Tape::from_static(&__FLOW_OPS, &__FLOW_OUT, 3);
-            __FlowTape::new(
-                    __Tape::clone(&__FLOW),
                     <[__F64]>::to_vec(&[self.a1, self.c, self.mgl]),
                 )
                 .ok()

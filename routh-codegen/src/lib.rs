@@ -155,9 +155,10 @@ pub fn expand_with(
         })
     };
     let split = model.rank_one.as_ref();
-    let lag_text = e.lagrangian_methods(&model.outputs, &model.equations, split);
+    let mut lag_text = e.lagrangian_methods(&model.outputs, &model.equations, split);
     let mut routh_text = e.routhian_methods(&model.outputs, &model.equations, split);
-    methods::tapes(&mut routh_text, &model.lowered.sym, &model.outputs).map_err(|e| {
+    let (sym, o) = (&model.lowered.sym, &model.outputs);
+    methods::tapes(&mut routh_text, &mut lag_text, sym, o).map_err(|e| {
         syn::Error::new_spanned(
             &di.ident,
             format!("internal error in #[derive(Lagrangian)]: invalid tape ({e})"),

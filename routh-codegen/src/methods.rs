@@ -274,10 +274,16 @@ const TAPE_PATHS: routh_tape::RustPaths<'static> = routh_tape::RustPaths {
 };
 
 /// Writes `fn certification_tape` (the interval tape of `∂R/∂γ`, `∂²R/∂γ²` at `Ω = 0`) and
-/// `fn routh_tape` (the tape of `R(Ω, γ, p_ψ)`) and `fn flow_tape` (`L` and the derivatives of
-/// (8), [`crate::tape::flow`]), each as `static` typed ops
-/// ([`crate::tape`]) bound to the parameter values read from `self`.
-pub fn tapes(out: &mut String, sym: &Symbols, o: &Outputs) -> Result<(), routh_tape::TapeError> {
+/// `fn routh_tape` (the tape of `R(Ω, γ, p_ψ)`) to `out` (the `Routhian` impl), and
+/// `fn flow_tape` (`L` and the derivatives of (8), [`crate::tape::flow`]) to `lag` (the
+/// `Lagrangian` impl), each as `static` typed ops ([`crate::tape`]) bound to the parameter
+/// values read from `self`.
+pub fn tapes(
+    out: &mut String,
+    lag: &mut String,
+    sym: &Symbols,
+    o: &Outputs,
+) -> Result<(), routh_tape::TapeError> {
     let params = crate::tape::param_reads(sym).join(", ");
     let cert = crate::tape::certification(sym, o)?;
     out.push_str("#[inline]\nfn certification_tape(&self) -> __MaybeTape {\n");
@@ -294,10 +300,10 @@ pub fn tapes(out: &mut String, sym: &Symbols, o: &Outputs) -> Result<(), routh_t
         "__RouthianTape::new(__Tape::clone(&__ROUTHIAN), <[__F64]>::to_vec(&[{params}])).ok()\n}}"
     );
     let f = crate::tape::flow(sym, o)?;
-    out.push_str("#[inline]\nfn flow_tape(&self) -> __MaybeFlowTape {\n");
-    f.write_rust(out, "__FLOW", &TAPE_PATHS);
+    lag.push_str("#[inline]\nfn flow_tape(&self) -> __MaybeFlowTape {\n");
+    f.write_rust(lag, "__FLOW", &TAPE_PATHS);
     let _ = writeln!(
-        out,
+        lag,
         "__FlowTape::new(__Tape::clone(&__FLOW), <[__F64]>::to_vec(&[{params}])).ok()\n}}"
     );
     Ok(())

@@ -104,6 +104,17 @@ pub trait Lagrangian {
         }
         jac
     }
+    /// `L(ω, γ)` with `∂L/∂ω`, `∂L/∂γ`, `J = ∂²L/∂ω²` and `∂²L/∂ω∂γ` as one tape with the
+    /// model's parameter values bound ([`routh_tape::FLOW_OUTPUTS`]): the full equations (8)
+    /// evaluated at Taylor jets, for the jets of the flow that
+    /// [`orbit_nonlinear_stability`](crate::orbit_nonlinear_stability) takes and for the Taylor
+    /// integrator ([`Method::Taylor`](crate::Method::Taylor)) of [`simulate_full`](crate::simulate_full). Its `f64` values
+    /// are the generated methods' up to rounding (the same expression DAG).
+    /// `#[derive(Lagrangian)]` and `routh::Model` provide it; a hand-written model has none
+    /// (`None`, the default).
+    fn flow_tape(&self) -> Option<routh_tape::FlowTape> {
+        None
+    }
 }
 
 /// The full equations (8) at one state and their first derivatives, for the variational
@@ -422,16 +433,6 @@ pub trait Routhian: Lagrangian {
     /// `#[derive(Lagrangian)]` and `routh::Model` provide it; a hand-written model has none
     /// (`None`, the default).
     fn routh_tape(&self) -> Option<routh_tape::RouthianTape> {
-        None
-    }
-    /// `L(ω, γ)` with `∂L/∂ω`, `∂L/∂γ`, `J = ∂²L/∂ω²` and `∂²L/∂ω∂γ` as one tape with the
-    /// model's parameter values bound ([`routh_tape::FLOW_OUTPUTS`]): the full equations (8)
-    /// evaluated at Taylor jets, for the jets of the flow that
-    /// [`orbit_nonlinear_stability`](crate::orbit_nonlinear_stability) takes. Its `f64` values
-    /// are the generated methods' up to rounding (the same expression DAG).
-    /// `#[derive(Lagrangian)]` and `routh::Model` provide it; a hand-written model has none
-    /// (`None`, the default).
-    fn flow_tape(&self) -> Option<routh_tape::FlowTape> {
         None
     }
 }

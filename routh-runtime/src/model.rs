@@ -616,6 +616,9 @@ impl Lagrangian for Model {
             dinertia_dgamma: t.dinertia_dgamma.map(matrix),
         }
     }
+    fn flow_tape(&self) -> Option<FlowTape> {
+        FlowTape::new(self.compiled.flow.clone(), self.values.to_vec()).ok()
+    }
 }
 
 impl Routhian for Model {
@@ -712,9 +715,6 @@ impl Routhian for Model {
     }
     fn routh_tape(&self) -> Option<RouthianTape> {
         RouthianTape::new(self.compiled.routh.clone(), self.values.to_vec()).ok()
-    }
-    fn flow_tape(&self) -> Option<FlowTape> {
-        FlowTape::new(self.compiled.flow.clone(), self.values.to_vec()).ok()
     }
 }
 

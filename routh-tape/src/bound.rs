@@ -209,7 +209,7 @@ pub struct FlowTerms<S> {
 }
 
 /// The Lagrangian `L(ω, γ)` of a model and the derivatives its full equations (8) are made of,
-/// as one tape with the parameter values bound: what `Routhian::flow_tape` returns, for
+/// as one tape with the parameter values bound: what `Lagrangian::flow_tape` returns, for
 /// analyses that evaluate the flow of (8) at Taylor jets (jets of the flow in its initial
 /// conditions; Taylor coefficients in time). Its outputs are [`FLOW_OUTPUTS`]; `ω` is
 /// [`crate::Op::Omega`], `γ` [`crate::Op::Gamma`] (an unconstrained vector of ℝ³).

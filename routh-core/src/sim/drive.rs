@@ -107,6 +107,11 @@ where
                 rhs_evaluations: counters.evaluations,
             })
         }
+        // Taylor's method has its own loop (module `taylor`), which both drivers call instead.
+        Method::Taylor => Err(super::checks::invalid(
+            "method",
+            "Method::Taylor is integrated by its own loop, not by this one",
+        )),
         Method::LieRk4 { step } => {
             // Segments [start, end] of equal sub-steps, recording at the end of each sub-step
             // (Steps) or only at the end of the segment (Times).

@@ -2,10 +2,12 @@
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
-use super::checks::{all_finite, check_unit_gamma, non_finite_record, too_large, validate};
+use super::checks::{
+    all_finite, check_unit_gamma, invalid, non_finite_record, too_large, validate,
+};
 use super::drive::{drive, split3, Field, WithAttitude};
 use super::field::{full_vector_field, FullField};
-use super::{attitude, Method, SimOptions, Trajectory};
+use super::{attitude, taylor, Method, SimOptions, Trajectory};
 use crate::solve::norm::stable_norm;
 use crate::validate::check_finite;
 use crate::{Lagrangian, RouthError};
@@ -31,7 +33,9 @@ use crate::{Lagrangian, RouthError};
 /// when the vector field is not finite at `(0, γ₀)`;
 /// [`RouthError::NonUnitGamma`]; [`RouthError::KineticNotPositiveDefinite`] when `J(γ)` has no
 /// Cholesky factor (at γ₀ or later); [`RouthError::StepSizeUnderflow`],
-/// [`RouthError::TooManySteps`] and [`RouthError::NonFiniteState`] from the integrator.
+/// [`RouthError::TooManySteps`] and [`RouthError::NonFiniteState`] from the integrator;
+/// [`RouthError::InvalidOption`] for [`Method::Taylor`] with a model that has no
+/// [`flow_tape`](Lagrangian::flow_tape).
 ///
 /// # Example
 ///
@@ -107,6 +111,26 @@ pub fn simulate_full<M: Lagrangian>(
     };
     let q0 = opts.attitude.then(|| attitude::initial_attitude(&gamma0));
     let stats = match (q0, opts.method) {
+        (q0, Method::Taylor) => {
+            let tape = model.flow_tape().ok_or_else(|| {
+                invalid(
+                    "method",
+                    "Method::Taylor needs the model's flow tape (a #[derive(Lagrangian)] model \
+                     or routh::Model); this model has none: use Method::Dop853",
+                )
+            })?;
+            let q0 = q0.map(|q| q.into_inner());
+            let start = taylor::Start {
+                omega0,
+                gamma0,
+                q0,
+                gauge: None,
+            };
+            taylor::integrate(&tape, start, t_end, opts, |t, w, g, q, _| {
+                let q = q.map(|q| attitude::aligned(&q, &g));
+                push(t, w, g, q)
+            })?
+        }
         (Some(q0), Method::Dop853) => {
             let mut y0q = SVector::<f64, 10>::zeros();
             y0q.fixed_rows_mut::<6>(0).copy_from(&y0);

@@ -6,10 +6,11 @@
 //!   the rotation angle ψ of the rotating frame by (15), and records E' (16), `(∂R/∂Ω, γ)` (17)
 //!   and `|γ|²`.
 //!
-//! Two integrators are offered ([`Method`]): DOP853, an adaptive Runge–Kutta method of order 8
+//! Three integrators are offered ([`Method`]): DOP853, an adaptive Runge–Kutta method of order 8
 //! with error control and a dense output of order 7 (the default), and RKMK4, a fixed-step
 //! Lie-group Runge–Kutta method of order 4 that moves γ by exact rotations and so keeps
-//! `|γ| = 1` to round-off over arbitrarily long runs. (The crate `ode_solvers` was considered:
+//! `|γ| = 1` to round-off over arbitrarily long runs. A third, Taylor's method of adaptive order
+//! (module `taylor`), integrates (8) for models with a flow tape (and (13) through (8)). (The crate `ode_solvers` was considered:
 //! it depends on another major version of nalgebra and has no fallible right-hand side, so a
 //! compact DOP853 is implemented here instead, following Hairer's `dop853.f`.)
 //!
@@ -28,6 +29,7 @@ mod options;
 mod reduced;
 mod results;
 mod tableau;
+mod taylor;
 
 pub use field::{full_vector_field, reduced_vector_field};
 pub use full::simulate_full;

@@ -3,10 +3,12 @@
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
-use super::checks::{all_finite, check_unit_gamma, non_finite_record, too_large, validate};
+use super::checks::{
+    all_finite, check_unit_gamma, invalid, non_finite_record, too_large, validate,
+};
 use super::drive::{drive, split3, Field, WithAttitude};
 use super::field::{reduced_vector_field, ReducedField};
-use super::{attitude, Method, ReducedTrajectory, SimOptions};
+use super::{attitude, taylor, Method, ReducedTrajectory, SimOptions};
 use crate::solve::norm::stable_norm;
 use crate::validate::check_finite;
 use crate::{RouthError, Routhian};
@@ -65,7 +67,14 @@ impl<M: Routhian + ?Sized> Field<7> for ReducedRhs<'_, M> {
 /// As [`simulate_full`](super::simulate_full) (an overflowing input is named `"p_psi"` or
 /// `"big_omega0"`), plus [`RouthError::DegenerateVerticalInertia`] when
 /// `γ₀ᵀJ(γ₀)γ₀ ≤ 0` (ψ̇ of (38) undefined), and
-/// [`RouthError::SingularReducedKinetic`] when `∂²R/∂Ω² + cγγᵀ` has no Cholesky factor.
+/// [`RouthError::SingularReducedKinetic`] when `∂²R/∂Ω² + cγγᵀ` has no Cholesky factor;
+/// [`RouthError::InvalidOption`] for [`Method::Taylor`] with a model that has no
+/// [`flow_tape`](crate::Lagrangian::flow_tape).
+///
+/// With [`Method::Taylor`] the body's motion is integrated by Taylor's method on the flow tape
+/// of (8) from `ω₀ = Ω₀ + ψ̇γ₀`, and `(Ω, ψ)` are read from it in the same gauge: `Ω·γ = Ω₀·γ₀`
+/// and `ω = Ω + ψ̇γ` give `ψ̇ = (ω·γ − Ω₀·γ₀)/|γ|²`, whose Taylor series is integrated for ψ
+/// (docs/method.md §2c).
 pub fn simulate_reduced<M: Routhian>(
     model: &M,
     big_omega0: Vector3<f64>,
@@ -137,6 +146,37 @@ pub fn simulate_reduced<M: Routhian>(
     };
     let q0 = opts.attitude.then(|| attitude::initial_attitude(&gamma0));
     let stats = match (q0, opts.method) {
+        (q0, Method::Taylor) => {
+            // The body's motion by Taylor's method on the flow tape of (8), from
+            // ω₀ = Ω₀ + ψ̇γ₀ (7); Ω and ψ are read from it in the gauge Ω·γ = Ω₀·γ₀ of (13).
+            let tape = model.flow_tape().ok_or_else(|| {
+                invalid(
+                    "method",
+                    "Method::Taylor needs the model's flow tape (a #[derive(Lagrangian)] model \
+                     or routh::Model); this model has none: use Method::Dop853",
+                )
+            })?;
+            let s = big_omega0.dot(&gamma0);
+            let omega0 = big_omega0 + gamma0 * model.psi_dot(&big_omega0, &gamma0, p_psi);
+            let q0 = q0.map(|q| q.into_inner());
+            let start = taylor::Start {
+                omega0,
+                gamma0,
+                q0,
+                gauge: Some(s),
+            };
+            taylor::integrate(&tape, start, t_end, opts, |t, w, g, q, psi| {
+                let psi = psi.unwrap_or(0.0);
+                let mut y = SVector::<f64, 7>::zeros();
+                let big = w - g * ((w.dot(&g) - s) / g.norm_squared());
+                y.fixed_rows_mut::<3>(0).copy_from(&big);
+                y.fixed_rows_mut::<3>(3).copy_from(&g);
+                y[6] = psi;
+                // The body's attitude R = R_z(ψ) R_Ω (15): `record` takes R_Ω.
+                let q = q.map(|q| attitude::about_vertical(-psi) * attitude::aligned(&q, &g));
+                record(t, &y, q)
+            })?
+        }
         (Some(q0), Method::Dop853) => {
             let mut y0q = SVector::<f64, 11>::zeros();
             y0q.fixed_rows_mut::<7>(0).copy_from(&y0);
