@@ -123,6 +123,48 @@ fn opt_of_the_section_and_the_simulation() {
     assert!(t.windows(2).all(|w| w[1] - w[0] <= 0.05 + 1e-12), "{t:?}");
 }
 
+/// `--opt method=Taylor`: the simulation by Taylor's method ends where DOP853's does (the
+/// asymmetric top, both at their default tolerances, t = 20), with its own step count.
+#[test]
+fn opt_chooses_taylors_method() {
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "simulate",
+            ASYMMETRIC,
+            "--omega",
+            "0.3,0.2,1.5",
+            "--gamma",
+            "0.6,0,0.8",
+            "--t-end",
+            "20",
+            "--json",
+        ];
+        args.extend(extra);
+        json(&args)
+    };
+    let (dop, taylor) = (run(&[]), run(&["--opt", "method=Taylor"]));
+    let last = |v: &Value, key: &str| -> Vec<f64> {
+        let rows = v[key].as_array().unwrap();
+        rows[rows.len() - 1]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect()
+    };
+    for key in ["omega", "gamma"] {
+        let (a, b) = (last(&dop, key), last(&taylor, key));
+        for (x, y) in a.iter().zip(&b) {
+            assert!((x - y).abs() < 1e-7, "{key}: {a:?} vs {b:?}");
+        }
+    }
+    assert_ne!(
+        dop["t"].as_array().unwrap().len(),
+        taylor["t"].as_array().unwrap().len(),
+        "two methods, two meshes"
+    );
+}
+
 #[test]
 fn an_unknown_key_is_bad_input_naming_the_valid_ones() {
     bad_input(
