@@ -18,6 +18,20 @@ pub(super) fn invalid(what: &'static str, reason: impl Into<String>) -> RouthErr
     }
 }
 
+/// The model's flow tape, which [`Method::Taylor`](super::Method::Taylor) integrates; an error
+/// naming the method for a model without one.
+pub(super) fn flow_tape<M: crate::Lagrangian + ?Sized>(
+    model: &M,
+) -> Result<routh_tape::FlowTape, RouthError> {
+    model.flow_tape().ok_or_else(|| {
+        invalid(
+            "method",
+            "Method::Taylor needs the model's flow tape (a #[derive(Lagrangian)] model or \
+             routh::Model); this model has none: use Method::Dop853",
+        )
+    })
+}
+
 /// Checks `t_end` and every option.
 pub(super) fn validate(opts: &SimOptions, t_end: f64) -> Result<(), RouthError> {
     check_finite("t_end", &[t_end])?;

@@ -3,7 +3,7 @@
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 use super::checks::{
-    all_finite, check_unit_gamma, invalid, non_finite_record, too_large, validate,
+    all_finite, check_unit_gamma, flow_tape, non_finite_record, too_large, validate,
 };
 use super::drive::{drive, split3, Field, WithAttitude};
 use super::field::{full_vector_field, FullField};
@@ -112,13 +112,7 @@ pub fn simulate_full<M: Lagrangian>(
     let q0 = opts.attitude.then(|| attitude::initial_attitude(&gamma0));
     let stats = match (q0, opts.method) {
         (q0, Method::Taylor) => {
-            let tape = model.flow_tape().ok_or_else(|| {
-                invalid(
-                    "method",
-                    "Method::Taylor needs the model's flow tape (a #[derive(Lagrangian)] model \
-                     or routh::Model); this model has none: use Method::Dop853",
-                )
-            })?;
+            let tape = flow_tape(model)?;
             let q0 = q0.map(|q| q.into_inner());
             let start = taylor::Start {
                 omega0,

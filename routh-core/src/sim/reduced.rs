@@ -4,7 +4,7 @@
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 use super::checks::{
-    all_finite, check_unit_gamma, invalid, non_finite_record, too_large, validate,
+    all_finite, check_unit_gamma, flow_tape, non_finite_record, too_large, validate,
 };
 use super::drive::{drive, split3, Field, WithAttitude};
 use super::field::{reduced_vector_field, ReducedField};
@@ -149,13 +149,7 @@ pub fn simulate_reduced<M: Routhian>(
         (q0, Method::Taylor) => {
             // The body's motion by Taylor's method on the flow tape of (8), from
             // ω₀ = Ω₀ + ψ̇γ₀ (7); Ω and ψ are read from it in the gauge Ω·γ = Ω₀·γ₀ of (13).
-            let tape = model.flow_tape().ok_or_else(|| {
-                invalid(
-                    "method",
-                    "Method::Taylor needs the model's flow tape (a #[derive(Lagrangian)] model \
-                     or routh::Model); this model has none: use Method::Dop853",
-                )
-            })?;
+            let tape = flow_tape(model)?;
             let s = big_omega0.dot(&gamma0);
             let omega0 = big_omega0 + gamma0 * model.psi_dot(&big_omega0, &gamma0, p_psi);
             let q0 = q0.map(|q| q.into_inner());
