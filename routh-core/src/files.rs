@@ -486,7 +486,7 @@ mod tests {
         uid == 0
     }
 
-    /// The hostile table of issue 43: every kind of path `write_file` meets, each with what it
+    /// The hostile table: every kind of path `write_file` meets, each with what it
     /// must leave behind.
     #[cfg(unix)]
     #[test]
