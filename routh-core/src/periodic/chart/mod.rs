@@ -38,8 +38,9 @@ impl Default for OrbitChartOptions {
 }
 
 /// A curve of the chart: where the family's orbits meet one kind of event, as `(x, h)` points
-/// in their order along the curve (a curve may turn back in `x`), each an event located on the family at that `x` (continued in `(x, h)`
-/// from the events of the grid's families, docs/method.md §12.4).
+/// in their order along the curve (a curve may turn back in `x`), each an event located on the
+/// family at its `x` (continued in `(x, h)` from the events of the grid's families,
+/// docs/method.md §12.4).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OrbitChartCurve {
