@@ -248,7 +248,8 @@ def test_family_plot_marks_the_nonlinear_events(family):
 def test_chart_curves_are_where_an_independent_monodromy_says(body_b, chart):
     """Every event at the chart's ends: k = 1 and k = 0 by finite differences of
     `simulate_full` on the model at that x; a twist zero where the twist, recomputed, is small
-    against its neighbours'. The curves run across the chart, their points are the events'."""
+    against its neighbours'. The curves run across the chart (continued in (x, h): a curve may
+    turn back in x); their points at the grid's x are the families' events there."""
     assert isinstance(chart, routh.OrbitChart) and chart.parameter == "b"
     np.testing.assert_allclose(chart.x, [1.9, 2.0, 2.1], rtol=0, atol=1e-15)
     assert chart.stop is None and chart.failures == [None, None, None]
@@ -257,11 +258,14 @@ def test_chart_curves_are_where_an_independent_monodromy_says(body_b, chart):
         assert any(c.kind == kind and len(c) == 3 for c in chart.curves), kinds
     for c in chart.curves:
         pts = np.asarray(c.points)
-        assert pts.shape == (len(c), 2) and np.all(np.diff(pts[:, 0]) > 0)
+        assert pts.shape == (len(c), 2)
+        assert np.all((1.9 <= pts[:, 0]) & (pts[:, 0] <= 2.1) & (0 <= pts[:, 1]) & (pts[:, 1] <= 2.8))
         for x, h in pts:
             i = int(np.argmin(np.abs(chart.x - x)))
+            if abs(chart.x[i] - x) > 1e-12:
+                continue  # between the grid's x (checked in Rust against the family there)
             es = chart.steady_energy[i]
-            assert any(e.kind == c.kind and abs(e.energy - es - h) < 1e-12
+            assert any(e.kind == c.kind and abs(e.energy - es - h) < 1e-6
                        for e in chart.families[i].events), (c.kind, x, h)
     for i in (0, 2):
         m = body_b.with_params(b=float(chart.x[i]))
