@@ -48,28 +48,28 @@ fn cells(chart: &OrbitChart) -> Vec<Cell> {
             if !(h(a).is_finite() && h(b).is_finite()) {
                 continue;
             }
-            let mut cuts = vec![(0.0, a.stability)];
+            // Cut where k crosses ±1; each part takes the verdict of k at its middle (the
+            // ends' own where they agree, so that a parabolic run stays parabolic).
+            let (ka, kb) = (a.stability_index, b.stability_index);
+            let mut cuts = vec![0.0, 1.0];
             for bound in [1.0, -1.0] {
-                let (da, db) = (a.stability_index - bound, b.stability_index - bound);
+                let (da, db) = (ka - bound, kb - bound);
                 if da * db < 0.0 {
-                    cuts.push((
-                        da / (da - db),
-                        OrbitStability::from_index(b.stability_index, 1e-9),
-                    ));
+                    cuts.push(da / (da - db));
                 }
             }
-            cuts.sort_by(|p, q| p.0.total_cmp(&q.0));
-            cuts.push((1.0, b.stability));
+            cuts.sort_by(f64::total_cmp);
+            let at = |s: f64| h(a) + s * (h(b) - h(a));
             for w in cuts.windows(2) {
-                let at = |s: f64| h(a) + s * (h(b) - h(a));
+                let verdict = if a.stability == b.stability {
+                    a.stability
+                } else {
+                    OrbitStability::from_index(ka + 0.5 * (w[0] + w[1]) * (kb - ka), 0.0)
+                };
                 out.push(Cell {
                     x: (left, right),
-                    h: (at(w[0].0), at(w[1].0)),
-                    verdict: if a.stability == OrbitStability::Parabolic {
-                        b.stability
-                    } else {
-                        w[0].1
-                    },
+                    h: (at(w[0]), at(w[1])),
+                    verdict,
                 });
             }
         }
