@@ -73,14 +73,6 @@ pub(crate) struct Expansion {
     j_inv: Option<(Matrix3<f64>, Matrix3<f64>)>,
 }
 
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// `Σ_{i=0}^{k} a_i b_{k−i}`.
 #[inline(always)]
 fn dot_rev(a: &[f64], b: &[f64]) -> f64 {
@@ -208,7 +200,7 @@ impl Expansion {
                 md = [md[0] + c[0], md[1] + c[1], md[2] + c[2]];
             } else {
                 // A constant ∂L/∂γ (a potential linear in γ): one term.
-                let c = cross(self.vec3(lg, 0), self.vec3(GAMMA, k));
+                let c = Vector3::from(self.vec3(lg, 0)).cross(&Vector3::from(self.vec3(GAMMA, k)));
                 md = [md[0] + c[0], md[1] + c[1], md[2] + c[2]];
             }
             if q.is_some() {
